@@ -1,0 +1,52 @@
+"""Where the data files live, and reading them.
+
+Data (materials, lubricants, bearing catalog, thermal networks) are TOML files
+in the repository's top-level ``materials/`` and ``networks/`` folders.  A wheel
+carries them as ``thermobear/_data/``; an editable install reads them from the
+repository.  The package never reads anything outside these two places.
+"""
+from __future__ import annotations
+
+import tomllib
+from functools import lru_cache
+from pathlib import Path
+
+from .errors import InputError
+
+_PKG = Path(__file__).resolve().parent
+
+
+def data_dir(kind: str) -> Path:
+    """Folder of a data kind: ``"materials"`` or ``"networks"``."""
+    for base in (_PKG / "_data" / kind, _PKG.parent / kind):
+        if base.is_dir():
+            return base
+    raise FileNotFoundError(f"thermobear data folder '{kind}' not found next to the package")
+
+
+@lru_cache(maxsize=None)
+def read_toml(path: str) -> dict:
+    """Read a TOML file, turning a syntax error into an InputError naming the file."""
+    p = Path(path)
+    try:
+        with open(p, "rb") as fh:
+            return tomllib.load(fh)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(str(p), None, f"is not valid TOML: {exc}") from None
+    except FileNotFoundError:
+        raise InputError(str(p), None, "file not found") from None
+
+
+def names_in(folder: Path) -> list[str]:
+    """Sorted stems of the ``*.toml`` files in a folder."""
+    return sorted(p.stem for p in folder.glob("*.toml"))
+
+
+def lookup(kind: str, sub: str, name: str, what: str) -> dict:
+    """Load ``<kind>/<sub>/<name>.toml`` or raise an InputError listing the known names."""
+    folder = data_dir(kind) / sub
+    path = folder / f"{name}.toml"
+    if not path.is_file():
+        known = ", ".join(names_in(folder))
+        raise InputError(what, name, f"unknown name; known: {known}")
+    return read_toml(str(path))

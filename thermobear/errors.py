@@ -1,0 +1,83 @@
+"""Named exceptions and warnings of thermobear.
+
+Every bad input raises :class:`InputError` naming the field, the value and
+what is accepted; every iterative solver that cannot deliver raises a
+:class:`SolverError` subclass carrying its last iterate, residual and
+iteration count.  Nothing returns NaN or a silently unconverged result.
+"""
+from __future__ import annotations
+
+__all__ = [
+    "ThermobearError", "InputError", "SolverError", "NoEquilibrium",
+    "NoConvergence", "ThermalRunaway", "OutsideValidity", "ExtrapolationWarning",
+]
+
+
+class ThermobearError(Exception):
+    """Base class of every error thermobear raises on purpose."""
+
+
+class InputError(ThermobearError, ValueError):
+    """A bad input value: names the field, the value and what is expected.
+
+    >>> str(InputError("bearing.fi", 0.49, "osculation must be > 0.5 (groove radius / ball diameter)"))
+    'bearing.fi = 0.49 — osculation must be > 0.5 (groove radius / ball diameter)'
+    """
+
+    def __init__(self, field: str, value=None, expected: str = ""):
+        self.field, self.value, self.expected = field, value, expected
+        if value is None:
+            msg = f"{field} — {expected}" if expected else field
+        else:
+            msg = f"{field} = {_short(value)} — {expected}"
+        super().__init__(msg)
+
+
+class OutsideValidity(InputError):
+    """An input lies far outside the range where the model is valid."""
+
+
+class SolverError(ThermobearError, RuntimeError):
+    """An iterative solver could not deliver a converged answer.
+
+    Attributes
+    ----------
+    reason : str          why it stopped
+    iterations : int      iterations done
+    residual : float      last residual (units in the message)
+    last : object         last iterate (solver specific)
+    history : list        convergence history where kept
+    """
+
+    def __init__(self, reason: str, *, iterations: int = 0, residual: float = float("nan"),
+                 last=None, history=None):
+        self.reason, self.iterations, self.residual = reason, iterations, residual
+        self.last, self.history = last, history if history is not None else []
+        super().__init__(reason)
+
+
+class NoEquilibrium(SolverError):
+    """No static equilibrium exists for the applied loads (e.g. radial load on a thrust bearing)."""
+
+
+class NoConvergence(SolverError):
+    """The iteration did not converge within its budget, or diverged."""
+
+
+class ThermalRunaway(SolverError):
+    """Heat generation grows faster with temperature than dissipation: no thermal equilibrium."""
+
+
+class ExtrapolationWarning(UserWarning):
+    """An input lies beyond the data a correlation was fitted to (result still computed)."""
+
+
+def _short(value) -> str:
+    try:
+        import numpy as np
+        arr = np.asarray(value)
+        if arr.ndim and arr.size > 4:
+            return f"array(min={arr.min():.6g}, max={arr.max():.6g})"
+    except Exception:  # noqa: BLE001 - any non-numeric value is printed as is
+        pass
+    return f"{value!r}" if isinstance(value, str) else f"{value}"
