@@ -232,7 +232,18 @@ class BallBearing:
         return series_stiffness(self.K_i(alpha, method), self.K_o(alpha, method))
 
     def with_(self, **changes) -> "BallBearing":
-        """Copy with some fields changed (validated again)."""
+        """Copy with some fields changed (validated again).
+
+        Derived clearance data follow the change: a new ``Pd`` re-derives ``alpha0`` of a
+        deep groove bearing, a new ``alpha0`` re-derives ``Pd``."""
+        kind = changes.get("kind", self.kind)
+        if kind == "deep_groove":
+            if "alpha0" in changes and "Pd" not in changes:
+                changes["Pd"] = None          # re-derive Pd from the new alpha0
+            elif "alpha0" not in changes:
+                changes["alpha0"] = None      # re-derive alpha0 from Pd (kept or changed)
+        elif "Pd" not in changes:
+            changes["Pd"] = None              # re-derive Pd from alpha0
         return replace(self, **changes)
 
 

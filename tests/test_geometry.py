@@ -1,0 +1,87 @@
+"""Bearing geometry: derived radii, clearance ↔ free contact angle, catalog, bad input."""
+import numpy as np
+import pytest
+
+import thermobear as tb
+from thermobear.errors import InputError
+from thermobear.geometry import BallBearing, bearing, bearing_names
+
+STEEL = tb.Material(E=2.1e11, nu=0.3, rho=7850.0)
+
+
+def make(**kw):
+    args = dict(D=11.5e-3, dm=43.5e-3, Z=7, fi=0.52, fo=0.53, Pd=0.0, kind="deep_groove",
+                ball_material=STEEL, ring_material=STEEL) | kw
+    return BallBearing(**args)
+
+
+def test_209_radii_match_physics_reference():
+    # PHYSICS.md §1: 209 bearing, D 12.7, f 0.52, dm 64.9985 mm: Rx,i 5.109, Rx,o 7.591, Ry 165.1 mm
+    b = make(D=12.7e-3, dm=64.9985e-3, Z=9, fi=0.52, fo=0.52, Pd=15e-6)
+    assert b.gamma(0.0) == pytest.approx(0.1954, abs=1e-4)
+    assert b.Rx_i(0.0) == pytest.approx(5.109e-3, rel=2e-4)
+    assert b.Rx_o(0.0) == pytest.approx(7.591e-3, rel=2e-4)
+    assert b.Ry_i == pytest.approx(165.1e-3, rel=2e-4)
+
+
+def test_free_contact_angle_from_clearance_seed004_eq1():
+    b = make(Pd=0.01e-3)
+    A = (0.52 + 0.53 - 1) * 11.5e-3
+    assert b.A == pytest.approx(A)
+    assert b.alpha0 == pytest.approx(np.arccos(1 - 0.01e-3 / (2 * A)), rel=1e-12)
+    assert np.rad2deg(b.alpha0) == pytest.approx(7.56, abs=0.01)
+    assert b.free_end_play == pytest.approx(2 * A * np.sin(b.alpha0))
+
+
+def test_angular_contact_clearance_follows_alpha0():
+    b = bearing("7210")
+    assert b.Pd == pytest.approx(2 * b.A * (1 - np.cos(np.deg2rad(40))), rel=1e-12)
+    b2 = b.with_(fi=0.53)
+    assert b2.Pd == pytest.approx(2 * b2.A * (1 - np.cos(np.deg2rad(40))), rel=1e-12)
+
+
+def test_thrust_radii_flat_race():
+    b = bearing("51205-3ball")
+    assert b.Rx_i(b.alpha0) == pytest.approx(b.D / 2, rel=1e-12)   # race flat in rolling direction
+    assert b.Rx_o(b.alpha0) == pytest.approx(b.D / 2, rel=1e-12)
+    assert b.Ry_i / b.Rx_i(b.alpha0) == pytest.approx(2 * 0.53 / (2 * 0.53 - 1), rel=1e-12)  # seed 000 eq 12
+
+
+def test_reduced_modulus_steel():
+    assert make().E_prime == pytest.approx(2.3077e11, rel=1e-4)
+
+
+def test_catalog_lists_seed_bearings_with_estimates_marked():
+    names = bearing_names()
+    for n in ("51205", "51205-3ball", "51107", "7210", "6210", "iso-dgbb"):
+        assert n in names
+    b = bearing("7210")
+    assert b.Z == 15 and b.dm == pytest.approx(70e-3) and "D_mm" in b.estimated
+    b = bearing("51205-3ball")
+    assert b.Z == 3 and b.D == pytest.approx(7.938e-3) and b.fi == 0.53 and b.estimated == ()
+
+
+@pytest.mark.parametrize("kw, field", [
+    (dict(D=50e-3), "D"),                 # D >= dm
+    (dict(D=-1e-3), "D"),
+    (dict(fi=0.5), "fi"),                 # osculation <= 0.5
+    (dict(fo=0.45), "fo"),
+    (dict(Z=2), "Z"),                     # Z < 3
+    (dict(Z=7.5), "Z"),
+    (dict(Z=40), "Z"),                    # balls do not fit
+    (dict(Pd=-1e-6), "Pd"),               # negative clearance
+    (dict(Pd=5e-3), "Pd"),                # clearance beyond 2A
+    (dict(kind="tapered"), "kind"),
+    (dict(kind="angular_contact", Pd=None), "alpha0"),
+])
+def test_bad_geometry_names_the_field(kw, field):
+    with pytest.raises(InputError) as e:
+        make(**kw)
+    assert f".{field}" in str(e.value)
+    assert "—" in str(e.value)            # message carries what is expected
+
+
+def test_unknown_catalog_name_lists_known():
+    with pytest.raises(InputError) as e:
+        bearing("6299X")
+    assert "6299X" in str(e.value) and "7210" in str(e.value)

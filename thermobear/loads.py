@@ -1,0 +1,411 @@
+r"""Quasi-static load distribution in a ball bearing with rigid rings (Jones 1960; Harris 2001).
+
+Low-speed form (``load_distribution``): equal inner and outer contact angles,
+no centrifugal force or gyroscopic moment (seed 004 eqs 6–8, generalised to a
+tilt θ and a moment M; ISO/TS 16281 rigid-ring model).
+
+Geometry of ball j at azimuth ψ_j = 2πj/Z (ψ = 0 in the direction of the radial
+load), inner-ring displacements δa (axial), δr (radial), θ (tilt) measured from
+the concentric, centred ring position (ISO/TS 16281 convention: δa includes the
+take-up of the axial play A sin α0):
+
+    A1_j = δa + ℜ_i θ cos ψ_j                (axial separation of the groove centres)
+    A2_j = A cos α0 + δr cos ψ_j            (radial separation; A cos α0 = A − Pd/2)
+    A_j = √(A1_j² + A2_j²),  tan α_j = A1_j / A2_j,  Q_j = K_n · max(A_j − A, 0)^1.5
+
+Equilibrium of the inner ring:
+
+    F_a = Σ Q_j sin α_j,   F_r = Σ Q_j cos α_j cos ψ_j,   M = Σ Q_j sin α_j ℜ_i cos ψ_j
+
+solved by Newton's method with the analytic (symmetric) Jacobian, vectorised
+over the balls and over a batch of load cases, with a backtracking line search
+and starting values from the pure-axial closed form and Stribeck's radial
+estimate.  The moment uses the arm ℜ_i (radius of the inner groove-centre
+locus), the one conjugate to θ, so the Jacobian is the stiffness matrix.
+
+The high-speed form (centrifugal force and gyroscopic moment, outer-race
+control, Jones 1960) is in :mod:`thermobear.loads_highspeed`;
+:func:`needs_high_speed` states when a scene needs it.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .errors import InputError, NoConvergence, NoEquilibrium
+from .geometry import BallBearing
+
+__all__ = ["LoadDistribution", "load_distribution", "axial_contact_angle", "needs_high_speed",
+           "STIFFNESS_MODES"]
+
+STIFFNESS_MODES = ("nominal", "per_ball")
+_TOL = 1e-12          # relative equilibrium residual at which Newton stops
+_MAXIT = 60
+
+
+@dataclass(frozen=True)
+class LoadDistribution:
+    """Result of the quasi-static load distribution.
+
+    Scalars (or arrays with a leading batch axis when the loads are arrays).
+
+    Attributes
+    ----------
+    delta_a, delta_r : inner-ring axial / radial displacement from the centred position [m]
+    theta : tilt [rad] (0 when held)
+    Q_i, Q_o : ball–inner / ball–outer contact loads, per ball [N] (equal in the low-speed form)
+    alpha_i, alpha_o : contact angles per ball [rad]
+    psi : ball azimuths [rad], shape (Z,)
+    delta_n : total elastic approach per ball [m]
+    residual : max relative equilibrium residual [-]
+    iterations : Newton iterations used
+    Fa, Fr, M : the applied loads [N], [N], [N m]
+    """
+
+    delta_a: np.ndarray
+    delta_r: np.ndarray
+    theta: np.ndarray
+    Q_i: np.ndarray
+    Q_o: np.ndarray
+    alpha_i: np.ndarray
+    alpha_o: np.ndarray
+    psi: np.ndarray
+    delta_n: np.ndarray
+    residual: float
+    iterations: int
+    Fa: np.ndarray
+    Fr: np.ndarray
+    M: np.ndarray
+
+    @property
+    def Q(self):
+        """Ball load [N] (= Q_i = Q_o in the low-speed form)."""
+        return self.Q_i
+
+    @property
+    def loaded(self):
+        """Boolean mask of balls in contact."""
+        return self.Q_i > 0
+
+
+def axial_contact_angle(brg: BallBearing, Fa, Kn=None, tol: float = 1e-14):
+    r"""Contact angle under a pure axial load, all balls equal [rad].
+
+    Solves  F_a / (Z K_n A^1.5) = sin α (cos α0 / cos α − 1)^1.5  (Harris 2001 eq 7.36,
+    written with A = (fi + fo − 1) D so that no B^1.5 factor is lost) by a vectorised
+    bracketed Newton iteration on α ∈ (α0, π/2).
+
+    Parameters
+    ----------
+    brg : BallBearing
+    Fa : array_like   axial load [N], ≥ 0
+    Kn : float        ball stiffness [N/m^1.5] (default: ``brg.Kn()`` at the nominal angle)
+
+    Returns
+    -------
+    ndarray  contact angle α [rad]; α0 where Fa = 0
+
+    Examples
+    --------
+    >>> from thermobear.geometry import bearing
+    >>> b = bearing("iso-dgbb")
+    >>> a = axial_contact_angle(b, 1000.0)
+    >>> Kn, A = b.Kn(), b.A
+    >>> lhs = 1000.0 / (b.Z * Kn * A**1.5)
+    >>> rhs = np.sin(a) * (1.0 / np.cos(a) - 1.0) ** 1.5
+    >>> bool(abs(lhs / rhs - 1) < 1e-12)
+    True
+    """
+    Fa = np.asarray(Fa, dtype=float)
+    Kn = brg.Kn() if Kn is None else Kn
+    a0 = brg.alpha0
+    target = Fa / (brg.Z * Kn * brg.A**1.5)
+    c0 = np.cos(a0)
+    if brg.kind == "thrust" and a0 >= np.pi / 2 - 1e-12:
+        # α stays 90°: the approach is Fa/(Z Kn) ^ (2/3) along the axis
+        return np.full_like(Fa, np.pi / 2)
+
+    def g(al):
+        t = np.maximum(c0 / np.cos(al) - 1.0, 0.0)
+        return np.sin(al) * t**1.5 - target, t
+
+    lo = np.full_like(Fa, a0)
+    hi = np.full_like(Fa, np.pi / 2 - 1e-9)
+    # start: small-deflection estimate t ≈ (target / sin α0)^(2/3) or for α0 = 0, α ≈ (2 target)^(1/4)
+    al = np.where(a0 > 1e-6, np.arccos(np.clip(c0 / (1.0 + (target / max(np.sin(a0), 1e-12)) ** (2 / 3)), -1, 1)),
+                  np.arccos(1.0 / (1.0 + np.sqrt(np.maximum(2.0 * target, 0.0)) ** (2 / 3))))
+    al = np.clip(al, a0 + 1e-12, np.pi / 2 - 1e-9)
+    for _ in range(100):
+        f, t = g(al)
+        lo = np.where(f < 0, al, lo)
+        hi = np.where(f > 0, al, hi)
+        dfd = np.cos(al) * t**1.5 + 1.5 * np.tan(al) ** 2 * np.sqrt(t) * c0
+        step = f / np.where(dfd > 0, dfd, np.inf)
+        new = al - step
+        out = (new <= lo) | (new >= hi) | ~np.isfinite(new)
+        new = np.where(out, 0.5 * (lo + hi), new)
+        if np.all(np.abs(new - al) <= tol * np.maximum(1.0, np.abs(al))):
+            al = new
+            break
+        al = new
+    return np.where(Fa > 0, al, a0)
+
+
+def needs_high_speed(brg: BallBearing, n_rpm, Q_typical, threshold: float = 0.05):
+    r"""Does the centrifugal ball force matter against the contact load?
+
+    Criterion (documented choice): the low-speed form is used when the ball
+    centrifugal force F_c = ½ m dm ω_c² (Harris 2001 eq 8.9, ω_c the cage speed
+    of an inner-rotating bearing) is below ``threshold`` (5 %) of the typical
+    ball load; the outer-contact load then differs from the inner one by less
+    than that, and the contact angles by less than about a degree for the seed
+    bearings.  Returns a boolean (array) and the ratio F_c / Q.
+
+    >>> from thermobear.geometry import bearing
+    >>> need, ratio = needs_high_speed(bearing("7210"), 6500.0, 450.0 / (15 * np.sin(0.698)))
+    >>> bool(need), round(float(ratio), 3)
+    (False, 0.02)
+    """
+    omega = np.asarray(n_rpm, dtype=float) * np.pi / 30.0
+    gamma = brg.gamma(brg.alpha0)
+    omega_c = 0.5 * omega * (1.0 - gamma)
+    Fc = 0.5 * brg.ball_mass * brg.dm * omega_c**2
+    ratio = Fc / np.maximum(np.asarray(Q_typical, dtype=float), 1e-300)
+    return ratio > threshold, ratio
+
+
+def _check_loads(brg, Fa, Fr, M):
+    for nm, v in (("Fa", Fa), ("Fr", Fr)):
+        if np.any(~np.isfinite(v)) or np.any(v < 0):
+            raise InputError(nm, v, "load must be finite and >= 0 [N] (Fa pushes the inner ring along +x; Fr acts at psi = 0)")
+    if M is not None and np.any(~np.isfinite(M)):
+        raise InputError("M", M, "moment must be finite [N m]")
+    if brg.kind == "thrust" and np.any(Fr > 0):
+        raise NoEquilibrium(
+            f"a thrust ball bearing carries no radial load (its washers are not radially located): Fr = {np.max(Fr):g} N; "
+            "carry Fr with a radial bearing")
+    if brg.kind == "thrust" and np.any((Fa <= 0) & ((np.abs(M) if M is not None else 0) > 0)):
+        raise NoEquilibrium("a thrust ball bearing cannot carry a moment without an axial load (balls would lift off)")
+    if brg.kind == "angular_contact" and np.any((Fa <= 0) & (Fr > 0)):
+        raise NoEquilibrium(
+            "a single angular contact bearing under radial load needs an axial load to hold it against its "
+            f"shoulder (Fa = 0, Fr = {np.max(Fr):g} N): give the axial reaction or preload of the arrangement")
+
+
+def _state(y, brg, Kn_mode, c_psi, A, R):
+    """Ball geometry and forces at scaled unknowns y; shapes (nb, Z).
+
+    y = (δa'/A, δr/A, θ R/A) with δa' the axial displacement from the position where
+    the balls just touch at α0.  The approach s = A_j − A is formed without
+    cancellation, s = [2A(sin α0 d1 + cos α0 d2) + d1² + d2²] / (A_j + A), so that
+    tiny loads (s ≪ A) keep full relative precision."""
+    sa0, ca0 = np.sin(brg.alpha0), np.cos(brg.alpha0)
+    d1 = A * (y[:, 0:1] + y[:, 2:3] * c_psi)
+    d2 = A * (y[:, 1:2] * c_psi)
+    A1 = A * sa0 + d1
+    A2 = A * ca0 + d2
+    Aj = np.hypot(A1, A2)
+    s = np.maximum((2.0 * A * (sa0 * d1 + ca0 * d2) + d1 * d1 + d2 * d2) / (Aj + A), 0.0)
+    sa, ca = A1 / Aj, A2 / Aj
+    if Kn_mode == "per_ball":
+        Kn = brg.Kn(np.arctan2(A1, A2))
+    else:
+        Kn = brg.Kn()
+    Q = Kn * s**1.5
+    dQ = 1.5 * Kn * np.sqrt(s)
+    return A1, A2, Aj, s, sa, ca, Q, dQ
+
+
+def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, stiffness: str = "nominal",
+                      tol: float = _TOL, maxiter: int = _MAXIT) -> LoadDistribution:
+    r"""Quasi-static (low-speed) load distribution, rigid rings.
+
+    Parameters
+    ----------
+    brg : BallBearing
+    Fa : array_like    axial load on the inner ring [N], ≥ 0
+    Fr : array_like    radial load on the inner ring [N], ≥ 0, acting towards ψ = 0
+    M : array_like     tilting moment [N m]; ``None`` holds the tilt at θ = 0 (shaft held by two bearings)
+    n_rpm : float      shaft speed [rpm]; only used to warn-free check ``needs_high_speed``
+                       is the caller's job (this is the low-speed form)
+    stiffness : str    ``"nominal"`` (K_n at the nominal contact angle: ISO/TS 16281 practice, default)
+                       or ``"per_ball"`` (K_n re-evaluated at each ball's contact angle)
+
+    Returns
+    -------
+    LoadDistribution   fields gain a leading batch axis when the loads are arrays
+
+    Raises
+    ------
+    NoEquilibrium      loads the bearing cannot carry (radial load on a thrust bearing,
+                       radial load without axial on a single angular contact bearing)
+    NoConvergence      Newton did not reach the tolerance (carries the residual)
+
+    Notes
+    -----
+    Seed 004 eqs 6–8; Harris 2001 §7.4; Jones 1960.  See the module docstring for
+    the equations and conventions.
+
+    Examples
+    --------
+    ISO/TS 16281 reference case (Fr = 1000 N, no clearance: δr = 15.1101 µm):
+
+    >>> from thermobear.geometry import bearing
+    >>> ld = load_distribution(bearing("iso-dgbb"), Fa=0.0, Fr=1000.0)
+    >>> round(ld.delta_r * 1e6, 3), ld.residual < 1e-9
+    (15.11, True)
+    """
+    if stiffness not in STIFFNESS_MODES:
+        raise InputError("stiffness", stiffness, f"must be one of {', '.join(STIFFNESS_MODES)}")
+    Fa_in, Fr_in = np.asarray(Fa, dtype=float), np.asarray(Fr, dtype=float)
+    M_in = None if M is None else np.asarray(M, dtype=float)
+    shape = np.broadcast_shapes(Fa_in.shape, Fr_in.shape, () if M_in is None else M_in.shape)
+    Fa_b = np.broadcast_to(Fa_in, shape).ravel()
+    Fr_b = np.broadcast_to(Fr_in, shape).ravel()
+    M_b = None if M_in is None else np.broadcast_to(M_in, shape).ravel()
+    _check_loads(brg, Fa_b, Fr_b, M_b)
+    tilt_free = M_b is not None
+    Mv = M_b if tilt_free else np.zeros_like(Fa_b)
+
+    Z, A, R = brg.Z, brg.A, brg.R_inner_locus
+    psi = 2.0 * np.pi * np.arange(Z) / Z
+    c_psi = np.cos(psi)[None, :]
+    nb = Fa_b.size
+    Kn0 = brg.Kn()
+    F_app = np.stack([Fa_b, Fr_b, Mv / R], axis=1)           # moment as a force at arm R
+    scale = np.maximum(np.max(np.abs(F_app), axis=1), 1e-300)
+    zero = np.max(np.abs(F_app), axis=1) == 0.0
+
+    # --- starting values -----------------------------------------------------
+    y = np.zeros((nb, 3))
+    if brg.kind == "thrust":
+        Qb = Fa_b / Z
+        y[:, 0] = (Qb / Kn0) ** (2.0 / 3.0) / A
+    else:
+        # axial part: pure-axial closed form for Fa (plus a share of Fr for angular contact)
+        Fa_eff = Fa_b + (1.25 * Fr_b * np.tan(brg.alpha0) if brg.kind == "angular_contact" else 0.0)
+        al = axial_contact_angle(brg, Fa_eff, Kn0)
+        y[:, 0] = np.where(Fa_eff > 0, np.cos(brg.alpha0) * np.tan(al) - np.sin(brg.alpha0),
+                           -np.sin(brg.alpha0))
+        # radial part: Stribeck Q_max ≈ 5 Fr / (Z cos α) plus half the clearance
+        ca0 = np.cos(np.where(Fa_eff > 0, al, brg.alpha0))
+        Qmax = 5.0 * Fr_b / (Z * np.maximum(ca0, 0.2))
+        # the clearance is taken up radially only when no axial load has taken it up already
+        dr0 = (Qmax / Kn0) ** (2.0 / 3.0) / np.maximum(ca0, 0.2) + np.where(Fa_eff > 0, 0.0, brg.Pd / 2.0)
+        y[:, 1] = np.where(Fr_b > 0, dr0 / A, 0.0)
+    if tilt_free:
+        # a moment larger than the other loads: tilt until the balls at psi = 0 and pi carry it
+        Fm_eq = 4.0 * np.abs(Mv) / (R * Z) * Z          # rough axial load of the most loaded balls
+        mdom = np.abs(Mv) / R > np.maximum(Fa_b, Fr_b)
+        if np.any(mdom) and brg.kind != "thrust":
+            al_m = axial_contact_angle(brg, Fm_eq[mdom], Kn0)
+            y[mdom, 2] = np.sign(Mv[mdom]) * (np.cos(brg.alpha0) * np.tan(al_m))
+
+    active = [0, 1, 2] if tilt_free else [0, 1]
+    na = len(active)
+
+    def residual_and_jac(yv):
+        A1, A2, Aj, s, sa, ca, Q, dQ = _state(yv, brg, stiffness, c_psi, A, R)
+        fa_j = Q * sa
+        fr_j = Q * ca
+        Fm = np.stack([fa_j.sum(1), (fr_j * c_psi).sum(1), (fa_j * c_psi).sum(1)], axis=1)
+        res = (Fm - F_app) / scale[:, None]
+        Qa = np.where(Aj > 0, Q / Aj, 0.0)
+        g11 = dQ * sa * sa + Qa * ca * ca
+        g12 = dQ * sa * ca - Qa * sa * ca
+        g22 = dQ * ca * ca + Qa * sa * sa
+        # d(force)/d(y) with dA1/dy = A (1, 0, c), dA2/dy = A (0, c, 0)
+        c = c_psi
+        J = np.empty((yv.shape[0], 3, 3))
+        J[:, 0, 0] = g11.sum(1); J[:, 0, 1] = (g12 * c).sum(1); J[:, 0, 2] = (g11 * c).sum(1)
+        J[:, 1, 0] = (g12 * c).sum(1); J[:, 1, 1] = (g22 * c * c).sum(1); J[:, 1, 2] = (g12 * c * c).sum(1)
+        J[:, 2, 0] = (g11 * c).sum(1); J[:, 2, 1] = (g12 * c * c).sum(1); J[:, 2, 2] = (g11 * c * c).sum(1)
+        J *= A / scale[:, None, None]
+        return res, J
+
+    it = 0
+    res, J = residual_and_jac(y)
+    norm = np.max(np.abs(res[:, active]), axis=1)
+    norm[zero] = 0.0
+    floor = np.zeros(nb, bool)      # at the floating-point floor: below 1e-9 and no longer improving
+    for it in range(1, maxiter + 1):
+        todo = (norm > tol) & ~floor
+        if not np.any(todo):
+            it -= 1
+            break
+        Jt = J[todo][:, active][:, :, active]
+        # regularise rows of a singular Jacobian (no ball in contact): push towards contact
+        det_ok = np.abs(np.linalg.det(Jt)) > 1e-300
+        Jt[~det_ok] += np.eye(na)[None] * 1e-3
+        dy = np.zeros((int(todo.sum()), 3))
+        dy[:, active] = -np.linalg.solve(Jt, res[todo][:, active][..., None])[..., 0]
+        # no contact at all: move every active coordinate into contact along the load direction
+        y_t = y[todo]
+        lam = np.ones(dy.shape[0])
+        best_y, best_n = y_t.copy(), norm[todo].copy()
+        accepted = np.zeros(dy.shape[0], bool)
+        for _ in range(30):
+            trial = y_t + lam[:, None] * dy
+            r_t, _ = residual_and_jac_partial(trial, todo, brg, stiffness, c_psi, A, R, F_app, scale)
+            n_t = np.max(np.abs(r_t[:, active]), axis=1)
+            ok = (n_t < (1.0 - 1e-4 * lam) * norm[todo]) & ~accepted
+            best_y[ok], best_n[ok] = trial[ok], n_t[ok]
+            accepted |= ok
+            if accepted.all():
+                break
+            lam = np.where(accepted, lam, lam * 0.5)
+        # cases whose line search failed take the smallest step anyway (escape from flat regions)
+        stuck = ~accepted
+        best_y[stuck] = y_t[stuck] + lam[stuck, None] * dy[stuck]
+        y[todo] = best_y
+        prev = norm.copy()
+        res, J = residual_and_jac(y)
+        norm = np.max(np.abs(res[:, active]), axis=1)
+        norm[zero] = 0.0
+        floor |= todo & (norm <= 1e-9) & (norm > 0.5 * prev)
+    else:
+        it = maxiter
+    if np.any(norm > max(tol, 1e-9)):
+        k = int(np.argmax(norm))
+        if brg.kind == "angular_contact":
+            A1, A2, Aj, s_, sa, ca, Q, dQ = _state(y[k:k + 1], brg, stiffness, c_psi, A, R)
+            if np.any((Q > 0) & (A1 <= 0)):
+                raise NoEquilibrium(
+                    f"angular contact bearing: Fa = {Fa_b[k]:g} N is too small for Fr = {Fr_b[k]:g} N, "
+                    f"M = {Mv[k]:g} N m — the balls would have to run over the low shoulder (contact angle <= 0)",
+                    iterations=it, residual=float(norm[k]), last=y[k] * np.array([A, A, A / R]))
+        raise NoConvergence(
+            f"load distribution did not reach equilibrium for Fa = {Fa_b[k]:g} N, Fr = {Fr_b[k]:g} N, "
+            f"M = {Mv[k]:g} N m: relative residual {norm[k]:.3g} after {it} Newton iterations",
+            iterations=it, residual=float(norm.max()), last=y[k] * np.array([A, A, A / R]))
+
+    A1, A2, Aj, s, sa, ca, Q, dQ = _state(y, brg, stiffness, c_psi, A, R)
+    Q = np.where(zero[:, None], 0.0, Q)
+    alpha = np.where(Q > 0, np.arctan2(A1, A2), brg.alpha0 if brg.kind != "deep_groove" else np.arctan2(A1, A2))
+    if brg.kind == "angular_contact" and np.any((Q > 0) & (alpha <= 0)):
+        raise NoEquilibrium("angular contact bearing: a loaded ball would need a contact angle <= 0 "
+                            "(contact over the low shoulder); the axial load is too small for the radial load")
+    da = np.where(zero, 0.0, y[:, 0] * A + A * np.sin(brg.alpha0))   # from the centred position
+    dr = np.where(zero, 0.0, y[:, 1] * A)
+    th = np.where(zero, 0.0, y[:, 2] * A / R)
+    if brg.kind == "deep_groove":
+        alpha = np.where(zero[:, None], 0.0, alpha)
+    out_shape = shape
+    def sh(v):
+        return v.reshape(out_shape) if out_shape else float(v[0])
+    def shz(v):
+        return v.reshape(out_shape + (Z,)) if out_shape else v[0]
+    return LoadDistribution(
+        delta_a=sh(da), delta_r=sh(dr), theta=sh(th), Q_i=shz(Q), Q_o=shz(Q.copy()),
+        alpha_i=shz(alpha), alpha_o=shz(alpha.copy()), psi=psi, delta_n=shz(np.where(zero[:, None], 0.0, s)),
+        residual=float(norm.max()) if norm.size else 0.0, iterations=int(it),
+        Fa=Fa_in, Fr=Fr_in, M=Mv.reshape(out_shape) if out_shape else float(Mv[0]))
+
+
+def residual_and_jac_partial(y, todo, brg, stiffness, c_psi, A, R, F_app, scale):
+    """Residual only, for a subset of the batch (line search)."""
+    A1, A2, Aj, s, sa, ca, Q, dQ = _state(y, brg, stiffness, c_psi, A, R)
+    fa_j, fr_j = Q * sa, Q * ca
+    Fm = np.stack([fa_j.sum(1), (fr_j * c_psi).sum(1), (fa_j * c_psi).sum(1)], axis=1)
+    return (Fm - F_app[todo]) / scale[todo][:, None], None
