@@ -162,10 +162,14 @@ def needs_high_speed(brg: BallBearing, n_rpm, Q_typical, threshold: float = 0.05
     than that, and the contact angles by less than about a degree for the seed
     bearings.  Returns a boolean (array) and the ratio F_c / Q.
 
+    The seed 004 7210 at 6500 rpm under Fa = 450 N (ball load ≈ 47 N): F_c ≈ 25 N, so
+    the criterion asks for the high-speed form although seed 004 neglects it (N dm < 1e6
+    was its argument); at 1000 rpm it does not:
+
     >>> from thermobear.geometry import bearing
-    >>> need, ratio = needs_high_speed(bearing("7210"), 6500.0, 450.0 / (15 * np.sin(0.698)))
-    >>> bool(need), round(float(ratio), 3)
-    (False, 0.02)
+    >>> need, ratio = needs_high_speed(bearing("7210"), [1000.0, 6500.0], 450.0 / (15 * np.sin(0.698)))
+    >>> need.tolist(), np.round(ratio, 3).tolist()
+    ([False, True], [0.013, 0.541])
     """
     omega = np.asarray(n_rpm, dtype=float) * np.pi / 30.0
     gamma = brg.gamma(brg.alpha0)
