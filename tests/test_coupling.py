@@ -1,0 +1,152 @@
+"""Coupled losses ↔ temperatures: convergence, acceleration, stability and thermal runaway."""
+from __future__ import annotations
+
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+from scipy.special import lambertw
+
+sys.path.insert(0, str(Path(__file__).parent))
+from test_thermal import StubOil, oil_jet_context  # noqa: E402
+
+from thermobear.coupling import loop_gain, solve_coupled, solve_network_coupled  # noqa: E402
+from thermobear.errors import InputError, NoConvergence, ThermalRunaway  # noqa: E402
+from thermobear.thermal import load_network, solve_steady, split_losses  # noqa: E402
+
+TA = 293.15      # ambient [K]
+G = 2.0          # one-node dissipation conductance [W/K]
+
+
+def one_node(P):
+    """Update map of one node with conductance G to ambient: T ← TA + P(T)/G, and the loss."""
+    return lambda T: (TA + P(T) / G, float(np.sum(P(T))))
+
+
+# (i) normal case: losses fall with temperature (viscosity) -------------------------------
+def test_viscous_losses_converge_in_few_iterations():
+    P = lambda T: 300.0 * np.exp(-(T - TA) / 35.0)
+    r = solve_coupled(one_node(P), [TA])
+    T_exact = brentq(lambda T: TA + P(T) / G - T, TA, TA + 200)
+    assert r.T_K[0] == pytest.approx(T_exact, abs=1e-6)
+    assert r.iterations <= 10
+    assert r.residual_K <= 1e-6 and r.energy_residual_rel <= 1e-6
+    assert r.loop_gain < 0                           # negative feedback: very stable
+    assert r.history[0]["T_K"][0] == TA and len(r.history) == r.iterations
+    assert r.P_W == pytest.approx(float(P(r.T_K)[0]), rel=1e-12)
+
+
+def test_positive_feedback_below_threshold_gives_lower_stable_root():
+    # P = P0 exp((T−TA)/θ): equilibria s = c e^s (s = (T−TA)/θ, c = P0/(G θ)); two roots when c < 1/e
+    P0, theta = 12.0, 20.0
+    c = P0 / (G * theta)                             # 0.3 < 1/e
+    P = lambda T: P0 * np.exp((T - TA) / theta)
+    s_low = float(-lambertw(-c, 0).real)             # stable (lower) root
+    s_high = float(-lambertw(-c, -1).real)           # unstable (upper) root
+    for method in ("anderson", "picard"):
+        r = solve_coupled(one_node(P), [TA], method=method)
+        assert r.T_K[0] == pytest.approx(TA + theta * s_low, abs=1e-6)
+        assert r.loop_gain == pytest.approx(c * math.exp(s_low), rel=1e-3) and r.loop_gain < 1
+    # starting above the unstable root the bearing runs away: no stable state is reachable by heating
+    with pytest.raises(ThermalRunaway):
+        solve_coupled(one_node(P), [TA + theta * (s_high + 0.5)])
+
+
+# (ii) runaway: heat generation grows faster than G ΔT ---------------------------------------
+@pytest.mark.parametrize("method", ["anderson", "picard"])
+def test_runaway_raises_with_reason_history_and_last(method):
+    P0, theta = 30.0, 20.0                           # c = 0.75 > 1/e: no equilibrium at all
+    P = lambda T: P0 * np.exp((T - TA) / theta)
+    with pytest.raises(ThermalRunaway) as exc:
+        solve_coupled(one_node(P), [TA], method=method)
+    e = exc.value
+    assert "faster" in e.reason and e.history and e.last is not None
+    assert e.last[0] > TA                            # it was heating
+
+
+def test_runaway_just_beyond_threshold():
+    theta = 20.0
+    P0 = 1.02 * G * theta / math.e                   # 2 % beyond the tangency c = 1/e
+    with pytest.raises(ThermalRunaway):
+        solve_coupled(one_node(lambda T: P0 * np.exp((T - TA) / theta)), [TA], max_iter=400)
+
+
+# (iii) stiff negative feedback: plain Picard oscillates, Anderson converges ---------------
+def test_stiff_case_picard_fails_anderson_converges():
+    P = lambda T: 3000.0 * np.exp(-(T - TA) / 8.0)   # loop gain ≈ −4 at the solution
+    T_exact = brentq(lambda T: TA + P(T) / G - T, TA, TA + 500)
+    gain = -float(P(np.array([T_exact]))[0]) / (G * 8.0)
+    assert gain < -2
+    with pytest.raises(NoConvergence) as exc:
+        solve_coupled(one_node(P), [TA], method="picard", damping=1.0)
+    assert "oscillat" in exc.value.reason and exc.value.history
+    r = solve_coupled(one_node(P), [TA])
+    assert r.T_K[0] == pytest.approx(T_exact, abs=1e-6) and r.method == "anderson"
+    assert r.iterations < 30
+    # damping below 2/(1 − gain) makes Picard converge too (slowly): the fallback's rule
+    r2 = solve_coupled(one_node(P), [TA], method="picard", damping=1.0 / (1.0 - gain), max_iter=400)
+    assert r2.T_K[0] == pytest.approx(T_exact, abs=1e-5)
+
+
+def test_loop_gain_of_linear_map():
+    J = np.array([[0.2, 0.1, 0.0], [0.0, 0.5, 0.2], [0.1, 0.0, 0.3]])
+    lam = float(np.max(np.linalg.eigvals(J).real))
+    assert loop_gain(lambda T: 300.0 + J @ (T - 300.0), np.full(3, 320.0)) == pytest.approx(lam, rel=1e-8)
+
+
+def test_bad_inputs():
+    with pytest.raises(InputError):
+        solve_coupled(lambda T: T, [-5.0])
+    with pytest.raises(InputError):
+        solve_coupled(lambda T: np.array([1.0, 2.0]), [300.0])
+    with pytest.raises(InputError):
+        solve_coupled(lambda T: T, [300.0], method="newton")
+
+
+# network + loss model --------------------------------------------------------------------
+def viscous_losses(oil, n_rpm=6500.0):
+    """Toy loss model: contact losses ∝ (ν n)^⅔ at the contact temperature (mean of ball and race)."""
+    def losses(T_K):
+        Tci = 0.5 * (T_K["balls"] + T_K["inner_race"]) - 273.15
+        Tco = 0.5 * (T_K["balls"] + T_K["outer_race"]) - 273.15
+        k = 0.04 * n_rpm ** (2 / 3)
+        Pi = np.full(15, k * oil.nu(Tci) ** (2 / 3) / 15)
+        Po = np.full(15, k * oil.nu(Tco) ** (2 / 3) / 15)
+        drag = 1e-7 * n_rpm**2
+        src = split_losses(Pi, Po, drag)
+        return src, {"P_inner_W": Pi.sum(), "P_outer_W": Po.sum(), "P_drag_W": drag}
+    return losses
+
+
+def test_network_coupling_converges_and_conserves_energy():
+    ctx = oil_jet_context()
+    net = load_network("oil_jet_ball_bearing", ctx)
+    losses = viscous_losses(ctx["oil"])
+    r = solve_network_coupled(net, losses)
+    st = r.steady
+    assert abs(st.balance_rel) < 1e-9
+    total = r.report["P_inner_W"] + r.report["P_outer_W"] + r.report["P_drag_W"]
+    assert math.fsum(r.sources_W.values()) == pytest.approx(total, rel=1e-12)
+    # fixed point: the network's answer to the losses at T is T
+    free = ~net.fixed
+    assert np.max(np.abs(st.T_K[free] - r.T_K)) < 1e-6
+    assert r.loop_gain < 1 and r.energy_residual_rel < 1e-6
+    # same point as a slow, heavily damped Picard (independent path)
+    r_slow = solve_network_coupled(net, losses, method="picard", damping=0.5, max_iter=400)
+    assert np.max(np.abs(r_slow.T_K - r.T_K)) < 1e-4
+    assert r.iterations < r_slow.iterations
+
+
+def test_network_coupling_losses_drop_as_bearing_heats():
+    """Seed 004 §5.3.1: losses fall as the bearing warms (viscosity): the coupled loss is below the cold one."""
+    ctx = oil_jet_context()
+    net = load_network("oil_jet_ball_bearing", ctx)
+    losses = viscous_losses(StubOil())
+    r = solve_network_coupled(net, losses)
+    cold = losses({n: ctx["scene"]["T_ambient_C"] + 273.15 for n in net.nodes})[0]
+    assert math.fsum(r.sources_W.values()) < math.fsum(cold.values())
+    st_cold = solve_steady(net, cold)
+    assert r.steady.T_C["balls"] < st_cold.T_C["balls"]

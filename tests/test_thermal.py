@@ -1,0 +1,447 @@
+"""Thermal network: elements against hand computations, solver conservation and limits, file checks."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import pytest
+from scipy.special import ellipk
+
+from thermobear.errors import InputError, NoConvergence
+from thermobear.thermal import (load_network, network_names, solve_steady, solve_transient,
+                                split_losses, evaluate)
+from thermobear.thermal import elements as el
+from thermobear.materials import material
+
+C0 = 273.15
+
+
+# --------------------------------------------------------------------------- stand-ins for the lead's objects
+# (the real BallBearing / Lubricant come from geometry.py / lubricant.py; test_coupling imports these)
+
+
+@dataclass
+class StubBearing:
+    """Just the attributes a thermal network reads (SI), formulas of PHYSICS.md §1."""
+
+    D: float = 12.7e-3
+    dm: float = 70e-3
+    Z: int = 15
+    bore: float = 50e-3
+    outer_diameter: float = 90e-3
+    width: float = 20e-3
+    alpha0: float = math.radians(40.0)
+    fi: float = 0.52
+    fo: float = 0.52
+    E_prime: float = 2.3077e11
+
+    def __post_init__(self):
+        self.ball_material = material("aisi-52100")
+        self.ring_material = material("aisi-52100")
+
+    def gamma(self, alpha):
+        return self.D * math.cos(alpha) / self.dm
+
+    def Rx_i(self, alpha):
+        return self.D / 2 * (1 - self.gamma(alpha))
+
+    def Rx_o(self, alpha):
+        return self.D / 2 * (1 + self.gamma(alpha))
+
+    @property
+    def Ry_i(self):
+        return self.fi * self.D / (2 * self.fi - 1)
+
+    @property
+    def Ry_o(self):
+        return self.fo * self.D / (2 * self.fo - 1)
+
+
+class StubOil:
+    """Mineral oil of seed 004 (ν40 36.6, ν100 7.8 cSt, ρ15 864.6) with Walther ν(T) (PHYSICS.md §6)."""
+
+    def __init__(self, nu40=36.6, nu100=7.8, rho15=864.6):
+        ll = lambda nu: math.log10(math.log10(nu + 0.7))
+        self.B = (ll(nu40) - ll(nu100)) / (math.log10(373.15) - math.log10(313.15))
+        self.A = ll(nu40) + self.B * math.log10(313.15)
+        self.rho15 = rho15
+
+    def nu(self, T_C):
+        return 10 ** (10 ** (self.A - self.B * math.log10(T_C + 273.15))) - 0.7
+
+    def rho(self, T_C):
+        return self.rho15 - 0.6 * (T_C - 15.0)
+
+    def k_th(self, T_C):
+        return 0.13
+
+    def cp(self, T_C):
+        return 1950.0
+
+
+def oil_jet_context(n_rpm=6500.0, T_amb=25.0, T_oil=30.0, flow_L_h=10.0, **extra):
+    ctx = {"bearing": StubBearing(), "oil": StubOil(),
+           "scene": {"n_rpm": n_rpm, "T_ambient_C": T_amb, "T_oil_in_C": T_oil,
+                     "oil_flow_m3_s": flow_L_h / 3.6e6}}
+    ctx.update(extra)
+    return ctx
+
+
+def thrust_51107_context(T_amb=25.0, **extra):
+    # 51107: bore 35, OD 52, height 12 mm; balls and pitch diameter are stand-ins (the lead's catalog rules)
+    b = StubBearing(D=6.35e-3, dm=43.5e-3, Z=18, bore=35e-3, outer_diameter=52e-3, width=12e-3,
+                    alpha0=math.radians(90.0), fi=0.54, fo=0.54)
+    ctx = {"bearing": b, "scene": {"n_rpm": 1000.0, "T_ambient_C": T_amb}}
+    ctx.update(extra)
+    return ctx
+
+
+def net_of(nodes, elements, ctx=None):
+    return load_network({"name": "t", "nodes": nodes, "elements": elements}, ctx)
+
+
+def cond(a, b, G, name=None):
+    d = {"type": "conductance", "between": [a, b], "G_W_K": G}
+    if name:
+        d["name"] = name
+    return d
+
+
+# --------------------------------------------------------------------------- evaluator
+def test_evaluate_arithmetic_and_context():
+    ctx = {"bearing": StubBearing(), "scene": {"n_rpm": 3000.0}}
+    assert evaluate("bearing.bore / 2", ctx) == pytest.approx(0.025)
+    assert evaluate("pi * scene.n_rpm / 30", ctx) == pytest.approx(100 * math.pi)
+    assert evaluate("sqrt(16) + 2**3 - -1", {}) == 13.0
+    assert evaluate(2, {}) == 2.0
+
+
+@pytest.mark.parametrize("expr", ["__import__('os')", "bearing.__class__", "(lambda: 1)()",
+                                  "'a' * 3", "[1, 2]", "scene.n_rpm if 1 else 2", "open('x')",
+                                  "bearing.gamma(0.1)", "1 / 0", "10.0**400"])
+def test_evaluate_rejects_everything_else(expr):
+    ctx = {"bearing": StubBearing(), "scene": {"n_rpm": 1.0}}
+    with pytest.raises(InputError) as exc:
+        evaluate(expr, ctx, "elements[x].L_m")
+    assert exc.value.field == "elements[x].L_m"
+
+
+def test_evaluate_unknown_name_is_named():
+    with pytest.raises(InputError, match="scene.T_oil_in_C"):
+        evaluate("scene.T_oil_in_C", {"scene": {}}, "nodes.oil_inlet.T_C")
+
+
+# --------------------------------------------------------------------------- element physics
+def test_shell_conductance_analytic():
+    k, L, r1, r2 = 42.7, 0.02, 0.025, 0.02865
+    assert el.shell_conductance(k, L, r1, r2) == pytest.approx(2 * math.pi * k * L / math.log(r2 / r1), rel=1e-14)
+    # thin shell → planar limit k A / t
+    t = 1e-5
+    assert el.shell_conductance(k, L, r1, r1 + t) == pytest.approx(k * 2 * math.pi * r1 * L / t, rel=1e-3)
+    with pytest.raises(InputError):
+        el.shell_conductance(k, L, r2, r1)
+
+
+def test_constriction_circle_and_ellipse():
+    k, a = 40.0, 1e-3
+    assert el.constriction_resistance(k, a, a) == pytest.approx(1 / (4 * k * a), rel=1e-14)
+    # ellipse, m = 1 - (b/a)^2, independent evaluation
+    b = 0.2e-3
+    assert el.constriction_resistance(k, a, b) == pytest.approx(ellipk(1 - 0.04) / (2 * math.pi * k * a), rel=1e-14)
+    # order of semi-axes does not matter; a more slender contact (same a) conducts less
+    assert el.constriction_resistance(k, b, a) == el.constriction_resistance(k, a, b)
+    assert el.constriction_resistance(k, a, 0.1e-3) > el.constriction_resistance(k, a, 0.2e-3)
+
+
+def test_ball_race_contacts_in_parallel_unloaded_excluded():
+    a = np.array([5e-4, 5e-4, 5e-4, 0.0])
+    b = np.array([1e-4, 1e-4, 1e-4, 0.0])
+    one = 1 / (el.constriction_resistance(42.7, 5e-4, 1e-4) + el.constriction_resistance(27.0, 5e-4, 1e-4))
+    assert el.ball_race_conductance(42.7, 27.0, a, b) == pytest.approx(3 * one, rel=1e-14)
+
+
+def test_harris_coefficient_and_scaling():
+    k, Pr, u, nu, x = 0.03, 2.0, 12.0, 2e-5, 0.02
+    h = el.h_harris(k, Pr, u, nu, x)
+    assert h == pytest.approx(0.0332 * k * Pr ** (1 / 3) * math.sqrt(u / (nu * x)), rel=1e-14)
+    assert el.h_harris(k, Pr, u, nu, x, "flat_plate_laminar") == pytest.approx(10 * h, rel=1e-12)
+    # h ∝ (u/(ν x))^½ (pitfall 11: not (u x/ν)^½)
+    assert el.h_harris(k, Pr, 4 * u, nu, x) == pytest.approx(2 * h)
+    assert el.h_harris(k, Pr, u, nu, 4 * x) == pytest.approx(h / 2)
+    assert el.h_harris(k, Pr, 0.0, nu, x) == 0.0
+    with pytest.raises(InputError):
+        el.h_harris(k, Pr, u, nu, x, "harris_typo")
+
+
+def test_air_convection_against_hand_correlations():
+    Ts, Ta, D, u = 340.0, 300.0, 0.12, 3.0
+    air = el.air_properties(0.5 * (Ts + Ta))
+    # Churchill-Chu, horizontal cylinder, free convection (Incropera eq 9.34)
+    Gr = 9.80665 / (0.5 * (Ts + Ta)) * (Ts - Ta) * D**3 / air["nu"] ** 2
+    Ra = Gr * air["Pr"]
+    Nu = (0.60 + 0.387 * Ra ** (1 / 6) / (1 + (0.559 / air["Pr"]) ** (9 / 16)) ** (8 / 27)) ** 2
+    assert el.h_natural_horizontal_cylinder(Ts, Ta, D) == pytest.approx(Nu * air["k"] / D, rel=1e-10)
+    # Churchill-Bernstein, cylinder in cross-flow (Incropera eq 7.54)
+    Re, Pr = u * D / air["nu"], air["Pr"]
+    Nu = 0.3 + 0.62 * Re**0.5 * Pr ** (1 / 3) / (1 + (0.4 / Pr) ** (2 / 3)) ** 0.25 * (1 + (Re / 282000) ** 0.625) ** 0.8
+    assert el.h_forced_cylinder(u, D, Ts, Ta) == pytest.approx(Nu * air["k"] / D, rel=1e-10)
+    # laminar flat plate, mean: 0.664 Re^½ Pr^⅓
+    assert el.h_forced_plate(u, D, Ts, Ta) == pytest.approx(0.664 * Re**0.5 * Pr ** (1 / 3) * air["k"] / D, rel=1e-10)
+    # free convection grows with ΔT
+    assert el.h_natural_horizontal_cylinder(360.0, Ta, D) > el.h_natural_horizontal_cylinder(Ts, Ta, D)
+
+
+def test_radiation_linearisation_exact():
+    h = el.h_radiation(0.8, 360.0, 295.0)
+    assert h * 65.0 == pytest.approx(0.8 * el.SIGMA_SB * (360.0**4 - 295.0**4), rel=1e-14)
+    Tm = 0.5 * (360 + 295)
+    assert h == pytest.approx(4 * 0.8 * el.SIGMA_SB * Tm**3, rel=0.01)
+
+
+def test_oil_air_mixture_limits():
+    oil = StubOil()
+    pure = el.oil_air_properties(1.0, oil.rho(50), oil.nu(50), 0.13, 1950.0, 323.15)
+    assert pure["nu"] == pytest.approx(oil.nu(50) * 1e-6, rel=1e-12)
+    assert pure["Pr"] == pytest.approx(oil.nu(50) * 1e-6 * oil.rho(50) * 1950.0 / 0.13, rel=1e-12)
+    air = el.oil_air_properties(0.0, oil.rho(50), oil.nu(50), 0.13, 1950.0, 323.15)
+    assert air["rho"] == pytest.approx(el.air_properties(323.15)["rho"])
+
+
+# --------------------------------------------------------------------------- steady solver
+def test_series_and_parallel_against_hand_sums():
+    # a --(2 W/K)-- b --(4 W/K || 1 W/K)-- ambient ; 30 W into a
+    net = net_of({"a": {}, "b": {}, "amb": {"T_C": 20.0}},
+                 [cond("a", "b", 2.0), cond("b", "amb", 4.0, "p1"), cond("b", "amb", 1.0, "p2")])
+    r = solve_steady(net, {"a": 30.0})
+    R_total = 1 / 2.0 + 1 / (4.0 + 1.0)
+    assert r.T_C["a"] == pytest.approx(20.0 + 30.0 * R_total, rel=1e-13)
+    assert r.T_C["b"] == pytest.approx(20.0 + 30.0 / 5.0, rel=1e-13)
+    assert r.flows["p1"].Q_W == pytest.approx(24.0) and r.flows["p2"].Q_W == pytest.approx(6.0)
+    assert r.flows["a--b"].from_node == "a"
+    assert abs(r.balance_rel) < 1e-12
+
+
+def test_cylindrical_shell_in_network():
+    net = net_of({"bore": {}, "outside": {"T_C": 40.0}},
+                 [{"type": "shell", "between": ["bore", "outside"], "material": "aisi-52100",
+                   "r1_m": "bearing.bore / 2", "r2_m": "bearing.outer_diameter / 2", "L_m": "bearing.width"}],
+                 {"bearing": StubBearing()})
+    r = solve_steady(net, {"bore": 100.0})
+    G = 2 * math.pi * 42.7 * 0.02 / math.log(45 / 25)
+    assert r.T_C["bore"] - 40.0 == pytest.approx(100.0 / G, rel=1e-12)
+
+
+def test_advection_is_one_way_and_carries_heat_out():
+    nodes = {"inlet": {"T_C": 30.0}, "u": {}, "d": {}, "amb": {"T_C": 20.0}}
+    adv = lambda a, b, name: {"name": name, "type": "advection", "between": [a, b], "Q_m3_s": 1e-5,
+                              "beta": 0.5, "rho_kg_m3": 800.0, "cp_J_kgK": 2000.0}
+    G = 800 * 2000 * 1e-5 * 0.5          # 8 W/K
+    net = net_of(nodes, [adv("inlet", "u", "s1"), adv("u", "d", "s2"), cond("u", "amb", 1.0)])
+    r0 = solve_steady(net, {})
+    r = solve_steady(net, {"d": 40.0})
+    # the downstream source does not warm the upstream node (upwind), a symmetric link would
+    assert r.T_C["u"] == pytest.approx(r0.T_C["u"], abs=1e-12)
+    assert r.T_C["d"] - r.T_C["u"] == pytest.approx(40.0 / G, rel=1e-12)
+    # heat carried by the stream out of d: G (T_d − T_u) = 40 W, in the flow direction
+    assert r.flows["s2"].Q_W == pytest.approx(40.0) and r.flows["s2"].to_node == "stream"
+    assert abs(r.balance_rel) < 1e-12
+    # simplest case: T_mix = T_in + P / (ρ c_p Q β)
+    net1 = net_of({"inlet": {"T_C": 30.0}, "mix": {}}, [adv("inlet", "mix", "s")])
+    assert solve_steady(net1, {"mix": 16.0}).T_C["mix"] == pytest.approx(32.0, rel=1e-13)
+
+
+def test_energy_balance_random_networks():
+    rng = np.random.default_rng(1)
+    for _ in range(5):
+        n = 8
+        nodes = {f"n{i}": {} for i in range(n)}
+        nodes["amb"] = {"T_C": 20.0}
+        nodes["inlet"] = {"T_C": 35.0}
+        els = [cond(f"n{i}", f"n{i + 1}", float(rng.uniform(0.1, 50)), f"c{i}") for i in range(n - 1)]
+        els += [cond(f"n{i}", f"n{j}", float(rng.uniform(0.1, 5)), f"x{i}{j}")
+                for i, j in rng.integers(0, n, (6, 2)) if i != j]
+        els += [cond("n0", "amb", 2.0, "g"), {"type": "advection", "between": ["inlet", "n3"], "Q_m3_s": 2e-6,
+                                              "beta": 0.4, "rho_kg_m3": 860.0, "cp_J_kgK": 1950.0}]
+        net = net_of(nodes, els)
+        src = {f"n{i}": float(rng.uniform(0, 100)) for i in range(n)}
+        r = solve_steady(net, src)
+        assert abs(r.balance_rel) < 1e-9
+        assert math.fsum(r.heat_out_W.values()) == pytest.approx(sum(src.values()), rel=1e-9)
+
+
+@pytest.mark.parametrize("name,ctx,src", [
+    ("oil_jet_ball_bearing", oil_jet_context(), split_losses([8.0] * 15, [8.0] * 15, 20.0)),
+    ("grease_thrust_four_ball", thrust_51107_context(),
+     split_losses([3.0] * 18, [3.0] * 18, 0.0, inner="shaft_washer", outer="housing_washer", oil="balls")),
+    ("one_node", {"bearing": StubBearing(), "scene": {"T_ambient_C": 25.0}}, {"bearing": 200.0}),
+])
+def test_shipped_networks_load_and_give_sensible_temperatures(name, ctx, src):
+    assert name in network_names()
+    net = load_network(name, ctx)
+    r = solve_steady(net, src)
+    assert abs(r.balance_rel) < 1e-9
+    free = [r.T_C[n] for n in net.free_nodes]
+    assert min(free) > 25.0 - 1e-9                    # heated above the coldest boundary
+    assert max(free) < 400.0                          # few hundred W: hot but finite
+    hottest = max(net.free_nodes, key=lambda n: r.T_C[n])
+    assert hottest in src                             # the maximum sits where heat is injected
+    assert net.estimated                              # estimates are declared
+
+
+def test_oil_jet_network_physics_trends():
+    ctx = oil_jet_context()
+    net = load_network("oil_jet_ball_bearing", ctx)
+    src = split_losses([6.0] * 15, [6.0] * 15, 10.0)
+    r = solve_steady(net, src)
+    assert r.iterations > 1 and r.residual_K < 1e-8    # temperature-dependent elements iterated
+    assert r.heat_out_W["stream"] > 0                   # the oil carries heat away
+    # more oil → cooler mixture and bearing
+    r2 = solve_steady(load_network("oil_jet_ball_bearing", oil_jet_context(flow_L_h=15.0)), src)
+    assert r2.T_C["oil_air"] < r.T_C["oil_air"] and r2.T_C["inner_ring"] < r.T_C["inner_ring"]
+    # hotter inlet oil → hotter bearing
+    r3 = solve_steady(load_network("oil_jet_ball_bearing", oil_jet_context(T_oil=50.0)), src)
+    assert r3.T_C["inner_ring"] > r.T_C["inner_ring"]
+    # contact semi-axes from the mechanics replace the fallback; bigger contacts conduct more
+    a = np.full(15, 1.0e-3)
+    b = np.full(15, 0.2e-3)
+    ctx_c = oil_jet_context(contacts={"inner": {"a_m": a, "b_m": b}, "outer": {"a_m": a, "b_m": b}})
+    net_c = load_network("oil_jet_ball_bearing", ctx_c)
+    contact = next(e for e in net_c.elements if e.name == "inner_contacts")
+    assert contact.p["semi_axes_from"] == "context"
+    assert solve_steady(net_c, src).T_C["balls"] < r.T_C["balls"]
+
+
+def test_steady_outer_loop_budget_raises():
+    net = load_network("oil_jet_ball_bearing", oil_jet_context())
+    with pytest.raises(NoConvergence) as exc:
+        solve_steady(net, {"balls": 100.0}, max_iter=2)
+    assert exc.value.iterations == 2 and exc.value.residual > 0
+
+
+def test_sources_into_unknown_or_fixed_nodes_rejected():
+    net = net_of({"a": {}, "amb": {"T_C": 20.0}}, [cond("a", "amb", 1.0)])
+    with pytest.raises(InputError, match="sources"):
+        solve_steady(net, {"nope": 1.0})
+    with pytest.raises(InputError, match="sources.amb"):
+        solve_steady(net, {"amb": 1.0})
+
+
+# --------------------------------------------------------------------------- sources
+def test_split_losses_conserves_energy():
+    Pi, Po = np.array([1.0, 2.0, 0.0, 3.5]), np.array([0.5, 0.25, 0.0, 1.0])
+    s = split_losses(Pi, Po, 0.7, extra={"seal": 0.3})
+    assert s["balls"] == pytest.approx(0.5 * (Pi.sum() + Po.sum()))
+    assert s["inner_race"] == pytest.approx(0.5 * Pi.sum()) and s["outer_race"] == pytest.approx(0.5 * Po.sum())
+    assert math.fsum(s.values()) == pytest.approx(Pi.sum() + Po.sum() + 0.7 + 0.3, rel=1e-15)
+    with pytest.raises(InputError):
+        split_losses([-1.0], [0.0])
+
+
+# --------------------------------------------------------------------------- transient
+def rc_net(C=500.0, G=2.0, T_amb=20.0):
+    return net_of({"b": {"C_J_K": C}, "ambient": {"T_C": T_amb}}, [cond("b", "ambient", G)])
+
+
+def test_rc_matches_exact_exponential():
+    C, G, P = 500.0, 2.0, 80.0
+    t = np.linspace(0, 2000, 41)
+    r = solve_transient(rc_net(C, G), {"b": P}, 2000.0, t_eval=t)
+    exact = P / G * (1 - np.exp(-G * t / C))
+    rise = r.T_C["b"] - 20.0
+    assert np.allclose(rise[1:], exact[1:], rtol=1e-4, atol=0)
+    assert r.t[0] == 0 and rise[0] == 0.0
+
+
+def test_long_transient_reaches_steady_state():
+    net = load_network("oil_jet_ball_bearing", oil_jet_context())
+    src = split_losses([5.0] * 15, [5.0] * 15, 15.0)
+    tr = solve_transient(net, src, 3e5, t_eval=[3e5])
+    st = solve_steady(net, src)
+    for n in net.nodes:
+        assert tr.T_C[n][-1] == pytest.approx(st.T_C[n], abs=0.1)
+
+
+def test_step_schedule_not_smeared_and_report_recorded():
+    C, G, P, t1 = 400.0, 4.0, 40.0, 100.0
+
+    def sources(t, T_K):
+        q = P if t >= t1 else 0.0
+        return {"b": q}, {"P_W": q, "T_b_K": T_K["b"]}
+
+    t = np.array([0.0, 50.0, 100.0, 150.0, 300.0])
+    r = solve_transient(rc_net(C, G), sources, 300.0, breakpoints=[t1], t_eval=t)
+    assert np.all(np.abs(r.T_C["b"][:3] - 20.0) < 1e-9)          # nothing before the step
+    tau = C / G
+    exact = 20.0 + P / G * (1 - np.exp(-(t[3:] - t1) / tau))
+    assert np.allclose(r.T_C["b"][3:], exact, rtol=1e-5)
+    assert list(r.report["P_W"]) == [0.0, 0.0, P, P, P]
+    assert np.allclose(r.report["T_b_K"], r.T_K[0])
+    # a step in a boundary temperature (fixed_C) at the same breakpoint
+    r2 = solve_transient(rc_net(C, G), {}, 300.0, breakpoints=[t1], t_eval=t,
+                         fixed_C=lambda tt: {"ambient": 20.0 if tt < t1 else 30.0})
+    assert np.allclose(r2.T_C["b"][3:], 20.0 + 10.0 * (1 - np.exp(-(t[3:] - t1) / tau)), rtol=1e-5)
+
+
+def test_transient_needs_capacities():
+    net = net_of({"a": {}, "amb": {"T_C": 20.0}}, [cond("a", "amb", 1.0)])
+    with pytest.raises(InputError, match="nodes.a.C_J_K"):
+        solve_transient(net, {"a": 1.0}, 10.0)
+
+
+# --------------------------------------------------------------------------- bad files
+BASE_NODES = {"a": {"C_J_K": 10.0}, "amb": {"T_C": 20.0}}
+
+
+@pytest.mark.parametrize("nodes,elements,field", [
+    (BASE_NODES, [{"type": "conductance", "between": ["a", "amb"], "G_W_K": 1.0, "r3_m": 1.0}], "r3_m"),
+    (BASE_NODES, [{"type": "conduction", "between": ["a", "amb"], "G_W_K": 1.0}], ".type"),
+    (BASE_NODES, [{"type": "conductance", "between": ["a", "zz"], "G_W_K": 1.0}], ".between"),
+    (BASE_NODES, [{"type": "shell", "between": ["a", "amb"], "material": "aisi-52100", "r1_m": 0.01,
+                   "L_m": 0.02}], ".r2_m"),
+    (BASE_NODES, [{"type": "shell", "between": ["a", "amb"], "material": "aisi-52100", "r1_m": 0.02,
+                   "r2_m": 0.01, "L_m": 0.02}], "r2_m"),
+    (BASE_NODES, [{"type": "planar", "between": ["a", "amb"], "k_W_mK": 40.0, "A_m2": 1e-3,
+                   "length_m": -0.1}], ".length_m"),
+    (BASE_NODES, [{"type": "conductance", "between": ["a", "amb"], "G_W_K": 1.0, "estimated": ["R_K_W"]}],
+     ".estimated"),
+    (BASE_NODES, [{"type": "conductance", "between": ["a", "amb"], "G_W_K": "scene.G"}], ".G_W_K"),
+    ({**BASE_NODES, "lonely": {}}, [{"type": "conductance", "between": ["a", "amb"], "G_W_K": 1.0}],
+     "nodes.lonely"),
+    ({"a": {"C_J_K": 10.0, "T_C": 20.0}, "amb": {"T_C": 20.0}},
+     [{"type": "conductance", "between": ["a", "amb"], "G_W_K": 1.0}], "nodes.a.T_C"),
+    ({"a": {"C_J_K": 10.0, "colour": "red"}, "amb": {"T_C": 20.0}},
+     [{"type": "conductance", "between": ["a", "amb"], "G_W_K": 1.0}], "nodes.a.colour"),
+    (BASE_NODES, [{"type": "advection", "between": ["a", "amb"], "Q_m3_s": 1e-6, "beta": 0.4,
+                   "rho_kg_m3": 860.0, "cp_J_kgK": 1950.0}], ".between"),
+    (BASE_NODES, [{"type": "advection", "between": ["amb", "a"], "Q_m3_s": 1e-6, "beta": 1.4,
+                   "rho_kg_m3": 860.0, "cp_J_kgK": 1950.0}], "beta"),
+    (BASE_NODES, [{"type": "convection", "between": ["a", "amb"], "correlation": "forced_cylinder",
+                   "A_m2": 0.01, "D_m": 0.1}], ".u_air_m_s"),
+    (BASE_NODES, [{"type": "convection", "between": ["a", "amb"], "correlation": "harris", "A_m2": 0.01,
+                   "u_m_s": 1.0, "x_m": 0.01, "oil_fraction": 0.01}], ".correlation"),
+    (BASE_NODES, [{"type": "ball_race_contact", "between": ["a", "amb"], "contact": "inner",
+                   "k_ball_W_mK": 40.0, "k_ring_W_mK": 40.0, "n_balls": 3}], "contacts.inner.a_m"),
+    (BASE_NODES, [{"type": "shell", "between": ["a", "amb"], "material": "unobtainium", "r1_m": 0.01,
+                   "r2_m": 0.02, "L_m": 0.02}], ".material"),
+])
+def test_bad_network_raises_input_error_naming_the_field(nodes, elements, field):
+    with pytest.raises(InputError) as exc:
+        net_of(nodes, elements, {"scene": {}})
+    assert field in exc.value.field, str(exc.value)
+
+
+def test_bad_toml_file_named(tmp_path):
+    p = tmp_path / "bad.toml"
+    p.write_text('[nodes.a]\nC_J_K = 1.0\n[nodes.amb]\nT_C = 20.0\n[[elements]]\ntype = "conductance"\n'
+                 'between = ["a", "amb"]\nG_W_K = 1.0\nL_mm = 3.0\n')
+    with pytest.raises(InputError) as exc:
+        load_network(p, {})
+    assert exc.value.field.startswith("bad.toml: elements[a--amb].L_mm")
+    with pytest.raises(InputError, match="unknown network"):
+        load_network("no_such_network", {})
+    with pytest.raises(InputError, match="fixed-temperature node") as exc:
+        net_of({"a": {}, "b": {}}, [cond("a", "b", 1.0)])
+    assert exc.value.field.endswith("nodes")
+    with pytest.raises(InputError, match="elements"):
+        net_of({"a": {}, "amb": {"T_C": 20.0}}, [])
