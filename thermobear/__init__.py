@@ -6,5 +6,16 @@ from .errors import (ThermobearError, InputError, SolverError, NoEquilibrium, No
                      ThermalRunaway, OutsideValidity, ExtrapolationWarning)
 from .materials import Material, material, material_names, reduced_modulus
 from .hertz import hertz, HertzContact
+from ._data import example_path
+from .geometry import BallBearing, bearing, bearing_names
+from .loads import load_distribution, LoadDistribution
+from .kinematics import ball_kinematics
+from .lubricant import Lubricant, lubricant, lubricant_names
+from .film import film_thickness, lubrication_regime
+from .friction.rolling import rolling_force
+from .friction.skf import skf_friction
+from .losses import bearing_losses, LossResult
+from .scene import Scene, load_scene
 
 __version__ = "0.1.0"
+from .solver import solve, steady_state, transient, choose_models

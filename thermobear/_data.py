@@ -50,3 +50,16 @@ def lookup(kind: str, sub: str, name: str, what: str) -> dict:
         known = ", ".join(names_in(folder))
         raise InputError(what, name, f"unknown name; known: {known}")
     return read_toml(str(path))
+
+
+def example_path(name: str) -> str:
+    """Path of a bundled example scene (``examples/<name>``).
+
+    >>> example_path("seed004_oil_jet_7210.toml").endswith("seed004_oil_jet_7210.toml")
+    True
+    """
+    p = data_dir("examples") / name
+    if not p.is_file():
+        known = ", ".join(sorted(q.name for q in data_dir("examples").glob("*.toml")))
+        raise InputError("example", name, f"unknown example; known: {known}")
+    return str(p)

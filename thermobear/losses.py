@@ -1,0 +1,280 @@
+r"""Bearing losses: per contact → per ball → bearing totals (local model).
+
+For each ball j and each contact (inner ``i``, outer ``o``) this module chains
+load distribution → Hertz ellipse → kinematics → film and regime → losses:
+
+* hydrodynamic rolling  P = 2 u F_R   (F_R by regime: Houpert IVR / Biboulet PVR /
+  Houpert EHL, or a named model; seed 004 eqs 17–20, seed 000 eqs 20–23)
+* sliding (Heathcote micro-slip across the major axis, pure rolling at the two
+  points ξ0 = ±0.347 a that balance the traction of the Hertz strip load)
+  P = ∫ μ q(x) |ω_roll (B(x0) − B(x))| dx, B(x) after seed 000 eqs 7–8
+* pivoting (spin)  P = MP |ω_s|, MP = (3/8) μ Q a  (seed 000 eq 28 = the slice
+  integral of μ q |ω_s x| for the Hertz strip load)
+* hysteresis  P = MER |ω_roll|  (seed 000 eq 25)
+* drag of the balls in the oil–air mixture (Pouly 2010, seed 004 eq 21)
+
+with μ from the film parameter Λ (seed 000 eq 18) and the viscosity at the
+contact temperature.  Sliding and pivoting are superposed (each with its own
+slip field); the combined slip integral differs by a few percent of these
+small terms.
+
+Balls outside the load zone still touch the outer race under their centrifugal
+force in the low-speed load model: the outer contact load is
+Q_o = Q + F_c / cos α (F_c = ½ m dm ω_c², Harris 2001 eq 8.9) for contact angles
+below 80°.  This is what makes lightly loaded balls dissipate in the IVR
+regime (seed 004 §6.2).
+
+Heat sources (for the thermal network): each contact's loss goes ½ to the
+ball and ½ to the ring (Pouly 2010 convention; PHYSICS.md §8), drag to the
+oil–air mixture.  The split conserves energy exactly (tested).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .errors import InputError
+from .film import film_thickness, lubrication_regime
+from .friction.drag import drag_loss, oil_volume_fraction_parker
+from .friction.rolling import rolling_force
+from .friction.sliding import deformed_radius, hysteresis_moment, mixed_friction_ianus
+from .geometry import BallBearing
+from .hertz import hertz
+from .kinematics import ball_kinematics
+from .loads import LoadDistribution, load_distribution
+
+__all__ = ["LossResult", "bearing_losses", "BREAKDOWN_KEYS", "ROLLING_MODELS"]
+
+BREAKDOWN_KEYS = ("sliding", "rolling", "pivoting", "hysteresis", "drag")
+ROLLING_MODELS = ("auto", "biboulet_ivr", "biboulet_ehl", "biboulet_transition", "houpert_ivr",
+                  "houpert_ehl", "biboulet_pvr")
+_XI0 = 0.3473   # root of ξ − ξ³/3 = 1/3: pure-rolling points of the Hertz strip load (Heathcote)
+_GL_X, _GL_W = np.polynomial.legendre.leggauss(32)
+
+
+@dataclass(frozen=True)
+class LossResult:
+    """Power loss of a bearing at one or many operating points.
+
+    Attributes
+    ----------
+    P_W : float or ndarray              total power loss [W]
+    torque_Nm : float or ndarray        friction torque on the rotating ring, P/ω [N m]
+    breakdown_W : dict                  sliding, rolling, pivoting, hysteresis, drag [W]
+    contacts : dict                     per contact arrays, keys ``"inner"``/``"outer"`` → dict of
+                                        Q [N], alpha [rad], a, b [m], u [m/s], T_C, eta [Pa s],
+                                        h_min, h_c [m], Lambda, regime (str), mu, F_R [N],
+                                        P_rolling, P_sliding, P_pivoting, P_hysteresis [W], spin [rad/s]
+    heat_W : dict                       heat sources: ``inner_ring``, ``outer_ring``, ``balls``, ``oil`` [W]
+    load : LoadDistribution
+    omega_c : cage speed [rad/s]
+    models_used : dict                  model per sub-problem with the reason
+    """
+
+    P_W: np.ndarray
+    torque_Nm: np.ndarray
+    breakdown_W: dict
+    contacts: dict
+    heat_W: dict
+    load: LoadDistribution
+    omega_c: np.ndarray
+    models_used: dict = field(default_factory=dict)
+
+
+def _as(x):
+    x = np.asarray(x, dtype=float)
+    return float(x) if x.ndim == 0 else x
+
+
+def _heathcote_power(mu, Q, a, Ra, omega_roll):
+    """Sliding power of Heathcote micro-slip: ∫ μ q(x) |ω_roll (B(x0) − B(x))| dx over (−a, a) [W].
+
+    B(x0) − B(x) = √(Ra² − x²) − √(Ra² − x0²) with x0 = ξ0 a; the Hertz strip load
+    q = (3Q/4a)(1 − ξ²) (seed 000 eq 32 with the Hertz profile).  Vectorised Gauss–Legendre
+    on each side of the pure-rolling points is unnecessary: the integrand's kinks are
+    mild and 32 nodes give < 1e-4 relative error."""
+    a = np.asarray(a, float)
+    xi = _GL_X.reshape((-1,) + (1,) * a.ndim)
+    w = _GL_W.reshape(xi.shape)
+    x = xi * a
+    x0 = _XI0 * a
+    dB = np.sqrt(np.maximum(Ra**2 - x**2, 0.0)) - np.sqrt(np.maximum(Ra**2 - x0**2, 0.0))
+    integrand = w * 0.75 * (1.0 - xi**2) * np.abs(dB)
+    return mu * Q * np.abs(omega_roll) * integrand.sum(axis=0)
+
+
+def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *, M=None,
+                   T_inner_C=None, T_outer_C=None, T_oil_C=None, rotating: str = "inner",
+                   supply: str = "oil_jet", oil_flow_m3_s: float = 0.0, Rq_ball: float = 0.05e-6,
+                   Rq_ring: float = 0.1e-6, mu_boundary: float = 0.11, mu_full_film: float = 0.05,
+                   rolling_model: str = "auto", hertz_method: str = "exact", control: str | None = None,
+                   centrifugal: bool = True, drag: bool = True, load: LoadDistribution | None = None
+                   ) -> LossResult:
+    r"""Power loss of a ball bearing by the local contact model.
+
+    Parameters
+    ----------
+    brg : BallBearing
+    oil : Lubricant                 (grease: its base oil)
+    Fa, Fr : array_like             axial / radial load [N]
+    n_rpm : array_like              speed of the rotating ring [rpm]
+    T_C : array_like                temperature of contacts and oil where the next three are not given [°C]
+    M : float, optional             tilting moment [N m] (tilt free); None holds the tilt
+    T_inner_C, T_outer_C : array_like, optional
+                                    inner / outer contact temperature [°C] (e.g. the mean of ball and
+                                    ring temperatures, seed 004 §4.5); broadcast against the balls
+    T_oil_C : array_like, optional  oil–air mixture temperature for drag [°C]
+    rotating : str                  ``"inner"`` or ``"outer"`` ring rotating
+    supply : str                    ``"oil_jet"`` (drag with Parker's oil fraction), ``"oil_air"``,
+                                    ``"grease"`` (drag in air), ``"oil_bath"`` or ``"dry_film"`` (no drag term)
+    oil_flow_m3_s : float           oil flow through the bearing [m³/s] (oil jet)
+    Rq_ball, Rq_ring : float        RMS roughness [m]
+    mu_boundary, mu_full_film : float  μ_a and μ_e of seed 000 eq 18 [-]
+    rolling_model : str             ``"auto"`` (by regime, seed 004) or one of ``ROLLING_MODELS``
+    hertz_method : str              ``"exact"`` or an approximation (``thermobear.hertz.METHODS``)
+    control : str                   ball spin control (``"outer"``, ``"inner"``, ``"radial"``);
+                                    default ``"radial"`` for thrust bearings, ``"outer"`` otherwise
+    centrifugal : bool              add F_c/cos α to the outer contact load
+    drag : bool                     include the drag term
+    load : LoadDistribution         reuse a load distribution (must match Fa, Fr, M)
+
+    Returns
+    -------
+    LossResult
+
+    Examples
+    --------
+    Seed 004 7210 at 4800 rpm, bearing at 50 °C (hydrodynamic rolling is the largest term):
+
+    >>> from thermobear.geometry import bearing
+    >>> from thermobear.lubricant import lubricant
+    >>> r = bearing_losses(bearing("7210"), lubricant("seed004-mineral"), Fa=450.0, Fr=650.0,
+    ...                    n_rpm=4800.0, T_C=50.0, oil_flow_m3_s=10e-3 / 3600)
+    >>> max(r.breakdown_W, key=r.breakdown_W.get), bool(abs(r.torque_Nm * 4800 * np.pi / 30 / r.P_W - 1) < 1e-12)
+    ('rolling', True)
+    """
+    if rolling_model not in ROLLING_MODELS:
+        raise InputError("rolling_model", rolling_model, f"must be one of {', '.join(ROLLING_MODELS)}")
+    if rotating not in ("inner", "outer"):
+        raise InputError("rotating", rotating, "must be 'inner' or 'outer'")
+    if supply not in ("oil_jet", "grease", "oil_bath", "oil_air", "dry_film"):
+        raise InputError("supply", supply, "must be oil_jet, grease, oil_bath, oil_air or dry_film")
+    n = np.asarray(n_rpm, dtype=float)
+    if np.any(~np.isfinite(n)) or np.any(n < 0):
+        raise InputError("n_rpm", n_rpm, "speed must be finite and >= 0 [rpm]")
+    Fa_a, Fr_a = np.asarray(Fa, float), np.asarray(Fr, float)
+    T_C_a = np.asarray(T_C, float)
+    Ti = np.asarray(T_C if T_inner_C is None else T_inner_C, float)
+    To = np.asarray(T_C if T_outer_C is None else T_outer_C, float)
+    Toil = np.asarray(T_C if T_oil_C is None else T_oil_C, float)
+    # batch shape: loads, speed and (scalar-per-point) temperatures
+    batch = np.broadcast_shapes(Fa_a.shape, Fr_a.shape, n.shape, T_C_a.shape, Toil.shape,
+                                Ti.shape[:Ti.ndim - (1 if Ti.ndim and Ti.shape[-1] == brg.Z and Ti.ndim > len(n.shape) else 0)],
+                                To.shape[:To.ndim - (1 if To.ndim and To.shape[-1] == brg.Z and To.ndim > len(n.shape) else 0)])
+    Z = brg.Z
+    ld = load if load is not None else load_distribution(brg, Fa=np.broadcast_to(Fa_a, batch),
+                                                          Fr=np.broadcast_to(Fr_a, batch), M=M)
+    ex = (...,) + (None,)                         # batch → batch + (Z,)
+    nb = np.broadcast_to(n, batch)
+    omega = nb * np.pi / 30.0
+    w_i = omega if rotating == "inner" else np.zeros_like(omega)
+    w_o = omega if rotating == "outer" else np.zeros_like(omega)
+    ai = np.broadcast_to(ld.alpha_i, batch + (Z,))
+    ao = np.broadcast_to(ld.alpha_o, batch + (Z,))
+    if control is None:
+        control = "radial" if brg.kind == "thrust" else "outer"
+    kin = ball_kinematics(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, control=control)
+    omega_c = np.asarray(kin.omega_c)
+    Qi = np.broadcast_to(ld.Q_i, batch + (Z,)).astype(float)
+    Qo = np.broadcast_to(ld.Q_o, batch + (Z,)).astype(float)
+    if centrifugal and brg.kind != "thrust":
+        Fc = 0.5 * brg.ball_mass * brg.dm * omega_c**2
+        ca = np.cos(ao)
+        Qo = Qo + np.where(ca > np.cos(np.deg2rad(80.0)), Fc / np.maximum(ca, 1e-3), 0.0)
+    Ep = brg.E_prime
+    out_c = {}
+    totals = {k: 0.0 for k in BREAKDOWN_KEYS}
+    per_contact_heat = {}
+    regimes_seen = set()
+    for side, Q, al, u, spin, T_side, f in (("inner", Qi, ai, kin.u_i, kin.spin_i, Ti, brg.fi),
+                                             ("outer", Qo, ao, kin.u_o, kin.spin_o, To, brg.fo)):
+        Rx = brg.Rx_i(al) if side == "inner" else brg.Rx_o(al)
+        Ry = brg.Ry_i if side == "inner" else brg.Ry_o
+        u = np.broadcast_to(np.asarray(u, float), batch + (Z,))
+        T_side = np.broadcast_to(T_side[ex] if T_side.ndim == len(batch) and T_side.shape != batch + (Z,) else T_side,
+                                 batch + (Z,))
+        eta = np.asarray(oil.eta(T_side), float)
+        alpha_p = np.asarray(oil.alpha_p_at(T_side), float)
+        c = hertz(Q, Rx, Ry, Ep, method=hertz_method)
+        a, b = np.asarray(c.a), np.asarray(c.b)
+        h_min = np.asarray(film_thickness(Q, Rx, Ry, u, eta, alpha_p, Ep, kind="min"))
+        h_c = np.asarray(film_thickness(Q, Rx, Ry, u, eta, alpha_p, Ep, kind="central"))
+        Lam = h_min / np.hypot(Rq_ball, Rq_ring) if (Rq_ball or Rq_ring) else np.full_like(h_min, np.inf)
+        reg = lubrication_regime(Q, Rx, Ry, u, eta, alpha_p, Ep)
+        code = np.asarray(reg.code)
+        regimes_seen |= set(np.unique(code).tolist())
+        mu = np.asarray(mixed_friction_ianus(np.where(np.isfinite(Lam), Lam, 1e6), mu_full_film, mu_boundary))
+        if rolling_model == "auto":
+            F_R = np.asarray(rolling_force(Q, Rx, Ry, u, eta, Ep, model="auto", alpha_p=alpha_p, a=a, b=b,
+                                           regime=code))
+        else:
+            F_R = np.asarray(rolling_force(Q, Rx, Ry, u, eta, Ep, model=rolling_model, alpha_p=alpha_p, a=a, b=b))
+        F_R = np.where(Q > 0, F_R, 0.0)
+        P_roll = 2.0 * u * F_R
+        omega_roll = np.asarray(kin.omega_R) * np.cos(al + np.asarray(kin.beta))
+        Ra = deformed_radius(brg.D, f)
+        P_sl = np.where(Q > 0, _heathcote_power(mu, Q, a, Ra, omega_roll), 0.0)
+        MP = 0.375 * mu * Q * a
+        P_piv = MP * np.abs(np.asarray(spin))
+        MER = np.asarray(hysteresis_moment(Q, brg.D, np.maximum(Ry / Rx, 1.0)))
+        P_hys = MER * np.abs(omega_roll)
+        out_c[side] = dict(Q=Q, alpha=al, a=a, b=b, u=u, T_C=T_side, eta=eta, h_min=h_min, h_c=h_c, Lambda=Lam,
+                           regime=code, mu=mu, F_R=F_R, spin=np.asarray(spin), P_rolling=P_roll, P_sliding=P_sl,
+                           P_pivoting=P_piv, P_hysteresis=P_hys, M=reg.M, L=reg.L)
+        totals["rolling"] = totals["rolling"] + P_roll.sum(-1)
+        totals["sliding"] = totals["sliding"] + P_sl.sum(-1)
+        totals["pivoting"] = totals["pivoting"] + P_piv.sum(-1)
+        totals["hysteresis"] = totals["hysteresis"] + P_hys.sum(-1)
+        per_contact_heat[side] = (P_roll + P_sl + P_piv + P_hys).sum(-1)
+
+    # drag of the balls in the oil–air mixture
+    wc_mean = np.asarray(omega_c).mean(-1) if np.ndim(omega_c) else omega_c
+    if drag and supply not in ("oil_bath", "dry_film") and np.any(nb > 0):
+        if supply == "oil_jet":
+            W_cm3_min = oil_flow_m3_s * 1e6 * 60.0
+            X = np.where(nb > 0, oil_volume_fraction_parker(W_cm3_min, np.maximum(nb, 1e-9), brg.dm * 1e3), 0.0)
+        elif supply == "oil_air":
+            X = np.full(batch, 0.01)
+        else:
+            X = np.zeros(batch)
+        Tm = np.broadcast_to(Toil, batch)
+        dr = drag_loss(Z, brg.D, brg.dm, np.maximum(wc_mean, 1e-12), X, oil.rho(Tm), oil.eta(Tm), Tm + 273.15)
+        P_drag = np.where(nb > 0, np.asarray(dr.P_W), 0.0)
+    else:
+        P_drag = np.zeros(batch)
+    totals["drag"] = P_drag
+    breakdown = {k: _as(np.broadcast_to(v, batch)) for k, v in totals.items()}
+    P = sum(np.broadcast_to(v, batch) for v in totals.values())
+    with np.errstate(divide="ignore", invalid="ignore"):
+        torque = np.where(omega > 0, P / np.where(omega > 0, omega, 1.0), 0.0)
+    heat = {"inner_ring": _as(0.5 * per_contact_heat["inner"]), "outer_ring": _as(0.5 * per_contact_heat["outer"]),
+            "balls": _as(0.5 * (per_contact_heat["inner"] + per_contact_heat["outer"])), "oil": _as(P_drag)}
+    models = {
+        "load_distribution": ("Jones–Harris low-speed, rigid rings" + (", tilt free" if M is not None else ""),
+                              "quasi-static ball loads and angles (seed 004 eqs 6–8)"),
+        "hertz": (hertz_method, "exact elliptic integrals" if hertz_method == "exact" else "approximation chosen"),
+        "kinematics": (f"no-slip at contact centres, {control} control",
+                       "thrust: symmetric radial ball axis (seed 000)" if control == "radial" else "Jones outer-race control"),
+        "rolling": (rolling_model, "per-contact regime: " + ", ".join(sorted(regimes_seen))
+                    if rolling_model == "auto" else "chosen explicitly"),
+        "film": ("Hamrock–Dowson h_min, h_c; regime by NVM dominant terms", "seed 000 eq 15, seed 004 §3"),
+        "friction": ("mixed μ(Λ) seed 000 eq 18", f"μ_e {mu_full_film}, μ_a {mu_boundary}"),
+        "drag": ("Pouly 2010 sphere drag" if drag and supply not in ("oil_bath", "dry_film") else "none",
+                 {"oil_jet": "Parker oil fraction", "oil_air": "oil fraction 1 %", "grease": "air only"}.get(
+                     supply, "not modelled for this supply")),
+        "centrifugal": ("F_c/cos α on the outer contact" if centrifugal and brg.kind != "thrust" else "none",
+                        "balls outside the load zone ride on the outer race"),
+    }
+    return LossResult(P_W=_as(P), torque_Nm=_as(torque), breakdown_W=breakdown, contacts=out_c, heat_W=heat,
+                      load=ld, omega_c=_as(wc_mean), models_used=models)

@@ -1,0 +1,277 @@
+r"""Scene files: a bearing, its lubricant, loads, speed, and how heat leaves it.
+
+A scene is a TOML file with units in the key names, converted to SI once here.
+Sections (see ``examples/README.md`` for every key)::
+
+    [scene]      name, description, source
+    [bearing]    catalog = "7210"  and/or inline D_mm, dm_mm, Z, fi, fo, Pd_mm, alpha0_deg,
+                 kind, bore_mm, outer_diameter_mm, width_mm, series, C0_kN, materials
+    [lubricant]  name = "seed004-mineral" or inline nu40_cSt, nu100_cSt, rho15_kg_m3, alpha_p_1_Pa;
+                 supply = "oil_jet" | "grease" | "oil_bath" | "oil_air" | "dry_film";
+                 flow_L_h, T_in_C (oil jet); Rq_ball_um, Rq_ring_um (roughness);
+                 mu_boundary, mu_full_film (mixed-lubrication friction, seed 000 eq 18)
+    [operation]  n_rpm, Fa_N, Fr_N, M_Nm (tilt free) ; rotating = "inner" | "outer";
+                 T_C (prescribed bearing/contact temperature: no thermal network needed)
+    [thermal]    network = "oil_jet_ball_bearing" | ... ; T_ambient_C ; [thermal.parameters]
+    [models]     optional overrides: rolling, hertz, load_model, drag, sliding, ...
+
+Every bad value raises :class:`~thermobear.errors.InputError` naming the field,
+the value and what is expected.
+"""
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from ._data import read_toml
+from .errors import InputError
+from .geometry import BallBearing, bearing, bearing_from_dict
+
+__all__ = ["Scene", "load_scene", "scene_from_dict", "SUPPLIES"]
+
+SUPPLIES = ("oil_jet", "grease", "oil_bath", "oil_air", "dry_film")
+_SECTIONS = ("scene", "bearing", "lubricant", "operation", "thermal", "models", "rig")
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A validated scene in SI units.
+
+    Attributes
+    ----------
+    name : str
+    bearing : BallBearing
+    lubricant : object            thermobear.lubricant.Lubricant
+    supply : str                  lubrication method (``SUPPLIES``)
+    n_rpm : float                 speed of the rotating ring [rpm] (edge unit, kept for reporting)
+    omega : float                 its angular speed [rad/s]
+    rotating : str                ``"inner"`` or ``"outer"``
+    Fa, Fr : float                axial / radial load [N]
+    M : float | None              tilting moment [N m]; None holds the tilt
+    T_C : float | None            prescribed contact temperature [°C] (None: solve the thermal network)
+    oil_flow : float              supplied oil flow [m^3/s] (oil jet)
+    T_oil_in_C : float | None     oil inlet temperature [°C]
+    T_ambient_C : float           ambient temperature [°C]
+    Rq_ball, Rq_ring : float      RMS roughness [m]
+    mu_boundary, mu_full_film : float   friction coefficients of seed 000 eq 18 [-]
+    network : str | None          thermal network name (networks/<name>.toml)
+    network_parameters : dict     overrides of the network's parameters
+    models : dict                 model overrides (see thermobear.solver)
+    source : str                  where the scene comes from
+    path : str | None             file it was read from
+    raw : dict                    the parsed TOML (for tools that need more)
+    """
+
+    name: str
+    bearing: BallBearing
+    lubricant: object
+    supply: str
+    n_rpm: float
+    rotating: str = "inner"
+    Fa: float = 0.0
+    Fr: float = 0.0
+    M: float | None = None
+    T_C: float | None = None
+    oil_flow: float = 0.0
+    T_oil_in_C: float | None = None
+    T_ambient_C: float = 20.0
+    Rq_ball: float = 0.05e-6
+    Rq_ring: float = 0.1e-6
+    mu_boundary: float = 0.11
+    mu_full_film: float = 0.05
+    network: str | None = None
+    network_parameters: dict = field(default_factory=dict)
+    models: dict = field(default_factory=dict)
+    source: str = ""
+    path: str | None = None
+    raw: dict = field(default_factory=dict, repr=False, compare=False)
+
+    @property
+    def omega(self) -> float:
+        """Angular speed of the rotating ring [rad/s]."""
+        return self.n_rpm * np.pi / 30.0
+
+    @property
+    def omega_i(self) -> float:
+        """Inner-ring speed [rad/s]."""
+        return self.omega if self.rotating == "inner" else 0.0
+
+    @property
+    def omega_o(self) -> float:
+        """Outer-ring speed [rad/s]."""
+        return self.omega if self.rotating == "outer" else 0.0
+
+    def with_(self, **changes) -> "Scene":
+        """Copy with operating values changed, in the scene's own edge units.
+
+        Accepted keys: n_rpm, Fa (or Fa_N), Fr (Fr_N), M (M_Nm), T_C, T_oil_in_C, T_ambient_C,
+        oil_flow_L_h, lubricant (name or object), network_parameters (merged) and models (merged).
+
+        >>> from thermobear.scene import load_scene
+        >>> import thermobear
+        >>> s = load_scene(thermobear.example_path("seed004_oil_jet_7210.toml"))
+        >>> s.with_(n_rpm=6500, Fr=1500).Fr
+        1500.0
+        """
+        alias = {"Fa_N": "Fa", "Fr_N": "Fr", "M_Nm": "M"}
+        kw = {}
+        for k, v in changes.items():
+            k = alias.get(k, k)
+            if k in ("n_rpm", "Fa", "Fr", "T_C", "T_oil_in_C", "T_ambient_C"):
+                kw[k] = None if v is None else float(v)
+            elif k == "M":
+                kw[k] = None if v is None else float(v)
+            elif k == "oil_flow_L_h":
+                kw["oil_flow"] = float(v) * 1e-3 / 3600.0
+            elif k == "lubricant":
+                kw[k] = _lubricant_of(v) if isinstance(v, str) else v
+            elif k in ("network_parameters", "models"):
+                kw[k] = {**getattr(self, k), **v}
+            elif k == "bearing":
+                kw[k] = v
+            else:
+                raise InputError(f"scene.with_({k})", v, "unknown override; accepted: n_rpm, Fa, Fr, M, T_C, "
+                                 "T_oil_in_C, T_ambient_C, oil_flow_L_h, lubricant, network_parameters, models")
+        new = dataclasses.replace(self, **kw)
+        _validate_operation(new)
+        return new
+
+
+def _lubricant_of(spec, where="lubricant"):
+    from .lubricant import Lubricant, lubricant  # lubricant sits below scene in the data flow
+    if isinstance(spec, str):
+        return lubricant(spec)
+    if isinstance(spec, dict):
+        if "name" in spec and not any(k in spec for k in ("nu40_cSt", "eta_Pa_s")):
+            return lubricant(spec["name"])
+        return Lubricant.from_dict(spec, where=where) if hasattr(Lubricant, "from_dict") else Lubricant(**spec)
+    return spec
+
+
+def _num(sec: dict, key: str, where: str, default=None, lo=None, hi=None, lo_open=False, required=False):
+    if key not in sec:
+        if required:
+            raise InputError(f"{where}.{key}", None, "missing required field")
+        return default
+    v = sec[key]
+    if isinstance(v, bool) or not isinstance(v, (int, float)):
+        raise InputError(f"{where}.{key}", v, "must be a number")
+    v = float(v)
+    if not np.isfinite(v):
+        raise InputError(f"{where}.{key}", v, "must be finite")
+    if lo is not None and (v < lo or (lo_open and v == lo)):
+        rng = f"> {lo}" if lo_open else f">= {lo}"
+        raise InputError(f"{where}.{key}", v, f"must be {rng}" + (f" and <= {hi}" if hi is not None else ""))
+    if hi is not None and v > hi:
+        raise InputError(f"{where}.{key}", v, f"must be <= {hi}")
+    return v
+
+
+def _check_keys(sec: dict, allowed: set, where: str):
+    if not isinstance(sec, dict):
+        raise InputError(where, sec, "must be a table")
+    for k in sec:
+        if k not in allowed:
+            raise InputError(f"{where}.{k}", sec[k], f"unknown key; accepted: {', '.join(sorted(allowed))}")
+
+
+_BEARING_INLINE = {"D_mm", "dm_mm", "Z", "fi", "fo", "Pd_mm", "alpha0_deg", "kind", "bore_mm",
+                   "outer_diameter_mm", "width_mm", "series", "C0_kN", "ball_material", "ring_material",
+                   "name", "description", "source", "estimated"}
+
+
+def _bearing_of(sec: dict) -> BallBearing:
+    _check_keys(sec, _BEARING_INLINE | {"catalog"}, "bearing")
+    if "catalog" in sec:
+        base = bearing(str(sec["catalog"]))
+        over = {k: v for k, v in sec.items() if k != "catalog"}
+        if not over:
+            return base
+        from .geometry import _catalog
+        merged = {**_catalog()[sec["catalog"]], **over}
+        return bearing_from_dict(merged, name=str(sec["catalog"]), where="bearing")
+    return bearing_from_dict(sec, name=sec.get("name", "custom"), where="bearing")
+
+
+def _validate_operation(s: Scene):
+    if s.rotating not in ("inner", "outer"):
+        raise InputError("operation.rotating", s.rotating, "must be 'inner' or 'outer'")
+    if not (np.isfinite(s.n_rpm) and s.n_rpm >= 0):
+        raise InputError("operation.n_rpm", s.n_rpm, "speed must be >= 0 [rpm]")
+    for nm in ("Fa", "Fr"):
+        v = getattr(s, nm)
+        if not (np.isfinite(v) and v >= 0):
+            raise InputError(f"operation.{nm}_N", v, "load must be >= 0 [N]")
+    if s.T_C is not None and not (-60.0 <= s.T_C <= 250.0):
+        raise InputError("operation.T_C", s.T_C, "temperature must lie in [-60, 250] °C")
+    for nm in ("T_ambient_C", "T_oil_in_C"):
+        v = getattr(s, nm)
+        if v is not None and not (-60.0 <= v <= 250.0):
+            raise InputError(f"thermal.{nm}", v, "temperature must lie in [-60, 250] °C")
+
+
+def scene_from_dict(d: dict, path: str | None = None) -> Scene:
+    """Validate a parsed scene table and convert it to SI (see the module docstring)."""
+    _check_keys(d, set(_SECTIONS), "scene file")
+    meta = d.get("scene", {})
+    _check_keys(meta, {"name", "description", "source"}, "scene")
+    if "bearing" not in d:
+        raise InputError("bearing", None, "missing section [bearing] (catalog = \"...\" or inline geometry)")
+    brg = _bearing_of(d["bearing"])
+    if "lubricant" not in d:
+        raise InputError("lubricant", None, "missing section [lubricant] (name = \"...\" or inline properties)")
+    lsec = dict(d["lubricant"])
+    lkeys = {"supply", "flow_L_h", "T_in_C", "Rq_ball_um", "Rq_ring_um", "mu_boundary", "mu_full_film"}
+    supply = lsec.get("supply", "oil_jet")
+    if supply not in SUPPLIES:
+        raise InputError("lubricant.supply", supply, f"must be one of {', '.join(SUPPLIES)}")
+    lub_spec = {k: v for k, v in lsec.items() if k not in lkeys}
+    if not lub_spec:
+        raise InputError("lubricant.name", None, "give a lubricant name or its properties (nu40_cSt, nu100_cSt, ...)")
+    lub = _lubricant_of(lub_spec["name"] if set(lub_spec) == {"name"} else lub_spec, where="lubricant")
+    op = d.get("operation", {})
+    _check_keys(op, {"n_rpm", "Fa_N", "Fr_N", "M_Nm", "rotating", "T_C"}, "operation")
+    th = d.get("thermal", {})
+    _check_keys(th, {"network", "T_ambient_C", "parameters"}, "thermal")
+    models = d.get("models", {})
+    _check_keys(models, {"rolling", "hertz", "load_model", "drag", "sliding", "kinematics", "stiffness",
+                         "thermal", "film", "friction", "high_speed"}, "models")
+    s = Scene(
+        name=str(meta.get("name", Path(path).stem if path else "scene")),
+        bearing=brg, lubricant=lub, supply=supply,
+        n_rpm=_num(op, "n_rpm", "operation", required=True, lo=0.0),
+        rotating=str(op.get("rotating", "inner")),
+        Fa=_num(op, "Fa_N", "operation", 0.0, lo=0.0),
+        Fr=_num(op, "Fr_N", "operation", 0.0, lo=0.0),
+        M=_num(op, "M_Nm", "operation", None),
+        T_C=_num(op, "T_C", "operation", None, lo=-60.0, hi=250.0),
+        oil_flow=_num(lsec, "flow_L_h", "lubricant", 0.0, lo=0.0) * 1e-3 / 3600.0,
+        T_oil_in_C=_num(lsec, "T_in_C", "lubricant", None, lo=-60.0, hi=250.0),
+        T_ambient_C=_num(th, "T_ambient_C", "thermal", 20.0, lo=-60.0, hi=250.0),
+        Rq_ball=_num(lsec, "Rq_ball_um", "lubricant", 0.05, lo=0.0) * 1e-6,
+        Rq_ring=_num(lsec, "Rq_ring_um", "lubricant", 0.1, lo=0.0) * 1e-6,
+        mu_boundary=_num(lsec, "mu_boundary", "lubricant", 0.11, lo=0.0, hi=1.0),
+        mu_full_film=_num(lsec, "mu_full_film", "lubricant", 0.05, lo=0.0, hi=1.0),
+        network=th.get("network"), network_parameters=dict(th.get("parameters", {})),
+        models=dict(models), source=str(meta.get("source", "")), path=path, raw=d)
+    if s.supply == "oil_jet" and s.T_C is None and s.network is not None and s.T_oil_in_C is None:
+        raise InputError("lubricant.T_in_C", None, "an oil-jet scene solved thermally needs the oil inlet temperature [°C]")
+    _validate_operation(s)
+    return s
+
+
+def load_scene(path) -> Scene:
+    """Read and validate a scene file (TOML).
+
+    >>> import thermobear
+    >>> s = load_scene(thermobear.example_path("seed004_oil_jet_7210.toml"))
+    >>> s.bearing.name, s.n_rpm, s.Fa, s.Fr
+    ('7210', 3200.0, 450.0, 650.0)
+    """
+    p = Path(path)
+    if not p.is_file():
+        raise InputError("scene", str(path), "file not found")
+    return scene_from_dict(read_toml(str(p.resolve())), path=str(p))

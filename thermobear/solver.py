@@ -1,0 +1,393 @@
+r"""The scene solver: the least model a scene needs, steady state and transient.
+
+In the spirit of pvlib's ModelChain, :func:`choose_models` infers from what a
+scene contains which sub-models serve it, each with the reason, overridable
+from the scene's ``[models]`` table:
+
+* **thermal** — no thermal network when the scene prescribes the temperature
+  (``operation.T_C``); else the scene's network, coupled to the losses by a
+  fixed point (:mod:`thermobear.coupling`).
+* **load_model** — the closed form when the load case is symmetric and the
+  closed form is exact (pure axial load, tilt held: all balls equal, Harris
+  eq 7.36; thrust bearing: Q = Fa/Z); Jones–Harris otherwise.  Centrifugal and
+  gyroscopic terms (``high_speed``) only where ``needs_high_speed`` says they
+  matter (F_c > 5 % of the ball load) and the high-speed solver is available;
+  otherwise the low-speed form with F_c added to the outer contact load.
+* **drag** — only for jet / oil–air supply, or when n·dm ≥ 1e5 mm·rpm (below,
+  churning of a few balls in air is < 0.1 % of the contact losses).
+* **rolling** — per-contact regime selection (seed 004) unless named.
+* **hertz** — exact (one ellipticity solve per contact; the approximations'
+  errors, 1–5 %, would show in p_max and the film).
+
+The same numbers come out whichever path computes them (tests/test_solver.py).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .errors import InputError
+from .losses import LossResult, bearing_losses
+from .loads import LoadDistribution, axial_contact_angle, load_distribution, needs_high_speed
+from .scene import Scene
+
+__all__ = ["choose_models", "scene_losses", "solve", "steady_state", "transient", "RunResult",
+           "SteadyState", "TransientRun", "network_context"]
+
+_ROLES = {"inner": ("inner_race", "shaft_washer", "inner_ring", "bearing"),
+          "outer": ("outer_race", "housing_washer", "outer_ring", "bearing"),
+          "ball": ("balls", "bearing"),
+          "oil": ("oil_air", "balls", "bearing")}
+
+
+def choose_models(scene: Scene) -> dict:
+    """Models a scene needs, each as ``(choice, reason)`` (see the module docstring)."""
+    b, m = scene.bearing, dict(scene.models)
+    out = {}
+    if scene.T_C is not None:
+        out["thermal"] = ("none", f"temperature prescribed in the scene ({scene.T_C:g} °C)")
+    elif scene.network:
+        out["thermal"] = (f"network {scene.network}", "temperatures solved with the losses (fixed point)")
+    else:
+        raise InputError("thermal.network", None, "give a thermal network or prescribe operation.T_C")
+    symmetric = scene.Fr == 0.0 and scene.M is None
+    if "load_model" in m:
+        if m["load_model"] not in ("closed_form", "jones_harris"):
+            raise InputError("models.load_model", m["load_model"], "must be 'closed_form' or 'jones_harris'")
+        if m["load_model"] == "closed_form" and not symmetric:
+            raise InputError("models.load_model", "closed_form", "the closed form needs Fr = 0 and no moment")
+        out["load_model"] = (m["load_model"], "chosen in the scene")
+    elif symmetric:
+        out["load_model"] = ("closed_form", "pure axial load, tilt held: all balls equal (exact closed form)")
+    else:
+        out["load_model"] = ("jones_harris", "combined load: balls differ (Jones–Harris, seed 004 eqs 6–8)")
+    Qtyp = max(scene.Fa / (b.Z * max(np.sin(b.alpha0), 1e-3)), scene.Fr * 5.0 / b.Z, 1e-9)
+    need, ratio = needs_high_speed(b, scene.n_rpm, Qtyp)
+    if b.kind == "thrust":
+        out["high_speed"] = ("no", "thrust bearing: centrifugal force acts across the groove; not modelled")
+    elif bool(need):
+        out["high_speed"] = ("low-speed + F_c on outer contact",
+                             f"F_c/Q = {float(ratio):.2f} > 0.05; centrifugal load added to the outer contacts")
+    else:
+        out["high_speed"] = ("no", f"F_c/Q = {float(ratio):.3f} <= 0.05")
+    ndm = scene.n_rpm * b.dm * 1e3
+    if "drag" in m:
+        out["drag"] = (bool(m["drag"]), "chosen in the scene")
+    elif scene.supply in ("oil_jet", "oil_air"):
+        out["drag"] = (True, f"{scene.supply}: balls run through an oil–air mixture")
+    elif ndm >= 1e5 and scene.supply == "grease":
+        out["drag"] = (True, f"n dm = {ndm:.3g} mm rpm >= 1e5")
+    else:
+        out["drag"] = (False, f"{scene.supply} at n dm = {ndm:.3g} mm rpm: churning negligible")
+    out["rolling"] = (m.get("rolling", "auto"), "chosen in the scene" if "rolling" in m
+                      else "per-contact regime (IVR: Houpert, PVR/IVE: Biboulet, EHL: Houpert; seed 004)")
+    out["hertz"] = (m.get("hertz", "exact"), "chosen in the scene" if "hertz" in m else
+                    "exact elliptic integrals (approximations err 1–5 %)")
+    return out
+
+
+def _closed_form_axial(b, Fa) -> LoadDistribution:
+    """Pure axial load, all balls equal: Harris eq 7.36 (radial/angular) or Q = Fa/Z (thrust)."""
+    Z = b.Z
+    psi = 2.0 * np.pi * np.arange(Z) / Z
+    if b.kind == "thrust" and b.alpha0 >= np.pi / 2 - 1e-12:
+        al = np.pi / 2
+        Q = Fa / Z
+        da = b.A + (Q / b.Kn()) ** (2.0 / 3.0) if Fa > 0 else 0.0
+    else:
+        al = float(axial_contact_angle(b, Fa))
+        Q = Fa / (Z * np.sin(al)) if Fa > 0 else 0.0
+        da = b.A * np.cos(b.alpha0) * np.tan(al) if Fa > 0 else 0.0
+    dn = (Q / b.Kn()) ** (2.0 / 3.0)
+    full = np.full(Z, Q)
+    return LoadDistribution(delta_a=float(da), delta_r=0.0, theta=0.0, Q_i=full, Q_o=full.copy(),
+                            alpha_i=np.full(Z, al), alpha_o=np.full(Z, al), psi=psi, delta_n=np.full(Z, dn),
+                            residual=0.0, iterations=0, Fa=np.asarray(Fa), Fr=np.asarray(0.0), M=0.0)
+
+
+def scene_load(scene: Scene, models: dict | None = None) -> LoadDistribution:
+    """Load distribution by the model :func:`choose_models` picked."""
+    models = models or choose_models(scene)
+    if models["load_model"][0] == "closed_form":
+        return _closed_form_axial(scene.bearing, scene.Fa)
+    stiff = scene.models.get("stiffness", "nominal")
+    return load_distribution(scene.bearing, Fa=scene.Fa, Fr=scene.Fr, M=scene.M, stiffness=stiff)
+
+
+def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oil_C=None,
+                 load: LoadDistribution | None = None, models: dict | None = None) -> LossResult:
+    """Losses of a scene at given temperatures (default: the scene's prescribed T_C) [W]."""
+    models = models or choose_models(scene)
+    if T_C is None:
+        T_C = scene.T_C if scene.T_C is not None else scene.T_ambient_C
+    load = load if load is not None else scene_load(scene, models)
+    r = bearing_losses(scene.bearing, scene.lubricant, Fa=scene.Fa, Fr=scene.Fr, n_rpm=scene.n_rpm, T_C=T_C,
+                       M=scene.M, T_inner_C=T_inner_C, T_outer_C=T_outer_C, T_oil_C=T_oil_C,
+                       rotating=scene.rotating, supply=scene.supply, oil_flow_m3_s=scene.oil_flow,
+                       Rq_ball=scene.Rq_ball, Rq_ring=scene.Rq_ring, mu_boundary=scene.mu_boundary,
+                       mu_full_film=scene.mu_full_film, rolling_model=models["rolling"][0],
+                       hertz_method=models["hertz"][0], drag=bool(models["drag"][0]),
+                       centrifugal=models["high_speed"][0] != "no", load=load)
+    used = dict(r.models_used)
+    used.update({k: v for k, v in models.items()})
+    object.__setattr__(r, "models_used", used)
+    return r
+
+
+def network_context(scene: Scene, contacts: dict | None = None) -> dict:
+    """Context for :func:`thermobear.thermal.load_network` from a scene."""
+    ctx = {"bearing": scene.bearing,
+           "scene": {"n_rpm": scene.n_rpm, "T_ambient_C": scene.T_ambient_C,
+                     "T_oil_in_C": scene.T_oil_in_C if scene.T_oil_in_C is not None else scene.T_ambient_C,
+                     "oil_flow_m3_s": scene.oil_flow, **{k: v for k, v in scene.network_parameters.items()}},
+           "oil": scene.lubricant}
+    if contacts is not None:
+        ctx["contacts"] = contacts
+    return ctx
+
+
+def _roles(net) -> dict:
+    roles = {}
+    for role, cands in _ROLES.items():
+        for c in cands:
+            if c in net.index and not net.fixed[net.index[c]]:
+                roles[role] = c
+                break
+        else:
+            raise InputError(f"network {net.name}", role, f"has no node for the role '{role}' (tried {', '.join(cands)})")
+    return roles
+
+
+@dataclass
+class SteadyState:
+    """Coupled steady state of a scene.
+
+    Attributes
+    ----------
+    T_C : dict                node → temperature [°C]
+    T_ball_C : float          ball temperature [°C]
+    P_W : float               total power loss [W]
+    losses : LossResult       losses at equilibrium
+    iterations : int          fixed-point iterations
+    residual_K : float        last temperature change [K]
+    energy_balance_W : float  Σ sources − Σ heat to fixed nodes [W]
+    heat_flows_W : dict       element → heat flow [W]
+    models_used : dict        model → (choice, reason)
+    history : list            convergence history
+    """
+
+    T_C: dict
+    T_ball_C: float
+    P_W: float
+    losses: LossResult
+    iterations: int
+    residual_K: float
+    energy_balance_W: float
+    heat_flows_W: dict
+    models_used: dict
+    history: list = field(default_factory=list)
+    roles: dict = field(default_factory=dict)
+
+
+def _contact_temps(T_C: dict, roles: dict):
+    Tb = T_C[roles["ball"]]
+    return 0.5 * (Tb + T_C[roles["inner"]]), 0.5 * (Tb + T_C[roles["outer"]]), T_C[roles["oil"]]
+
+
+def _setup_thermal(scene: Scene, models: dict):
+    from .thermal import load_network
+    load = scene_load(scene, models)
+    # contact semi-axes for the contact conductances: from the loads at the nominal temperature
+    r0 = scene_losses(scene, T_C=scene.T_ambient_C, load=load, models=models)
+    contacts = {s: {"a_m": np.maximum(r0.contacts[s]["a"], 0.0), "b_m": np.maximum(r0.contacts[s]["b"], 0.0)}
+                for s in ("inner", "outer")}
+    net = load_network(scene.network, network_context(scene, contacts))
+    return net, load, _roles(net)
+
+
+def _sources(scene, models, load, roles, T_C: dict):
+    from .thermal import split_losses
+    Ti, To, Toil = _contact_temps(T_C, roles)
+    r = scene_losses(scene, T_inner_C=Ti, T_outer_C=To, T_oil_C=Toil, T_C=Toil, load=load, models=models)
+    ci, co = r.contacts["inner"], r.contacts["outer"]
+    Pi = ci["P_rolling"] + ci["P_sliding"] + ci["P_pivoting"] + ci["P_hysteresis"]
+    Po = co["P_rolling"] + co["P_sliding"] + co["P_pivoting"] + co["P_hysteresis"]
+    src = split_losses(Pi, Po, r.breakdown_W["drag"], ball=roles["ball"], inner=roles["inner"],
+                       outer=roles["outer"], oil=roles["oil"])
+    return src, r
+
+
+def steady_state(scene: Scene, *, tol_K: float = 1e-6, **kw) -> SteadyState:
+    """Coupled steady state: losses(T) ↔ thermal network, to a fixed point.
+
+    Raises ThermalRunaway or NoConvergence (with the history) when no stable
+    equilibrium is found.
+
+    >>> import thermobear as tb
+    >>> st = steady_state(tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml")))
+    >>> bool(abs(st.energy_balance_W) <= 1e-9 * st.P_W), bool(st.T_C["inner_ring"] > 30.0)
+    (True, True)
+    """
+    from .coupling import solve_network_coupled
+    models = choose_models(scene)
+    if scene.T_C is not None:
+        raise InputError("operation.T_C", scene.T_C, "the scene prescribes its temperature: use solve() "
+                         "or remove operation.T_C to solve the thermal network")
+    net, load, roles = _setup_thermal(scene, models)
+    last = {}
+
+    def losses(T_K: dict):
+        T_C = {k: v - 273.15 for k, v in T_K.items()}
+        src, r = _sources(scene, models, load, roles, T_C)
+        last["r"] = r
+        return src, {"P_W": r.P_W}
+
+    res = solve_network_coupled(net, losses, tol_K=tol_K, **kw)
+    st = res.steady
+    T_C = dict(st.T_C)
+    _, r = _sources(scene, models, load, roles, T_C)
+    used = dict(r.models_used)
+    used["thermal"] = (f"network {net.name}", f"fixed point: {res.method}, {res.iterations} iterations")
+    used["node_roles"] = (roles, "contact temperature = mean of ball and race nodes (seed 004 §4.5)")
+    return SteadyState(T_C=T_C, T_ball_C=T_C[roles["ball"]], P_W=float(r.P_W), losses=r,
+                       iterations=res.iterations, residual_K=res.residual_K,
+                       energy_balance_W=float(st.balance_W),
+                       heat_flows_W={k: f.Q_W for k, f in st.flows.items()},
+                       models_used=used, history=res.history, roles=roles)
+
+
+@dataclass
+class TransientRun:
+    """Heat-up of a scene.
+
+    Attributes
+    ----------
+    t_s : ndarray            times [s]
+    T_C : dict               node → temperatures [°C] (arrays over t_s)
+    P_W : ndarray            total power loss [W]
+    breakdown_W : dict       loss family → power [W] over t_s
+    models_used : dict
+    """
+
+    t_s: np.ndarray
+    T_C: dict
+    P_W: np.ndarray
+    breakdown_W: dict
+    models_used: dict
+    roles: dict = field(default_factory=dict)
+
+
+def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=None, **kw) -> TransientRun:
+    """Heat-up of a scene on its thermal network, losses re-evaluated as temperatures change.
+
+    Parameters
+    ----------
+    scene : Scene
+    t_end_s : float          end time [s]
+    schedule : list          optional steps ``[(t_s, {"n_rpm": ..., "Fa": ..., ...}), ...]`` applied
+                             from t_s on (scene.with_ overrides)
+    T0_C : float or dict     start temperature of the free nodes (default: ambient)
+    t_eval : array_like      output times [s]
+    """
+    from .thermal import solve_transient
+    if not (np.isfinite(t_end_s) and t_end_s > 0):
+        raise InputError("t_end_s", t_end_s, "end time must be > 0 [s]")
+    steps = sorted(schedule or [], key=lambda s: s[0])
+    scenes = [(0.0, scene)]
+    for t, ch in steps:
+        if not (0 <= t < t_end_s):
+            raise InputError("schedule.t_s", t, f"step times must lie in [0, {t_end_s}) s")
+        scenes.append((float(t), scenes[-1][1].with_(**ch)))
+    prepared = []
+    net = None
+    for t, sc in scenes:
+        models = choose_models(sc)
+        n, load, roles = _setup_thermal(sc, models)
+        net = net or n
+        prepared.append((t, sc, models, load, roles))
+
+    def current(t):
+        k = 0
+        for i, (ts, *_rest) in enumerate(prepared):
+            if t >= ts - 1e-12:
+                k = i
+        return prepared[k]
+
+    def sources(t, T_K):
+        _, sc, models, load, roles = current(t)
+        T_C = {k: v - 273.15 for k, v in T_K.items()}
+        src, r = _sources(sc, models, load, roles, T_C)
+        return src, {"P_W": float(r.P_W), **{f"P_{k}": float(v) for k, v in r.breakdown_W.items()}}
+
+    T0 = scene.T_ambient_C if T0_C is None else T0_C
+    tr = solve_transient(net, sources, float(t_end_s), T0_C=T0, breakpoints=[t for t, *_ in prepared[1:]],
+                         t_eval=t_eval, **kw)
+    rep = tr.report
+    P = np.asarray(rep.get("P_W", []), float)
+    bd = {k[2:]: np.asarray(v, float) for k, v in rep.items() if k.startswith("P_") and k != "P_W"}
+    return TransientRun(t_s=np.asarray(tr.t), T_C=dict(tr.T_C), P_W=P,
+                        breakdown_W=bd, models_used=prepared[0][2], roles=prepared[0][4])
+
+
+@dataclass
+class RunResult:
+    """What ``thermobear run`` reports."""
+
+    scene: Scene
+    P_W: float
+    torque_Nm: float
+    breakdown_W: dict
+    T_C: dict
+    models_used: dict
+    losses: LossResult
+    steady: SteadyState | None = None
+
+    def as_dict(self) -> dict:
+        r = self.losses
+        d = {"scene": self.scene.name, "bearing": self.scene.bearing.name, "n_rpm": self.scene.n_rpm,
+             "Fa_N": self.scene.Fa, "Fr_N": self.scene.Fr, "T_C": self.T_C, "P_W": self.P_W,
+             "torque_Nm": self.torque_Nm, "breakdown_W": self.breakdown_W,
+             "models_used": {k: {"choice": v[0], "reason": v[1]} for k, v in self.models_used.items()},
+             "balls": {"Q_inner_N": r.contacts["inner"]["Q"], "Q_outer_N": r.contacts["outer"]["Q"],
+                       "alpha_deg": np.rad2deg(r.contacts["inner"]["alpha"]),
+                       "regime_inner": r.contacts["inner"]["regime"], "regime_outer": r.contacts["outer"]["regime"]}}
+        if self.steady is not None:
+            d["solver"] = {"iterations": self.steady.iterations, "residual_K": self.steady.residual_K,
+                           "energy_balance_W": self.steady.energy_balance_W}
+        return d
+
+    def summary(self) -> str:
+        s = self.scene
+        lines = [f"thermobear — {s.name}: {s.bearing.name}, {s.n_rpm:g} rpm, Fa {s.Fa:g} N, Fr {s.Fr:g} N, "
+                 f"{s.lubricant.name} ({s.supply})", "", "Temperatures [°C]"]
+        for k, v in self.T_C.items():
+            lines.append(f"  {k:18s} {v:8.2f}")
+        lines += ["", f"Power loss {self.P_W:.3f} W   (friction torque {self.torque_Nm * 1e3:.2f} N mm)"]
+        for k, v in self.breakdown_W.items():
+            share = 100 * v / self.P_W if self.P_W > 0 else 0.0
+            lines.append(f"  {k:12s} {v:10.4f} W  {share:5.1f} %")
+        lines += ["", "Models used"]
+        for k, v in self.models_used.items():
+            if k == "node_roles":
+                continue
+            lines.append(f"  {k:18s} {str(v[0]):40s} {v[1]}")
+        if self.steady is not None:
+            lines += ["", f"Fixed point: {self.steady.iterations} iterations, residual {self.steady.residual_K:.1e} K, "
+                          f"energy balance {self.steady.energy_balance_W:.1e} W"]
+        return "\n".join(lines)
+
+
+def solve(scene: Scene) -> RunResult:
+    """Run a scene with the least model it needs (thermal network only when temperatures are not given)."""
+    models = choose_models(scene)
+    if scene.T_C is not None:
+        r = scene_losses(scene, models=models)
+        return RunResult(scene=scene, P_W=float(r.P_W), torque_Nm=float(r.torque_Nm),
+                         breakdown_W=dict(r.breakdown_W), T_C={"contacts (prescribed)": scene.T_C},
+                         models_used=r.models_used, losses=r)
+    st = steady_state(scene)
+    return RunResult(scene=scene, P_W=st.P_W, torque_Nm=float(st.losses.torque_Nm),
+                     breakdown_W=dict(st.losses.breakdown_W), T_C=st.T_C, models_used=st.models_used,
+                     losses=st.losses, steady=st)
