@@ -14,6 +14,7 @@ clearance Pd = d_o − d_i − 2D; A = (fi + fo − 1) D; cos α0 = 1 − Pd/(2A
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
+from functools import cached_property
 
 import numpy as np
 
@@ -228,8 +229,15 @@ class BallBearing:
         333592
         """
         if alpha is None:
+            if method == "exact":
+                return self._Kn_nominal
             alpha = self.alpha_nominal
         return series_stiffness(self.K_i(alpha, method), self.K_o(alpha, method))
+
+    @cached_property
+    def _Kn_nominal(self) -> float:
+        """K_n at the nominal angle, exact Hertz (cached: the bearing is immutable)."""
+        return float(series_stiffness(self.K_i(self.alpha_nominal), self.K_o(self.alpha_nominal)))
 
     def with_(self, **changes) -> "BallBearing":
         """Copy with some fields changed (validated again).
