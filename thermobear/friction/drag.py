@@ -135,7 +135,7 @@ def mixture_viscosity(X, mu_oil, mu_air):
 
 
 def air_properties(T_K, p_Pa=_P_ATM):
-    r"""Density [kg/m³] and dynamic viscosity [Pa s] of dry air from CoolProp.
+    r"""Density [kg/m³] and dynamic viscosity [Pa s] of dry air from CoolProp (tabulated, :mod:`thermobear.air`).
 
     Parameters
     ----------
@@ -148,14 +148,9 @@ def air_properties(T_K, p_Pa=_P_ATM):
     >>> round(rho, 3), round(mu * 1e6, 2)
     (1.165, 18.69)
     """
-    from CoolProp.CoolProp import PropsSI
-    T = _pos("T_K", T_K)
-    if np.any(T < 200) or np.any(T > 600):
-        raise InputError("T_K", T_K, "air properties are provided for 200..600 K")
-    _pos("p_Pa", p_Pa)
-    rho = PropsSI("D", "T", T, "P", p_Pa, "Air")
-    mu = PropsSI("V", "T", T, "P", p_Pa, "Air")
-    return _out(rho), _out(mu)
+    from ..air import air_properties as _air
+    p = _air(_pos("T_K", T_K), _pos("p_Pa", p_Pa))
+    return _out(p["rho"]), _out(p["mu"])
 
 
 def drag_coefficient_sphere(Re, method="Clift_Gauvin"):

@@ -219,34 +219,14 @@ def h_harris(k, Pr, u, nu, x, coefficient="harris"):
 
 
 def air_properties(T_K, p_Pa=101325.0):
-    r"""Dry-air properties from CoolProp (Lemmon et al. 2000 pseudo-pure air).
+    r"""Dry-air properties (CoolProp, tabulated): see :func:`thermobear.air.air_properties`.
 
-    Parameters
-    ----------
-    T_K : array_like  temperature [K]
-    p_Pa : float      pressure [Pa]
-
-    Returns
-    -------
-    dict with rho [kg/m³], mu [Pa s], k [W/(m K)], cp [J/(kg K)], nu [m²/s], Pr [-]
-
-    Examples
-    --------
     >>> p = air_properties(300.0)
     >>> round(p["rho"], 3), round(p["k"], 4), round(p["Pr"], 3)
     (1.177, 0.0264, 0.707)
     """
-    from CoolProp.CoolProp import PropsSI
-
-    T = _pos("T_K", T_K)
-    rho = PropsSI("D", "T", T, "P", p_Pa, "Air")
-    mu = PropsSI("V", "T", T, "P", p_Pa, "Air")
-    k = PropsSI("L", "T", T, "P", p_Pa, "Air")
-    cp = PropsSI("C", "T", T, "P", p_Pa, "Air")
-    out = dict(rho=rho, mu=mu, k=k, cp=cp)
-    out["nu"] = out["mu"] / out["rho"]
-    out["Pr"] = out["mu"] * out["cp"] / out["k"]
-    return {key: _out(v) for key, v in out.items()}
+    from ..air import air_properties as _air
+    return _air(T_K, p_Pa)
 
 
 def oil_air_properties(X, rho_oil, nu_oil_cSt, k_oil, cp_oil, T_K):

@@ -1,0 +1,64 @@
+r"""Dry-air properties from CoolProp, tabulated once for speed.
+
+CoolProp's ``PropsSI`` (Lemmon et al. 2000 pseudo-pure air; Lemmon & Jacobsen
+2004 transport) costs about a millisecond per call, which dominated the
+coupled thermal solve.  At the cavity pressure (1 atm) this module tabulates
+density, viscosity, conductivity and c_p once per process on 200–600 K at
+1 K steps and interpolates with cubic splines (relative error < 1e-6 against
+``PropsSI``; tests/test_air.py).  Other pressures go to ``PropsSI`` directly.
+"""
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+from scipy.interpolate import CubicSpline
+
+from .errors import InputError
+
+__all__ = ["air_properties", "P_ATM", "T_RANGE_K"]
+
+P_ATM = 101325.0          #: cavity pressure used for the table [Pa]
+T_RANGE_K = (200.0, 600.0)
+
+
+def _propssi(T, p):
+    from CoolProp.CoolProp import PropsSI
+    return {"rho": PropsSI("D", "T", T, "P", p, "Air"), "mu": PropsSI("V", "T", T, "P", p, "Air"),
+            "k": PropsSI("L", "T", T, "P", p, "Air"), "cp": PropsSI("C", "T", T, "P", p, "Air")}
+
+
+@lru_cache(maxsize=1)
+def _table():
+    T = np.arange(T_RANGE_K[0], T_RANGE_K[1] + 0.5, 1.0)
+    props = _propssi(T, P_ATM)
+    return {k: CubicSpline(T, np.asarray(v, float)) for k, v in props.items()}
+
+
+def air_properties(T_K, p_Pa=P_ATM):
+    r"""Dry-air properties [SI] at temperature ``T_K`` [K] and pressure ``p_Pa`` [Pa].
+
+    Returns
+    -------
+    dict  rho [kg/m³], mu [Pa s], k [W/(m K)], cp [J/(kg K)], nu = mu/rho [m²/s],
+          Pr = mu cp / k [-]; floats for scalar input, arrays otherwise
+
+    Examples
+    --------
+    >>> p = air_properties(300.0)
+    >>> round(p["rho"], 3), round(p["k"], 4), round(p["Pr"], 3)
+    (1.177, 0.0264, 0.707)
+    """
+    T = np.asarray(T_K, dtype=float)
+    if np.any(~np.isfinite(T)) or np.any(T < T_RANGE_K[0]) or np.any(T > T_RANGE_K[1]):
+        raise InputError("T_K", T_K, f"air properties are provided for {T_RANGE_K[0]:g}..{T_RANGE_K[1]:g} K")
+    if not (np.isfinite(p_Pa) and p_Pa > 0):
+        raise InputError("p_Pa", p_Pa, "pressure must be > 0 [Pa]")
+    if abs(p_Pa - P_ATM) < 1e-9 * P_ATM:
+        tab = _table()
+        out = {k: tab[k](T) for k in ("rho", "mu", "k", "cp")}
+    else:
+        out = {k: np.asarray(v, float) for k, v in _propssi(T, float(p_Pa)).items()}
+    out["nu"] = out["mu"] / out["rho"]
+    out["Pr"] = out["mu"] * out["cp"] / out["k"]
+    return {k: (float(v) if np.ndim(v) == 0 else np.asarray(v)) for k, v in out.items()}
