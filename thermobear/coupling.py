@@ -389,7 +389,12 @@ def solve_network_coupled(net, losses: Callable, *, T0_C=None, steady_kw=None, *
         return st, src, rep
 
     def update(Tf):
-        st, src, _ = run(Tf)
+        # one linear network solve at the current conductances: the fixed point converges the
+        # temperature-dependent conductances together with the losses (no inner loop)
+        T = full(Tf)
+        out = losses({n: float(T[k]) for k, n in enumerate(net.nodes)})
+        src = out[0] if isinstance(out, tuple) else out
+        st = solve_steady(net, src, T_guess_K=T, linearized=True, **steady_kw)
         return st.T_K[free], math.fsum(float(np.sum(v)) for v in src.values())
 
     T0 = net.initial_T_K()[free] if T0_C is None else np.full(free.sum(), float(T0_C) + 273.15)

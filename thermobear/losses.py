@@ -44,7 +44,8 @@ from .hertz import hertz
 from .kinematics import ball_kinematics
 from .loads import LoadDistribution, load_distribution
 
-__all__ = ["LossResult", "bearing_losses", "BREAKDOWN_KEYS", "ROLLING_MODELS"]
+__all__ = ["LossResult", "ContactSet", "bearing_losses", "prepare_contacts", "evaluate_losses",
+           "BREAKDOWN_KEYS", "ROLLING_MODELS"]
 
 BREAKDOWN_KEYS = ("sliding", "rolling", "pivoting", "hysteresis", "drag")
 ROLLING_MODELS = ("auto", "biboulet_ivr", "biboulet_ehl", "biboulet_transition", "houpert_ivr",
@@ -104,6 +105,199 @@ def _heathcote_power(mu, Q, a, Ra, omega_roll):
     return mu * Q * np.abs(omega_roll) * integrand.sum(axis=0)
 
 
+@dataclass(frozen=True)
+class ContactSet:
+    """Temperature-independent part of the local model (rigid rings: the mechanics does not
+    depend on temperature).  Built by :func:`prepare_contacts`, evaluated by :func:`evaluate_losses`.
+
+    Attributes
+    ----------
+    brg : BallBearing
+    batch : tuple                batch shape of the operating points
+    n_rpm : ndarray              speed [rpm] (batch)
+    omega : ndarray              rotating-ring speed [rad/s] (batch)
+    load : LoadDistribution
+    omega_c : ndarray            cage speed per ball [rad/s] (batch + (Z,))
+    sides : dict                 "inner"/"outer" → dict of Q, alpha, Rx, Ry, a, b, u, spin,
+                                 omega_roll, I_sl (Heathcote slip integral per unit μ [W]),
+                                 I_piv (pivoting power per unit μ [W]), P_hysteresis [W]
+    models_used : dict
+    """
+
+    brg: BallBearing
+    batch: tuple
+    n_rpm: np.ndarray
+    omega: np.ndarray
+    load: LoadDistribution
+    omega_c: np.ndarray
+    sides: dict
+    models_used: dict
+
+
+def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rotating: str = "inner",
+                     hertz_method: str = "exact", control: str | None = None, centrifugal: bool = True,
+                     load: LoadDistribution | None = None, batch_extra: tuple = ()) -> ContactSet:
+    """Load distribution, Hertz ellipses, kinematics and every temperature-independent loss
+    factor of each contact (see :func:`bearing_losses` for the parameters)."""
+    if rotating not in ("inner", "outer"):
+        raise InputError("rotating", rotating, "must be 'inner' or 'outer'")
+    n = np.asarray(n_rpm, dtype=float)
+    if np.any(~np.isfinite(n)) or np.any(n < 0):
+        raise InputError("n_rpm", n_rpm, "speed must be finite and >= 0 [rpm]")
+    Fa_a, Fr_a = np.asarray(Fa, float), np.asarray(Fr, float)
+    batch = np.broadcast_shapes(Fa_a.shape, Fr_a.shape, n.shape, tuple(batch_extra))
+    Z = brg.Z
+    ld = load if load is not None else load_distribution(brg, Fa=np.broadcast_to(Fa_a, batch),
+                                                          Fr=np.broadcast_to(Fr_a, batch), M=M)
+    ex = (...,) + (None,)                         # batch → batch + (Z,)
+    nb = np.broadcast_to(n, batch)
+    omega = nb * np.pi / 30.0
+    w_i = omega if rotating == "inner" else np.zeros_like(omega)
+    w_o = omega if rotating == "outer" else np.zeros_like(omega)
+    ai = np.broadcast_to(ld.alpha_i, batch + (Z,))
+    ao = np.broadcast_to(ld.alpha_o, batch + (Z,))
+    if control is None:
+        control = "radial" if brg.kind == "thrust" else "outer"
+    kin = ball_kinematics(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, control=control)
+    omega_c = np.broadcast_to(np.asarray(kin.omega_c), batch + (Z,))
+    Qi = np.broadcast_to(ld.Q_i, batch + (Z,)).astype(float)
+    Qo = np.broadcast_to(ld.Q_o, batch + (Z,)).astype(float)
+    if centrifugal and brg.kind != "thrust":
+        Fc = 0.5 * brg.ball_mass * brg.dm * omega_c**2
+        ca = np.cos(ao)
+        Qo = Qo + np.where(ca > np.cos(np.deg2rad(80.0)), Fc / np.maximum(ca, 1e-3), 0.0)
+    Ep = brg.E_prime
+    sides = {}
+    for side, Q, al, u, spin, f in (("inner", Qi, ai, kin.u_i, kin.spin_i, brg.fi),
+                                    ("outer", Qo, ao, kin.u_o, kin.spin_o, brg.fo)):
+        Rx = brg.Rx_i(al) if side == "inner" else brg.Rx_o(al)
+        Ry = brg.Ry_i if side == "inner" else brg.Ry_o
+        u = np.broadcast_to(np.asarray(u, float), batch + (Z,))
+        c = hertz(Q, Rx, Ry, Ep, method=hertz_method)
+        a, b = np.asarray(c.a), np.asarray(c.b)
+        omega_roll = np.broadcast_to(np.asarray(kin.omega_R) * np.cos(al + np.asarray(kin.beta)), batch + (Z,))
+        Ra = deformed_radius(brg.D, f)
+        I_sl = np.where(Q > 0, _heathcote_power(1.0, Q, a, Ra, omega_roll), 0.0)
+        I_piv = 0.375 * Q * a * np.abs(np.broadcast_to(np.asarray(spin, float), batch + (Z,)))
+        MER = np.asarray(hysteresis_moment(Q, brg.D, np.maximum(Ry / Rx, 1.0)))
+        sides[side] = dict(Q=Q, alpha=al, Rx=np.broadcast_to(Rx, batch + (Z,)), Ry=Ry, a=a, b=b, u=u,
+                           spin=np.broadcast_to(np.asarray(spin, float), batch + (Z,)), omega_roll=omega_roll,
+                           I_sl=I_sl, I_piv=I_piv, P_hysteresis=MER * np.abs(omega_roll))
+    models = {
+        "load_distribution": ("Jones–Harris low-speed, rigid rings" + (", tilt free" if M is not None else ""),
+                              "quasi-static ball loads and angles (seed 004 eqs 6–8)"),
+        "hertz": (hertz_method, "exact elliptic integrals" if hertz_method == "exact" else "approximation chosen"),
+        "kinematics": (f"no-slip at contact centres, {control} control",
+                       "thrust: symmetric radial ball axis (seed 000)" if control == "radial" else "Jones outer-race control"),
+        "centrifugal": ("F_c/cos α on the outer contact" if centrifugal and brg.kind != "thrust" else "none",
+                        "balls outside the load zone ride on the outer race"),
+    }
+    return ContactSet(brg=brg, batch=batch, n_rpm=nb, omega=omega, load=ld, omega_c=omega_c, sides=sides,
+                      models_used=models)
+
+
+def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=None, T_oil_C=None,
+                    supply: str = "oil_jet", oil_flow_m3_s: float = 0.0, Rq_ball: float = 0.05e-6,
+                    Rq_ring: float = 0.1e-6, mu_boundary: float = 0.11, mu_full_film: float = 0.05,
+                    rolling_model: str = "auto", drag: bool = True) -> LossResult:
+    """Temperature-dependent part of the local model on a prepared :class:`ContactSet`
+    (see :func:`bearing_losses` for the parameters)."""
+    if rolling_model not in ROLLING_MODELS:
+        raise InputError("rolling_model", rolling_model, f"must be one of {', '.join(ROLLING_MODELS)}")
+    if supply not in ("oil_jet", "grease", "oil_bath", "oil_air", "dry_film"):
+        raise InputError("supply", supply, "must be oil_jet, grease, oil_bath, oil_air or dry_film")
+    brg, batch, Z = cs.brg, cs.batch, cs.brg.Z
+    shape = batch + (Z,)
+    T_C_a = np.asarray(T_C, float)
+    Ti = np.asarray(T_C if T_inner_C is None else T_inner_C, float)
+    To = np.asarray(T_C if T_outer_C is None else T_outer_C, float)
+    Toil = np.asarray(T_C if T_oil_C is None else T_oil_C, float)
+    for nm, v in (("T_C", T_C_a), ("T_oil_C", Toil)):
+        try:
+            np.broadcast_to(v, batch)
+        except ValueError:
+            raise InputError(nm, v, f"must broadcast to the operating points {batch}") from None
+    Ep = brg.E_prime
+    out_c = {}
+    totals = {k: 0.0 for k in BREAKDOWN_KEYS}
+    per_contact_heat = {}
+    regimes_seen = set()
+    for side, T_side in (("inner", Ti), ("outer", To)):
+        sd = cs.sides[side]
+        Q, Rx, Ry, u, a, b = sd["Q"], sd["Rx"], sd["Ry"], sd["u"], sd["a"], sd["b"]
+        if T_side.shape == shape:
+            Ts = T_side
+        else:
+            try:
+                Ts = np.broadcast_to(T_side[(...,) + (None,)] if T_side.ndim and T_side.shape == batch else T_side, shape)
+            except ValueError:
+                raise InputError(f"T_{side}_C", T_side, f"must broadcast to {batch} or {shape}") from None
+        eta = np.asarray(oil.eta(Ts), float)
+        alpha_p = np.asarray(oil.alpha_p_at(Ts), float)
+        h_min = np.asarray(film_thickness(Q, Rx, Ry, u, eta, alpha_p, Ep, kind="min"))
+        h_c = np.asarray(film_thickness(Q, Rx, Ry, u, eta, alpha_p, Ep, kind="central"))
+        Lam = h_min / np.hypot(Rq_ball, Rq_ring) if (Rq_ball or Rq_ring) else np.full_like(h_min, np.inf)
+        reg = lubrication_regime(Q, Rx, Ry, u, eta, alpha_p, Ep)
+        code = np.asarray(reg.code)
+        regimes_seen |= set(np.unique(code).tolist())
+        mu = np.asarray(mixed_friction_ianus(np.where(np.isfinite(Lam), Lam, 1e6), mu_full_film, mu_boundary))
+        if rolling_model == "auto":
+            F_R = np.asarray(rolling_force(Q, Rx, Ry, u, eta, Ep, model="auto", alpha_p=alpha_p, a=a, b=b,
+                                           regime=code))
+        else:
+            F_R = np.asarray(rolling_force(Q, Rx, Ry, u, eta, Ep, model=rolling_model, alpha_p=alpha_p, a=a, b=b))
+        F_R = np.where(Q > 0, F_R, 0.0)
+        P_roll = 2.0 * u * F_R
+        P_sl = mu * sd["I_sl"]
+        P_piv = mu * sd["I_piv"]
+        P_hys = sd["P_hysteresis"]
+        out_c[side] = dict(Q=Q, alpha=sd["alpha"], a=a, b=b, u=u, T_C=Ts, eta=eta, h_min=h_min, h_c=h_c,
+                           Lambda=Lam, regime=code, mu=mu, F_R=F_R, spin=sd["spin"], P_rolling=P_roll,
+                           P_sliding=P_sl, P_pivoting=P_piv, P_hysteresis=P_hys, M=reg.M, L=reg.L)
+        totals["rolling"] = totals["rolling"] + P_roll.sum(-1)
+        totals["sliding"] = totals["sliding"] + P_sl.sum(-1)
+        totals["pivoting"] = totals["pivoting"] + P_piv.sum(-1)
+        totals["hysteresis"] = totals["hysteresis"] + P_hys.sum(-1)
+        per_contact_heat[side] = (P_roll + P_sl + P_piv + P_hys).sum(-1)
+
+    # drag of the balls in the oil–air mixture
+    nb = cs.n_rpm
+    wc_mean = cs.omega_c.mean(-1)
+    if drag and supply not in ("oil_bath", "dry_film") and np.any(nb > 0):
+        if supply == "oil_jet":
+            W_cm3_min = oil_flow_m3_s * 1e6 * 60.0
+            X = np.where(nb > 0, oil_volume_fraction_parker(W_cm3_min, np.maximum(nb, 1e-9), brg.dm * 1e3), 0.0)
+        elif supply == "oil_air":
+            X = np.full(batch, 0.01)
+        else:
+            X = np.zeros(batch)
+        Tm = np.broadcast_to(Toil, batch)
+        dr = drag_loss(Z, brg.D, brg.dm, np.maximum(wc_mean, 1e-12), X, oil.rho(Tm), oil.eta(Tm), Tm + 273.15)
+        P_drag = np.where(nb > 0, np.asarray(dr.P_W), 0.0)
+    else:
+        P_drag = np.zeros(batch)
+    totals["drag"] = P_drag
+    breakdown = {k: _as(np.broadcast_to(v, batch)) for k, v in totals.items()}
+    P = sum(np.broadcast_to(v, batch) for v in totals.values())
+    omega = cs.omega
+    with np.errstate(divide="ignore", invalid="ignore"):
+        torque = np.where(omega > 0, P / np.where(omega > 0, omega, 1.0), 0.0)
+    heat = {"inner_ring": _as(0.5 * per_contact_heat["inner"]), "outer_ring": _as(0.5 * per_contact_heat["outer"]),
+            "balls": _as(0.5 * (per_contact_heat["inner"] + per_contact_heat["outer"])), "oil": _as(P_drag)}
+    models = dict(cs.models_used)
+    models.update({
+        "rolling": (rolling_model, "per-contact regime: " + ", ".join(sorted(regimes_seen))
+                    if rolling_model == "auto" else "chosen explicitly"),
+        "film": ("Hamrock–Dowson h_min, h_c; regime by NVM dominant terms", "seed 000 eq 15, seed 004 §3"),
+        "friction": ("mixed μ(Λ) seed 000 eq 18", f"μ_e {mu_full_film}, μ_a {mu_boundary}"),
+        "drag": ("Pouly 2010 sphere drag" if drag and supply not in ("oil_bath", "dry_film") else "none",
+                 {"oil_jet": "Parker oil fraction", "oil_air": "oil fraction 1 %", "grease": "air only"}.get(
+                     supply, "not modelled for this supply")),
+    })
+    return LossResult(P_W=_as(P), torque_Nm=_as(torque), breakdown_W=breakdown, contacts=out_c, heat_W=heat,
+                      load=cs.load, omega_c=_as(wc_mean), models_used=models)
+
+
 def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *, M=None,
                    T_inner_C=None, T_outer_C=None, T_oil_C=None, rotating: str = "inner",
                    supply: str = "oil_jet", oil_flow_m3_s: float = 0.0, Rq_ball: float = 0.05e-6,
@@ -154,127 +348,9 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
     >>> max(r.breakdown_W, key=r.breakdown_W.get), bool(abs(r.torque_Nm * 4800 * np.pi / 30 / r.P_W - 1) < 1e-12)
     ('rolling', True)
     """
-    if rolling_model not in ROLLING_MODELS:
-        raise InputError("rolling_model", rolling_model, f"must be one of {', '.join(ROLLING_MODELS)}")
-    if rotating not in ("inner", "outer"):
-        raise InputError("rotating", rotating, "must be 'inner' or 'outer'")
-    if supply not in ("oil_jet", "grease", "oil_bath", "oil_air", "dry_film"):
-        raise InputError("supply", supply, "must be oil_jet, grease, oil_bath, oil_air or dry_film")
-    n = np.asarray(n_rpm, dtype=float)
-    if np.any(~np.isfinite(n)) or np.any(n < 0):
-        raise InputError("n_rpm", n_rpm, "speed must be finite and >= 0 [rpm]")
-    Fa_a, Fr_a = np.asarray(Fa, float), np.asarray(Fr, float)
-    T_C_a = np.asarray(T_C, float)
-    Ti = np.asarray(T_C if T_inner_C is None else T_inner_C, float)
-    To = np.asarray(T_C if T_outer_C is None else T_outer_C, float)
-    Toil = np.asarray(T_C if T_oil_C is None else T_oil_C, float)
-    # batch shape: loads, speed and (scalar-per-point) temperatures
-    batch = np.broadcast_shapes(Fa_a.shape, Fr_a.shape, n.shape, T_C_a.shape, Toil.shape,
-                                Ti.shape[:Ti.ndim - (1 if Ti.ndim and Ti.shape[-1] == brg.Z and Ti.ndim > len(n.shape) else 0)],
-                                To.shape[:To.ndim - (1 if To.ndim and To.shape[-1] == brg.Z and To.ndim > len(n.shape) else 0)])
-    Z = brg.Z
-    ld = load if load is not None else load_distribution(brg, Fa=np.broadcast_to(Fa_a, batch),
-                                                          Fr=np.broadcast_to(Fr_a, batch), M=M)
-    ex = (...,) + (None,)                         # batch → batch + (Z,)
-    nb = np.broadcast_to(n, batch)
-    omega = nb * np.pi / 30.0
-    w_i = omega if rotating == "inner" else np.zeros_like(omega)
-    w_o = omega if rotating == "outer" else np.zeros_like(omega)
-    ai = np.broadcast_to(ld.alpha_i, batch + (Z,))
-    ao = np.broadcast_to(ld.alpha_o, batch + (Z,))
-    if control is None:
-        control = "radial" if brg.kind == "thrust" else "outer"
-    kin = ball_kinematics(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, control=control)
-    omega_c = np.asarray(kin.omega_c)
-    Qi = np.broadcast_to(ld.Q_i, batch + (Z,)).astype(float)
-    Qo = np.broadcast_to(ld.Q_o, batch + (Z,)).astype(float)
-    if centrifugal and brg.kind != "thrust":
-        Fc = 0.5 * brg.ball_mass * brg.dm * omega_c**2
-        ca = np.cos(ao)
-        Qo = Qo + np.where(ca > np.cos(np.deg2rad(80.0)), Fc / np.maximum(ca, 1e-3), 0.0)
-    Ep = brg.E_prime
-    out_c = {}
-    totals = {k: 0.0 for k in BREAKDOWN_KEYS}
-    per_contact_heat = {}
-    regimes_seen = set()
-    for side, Q, al, u, spin, T_side, f in (("inner", Qi, ai, kin.u_i, kin.spin_i, Ti, brg.fi),
-                                             ("outer", Qo, ao, kin.u_o, kin.spin_o, To, brg.fo)):
-        Rx = brg.Rx_i(al) if side == "inner" else brg.Rx_o(al)
-        Ry = brg.Ry_i if side == "inner" else brg.Ry_o
-        u = np.broadcast_to(np.asarray(u, float), batch + (Z,))
-        T_side = np.broadcast_to(T_side[ex] if T_side.ndim == len(batch) and T_side.shape != batch + (Z,) else T_side,
-                                 batch + (Z,))
-        eta = np.asarray(oil.eta(T_side), float)
-        alpha_p = np.asarray(oil.alpha_p_at(T_side), float)
-        c = hertz(Q, Rx, Ry, Ep, method=hertz_method)
-        a, b = np.asarray(c.a), np.asarray(c.b)
-        h_min = np.asarray(film_thickness(Q, Rx, Ry, u, eta, alpha_p, Ep, kind="min"))
-        h_c = np.asarray(film_thickness(Q, Rx, Ry, u, eta, alpha_p, Ep, kind="central"))
-        Lam = h_min / np.hypot(Rq_ball, Rq_ring) if (Rq_ball or Rq_ring) else np.full_like(h_min, np.inf)
-        reg = lubrication_regime(Q, Rx, Ry, u, eta, alpha_p, Ep)
-        code = np.asarray(reg.code)
-        regimes_seen |= set(np.unique(code).tolist())
-        mu = np.asarray(mixed_friction_ianus(np.where(np.isfinite(Lam), Lam, 1e6), mu_full_film, mu_boundary))
-        if rolling_model == "auto":
-            F_R = np.asarray(rolling_force(Q, Rx, Ry, u, eta, Ep, model="auto", alpha_p=alpha_p, a=a, b=b,
-                                           regime=code))
-        else:
-            F_R = np.asarray(rolling_force(Q, Rx, Ry, u, eta, Ep, model=rolling_model, alpha_p=alpha_p, a=a, b=b))
-        F_R = np.where(Q > 0, F_R, 0.0)
-        P_roll = 2.0 * u * F_R
-        omega_roll = np.asarray(kin.omega_R) * np.cos(al + np.asarray(kin.beta))
-        Ra = deformed_radius(brg.D, f)
-        P_sl = np.where(Q > 0, _heathcote_power(mu, Q, a, Ra, omega_roll), 0.0)
-        MP = 0.375 * mu * Q * a
-        P_piv = MP * np.abs(np.asarray(spin))
-        MER = np.asarray(hysteresis_moment(Q, brg.D, np.maximum(Ry / Rx, 1.0)))
-        P_hys = MER * np.abs(omega_roll)
-        out_c[side] = dict(Q=Q, alpha=al, a=a, b=b, u=u, T_C=T_side, eta=eta, h_min=h_min, h_c=h_c, Lambda=Lam,
-                           regime=code, mu=mu, F_R=F_R, spin=np.asarray(spin), P_rolling=P_roll, P_sliding=P_sl,
-                           P_pivoting=P_piv, P_hysteresis=P_hys, M=reg.M, L=reg.L)
-        totals["rolling"] = totals["rolling"] + P_roll.sum(-1)
-        totals["sliding"] = totals["sliding"] + P_sl.sum(-1)
-        totals["pivoting"] = totals["pivoting"] + P_piv.sum(-1)
-        totals["hysteresis"] = totals["hysteresis"] + P_hys.sum(-1)
-        per_contact_heat[side] = (P_roll + P_sl + P_piv + P_hys).sum(-1)
-
-    # drag of the balls in the oil–air mixture
-    wc_mean = np.asarray(omega_c).mean(-1) if np.ndim(omega_c) else omega_c
-    if drag and supply not in ("oil_bath", "dry_film") and np.any(nb > 0):
-        if supply == "oil_jet":
-            W_cm3_min = oil_flow_m3_s * 1e6 * 60.0
-            X = np.where(nb > 0, oil_volume_fraction_parker(W_cm3_min, np.maximum(nb, 1e-9), brg.dm * 1e3), 0.0)
-        elif supply == "oil_air":
-            X = np.full(batch, 0.01)
-        else:
-            X = np.zeros(batch)
-        Tm = np.broadcast_to(Toil, batch)
-        dr = drag_loss(Z, brg.D, brg.dm, np.maximum(wc_mean, 1e-12), X, oil.rho(Tm), oil.eta(Tm), Tm + 273.15)
-        P_drag = np.where(nb > 0, np.asarray(dr.P_W), 0.0)
-    else:
-        P_drag = np.zeros(batch)
-    totals["drag"] = P_drag
-    breakdown = {k: _as(np.broadcast_to(v, batch)) for k, v in totals.items()}
-    P = sum(np.broadcast_to(v, batch) for v in totals.values())
-    with np.errstate(divide="ignore", invalid="ignore"):
-        torque = np.where(omega > 0, P / np.where(omega > 0, omega, 1.0), 0.0)
-    heat = {"inner_ring": _as(0.5 * per_contact_heat["inner"]), "outer_ring": _as(0.5 * per_contact_heat["outer"]),
-            "balls": _as(0.5 * (per_contact_heat["inner"] + per_contact_heat["outer"])), "oil": _as(P_drag)}
-    models = {
-        "load_distribution": ("Jones–Harris low-speed, rigid rings" + (", tilt free" if M is not None else ""),
-                              "quasi-static ball loads and angles (seed 004 eqs 6–8)"),
-        "hertz": (hertz_method, "exact elliptic integrals" if hertz_method == "exact" else "approximation chosen"),
-        "kinematics": (f"no-slip at contact centres, {control} control",
-                       "thrust: symmetric radial ball axis (seed 000)" if control == "radial" else "Jones outer-race control"),
-        "rolling": (rolling_model, "per-contact regime: " + ", ".join(sorted(regimes_seen))
-                    if rolling_model == "auto" else "chosen explicitly"),
-        "film": ("Hamrock–Dowson h_min, h_c; regime by NVM dominant terms", "seed 000 eq 15, seed 004 §3"),
-        "friction": ("mixed μ(Λ) seed 000 eq 18", f"μ_e {mu_full_film}, μ_a {mu_boundary}"),
-        "drag": ("Pouly 2010 sphere drag" if drag and supply not in ("oil_bath", "dry_film") else "none",
-                 {"oil_jet": "Parker oil fraction", "oil_air": "oil fraction 1 %", "grease": "air only"}.get(
-                     supply, "not modelled for this supply")),
-        "centrifugal": ("F_c/cos α on the outer contact" if centrifugal and brg.kind != "thrust" else "none",
-                        "balls outside the load zone ride on the outer race"),
-    }
-    return LossResult(P_W=_as(P), torque_Nm=_as(torque), breakdown_W=breakdown, contacts=out_c, heat_W=heat,
-                      load=ld, omega_c=_as(wc_mean), models_used=models)
+    T_extra = np.broadcast_shapes(np.shape(T_C), np.shape(T_oil_C) if T_oil_C is not None else ())
+    cs = prepare_contacts(brg, Fa, Fr, n_rpm, M=M, rotating=rotating, hertz_method=hertz_method, control=control,
+                          centrifugal=centrifugal, load=load, batch_extra=T_extra)
+    return evaluate_losses(cs, oil, T_C, T_inner_C=T_inner_C, T_outer_C=T_outer_C, T_oil_C=T_oil_C, supply=supply,
+                           oil_flow_m3_s=oil_flow_m3_s, Rq_ball=Rq_ball, Rq_ring=Rq_ring, mu_boundary=mu_boundary,
+                           mu_full_film=mu_full_film, rolling_model=rolling_model, drag=drag)

@@ -269,7 +269,7 @@ def load_scene(path) -> Scene:
     >>> import thermobear
     >>> s = load_scene(thermobear.example_path("seed004_oil_jet_7210.toml"))
     >>> s.bearing.name, s.n_rpm, s.Fa, s.Fr
-    ('7210', 3200.0, 450.0, 650.0)
+    ('7210', 3200.0, 450.0, 325.0)
     """
     p = Path(path)
     if not p.is_file():

@@ -12,7 +12,8 @@ from the scene's ``[models]`` table:
   eq 7.36; thrust bearing: Q = Fa/Z); Jones–Harris otherwise.  Centrifugal and
   gyroscopic terms (``high_speed``) only where ``needs_high_speed`` says they
   matter (F_c > 5 % of the ball load) and the high-speed solver is available;
-  otherwise the low-speed form with F_c added to the outer contact load.
+  otherwise the low-speed form.  In every case the centrifugal force F_c loads the
+  outer contact (it is what keeps balls outside the load zone on the race).
 * **drag** — only for jet / oil–air supply, or when n·dm ≥ 1e5 mm·rpm (below,
   churning of a few balls in air is < 0.1 % of the contact losses).
 * **rolling** — per-contact regime selection (seed 004) unless named.
@@ -29,7 +30,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .errors import InputError
-from .losses import LossResult, bearing_losses
+from .losses import ContactSet, LossResult, evaluate_losses, prepare_contacts
 from .loads import LoadDistribution, axial_contact_angle, load_distribution, needs_high_speed
 from .scene import Scene
 
@@ -69,9 +70,11 @@ def choose_models(scene: Scene) -> dict:
         out["high_speed"] = ("no", "thrust bearing: centrifugal force acts across the groove; not modelled")
     elif bool(need):
         out["high_speed"] = ("low-speed + F_c on outer contact",
-                             f"F_c/Q = {float(ratio):.2f} > 0.05; centrifugal load added to the outer contacts")
+                             f"F_c/Q = {float(ratio):.2f} > 0.05: the high-speed form would shift the contact angles; "
+                             "the low-speed form with F_c on the outer contacts is used")
     else:
-        out["high_speed"] = ("no", f"F_c/Q = {float(ratio):.3f} <= 0.05")
+        out["high_speed"] = ("no", f"F_c/Q = {float(ratio):.3f} <= 0.05 (F_c still loads the outer contacts "
+                                   "of balls outside the load zone)")
     ndm = scene.n_rpm * b.dm * 1e3
     if "drag" in m:
         out["drag"] = (bool(m["drag"]), "chosen in the scene")
@@ -116,20 +119,26 @@ def scene_load(scene: Scene, models: dict | None = None) -> LoadDistribution:
     return load_distribution(scene.bearing, Fa=scene.Fa, Fr=scene.Fr, M=scene.M, stiffness=stiff)
 
 
+def scene_contacts(scene: Scene, models: dict | None = None, load: LoadDistribution | None = None) -> ContactSet:
+    """Temperature-independent contact data of a scene (loads, ellipses, kinematics)."""
+    models = models or choose_models(scene)
+    load = load if load is not None else scene_load(scene, models)
+    return prepare_contacts(scene.bearing, scene.Fa, scene.Fr, scene.n_rpm, M=scene.M, rotating=scene.rotating,
+                            hertz_method=models["hertz"][0], centrifugal=True, load=load)
+
+
 def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oil_C=None,
-                 load: LoadDistribution | None = None, models: dict | None = None) -> LossResult:
+                 load: LoadDistribution | None = None, models: dict | None = None,
+                 contacts: ContactSet | None = None) -> LossResult:
     """Losses of a scene at given temperatures (default: the scene's prescribed T_C) [W]."""
     models = models or choose_models(scene)
     if T_C is None:
         T_C = scene.T_C if scene.T_C is not None else scene.T_ambient_C
-    load = load if load is not None else scene_load(scene, models)
-    r = bearing_losses(scene.bearing, scene.lubricant, Fa=scene.Fa, Fr=scene.Fr, n_rpm=scene.n_rpm, T_C=T_C,
-                       M=scene.M, T_inner_C=T_inner_C, T_outer_C=T_outer_C, T_oil_C=T_oil_C,
-                       rotating=scene.rotating, supply=scene.supply, oil_flow_m3_s=scene.oil_flow,
-                       Rq_ball=scene.Rq_ball, Rq_ring=scene.Rq_ring, mu_boundary=scene.mu_boundary,
-                       mu_full_film=scene.mu_full_film, rolling_model=models["rolling"][0],
-                       hertz_method=models["hertz"][0], drag=bool(models["drag"][0]),
-                       centrifugal=models["high_speed"][0] != "no", load=load)
+    cs = contacts if contacts is not None else scene_contacts(scene, models, load)
+    r = evaluate_losses(cs, scene.lubricant, T_C, T_inner_C=T_inner_C, T_outer_C=T_outer_C, T_oil_C=T_oil_C,
+                        supply=scene.supply, oil_flow_m3_s=scene.oil_flow, Rq_ball=scene.Rq_ball,
+                        Rq_ring=scene.Rq_ring, mu_boundary=scene.mu_boundary, mu_full_film=scene.mu_full_film,
+                        rolling_model=models["rolling"][0], drag=bool(models["drag"][0]))
     used = dict(r.models_used)
     used.update({k: v for k, v in models.items()})
     object.__setattr__(r, "models_used", used)
@@ -198,19 +207,18 @@ def _contact_temps(T_C: dict, roles: dict):
 
 def _setup_thermal(scene: Scene, models: dict):
     from .thermal import load_network
-    load = scene_load(scene, models)
-    # contact semi-axes for the contact conductances: from the loads at the nominal temperature
-    r0 = scene_losses(scene, T_C=scene.T_ambient_C, load=load, models=models)
-    contacts = {s: {"a_m": np.maximum(r0.contacts[s]["a"], 0.0), "b_m": np.maximum(r0.contacts[s]["b"], 0.0)}
+    cs = scene_contacts(scene, models)
+    # contact semi-axes for the contact conductances (temperature independent: rigid rings)
+    contacts = {s: {"a_m": np.asarray(cs.sides[s]["a"], float), "b_m": np.asarray(cs.sides[s]["b"], float)}
                 for s in ("inner", "outer")}
     net = load_network(scene.network, network_context(scene, contacts))
-    return net, load, _roles(net)
+    return net, cs, _roles(net)
 
 
-def _sources(scene, models, load, roles, T_C: dict):
+def _sources(scene, models, cs, roles, T_C: dict):
     from .thermal import split_losses
     Ti, To, Toil = _contact_temps(T_C, roles)
-    r = scene_losses(scene, T_inner_C=Ti, T_outer_C=To, T_oil_C=Toil, T_C=Toil, load=load, models=models)
+    r = scene_losses(scene, T_inner_C=Ti, T_outer_C=To, T_oil_C=Toil, T_C=Toil, models=models, contacts=cs)
     ci, co = r.contacts["inner"], r.contacts["outer"]
     Pi = ci["P_rolling"] + ci["P_sliding"] + ci["P_pivoting"] + ci["P_hysteresis"]
     Po = co["P_rolling"] + co["P_sliding"] + co["P_pivoting"] + co["P_hysteresis"]
@@ -235,19 +243,19 @@ def steady_state(scene: Scene, *, tol_K: float = 1e-6, **kw) -> SteadyState:
     if scene.T_C is not None:
         raise InputError("operation.T_C", scene.T_C, "the scene prescribes its temperature: use solve() "
                          "or remove operation.T_C to solve the thermal network")
-    net, load, roles = _setup_thermal(scene, models)
+    net, cs, roles = _setup_thermal(scene, models)
     last = {}
 
     def losses(T_K: dict):
         T_C = {k: v - 273.15 for k, v in T_K.items()}
-        src, r = _sources(scene, models, load, roles, T_C)
+        src, r = _sources(scene, models, cs, roles, T_C)
         last["r"] = r
         return src, {"P_W": r.P_W}
 
     res = solve_network_coupled(net, losses, tol_K=tol_K, **kw)
     st = res.steady
     T_C = dict(st.T_C)
-    _, r = _sources(scene, models, load, roles, T_C)
+    _, r = _sources(scene, models, cs, roles, T_C)
     used = dict(r.models_used)
     used["thermal"] = (f"network {net.name}", f"fixed point: {res.method}, {res.iterations} iterations")
     used["node_roles"] = (roles, "contact temperature = mean of ball and race nodes (seed 004 §4.5)")
@@ -304,9 +312,9 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
     net = None
     for t, sc in scenes:
         models = choose_models(sc)
-        n, load, roles = _setup_thermal(sc, models)
+        n, cs, roles = _setup_thermal(sc, models)
         net = net or n
-        prepared.append((t, sc, models, load, roles))
+        prepared.append((t, sc, models, cs, roles))
 
     def current(t):
         k = 0
@@ -316,9 +324,9 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
         return prepared[k]
 
     def sources(t, T_K):
-        _, sc, models, load, roles = current(t)
+        _, sc, models, cs, roles = current(t)
         T_C = {k: v - 273.15 for k, v in T_K.items()}
-        src, r = _sources(sc, models, load, roles, T_C)
+        src, r = _sources(sc, models, cs, roles, T_C)
         return src, {"P_W": float(r.P_W), **{f"P_{k}": float(v) for k, v in r.breakdown_W.items()}}
 
     T0 = scene.T_ambient_C if T0_C is None else T0_C

@@ -198,7 +198,7 @@ def _balance(net, P, flows):
 
 
 def solve_steady(net: ThermalNetwork, sources_W=None, *, T_guess_K=None, tol_K: float = 1e-8,
-                 max_iter: int = 200, relax: float = 1.0) -> SteadyResult:
+                 max_iter: int = 200, relax: float = 1.0, linearized: bool = False) -> SteadyResult:
     r"""Steady temperatures of a thermal network.
 
     Parameters
@@ -210,6 +210,10 @@ def solve_steady(net: ThermalNetwork, sources_W=None, *, T_guess_K=None, tol_K: 
     tol_K : float               outer-loop tolerance on max |ΔT| [K]
     max_iter : int              outer-loop budget
     relax : float               under-relaxation of the outer loop, 0 < relax ≤ 1
+    linearized : bool           one linear solve with the conductances at ``T_guess_K`` (no outer
+                                loop): for callers that iterate anyway (the coupled fixed point
+                                converges conductances and losses together); the energy balance
+                                still closes exactly with those conductances
 
     Returns
     -------
@@ -255,8 +259,8 @@ def solve_steady(net: ThermalNetwork, sources_W=None, *, T_guess_K=None, tol_K: 
         res = float(np.max(np.abs(Tnew[free] - T[free]))) if free.any() else 0.0
         history.append(res)
         T = Tnew
-        if not net.T_dependent:
-            res = 0.0      # linear network: one exact solve
+        if not net.T_dependent or linearized:
+            res = 0.0 if not net.T_dependent else res   # linear network: one exact solve
             break
         if res < tol_K:
             break
@@ -264,7 +268,7 @@ def solve_steady(net: ThermalNetwork, sources_W=None, *, T_guess_K=None, tol_K: 
         raise NoConvergence(f"steady outer loop: max |ΔT| = {res:.3g} K after {max_iter} iterations "
                             f"(tolerance {tol_K:g} K)", iterations=max_iter, residual=res,
                             last=T.copy(), history=history)
-    if relax < 1 or net.T_dependent:
+    if (relax < 1 or net.T_dependent) and not linearized:
         # final consistent linear solve with the converged conductances
         A, G = assemble(net, T)
         T = T.copy()
