@@ -238,7 +238,8 @@ def scene_from_dict(d: dict, path: str | None = None) -> Scene:
     _check_keys(th, {"network", "T_ambient_C", "parameters"}, "thermal")
     models = d.get("models", {})
     _check_keys(models, {"rolling", "hertz", "load_model", "drag", "sliding", "kinematics", "stiffness",
-                         "thermal", "film", "friction", "high_speed"}, "models")
+                         "thermal", "film", "friction", "high_speed", "losses", "skf_R1", "skf_S1",
+                         "skf_mu_EHL"}, "models")
     s = Scene(
         name=str(meta.get("name", Path(path).stem if path else "scene")),
         bearing=brg, lubricant=lub, supply=supply,

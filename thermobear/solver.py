@@ -29,7 +29,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .errors import InputError
+from .errors import InputError, ThermalRunaway
 from .losses import ContactSet, LossResult, evaluate_losses, prepare_contacts
 from .loads import LoadDistribution, axial_contact_angle, load_distribution, needs_high_speed
 from .scene import Scene
@@ -84,6 +84,10 @@ def choose_models(scene: Scene) -> dict:
         out["drag"] = (True, f"n dm = {ndm:.3g} mm rpm >= 1e5")
     else:
         out["drag"] = (False, f"{scene.supply} at n dm = {ndm:.3g} mm rpm: churning negligible")
+    lm = m.get("losses", "local")
+    if lm not in ("local", "skf"):
+        raise InputError("models.losses", lm, "must be 'local' (per-contact model) or 'skf' (SKF 2004 global model)")
+    out["losses"] = (lm, "chosen in the scene" if "losses" in m else "per-contact local model (default)")
     out["rolling"] = (m.get("rolling", "auto"), "chosen in the scene" if "rolling" in m
                       else "per-contact regime (IVR: Houpert, PVR/IVE: Biboulet, EHL: Houpert; seed 004)")
     out["hertz"] = (m.get("hertz", "exact"), "chosen in the scene" if "hertz" in m else
@@ -145,16 +149,99 @@ def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oi
     return r
 
 
+@dataclass
+class SKFLosses:
+    """Losses of the SKF global model in the shape the solver reports (no per-contact data)."""
+
+    P_W: float
+    torque_Nm: float
+    breakdown_W: dict
+    heat_W: dict
+    skf: object
+    models_used: dict
+    contacts: dict = field(default_factory=dict)
+
+
+_SKF_MU_EHL = {"mineral": "mineral", "PAO": "synthetic", "ester": "synthetic", "ester+vegetal": "synthetic"}
+
+
+def skf_scene_losses(scene: Scene, T_C, models: dict | None = None) -> SKFLosses:
+    """SKF 2004 global model for a scene at bearing temperature ``T_C`` [°C] (viscosity of the
+    (base) oil there).  Calibrated constants from ``[models] skf_R1, skf_S1, skf_mu_EHL``.
+    Heat split for the network: ½ to the balls, ¼ to each ring (the equal split of the contact
+    losses); drag to the oil."""
+    from .friction.skf import skf_friction
+    models = models or choose_models(scene)
+    m = scene.models
+    lub = "grease" if scene.supply == "grease" else scene.supply
+    base = _SKF_MU_EHL.get(getattr(scene.lubricant, "base_oil", "mineral"), "mineral")
+    nu = scene.lubricant.nu(T_C)
+    r = skf_friction(scene.bearing, nu, scene.n_rpm, scene.Fa, scene.Fr, lubrication=lub,
+                     R1=m.get("skf_R1"), S1=m.get("skf_S1"), mu_EHL=m.get("skf_mu_EHL"), base_oil=base)
+    w = scene.omega
+    bd = {"rolling": float(r.M_rr * w), "sliding": float(r.M_sl * w), "drag": float(r.M_drag * w),
+          "seal": float(r.M_seal * w)}
+    P = float(r.P_W)
+    contact = P - bd["drag"]
+    heat = {"inner_ring": 0.25 * contact, "outer_ring": 0.25 * contact, "balls": 0.5 * contact, "oil": bd["drag"]}
+    used = dict(models)
+    used["losses"] = ("skf", f"SKF 2004 global model (R1 {m.get('skf_R1', 'catalogue')}, S1 {m.get('skf_S1', 'catalogue')})")
+    return SKFLosses(P_W=P, torque_Nm=float(r.M_total), breakdown_W=bd, heat_W=heat, skf=r, models_used=used)
+
+
 def network_context(scene: Scene, contacts: dict | None = None) -> dict:
     """Context for :func:`thermobear.thermal.load_network` from a scene."""
     ctx = {"bearing": scene.bearing,
            "scene": {"n_rpm": scene.n_rpm, "T_ambient_C": scene.T_ambient_C,
                      "T_oil_in_C": scene.T_oil_in_C if scene.T_oil_in_C is not None else scene.T_ambient_C,
-                     "oil_flow_m3_s": scene.oil_flow, **{k: v for k, v in scene.network_parameters.items()}},
+                     "oil_flow_m3_s": scene.oil_flow,
+                     **{k: v for k, v in scene.network_parameters.items() if "." not in k}},
            "oil": scene.lubricant}
     if contacts is not None:
         ctx["contacts"] = contacts
     return ctx
+
+
+def network_spec(scene: Scene) -> dict:
+    """The scene's thermal network table with ``[thermal.parameters]`` overrides applied.
+
+    A key ``"<element or node name>.<parameter>"`` replaces that parameter (e.g.
+    ``"bearing_to_ambient.G_W_K" = 0.8``, ``"oil_stream.beta" = 0.5``); a key without a dot is a
+    context value the network reads as ``scene.<key>``.
+    """
+    import copy
+    from pathlib import Path
+
+    from ._data import data_dir, read_toml
+    from .thermal.network import network_names
+    name = str(scene.network)
+    if name in network_names():
+        path = data_dir("networks") / f"{name}.toml"
+    else:
+        path = Path(name)
+        if scene.path and not path.is_absolute():
+            path = Path(scene.path).resolve().parent / path
+        if not path.is_file():
+            raise InputError("thermal.network", name, f"unknown network; known: {', '.join(network_names())} "
+                             "or a path to a .toml file")
+    spec = copy.deepcopy(read_toml(str(path.resolve())))
+    for key, val in scene.network_parameters.items():
+        if "." not in key:
+            continue
+        target, param = key.rsplit(".", 1)
+        hits = [e for e in spec.get("elements", []) if e.get("name") == target]
+        if target in spec.get("nodes", {}):
+            hits.append(spec["nodes"][target])
+        if not hits:
+            known = [e.get("name") for e in spec.get("elements", [])] + list(spec.get("nodes", {}))
+            raise InputError(f"thermal.parameters.{key}", val, f"no element or node '{target}' in network "
+                             f"{name}; known: {', '.join(str(k) for k in known)}")
+        for h in hits:
+            if param not in h:
+                raise InputError(f"thermal.parameters.{key}", val,
+                                 f"'{target}' has no parameter '{param}'; it has: {', '.join(sorted(h))}")
+            h[param] = val
+    return spec
 
 
 def _roles(net) -> dict:
@@ -201,8 +288,14 @@ class SteadyState:
 
 
 def _contact_temps(T_C: dict, roles: dict):
+    """Contact temperatures = mean of ball and race nodes (seed 004 §4.5), oil = the oil–air node;
+    clipped to the lubricant correlations' validity so that an iterate beyond it stays defined
+    (an equilibrium there is reported as runaway: ``_T_LIMIT_C``)."""
+    from .lubricant import T_VALID_C
+    lo, hi = T_VALID_C
     Tb = T_C[roles["ball"]]
-    return 0.5 * (Tb + T_C[roles["inner"]]), 0.5 * (Tb + T_C[roles["outer"]]), T_C[roles["oil"]]
+    clip = lambda v: min(max(v, lo), hi)  # noqa: E731
+    return clip(0.5 * (Tb + T_C[roles["inner"]])), clip(0.5 * (Tb + T_C[roles["outer"]])), clip(T_C[roles["oil"]])
 
 
 def _setup_thermal(scene: Scene, models: dict):
@@ -211,13 +304,19 @@ def _setup_thermal(scene: Scene, models: dict):
     # contact semi-axes for the contact conductances (temperature independent: rigid rings)
     contacts = {s: {"a_m": np.asarray(cs.sides[s]["a"], float), "b_m": np.asarray(cs.sides[s]["b"], float)}
                 for s in ("inner", "outer")}
-    net = load_network(scene.network, network_context(scene, contacts))
+    net = load_network(network_spec(scene), network_context(scene, contacts))
     return net, cs, _roles(net)
 
 
 def _sources(scene, models, cs, roles, T_C: dict):
     from .thermal import split_losses
     Ti, To, Toil = _contact_temps(T_C, roles)
+    if models["losses"][0] == "skf":
+        r = skf_scene_losses(scene, 0.5 * (Ti + To), models)
+        h = r.heat_W
+        src = split_losses(2 * h["inner_ring"], 2 * h["outer_ring"], h["oil"], ball=roles["ball"],
+                           inner=roles["inner"], outer=roles["outer"], oil=roles["oil"])
+        return src, r
     r = scene_losses(scene, T_inner_C=Ti, T_outer_C=To, T_oil_C=Toil, T_C=Toil, models=models, contacts=cs)
     ci, co = r.contacts["inner"], r.contacts["outer"]
     Pi = ci["P_rolling"] + ci["P_sliding"] + ci["P_pivoting"] + ci["P_hysteresis"]
@@ -252,9 +351,19 @@ def steady_state(scene: Scene, *, tol_K: float = 1e-6, **kw) -> SteadyState:
         last["r"] = r
         return src, {"P_W": r.P_W}
 
+    from .lubricant import T_VALID_C
+    kw.setdefault("T_limit_K", T_VALID_C[1] + 273.15)      # beyond the lubricant's validity: runaway
     res = solve_network_coupled(net, losses, tol_K=tol_K, **kw)
     st = res.steady
     T_C = dict(st.T_C)
+    hot = {k: v for k, v in T_C.items() if v + 273.15 > kw["T_limit_K"]}
+    if hot:
+        node = max(hot, key=hot.get)
+        raise ThermalRunaway(
+            f"no equilibrium below {kw['T_limit_K'] - 273.15:g} °C (the lubricant's limit): the network cannot shed "
+            f"{res.report.get('P_W', float('nan')):.4g} W even at that temperature ({node} would reach "
+            f"{hot[node]:.4g} °C); more cooling, less speed or a thinner oil is needed",
+            iterations=res.iterations, residual=res.residual_K, last=T_C, history=res.history)
     _, r = _sources(scene, models, cs, roles, T_C)
     used = dict(r.models_used)
     used["thermal"] = (f"network {net.name}", f"fixed point: {res.method}, {res.iterations} iterations")
@@ -358,9 +467,11 @@ class RunResult:
              "Fa_N": self.scene.Fa, "Fr_N": self.scene.Fr, "T_C": self.T_C, "P_W": self.P_W,
              "torque_Nm": self.torque_Nm, "breakdown_W": self.breakdown_W,
              "models_used": {k: {"choice": v[0], "reason": v[1]} for k, v in self.models_used.items()},
-             "balls": {"Q_inner_N": r.contacts["inner"]["Q"], "Q_outer_N": r.contacts["outer"]["Q"],
-                       "alpha_deg": np.rad2deg(r.contacts["inner"]["alpha"]),
-                       "regime_inner": r.contacts["inner"]["regime"], "regime_outer": r.contacts["outer"]["regime"]}}
+             }
+        if r.contacts:
+            d["balls"] = {"Q_inner_N": r.contacts["inner"]["Q"], "Q_outer_N": r.contacts["outer"]["Q"],
+                          "alpha_deg": np.rad2deg(r.contacts["inner"]["alpha"]),
+                          "regime_inner": r.contacts["inner"]["regime"], "regime_outer": r.contacts["outer"]["regime"]}
         if self.steady is not None:
             d["solver"] = {"iterations": self.steady.iterations, "residual_K": self.steady.residual_K,
                            "energy_balance_W": self.steady.energy_balance_W}
@@ -391,7 +502,8 @@ def solve(scene: Scene) -> RunResult:
     """Run a scene with the least model it needs (thermal network only when temperatures are not given)."""
     models = choose_models(scene)
     if scene.T_C is not None:
-        r = scene_losses(scene, models=models)
+        r = (skf_scene_losses(scene, scene.T_C, models) if models["losses"][0] == "skf"
+             else scene_losses(scene, models=models))
         return RunResult(scene=scene, P_W=float(r.P_W), torque_Nm=float(r.torque_Nm),
                          breakdown_W=dict(r.breakdown_W), T_C={"contacts (prescribed)": scene.T_C},
                          models_used=r.models_used, losses=r)

@@ -1,0 +1,96 @@
+"""Scene solver: least model per scene, same numbers on every path, steady energy balance,
+transient → steady, runaway and convergence behaviour (issues 4 and 5)."""
+import numpy as np
+import pytest
+
+import thermobear as tb
+from thermobear.errors import InputError, ThermalRunaway
+from thermobear.solver import choose_models, scene_losses, solve, steady_state, transient
+
+S004 = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
+S001 = tb.load_scene(tb.example_path("seed001_spin_down_3ball.toml"))
+S002 = tb.load_scene(tb.example_path("seed002_grease_thrust_51107.toml"))
+
+
+def test_seed001_rig_gets_a_smaller_model_than_seed004():
+    m1, m4 = choose_models(S001), choose_models(S004)
+    assert m1["thermal"][0] == "none" and "prescribed" in m1["thermal"][1]
+    assert m1["load_model"][0] == "closed_form" and m1["drag"][0] is False
+    assert m4["thermal"][0].startswith("network") and m4["load_model"][0] == "jones_harris"
+    assert m4["drag"][0] is True
+    for k, (choice, reason) in m1.items():
+        assert reason, k
+
+
+@pytest.mark.parametrize("scene", [S001, S004.with_(Fr=0.0, T_C=50.0), S002.with_(T_C=50.0)])
+def test_closed_form_and_jones_harris_paths_agree(scene):
+    a = scene_losses(scene)
+    assert choose_models(scene)["load_model"][0] == "closed_form"
+    b = scene_losses(scene.with_(models={"load_model": "jones_harris"}))
+    assert b.P_W == pytest.approx(a.P_W, rel=1e-9)
+    np.testing.assert_allclose(b.contacts["inner"]["Q"], a.contacts["inner"]["Q"], rtol=1e-9)
+
+
+def test_prescribed_temperature_equals_bearing_losses():
+    r = solve(S004.with_(T_C=50.0))
+    ref = tb.bearing_losses(S004.bearing, S004.lubricant, Fa=450.0, Fr=325.0, n_rpm=3200.0, T_C=50.0,
+                            oil_flow_m3_s=S004.oil_flow, Rq_ball=S004.Rq_ball, Rq_ring=S004.Rq_ring)
+    assert r.P_W == pytest.approx(ref.P_W, rel=1e-12)
+
+
+def test_steady_energy_balance_and_few_iterations():
+    st = steady_state(S004)
+    assert abs(st.energy_balance_W) <= 1e-9 * st.P_W
+    assert st.iterations <= 15 and st.residual_K < 1e-5
+    assert st.T_C["balls"] > st.T_C["oil_inlet"] and st.T_C["inner_ring"] > st.T_C["ambient"]
+    # losses at equilibrium are those at the equilibrium temperatures
+    assert st.P_W == pytest.approx(st.losses.P_W)
+
+
+def test_long_transient_ends_at_the_steady_state():
+    st = steady_state(S002)
+    tr = transient(S002, 4.0e5, t_eval=[0.0, 4.0e5])
+    for node in ("balls", "housing", "shaft_washer"):
+        assert tr.T_C[node][-1] == pytest.approx(st.T_C[node], abs=0.1)
+    assert tr.P_W[-1] == pytest.approx(st.P_W, rel=1e-3)
+
+
+def test_power_falls_as_the_bearing_heats_up():
+    tr = transient(S004, 600.0, t_eval=np.linspace(0, 600.0, 7))
+    assert np.all(np.diff(tr.P_W) < 0)
+    assert np.all(np.diff(tr.T_C["inner_ring"]) > 0)
+
+
+def test_schedule_step_raises_power():
+    tr = transient(S004.with_(T_oil_in_C=30.0), 400.0, schedule=[(200.0, {"n_rpm": 6500.0})],
+                   t_eval=[199.0, 201.0])
+    assert tr.P_W[1] > 1.5 * tr.P_W[0]
+
+
+def test_runaway_case_is_named():
+    # very high speed, very viscous oil, poor cooling: no equilibrium below the lubricant's limit
+    one = tb.scene.scene_from_dict({**S004.raw, "thermal": {"network": "one_node", "T_ambient_C": 25.0,
+                                    "parameters": {"bearing_to_ambient.G_W_K": 0.05}},
+                                    "lubricant": {"name": "seed002-mg1", "supply": "oil_jet", "flow_L_h": 10.0,
+                                                  "T_in_C": 30.0},
+                                    "operation": {"n_rpm": 20000.0, "Fa_N": 2000.0}})
+    with pytest.warns(tb.ExtrapolationWarning), pytest.raises(ThermalRunaway) as e:
+        steady_state(one)
+    assert "no equilibrium below 250" in e.value.reason and e.value.history
+
+
+def test_network_parameter_override_and_bad_name():
+    a = steady_state(S002)
+    b = steady_state(S002.with_(network_parameters={"housing_forced_convection.u_air_m_s": 6.0}))
+    assert b.T_C["housing"] < a.T_C["housing"]
+    with pytest.raises(InputError, match="no element or node"):
+        steady_state(S002.with_(network_parameters={"nonexistent.h_W_m2K": 1.0}))
+
+
+def test_skf_loss_path():
+    r = solve(S002.with_(T_C=49.8, models={"losses": "skf", "skf_R1": 8.117e-7, "skf_S1": 1.246e-2}))
+    skf = tb.skf_friction(S002.bearing, S002.lubricant.nu(49.8), 1000.0, 7000.0, 0.0, lubrication="grease",
+                          R1=8.117e-7, S1=1.246e-2)
+    assert r.P_W == pytest.approx(skf.P_W, rel=1e-12)
+    st = steady_state(S002.with_(models={"losses": "skf"}))
+    assert abs(st.energy_balance_W) <= 1e-9 * st.P_W
