@@ -48,8 +48,9 @@ __all__ = ["LossResult", "ContactSet", "bearing_losses", "prepare_contacts", "ev
            "BREAKDOWN_KEYS", "ROLLING_MODELS"]
 
 BREAKDOWN_KEYS = ("sliding", "rolling", "pivoting", "hysteresis", "drag")
-ROLLING_MODELS = ("auto", "biboulet_ivr", "biboulet_ehl", "biboulet_transition", "houpert_ivr",
+ROLLING_MODELS = ("auto", "auto_sharp", "biboulet_ivr", "biboulet_ehl", "biboulet_transition", "houpert_ivr",
                   "houpert_ehl", "biboulet_pvr")
+_SWITCH_WIDTH = 0.05   # ln-ratio width of the smooth regime switch (±5 % around a boundary)
 _XI0 = 0.3473   # root of ξ − ξ³/3 = 1/3: pure-rolling points of the Hertz strip load (Heathcote)
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(32)
 
@@ -86,6 +87,32 @@ class LossResult:
 def _as(x):
     x = np.asarray(x, dtype=float)
     return float(x) if x.ndim == 0 else x
+
+
+def _sigmoid(x):
+    return 0.5 * (1.0 + np.tanh(0.5 * x))
+
+
+def _rolling_auto_smooth(Q, Rx, Ry, u, eta, Ep, alpha_p, a, b, reg):
+    r"""Regime-selected hydrodynamic rolling force, switched smoothly across the Moes boundaries [N].
+
+    Seed 004 §4.3 picks Houpert IVR, Biboulet PVR or Houpert EHL by regime (IVE → Biboulet PVR,
+    thermobear.friction.rolling.REGIME_MODEL).  The formulas do not meet at the boundaries (jumps of
+    ×0.5–0.9, tests/test_rolling.py), and a force that jumps with temperature stalls implicit time
+    integration.  Here each choice is weighted by logistic functions of the NVM dominance ratios,
+    w = 1/(1 + r^(−1/0.05)): 1 % of the way from the boundary in ln r the selection is 60/40, 15 %
+    away it is 95/5; away from boundaries the result equals the sharp selection (``"auto_sharp"``)."""
+    F_ivr = np.asarray(rolling_force(Q, Rx, Ry, u, eta, Ep, model="houpert_ivr"))
+    F_pvr = np.asarray(rolling_force(Q, Rx, Ry, u, eta, Ep, model="biboulet_pvr", a=a, b=b))
+    F_ehl = np.asarray(rolling_force(Q, Rx, Ry, u, eta, Ep, model="houpert_ehl", alpha_p=alpha_p, a=a, b=b))
+    w = _SWITCH_WIDTH
+    with np.errstate(divide="ignore", over="ignore"):
+        s_piezo = _sigmoid(-np.log(np.maximum(reg.iso_over_piezo, 1e-300)) / w)
+        s_rigid_iso = _sigmoid(np.log(np.maximum(reg.RI_over_EI, 1e-300)) / w)
+        s_rigid_piezo = _sigmoid(np.log(np.maximum(reg.EP_over_RP, 1e-300)) / w)
+    iso = s_rigid_iso * F_ivr + (1.0 - s_rigid_iso) * F_pvr
+    piezo = s_rigid_piezo * F_pvr + (1.0 - s_rigid_piezo) * F_ehl
+    return (1.0 - s_piezo) * iso + s_piezo * piezo
 
 
 def _heathcote_power(mu, Q, a, Ra, omega_roll):
@@ -242,6 +269,8 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
         regimes_seen |= set(np.unique(code).tolist())
         mu = np.asarray(mixed_friction_ianus(np.where(np.isfinite(Lam), Lam, 1e6), mu_full_film, mu_boundary))
         if rolling_model == "auto":
+            F_R = _rolling_auto_smooth(Q, Rx, Ry, u, eta, Ep, alpha_p, a, b, reg)
+        elif rolling_model == "auto_sharp":
             F_R = np.asarray(rolling_force(Q, Rx, Ry, u, eta, Ep, model="auto", alpha_p=alpha_p, a=a, b=b,
                                            regime=code))
         else:
@@ -325,7 +354,8 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
     oil_flow_m3_s : float           oil flow through the bearing [m³/s] (oil jet)
     Rq_ball, Rq_ring : float        RMS roughness [m]
     mu_boundary, mu_full_film : float  μ_a and μ_e of seed 000 eq 18 [-]
-    rolling_model : str             ``"auto"`` (by regime, seed 004) or one of ``ROLLING_MODELS``
+    rolling_model : str             ``"auto"`` (by regime, seed 004, smooth across boundaries),
+                                    ``"auto_sharp"`` (the paper's sharp selection) or one of ``ROLLING_MODELS``
     hertz_method : str              ``"exact"`` or an approximation (``thermobear.hertz.METHODS``)
     control : str                   ball spin control (``"outer"``, ``"inner"``, ``"radial"``);
                                     default ``"radial"`` for thrust bearings, ``"outer"`` otherwise
