@@ -14,6 +14,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
+from ._arrays import out as _f
 from scipy.special import ellipe, ellipk
 
 from .errors import InputError, NoConvergence
@@ -202,11 +204,6 @@ def hertz(Q, Rx, Ry, E_prime, method: str = "exact") -> HertzContact:
     return HertzContact(*(_f(v) for v in (a, b, delta, p_max, np.where(swap, 1.0 / kappa, kappa),
                                           K, Ek, Ee, R)))
 
-
-def _f(v):
-    """0-d arrays to float, arrays unchanged."""
-    v = np.asarray(v, dtype=float)
-    return float(v) if v.ndim == 0 else v
 
 
 def contact_stiffness(Rx, Ry, E_prime, method: str = "exact"):

@@ -29,6 +29,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ._arrays import out as _f
+
 from .errors import InputError
 
 __all__ = ["BallKinematics", "ball_kinematics", "cage_speed", "entrainment_speed", "CONTROLS"]
@@ -156,7 +158,3 @@ def ball_kinematics(omega_i, omega_o, alpha_i, alpha_o, D, dm, control: str = "o
     return BallKinematics(omega_c=f(omega_c), omega_R=f(omega_R), beta=f(beta), u_i=f(u_i), u_o=f(u_o),
                           spin_i=f(spin_i), spin_o=f(spin_o), spin_roll_i=f(sr_i), spin_roll_o=f(sr_o))
 
-
-def _f(v):
-    v = np.asarray(v, dtype=float)
-    return float(v) if v.ndim == 0 else v

@@ -34,6 +34,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ._arrays import out as _as
+
 from .errors import InputError
 from .film import film_thickness, lubrication_regime
 from .friction.drag import drag_loss, oil_volume_fraction_parker
@@ -82,11 +84,6 @@ class LossResult:
     load: LoadDistribution
     omega_c: np.ndarray
     models_used: dict = field(default_factory=dict)
-
-
-def _as(x):
-    x = np.asarray(x, dtype=float)
-    return float(x) if x.ndim == 0 else x
 
 
 def _sigmoid(x):

@@ -48,6 +48,8 @@ Seeds 000 (Ianuș et al.), 001 (Bălan et al. 2015), 004 (Darul et al. 2024).
 from __future__ import annotations
 
 import numpy as np
+
+from .._arrays import checked as _num, out as _out
 from scipy.special import ellipe
 
 from ..errors import InputError
@@ -79,24 +81,10 @@ _M_SPLIT = 6.6        # B&H 2010 eq 32 / seed 000 eq 20: transition at M = 6.6
 
 
 # ----------------------------------------------------------------------------- helpers
-def _num(name, v, *, lo=0.0, strict=True, what=""):
-    v = np.asarray(v, dtype=float)
-    bad = ~np.isfinite(v) | ((v <= lo) if strict else (v < lo))
-    if np.any(bad):
-        rel = ">" if strict else ">="
-        raise InputError(name, v, f"must be finite and {rel} {lo:g}{what}")
-    return v
-
-
 def _inputs(Q, Rx, Ry, u, eta, E_prime):
     return (_num("Q", Q, strict=False, what=" [N]"), _num("Rx", Rx, what=" [m]"),
             _num("Ry", Ry, what=" [m]"), _num("u", u, strict=False, what=" (mean entrainment speed) [m/s]"),
             _num("eta", eta, what=" [Pa s]"), _num("E_prime", E_prime, what=" [Pa]"))
-
-
-def _out(x):
-    x = np.asarray(x, dtype=float)
-    return float(x) if x.ndim == 0 else x
 
 
 def _seed_groups(Q, Rx, Ry, u, eta, E_prime):

@@ -36,6 +36,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from .._arrays import checked as _num, out as _out
+
 from ..errors import InputError
 
 __all__ = [
@@ -46,20 +48,6 @@ __all__ = [
     "traction_forces", "tangential_force_upper", "thrust_race_torque", "ball_rolling_power",
     "LAMBDA_FULL_FILM_BALAN",
 ]
-
-
-def _num(name, v, *, lo=0.0, strict=True, what=""):
-    v = np.asarray(v, dtype=float)
-    bad = ~np.isfinite(v) | ((v <= lo) if strict else (v < lo))
-    if np.any(bad):
-        rel = ">" if strict else ">="
-        raise InputError(name, v, f"must be finite and {rel} {lo:g}{what}")
-    return v
-
-
-def _out(x):
-    x = np.asarray(x, dtype=float)
-    return float(x) if x.ndim == 0 else x
 
 
 # ----------------------------------------------------------------------------- friction coefficient
