@@ -282,16 +282,34 @@ def bearing_from_dict(d: dict, name: str = "custom", where: str = "bearing") -> 
     for req in ("D_mm", "dm_mm", "Z", "fi", "fo"):
         if req not in d:
             raise InputError(f"{where}.{req}", None, "missing required field")
-    kw = {_MM_KEYS[k]: float(v) * 1e-3 for k, v in d.items() if k in _MM_KEYS}
+
+    def num(k):
+        v = d[k]
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not np.isfinite(v):
+            raise InputError(f"{where}.{k}", v, "must be a finite number")
+        return float(v)
+
+    def text(k, default=None):
+        v = d.get(k, default)
+        if v is not None and not isinstance(v, str):
+            raise InputError(f"{where}.{k}", v, "must be a text string")
+        return v
+
+    kw = {_MM_KEYS[k]: num(k) * 1e-3 for k in d if k in _MM_KEYS}
     if "alpha0_deg" in d:
-        kw["alpha0"] = np.deg2rad(float(d["alpha0_deg"]))
+        kw["alpha0"] = float(np.deg2rad(num("alpha0_deg")))
     for mk in ("ball_material", "ring_material"):
         if mk in d:
-            kw[mk] = material(d[mk])
-    return BallBearing(Z=d["Z"], fi=float(d["fi"]), fo=float(d["fo"]), kind=d.get("kind", "deep_groove"),
-                       name=d.get("name", name), series=d.get("series"),
-                       C0=float(d["C0_kN"]) * 1e3 if "C0_kN" in d else None,
-                       estimated=tuple(d.get("estimated", ())), **kw)
+            kw[mk] = material(text(mk))
+    Z = d["Z"]
+    if isinstance(Z, bool) or not isinstance(Z, (int, float)):
+        raise InputError(f"{where}.Z", Z, "number of balls must be an integer >= 3")
+    est = d.get("estimated", ())
+    if not isinstance(est, (list, tuple)) or not all(isinstance(e, str) for e in est):
+        raise InputError(f"{where}.estimated", est, "must be a list of field names")
+    return BallBearing(Z=Z, fi=num("fi"), fo=num("fo"), kind=text("kind", "deep_groove"),
+                       name=text("name", name), series=text("series"),
+                       C0=num("C0_kN") * 1e3 if "C0_kN" in d else None, estimated=tuple(est), **kw)
 
 
 def bearing(name: str) -> BallBearing:

@@ -236,6 +236,14 @@ def scene_from_dict(d: dict, path: str | None = None) -> Scene:
     _check_keys(op, {"n_rpm", "Fa_N", "Fr_N", "M_Nm", "rotating", "T_C"}, "operation")
     th = d.get("thermal", {})
     _check_keys(th, {"network", "T_ambient_C", "parameters"}, "thermal")
+    params = th.get("parameters", {})
+    if not isinstance(params, dict):
+        raise InputError("thermal.parameters", params, "must be a table of parameter = value")
+    for k, v in params.items():
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not np.isfinite(v):
+            raise InputError(f"thermal.parameters.{k}", v, "must be a finite number")
+    if "network" in th and not isinstance(th["network"], str):
+        raise InputError("thermal.network", th["network"], "must be a network name or a path (text)")
     models = d.get("models", {})
     _check_keys(models, {"rolling", "hertz", "load_model", "drag", "sliding", "kinematics", "stiffness",
                          "thermal", "film", "friction", "high_speed", "losses", "skf_R1", "skf_S1",
@@ -256,7 +264,7 @@ def scene_from_dict(d: dict, path: str | None = None) -> Scene:
         Rq_ring=_num(lsec, "Rq_ring_um", "lubricant", 0.1, lo=0.0) * 1e-6,
         mu_boundary=_num(lsec, "mu_boundary", "lubricant", 0.11, lo=0.0, hi=1.0),
         mu_full_film=_num(lsec, "mu_full_film", "lubricant", 0.05, lo=0.0, hi=1.0),
-        network=th.get("network"), network_parameters=dict(th.get("parameters", {})),
+        network=th.get("network"), network_parameters=dict(params),
         models=dict(models), source=str(meta.get("source", "")), path=path, raw=d)
     if s.supply == "oil_jet" and s.T_C is None and s.network is not None and s.T_oil_in_C is None:
         raise InputError("lubricant.T_in_C", None, "an oil-jet scene solved thermally needs the oil inlet temperature [°C]")
