@@ -1,0 +1,264 @@
+"""The command line: every verb, JSON output, plots, and bad input (exit 2, one line, nothing written)."""
+from __future__ import annotations
+
+import json
+import math
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from thermobear.cli import main
+
+ROOT = Path(__file__).resolve().parents[1]
+EX = ROOT / "examples"
+LOGS = EX / "logs"
+SEED000 = str(EX / "seed000_grease_thrust_3ball.toml")        # prescribed temperature: fast
+SEED001 = str(EX / "seed001_spin_down_3ball.toml")
+SYNTH = str(LOGS / "synthetic_heatup_scene.toml")              # one-node network: fast transient
+SKF = str(LOGS / "seed002_skf_scene.toml")
+
+
+def run(capsys, *argv):
+    code = main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def assert_bad_input(code, err, field):
+    assert code == 2
+    lines = err.strip().splitlines()
+    assert len(lines) == 1, err
+    assert lines[0].startswith("error: ") and field in lines[0]
+    assert "Traceback" not in err
+
+
+def bad_scene(tmp_path):
+    text = Path(SEED000).read_text(encoding="utf-8").replace('catalog = "51205-3ball"',
+                                                             'catalog = "51205-3ball"\nfi = 0.49')
+    p = tmp_path / "bad.toml"
+    p.write_text(text, encoding="utf-8")
+    return p
+
+
+# ------------------------------------------------------------------ run / list / loads
+def test_run_json_prescribed_temperature(capsys):
+    code, out, _ = run(capsys, "run", SEED000, "--json")
+    assert code == 0
+    d = json.loads(out)
+    assert d["P_W"] == pytest.approx(sum(d["breakdown_W"].values()), rel=1e-12)
+    assert d["torque_Nm"] == pytest.approx(d["P_W"] / (200 * math.pi / 30), rel=1e-12)
+
+
+def test_run_set_override_changes_speed(capsys):
+    _, out1, _ = run(capsys, "run", SEED000, "--json")
+    _, out2, _ = run(capsys, "run", SEED000, "--json", "--set", "n_rpm=400")
+    assert json.loads(out2)["n_rpm"] == 400.0
+    assert json.loads(out2)["P_W"] > json.loads(out1)["P_W"]
+
+
+def test_run_plots(capsys, tmp_path):
+    code, _, err = run(capsys, "run", SEED000, "--plot", tmp_path / "plots")
+    assert code == 0
+    names = sorted(p.name for p in (tmp_path / "plots").glob("*.png"))
+    assert names == ["ball_loads.png", "loss_breakdown.png", "regime_map.png"]
+    assert all((tmp_path / "plots" / n).stat().st_size > 10_000 for n in names)
+
+
+def test_run_bad_scene_exit_2_no_plot(capsys, tmp_path):
+    code, out, err = run(capsys, "run", bad_scene(tmp_path), "--plot", tmp_path / "plots")
+    assert_bad_input(code, err, "fi")
+    assert not (tmp_path / "plots").exists()
+
+
+def test_run_bad_plot_dir_checked_before_computing(capsys, tmp_path):
+    code, out, err = run(capsys, "run", SEED000, "--plot", tmp_path / "no" / "such" / "dir")
+    assert_bad_input(code, err, "--plot")
+    assert out == ""
+
+
+def test_list_and_loads(capsys):
+    code, out, _ = run(capsys, "list", "--json")
+    assert code == 0 and "7210" in json.loads(out)["bearings"]
+    code, out, _ = run(capsys, "loads", str(EX / "seed004_oil_jet_7210.toml"), "--json")
+    d = json.loads(out)
+    assert code == 0 and len(d["Q_N"]) == len(d["psi_deg"])
+
+
+def test_solver_error_exit_3(capsys, monkeypatch):
+    import thermobear.solver as solver
+    from thermobear.errors import ThermalRunaway
+
+    def boom(scene):
+        raise ThermalRunaway("losses grow faster than dissipation above 180 °C", iterations=7, residual=3.0)
+    monkeypatch.setattr(solver, "solve", boom)
+    code, _, err = run(capsys, "run", SEED000)
+    assert code == 3 and err.strip() == "error: ThermalRunaway: losses grow faster than dissipation above 180 °C"
+
+
+def test_console_script_bad_input_no_traceback(tmp_path):
+    exe = shutil.which("thermobear", path=str(Path(sys.executable).parent))
+    cmd = [exe] if exe else [sys.executable, "-m", "thermobear.cli"]
+    r = subprocess.run(cmd + ["run", str(bad_scene(tmp_path))], capture_output=True, text=True, timeout=120)
+    assert r.returncode == 2
+    assert "Traceback" not in r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1 and ".fi = 0.49 — " in r.stderr
+
+
+# ------------------------------------------------------------------ transient
+def test_transient_csv_and_json(capsys, tmp_path):
+    out_csv = tmp_path / "tr.csv"
+    code, out, _ = run(capsys, "transient", SYNTH, "--t-end", 600, "--points", 7, "--csv", out_csv, "--json")
+    assert code == 0
+    d = json.loads(out)
+    T = np.array(d["T_C"]["bearing"])
+    assert T[0] == pytest.approx(22.0) and np.all(np.diff(T) > 0)        # heats up from ambient
+    lines = [l for l in out_csv.read_text().splitlines() if not l.startswith("#")]
+    assert lines[0].split(",")[:3] == ["t_s", "T_bearing_C", "T_ambient_C"] and len(lines) == 8
+    assert float(lines[-1].split(",")[1]) == pytest.approx(T[-1], rel=1e-9)
+    P = np.array(d["P_W"])
+    assert P[-1] == pytest.approx(sum(np.array(v)[-1] for v in d["breakdown_W"].values()), rel=1e-9)
+
+
+def test_transient_schedule_speed_step(capsys, tmp_path):
+    sch = tmp_path / "s.toml"
+    sch.write_text("[[step]]\nt_s = 300.0\nn_rpm = 1000.0\n", encoding="utf-8")
+    code, out, _ = run(capsys, "transient", SYNTH, "--t-end", 600, "--points", 61, "--schedule", sch, "--json")
+    d = json.loads(out)
+    t, P = np.array(d["t_s"]), np.array(d["P_W"])
+    assert code == 0 and P[t > 300].max() < 0.5 * P[(t > 250) & (t < 300)].min()   # 3000 → 1000 rpm: less loss
+
+
+@pytest.mark.parametrize("args, field", [
+    (["--t-end", "-5"], "--t-end"),
+    (["--t-end", "60", "--schedule", "SCHED"], "step[0].speed"),
+    (["--t-end", "60", "--csv", "NOFOLDER/x.csv"], "--csv"),
+])
+def test_transient_bad_input_writes_nothing(capsys, tmp_path, args, field):
+    sch = tmp_path / "bad_schedule.toml"
+    sch.write_text("[[step]]\nt_s = 10.0\nspeed = 1000.0\n", encoding="utf-8")
+    args = [a.replace("SCHED", str(sch)).replace("NOFOLDER", str(tmp_path / "nofolder")) for a in args]
+    out_csv = tmp_path / "out.csv"
+    extra = [] if "--csv" in args else ["--csv", out_csv]
+    code, _, err = run(capsys, "transient", SYNTH, *args, *extra)
+    assert_bad_input(code, err, field)
+    assert not out_csv.exists() and not (tmp_path / "nofolder").exists()
+
+
+def test_transient_refuses_prescribed_temperature(capsys):
+    code, _, err = run(capsys, "transient", SEED000, "--t-end", 10)
+    assert_bad_input(code, err, "operation.T_C")
+
+
+# ------------------------------------------------------------------ sweep
+def test_sweep_csv(capsys, tmp_path):
+    pytest.importorskip("thermobear.sweep")          # helper G's engine (issue 6)
+    out_csv = tmp_path / "sw.csv"
+    code, _, err = run(capsys, "sweep", SEED000, "--n-rpm", "100:300:3", "--T-C", "23.5,40", "--csv", out_csv,
+                       "--processes", 1)
+    assert code == 0 and "6/6" in err                     # progress bar on stderr
+    rows = [l.split(",") for l in out_csv.read_text().splitlines() if not l.startswith("#")]
+    head = rows[0]
+    assert head[:2] == ["n_rpm", "T_C"] and len(rows) == 1 + 6
+    P = {(float(r[0]), float(r[1])): float(r[head.index("P_W")]) for r in rows[1:]}
+    assert P[(300.0, 23.5)] > P[(200.0, 23.5)] > P[(100.0, 23.5)]      # more speed, more loss
+    assert P[(200.0, 40.0)] < P[(200.0, 23.5)]                          # thinner oil, less rolling loss
+    code, out, _ = run(capsys, "run", SEED000, "--json", "--set", "n_rpm=200")
+    assert P[(200.0, 23.5)] == pytest.approx(json.loads(out)["P_W"], rel=1e-9)   # same number as a single run
+
+
+@pytest.mark.parametrize("args, field", [
+    (["--n-rpm", "1000:x:3"], "--n-rpm"),
+    (["--n-rpm", "100,-5"], "n_rpm"),
+    (["--lubricant", "no-such-oil"], "lubricant"),
+    ([], "sweep"),
+])
+def test_sweep_bad_input_writes_nothing(capsys, tmp_path, args, field):
+    out_csv = tmp_path / "sw.csv"
+    code, _, err = run(capsys, "sweep", SEED000, *args, "--csv", out_csv, "--quiet")
+    assert_bad_input(code, err, field)
+    assert not out_csv.exists()
+
+
+# ------------------------------------------------------------------ compare / calibrate
+def test_compare_transient_json_and_plot(capsys, tmp_path):
+    code, out, err = run(capsys, "compare", SYNTH, LOGS / "synthetic_heatup_7210.csv", "--json",
+                         "--plot", tmp_path / "p", "--csv", tmp_path / "c.csv")
+    assert code == 0
+    m = json.loads(out)["metrics"]["T_bearing_C"]
+    assert m["n"] == 61 and m["rmse"] > 0 and {"steady_state_error", "t90_measured_s", "t90_simulated_s"} <= set(m)
+    assert (tmp_path / "p" / "compare_heatup.png").is_file()
+    head = (tmp_path / "c.csv").read_text().splitlines()[1]
+    assert head == "t_s,T_bearing_C,T_bearing_C_model"
+
+
+def test_compare_steady_with_input_temperature(capsys):
+    code, out, _ = run(capsys, "compare", SKF, LOGS / "seed002_mg1.csv", "--json")
+    d = json.loads(out)
+    assert code == 0 and list(d["metrics"]) == ["torque_Nm"] and d["metrics"]["torque_Nm"]["n"] == 2
+
+
+@pytest.mark.parametrize("extra, field", [
+    (["--map", "T_nope_C=bearing"], "--map.T_nope_C"),
+    (["--map", "T_bearing_C=housing"], "rig.map.T_bearing_C"),
+    (["--map", "T_bearing_C"], "--map"),
+])
+def test_compare_bad_map(capsys, tmp_path, extra, field):
+    code, _, err = run(capsys, "compare", SYNTH, LOGS / "synthetic_heatup_7210.csv", *extra,
+                       "--plot", tmp_path / "p")
+    assert_bad_input(code, err, field)
+    assert not (tmp_path / "p").exists()
+
+
+def test_compare_malformed_log(capsys, tmp_path):
+    log = tmp_path / "log.csv"
+    log.write_text("t_s,T_bearing_C\n0,22\n30,hot\n", encoding="utf-8")
+    code, _, err = run(capsys, "compare", SYNTH, log)
+    assert_bad_input(code, err, "line 3, column T_bearing_C")
+
+
+def test_calibrate_skf_cli(capsys):
+    code, out, _ = run(capsys, "calibrate", SKF, LOGS / "seed002_greases.csv", "--param", "skf_R1",
+                       "--param", "skf_S1", "--json")
+    d = json.loads(out)
+    assert code == 0 and d["dof"] == 7 - 2
+    assert d["std"]["skf_R1"] > 0 and d["metrics"]["torque_Nm"]["rmse"] < 0.02     # fitted: within 20 N mm
+
+
+def test_calibrate_unknown_parameter(capsys):
+    code, _, err = run(capsys, "calibrate", SYNTH, LOGS / "synthetic_heatup_7210.csv", "--param", "G_nope")
+    assert_bad_input(code, err, "--param")
+
+
+# ------------------------------------------------------------------ spin-down
+def test_spin_down_fit_is_independent_of_inertia(capsys):
+    code, out, _ = run(capsys, "spin-down", SEED001, "--J", "1e-4", "--rpm", "120", "--json")
+    a = json.loads(out)["runs"][0]
+    _, out, _ = run(capsys, "spin-down", SEED001, "--J", "2e-4", "--rpm", "120", "--json")
+    b = json.loads(out)["runs"][0]
+    assert code == 0 and 0 < a["n"] < 1
+    assert b["t_stop_s"] == pytest.approx(2 * a["t_stop_s"], rel=1e-4)       # t_max ∝ J
+    assert b["K_star"] == pytest.approx(a["K_star"], rel=1e-4) and b["n"] == pytest.approx(a["n"], abs=1e-5)
+    # the fitted power law passes near the model torque at the initial speed
+    assert a["T_fit_at_omega0_Nm"] == pytest.approx(a["T0_Nm"], rel=0.1)
+
+
+def test_spin_down_against_seed001_log(capsys, tmp_path):
+    code, out, _ = run(capsys, "spin-down", SEED001, "--J", "1e-4", "--log", LOGS / "seed001_table2_torque.csv",
+                       "--json", "--plot", tmp_path / "p")
+    runs = json.loads(out)["runs"]
+    assert code == 0 and [r["n0_rpm"] for r in runs] == [60, 90, 120, 150, 180, 210]
+    assert all(r["T_error"] == pytest.approx(r["T0_Nm"] / r["T_log_Nm"] - 1) for r in runs)
+    assert sorted(p.name for p in (tmp_path / "p").glob("*.png")) == ["spin_down.png", "spin_down_torque.png"]
+
+
+def test_spin_down_needs_inertia(capsys, tmp_path):
+    # a copy of the seed 001 scene without its [rig] table: the inertia is missing
+    text = open(SEED001).read().split("\n[rig]")[0]
+    bare = tmp_path / "no_rig.toml"
+    bare.write_text(text)
+    code, _, err = run(capsys, "spin-down", str(bare), "--rpm", "120")
+    assert_bad_input(code, err, "rig.J_kg_m2")

@@ -1,0 +1,187 @@
+"""Rig logs: parsing, channel maps, metrics, the shipped seed logs, and calibration recovering known parameters."""
+from __future__ import annotations
+
+import csv
+import io
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from thermobear.errors import InputError
+from thermobear.rig import (calibrate, channel_map, compare, metrics, read_log, resolve_scene_paths)
+from thermobear.scene import load_scene
+
+ROOT = Path(__file__).resolve().parents[1]
+LOGS = ROOT / "examples" / "logs"
+
+
+def _write(tmp_path, text, name="log.csv"):
+    p = tmp_path / name
+    p.write_text(text, encoding="utf-8")
+    return p
+
+
+def _table(name):
+    text = (ROOT / "validation" / "data" / name).read_text(encoding="utf-8")
+    return list(csv.DictReader(io.StringIO("\n".join(l for l in text.splitlines() if not l.startswith("#")))))
+
+
+# ------------------------------------------------------------------ reading
+def test_read_transient_and_steady(tmp_path):
+    log = read_log(_write(tmp_path, "# rig X\nt_s,T_IR_C,T_OR_C\n0,20,20\n10,22.5,\n20,24,21\n"))
+    assert log.kind == "transient" and log.temperature_channels == ["T_IR_C", "T_OR_C"]
+    assert log.comments == ["rig X"]
+    assert np.isnan(log["T_OR_C"][1]) and log["T_IR_C"][2] == 24.0
+    st = read_log(_write(tmp_path, "n_rpm,lubricant,torque_Nm\n1000,seed002-mg1,0.17\n", "s.csv"))
+    assert st.kind == "steady" and st["lubricant"] == ["seed002-mg1"]
+
+
+@pytest.mark.parametrize("text, field", [
+    ("t_s,T_IR_C\n0,20\n10,abc\n", "line 3, column T_IR_C"),
+    ("t_s,T_IR\n0,20\n", "column"),                          # unknown column (no _C suffix)
+    ("T_IR_C\n20\n", "columns"),                             # neither t_s nor n_rpm
+    ("t_s,T_IR_C\n0,20\n0,21\n", "column t_s"),              # times must increase
+    ("t_s,T_IR_C\n0,20,5\n", "line 2"),                      # wrong number of fields
+    ("t_s,T_IR_C\n0,nan\n", "line 2, column T_IR_C"),         # NaN is not a missing value
+    ("t_s,T_IR_C\n0,900\n", "column T_IR_C"),                # outside [-60, 250] °C
+    ("# only a comment\n", "log.csv"),
+])
+def test_malformed_logs_name_the_field(tmp_path, text, field):
+    with pytest.raises(InputError) as e:
+        read_log(_write(tmp_path, text))
+    assert field in str(e.value)
+
+
+def test_missing_log_file():
+    with pytest.raises(InputError, match="file not found"):
+        read_log("/nonexistent/log.csv")
+
+
+# ------------------------------------------------------------------ mapping
+@pytest.fixture(scope="module")
+def synthetic_scene():
+    return resolve_scene_paths(load_scene(LOGS / "synthetic_heatup_scene.toml"))
+
+
+def test_channel_map_from_scene_and_errors(tmp_path, synthetic_scene):
+    log = read_log(_write(tmp_path, "t_s,T_bearing_C,T_X_C\n0,20,20\n10,21,21\n"))
+    with pytest.raises(InputError, match="rig.map.T_X_C"):            # unmapped channel
+        channel_map(synthetic_scene, log)
+    assert channel_map(synthetic_scene, log, {"T_X_C": "ignore"}) == {"T_bearing_C": "bearing", "T_X_C": "ignore"}
+    with pytest.raises(InputError, match="--map.T_Y_C"):              # unknown channel
+        channel_map(synthetic_scene, log, {"T_X_C": "ignore", "T_Y_C": "bearing"})
+    with pytest.raises(InputError, match="unknown node"):
+        channel_map(synthetic_scene, log, {"T_X_C": "housing"})
+    with pytest.raises(InputError, match="steady log"):               # input temperature needs a steady log
+        channel_map(synthetic_scene, log, {"T_X_C": "input"})
+
+
+# ------------------------------------------------------------------ metrics
+def test_metrics_hand_computed():
+    m = metrics([1.0, np.nan, 3.0, 4.0], [2.0, 9.0, 3.0, 2.0])
+    assert m["n"] == 3
+    assert m["rmse"] == pytest.approx(math.sqrt((1 + 0 + 4) / 3))
+    assert m["max_abs_error"] == 2.0 and m["bias"] == pytest.approx(-1 / 3)
+
+
+def test_t90_of_first_order_response_is_tau_ln10():
+    tau = 120.0
+    t = np.linspace(0.0, 20 * tau, 20001)
+    y = 20.0 + 40.0 * (1.0 - np.exp(-t / tau))
+    m = metrics(y, y + 0.5, t)
+    assert m["t90_measured_s"] == pytest.approx(tau * math.log(10.0), rel=1e-3)
+    assert m["t90_simulated_s"] == pytest.approx(m["t90_measured_s"], rel=1e-6)   # an offset does not shift t90
+    assert m["steady_state_error"] == pytest.approx(0.5) and m["rmse"] == pytest.approx(0.5)
+
+
+# ------------------------------------------------------------------ shipped logs hold the published numbers
+def test_seed002_logs_are_table3_sums_and_text_values():
+    rows = {r["grease"]: r for r in _table("seed002_greases.csv")}
+    log = read_log(LOGS / "seed002_greases.csv")
+    for n, lub, M, T in zip(log["n_rpm"], log["lubricant"], log["torque_Nm"], log["T_III_C"]):
+        if n == 1000:
+            r = rows[lub.split("-")[1].upper()]
+            assert M * 1e3 == pytest.approx(float(r["Mrr_Nmm"]) + float(r["Msl_Nmm"]), abs=1e-9)
+            assert T == float(r["T_1000rpm_C"])
+    at2000 = {lub: (M, T) for n, lub, M, T in zip(log["n_rpm"], log["lubricant"], log["torque_Nm"], log["T_III_C"])
+              if n == 2000}
+    assert at2000 == {"seed002-mg1": (0.155, 65.0), "seed002-pg2": (0.110, 53.0)}     # seed 002 sec. 4.2
+    mg1 = read_log(LOGS / "seed002_mg1.csv")
+    assert mg1["torque_Nm"].tolist() == [0.1753, 0.155] and mg1["T_III_C"].tolist() == [49.8, 65.0]
+
+
+@pytest.mark.parametrize("table", ["1", "2"])
+def test_seed001_logs_are_K_omega_n(table):
+    log = read_log(LOGS / f"seed001_table{table}_torque.csv")
+    rows = [r for r in _table("seed001_spin_down.csv") if r["table"] == table]
+    for r, n, M in zip(rows, log["n_rpm"], log["torque_Nm"]):
+        w = float(r["initial_rpm"]) * math.pi / 30
+        assert n == float(r["initial_rpm"])
+        assert M == pytest.approx(float(r["K"]) * w ** float(r["n"]), rel=1e-4)
+
+
+def test_synthetic_log_is_labelled_synthetic():
+    p = LOGS / "synthetic_heatup_7210.csv"
+    assert "synthetic" in p.name
+    assert read_log(p).comments[0].startswith("SYNTHETIC")
+
+
+# ------------------------------------------------------------------ compare / calibrate
+def _skf_scene():
+    return load_scene(LOGS / "seed002_skf_scene.toml")
+
+
+def test_compare_steady_skf_metrics_match_the_arrays():
+    scene = _skf_scene()
+    log = read_log(LOGS / "seed002_greases.csv")
+    comp = compare(scene, log, channel_map(scene, log))
+    e = comp.simulated["torque_Nm"] - log["torque_Nm"]
+    assert comp.metrics["torque_Nm"]["rmse"] == pytest.approx(float(np.sqrt(np.mean(e**2))))
+    # the model sees each row's lubricant and measured temperature: MG1 (230 cSt at 40 °C) above PG2 (32.5 cSt)
+    assert comp.simulated["torque_Nm"][0] > comp.simulated["torque_Nm"][4]
+
+
+def test_calibrate_skf_recovers_constants_of_model_generated_data(tmp_path):
+    """Torques generated by the SKF model with R1 = 8e-7, S1 = 1.2e-2 (no noise): the fit returns them."""
+    scene = _skf_scene()
+    rows = [(n, T) for n in (500.0, 1000.0, 1500.0, 2000.0) for T in (40.0, 60.0)]
+    from thermobear.solver import solve
+    sc = scene.with_(models={"skf_R1": 8e-7, "skf_S1": 1.2e-2})
+    M = [solve(sc.with_(n_rpm=n, T_C=T)).torque_Nm for n, T in rows]
+    text = "n_rpm,torque_Nm,T_III_C\n" + "\n".join(f"{n},{m!r},{T}" for (n, T), m in zip(rows, M)) + "\n"
+    log = read_log(_write(tmp_path, text))
+    cal = calibrate(scene, log, ["skf_R1", "skf_S1"], channel_map(scene, log))
+    assert cal.values["skf_R1"] == pytest.approx(8e-7, rel=1e-5)
+    assert cal.values["skf_S1"] == pytest.approx(1.2e-2, rel=1e-5)
+    assert cal.dof == len(rows) - 2 and cal.std["skf_R1"] < 1e-3 * 8e-7
+
+
+def test_calibrate_recovers_synthetic_conductance_within_uncertainty(synthetic_scene, tmp_path):
+    """make_synthetic.py (which made examples/logs/synthetic_heatup_7210.csv) with G = 0.85 W/K and 0.3 K noise,
+    re-run here so that the log matches the current model."""
+    import importlib.util
+    spec = importlib.util.spec_from_file_location("make_synthetic", LOGS / "make_synthetic.py")
+    mk = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mk)
+    log = read_log(mk.make(tmp_path / "synthetic.csv"))
+    assert mk.G_TRUE_W_K == 0.85 and mk.PARAM == "bearing_to_ambient.G_W_K"
+    cal = calibrate(synthetic_scene, log, ["bearing_to_ambient.G_W_K"], channel_map(synthetic_scene, log))
+    g, s = cal.values["bearing_to_ambient.G_W_K"], cal.std["bearing_to_ambient.G_W_K"]
+    assert cal.start["bearing_to_ambient.G_W_K"] == 1.0
+    assert 0 < s < 0.02
+    assert abs(g - 0.85) < 3 * s                       # true value within 3 standard uncertainties
+    assert cal.rms_residual == pytest.approx(0.3, rel=0.3)   # residual ~ the added noise
+    assert cal.comparison.metrics["T_bearing_C"]["rmse"] < 0.5
+
+
+def test_calibrate_bad_parameters(synthetic_scene):
+    log = read_log(LOGS / "synthetic_heatup_7210.csv")
+    m = channel_map(synthetic_scene, log)
+    with pytest.raises(InputError, match="--param"):
+        calibrate(synthetic_scene, log, ["no_such_parameter"], m)
+    with pytest.raises(InputError, match="SKF"):
+        calibrate(synthetic_scene, log, ["skf_R1"], m)
+    with pytest.raises(InputError, match="start value"):
+        calibrate(synthetic_scene, log, ["bearing_to_ambient.G_W_K=abc"], m)
