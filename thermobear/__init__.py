@@ -19,3 +19,5 @@ from .scene import Scene, load_scene
 
 __version__ = "0.1.0"
 from .solver import solve, steady_state, transient, choose_models
+from .sweep import run_sweep
+from .rig import read_log, compare, calibrate, RigLog

@@ -1,0 +1,103 @@
+"""run_sweep: the same numbers as single solves, whatever path (vectorised, processes, Dask) computes them."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import thermobear as tb
+from thermobear.errors import InputError
+from thermobear.solver import solve, steady_state
+from thermobear.sweep import run_sweep, sweep_points
+
+
+@pytest.fixture(scope="module")
+def seed004():
+    return tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
+
+
+@pytest.fixture(scope="module")
+def seed002():
+    return tb.load_scene(tb.example_path("seed002_grease_thrust_51107.toml"))
+
+
+def test_grid_order_is_cartesian_first_key_slowest():
+    pts = sweep_points({"n_rpm": [1, 2], "Fa": [10, 20, 30]})
+    assert len(pts) == 6
+    assert [p["n_rpm"] for p in pts] == [1, 1, 1, 2, 2, 2]
+    assert [p["Fa"] for p in pts] == [10, 20, 30, 10, 20, 30]
+
+
+def test_prescribed_sweep_equals_single_solves(seed004):
+    grid = {"n_rpm": [0.0, 3200.0, 8070.0], "Fr": [50.0, 1500.0], "Fa": [225.0, 675.0], "T_C": [30.0, 70.0]}
+    rows = run_sweep(seed004, grid)
+    assert len(rows) == 24
+    for r in rows:
+        single = solve(seed004.with_(n_rpm=r["n_rpm"], Fr=r["Fr"], Fa=r["Fa"], T_C=r["T_C"]))
+        assert r["status"] == "ok"
+        assert r["P_W"] == pytest.approx(single.P_W, rel=1e-12, abs=1e-15)
+        assert r["torque_Nm"] == pytest.approx(single.torque_Nm, rel=1e-12, abs=1e-15)
+        for k, v in single.breakdown_W.items():
+            assert r["breakdown_W"][k] == pytest.approx(v, rel=1e-12, abs=1e-15)
+        assert r["models"]["drag"] == single.models_used["drag"][0]
+    # physics of the rows: standstill dissipates nothing; losses fall with temperature (viscosity)
+    assert all(r["P_W"] == 0.0 for r in rows if r["n_rpm"] == 0.0)
+    by = {(r["n_rpm"], r["Fr"], r["Fa"], r["T_C"]): r["P_W"] for r in rows}
+    assert by[(8070.0, 50.0, 225.0, 30.0)] > by[(8070.0, 50.0, 225.0, 70.0)]
+    assert by[(8070.0, 50.0, 225.0, 30.0)] > by[(3200.0, 50.0, 225.0, 30.0)]
+
+
+def test_prescribed_pure_axial_uses_the_closed_form(seed002):
+    rows = run_sweep(seed002, {"n_rpm": [500.0, 1000.0], "T_C": [49.8]})
+    assert {r["models"]["load_model"] for r in rows} == {"closed_form"}
+    single = solve(seed002.with_(n_rpm=1000.0, T_C=49.8))
+    assert rows[1]["P_W"] == pytest.approx(single.P_W, rel=1e-12)
+
+
+def test_coupled_local_processes_equal_single_solves(seed002):
+    rows = run_sweep(seed002, {"n_rpm": [1000.0, 2000.0]}, processes=2)
+    for r in rows:
+        st = steady_state(seed002.with_(n_rpm=r["n_rpm"]))
+        assert r["status"] == "ok"
+        assert r["P_W"] == pytest.approx(st.P_W, rel=1e-12)
+        assert r["temperatures_C"]["balls"] == pytest.approx(st.T_C["balls"], rel=1e-12)
+        assert r["iterations"] == st.iterations
+    # the hotter point is the faster one (more heat into the same network)
+    assert rows[1]["temperatures_C"]["balls"] > rows[0]["temperatures_C"]["balls"]
+    # energy: the row's power equals the breakdown's sum
+    for r in rows:
+        assert sum(r["breakdown_W"].values()) == pytest.approx(r["P_W"], rel=1e-12)
+
+
+def test_mixed_grid_and_progress(seed002):
+    seen = []
+    rows = run_sweep(seed002, {"n_rpm": [1000.0], "T_C": [None, 50.0]}, processes=1,
+                     progress=lambda d, t: seen.append((d, t)))
+    assert rows[0]["temperatures_C"].get("balls") is not None      # coupled (T_C None)
+    assert rows[1]["temperatures_C"] == {"contacts (prescribed)": 50.0}
+    assert seen[-1] == (2, 2) and all(t == 2 for _, t in seen)
+
+
+def test_bad_override_raises_before_running(seed004):
+    with pytest.raises(InputError, match="n_rpm"):
+        run_sweep(seed004, {"n_rpm": [1000.0, -5.0], "T_C": [40.0]})
+    with pytest.raises(InputError, match="unknown override"):
+        run_sweep(seed004, {"speed": [1000.0]})
+    with pytest.raises(InputError, match="processes"):
+        run_sweep(seed004, {"n_rpm": [1000.0], "T_C": [40.0]}, processes=0)
+
+
+def test_dask_path_identical_to_local(seed002):
+    distributed = pytest.importorskip("dask.distributed")
+    grid = {"n_rpm": [1000.0, 2000.0], "Fa": [5000.0, 7000.0]}
+    local = run_sweep(seed002, grid, processes=1)
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=2, processes=False,
+                                  dashboard_address=None) as cluster:
+        remote = run_sweep(seed002, grid, scheduler=cluster.scheduler_address)
+    assert len(remote) == len(local) == 4
+    for a, b in zip(local, remote):
+        assert (a["n_rpm"], a["Fa"]) == (b["n_rpm"], b["Fa"])
+        assert a["status"] == b["status"] == "ok"
+        np.testing.assert_allclose(b["P_W"], a["P_W"], rtol=1e-13)
+        for k in a["temperatures_C"]:
+            np.testing.assert_allclose(b["temperatures_C"][k], a["temperatures_C"][k], rtol=1e-13)
+        assert a["iterations"] == b["iterations"]

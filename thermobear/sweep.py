@@ -1,0 +1,230 @@
+r"""Sweeps: one scene over a grid of operating points, vectorised or in parallel.
+
+:func:`run_sweep` takes a scene and a grid ``{override: [values, ...]}`` whose
+keys are :meth:`thermobear.scene.Scene.with_` overrides (``n_rpm``, ``Fa``,
+``Fr``, ``M``, ``T_C``, ``T_oil_in_C``, ``T_ambient_C``, ``oil_flow_L_h``,
+``lubricant``, ...).  It runs the Cartesian product of the values (first key
+slowest) and returns one row per point, in grid order.
+
+Two kinds of points, as :func:`thermobear.solver.choose_models` decides:
+
+* **prescribed temperature** (the point has ``T_C``): no thermal network.  The
+  points that share everything but speed and temperature — same lubricant,
+  loads and model choices, a "group" — are computed in **one** vectorised
+  :func:`thermobear.solver.scene_losses` call with the group's single load
+  distribution (the loads do not depend on speed or temperature in the
+  low-speed model).  Scenes on the SKF global model (``models.losses = "skf"``)
+  are evaluated point by point.
+* **coupled** (no ``T_C``): the thermal fixed point
+  (:func:`thermobear.solver.steady_state`) per point, run in local processes
+  (:class:`concurrent.futures.ProcessPoolExecutor`, ``processes`` workers,
+  default ``os.cpu_count()``; ``processes=1`` runs in this process) or on an
+  existing Dask distributed cluster (``scheduler="tcp://host:port"``; needs the
+  optional dependency ``dask[distributed]``).
+
+A point whose coupled solution fails (:class:`~thermobear.errors.ThermalRunaway`,
+:class:`~thermobear.errors.NoConvergence`, ...) does not stop the sweep: its
+row says so (``status`` = the error class, ``reason``, ``iterations``) and
+carries no power — never a silent or NaN result.  Bad overrides raise
+:class:`~thermobear.errors.InputError` before anything runs.
+
+Each row holds the grid values and ``P_W`` [W], ``torque_Nm`` [N m],
+``breakdown_W`` (loss family → W), ``temperatures_C`` (node → °C; prescribed
+points: ``{"contacts (prescribed)": T}``), ``T_ball_C`` (coupled points), ``models`` (sub-model → choice),
+``status`` ("ok" or the error class), ``reason`` (how the fixed point converged, or why it
+failed), ``iterations`` and ``residual_K`` (coupled points).
+"""
+from __future__ import annotations
+
+import dataclasses
+import itertools
+import os
+from concurrent.futures import ProcessPoolExecutor, as_completed
+
+import numpy as np
+
+from .errors import InputError, SolverError
+from .scene import Scene
+from .solver import choose_models, scene_load, scene_losses, solve, steady_state
+
+__all__ = ["run_sweep", "sweep_points"]
+
+_VECTOR_KEYS = ("n_rpm", "T_C")          # vectorised inside one scene_losses call
+
+
+def sweep_points(grid: dict) -> list[dict]:
+    """The Cartesian product of a grid as a list of override dicts (first key slowest).
+
+    >>> sweep_points({"n_rpm": [1000, 2000], "T_C": [40.0, 60.0]})[1]
+    {'n_rpm': 1000, 'T_C': 60.0}
+    """
+    if not isinstance(grid, dict) or not grid:
+        raise InputError("grid", grid, "a non-empty dict {override: [values, ...]}")
+    vals = []
+    for k, v in grid.items():
+        v = list(v) if isinstance(v, (list, tuple, np.ndarray, range)) else [v]
+        if not v:
+            raise InputError(f"grid.{k}", v, "at least one value")
+        vals.append(v)
+    return [dict(zip(grid, combo)) for combo in itertools.product(*vals)]
+
+
+def _choices(models: dict) -> dict:
+    return {k: v[0] for k, v in models.items() if k != "node_roles"}
+
+
+def _base_row(point: dict) -> dict:
+    return {k: (float(v) if isinstance(v, (int, float, np.number)) and not isinstance(v, bool) else v)
+            for k, v in point.items()}
+
+
+def _solve_point(scene: Scene, point: dict) -> dict:
+    """Coupled steady state of one point (runs in a worker process or on a Dask worker)."""
+    row = _base_row(point)
+    sc = scene.with_(**point)
+    try:
+        st = steady_state(sc)
+    except (SolverError, InputError) as exc:   # inputs were validated up front: a model range left mid-solve
+        row.update(P_W=None, torque_Nm=None, breakdown_W={}, temperatures_C={}, models=_choices(choose_models(sc)),
+                   status=type(exc).__name__, reason=str(exc.reason if hasattr(exc, "reason") else exc),
+                   iterations=getattr(exc, "iterations", None), residual_K=getattr(exc, "residual", None))
+        return row
+    row.update(P_W=float(st.P_W), torque_Nm=float(st.losses.torque_Nm),
+               breakdown_W={k: float(v) for k, v in st.losses.breakdown_W.items()},
+               temperatures_C={k: float(v) for k, v in st.T_C.items()}, T_ball_C=float(st.T_ball_C),
+               models=_choices(st.models_used), status="ok", reason=str(st.models_used["thermal"][1]),
+               iterations=int(st.iterations),
+               residual_K=float(st.residual_K))
+    return row
+
+
+def _losses_batch(sc: Scene, n_rpm, T_C, models: dict, load=None):
+    """Local losses of one group, vectorised over speed and temperature [W].
+
+    Goes through :func:`thermobear.solver.scene_losses` (the same argument mapping as a single
+    solve) with a copy of the scene whose ``n_rpm`` is the group's speed array — the loss model
+    broadcasts over it; ``load``: a load distribution instead of the one the solver picks."""
+    batch_scene = dataclasses.replace(sc, n_rpm=np.asarray(n_rpm, float))   # not validated: internal
+    return scene_losses(batch_scene, T_C=np.asarray(T_C, float), models=models,
+                        load=scene_load(sc, models) if load is None else load)
+
+
+def _prescribed(scenes, points, idx, rows):
+    groups: dict = {}
+    for i in idx:
+        models = choose_models(scenes[i])
+        key = (tuple((k, repr(v)) for k, v in points[i].items() if k not in _VECTOR_KEYS),
+               tuple(sorted((k, repr(v[0])) for k, v in models.items() if k != "thermal")))
+        groups.setdefault(key, (models, []))[1].append(i)
+    for models, members in groups.values():
+        sc = scenes[members[0]]
+        n = np.array([scenes[i].n_rpm for i in members], float)
+        T = np.array([scenes[i].T_C for i in members], float)
+        if models.get("losses", ("local",))[0] != "local":         # SKF global model: per point
+            rs = [solve(scenes[i]) for i in members]
+            P = np.array([x.P_W for x in rs])
+            M = np.array([x.torque_Nm for x in rs])
+            bd = {k: np.array([x.breakdown_W[k] for x in rs]) for k in rs[0].breakdown_W}
+        else:
+            r = _losses_batch(sc, n, T, models)
+            P, M = np.atleast_1d(r.P_W), np.atleast_1d(r.torque_Nm)
+            bd = {k: np.broadcast_to(np.atleast_1d(v), P.shape) for k, v in r.breakdown_W.items()}
+        for j, i in enumerate(members):
+            row = _base_row(points[i])
+            row.update(P_W=float(P[j]), torque_Nm=float(M[j]), breakdown_W={k: float(v[j]) for k, v in bd.items()},
+                       temperatures_C={"contacts (prescribed)": float(T[j])}, models=_choices(models), status="ok",
+                       reason="", iterations=0, residual_K=0.0)
+            rows[i] = row
+
+
+def _coupled_local(scene, points, idx, rows, processes, progress, done, total):
+    if processes == 1 or len(idx) == 1:
+        for i in idx:
+            rows[i] = _solve_point(scene, points[i])
+            done += 1
+            if progress:
+                progress(done, total)
+        return done
+    with ProcessPoolExecutor(max_workers=min(processes, len(idx))) as ex:
+        futs = {ex.submit(_solve_point, scene, points[i]): i for i in idx}
+        for f in as_completed(futs):
+            rows[futs[f]] = f.result()
+            done += 1
+            if progress:
+                progress(done, total)
+    return done
+
+
+def _coupled_dask(scene, points, idx, rows, scheduler, progress, done, total):
+    try:
+        from dask.distributed import Client, as_completed as das_completed
+    except ImportError:   # pragma: no cover - exercised only without dask
+        raise InputError("scheduler", scheduler, "the Dask path needs the optional dependency: "
+                         "pip install 'thermobear[dask]' (dask[distributed])") from None
+    own = not isinstance(scheduler, Client)
+    client = Client(scheduler) if own else scheduler
+    try:
+        futs = client.map(_solve_point, [scene] * len(idx), [points[i] for i in idx], pure=False)
+        where = {f.key: i for f, i in zip(futs, idx)}
+        for f in das_completed(futs):
+            rows[where[f.key]] = f.result()
+            done += 1
+            if progress:
+                progress(done, total)
+    finally:
+        if own:
+            client.close()
+    return done
+
+
+def run_sweep(scene: Scene, grid: dict, *, scheduler=None, processes: int | None = None,
+              progress=None) -> list[dict]:
+    """Run a scene over a grid of operating points (see the module docstring).
+
+    Parameters
+    ----------
+    scene : Scene               the base scene
+    grid : dict                 ``{override: [values]}``; keys are :meth:`Scene.with_` overrides
+                                (n_rpm [rpm], Fa, Fr [N], T_C, T_oil_in_C [°C], lubricant, ...)
+    scheduler : str or Client   Dask scheduler address ``"tcp://host:port"`` (or a
+                                ``dask.distributed.Client``) for the coupled points; None: local
+    processes : int             local worker processes for the coupled points (default
+                                ``os.cpu_count()``; 1 runs them in this process)
+    progress : callable         ``progress(done, total)`` after each point
+
+    Returns
+    -------
+    list of dict   one row per point in grid order (first key slowest)
+
+    Examples
+    --------
+    Prescribed temperatures: one vectorised loss evaluation for the 4 points.
+
+    >>> import thermobear as tb
+    >>> s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
+    >>> rows = run_sweep(s, {"n_rpm": [3200, 6500], "T_C": [40.0, 60.0]})
+    >>> [r["status"] for r in rows], rows[0]["P_W"] > rows[1]["P_W"], rows[2]["P_W"] > rows[0]["P_W"]
+    (['ok', 'ok', 'ok', 'ok'], True, True)
+    """
+    if not isinstance(scene, Scene):
+        raise InputError("scene", type(scene).__name__, "a thermobear.scene.Scene")
+    if processes is not None and (not isinstance(processes, (int, np.integer)) or processes < 1):
+        raise InputError("processes", processes, "an integer >= 1")
+    points = sweep_points(grid)
+    scenes = [scene.with_(**p) for p in points]          # validates every override first
+    for sc in scenes:
+        choose_models(sc)                                # InputError (e.g. no network) before running
+    total = len(points)
+    rows: list = [None] * total
+    fixed = [i for i, sc in enumerate(scenes) if sc.T_C is not None]
+    coupled = [i for i, sc in enumerate(scenes) if sc.T_C is None]
+    _prescribed(scenes, points, fixed, rows)
+    done = len(fixed)
+    if progress and fixed:
+        progress(done, total)
+    if coupled:
+        if scheduler is not None:
+            _coupled_dask(scene, points, coupled, rows, scheduler, progress, done, total)
+        else:
+            _coupled_local(scene, points, coupled, rows, processes or os.cpu_count() or 1, progress, done, total)
+    return rows

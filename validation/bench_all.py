@@ -1,0 +1,145 @@
+"""Benchmark suite (not tests): the five speed targets of issue 6, met or missed, and the hot spots.
+
+Run ``python validation/bench_all.py [--full]``; ``run_all.py`` calls :func:`run` and puts the
+text in ``validation/report/report.md``.  Times are medians of repeats after one warm-up call
+(imports, caches), on whatever machine runs it; they are never asserted in tests.
+
+Targets (per operating point unless stated):
+
+1. load distribution in a batch of 1000 combined-load cases      ≤ 100 µs per case
+2. local losses in a batch of 1000 operating points              ≤ 200 µs per point
+3. one coupled steady point (seed 004 scene, 10-node network)    ≤ 5 ms
+4. 1000-point coupled sweep on one core                          ≤ 2 s
+   (default: timed on ``N_SWEEP`` points and scaled, stated as such; ``--full`` runs all 1000)
+5. 3600 s heat-up transient (seed 004 scene)                     ≤ 0.5 s
+
+Each target is profiled with cProfile; the report lists the functions that dominate.
+"""
+from __future__ import annotations
+
+import cProfile
+import io
+import pstats
+import sys
+import time
+import warnings
+
+import numpy as np
+
+import thermobear as tb
+from thermobear.errors import ExtrapolationWarning
+from thermobear.loads import load_distribution
+from thermobear.losses import bearing_losses
+from thermobear.solver import steady_state, transient
+from thermobear.sweep import run_sweep
+
+N_SWEEP = 20
+_TB_FILES = {str(p.relative_to(p.parents[1] if p.parent.name != "thermobear" else p.parent)).replace("\\", "/")
+             for p in __import__("pathlib").Path(tb.__file__).parent.rglob("*.py")}
+
+
+def _median(fn, repeat):
+    fn()
+    ts = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        fn()
+        ts.append(time.perf_counter() - t0)
+    return float(np.median(ts))
+
+
+def _profile(fn, n=12) -> str:
+    pr = cProfile.Profile()
+    pr.enable()
+    fn()
+    pr.disable()
+    s = io.StringIO()
+    st = pstats.Stats(pr, stream=s)
+    total = st.total_tt
+    rows = []
+    for (file, line, func), (cc, nc, tt, ct, _) in st.stats.items():
+        short = file.split("/thermobear/")[-1] if "/thermobear/" in file else file.split("/")[-1]
+        rows.append((tt, ct, nc, f"{short}:{line}({func})"))
+    rows.sort(reverse=True)
+    lines = [f"total {total:.3f} s; top by own time (own s, cumulative s, calls):"]
+    lines += [f"  {tt:7.3f} {ct:7.3f} {nc:7d}  {name}" for tt, ct, nc, name in rows[:n]]
+    own = sorted((r for r in rows if r[3].split(":")[0] in _TB_FILES), key=lambda r: -r[1])[:n]
+    lines += ["top thermobear functions by cumulative time (cumulative s, share, calls):"]
+    lines += [f"  {ct:7.3f} {100 * ct / total:5.1f} % {nc:7d}  {name}" for tt, ct, nc, name in own]
+    return "\n".join(lines)
+
+
+def _scene():
+    return tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
+
+
+def run(full: bool = False, profile: bool = True) -> str:
+    warnings.simplefilter("ignore", ExtrapolationWarning)
+    rng = np.random.default_rng(6)
+    s = _scene()
+    b = s.bearing
+    res = []
+    prof = {}
+    # 1. load distribution
+    n = 1000
+    Fr = rng.uniform(50, 1500, n)
+    Fa = Fr * np.tan(b.alpha0) * 1.05 + rng.uniform(50, 700, n)
+    f1 = lambda: load_distribution(b, Fa=Fa, Fr=Fr)                        # noqa: E731
+    t = _median(f1, 5) / n
+    res.append(("load distribution, batch of 1000 (7210, Fa+Fr)", t, 100e-6, "per case"))
+    if profile:
+        prof["1. load distribution"] = _profile(f1)
+    # 2. losses
+    nn = rng.uniform(1000, 8000, n)
+    TT = rng.uniform(30, 70, n)
+    f2 = lambda: bearing_losses(b, s.lubricant, Fa=Fa, Fr=Fr, n_rpm=nn, T_C=TT,              # noqa: E731
+                                oil_flow_m3_s=s.oil_flow)
+    t = _median(f2, 3) / n
+    res.append(("local losses, batch of 1000 (loads, speeds, temperatures differ)", t, 200e-6, "per point"))
+    f2b = lambda: run_sweep(s, {"n_rpm": list(np.linspace(1000, 8000, 100)),                  # noqa: E731
+                                "T_C": list(np.linspace(30, 70, 10))})
+    t = _median(f2b, 3) / 1000
+    res.append(("run_sweep prescribed T, 1000 points (one load group)", t, 200e-6, "per point"))
+    if profile:
+        prof["2. losses (bearing_losses batch)"] = _profile(f2)
+        prof["2b. run_sweep prescribed"] = _profile(f2b)
+    # 3. coupled single point
+    f3 = lambda: steady_state(s)                                          # noqa: E731
+    t = _median(f3, 5)
+    res.append(("coupled steady point (seed 004, oil_jet_ball_bearing network)", t, 5e-3, "per point"))
+    s2 = tb.load_scene(tb.example_path("seed002_grease_thrust_51107.toml"))
+    t = _median(lambda: steady_state(s2), 5)
+    res.append(("coupled steady point (seed 002, grease_thrust_four_ball network)", t, 5e-3, "per point"))
+    if profile:
+        prof["3. coupled steady point (seed 004)"] = _profile(f3, 16)
+    # 4. coupled sweep on one core
+    npts = 1000 if full else N_SWEEP
+    grid = {"n_rpm": list(np.linspace(2000, 8000, npts))}
+    t0 = time.perf_counter()
+    rows = run_sweep(s, grid, processes=1)
+    t = (time.perf_counter() - t0) * 1000 / npts
+    ok = sum(r["status"] == "ok" for r in rows)
+    res.append((f"1000-point coupled sweep, one core ({'run' if full else f'timed on {npts} points, scaled'};"
+                f" {ok}/{npts} ok)", t, 2.0, "total"))
+    # 5. transient
+    f5 = lambda: transient(s, 3600.0)                                       # noqa: E731
+    t = _median(f5, 2)
+    res.append(("3600 s heat-up transient (seed 004)", t, 0.5, "total"))
+    if profile:
+        prof["5. transient 3600 s"] = _profile(f5, 16)
+
+    L = ["| benchmark | measured | target | verdict |", "|---|---|---|---|"]
+    for name, t, target, unit in res:
+        fmt = (lambda x: f"{x * 1e6:.0f} µs") if target < 1e-3 else (lambda x: f"{x * 1e3:.1f} ms") \
+            if target < 0.1 else (lambda x: f"{x:.2f} s")
+        verdict = "met" if t <= target else f"**missed ×{t / target:.3g}**"
+        L.append(f"| {name} | {fmt(t)} {unit} | {fmt(target)} | {verdict} |")
+    if profile:
+        L += ["", "Hot spots (cProfile):", ""]
+        for k, v in prof.items():
+            L += [f"**{k}**", "", "```", v, "```", ""]
+    return "\n".join(L)
+
+
+if __name__ == "__main__":
+    print(run(full="--full" in sys.argv))
