@@ -309,8 +309,15 @@ def _setup_thermal(scene: Scene, models: dict):
 
 
 def _sources(scene, models, cs, roles, T_C: dict):
+    """Heat sources [W] per node and the losses, at node temperatures ``T_C`` [°C]."""
+    return _sources_c(scene, models, cs, roles, *_contact_temps(T_C, roles))
+
+
+def _sources_c(scene, models, cs, roles, Ti, To, Toil):
+    """Heat sources [W] per node and the losses, at contact and oil temperatures [°C]."""
+    from .lubricant import T_VALID_C
     from .thermal import split_losses
-    Ti, To, Toil = _contact_temps(T_C, roles)
+    Ti, To, Toil = (min(max(float(v), T_VALID_C[0]), T_VALID_C[1]) for v in (Ti, To, Toil))
     if models["losses"][0] == "skf":
         r = skf_scene_losses(scene, 0.5 * (Ti + To), models)
         h = r.heat_W
@@ -326,50 +333,74 @@ def _sources(scene, models, cs, roles, T_C: dict):
     return src, r
 
 
+def _coupled_of(T_K, net, roles):
+    """(inner contact, outer contact, oil) temperatures [K] from all node temperatures [K]."""
+    ix = net.index
+    Tb = T_K[ix[roles["ball"]]]
+    return np.array([0.5 * (Tb + T_K[ix[roles["inner"]]]), 0.5 * (Tb + T_K[ix[roles["outer"]]]), T_K[ix[roles["oil"]]]])
+
+
 def steady_state(scene: Scene, *, tol_K: float = 1e-6, **kw) -> SteadyState:
     """Coupled steady state: losses(T) ↔ thermal network, to a fixed point.
 
-    Raises ThermalRunaway or NoConvergence (with the history) when no stable
-    equilibrium is found.
+    The losses depend on three temperatures only — inner contact, outer contact (each the mean
+    of ball and race, seed 004 §4.5) and oil–air mixture — so the fixed point is solved on those
+    three (Anderson mixing, :func:`thermobear.coupling.solve_coupled`): each update evaluates the
+    losses and solves the network once, linearised at the last iterate's temperatures (the
+    temperature-dependent conductances converge with the losses).  The returned state is a full
+    network solve with the converged losses: its energy balance closes to machine precision and its
+    coupled temperatures are checked against the fixed point.
+
+    Raises ThermalRunaway or NoConvergence (with the history) when no stable equilibrium is found.
 
     >>> import thermobear as tb
     >>> st = steady_state(tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml")))
     >>> bool(abs(st.energy_balance_W) <= 1e-9 * st.P_W), bool(st.T_C["inner_ring"] > 30.0)
     (True, True)
     """
-    from .coupling import solve_network_coupled
+    from .coupling import solve_coupled
+    from .errors import NoConvergence
+    from .lubricant import T_VALID_C
+    from .thermal import solve_steady
     models = choose_models(scene)
     if scene.T_C is not None:
         raise InputError("operation.T_C", scene.T_C, "the scene prescribes its temperature: use solve() "
                          "or remove operation.T_C to solve the thermal network")
     net, cs, roles = _setup_thermal(scene, models)
-    last = {}
-
-    def losses(T_K: dict):
-        T_C = {k: v - 273.15 for k, v in T_K.items()}
-        src, r = _sources(scene, models, cs, roles, T_C)
-        last["r"] = r
-        return src, {"P_W": r.P_W}
-
-    from .lubricant import T_VALID_C
     kw.setdefault("T_limit_K", T_VALID_C[1] + 273.15)      # beyond the lubricant's validity: runaway
-    res = solve_network_coupled(net, losses, tol_K=tol_K, **kw)
-    st = res.steady
+    state = {"T": net.initial_T_K()}
+
+    def sources_at(x_K):
+        return _sources_c(scene, models, cs, roles, *(np.asarray(x_K) - 273.15))
+
+    def update(x_K):
+        src, r = sources_at(x_K)
+        st = solve_steady(net, src, T_guess_K=state["T"], linearized=True)
+        state["T"] = st.T_K
+        return _coupled_of(st.T_K, net, roles), float(r.P_W)
+
+    res = solve_coupled(update, _coupled_of(state["T"], net, roles), tol_K=tol_K, **kw)
+    src, r = sources_at(res.T_K)
+    st = solve_steady(net, src, T_guess_K=state["T"])
     T_C = dict(st.T_C)
     hot = {k: v for k, v in T_C.items() if v + 273.15 > kw["T_limit_K"]}
     if hot:
         node = max(hot, key=hot.get)
         raise ThermalRunaway(
             f"no equilibrium below {kw['T_limit_K'] - 273.15:g} °C (the lubricant's limit): the network cannot shed "
-            f"{res.report.get('P_W', float('nan')):.4g} W even at that temperature ({node} would reach "
+            f"{r.P_W:.4g} W even at that temperature ({node} would reach "
             f"{hot[node]:.4g} °C); more cooling, less speed or a thinner oil is needed",
             iterations=res.iterations, residual=res.residual_K, last=T_C, history=res.history)
-    _, r = _sources(scene, models, cs, roles, T_C)
+    gap = float(np.max(np.abs(_coupled_of(st.T_K, net, roles) - res.T_K)))
+    if gap > max(10 * tol_K, 1e-4):
+        raise NoConvergence(f"coupled temperatures of the final network solve differ from the fixed point by "
+                            f"{gap:.3g} K", iterations=res.iterations, residual=gap, last=T_C, history=res.history)
     used = dict(r.models_used)
-    used["thermal"] = (f"network {net.name}", f"fixed point: {res.method}, {res.iterations} iterations")
+    used["thermal"] = (f"network {net.name}", f"fixed point on 3 coupled temperatures: {res.method}, "
+                                              f"{res.iterations} iterations, loop gain {res.loop_gain:.2f}")
     used["node_roles"] = (roles, "contact temperature = mean of ball and race nodes (seed 004 §4.5)")
     return SteadyState(T_C=T_C, T_ball_C=T_C[roles["ball"]], P_W=float(r.P_W), losses=r,
-                       iterations=res.iterations, residual_K=res.residual_K,
+                       iterations=res.iterations, residual_K=max(res.residual_K, gap),
                        energy_balance_W=float(st.balance_W),
                        heat_flows_W={k: f.Q_W for k, f in st.flows.items()},
                        models_used=used, history=res.history, roles=roles)
