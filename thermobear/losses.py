@@ -292,7 +292,9 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     if drag and supply not in ("oil_bath", "dry_film") and np.any(nb > 0):
         if supply == "oil_jet":
             W_cm3_min = oil_flow_m3_s * 1e6 * 60.0
-            X = np.where(nb > 0, oil_volume_fraction_parker(W_cm3_min, np.maximum(nb, 1e-9), brg.dm * 1e3), 0.0)
+            X = np.zeros(batch)
+            run = np.broadcast_to(nb > 0, batch)
+            X[run] = oil_volume_fraction_parker(W_cm3_min, np.broadcast_to(nb, batch)[run], brg.dm * 1e3)
         elif supply == "oil_air":
             X = np.full(batch, 0.01)
         else:

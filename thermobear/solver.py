@@ -123,22 +123,28 @@ def scene_load(scene: Scene, models: dict | None = None) -> LoadDistribution:
     return load_distribution(scene.bearing, Fa=scene.Fa, Fr=scene.Fr, M=scene.M, stiffness=stiff)
 
 
-def scene_contacts(scene: Scene, models: dict | None = None, load: LoadDistribution | None = None) -> ContactSet:
-    """Temperature-independent contact data of a scene (loads, ellipses, kinematics)."""
+def scene_contacts(scene: Scene, models: dict | None = None, load: LoadDistribution | None = None,
+                   n_rpm=None) -> ContactSet:
+    """Temperature-independent contact data of a scene (loads, ellipses, kinematics).
+
+    ``n_rpm`` may override the scene's speed with an array (vectorised sweeps)."""
     models = models or choose_models(scene)
     load = load if load is not None else scene_load(scene, models)
-    return prepare_contacts(scene.bearing, scene.Fa, scene.Fr, scene.n_rpm, M=scene.M, rotating=scene.rotating,
+    n = scene.n_rpm if n_rpm is None else n_rpm
+    return prepare_contacts(scene.bearing, scene.Fa, scene.Fr, n, M=scene.M, rotating=scene.rotating,
                             hertz_method=models["hertz"][0], centrifugal=True, load=load)
 
 
 def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oil_C=None,
                  load: LoadDistribution | None = None, models: dict | None = None,
-                 contacts: ContactSet | None = None) -> LossResult:
-    """Losses of a scene at given temperatures (default: the scene's prescribed T_C) [W]."""
+                 contacts: ContactSet | None = None, n_rpm=None) -> LossResult:
+    """Losses of a scene at given temperatures (default: the scene's prescribed T_C) [W].
+
+    ``n_rpm`` and the temperatures may be arrays (one operating point each, vectorised)."""
     models = models or choose_models(scene)
     if T_C is None:
         T_C = scene.T_C if scene.T_C is not None else scene.T_ambient_C
-    cs = contacts if contacts is not None else scene_contacts(scene, models, load)
+    cs = contacts if contacts is not None else scene_contacts(scene, models, load, n_rpm=n_rpm)
     r = evaluate_losses(cs, scene.lubricant, T_C, T_inner_C=T_inner_C, T_outer_C=T_outer_C, T_oil_C=T_oil_C,
                         supply=scene.supply, oil_flow_m3_s=scene.oil_flow, Rq_ball=scene.Rq_ball,
                         Rq_ring=scene.Rq_ring, mu_boundary=scene.mu_boundary, mu_full_film=scene.mu_full_film,
@@ -298,9 +304,9 @@ def _contact_temps(T_C: dict, roles: dict):
     return clip(0.5 * (Tb + T_C[roles["inner"]])), clip(0.5 * (Tb + T_C[roles["outer"]])), clip(T_C[roles["oil"]])
 
 
-def _setup_thermal(scene: Scene, models: dict):
+def _setup_thermal(scene: Scene, models: dict, contacts: ContactSet | None = None):
     from .thermal import load_network
-    cs = scene_contacts(scene, models)
+    cs = contacts if contacts is not None else scene_contacts(scene, models)
     # contact semi-axes for the contact conductances (temperature independent: rigid rings)
     contacts = {s: {"a_m": np.asarray(cs.sides[s]["a"], float), "b_m": np.asarray(cs.sides[s]["b"], float)}
                 for s in ("inner", "outer")}
@@ -340,7 +346,7 @@ def _coupled_of(T_K, net, roles):
     return np.array([0.5 * (Tb + T_K[ix[roles["inner"]]]), 0.5 * (Tb + T_K[ix[roles["outer"]]]), T_K[ix[roles["oil"]]]])
 
 
-def steady_state(scene: Scene, *, tol_K: float = 1e-6, **kw) -> SteadyState:
+def steady_state(scene: Scene, *, tol_K: float = 1e-6, contacts: ContactSet | None = None, **kw) -> SteadyState:
     """Coupled steady state: losses(T) ↔ thermal network, to a fixed point.
 
     The losses depend on three temperatures only — inner contact, outer contact (each the mean
@@ -350,6 +356,9 @@ def steady_state(scene: Scene, *, tol_K: float = 1e-6, **kw) -> SteadyState:
     temperature-dependent conductances converge with the losses).  The returned state is a full
     network solve with the converged losses: its energy balance closes to machine precision and its
     coupled temperatures are checked against the fixed point.
+
+    ``contacts`` injects a prepared :class:`~thermobear.losses.ContactSet` (e.g. from the high-speed
+    load model) instead of the one the scene's models give.
 
     Raises ThermalRunaway or NoConvergence (with the history) when no stable equilibrium is found.
 
@@ -366,7 +375,7 @@ def steady_state(scene: Scene, *, tol_K: float = 1e-6, **kw) -> SteadyState:
     if scene.T_C is not None:
         raise InputError("operation.T_C", scene.T_C, "the scene prescribes its temperature: use solve() "
                          "or remove operation.T_C to solve the thermal network")
-    net, cs, roles = _setup_thermal(scene, models)
+    net, cs, roles = _setup_thermal(scene, models, contacts)
     kw.setdefault("T_limit_K", T_VALID_C[1] + 273.15)      # beyond the lubricant's validity: runaway
     state = {"T": net.initial_T_K()}
 
@@ -428,7 +437,7 @@ class TransientRun:
 
 
 def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=None, rtol: float = 1e-6,
-              atol: float = 1e-4, **kw) -> TransientRun:
+              atol: float = 1e-4, contacts: ContactSet | None = None, **kw) -> TransientRun:
     """Heat-up of a scene on its thermal network, losses re-evaluated as temperatures change.
 
     Parameters
@@ -441,6 +450,7 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
     t_eval : array_like      output times [s]
     rtol, atol : float       BDF tolerances (atol in K; 1e-4 K keeps temperatures to 0.1 mK of a
                              1e-8 solution on the seed 004 scene)
+    contacts : ContactSet    inject prepared contacts (one operating point: no schedule)
     """
     from .thermal import solve_transient
     if not (np.isfinite(t_end_s) and t_end_s > 0):
@@ -451,11 +461,13 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
         if not (0 <= t < t_end_s):
             raise InputError("schedule.t_s", t, f"step times must lie in [0, {t_end_s}) s")
         scenes.append((float(t), scenes[-1][1].with_(**ch)))
+    if contacts is not None and steps:
+        raise InputError("contacts", "ContactSet", "injected contacts hold one operating point: no schedule")
     prepared = []
     net = None
     for t, sc in scenes:
         models = choose_models(sc)
-        n, cs, roles = _setup_thermal(sc, models)
+        n, cs, roles = _setup_thermal(sc, models, contacts)
         net = net or n
         prepared.append((t, sc, models, cs, roles))
 

@@ -36,7 +36,6 @@ failed), ``iterations`` and ``residual_K`` (coupled points).
 """
 from __future__ import annotations
 
-import dataclasses
 import itertools
 import os
 from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -102,10 +101,9 @@ def _losses_batch(sc: Scene, n_rpm, T_C, models: dict, load=None):
     """Local losses of one group, vectorised over speed and temperature [W].
 
     Goes through :func:`thermobear.solver.scene_losses` (the same argument mapping as a single
-    solve) with a copy of the scene whose ``n_rpm`` is the group's speed array — the loss model
-    broadcasts over it; ``load``: a load distribution instead of the one the solver picks."""
-    batch_scene = dataclasses.replace(sc, n_rpm=np.asarray(n_rpm, float))   # not validated: internal
-    return scene_losses(batch_scene, T_C=np.asarray(T_C, float), models=models,
+    solve) with the group's speed array; ``load``: a load distribution instead of the one the
+    solver picks."""
+    return scene_losses(sc, T_C=np.asarray(T_C, float), models=models, n_rpm=np.asarray(n_rpm, float),
                         load=scene_load(sc, models) if load is None else load)
 
 

@@ -206,28 +206,15 @@ def level3(scene: Scene, t_end_s: float | None = None, node: str | None = None):
 
 def level4(scene: Scene, t_end_s: float | None = None):
     """Thermal network + L4 losses (high-speed load, exact Hertz, per-ball stiffness)."""
-    from thermobear.coupling import solve_network_coupled
-    from thermobear.solver import _roles, _sources, network_context, network_spec   # internals: see report
-    from thermobear.thermal import load_network, solve_transient
     sc = _exact(scene).with_(T_C=None)
     models, cs = _l4_setup(sc)
-    contacts = {s: {"a_m": np.asarray(cs.sides[s]["a"], float), "b_m": np.asarray(cs.sides[s]["b"], float)}
-                for s in ("inner", "outer")}
-    net = load_network(network_spec(sc), network_context(sc, contacts))
-    roles = _roles(net)
-
-    def losses(T_K):
-        src, r = _sources(sc, models, cs, roles, {k: v - 273.15 for k, v in T_K.items()})
-        return src, {"P_W": float(r.P_W)}
-
     if t_end_s is None:
-        res = solve_network_coupled(net, losses)
-        T_C = dict(res.steady.T_C)
-        _, r = _sources(sc, models, cs, roles, T_C)
-        return {"torque_Nm": float(r.torque_Nm), "P_W": float(r.P_W), "T_C": T_C, "iterations": res.iterations}
-    tr = solve_transient(net, lambda t, T: losses(T), float(t_end_s), T0_C=sc.T_ambient_C, t_eval=[float(t_end_s)])
-    T_C = {k: float(v[-1]) for k, v in tr.T_C.items()}
-    return {"P_W": float(tr.report["P_W"][-1]), "T_C": T_C, "torque_Nm": float(tr.report["P_W"][-1] / sc.omega)}
+        st = steady_state(sc, contacts=cs)
+        return {"torque_Nm": float(st.losses.torque_Nm), "P_W": float(st.P_W), "T_C": dict(st.T_C),
+                "iterations": st.iterations}
+    tr = transient(sc, float(t_end_s), contacts=cs, t_eval=[float(t_end_s)])
+    return {"P_W": float(tr.P_W[-1]), "T_C": {k: float(v[-1]) for k, v in tr.T_C.items()},
+            "torque_Nm": float(tr.P_W[-1] / sc.omega)}
 
 
 # ------------------------------------------------------------------------------------ references

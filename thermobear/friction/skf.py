@@ -541,4 +541,9 @@ def mu_EHL_from_torque(M_exp_Nm, d_mm, D_mm, kind, nu_cSt, n_rpm, Fa, Fr, *, mu_
     r = skf_moment(d_mm, D_mm, kind, nu_cSt, n_rpm, Fa, Fr, mu_bl=mu_bl, mu_EHL=0.0, **constants)
     M_sl_Nmm = (np.asarray(M_exp_Nm, dtype=float) - r.M_rr - r.M_drag - r.M_seal) / NMM
     p_bl = np.asarray(r.phi_bl)
+    if np.any(p_bl > 0.5):
+        import warnings
+        from ..errors import ExtrapolationWarning
+        warnings.warn("mu_EHL_from_torque: Φ_bl > 0.5 — the back-calculation divides by 1 − Φ_bl → 0 and its sign "
+                      "is not meaningful there", ExtrapolationWarning, stacklevel=2)
     return _out((M_sl_Nmm / r.G_sl - p_bl * mu_bl) / (1.0 - p_bl))

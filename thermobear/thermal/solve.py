@@ -396,7 +396,9 @@ def solve_transient(net: ThermalNetwork, sources, t_end: float, *, T0_C=None,
         sol = solve_ivp(rhs, (a, b), y, method=method, jac=jac, rtol=rtol, atol=atol,
                         t_eval=te, max_step=max_step)
         if not sol.success:
-            raise NoConvergence(f"transient integration failed at t = {sol.t[-1]:.6g} s: {sol.message}",
+            t_fail = sol.t[-1] if sol.t.size else a
+            raise NoConvergence(f"transient integration failed at t = {t_fail:.6g} s (segment {a:g}–{b:g} s): "
+                                f"{sol.message}",
                                 iterations=sol.nfev, last=sol.y[:, -1] if sol.y.size else y)
         y = sol.y[:, -1].copy()
         keep = np.ones(sol.t.size, bool) if te_req is None else np.isin(sol.t, te_req)
