@@ -254,17 +254,18 @@ def seed001_cases() -> list[Case]:
 
 def seed002_cases() -> list[Case]:
     base = tb.load_scene(tb.example_path("seed002_grease_thrust_51107.toml"))
+    node = base.raw["rig"]["map"]["T_III_C"]        # thermocouple III → the scene's [rig.map] node
     out = []
     rows = {r["grease"]: r for r in _csv("seed002_greases.csv") if r["Mrr_Nmm"]}
     for g, r in rows.items():
         sc = base.with_(lubricant=f"seed002-{g.lower()}", n_rpm=1000.0)
         out.append(Case("seed002", f"{g} 1000 rpm", sc, float(r["T_1000rpm_C"]),
-                        torque_Nm=(float(r["Mrr_Nmm"]) + float(r["Msl_Nmm"])) * 1e-3, temp_node="balls",
+                        torque_Nm=(float(r["Mrr_Nmm"]) + float(r["Msl_Nmm"])) * 1e-3, temp_node=node,
                         held_out=g != "MG1", extra={"Mrr_Nmm": float(r["Mrr_Nmm"]), "Msl_Nmm": float(r["Msl_Nmm"]),
                                                     "base_oil": r["base_oil"]}))
     for g, T, M in (("MG1", 65.0, 155.0), ("PG2", 53.0, 110.0)):      # seed 002 §4.2 (CSV header)
         sc = base.with_(lubricant=f"seed002-{g.lower()}", n_rpm=2000.0)
-        out.append(Case("seed002", f"{g} 2000 rpm", sc, T, torque_Nm=M * 1e-3, temp_node="balls",
+        out.append(Case("seed002", f"{g} 2000 rpm", sc, T, torque_Nm=M * 1e-3, temp_node=node,
                         extra={"base_oil": rows[g]["base_oil"]}))
     return out
 
@@ -433,7 +434,7 @@ def score_seed002(levels=LEVELS) -> list[Score]:
                          "housing, fans, 25 °C ambient)", failed))
         e, t1, tm, failed = res["seed002 temperature"]
         out.append(Score(lv, "seed002 temperature", e, t1, tm, "rise above 25 °C (estimated ambient) at node "
-                         "balls (thermocouple III)", failed))
+                         f"{cases[0].temp_node} (thermocouple III)", failed))
     return out
 
 
