@@ -26,6 +26,8 @@ import warnings
 
 import numpy as np
 
+from _timing import median_time
+
 import thermobear as tb
 from thermobear.errors import ExtrapolationWarning
 from thermobear.loads import load_distribution
@@ -39,13 +41,7 @@ _TB_FILES = {str(p.relative_to(p.parents[1] if p.parent.name != "thermobear" els
 
 
 def _median(fn, repeat):
-    fn()
-    ts = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        ts.append(time.perf_counter() - t0)
-    return float(np.median(ts))
+    return median_time(fn, repeat)
 
 
 def _profile(fn, n=12) -> str:

@@ -5,21 +5,17 @@ Run:  python validation/bench_loads.py
 """
 from __future__ import annotations
 
-import time
 
 import numpy as np
+
+from _timing import median_time
 
 from thermobear.geometry import bearing
 from thermobear.loads import load_distribution
 
 
 def timeit(fn, repeat=7):
-    ts = []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        fn()
-        ts.append(time.perf_counter() - t)
-    return float(np.median(ts))
+    return median_time(fn, repeat, warmup=False)
 
 
 def main():

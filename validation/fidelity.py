@@ -50,6 +50,8 @@ from pathlib import Path
 
 import numpy as np
 
+from _timing import median_time
+
 import thermobear as tb
 from thermobear.errors import ExtrapolationWarning, InputError, SolverError
 from thermobear.friction.skf import MU_EHL, skf_constants, skf_friction
@@ -286,12 +288,7 @@ def calibrate_L0_seed002(case: Case):
 
 # ------------------------------------------------------------------------------------ scoring
 def _median_time(fn, repeat):
-    ts = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        ts.append(time.perf_counter() - t0)
-    return float(np.median(ts))
+    return median_time(fn, repeat, warmup=False)
 
 
 @dataclass
