@@ -158,9 +158,10 @@ def needs_high_speed(brg: BallBearing, n_rpm, Q_typical, threshold: float = 0.05
     Criterion (documented choice): the low-speed form is used when the ball
     centrifugal force F_c = ½ m dm ω_c² (Harris 2001 eq 8.9, ω_c the cage speed
     of an inner-rotating bearing) is below ``threshold`` (5 %) of the typical
-    ball load; the outer-contact load then differs from the inner one by less
-    than that, and the contact angles by less than about a degree for the seed
-    bearings.  Returns a boolean (array) and the ratio F_c / Q.
+    ball load.  At the threshold the high-speed solution
+    (:mod:`thermobear.loads_highspeed`) has |Q_o − Q_i|/Q ≈ 0.04 and contact angles
+    moved by 1.3–1.4° (218 at two loads, 7210 at 450 and 2000 N; tests/test_loads_highspeed.py).
+    Returns a boolean (array) and the ratio F_c / Q.
 
     The seed 004 7210 at 6500 rpm under Fa = 450 N (ball load ≈ 47 N): F_c ≈ 25 N, so
     the criterion asks for the high-speed form although seed 004 neglects it (N dm < 1e6

@@ -10,9 +10,9 @@ from the scene's ``[models]`` table:
 * **load_model** — the closed form when the load case is symmetric and the
   closed form is exact (pure axial load, tilt held: all balls equal, Harris
   eq 7.36; thrust bearing: Q = Fa/Z); Jones–Harris otherwise.  Centrifugal and
-  gyroscopic terms (``high_speed``) only where ``needs_high_speed`` says they
-  matter (F_c > 5 % of the ball load) and the high-speed solver is available;
-  otherwise the low-speed form.  In every case the centrifugal force F_c loads the
+  gyroscopic terms (``high_speed``, Jones 1960, :mod:`thermobear.loads_highspeed`)
+  only where ``needs_high_speed`` says they matter (F_c > 5 % of the ball load);
+  otherwise the low-speed form, in which the centrifugal force F_c still loads the
   outer contact (it is what keeps balls outside the load zone on the race).
 * **drag** — only for jet / oil–air supply, or when n·dm ≥ 1e5 mm·rpm (below,
   churning of a few balls in air is < 0.1 % of the contact losses).
@@ -66,15 +66,22 @@ def choose_models(scene: Scene) -> dict:
         out["load_model"] = ("jones_harris", "combined load: balls differ (Jones–Harris, seed 004 eqs 6–8)")
     Qtyp = max(scene.Fa / (b.Z * max(np.sin(b.alpha0), 1e-3)), scene.Fr * 5.0 / b.Z, 1e-9)
     need, ratio = needs_high_speed(b, scene.n_rpm, Qtyp)
-    if b.kind == "thrust":
+    if "high_speed" in m:
+        hs = bool(m["high_speed"])
+        if hs and b.kind == "thrust":
+            raise InputError("models.high_speed", True, "the high-speed form is for radial and angular contact "
+                             "bearings (a thrust bearing's centrifugal force acts across its grooves)")
+        out["high_speed"] = ("yes" if hs else "no", "chosen in the scene")
+    elif b.kind == "thrust":
         out["high_speed"] = ("no", "thrust bearing: centrifugal force acts across the groove; not modelled")
     elif bool(need):
-        out["high_speed"] = ("low-speed + F_c on outer contact",
-                             f"F_c/Q = {float(ratio):.2f} > 0.05: the high-speed form would shift the contact angles; "
-                             "the low-speed form with F_c on the outer contacts is used")
+        out["high_speed"] = ("yes", f"F_c/Q = {float(ratio):.2f} > 0.05: Jones high-speed form (centrifugal force, "
+                                    "gyroscopic moment, outer-race control) shifts the contact angles")
     else:
         out["high_speed"] = ("no", f"F_c/Q = {float(ratio):.3f} <= 0.05 (F_c still loads the outer contacts "
                                    "of balls outside the load zone)")
+    if out["high_speed"][0] == "yes" and out["load_model"][0] == "closed_form":
+        out["load_model"] = ("jones_harris", "high-speed form: per-ball equilibrium with centrifugal force")
     ndm = scene.n_rpm * b.dm * 1e3
     if "drag" in m:
         out["drag"] = (bool(m["drag"]), "chosen in the scene")
@@ -120,6 +127,10 @@ def scene_load(scene: Scene, models: dict | None = None) -> LoadDistribution:
     if models["load_model"][0] == "closed_form":
         return _closed_form_axial(scene.bearing, scene.Fa)
     stiff = scene.models.get("stiffness", "nominal")
+    if models["high_speed"][0] == "yes":
+        from .loads_highspeed import load_distribution_high_speed
+        return load_distribution_high_speed(scene.bearing, Fa=scene.Fa, Fr=scene.Fr, M=scene.M,
+                                            n_rpm=scene.n_rpm, stiffness=stiff)
     return load_distribution(scene.bearing, Fa=scene.Fa, Fr=scene.Fr, M=scene.M, stiffness=stiff)
 
 
@@ -132,7 +143,7 @@ def scene_contacts(scene: Scene, models: dict | None = None, load: LoadDistribut
     load = load if load is not None else scene_load(scene, models)
     n = scene.n_rpm if n_rpm is None else n_rpm
     return prepare_contacts(scene.bearing, scene.Fa, scene.Fr, n, M=scene.M, rotating=scene.rotating,
-                            hertz_method=models["hertz"][0], centrifugal=True, load=load)
+                            hertz_method=models["hertz"][0], centrifugal=models["high_speed"][0] != "yes", load=load)
 
 
 def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oil_C=None,
@@ -388,7 +399,12 @@ def steady_state(scene: Scene, *, tol_K: float = 1e-6, contacts: ContactSet | No
         state["T"] = st.T_K
         return _coupled_of(st.T_K, net, roles), float(r.P_W)
 
-    res = solve_coupled(update, _coupled_of(state["T"], net, roles), tol_K=tol_K, **kw)
+    import warnings
+    from .errors import ExtrapolationWarning
+    with warnings.catch_warnings():
+        # intermediate iterates may overshoot beyond the correlations' data; only the answer is checked
+        warnings.simplefilter("ignore", ExtrapolationWarning)
+        res = solve_coupled(update, _coupled_of(state["T"], net, roles), tol_K=tol_K, **kw)
     src, r = sources_at(res.T_K)
     st = solve_steady(net, src, T_guess_K=state["T"])
     T_C = dict(st.T_C)

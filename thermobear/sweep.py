@@ -113,6 +113,8 @@ def _prescribed(scenes, points, idx, rows):
         models = choose_models(scenes[i])
         key = (tuple((k, repr(v)) for k, v in points[i].items() if k not in _VECTOR_KEYS),
                tuple(sorted((k, repr(v[0])) for k, v in models.items() if k != "thermal")))
+        if models["high_speed"][0] == "yes":     # the high-speed ball loads depend on speed: one group per speed
+            key += (("n_rpm", repr(scenes[i].n_rpm)),)
         groups.setdefault(key, (models, []))[1].append(i)
     for models, members in groups.values():
         sc = scenes[members[0]]

@@ -121,7 +121,8 @@ def nominal_load(brg, Fa: float, Fr: float) -> LoadDistribution:
 
 
 def _approx(scene: Scene) -> Scene:
-    return scene.with_(models={"hertz": "hamrock_brewe"})
+    """L1–L3: Hamrock–Brewe Hertz, low-speed load model (F_c only on the outer contact)."""
+    return scene.with_(models={"hertz": "hamrock_brewe", "high_speed": False})
 
 
 def _exact(scene: Scene) -> Scene:
@@ -150,7 +151,7 @@ def level1(scene: Scene, n_rpm, T_C):
 def _speed_models(sc, n_rpm, models):
     """Model choices at the highest speed of a batch (drag and F_c flags depend on speed)."""
     m = choose_models(sc.with_(T_C=40.0, n_rpm=n_rpm))
-    return {**models, "drag": m["drag"], "high_speed": m["high_speed"]}
+    return {**models, "drag": m["drag"], "high_speed": m["high_speed"]}    # L1–L3 scenes fix high_speed = no
 
 
 def level2(scene: Scene, n_rpm, T_C):
