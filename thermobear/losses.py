@@ -288,7 +288,11 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
 
     # drag of the balls in the oil–air mixture
     nb = cs.n_rpm
-    wc_mean = cs.omega_c.mean(-1)
+    # cage speed: the balls' pure-rolling orbital speeds differ when their contact angles do (high-speed
+    # form); the cage runs at the speed the loaded balls impose — their load-weighted mean
+    Qw = cs.sides["inner"]["Q"]
+    Qs = Qw.sum(-1)
+    wc_mean = np.where(Qs > 0, (Qw * cs.omega_c).sum(-1) / np.where(Qs > 0, Qs, 1.0), cs.omega_c.mean(-1))
     if drag and supply not in ("oil_bath", "dry_film") and np.any(nb > 0):
         if supply == "oil_jet":
             W_cm3_min = oil_flow_m3_s * 1e6 * 60.0

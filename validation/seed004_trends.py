@@ -126,13 +126,15 @@ def main() -> int:
                  f"({heat[n][0] - ref:+.1f} K) |")
     print(f"  falls {falls}; injection {d_inj:.1f} %; radial spread {ch:.0f} %; axial {Pa}; x2 ratios {ratios}; heat {heat}")
     L += ["", "### Notes", "",
-          f"* **Radial load.** The model's power changes by {ch:.0f} % from 50 to 1500 N: with Fa = 450 N and the "
-          "estimated 40° geometry, a per-bearing radial load above ≈ 400 N unloads most inner contacts (see §2 table), and "
-          "an unloaded contact has no film and no hydrodynamic rolling force in the Biboulet/Houpert formulas "
-          "(F_R → 0 with Q). Seed 004 keeps low-loaded balls in IVR/PVR with a finite force, which compensates the "
-          "EHL decrease (its Fig. 19). Which load the paper assigns to balls outside the load zone is not stated; "
-          "the radial stiffness of the real pair (two bearings preloaded by washers) also differs from one rigid-ring "
-          "bearing. Left open: a model of the hydrodynamic force of a ball running with a gap.",
+          f"* **Radial load.** The model's power {'rises' if Pr[2] > Pr[0] else 'falls'} by {ch:.0f} % from 50 to "
+          "1500 N. With Fa = 450 N and the estimated 40° geometry, a per-bearing radial load above ≈ 400 N "
+          "concentrates the load on a few balls (§2 table) and leaves the others with unloaded inner contacts — no "
+          "film and no hydrodynamic rolling force in the Biboulet/Houpert formulas (F_R → 0 with Q) — while the "
+          "loaded balls go EHL/PVR and, in the high-speed form, change their contact angles. Seed 004 keeps "
+          "low-loaded balls in IVR/PVR with a finite force, which compensates the EHL change (its Fig. 19). Which "
+          "load the paper assigns to balls outside the load zone is not stated; the real pair (two bearings "
+          "preloaded by washers) is also stiffer radially than one rigid-ring bearing. Left open: a model of the "
+          "hydrodynamic force of a ball running with a gap.",
           "* **Heat-up.** The network's parameters (housing, shaft, joint conductances, convection) are estimates "
           "(networks/oil_jet_ball_bearing.toml lists each). The model runs cooler than the rig; the power level itself "
           "cannot be checked against the paper (measured powers only in figures). Calibrating the housing and "
