@@ -113,8 +113,6 @@ def _prescribed(scenes, points, idx, rows):
         models = choose_models(scenes[i])
         key = (tuple((k, repr(v)) for k, v in points[i].items() if k not in _VECTOR_KEYS),
                tuple(sorted((k, repr(v[0])) for k, v in models.items() if k != "thermal")))
-        if models["high_speed"][0] == "yes":     # the high-speed ball loads depend on speed: one group per speed
-            key += (("n_rpm", repr(scenes[i].n_rpm)),)
         groups.setdefault(key, (models, []))[1].append(i)
     for models, members in groups.values():
         sc = scenes[members[0]]
@@ -126,7 +124,12 @@ def _prescribed(scenes, points, idx, rows):
             M = np.array([x.torque_Nm for x in rs])
             bd = {k: np.array([x.breakdown_W[k] for x in rs]) for k in rs[0].breakdown_W}
         else:
-            r = _losses_batch(sc, n, T, models)
+            load = None
+            if models["high_speed"][0] == "yes":   # high-speed ball loads depend on speed: one batched solve
+                from .loads_highspeed import load_distribution_high_speed
+                load = load_distribution_high_speed(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, M=sc.M, n_rpm=n,
+                                                    stiffness=sc.models.get("stiffness", "nominal"))
+            r = _losses_batch(sc, n, T, models, load=load)
             P, M = np.atleast_1d(r.P_W), np.atleast_1d(r.torque_Nm)
             bd = {k: np.broadcast_to(np.atleast_1d(v), P.shape) for k, v in r.breakdown_W.items()}
         for j, i in enumerate(members):
