@@ -162,6 +162,17 @@ def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oi
                         rolling_model=models["rolling"][0], drag=bool(models["drag"][0]))
     used = dict(r.models_used)
     used.update({k: v for k, v in models.items()})
+    lm, hs = models["load_model"][0], models["high_speed"][0]
+    if getattr(contacts, "models_used", {}).get("load_distribution", ("",))[0] == "injected":
+        used["load_distribution"] = contacts.models_used["load_distribution"]
+    else:
+        used["load_distribution"] = (
+            "closed form, all balls equal" if lm == "closed_form" else
+            "Jones–Harris high-speed (centrifugal, gyroscopic)" if hs == "yes" else "Jones–Harris low-speed, rigid rings",
+            models["load_model"][1])
+        used["centrifugal"] = (("in the ball equilibrium", "high-speed form") if hs == "yes" else
+                               ("F_c/cos α on the outer contact", "balls outside the load zone ride on the outer race")
+                               if scene.bearing.kind != "thrust" else ("none", "thrust bearing"))
     object.__setattr__(r, "models_used", used)
     return r
 
@@ -317,6 +328,10 @@ def _contact_temps(T_C: dict, roles: dict):
 
 def _setup_thermal(scene: Scene, models: dict, contacts: ContactSet | None = None):
     from .thermal import load_network
+    if contacts is not None:
+        import dataclasses
+        contacts = dataclasses.replace(contacts, models_used={
+            **contacts.models_used, "load_distribution": ("injected", "contacts prepared by the caller")})
     cs = contacts if contacts is not None else scene_contacts(scene, models)
     # contact semi-axes for the contact conductances (temperature independent: rigid rings)
     contacts = {s: {"a_m": np.asarray(cs.sides[s]["a"], float), "b_m": np.asarray(cs.sides[s]["b"], float)}
