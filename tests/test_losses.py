@@ -115,3 +115,12 @@ def test_bad_inputs():
         losses(n_rpm=-1.0)
     with pytest.raises(InputError, match="supply"):
         losses(supply="mist")
+
+
+def test_oil_injection_temperature_barely_matters_at_equal_bearing_temperature():
+    # seed 004 §5.3.2 / Fig. 10: the controlling viscosity is the contacts' (bearing) temperature;
+    # the oil–air temperature only enters through drag
+    a = losses(n_rpm=6500.0, T_C=50.0, T_oil_C=30.0)
+    b = losses(n_rpm=6500.0, T_C=50.0, T_oil_C=55.0)
+    assert abs(b.P_W / a.P_W - 1) < 0.02
+    assert b.breakdown_W["rolling"] == a.breakdown_W["rolling"]
