@@ -13,11 +13,22 @@ def checked(name, v, *, lo=0.0, strict=True, what=""):
     [1.0, 2.0]
     """
     v = np.asarray(v, dtype=float)
-    bad = ~np.isfinite(v) | ((v <= lo) if strict else (v < lo))
-    if np.any(bad):
+    if v.size and not _within(v, lo, strict):
         rel = ">" if strict else ">="
         raise InputError(name, v, f"must be finite and {rel} {lo:g}{what}")
     return v
+
+
+def _within(v, lo, strict):
+    """All finite and > lo (>= lo): two reductions; NaN fails every comparison."""
+    mn, mx = v.min(), v.max()
+    return bool((mn > lo if strict else mn >= lo) and mx < np.inf)
+
+
+def finite_range(v):
+    """(min, max) of a non-empty float array, or None if any value is NaN or ±inf."""
+    mn, mx = v.min(), v.max()
+    return (mn, mx) if (mn > -np.inf and mx < np.inf) else None
 
 
 def out(x):

@@ -25,6 +25,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ._arrays import finite_range
+
 from .errors import InputError
 
 __all__ = [
@@ -45,11 +47,14 @@ _EXP_MAX = 700.0   # clip of exponents so ratios stay finite (e^700 ≈ 1e304)
 # ---------------------------------------------------------------------------
 def _arr(name, v, *, positive=False, nonneg=False):
     a = np.asarray(v, dtype=float)
-    if not np.all(np.isfinite(a)):
+    if not a.size:
+        return a
+    r = finite_range(a)
+    if r is None:
         raise InputError(name, v, "must be finite")
-    if positive and np.any(a <= 0):
+    if positive and r[0] <= 0:
         raise InputError(name, v, "must be > 0")
-    if nonneg and np.any(a < 0):
+    if nonneg and r[0] < 0:
         raise InputError(name, v, "must be >= 0")
     return a
 

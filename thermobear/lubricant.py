@@ -31,6 +31,8 @@ import warnings
 
 import numpy as np
 
+from ._arrays import finite_range
+
 from ._data import data_dir, lookup, names_in
 from .errors import ExtrapolationWarning, InputError, OutsideValidity
 from .units import ZERO_C_K
@@ -441,14 +443,17 @@ class Lubricant:
     # -- temperature checks --------------------------------------------------
     def _T(self, T_C, what):
         T = np.asarray(T_C, dtype=float)
-        if not np.all(np.isfinite(T)):
+        if not T.size:
+            return T
+        r = finite_range(T)
+        if r is None:
             raise InputError(f"{self.name}.{what}(T_C)", T_C, "temperature must be finite [°C]")
         lo, hi = T_VALID_C
-        if np.any(T < lo) or np.any(T > hi):
+        if r[0] < lo or r[1] > hi:
             raise OutsideValidity(f"{self.name}.{what}(T_C)", T_C,
                                   f"lubricant properties are valid only in {lo}...{hi} °C")
         wlo, whi = T_WARN_C
-        if np.any(T < wlo) or np.any(T > whi):
+        if r[0] < wlo or r[1] > whi:
             warnings.warn(f"{self.name}.{what}: T_C outside {wlo}...{whi} °C is an extrapolation "
                           "of the ASTM D341 / density / thermal correlations", ExtrapolationWarning,
                           stacklevel=3)

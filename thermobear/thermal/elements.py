@@ -27,6 +27,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+
+from .._arrays import _within
 from scipy.special import ellipk
 
 from ..errors import InputError
@@ -49,8 +51,7 @@ HARRIS_COEFFICIENTS = {
 
 def _pos(name, v, strict=True):
     a = np.asarray(v, dtype=float)
-    bad = ~np.isfinite(a) | ((a <= 0) if strict else (a < 0))
-    if np.any(bad):
+    if a.size and not _within(a, 0.0, strict):
         raise InputError(name, v, "must be finite and " + ("> 0" if strict else ">= 0"))
     return a
 
