@@ -20,6 +20,7 @@ __all__ = ["air_properties", "P_ATM", "T_RANGE_K"]
 
 P_ATM = 101325.0          #: cavity pressure used for the table [Pa]
 T_RANGE_K = (200.0, 600.0)
+_KEYS = ("rho", "mu", "k", "cp")
 
 
 def _propssi(T, p):
@@ -32,7 +33,7 @@ def _propssi(T, p):
 def _table():
     T = np.arange(T_RANGE_K[0], T_RANGE_K[1] + 0.5, 1.0)
     props = _propssi(T, P_ATM)
-    return {k: CubicSpline(T, np.asarray(v, float)) for k, v in props.items()}
+    return CubicSpline(T, np.column_stack([np.asarray(props[k], float) for k in _KEYS]))   # one spline, 4 columns
 
 
 def air_properties(T_K, p_Pa=P_ATM):
@@ -55,8 +56,8 @@ def air_properties(T_K, p_Pa=P_ATM):
     if not (np.isfinite(p_Pa) and p_Pa > 0):
         raise InputError("p_Pa", p_Pa, "pressure must be > 0 [Pa]")
     if abs(p_Pa - P_ATM) < 1e-9 * P_ATM:
-        tab = _table()
-        out = {k: tab[k](T) for k in ("rho", "mu", "k", "cp")}
+        v = _table()(T)
+        out = {k: v[..., i] for i, k in enumerate(_KEYS)}
     else:
         out = {k: np.asarray(v, float) for k, v in _propssi(T, float(p_Pa)).items()}
     out["nu"] = out["mu"] / out["rho"]
