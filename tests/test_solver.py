@@ -110,3 +110,18 @@ def test_skf_loss_path():
     assert r.P_W == pytest.approx(skf.P_W, rel=1e-12)
     st = steady_state(S002.with_(models={"losses": "skf"}))
     assert abs(st.energy_balance_W) <= 1e-9 * st.P_W
+
+
+def test_schedule_steps_reach_the_network():
+    # a step of the oil inlet temperature changes the fixed node and the end state equals the steady state
+    tr = transient(S004, 1.0e6, schedule=[(1000.0, {"T_oil_in_C": 70.0})], t_eval=[999.0, 1000.0, 1.0e6])
+    assert tr.t_s.tolist() == [999.0, 1000.0, 1.0e6]
+    assert tr.T_C["oil_inlet"].tolist() == [30.0, 70.0, 70.0]
+    st = steady_state(S004.with_(T_oil_in_C=70.0))
+    assert tr.T_C["balls"][-1] == pytest.approx(st.T_C["balls"], abs=0.05)
+
+
+def test_steady_state_above_the_first_iterates_limit():
+    # the first update puts the oil–air node far above 250 °C; the equilibrium is at ~110 °C
+    st = steady_state(S004.with_(n_rpm=11000.0))
+    assert st.T_C["oil_air"] < 150.0 and abs(st.energy_balance_W) < 1e-9 * st.P_W

@@ -494,35 +494,65 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
         scenes.append((float(t), scenes[-1][1].with_(**ch)))
     if contacts is not None and steps:
         raise InputError("contacts", "ContactSet", "injected contacts hold one operating point: no schedule")
-    prepared = []
-    net = None
-    for t, sc in scenes:
+    from .lubricant import T_VALID_C
+    T_lim_C = T_VALID_C[1]
+    if t_eval is not None:
+        t_eval = np.asarray(t_eval, float)
+        if t_eval.ndim != 1 or np.any(~np.isfinite(t_eval)) or np.any((t_eval < 0) | (t_eval > t_end_s)) \
+                or np.any(np.diff(t_eval) <= 0):
+            raise InputError("t_eval", t_eval, f"output times must increase within [0, {t_end_s}] s")
+    # one network per segment: a step may change boundary temperatures, oil flow, speed-dependent
+    # convection and contact ellipses, not only the losses
+    bounds = [t for t, _ in scenes] + [float(t_end_s)]
+    T_state = scene.T_ambient_C if T0_C is None else T0_C
+    out_t, out_T, out_rep = [], {}, {}
+    first = None
+    for k, (ts, sc) in enumerate(scenes):
+        te = bounds[k + 1]
+        if te <= ts:
+            continue
         models = choose_models(sc)
-        n, cs, roles = _setup_thermal(sc, models, contacts)
-        net = net or n
-        prepared.append((t, sc, models, cs, roles))
+        net, cs, roles = _setup_thermal(sc, models, contacts)
+        first = first or (models, roles, list(net.nodes))
+        if list(net.nodes) != first[2]:
+            raise InputError("schedule", ts, "a step may not change the thermal network's nodes")
+        last_seg = k == len(scenes) - 1
 
-    def current(t):
-        k = 0
-        for i, (ts, *_rest) in enumerate(prepared):
-            if t >= ts - 1e-12:
-                k = i
-        return prepared[k]
+        def sources(t, T_K, sc=sc, models=models, cs=cs, roles=roles):
+            T_C = {n: v - 273.15 for n, v in T_K.items()}
+            src, r = _sources(sc, models, cs, roles, T_C)
+            return src, {"P_W": float(r.P_W), **{f"P_{n}": float(v) for n, v in r.breakdown_W.items()}}
 
-    def sources(t, T_K):
-        _, sc, models, cs, roles = current(t)
-        T_C = {k: v - 273.15 for k, v in T_K.items()}
-        src, r = _sources(sc, models, cs, roles, T_C)
-        return src, {"P_W": float(r.P_W), **{f"P_{k}": float(v) for k, v in r.breakdown_W.items()}}
-
-    T0 = scene.T_ambient_C if T0_C is None else T0_C
-    tr = solve_transient(net, sources, float(t_end_s), T0_C=T0, breakpoints=[t for t, *_ in prepared[1:]],
-                         t_eval=t_eval, rtol=rtol, atol=atol, **kw)
-    rep = tr.report
-    P = np.asarray(rep.get("P_W", []), float)
-    bd = {k[2:]: np.asarray(v, float) for k, v in rep.items() if k.startswith("P_") and k != "P_W"}
-    return TransientRun(t_s=np.asarray(tr.t), T_C=dict(tr.T_C), P_W=P,
-                        breakdown_W=bd, models_used=prepared[0][2], roles=prepared[0][4])
+        if t_eval is None:
+            seg = None
+        else:     # points in [ts, te) belong to this segment (right-continuous at steps); te closes it
+            want = t_eval[(t_eval >= ts) & ((t_eval < te) | (last_seg & (t_eval <= te)))]
+            seg = np.union1d(want - ts, [te - ts])
+        tr = solve_transient(net, sources, te - ts, T0_C=T_state, t_eval=seg, rtol=rtol, atol=atol, **kw)
+        t_abs = np.asarray(tr.t) + ts
+        keep = np.ones(t_abs.size, bool)
+        if t_eval is not None:
+            keep = np.isin(np.round(t_abs, 9), np.round(t_eval, 9))
+        if not last_seg:
+            keep &= t_abs < te                    # the step's instant is reported by the next segment
+        out_t.append(t_abs[keep])
+        for n, v in tr.T_C.items():
+            out_T.setdefault(n, []).append(np.asarray(v)[keep])
+        for n, v in tr.report.items():
+            out_rep.setdefault(n, []).append(np.asarray(v, float)[keep])
+        T_state = {n: float(np.asarray(v)[-1]) for n, v in tr.T_C.items() if n in net.free_nodes}
+        hot = {n: v for n, v in T_state.items() if v > T_lim_C}
+        if hot:
+            node = max(hot, key=hot.get)
+            raise ThermalRunaway(f"the heat-up passes the lubricant's limit {T_lim_C:g} °C ({node} at "
+                                 f"{hot[node]:.4g} °C by t = {te:g} s): no equilibrium the bearing could run at",
+                                 iterations=0, last=T_state)
+    cat = lambda parts: np.concatenate(parts) if parts else np.zeros(0)  # noqa: E731
+    rep = {n: cat(v) for n, v in out_rep.items()}
+    P = rep.get("P_W", np.zeros(0))
+    bd = {n[2:]: v for n, v in rep.items() if n.startswith("P_") and n != "P_W"}
+    return TransientRun(t_s=cat(out_t), T_C={n: cat(v) for n, v in out_T.items()}, P_W=P, breakdown_W=bd,
+                        models_used=first[0], roles=first[1])
 
 
 @dataclass

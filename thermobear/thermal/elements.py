@@ -272,7 +272,8 @@ def oil_air_properties(X, rho_oil, nu_oil_cSt, k_oil, cp_oil, T_K):
 
 def _film_air(T_s_K, T_inf_K):
     Tf = 0.5 * (np.asarray(T_s_K, float) + np.asarray(T_inf_K, float))
-    return Tf, air_properties(Tf)
+    from ..air import T_RANGE_K
+    return Tf, air_properties(np.clip(Tf, *T_RANGE_K))   # properties held in the table's range
 
 
 def h_natural_horizontal_cylinder(T_s_K, T_inf_K, D, method="Churchill-Chu"):
@@ -524,12 +525,12 @@ class Convection(Element):
         if c in HARRIS_COEFFICIENTS:
             fluid = p.get("fluid", "oil_air")
             if fluid == "air":
-                props = air_properties(Tf)
+                props = air_properties(_air_T(Tf))
             else:
                 oil = self.context["oil"]
-                T_C = Tf - 273.15
+                T_C = _oil_T(Tf)
                 X = 1.0 if fluid == "oil" else p["oil_fraction"]
-                props = oil_air_properties(X, oil.rho(T_C), oil.nu(T_C), oil.k_th(T_C), oil.cp(T_C), Tf)
+                props = oil_air_properties(X, oil.rho(T_C), oil.nu(T_C), oil.k_th(T_C), oil.cp(T_C), T_C + 273.15)
             return h_harris(props["k"], props["Pr"], p["u_m_s"], props["nu"], p["x_m"], c)
         if c == "natural_horizontal_cylinder":
             return h_natural_horizontal_cylinder(Ts, Tf, p["D_m"])
@@ -541,6 +542,20 @@ class Convection(Element):
 
     def conductance(self, T_K):
         return self.h(T_K) * float(self.p["A_m2"])
+
+
+def _air_T(T_K: float) -> float:
+    """Temperature [K] for the air table, held inside 200–600 K (see :func:`_oil_T`)."""
+    from ..air import T_RANGE_K
+    return min(max(float(T_K), T_RANGE_K[0]), T_RANGE_K[1])
+
+
+def _oil_T(T_K: float) -> float:
+    """Temperature [°C] for the oil's property correlations, held inside their validity: an iterate of
+    the coupled solve may overshoot transiently; an equilibrium beyond the limit is reported as runaway
+    by the solver, not as an error from a property call."""
+    from ..lubricant import T_VALID_C
+    return min(max(T_K - 273.15, T_VALID_C[0]), T_VALID_C[1])
 
 
 class Radiation(Element):
@@ -570,7 +585,7 @@ class Advection(Element):
         if "rho_kg_m3" in p and "cp_J_kgK" in p:
             rho, cp = p["rho_kg_m3"], p["cp_J_kgK"]
         else:
-            T_C = float(T_K[self.i]) - 273.15
+            T_C = _oil_T(float(T_K[self.i]))
             oil = self.context["oil"]
             rho = p["rho_kg_m3"] if "rho_kg_m3" in p else oil.rho(T_C)
             cp = p["cp_J_kgK"] if "cp_J_kgK" in p else oil.cp(T_C)
