@@ -13,6 +13,7 @@ clearance Pd = d_o − d_i − 2D; A = (fi + fo − 1) D; cos α0 = 1 − Pd/(2A
 """
 from __future__ import annotations
 
+import numbers
 from dataclasses import dataclass, field, replace
 from functools import cached_property
 
@@ -90,7 +91,7 @@ class BallBearing:
             raise InputError(f"{p}.kind", self.kind, f"must be one of {', '.join(KINDS)}")
         for fld in ("D", "dm"):
             v = getattr(self, fld)
-            if not (isinstance(v, (int, float)) and np.isfinite(v) and v > 0):
+            if isinstance(v, bool) or not isinstance(v, numbers.Real) or not (np.isfinite(v) and v > 0):
                 raise InputError(f"{p}.{fld}", v, "must be a finite length > 0 [m]")
         if self.D >= self.dm:
             raise InputError(f"{p}.D", self.D, f"ball diameter must be smaller than the pitch diameter dm = {self.dm} m")
@@ -101,7 +102,7 @@ class BallBearing:
                              f"dm = {self.dm * 1e3:.4g} mm (need D <= dm sin(pi/Z))")
         for fld in ("fi", "fo"):
             v = getattr(self, fld)
-            if not (isinstance(v, (int, float)) and np.isfinite(v) and v > 0.5):
+            if isinstance(v, bool) or not isinstance(v, numbers.Real) or not (np.isfinite(v) and v > 0.5):
                 raise InputError(f"{p}.{fld}", v, "osculation must be > 0.5 (groove radius / ball diameter)")
         A = (self.fi + self.fo - 1.0) * self.D
         a0, Pd = self.alpha0, self.Pd
@@ -136,10 +137,12 @@ class BallBearing:
         object.__setattr__(self, "alpha0", float(a0))
         object.__setattr__(self, "Pd", float(Pd))
         object.__setattr__(self, "Z", int(self.Z))
-        if self.bore is not None and not (0 < self.bore < self.dm):
-            raise InputError(f"{p}.bore", self.bore, f"bore must lie in (0, dm = {self.dm}) [m]")
-        if self.outer_diameter is not None and not (self.outer_diameter > self.dm):
-            raise InputError(f"{p}.outer_diameter", self.outer_diameter, f"outer diameter must exceed dm = {self.dm} [m]")
+        if self.bore is not None and not (0 < self.bore < self.dm - self.D):
+            raise InputError(f"{p}.bore", self.bore, f"bore must lie in (0, dm − D = {self.dm - self.D:.6g}) [m] "
+                             "(the inner ring needs a wall under the raceway)")
+        if self.outer_diameter is not None and not (self.outer_diameter > self.dm + self.D):
+            raise InputError(f"{p}.outer_diameter", self.outer_diameter,
+                             f"outer diameter must exceed dm + D = {self.dm + self.D:.6g} [m]")
         if self.width is not None and not (self.width > 0):
             raise InputError(f"{p}.width", self.width, "width must be > 0 [m]")
         if self.C0 is not None and not (self.C0 > 0):

@@ -93,7 +93,9 @@ def ellipticity(ratio_RyRx, tol: float = 1e-13, maxiter: int = 50):
         raise InputError("Ry/Rx", r, "must be finite and >= 1 (swap axes for Ry < Rx)")
     target = (r - 1.0) / (r + 1.0)
     kappa = 1.0339 * np.maximum(r, 1.0) ** 0.6360
-    circ = target < 1e-12
+    # nearly circular (Ry/Rx − 1 < 1e-4): F(ρ) cancels 0/0 in floating point; κ = (Ry/Rx)^(2/3)
+    # is the leading-order solution there (relative error O((r − 1)²) < 1e-8)
+    circ = target < 5e-5
     lo = np.ones_like(r)
     hi = np.maximum(2.0 * r, 2.0)          # κ < Ry/Rx for any ellipse with Ry/Rx > 1
     t = np.log(np.clip(kappa, 1.0 + 1e-9, None))
@@ -112,7 +114,7 @@ def ellipticity(ratio_RyRx, tol: float = 1e-13, maxiter: int = 50):
         t = t_new
         if done:
             break
-    kappa = np.where(circ, 1.0, np.exp(t))
+    kappa = np.where(circ, np.maximum(r, 1.0) ** (2.0 / 3.0), np.exp(t))
     res = np.where(circ, 0.0, _f_rho(np.where(circ, 2.0, kappa)) - target)
     if np.any(np.abs(res) > 1e-10):
         raise NoConvergence("Hertz ellipticity iteration did not converge",

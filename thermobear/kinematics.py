@@ -21,7 +21,8 @@ outer-raceway control, zero spin at the outer contact: tan(−β) = sin α_o / (
 ``"inner"`` (zero spin at the inner contact: tan(−β) = sin α_i / (cos α_i − γ')),
 or ``"radial"`` (β = −π/2, the ball axis radial: the symmetric choice
 of a thrust ball bearing, seed 000 eqs 1–2 and 13, pivoting speed = ω_c).
-At α = 0 every choice gives β = 0 and zero spin.
+At α = 0 outer and inner control give β = 0 and zero spin; radial control has no
+rolling solution there (the ball axis would be normal to the contacts) and is refused.
 """
 from __future__ import annotations
 
@@ -126,6 +127,7 @@ def ball_kinematics(omega_i, omega_o, alpha_i, alpha_o, D, dm, control: str = "o
     wi, wo = np.asarray(omega_i, dtype=float), np.asarray(omega_o, dtype=float)
     ai, ao = np.asarray(alpha_i, dtype=float), np.asarray(alpha_o, dtype=float)
     gp = D / dm
+    beta_given = beta
     if beta is None:
         if control == "outer":
             beta = -np.arctan2(np.sin(ao), np.cos(ao) + gp)
@@ -141,8 +143,10 @@ def ball_kinematics(omega_i, omega_o, alpha_i, alpha_o, D, dm, control: str = "o
     eo = 0.5 * D * np.cos(ao + beta)
     ei = 0.5 * D * np.cos(ai + beta)
     det = co * ei + ci * eo
-    if np.any(np.abs(det) < 1e-300):
-        raise InputError("beta", beta, "ball axis normal to both contacts: no rolling solution")
+    if np.any(np.abs(det) < 1e-9 * dm * D):
+        raise InputError("control" if beta_given is None else "beta", control if beta_given is None else beta,
+                         "the ball axis is normal to both contacts (e.g. 'radial' control at a contact angle "
+                         "near 0): no rolling solution; use 'outer' or 'inner'")
     omega_c = (co * wo * ei + ci * wi * eo) / det
     omega_R = co * ci * (wo - wi) / det
     u_o = np.abs((wo - omega_c) * co)

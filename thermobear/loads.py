@@ -152,12 +152,12 @@ def axial_contact_angle(brg: BallBearing, Fa, Kn=None, tol: float = 1e-14):
     return np.where(Fa > 0, al, a0)
 
 
-def needs_high_speed(brg: BallBearing, n_rpm, Q_typical, threshold: float = 0.05):
+def needs_high_speed(brg: BallBearing, n_rpm, Q_typical, threshold: float = 0.05, rotating: str = "inner"):
     r"""Does the centrifugal ball force matter against the contact load?
 
     Criterion (documented choice): the low-speed form is used when the ball
-    centrifugal force F_c = ½ m dm ω_c² (Harris 2001 eq 8.9, ω_c the cage speed
-    of an inner-rotating bearing) is below ``threshold`` (5 %) of the typical
+    centrifugal force F_c = ½ m dm ω_c² (Harris 2001 eq 8.9, ω_c = ½ω(1 ∓ γ) the cage
+    speed with the inner / outer ring rotating) is below ``threshold`` (5 %) of the typical
     ball load.  At the threshold the high-speed solution
     (:mod:`thermobear.loads_highspeed`) has |Q_o − Q_i|/Q ≈ 0.04 and contact angles
     moved by 1.3–1.4° (218 at two loads, 7210 at 450 and 2000 N; tests/test_loads_highspeed.py).
@@ -174,7 +174,7 @@ def needs_high_speed(brg: BallBearing, n_rpm, Q_typical, threshold: float = 0.05
     """
     omega = np.asarray(n_rpm, dtype=float) * np.pi / 30.0
     gamma = brg.gamma(brg.alpha0)
-    omega_c = 0.5 * omega * (1.0 - gamma)
+    omega_c = 0.5 * omega * (1.0 - gamma if rotating == "inner" else 1.0 + gamma)
     Fc = 0.5 * brg.ball_mass * brg.dm * omega_c**2
     ratio = Fc / np.maximum(np.asarray(Q_typical, dtype=float), 1e-300)
     return ratio > threshold, ratio
@@ -232,8 +232,9 @@ def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, st
     Fa : array_like    axial load on the inner ring [N], ≥ 0
     Fr : array_like    radial load on the inner ring [N], ≥ 0, acting towards ψ = 0
     M : array_like     tilting moment [N m]; ``None`` holds the tilt at θ = 0 (shaft held by two bearings)
-    n_rpm : float      shaft speed [rpm]; only used to warn-free check ``needs_high_speed``
-                       is the caller's job (this is the low-speed form)
+    n_rpm : float      shaft speed [rpm]; not used by this low-speed form (accepted for a signature
+                       common with :func:`thermobear.loads_highspeed.load_distribution_high_speed`;
+                       whether a scene needs that form is :func:`needs_high_speed`'s question)
     stiffness : str    ``"nominal"`` (K_n at the nominal contact angle: ISO/TS 16281 practice, default)
                        or ``"per_ball"`` (K_n re-evaluated at each ball's contact angle)
 

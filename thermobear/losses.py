@@ -233,8 +233,8 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     brg, batch, Z = cs.brg, cs.batch, cs.brg.Z
     shape = batch + (Z,)
     T_C_a = np.asarray(T_C, float)
-    Ti = np.asarray(T_C if T_inner_C is None else T_inner_C, float)
-    To = np.asarray(T_C if T_outer_C is None else T_outer_C, float)
+    Ti = T_C_a if T_inner_C is None else np.asarray(T_inner_C, float)
+    To = T_C_a if T_outer_C is None else np.asarray(T_outer_C, float)
     Toil = np.asarray(T_C if T_oil_C is None else T_oil_C, float)
     for nm, v in (("T_C", T_C_a), ("T_oil_C", Toil)):
         try:
@@ -250,12 +250,14 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
         sd = cs.sides[side]
         Q, Rx, Ry, u, a, b = sd["Q"], sd["Rx"], sd["Ry"], sd["u"], sd["a"], sd["b"]
         if T_side.shape == shape:
-            Ts = T_side
-        else:
+            Ts = T_side                                         # one temperature per ball
+        else:                                                   # one per operating point
             try:
-                Ts = np.broadcast_to(T_side[(...,) + (None,)] if T_side.ndim and T_side.shape == batch else T_side, shape)
+                Ts = np.broadcast_to(np.broadcast_to(T_side, batch)[..., None], shape)
             except ValueError:
-                raise InputError(f"T_{side}_C", T_side, f"must broadcast to {batch} or {shape}") from None
+                name = "T_C" if (T_side is T_C_a) else f"T_{side}_C"
+                raise InputError(name, T_side, f"must broadcast to the operating points {batch} "
+                                 f"(or be per ball, {shape})") from None
         eta = np.asarray(oil.eta(Ts), float)
         alpha_p = np.asarray(oil.alpha_p_at(Ts), float)
         h_min = np.asarray(film_thickness(Q, Rx, Ry, u, eta, alpha_p, Ep, kind="min"))

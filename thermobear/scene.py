@@ -108,7 +108,8 @@ class Scene:
         """Copy with operating values changed, in the scene's own edge units.
 
         Accepted keys: n_rpm, Fa (or Fa_N), Fr (Fr_N), M (M_Nm), T_C, T_oil_in_C, T_ambient_C,
-        oil_flow_L_h, lubricant (name or object), network_parameters (merged) and models (merged).
+        oil_flow_L_h, lubricant (name, table or object), bearing (catalog name, table or BallBearing),
+        network_parameters (merged) and models (merged); each value is checked as in a scene file.
 
         >>> from thermobear.scene import load_scene
         >>> import thermobear
@@ -120,21 +121,42 @@ class Scene:
         kw = {}
         for k, v in changes.items():
             k = alias.get(k, k)
-            if k in ("n_rpm", "Fa", "Fr", "T_C", "T_oil_in_C", "T_ambient_C"):
-                kw[k] = None if v is None else float(v)
-            elif k == "M":
-                kw[k] = None if v is None else float(v)
+            where = f"scene.with_({k})"
+            if k in ("n_rpm", "Fa", "Fr", "T_C", "T_oil_in_C", "T_ambient_C", "M"):
+                if v is None and k in ("T_C", "T_oil_in_C", "M"):
+                    kw[k] = None
+                else:
+                    kw[k] = _num({k: v}, k, "scene.with_")
             elif k == "oil_flow_L_h":
-                kw["oil_flow"] = float(v) * 1e-3 / 3600.0
+                kw["oil_flow"] = _num({k: v}, k, "scene.with_", lo=0.0) * 1e-3 / 3600.0
             elif k == "lubricant":
-                kw[k] = _lubricant_of(v) if isinstance(v, str) else v
+                if isinstance(v, (str, dict)):
+                    kw[k] = _lubricant_of(v["name"] if isinstance(v, dict) and set(v) == {"name"} else v,
+                                          where="lubricant")
+                elif all(hasattr(v, a) for a in ("eta", "nu", "rho", "alpha_p_at")):
+                    kw[k] = v
+                else:
+                    raise InputError(where, v, "a lubricant name, a table of its properties, or a Lubricant")
             elif k in ("network_parameters", "models"):
-                kw[k] = {**getattr(self, k), **v}
+                if not isinstance(v, dict):
+                    raise InputError(where, v, "must be a table (dict)")
+                merged = {**getattr(self, k), **v}
+                probe = {"thermal": {"parameters": merged}} if k == "network_parameters" else {"models": merged}
+                _check_overrides(probe)
+                kw[k] = merged
             elif k == "bearing":
-                kw[k] = v
+                from .geometry import BallBearing
+                if isinstance(v, str):
+                    kw[k] = bearing(v)
+                elif isinstance(v, dict):
+                    kw[k] = _bearing_of(v)
+                elif isinstance(v, BallBearing):
+                    kw[k] = v
+                else:
+                    raise InputError(where, v, "a catalog name, a bearing table, or a BallBearing")
             else:
-                raise InputError(f"scene.with_({k})", v, "unknown override; accepted: n_rpm, Fa, Fr, M, T_C, "
-                                 "T_oil_in_C, T_ambient_C, oil_flow_L_h, lubricant, network_parameters, models")
+                raise InputError(where, v, "unknown override; accepted: n_rpm, Fa, Fr, M, T_C, T_oil_in_C, "
+                                 "T_ambient_C, oil_flow_L_h, lubricant, bearing, network_parameters, models")
         new = dataclasses.replace(self, **kw)
         _validate_operation(new)
         return new
@@ -196,6 +218,29 @@ def _bearing_of(sec: dict) -> BallBearing:
     return bearing_from_dict(sec, name=sec.get("name", "custom"), where="bearing")
 
 
+_MODEL_KEYS = {"rolling", "hertz", "load_model", "drag", "kinematics", "stiffness", "high_speed", "losses",
+               "skf_R1", "skf_S1", "skf_mu_EHL"}
+
+
+def _check_overrides(d: dict):
+    """Validate a ``[models]`` table and ``[thermal.parameters]`` (shared by files and ``with_``)."""
+    models = d.get("models", {})
+    _check_keys(models, _MODEL_KEYS, "models")
+    for k in ("skf_R1", "skf_S1", "skf_mu_EHL"):
+        if k in models:
+            _num(models, k, "models", lo=0.0, lo_open=True)
+    if "kinematics" in models and models["kinematics"] not in ("outer", "inner", "radial"):
+        raise InputError("models.kinematics", models["kinematics"], "ball spin control: 'outer', 'inner' or 'radial'")
+    if "stiffness" in models and models["stiffness"] not in ("nominal", "per_ball"):
+        raise InputError("models.stiffness", models["stiffness"], "'nominal' or 'per_ball'")
+    params = d.get("thermal", {}).get("parameters", {})
+    if not isinstance(params, dict):
+        raise InputError("thermal.parameters", params, "must be a table of parameter = value")
+    for k, v in params.items():
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not np.isfinite(v):
+            raise InputError(f"thermal.parameters.{k}", v, "must be a finite number")
+
+
 def _validate_operation(s: Scene):
     if s.rotating not in ("inner", "outer"):
         raise InputError("operation.rotating", s.rotating, "must be 'inner' or 'outer'")
@@ -205,6 +250,12 @@ def _validate_operation(s: Scene):
         v = getattr(s, nm)
         if not (np.isfinite(v) and v >= 0):
             raise InputError(f"operation.{nm}_N", v, "load must be >= 0 [N]")
+    if s.M is not None and not np.isfinite(s.M):
+        raise InputError("operation.M_Nm", s.M, "moment must be finite [N m]")
+    if not (np.isfinite(s.oil_flow) and s.oil_flow >= 0):
+        raise InputError("lubricant.flow_L_h", s.oil_flow * 3.6e6, "oil flow must be >= 0 [L/h]")
+    if s.supply == "oil_jet" and s.T_C is None and s.network is not None and s.T_oil_in_C is None:
+        raise InputError("lubricant.T_in_C", None, "an oil-jet scene solved thermally needs the oil inlet temperature [°C]")
     if s.T_C is not None and not (-60.0 <= s.T_C <= 250.0):
         raise InputError("operation.T_C", s.T_C, "temperature must lie in [-60, 250] °C")
     for nm in ("T_ambient_C", "T_oil_in_C"):
@@ -236,18 +287,12 @@ def scene_from_dict(d: dict, path: str | None = None) -> Scene:
     _check_keys(op, {"n_rpm", "Fa_N", "Fr_N", "M_Nm", "rotating", "T_C"}, "operation")
     th = d.get("thermal", {})
     _check_keys(th, {"network", "T_ambient_C", "parameters"}, "thermal")
+    _check_overrides(d)
     params = th.get("parameters", {})
-    if not isinstance(params, dict):
-        raise InputError("thermal.parameters", params, "must be a table of parameter = value")
-    for k, v in params.items():
-        if isinstance(v, bool) or not isinstance(v, (int, float)) or not np.isfinite(v):
-            raise InputError(f"thermal.parameters.{k}", v, "must be a finite number")
     if "network" in th and not isinstance(th["network"], str):
         raise InputError("thermal.network", th["network"], "must be a network name or a path (text)")
     models = d.get("models", {})
-    _check_keys(models, {"rolling", "hertz", "load_model", "drag", "sliding", "kinematics", "stiffness",
-                         "thermal", "film", "friction", "high_speed", "losses", "skf_R1", "skf_S1",
-                         "skf_mu_EHL"}, "models")
+
     s = Scene(
         name=str(meta.get("name", Path(path).stem if path else "scene")),
         bearing=brg, lubricant=lub, supply=supply,
@@ -266,8 +311,6 @@ def scene_from_dict(d: dict, path: str | None = None) -> Scene:
         mu_full_film=_num(lsec, "mu_full_film", "lubricant", 0.05, lo=0.0, hi=1.0),
         network=th.get("network"), network_parameters=dict(params),
         models=dict(models), source=str(meta.get("source", "")), path=path, raw=d)
-    if s.supply == "oil_jet" and s.T_C is None and s.network is not None and s.T_oil_in_C is None:
-        raise InputError("lubricant.T_in_C", None, "an oil-jet scene solved thermally needs the oil inlet temperature [°C]")
     _validate_operation(s)
     return s
 

@@ -53,27 +53,36 @@ def choose_models(scene: Scene) -> dict:
         out["thermal"] = (f"network {scene.network}", "temperatures solved with the losses (fixed point)")
     else:
         raise InputError("thermal.network", None, "give a thermal network or prescribe operation.T_C")
-    symmetric = scene.Fr == 0.0 and scene.M is None
+    symmetric = scene.Fr == 0.0 and scene.M is None and m.get("stiffness", "nominal") == "nominal"
     if "load_model" in m:
         if m["load_model"] not in ("closed_form", "jones_harris"):
             raise InputError("models.load_model", m["load_model"], "must be 'closed_form' or 'jones_harris'")
         if m["load_model"] == "closed_form" and not symmetric:
-            raise InputError("models.load_model", "closed_form", "the closed form needs Fr = 0 and no moment")
+            raise InputError("models.load_model", "closed_form", "the closed form needs Fr = 0, no moment and "
+                             "the nominal stiffness")
         out["load_model"] = (m["load_model"], "chosen in the scene")
     elif symmetric:
         out["load_model"] = ("closed_form", "pure axial load, tilt held: all balls equal (exact closed form)")
     else:
         out["load_model"] = ("jones_harris", "combined load: balls differ (Jones–Harris, seed 004 eqs 6–8)")
     Qtyp = max(scene.Fa / (b.Z * max(np.sin(b.alpha0), 1e-3)), scene.Fr * 5.0 / b.Z, 1e-9)
-    need, ratio = needs_high_speed(b, scene.n_rpm, Qtyp)
+    need, ratio = needs_high_speed(b, scene.n_rpm, Qtyp, rotating=scene.rotating)
     if "high_speed" in m:
-        hs = bool(m["high_speed"])
+        hs = m["high_speed"]
+        if not isinstance(hs, bool):
+            raise InputError("models.high_speed", hs, "must be true or false")
         if hs and b.kind == "thrust":
             raise InputError("models.high_speed", True, "the high-speed form is for radial and angular contact "
                              "bearings (a thrust bearing's centrifugal force acts across its grooves)")
+        if hs and scene.rotating != "inner":
+            raise InputError("models.high_speed", True, "the high-speed form is implemented for a rotating inner "
+                             "ring (operation.rotating = 'inner')")
         out["high_speed"] = ("yes" if hs else "no", "chosen in the scene")
     elif b.kind == "thrust":
         out["high_speed"] = ("no", "thrust bearing: centrifugal force acts across the groove; not modelled")
+    elif bool(need) and scene.rotating != "inner":
+        out["high_speed"] = ("no", f"F_c/Q = {float(ratio):.2f} > 0.05, but the high-speed form is implemented for "
+                                   "a rotating inner ring: low-speed form with F_c on the outer contacts")
     elif bool(need):
         out["high_speed"] = ("yes", f"F_c/Q = {float(ratio):.2f} > 0.05: Jones high-speed form (centrifugal force, "
                                     "gyroscopic moment, outer-race control) shifts the contact angles")
@@ -97,6 +106,10 @@ def choose_models(scene: Scene) -> dict:
     out["losses"] = (lm, "chosen in the scene" if "losses" in m else "per-contact local model (default)")
     out["rolling"] = (m.get("rolling", "auto"), "chosen in the scene" if "rolling" in m
                       else "per-contact regime (IVR: Houpert, PVR/IVE: Biboulet, EHL: Houpert; seed 004)")
+    default_control = "radial" if b.kind == "thrust" else "outer"
+    out["kinematics"] = (m.get("kinematics", default_control), "chosen in the scene" if "kinematics" in m else
+                         "thrust: symmetric radial ball axis (seed 000)" if b.kind == "thrust"
+                         else "Jones outer-raceway control")
     out["hertz"] = (m.get("hertz", "exact"), "chosen in the scene" if "hertz" in m else
                     "exact elliptic integrals (approximations err 1–5 %)")
     return out
@@ -110,10 +123,14 @@ def _closed_form_axial(b, Fa) -> LoadDistribution:
         al = np.pi / 2
         Q = Fa / Z
         da = b.A + (Q / b.Kn()) ** (2.0 / 3.0) if Fa > 0 else 0.0
+    elif Fa <= 0:
+        al = 0.0 if b.kind == "deep_groove" else b.alpha0   # unloaded: as the Jones–Harris solver reports
+        Q = 0.0
+        da = 0.0
     else:
         al = float(axial_contact_angle(b, Fa))
-        Q = Fa / (Z * np.sin(al)) if Fa > 0 else 0.0
-        da = b.A * np.cos(b.alpha0) * np.tan(al) if Fa > 0 else 0.0
+        Q = Fa / (Z * np.sin(al))
+        da = b.A * np.cos(b.alpha0) * np.tan(al)
     dn = (Q / b.Kn()) ** (2.0 / 3.0)
     full = np.full(Z, Q)
     return LoadDistribution(delta_a=float(da), delta_r=0.0, theta=0.0, Q_i=full, Q_o=full.copy(),
@@ -143,7 +160,8 @@ def scene_contacts(scene: Scene, models: dict | None = None, load: LoadDistribut
     load = load if load is not None else scene_load(scene, models)
     n = scene.n_rpm if n_rpm is None else n_rpm
     return prepare_contacts(scene.bearing, scene.Fa, scene.Fr, n, M=scene.M, rotating=scene.rotating,
-                            hertz_method=models["hertz"][0], centrifugal=models["high_speed"][0] != "yes", load=load)
+                            hertz_method=models["hertz"][0], centrifugal=models["high_speed"][0] != "yes", load=load,
+                            control=models["kinematics"][0])
 
 
 def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oil_C=None,
