@@ -150,3 +150,11 @@ def test_network_coupling_losses_drop_as_bearing_heats():
     assert math.fsum(r.sources_W.values()) < math.fsum(cold.values())
     st_cold = solve_steady(net, cold)
     assert r.steady.T_C["balls"] < st_cold.T_C["balls"]
+
+
+def test_picard_does_not_call_a_stable_non_normal_map_runaway():
+    # Jordan block with eigenvalues 0.8: increments grow for a few steps, yet the map contracts
+    J = np.array([[0.8, 0.0], [1.0, 0.8]])
+    c = np.array([6.0, 3.0])                       # equilibrium 330 K and 465 K, below the limit
+    r = solve_coupled(lambda T: J @ (T - 300.0) + c + 300.0, [300.0, 300.0], method="picard")
+    np.testing.assert_allclose(r.T_K - 300.0, np.linalg.solve(np.eye(2) - J, c), atol=1e-5)

@@ -292,6 +292,11 @@ def _picard(ev, x0, damping, *, tol_K, tol_energy_rel, max_iter, T_limit_K, labe
             continue
         heating = len(steps) >= 1 and all(s > 0 for s in steps) and np.mean(f) > 0
         accelerating = len(steps) >= 4 and all(b >= a for a, b in zip(steps[-4:-1], steps[-3:]))
+        if heating and accelerating and np.max(g) <= T_limit_K:
+            # growing increments alone are not proof: a stable but non-normal map (e.g. a Jordan block
+            # with eigenvalues < 1) amplifies its differences for a few steps.  Decide on the loop gain.
+            lam = loop_gain(lambda T: ev(T)[0], x)
+            accelerating = bool(np.isfinite(lam) and lam >= 1.0)
         if heating and (np.max(g) > T_limit_K or accelerating):
             gain = steps[-1] / steps[-2] if len(steps) >= 2 else float("nan")
             why = (f"passes the limit T_limit_K = {T_limit_K:g} K" if np.max(g) > T_limit_K
