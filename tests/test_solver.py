@@ -125,3 +125,13 @@ def test_steady_state_above_the_first_iterates_limit():
     # the first update puts the oil–air node far above 250 °C; the equilibrium is at ~110 °C
     st = steady_state(S004.with_(n_rpm=11000.0))
     assert st.T_C["oil_air"] < 150.0 and abs(st.energy_balance_W) < 1e-9 * st.P_W
+
+
+@pytest.mark.parametrize("scene", [S004, S004.with_(n_rpm=8070.0), S002])
+def test_newton_and_anderson_reach_the_same_equilibrium(scene):
+    a = steady_state(scene, method="newton")
+    b = steady_state(scene, method="anderson")
+    assert a.models_used["thermal"][1].startswith("fixed point on 3 coupled temperatures: newton")
+    for node, T in a.T_C.items():
+        assert T == pytest.approx(b.T_C[node], abs=1e-4)
+    assert a.P_W == pytest.approx(b.P_W, rel=1e-7)

@@ -390,14 +390,87 @@ def _coupled_of(T_K, net, roles):
     return np.array([0.5 * (Tb + T_K[ix[roles["inner"]]]), 0.5 * (Tb + T_K[ix[roles["outer"]]]), T_K[ix[roles["oil"]]]])
 
 
-def steady_state(scene: Scene, *, tol_K: float = 1e-6, contacts: ContactSet | None = None, **kw) -> SteadyState:
+def _newton_coupled(scene, models, net, roles, cs1, tol_K, T_limit_K, maxiter=30, h=0.05):
+    """Newton on the three coupled temperatures x = (inner contact, outer contact, oil) [K].
+
+    One vectorised loss evaluation at x and x + h e_k (k = 1..3) and one sparse LU of the network
+    (conductances at the current node temperatures) with four right-hand sides give G(x) and its
+    Jacobian; Newton converges in a few iterations because the losses are smooth in temperature.
+    The Jacobian's eigenvalues are the loop gain (stability) for free.  Returns (x, T_nodes, iters,
+    residual, loop_gain, history) or None when it cannot decide (the caller then uses Anderson)."""
+    from scipy.sparse.linalg import splu
+
+    from .thermal.solve import assemble
+    ix, free = net.index, ~net.fixed
+    Tfix = net.T_fixed_K
+    nf = int(free.sum())
+    fpos = -np.ones(len(net.nodes), int)
+    fpos[free] = np.arange(nf)
+    C = np.zeros((3, nf))                       # coupled temperatures = C @ T_free
+    C[0, fpos[ix[roles["ball"]]]] += 0.5
+    C[0, fpos[ix[roles["inner"]]]] += 0.5
+    C[1, fpos[ix[roles["ball"]]]] += 0.5
+    C[1, fpos[ix[roles["outer"]]]] += 0.5
+    C[2, fpos[ix[roles["oil"]]]] += 1.0
+    S = np.zeros((nf, 4))                       # sources: columns (inner contacts, outer contacts, drag)
+    S[fpos[ix[roles["ball"]]], 0] += 0.5
+    S[fpos[ix[roles["ball"]]], 1] += 0.5
+    S[fpos[ix[roles["inner"]]], 0] += 0.5
+    S[fpos[ix[roles["outer"]]], 1] += 0.5
+    S[fpos[ix[roles["oil"]]], 2] += 1.0
+    from .lubricant import T_VALID_C
+    lo, hi = T_VALID_C[0] + 273.15, T_VALID_C[1] + 273.15
+    T = net.initial_T_K()
+    x = C @ T[free]
+    history = []
+    for it in range(1, maxiter + 1):
+        X = np.clip(np.column_stack([x, x[:, None] + h * np.eye(3)]), lo, hi) - 273.15   # 3 × 4 [°C]
+        r = scene_losses(scene, T_C=X[2], T_inner_C=X[0], T_outer_C=X[1], T_oil_C=X[2], models=models,
+                         contacts=cs1)
+        Pi = sum(r.contacts["inner"][k] for k in ("P_rolling", "P_sliding", "P_pivoting", "P_hysteresis")).sum(-1)
+        Po = sum(r.contacts["outer"][k] for k in ("P_rolling", "P_sliding", "P_pivoting", "P_hysteresis")).sum(-1)
+        Pd = np.broadcast_to(r.breakdown_W["drag"], Pi.shape)
+        Pf = S[:, :3] @ np.vstack([Pi, Po, Pd])            # nf × 4 free-node sources
+        A, _ = assemble(net, T)
+        Aff = A[free][:, free].tocsc()
+        rhs = Pf - (A[free][:, net.fixed] @ Tfix[net.fixed])[:, None]
+        Tf = splu(Aff).solve(rhs)
+        if not np.all(np.isfinite(Tf)):
+            return None
+        Gx = C @ Tf                                         # 3 × 4: G(x), G(x + h e_k)
+        F = Gx[:, 0] - x
+        J = (Gx[:, 1:] - Gx[:, [0]]) / h                    # dG/dx
+        gain = float(np.max(np.linalg.eigvals(J).real))
+        T = T.copy()
+        T[free] = Tf[:, 0]
+        res = float(np.max(np.abs(F)))
+        history.append(dict(iteration=it, T_K=x.copy(), residual_K=res, mean_residual_K=float(np.mean(F)),
+                            P_W=float(Pi[0] + Po[0] + Pd[0]), step="newton"))
+        if res <= tol_K:
+            return x, T, it, res, gain, history
+        if gain >= 1.0 or np.max(Gx[:, 0]) > T_limit_K:
+            return None                                     # runaway suspected: the Anderson path decides
+        dx = np.linalg.solve(J - np.eye(3), -F)
+        step = float(np.max(np.abs(dx)))
+        if step > 50.0:
+            dx *= 50.0 / step
+        x = x + dx
+    return None
+
+
+def steady_state(scene: Scene, *, tol_K: float = 1e-6, contacts: ContactSet | None = None,
+                 method: str = "newton", **kw) -> SteadyState:
     """Coupled steady state: losses(T) ↔ thermal network, to a fixed point.
 
     The losses depend on three temperatures only — inner contact, outer contact (each the mean
     of ball and race, seed 004 §4.5) and oil–air mixture — so the fixed point is solved on those
-    three (Anderson mixing, :func:`thermobear.coupling.solve_coupled`): each update evaluates the
-    losses and solves the network once, linearised at the last iterate's temperatures (the
-    temperature-dependent conductances converge with the losses).  The returned state is a full
+    three.  ``method="newton"`` (default, local losses): Newton with a Jacobian from one vectorised
+    loss evaluation at four temperature triplets and one sparse LU with four right-hand sides per
+    iteration; its Jacobian gives the loop gain.  When Newton cannot decide (loop gain ≥ 1, a limit
+    passed, divergence) or for the SKF losses, ``"anderson"``: Anderson mixing
+    (:func:`thermobear.coupling.solve_coupled`), each update one loss evaluation and one network solve
+    linearised at the last iterate (the temperature-dependent conductances converge with the losses),
+    with its runaway logic.  The returned state is a full
     network solve with the converged losses: its energy balance closes to machine precision and its
     coupled temperatures are checked against the fixed point.
 
@@ -415,6 +488,8 @@ def steady_state(scene: Scene, *, tol_K: float = 1e-6, contacts: ContactSet | No
     from .errors import NoConvergence
     from .lubricant import T_VALID_C
     from .thermal import solve_steady
+    if method not in ("newton", "anderson"):
+        raise InputError("method", method, "'newton' or 'anderson'")
     models = choose_models(scene)
     if scene.T_C is not None:
         raise InputError("operation.T_C", scene.T_C, "the scene prescribes its temperature: use solve() "
@@ -433,11 +508,25 @@ def steady_state(scene: Scene, *, tol_K: float = 1e-6, contacts: ContactSet | No
         return _coupled_of(st.T_K, net, roles), float(r.P_W)
 
     import warnings
+    from .coupling import CoupledResult
     from .errors import ExtrapolationWarning
     with warnings.catch_warnings():
         # intermediate iterates may overshoot beyond the correlations' data; only the answer is checked
         warnings.simplefilter("ignore", ExtrapolationWarning)
-        res = solve_coupled(update, _coupled_of(state["T"], net, roles), tol_K=tol_K, **kw)
+        nw = None
+        if method == "newton" and models["losses"][0] == "local" and cs.batch == ():
+            cs4 = prepare_contacts(scene.bearing, scene.Fa, scene.Fr, np.full(4, scene.n_rpm), M=scene.M,
+                                   rotating=scene.rotating, hertz_method=models["hertz"][0],
+                                   centrifugal=models["high_speed"][0] != "yes", load=cs.load,
+                                   control=models["kinematics"][0])
+            nw = _newton_coupled(scene, models, net, roles, cs4, tol_K, kw["T_limit_K"])
+        if nw is not None:
+            x, state["T"], its, resid, gain, hist = nw
+            res = CoupledResult(T_K=x, P_W=hist[-1]["P_W"], iterations=its, evaluations=its * 4,
+                                residual_K=resid, energy_residual_rel=float("nan"), loop_gain=gain,
+                                history=hist, method="newton")
+        else:
+            res = solve_coupled(update, _coupled_of(state["T"], net, roles), tol_K=tol_K, **kw)
     src, r = sources_at(res.T_K)
     st = solve_steady(net, src, T_guess_K=state["T"])
     T_C = dict(st.T_C)
