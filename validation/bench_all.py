@@ -130,13 +130,15 @@ def run(full: bool = False, profile: bool = True) -> str:
             if target < 0.1 else (lambda x: f"{x:.2f} s")
         verdict = "met" if t <= target else f"**missed ×{t / target:.3g}**"
         L.append(f"| {name} | {fmt(t)} {unit} | {fmt(target)} | {verdict} |")
-    L += ["", "**Why the misses.** A coupled point runs 10–20 fixed-point updates on the three temperatures the "
-          "losses depend on; each update is one loss evaluation (≈ 1–2 ms for 30 contacts: about a hundred small "
-          "numpy calls — input checks, film, regime, three rolling-force formulas, drag — so per-call overhead, "
-          "not arithmetic) and one network solve (≈ 1–2 ms: a Python loop over the elements for the "
-          "temperature-dependent convection conductances, then a sparse LU), plus three loop-gain evaluations. "
-          "5 ms would need ≈ 0.3 ms per update: a fused loss kernel without per-call checks (or P(T_i, T_o, T_oil) "
-          "tabulated once per operating point, the mechanics being temperature independent) and vectorised "
+    L += ["", "**Why the misses.** A coupled point runs 7–12 Newton iterations on the three temperatures the "
+          "losses depend on (Anderson mixing as fallback); each iteration is one vectorised loss evaluation at four "
+          "temperature triplets (≈ 2 ms for 4 × 30 contacts: about a hundred small numpy calls — film, regime, "
+          "three rolling-force formulas, drag — so per-call overhead, not arithmetic) and one network assembly "
+          "and LU (≈ 1 ms: a Python loop over the elements for the temperature-dependent convection "
+          "conductances); the conductances' own temperature dependence is not in the Jacobian, which is why "
+          "Newton needs more than 3–4 iterations. Setting up a point (high-speed ball equilibrium ≈ 10 ms, network "
+          "build) adds the rest. 5 ms would need a fused loss kernel without per-call overhead (or P(T_i, T_o, "
+          "T_oil) tabulated per operating point: the mechanics is temperature independent) and vectorised "
           "conductance functions. The prescribed-temperature sweep is dominated by the high-speed ball "
           "equilibrium (≈ 1.3 ms per speed, batched), which the 7210 scene needs above ≈ 3000 rpm; the "
           "transient by ≈ 260 loss evaluations of the BDF right-hand side."]
