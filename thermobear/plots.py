@@ -137,6 +137,8 @@ def plot_loss_breakdown(breakdown_W: dict, path, title: str = "") -> str:
     tot = sum(vals)
     for i, v in enumerate(vals):
         ax.text(i, v, f"{v:.3g} W\n{100 * v / tot:.0f} %" if tot > 0 else f"{v:.3g}", ha="center", va="bottom", fontsize=8)
+    if vals and max(vals) > 0:
+        ax.set_ylim(0, 1.15 * max(vals))          # headroom for the labels of the tallest bar
     ax.set_ylabel("power loss [W]")
     ax.set_title(title or f"Loss breakdown (total {tot:.3g} W)")
     return _save(fig, path)
