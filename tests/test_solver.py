@@ -135,3 +135,12 @@ def test_newton_and_anderson_reach_the_same_equilibrium(scene):
     for node, T in a.T_C.items():
         assert T == pytest.approx(b.T_C[node], abs=1e-4)
     assert a.P_W == pytest.approx(b.P_W, rel=1e-7)
+
+
+def test_transient_default_tolerances_are_accurate():
+    t = np.linspace(0.0, 3600.0, 13)
+    ref = transient(S004, 3600.0, t_eval=t, rtol=1e-8, atol=1e-6)
+    run = transient(S004, 3600.0, t_eval=t)
+    for node in ref.T_C:
+        np.testing.assert_allclose(run.T_C[node], ref.T_C[node], atol=0.01)
+    np.testing.assert_allclose(run.P_W, ref.P_W, rtol=5e-4)
