@@ -8,16 +8,19 @@ from .materials import Material, material, material_names, reduced_modulus
 from .hertz import hertz, HertzContact
 from ._data import example_path
 from .geometry import BallBearing, bearing, bearing_names
-from .loads import load_distribution, LoadDistribution
+from .loads import load_distribution, LoadDistribution, needs_high_speed
+from .loads_highspeed import load_distribution_high_speed
 from .kinematics import ball_kinematics
 from .lubricant import Lubricant, lubricant, lubricant_names
 from .film import film_thickness, lubrication_regime
 from .friction.rolling import rolling_force
 from .friction.skf import skf_friction
-from .losses import bearing_losses, LossResult
+from .friction.drag import drag_loss
+from .losses import bearing_losses, LossResult, prepare_contacts, evaluate_losses
+from .thermal import load_network, solve_steady, solve_transient
 from .scene import Scene, load_scene
-
-__version__ = "0.1.0"
 from .solver import solve, steady_state, transient, choose_models
 from .sweep import run_sweep
 from .rig import read_log, compare, calibrate, RigLog
+
+__version__ = "0.1.0"
