@@ -450,8 +450,9 @@ class Element:
     T_dependent = False         #: conductance depends on node temperatures
 
     def conductance(self, T_K) -> float:
-        """Conductance [W/K] at node temperatures ``T_K`` (array over all nodes)."""
-        raise NotImplementedError
+        """Conductance [W/K] at node temperatures ``T_K`` (array over all nodes); each element type
+        (the subclasses in ``ELEMENT_TYPES``) defines it."""
+        raise TypeError(f"{type(self).__name__} is an element base class: it has no conductance of its own")
 
 
 def _k(p, key="k_W_mK", mat="material"):
