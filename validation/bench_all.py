@@ -26,7 +26,7 @@ import warnings
 
 import numpy as np
 
-from _timing import median_time
+from _common import median_time
 
 import thermobear as tb
 from thermobear.errors import ExtrapolationWarning

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from _timing import median_time
+from _common import median_time
 
 from thermobear.geometry import bearing
 from thermobear.loads import load_distribution

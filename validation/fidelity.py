@@ -50,7 +50,7 @@ from pathlib import Path
 
 import numpy as np
 
-from _timing import median_time
+from _common import median_time
 
 import thermobear as tb
 from thermobear.errors import ExtrapolationWarning, InputError, SolverError

@@ -14,6 +14,8 @@ from pathlib import Path
 
 import numpy as np
 
+from _common import write_report
+
 import thermobear as tb
 from thermobear.geometry import BallBearing
 from thermobear.loads import axial_contact_angle, load_distribution
@@ -96,8 +98,7 @@ def main() -> int:
     ld = load_distribution(iso(0.01e-3), Fa=300.0, Fr=1000.0)
     print(f"equilibrium residual (combined load, clearance): {ld.residual:.1e} after {ld.iterations} iterations")
     lines.append(f"| equilibrium residual, Fa 300 N + Fr 1000 N, Pd 0.01 mm | {ld.residual:.1e} | ≤ 1e-9 | – |")
-    OUT.parent.mkdir(exist_ok=True)
-    OUT.write_text("\n".join(lines) + "\n")
+    write_report(OUT.name, lines)
     print(f"\nworst acceptance-case error {worst:.2e} (limit 5e-4); wrote {OUT.relative_to(Path.cwd()) if OUT.is_relative_to(Path.cwd()) else OUT}")
     return 0 if worst < 5e-4 else 1
 

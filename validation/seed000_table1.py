@@ -17,6 +17,8 @@ import math
 from pathlib import Path
 
 import numpy as np
+
+from _common import write_report
 from scipy.optimize import brentq
 
 from thermobear.film import film_thickness
@@ -199,8 +201,7 @@ def main():
     w("**E7 — F_ib** uses the table's measured dω_c/dt with the AISI 52100 ball mass "
       f"({b.ball_mass * 1e3:.4f} g); differences ≤ 2 % are the printed rounding.\n")
     text = "\n".join(out)
-    (HERE / "report").mkdir(exist_ok=True)
-    (HERE / "report" / "seed000_table1.md").write_text(text + "\n", encoding="utf-8")
+    write_report("seed000_table1.md", text)
     print(text)
 
 

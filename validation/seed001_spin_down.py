@@ -19,6 +19,8 @@ from pathlib import Path
 
 import numpy as np
 
+from _common import write_report
+
 from thermobear.film import film_thickness, lubrication_regime
 from thermobear.friction import rolling as R
 from thermobear.friction import sliding as S
@@ -184,8 +186,7 @@ def main():
       "Biboulet's EHL asymptote.  `biboulet_transition` and `biboulet_pvr(truncation=None)` are "
       "continuous by construction.\n")
     text = "\n".join(out)
-    (HERE / "report").mkdir(exist_ok=True)
-    (HERE / "report" / "seed001_spin_down.md").write_text(text + "\n", encoding="utf-8")
+    write_report("seed001_spin_down.md", text)
     print(text)
 
 

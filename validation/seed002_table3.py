@@ -20,6 +20,8 @@ import csv
 from pathlib import Path
 
 import numpy as np
+
+from _common import write_report
 from scipy.optimize import brentq
 
 from thermobear.friction.skf import (mu_EHL_from_torque, phi_bl, phi_ish, phi_rs, skf_constants,
@@ -217,7 +219,6 @@ def main() -> str:
 
 if __name__ == "__main__":
     text, res = main()
-    REPORT.parent.mkdir(parents=True, exist_ok=True)
-    REPORT.write_text(text + "\n")
+    write_report(REPORT.name, text)
     print(text)
     print(f"\nwritten {REPORT}")

@@ -24,6 +24,8 @@ import warnings
 from pathlib import Path
 
 import numpy as np
+
+from _common import write_report
 from scipy.optimize import brentq
 
 import thermobear as tb
@@ -92,8 +94,7 @@ def main() -> int:
           "nor starvation after run-in, which lowers grease-bearing losses (PHYSICS.md §6).",
           "* Ambient temperature, the machine temperature (taken as ambient), fan air speed and the housing geometry are not given by seed 002; one coefficient is "
           "calibrated, everything else in networks/grease_thrust_four_ball.toml stays at its a-priori estimate.", ""]
-    OUT.parent.mkdir(exist_ok=True)
-    OUT.write_text("\n".join(L) + "\n")
+    write_report(OUT.name, L)
     print(f"wrote {OUT}")
     return 0
 

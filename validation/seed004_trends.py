@@ -18,6 +18,8 @@ from pathlib import Path
 
 import numpy as np
 
+from _common import write_report
+
 import thermobear as tb
 from thermobear.solver import scene_losses, steady_state, transient
 
@@ -139,8 +141,7 @@ def main() -> int:
           "(networks/oil_jet_ball_bearing.toml lists each). The model runs cooler than the rig; the power level itself "
           "cannot be checked against the paper (measured powers only in figures). Calibrating the housing and "
           "the oil penetration coefficient against a logged heat-up is what `thermobear calibrate` is for.", ""]
-    OUT.parent.mkdir(exist_ok=True)
-    OUT.write_text("\n".join(L) + "\n")
+    write_report(OUT.name, L)
     print(f"wrote {OUT}")
     return 0
 
