@@ -60,10 +60,15 @@ def _overrides(items):
         if "=" not in it:
             raise InputError("--set", it, "expected key=value, e.g. --set n_rpm=6500")
         k, v = it.split("=", 1)
+        k = k.strip()
         try:
-            out[k.strip()] = float(v)
+            val = float(v)
         except ValueError:
-            out[k.strip()] = v.strip()
+            val = v.strip()
+        if k.startswith("fixed_C."):           # --set fixed_C.inner_ring=52: a measured node temperature
+            out.setdefault("T_fixed_C", {})[k.split(".", 1)[1]] = val
+        else:
+            out[k] = val
     return out
 
 
@@ -72,7 +77,10 @@ def _load_scene(path, sets=None):
     from .scene import load_scene
     scene = resolve_scene_paths(load_scene(path))
     if sets:
-        scene = scene.with_(**_overrides(sets))
+        ov = _overrides(sets)
+        if "T_fixed_C" in ov:
+            ov["T_fixed_C"] = {**scene.T_fixed_C, **ov["T_fixed_C"]}
+        scene = scene.with_(**ov)
     return scene
 
 
@@ -601,7 +609,8 @@ def build_parser() -> argparse.ArgumentParser:
             sp.add_argument("--plot", metavar="DIR", help="write PNG plots to DIR")
         if sets:
             sp.add_argument("--set", action="append", metavar="KEY=VALUE",
-                            help="override n_rpm, Fa, Fr, T_C, T_ambient_C, lubricant, ...")
+                            help="override n_rpm, Fa, Fr, T_C, T_ambient_C, lubricant, ...; "
+                                 "fixed_C.<node>=T imposes a measured node temperature [°C]")
         sp.add_argument("--debug", action="store_true", default=argparse.SUPPRESS, help="show tracebacks")
 
     r = sub.add_parser("run", help="coupled steady state of a scene (temperatures, power, models used)")

@@ -12,7 +12,9 @@ Sections (see ``examples/README.md`` for every key)::
                  mu_boundary, mu_full_film (mixed-lubrication friction, seed 000 eq 18)
     [operation]  n_rpm, Fa_N, Fr_N, M_Nm (tilt free) ; rotating = "inner" | "outer";
                  T_C (prescribed bearing/contact temperature: no thermal network needed)
-    [thermal]    network = "oil_jet_ball_bearing" | ... ; T_ambient_C ; [thermal.parameters]
+    [thermal]    network = "oil_jet_ball_bearing" | ... ; T_ambient_C ; [thermal.parameters];
+                 fixed_C = { inner_ring = 52.0, outer_ring = 48.0 }  (measured temperatures imposed
+                 on nodes, as seed 004 §4.5 does with its IR/OR thermocouples: the rest is solved)
     [models]     optional overrides: rolling, hertz, load_model, drag, sliding, ...
 
 Every bad value raises :class:`~thermobear.errors.InputError` naming the field,
@@ -59,6 +61,8 @@ class Scene:
     mu_boundary, mu_full_film : float   friction coefficients of seed 000 eq 18 [-]
     network : str | None          thermal network name (networks/<name>.toml)
     network_parameters : dict     overrides of the network's parameters
+    T_fixed_C : dict              node → imposed temperature [°C] (measured rig temperatures; the
+                                  node becomes a fixed-temperature boundary of the network)
     models : dict                 model overrides (see thermobear.solver)
     source : str                  where the scene comes from
     path : str | None             file it was read from
@@ -84,6 +88,7 @@ class Scene:
     mu_full_film: float = 0.05
     network: str | None = None
     network_parameters: dict = field(default_factory=dict)
+    T_fixed_C: dict = field(default_factory=dict)
     models: dict = field(default_factory=dict)
     source: str = ""
     path: str | None = None
@@ -109,7 +114,8 @@ class Scene:
 
         Accepted keys: n_rpm, Fa (or Fa_N), Fr (Fr_N), M (M_Nm), T_C, T_oil_in_C, T_ambient_C,
         oil_flow_L_h, lubricant (name, table or object), bearing (catalog name, table or BallBearing),
-        network_parameters (merged) and models (merged); each value is checked as in a scene file.
+        network_parameters (merged), T_fixed_C (node → °C, replaces; ``{}`` clears) and models
+        (merged); each value is checked as in a scene file.
 
         >>> from thermobear.scene import load_scene
         >>> import thermobear
@@ -137,6 +143,8 @@ class Scene:
                     kw[k] = v
                 else:
                     raise InputError(where, v, "a lubricant name, a table of its properties, or a Lubricant")
+            elif k == "T_fixed_C":
+                kw[k] = _fixed_temperatures(v, where)
             elif k in ("network_parameters", "models"):
                 if not isinstance(v, dict):
                     raise InputError(where, v, "must be a table (dict)")
@@ -156,7 +164,8 @@ class Scene:
                     raise InputError(where, v, "a catalog name, a bearing table, or a BallBearing")
             else:
                 raise InputError(where, v, "unknown override; accepted: n_rpm, Fa, Fr, M, T_C, T_oil_in_C, "
-                                 "T_ambient_C, oil_flow_L_h, lubricant, bearing, network_parameters, models")
+                                 "T_ambient_C, oil_flow_L_h, lubricant, bearing, network_parameters, T_fixed_C, "
+                                 "models")
         new = dataclasses.replace(self, **kw)
         _validate_operation(new)
         return new
@@ -220,6 +229,22 @@ def _bearing_of(sec: dict) -> BallBearing:
 
 _MODEL_KEYS = {"rolling", "hertz", "load_model", "drag", "kinematics", "stiffness", "high_speed", "losses",
                "skf_R1", "skf_S1", "skf_mu_EHL"}
+
+
+def _fixed_temperatures(v, where="thermal.fixed_C") -> dict:
+    """Validate a node → imposed temperature table [°C] (measured rig temperatures)."""
+    if v is None:
+        return {}
+    if not isinstance(v, dict):
+        raise InputError(where, v, "a table of node = temperature [°C], e.g. { inner_ring = 50.0 }")
+    out = {}
+    for k, t in v.items():
+        if not isinstance(k, str) or not k:
+            raise InputError(where, k, "node names are text")
+        if isinstance(t, bool) or not isinstance(t, (int, float)) or not np.isfinite(t) or not -60.0 <= t <= 250.0:
+            raise InputError(f"{where}.{k}", t, "temperature must be a number in [-60, 250] °C")
+        out[k] = float(t)
+    return out
 
 
 def _check_overrides(d: dict):
@@ -286,7 +311,7 @@ def scene_from_dict(d: dict, path: str | None = None) -> Scene:
     op = d.get("operation", {})
     _check_keys(op, {"n_rpm", "Fa_N", "Fr_N", "M_Nm", "rotating", "T_C"}, "operation")
     th = d.get("thermal", {})
-    _check_keys(th, {"network", "T_ambient_C", "parameters"}, "thermal")
+    _check_keys(th, {"network", "T_ambient_C", "parameters", "fixed_C"}, "thermal")
     _check_overrides(d)
     params = th.get("parameters", {})
     if "network" in th and not isinstance(th["network"], str):
@@ -310,6 +335,7 @@ def scene_from_dict(d: dict, path: str | None = None) -> Scene:
         mu_boundary=_num(lsec, "mu_boundary", "lubricant", 0.11, lo=0.0, hi=1.0),
         mu_full_film=_num(lsec, "mu_full_film", "lubricant", 0.05, lo=0.0, hi=1.0),
         network=th.get("network"), network_parameters=dict(params),
+        T_fixed_C=_fixed_temperatures(th.get("fixed_C")),
         models=dict(models), source=str(meta.get("source", "")), path=path, raw=d)
     _validate_operation(s)
     return s

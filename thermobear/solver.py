@@ -248,12 +248,39 @@ def network_context(scene: Scene, contacts: dict | None = None) -> dict:
     return ctx
 
 
+def _impose_temperatures(spec: dict, fixed: dict, name: str) -> None:
+    """Turn the nodes of ``fixed`` (node → °C, measured) into fixed-temperature nodes, in place.
+
+    This is how seed 004 (§4.5) uses its network: the inner- and outer-ring thermocouple readings
+    are boundary conditions and the network gives the ball and mixture temperatures.  Nodes that
+    receive the loss heat (the roles of ``_ROLES``: contact, ball and mixture nodes) cannot be
+    imposed — their heat would vanish into the boundary; impose the ring node next to them."""
+    if not fixed:
+        return
+    nodes = spec.get("nodes", {})
+    sinks = {next((c for c in cands if c in nodes), None) for cands in _ROLES.values()}
+    for node, T in fixed.items():
+        if node not in nodes:
+            raise InputError(f"thermal.fixed_C.{node}", T, f"no node '{node}' in network {name}; known: "
+                             f"{', '.join(nodes)}")
+        if node in sinks:
+            raise InputError(f"thermal.fixed_C.{node}", T, "this node receives the loss heat and cannot be imposed; "
+                             "impose a ring/housing node instead (e.g. inner_ring, outer_ring), or set "
+                             "operation.T_C to prescribe the contact temperature")
+        nd = nodes[node]
+        kept = {k: v for k, v in nd.items() if k in ("description", "measured_by", "source")}
+        kept["T_C"] = float(T)
+        kept["source"] = "imposed by the scene (thermal.fixed_C)"
+        nodes[node] = kept
+
+
 def network_spec(scene: Scene) -> dict:
     """The scene's thermal network table with ``[thermal.parameters]`` overrides applied.
 
     A key ``"<element or node name>.<parameter>"`` replaces that parameter (e.g.
     ``"bearing_to_ambient.G_W_K" = 0.8``, ``"oil_stream.beta" = 0.5``); a key without a dot is a
-    context value the network reads as ``scene.<key>``.
+    context value the network reads as ``scene.<key>``.  Nodes named in ``scene.T_fixed_C`` become
+    fixed-temperature nodes at the imposed (measured) temperature.
     """
     import copy
     from pathlib import Path
@@ -271,6 +298,7 @@ def network_spec(scene: Scene) -> dict:
             raise InputError("thermal.network", name, f"unknown network; known: {', '.join(network_names())} "
                              "or a path to a .toml file")
     spec = copy.deepcopy(read_toml(str(path.resolve())))
+    _impose_temperatures(spec, scene.T_fixed_C, name)
     for key, val in scene.network_parameters.items():
         if "." not in key:
             continue
@@ -698,7 +726,7 @@ class RunResult:
         lines = [f"thermobear — {s.name}: {s.bearing.name}, {s.n_rpm:g} rpm, Fa {s.Fa:g} N, Fr {s.Fr:g} N, "
                  f"{s.lubricant.name} ({s.supply})", "", "Temperatures [°C]"]
         for k, v in self.T_C.items():
-            lines.append(f"  {k:18s} {v:8.2f}")
+            lines.append(f"  {k:18s} {v:8.2f}" + ("   imposed (thermal.fixed_C)" if k in s.T_fixed_C else ""))
         lines += ["", f"Power loss {self.P_W:.3f} W   (friction torque {self.torque_Nm * 1e3:.2f} N mm)"]
         for k, v in self.breakdown_W.items():
             share = 100 * v / self.P_W if self.P_W > 0 else 0.0

@@ -1,0 +1,98 @@
+"""Measured node temperatures imposed on the network (``[thermal] fixed_C``, seed 004 §4.5 "rig mode")."""
+from __future__ import annotations
+
+import json
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import thermobear as tb
+from thermobear.cli import main
+from thermobear.errors import InputError
+from thermobear.scene import scene_from_dict
+from thermobear.solver import steady_state
+
+ROOT = Path(__file__).resolve().parents[1]
+SEED004 = ROOT / "examples" / "seed004_oil_jet_7210.toml"
+
+
+@pytest.fixture(scope="module")
+def scene():
+    warnings.simplefilter("ignore", tb.ExtrapolationWarning)
+    return tb.load_scene(SEED004)
+
+
+@pytest.fixture(scope="module")
+def free(scene):
+    return steady_state(scene)
+
+
+def test_imposing_the_free_solution_reproduces_it(scene, free):
+    """The free steady state is also the solution when its own ring temperatures are imposed:
+    same balls, mixture and power (one fixed point, two ways of reaching it)."""
+    fixed = {"inner_ring": free.T_C["inner_ring"], "outer_ring": free.T_C["outer_ring"]}
+    st = steady_state(scene.with_(T_fixed_C=fixed))
+    for node in ("balls", "oil_air", "inner_race", "outer_race"):
+        assert st.T_C[node] == pytest.approx(free.T_C[node], abs=1e-4)
+    assert st.P_W == pytest.approx(free.P_W, rel=1e-6)
+
+
+def test_imposed_nodes_hold_and_energy_closes(scene):
+    st = steady_state(scene.with_(n_rpm=6400.0, T_fixed_C={"inner_ring": 50.0, "outer_ring": 50.0}))
+    assert st.T_C["inner_ring"] == 50.0 and st.T_C["outer_ring"] == 50.0
+    assert abs(st.energy_balance_W) <= 1e-9 * st.P_W
+    # heat is generated in the contacts: the balls run above both rings
+    assert st.T_C["balls"] > st.T_C["inner_race"] > 50.0 and st.T_C["balls"] > st.T_C["outer_race"] > 50.0
+
+
+def test_hotter_rings_lower_the_power(scene):
+    """Viscosity falls with the imposed ring temperature: power falls (seed 004 Fig. 9b)."""
+    P = [steady_state(scene.with_(T_fixed_C={"inner_ring": T, "outer_ring": T})).P_W for T in (30.0, 50.0, 70.0)]
+    assert np.all(np.diff(P) < 0)
+
+
+def test_transient_keeps_imposed_nodes(scene):
+    tr = tb.transient(scene.with_(T_fixed_C={"inner_ring": 45.0, "outer_ring": 40.0}), t_end_s=50.0)
+    assert np.all(tr.T_C["inner_ring"] == 45.0) and np.all(tr.T_C["outer_ring"] == 40.0)
+    assert tr.T_C["balls"][-1] > tr.T_C["balls"][0]
+
+
+@pytest.mark.parametrize("fixed, field", [
+    ({"balls": 50.0}, "thermal.fixed_C.balls"),          # receives the contact heat
+    ({"oil_air": 50.0}, "thermal.fixed_C.oil_air"),      # receives the drag heat
+    ({"spindle": 50.0}, "thermal.fixed_C.spindle"),      # unknown node
+])
+def test_bad_nodes_are_named(scene, fixed, field):
+    with pytest.raises(InputError) as e:
+        steady_state(scene.with_(T_fixed_C=fixed))
+    assert e.value.field == field
+
+
+@pytest.mark.parametrize("value", [300.0, float("nan"), "hot", True])
+def test_bad_temperatures_are_refused(scene, value):
+    with pytest.raises(InputError) as e:
+        scene.with_(T_fixed_C={"inner_ring": value})
+    assert "inner_ring" in e.value.field
+
+
+def test_scene_file_key_is_read_and_checked(scene):
+    raw = {k: dict(v) for k, v in scene.raw.items()}
+    raw["thermal"]["fixed_C"] = {"inner_ring": 52.0}
+    assert scene_from_dict(raw).T_fixed_C == {"inner_ring": 52.0}
+    raw["thermal"]["fixed_C"] = 52.0
+    with pytest.raises(InputError) as e:
+        scene_from_dict(raw)
+    assert e.value.field == "thermal.fixed_C"
+
+
+def test_cli_set_fixed(capsys):
+    code = main(["run", str(SEED004), "--json", "--set", "fixed_C.inner_ring=55", "--set", "fixed_C.outer_ring=50"])
+    out, _ = capsys.readouterr()
+    assert code == 0
+    d = json.loads(out)
+    assert d["T_C"]["inner_ring"] == 55.0 and d["T_C"]["outer_ring"] == 50.0
+    code = main(["run", str(SEED004), "--set", "fixed_C.balls=55"])
+    _, err = capsys.readouterr()
+    assert code == 2 and err.startswith("error: thermal.fixed_C.balls") and "Traceback" not in err
