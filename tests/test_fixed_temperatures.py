@@ -96,3 +96,24 @@ def test_cli_set_fixed(capsys):
     code = main(["run", str(SEED004), "--set", "fixed_C.balls=55"])
     _, err = capsys.readouterr()
     assert code == 2 and err.startswith("error: thermal.fixed_C.balls") and "Traceback" not in err
+
+
+def test_radial_load_barely_changes_power_at_equal_ring_temperature(scene):
+    """Seed 004 §5.3.5, Figs 13a and 18: Fa 450 N, 4800 rpm, block radial load 50 → 1500 N (two
+    bearings: 25 → 750 N each) leaves the power almost unchanged (< 10 %) at equal OR–IR mean
+    temperature; compared the paper's way, rings imposed and balls from the network."""
+    for T in (30.0, 50.0, 70.0):
+        P = [steady_state(scene.with_(n_rpm=4800.0, Fr=Fr, T_fixed_C={"inner_ring": T, "outer_ring": T})).P_W
+             for Fr in (25.0, 325.0, 750.0)]
+        assert np.ptp(P) / P[0] < 0.10, (T, P)
+
+
+def test_speed_x2_about_x3_at_equal_ring_temperature(scene):
+    """Seed 004 §5.3.1, Fig. 9b: at equal OR–IR mean temperature (25–70 °C) power ×3 for speed ×2;
+    rings imposed, balls from the network (their temperature rises with speed, as on the rig)."""
+    r = []
+    for T in (30.0, 50.0, 70.0):
+        P = [steady_state(scene.with_(n_rpm=n, T_fixed_C={"inner_ring": T, "outer_ring": T})).P_W
+             for n in (3200.0, 6400.0)]
+        r.append(P[1] / P[0])
+    assert all(2.5 < x < 4.0 for x in r), r

@@ -3,7 +3,8 @@ import numpy as np
 import pytest
 
 from thermobear.errors import InputError
-from thermobear.kinematics import ball_kinematics, cage_speed, entrainment_speed
+from thermobear.kinematics import (ball_kinematics, cage_speed, caged_ball_kinematics, common_cage_speed,
+                                   entrainment_speed)
 
 D, DM = 12.7e-3, 70e-3
 
@@ -66,3 +67,27 @@ def test_seed000_table1_speeds():
 def test_bad_control():
     with pytest.raises(InputError, match="control"):
         ball_kinematics(1.0, 0.0, 0.0, 0.0, D, DM, control="cage")
+
+
+def test_caged_ball_without_inner_load_rolls_on_the_outer_race():
+    # a ball outside the load zone (Q_i = 0): orbits at the cage speed, no slip on the outer race
+    a_i, a_o = np.deg2rad(75.0), np.deg2rad(0.5)          # a gap's geometry, not a contact
+    wc = 0.42 * 500.0
+    k = caged_ball_kinematics(500.0, 0.0, a_i, a_o, D, DM, wc, 0.0, 40.0)
+    assert k.omega_c == pytest.approx(wc, rel=1e-12)
+    assert abs(0.5 * D * k.omega_R * np.cos(a_o + k.beta)) == pytest.approx(k.u_o, rel=1e-12)
+    assert k.u_o == pytest.approx(wc * 0.5 * DM * (1 + D / DM * np.cos(a_o)), rel=1e-12)
+    # the free (two-contact no-slip) solution would make this ball orbit far faster than the cage
+    assert ball_kinematics(500.0, 0.0, a_i, a_o, D, DM).omega_c > 1.5 * wc
+
+
+def test_caged_equals_free_when_the_cage_runs_at_the_balls_own_speed():
+    a_i, a_o = np.deg2rad([42.0, 45.0]), np.deg2rad([37.0, 36.0])
+    k0 = ball_kinematics(900.0, 0.0, a_i, a_o, D, DM)
+    k = caged_ball_kinematics(900.0, 0.0, a_i, a_o, D, DM, k0.omega_c, [100.0, 50.0], [120.0, 70.0])
+    for name in ("omega_R", "u_i", "u_o", "spin_i", "spin_o"):
+        np.testing.assert_allclose(getattr(k, name), getattr(k0, name), rtol=1e-10, atol=1e-12)
+
+
+def test_common_cage_speed_weights_and_limits():
+    assert common_cage_speed([[10.0, 20.0], [5.0, 7.0]], [[1.0, 3.0], [0.0, 0.0]]).tolist() == [17.5, 6.0]

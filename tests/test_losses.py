@@ -94,6 +94,20 @@ def test_radial_load_shrinks_the_load_zone():
     assert np.all(np.diff(r.contacts["inner"]["Q"].max(-1)) > 0)
 
 
+def test_one_cage_speed_for_all_balls():
+    # a rigid cage: balls in and out of the load zone orbit at one speed, and the unloaded balls'
+    # outer entrainment speed stays that of a ball rolling on the outer race (within the spread
+    # of the contact angles), not the 1.7x that a no-slip solution with a gap's "contact angle" gives
+    from thermobear.losses import prepare_contacts
+    cs = prepare_contacts(B7210, Fa=450.0, Fr=750.0, n_rpm=4800.0)
+    assert np.ptp(cs.omega_c) <= 1e-12 * np.max(cs.omega_c)
+    r = losses(Fr=750.0)
+    ci, co = r.contacts["inner"], r.contacts["outer"]
+    unloaded, loaded = ci["Q"] == 0, ci["Q"] > 0
+    assert unloaded.any() and loaded.any()
+    assert co["u"][unloaded].max() < 1.05 * co["u"][loaded].max()
+
+
 def test_batch_equals_single():
     n = np.array([3200.0, 4800.0, 6500.0, 8070.0])
     rb = losses(n_rpm=n)

@@ -34,7 +34,8 @@ from ._arrays import out as _f
 
 from .errors import InputError
 
-__all__ = ["BallKinematics", "ball_kinematics", "cage_speed", "entrainment_speed", "CONTROLS"]
+__all__ = ["BallKinematics", "ball_kinematics", "caged_ball_kinematics", "common_cage_speed", "cage_speed",
+           "entrainment_speed", "CONTROLS"]
 
 CONTROLS = ("outer", "inner", "radial")
 
@@ -162,3 +163,96 @@ def ball_kinematics(omega_i, omega_o, alpha_i, alpha_o, D, dm, control: str = "o
     return BallKinematics(omega_c=f(omega_c), omega_R=f(omega_R), beta=f(beta), u_i=f(u_i), u_o=f(u_o),
                           spin_i=f(spin_i), spin_o=f(spin_o), spin_roll_i=f(sr_i), spin_roll_o=f(sr_o))
 
+
+
+def common_cage_speed(omega_c, Q):
+    r"""Speed of a rigid cage carrying balls whose free rolling speeds differ [rad/s].
+
+    ω_cage = Σ Q_j ω_c,j / Σ Q_j over the balls (last axis), the load-weighted mean of the
+    balls' no-slip orbital speeds: the loaded balls drive the cage, a ball with no load
+    follows it.  All weights zero → plain mean.  In a symmetric load case all ω_c,j are
+    equal and ω_cage is that value.
+
+    Parameters
+    ----------
+    omega_c : array_like (..., Z)   no-slip orbital speed of each ball [rad/s]
+    Q : array_like (..., Z)         driving contact load of each ball [N]
+
+    Returns
+    -------
+    ndarray (...)                   cage speed [rad/s]
+
+    >>> float(common_cage_speed([100.0, 110.0, 300.0], [10.0, 10.0, 0.0]))
+    105.0
+    """
+    w, q = np.asarray(omega_c, float), np.asarray(Q, float)
+    qs = q.sum(-1)
+    return np.where(qs > 0, (q * w).sum(-1) / np.where(qs > 0, qs, 1.0), w.mean(-1))
+
+
+def caged_ball_kinematics(omega_i, omega_o, alpha_i, alpha_o, D, dm, omega_cage, Q_i, Q_o,
+                          control: str = "outer") -> BallKinematics:
+    r"""Ball kinematics with the orbital speed imposed by a common cage [rad/s, m/s].
+
+    When the contact angles differ from ball to ball (combined or high-speed loads), the
+    no-slip orbital speeds of :func:`ball_kinematics` differ too; a rigid cage makes every
+    ball orbit at one speed ω_cage (:func:`common_cage_speed`).  With ω_c = ω_cage imposed,
+    the two no-slip conditions of the module docstring cannot both hold; the ball speed ω_R
+    is the load-weighted least-squares solution of the two,
+
+        ω_R = [Q_o e_o c_o (ω_o − ω_c) − Q_i e_i c_i (ω_i − ω_c)] / (Q_o e_o² + Q_i e_i²),
+
+    c_o = (dm/2)(1 + γ' cos α_o), c_i = (dm/2)(1 − γ' cos α_i), e = (D/2) cos(α + β), so a
+    ball rolls without slip on the race that carries it (Q_i = 0: the outer race) and a ball
+    whose own no-slip orbital speed equals ω_cage gets exactly :func:`ball_kinematics`'
+    result.  Entrainment speeds follow from ω_c alone: u_o = |ω_o − ω_c| c_o, u_i = |ω_i − ω_c| c_i.
+    This keeps balls outside the load zone — whose inner "contact angle" is the geometry of
+    a gap, not of a contact — from orbiting at the speed that angle would imply.
+
+    Parameters
+    ----------
+    omega_i, omega_o : array_like   ring speeds [rad/s]
+    alpha_i, alpha_o : array_like   contact angles [rad] (per ball)
+    D, dm : float                   ball and pitch diameter [m]
+    omega_cage : array_like         cage speed, broadcast against the balls [rad/s]
+    Q_i, Q_o : array_like           contact loads [N] (weights of the two no-slip conditions)
+    control : str                   ball-axis hypothesis for β (as :func:`ball_kinematics`)
+
+    Returns
+    -------
+    BallKinematics
+
+    Examples
+    --------
+    Equal angles: the cage speed is every ball's own, and the result is Jones' (Harris 2001 ch. 8).
+
+    >>> k0 = ball_kinematics(300.0, 0.0, 0.7, 0.7, 0.0127, 0.07)
+    >>> k = caged_ball_kinematics(300.0, 0.0, 0.7, 0.7, 0.0127, 0.07, k0.omega_c, 50.0, 60.0)
+    >>> bool(np.isclose(k.omega_R, k0.omega_R) and np.isclose(k.u_i, k0.u_i))
+    True
+    """
+    free = ball_kinematics(omega_i, omega_o, alpha_i, alpha_o, D, dm, control=control)
+    wi, wo = np.asarray(omega_i, float), np.asarray(omega_o, float)
+    ai, ao = np.asarray(alpha_i, float), np.asarray(alpha_o, float)
+    beta = np.asarray(free.beta, float)
+    wc = np.broadcast_to(np.asarray(omega_cage, float), np.broadcast(ai, ao, wi, wo).shape)
+    gp = D / dm
+    co = 0.5 * dm * (1.0 + gp * np.cos(ao))
+    ci = 0.5 * dm * (1.0 - gp * np.cos(ai))
+    eo = 0.5 * D * np.cos(ao + beta)
+    ei = 0.5 * D * np.cos(ai + beta)
+    qi, qo = np.asarray(Q_i, float), np.asarray(Q_o, float)
+    den = qo * eo * eo + qi * ei * ei
+    num = qo * eo * co * (wo - wc) - qi * ei * ci * (wi - wc)
+    omega_R = np.where(den > 0, num / np.where(den > 0, den, 1.0), np.asarray(free.omega_R, float))
+    u_o = np.abs((wo - wc) * co)
+    u_i = np.abs((wi - wc) * ci)
+    spin_o = omega_R * np.sin(ao + beta) - (wo - wc) * np.sin(ao)
+    spin_i = omega_R * np.sin(ai + beta) - (wi - wc) * np.sin(ai)
+    roll_o = omega_R * np.cos(ao + beta)
+    roll_i = omega_R * np.cos(ai + beta)
+    sr_o = np.where(roll_o != 0, spin_o / np.where(roll_o != 0, roll_o, 1.0), 0.0)
+    sr_i = np.where(roll_i != 0, spin_i / np.where(roll_i != 0, roll_i, 1.0), 0.0)
+    f = _f
+    return BallKinematics(omega_c=f(wc), omega_R=f(omega_R), beta=f(beta), u_i=f(u_i), u_o=f(u_o),
+                          spin_i=f(spin_i), spin_o=f(spin_o), spin_roll_i=f(sr_i), spin_roll_o=f(sr_o))

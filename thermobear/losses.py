@@ -43,7 +43,7 @@ from .friction.rolling import rolling_force
 from .friction.sliding import deformed_radius, hysteresis_moment, mixed_friction_ianus
 from .geometry import BallBearing
 from .hertz import hertz
-from .kinematics import ball_kinematics
+from .kinematics import ball_kinematics, caged_ball_kinematics, common_cage_speed
 from .loads import LoadDistribution, load_distribution
 
 __all__ = ["LossResult", "ContactSet", "bearing_losses", "prepare_contacts", "evaluate_losses",
@@ -182,14 +182,19 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
     ao = np.broadcast_to(ld.alpha_o, batch + (Z,))
     if control is None:
         control = "radial" if brg.kind == "thrust" else "outer"
-    kin = ball_kinematics(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, control=control)
-    omega_c = np.broadcast_to(np.asarray(kin.omega_c), batch + (Z,))
     Qi = np.broadcast_to(ld.Q_i, batch + (Z,)).astype(float)
     Qo = np.broadcast_to(ld.Q_o, batch + (Z,)).astype(float)
+    # one rigid cage: every ball orbits at the load-weighted mean of the balls' no-slip orbital
+    # speeds (they differ when the contact angles do: combined and high-speed loads); a ball
+    # outside the load zone follows the cage and rolls on the race that carries it
+    free = ball_kinematics(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, control=control)
+    w_cage = common_cage_speed(np.broadcast_to(np.asarray(free.omega_c), batch + (Z,)), Qi)
+    omega_c = np.broadcast_to(np.asarray(w_cage)[ex], batch + (Z,))
     if centrifugal and brg.kind != "thrust":
         Fc = 0.5 * brg.ball_mass * brg.dm * omega_c**2
         ca = np.cos(ao)
         Qo = Qo + np.where(ca > np.cos(np.deg2rad(80.0)), Fc / np.maximum(ca, 1e-3), 0.0)
+    kin = caged_ball_kinematics(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, omega_c, Qi, Qo, control=control)
     Ep = brg.E_prime
     sides = {}
     for side, Q, al, u, spin, f in (("inner", Qi, ai, kin.u_i, kin.spin_i, brg.fi),
@@ -211,7 +216,7 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
         "load_distribution": ("Jones–Harris low-speed, rigid rings" + (", tilt free" if M is not None else ""),
                               "quasi-static ball loads and angles (seed 004 eqs 6–8)"),
         "hertz": (hertz_method, "exact elliptic integrals" if hertz_method == "exact" else "approximation chosen"),
-        "kinematics": (f"no-slip at contact centres, {control} control",
+        "kinematics": (f"no-slip at contact centres, {control} control, one cage speed",
                        "thrust: symmetric radial ball axis (seed 000)" if control == "radial" else "Jones outer-race control"),
         "centrifugal": ("F_c/cos α on the outer contact" if centrifugal and brg.kind != "thrust" else "none",
                         "balls outside the load zone ride on the outer race"),
