@@ -185,3 +185,32 @@ def test_calibrate_bad_parameters(synthetic_scene):
         calibrate(synthetic_scene, log, ["skf_R1"], m)
     with pytest.raises(InputError, match="start value"):
         calibrate(synthetic_scene, log, ["bearing_to_ambient.G_W_K=abc"], m)
+
+
+def test_compare_with_imposed_ring_temperatures_reproduces_the_free_solution(tmp_path):
+    """Rows whose logged IR/OR temperatures are the model's own free steady state: imposing them
+    ("impose:<node>", seed 004 §4.5) gives back the same torque and ball temperature."""
+    import warnings
+
+    import thermobear as tb
+    from thermobear.solver import steady_state
+    warnings.simplefilter("ignore", tb.ExtrapolationWarning)
+    sc = tb.load_scene(ROOT / "examples" / "seed004_oil_jet_7210.toml")
+    rows = []
+    for n in (3200.0, 4800.0):
+        st = steady_state(sc.with_(n_rpm=n))
+        rows.append(f"{n},{st.T_C['inner_ring']!r},{st.T_C['outer_ring']!r},{st.T_C['balls']!r},"
+                    f"{st.P_W / (n * np.pi / 30)!r}")
+    log = read_log(_write(tmp_path, "n_rpm,T_IR_C,T_OR_C,T_ball_C,torque_Nm\n" + "\n".join(rows) + "\n"))
+    m = channel_map(sc, log, {"T_IR_C": "impose:inner_ring", "T_OR_C": "impose:outer_ring", "T_ball_C": "balls"})
+    c = compare(sc, log, m)
+    assert set(c.metrics) == {"T_ball_C", "torque_Nm"}          # imposed channels are inputs, not compared
+    assert c.metrics["T_ball_C"]["rmse"] < 1e-3
+    assert c.metrics["torque_Nm"]["rmse"] < 1e-6 * np.mean(log["torque_Nm"])
+
+
+def test_impose_needs_a_steady_log_and_a_known_node(tmp_path, synthetic_scene):
+    log = read_log(_write(tmp_path, "t_s,T_bearing_C\n0,20\n10,21\n"))
+    with pytest.raises(InputError) as e:
+        channel_map(synthetic_scene, log, {"T_bearing_C": "impose:bearing"})
+    assert e.value.field == "rig.map.T_bearing_C" and "steady" in e.value.expected

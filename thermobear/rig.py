@@ -22,7 +22,10 @@ channel is mapped to a thermal-network node in the scene's ``[rig.map]`` table
 Two special targets: ``"input"`` makes the channel the operating temperature
 of its row (``operation.T_C``: the losses are evaluated at the measured
 temperature, no network needed — the way seed 002 evaluates its models) and
-``"ignore"`` skips it.
+``"ignore"`` skips it.  ``"impose:<node>"`` (steady logs) imposes the channel's
+value on that node in its row (``thermal.fixed_C``): with the ring thermocouples
+imposed, the balls and the mixture are solved and the torque is compared at the
+measured bearing temperature — how seed 004 (§4.5) runs its model against its rig.
 
 Metrics per channel (:func:`metrics`): RMSE, maximum absolute error, bias,
 steady-state error (mean error over the last 10 % of a transient log) and the
@@ -55,6 +58,12 @@ __all__ = ["RigLog", "read_log", "channel_map", "metrics", "simulate_log", "comp
            "parse_map", "SPECIAL_TARGETS"]
 
 SPECIAL_TARGETS = ("input", "ignore")
+IMPOSE = "impose:"
+
+
+def _special(target: str) -> bool:
+    """A target that is not a simulated node (an input of the model, or skipped)."""
+    return target in SPECIAL_TARGETS or target.startswith(IMPOSE)
 _T_RE = re.compile(r"^T_[A-Za-z0-9_]+_C$")
 _NUMERIC = ("t_s", "n_rpm", "torque_Nm", "Fa_N", "Fr_N")
 _SCENE_SCALARS = ("T_ambient_C", "T_oil_in_C", "oil_flow_L_h", "mu_boundary", "mu_full_film")
@@ -245,7 +254,7 @@ def channel_map(scene: Scene, log: RigLog, overrides: dict | None = None) -> dic
     for ch in chans:
         if ch not in m:
             raise InputError(f"rig.map.{ch}", None, "channel not mapped: add [rig.map] "
-                             f'{ch} = "<node>" (or "input"/"ignore") to the scene or --map {ch}=<node>')
+                             f'{ch} = "<node>" (or "input"/"ignore"/"impose:<node>") to the scene or --map {ch}=<node>')
     nodes = network_nodes(scene)
     inputs = [c for c, n in m.items() if n == "input"]
     if len(inputs) > 1:
@@ -255,6 +264,10 @@ def channel_map(scene: Scene, log: RigLog, overrides: dict | None = None) -> dic
     for ch, node in m.items():
         if node in SPECIAL_TARGETS:
             continue
+        if node.startswith(IMPOSE):
+            if log.kind == "transient":
+                raise InputError(f"rig.map.{ch}", node, "an imposed temperature needs a steady log (no t_s)")
+            node = node[len(IMPOSE):]
         if not nodes:
             raise InputError(f"rig.map.{ch}", node, "the scene has no thermal network (temperature prescribed); "
                              'map the channel to "input" or "ignore"')
@@ -341,6 +354,12 @@ def _row_scene(scene: Scene, log: RigLog, i: int, mapping: dict) -> Scene:
                 raise InputError(f"{Path(log.path).name}: row {i + 1}, column {chn}", None,
                                  "the input temperature is missing")
             ch["T_C"] = float(v)
+        elif node.startswith(IMPOSE):
+            v = c[chn][i]
+            if np.isnan(v):
+                raise InputError(f"{Path(log.path).name}: row {i + 1}, column {chn}", None,
+                                 "the imposed temperature is missing")
+            ch.setdefault("T_fixed_C", dict(scene.T_fixed_C))[node[len(IMPOSE):]] = float(v)
     return scene.with_(**ch)
 
 
@@ -370,7 +389,7 @@ def simulate_log(scene: Scene, log: RigLog, mapping: dict, *, rtol: float = 1e-6
         t = log.t_s
         run = transient(sc, float(t[-1]), schedule=steps, t_eval=t, T0_C=T0_C, rtol=rtol, atol=rtol * 10)
         for ch, node in mapping.items():
-            if node not in SPECIAL_TARGETS:
+            if not _special(node):
                 out[ch] = np.asarray(run.T_C[node], float)
         if "torque_Nm" in log.columns:
             n_rpm = _speed_at(log, run.t_s)
@@ -380,7 +399,7 @@ def simulate_log(scene: Scene, log: RigLog, mapping: dict, *, rtol: float = 1e-6
         return out
     res = [solve(_row_scene(scene, log, i, mapping)) for i in range(log.n_rows)]
     for ch, node in mapping.items():
-        if node not in SPECIAL_TARGETS:
+        if not _special(node):
             out[ch] = np.array([r.T_C[node] for r in res])
     out["torque_Nm"] = np.array([r.torque_Nm for r in res])
     out["P_W"] = np.array([r.P_W for r in res])
@@ -445,7 +464,7 @@ def compare(scene: Scene, log: RigLog, mapping: dict, *, T0_C=None) -> Compariso
     x = log.t_s if log.kind == "transient" else log["n_rpm"]
     meas, simd, met = {}, {}, {}
     for ch, node in mapping.items():
-        if node in SPECIAL_TARGETS:
+        if _special(node):
             continue
         meas[ch], simd[ch] = log[ch], sim[ch]
         met[ch] = metrics(log[ch], sim[ch], log.t_s)
@@ -642,7 +661,7 @@ def calibrate(scene: Scene, log: RigLog, params: list, mapping: dict, *, T0_C=No
         tq = log["torque_Nm"]
         if np.any(~np.isnan(tq)):
             weights["torque_Nm"] = 100.0 / max(float(np.nanmean(np.abs(tq))), 1e-300)
-    fit_channels = [c for c, n in mapping.items() if n not in SPECIAL_TARGETS]
+    fit_channels = [c for c, n in mapping.items() if not _special(n)]
     nfev = [0]
 
     def resid(x):
