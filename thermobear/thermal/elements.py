@@ -454,6 +454,15 @@ class Element:
         (the subclasses in ``ELEMENT_TYPES``) defines it."""
         raise TypeError(f"{type(self).__name__} is an element base class: it has no conductance of its own")
 
+    def _T_nodes(self) -> tuple:
+        """Indices of the nodes whose temperatures the conductance depends on (both by default)."""
+        return (self.i, self.j) if self.T_dependent else ()
+
+    def _conductance_shared(self, T_K, shared: dict) -> float:
+        """:meth:`conductance`, with fluid properties shared between elements through ``shared``
+        (a dict the caller keeps for one temperature state; the network solvers' fast path)."""
+        return self.conductance(T_K)
+
 
 def _k(p, key="k_W_mK", mat="material"):
     return p[key] if key in p else p[mat].k
@@ -517,21 +526,43 @@ class Convection(Element):
     def T_dependent(self):
         return self.p["correlation"] != "given"
 
+    def _T_nodes(self) -> tuple:
+        c = self.p["correlation"]
+        return () if c == "given" else (self.j,) if c in HARRIS_COEFFICIENTS else (self.i, self.j)
+
+    def _harris_props(self, Tf, shared=None) -> dict:
+        """Properties of the fluid (node 1, at ``Tf`` [K]) for the harris-type laws; ``shared``
+        caches them per (lubricant, fluid, oil fraction, temperature)."""
+        p = self.p
+        fluid = p.get("fluid", "oil_air")
+        oil = self.context.get("oil") if fluid != "air" else None
+        X = 0.0 if fluid == "air" else 1.0 if fluid == "oil" else p["oil_fraction"]
+        key = ("harris", id(oil), fluid, X, Tf)
+        if shared is not None and key in shared:
+            return shared[key]
+        if fluid == "air":
+            props = air_properties(_air_T(Tf))
+        else:
+            T_C = _oil_T(Tf)
+            props = oil_air_properties(X, oil.rho(T_C), oil.nu(T_C), oil.k_th(T_C), oil.cp(T_C), T_C + 273.15)
+        if shared is not None:
+            shared[key] = props
+        return props
+
     def h(self, T_K) -> float:
         """Heat-transfer coefficient [W/(m² K)] at the current temperatures."""
+        return self._h(T_K, None)
+
+    def _h(self, T_K, _shared) -> float:
         p, c = self.p, self.p["correlation"]
         Ts, Tf = float(T_K[self.i]), float(T_K[self.j])
         if c == "given":
             return float(p["h_W_m2K"])
         if c in HARRIS_COEFFICIENTS:
-            fluid = p.get("fluid", "oil_air")
-            if fluid == "air":
-                props = air_properties(_air_T(Tf))
-            else:
-                oil = self.context["oil"]
-                T_C = _oil_T(Tf)
-                X = 1.0 if fluid == "oil" else p["oil_fraction"]
-                props = oil_air_properties(X, oil.rho(T_C), oil.nu(T_C), oil.k_th(T_C), oil.cp(T_C), T_C + 273.15)
+            props = self._harris_props(Tf, _shared)
+            if _shared is not None:        # parameters checked at load, properties from the tables: no re-check
+                return float(HARRIS_COEFFICIENTS[c] * props["k"] * np.cbrt(props["Pr"])
+                             * np.sqrt(p["u_m_s"] / (props["nu"] * p["x_m"])))
             return h_harris(props["k"], props["Pr"], p["u_m_s"], props["nu"], p["x_m"], c)
         if c == "natural_horizontal_cylinder":
             return h_natural_horizontal_cylinder(Ts, Tf, p["D_m"])
@@ -543,6 +574,9 @@ class Convection(Element):
 
     def conductance(self, T_K):
         return self.h(T_K) * float(self.p["A_m2"])
+
+    def _conductance_shared(self, T_K, shared):
+        return self._h(T_K, shared) * float(self.p["A_m2"])
 
 
 def _air_T(T_K: float) -> float:
@@ -580,6 +614,9 @@ class Advection(Element):
     @property
     def T_dependent(self):
         return not ("rho_kg_m3" in self.p and "cp_J_kgK" in self.p)
+
+    def _T_nodes(self) -> tuple:
+        return (self.i,) if self.T_dependent else ()
 
     def conductance(self, T_K):
         p = self.p

@@ -40,6 +40,7 @@ import ast
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from functools import lru_cache
 from pathlib import Path
 
 import networkx as nx
@@ -125,6 +126,13 @@ class _Evaluator:
         return v
 
 
+@lru_cache(maxsize=1024)
+def _parse(expr: str):
+    """Parsed expression (cached per string: networks are rebuilt for every operating point; the
+    tree is only read by :class:`_Evaluator`, never modified)."""
+    return ast.parse(expr.strip(), mode="eval")
+
+
 def evaluate(expr, context=None, field="expression"):
     """Evaluate a number or a short arithmetic expression over a context, safely.
 
@@ -154,7 +162,7 @@ def evaluate(expr, context=None, field="expression"):
     if not isinstance(expr, str) or len(expr) > 400:
         raise InputError(field, expr, "a number or an arithmetic expression string (≤ 400 characters)")
     try:
-        tree = ast.parse(expr.strip(), mode="eval")
+        tree = _parse(expr)
     except SyntaxError as exc:
         raise InputError(field, expr, f"not a valid arithmetic expression ({exc.msg})") from None
     ev = _Evaluator(context, field, expr)
@@ -217,7 +225,7 @@ def evaluate_object(expr, ctx, fld):
     if not isinstance(expr, str):
         raise InputError(fld, expr, "a name or a dotted context name")
     try:
-        tree = ast.parse(expr.strip(), mode="eval")
+        tree = _parse(expr)
     except SyntaxError:
         raise InputError(fld, expr, "a material name or a dotted context name") from None
     if not isinstance(tree.body, (ast.Name, ast.Attribute)):

@@ -153,16 +153,151 @@ def assemble(net: ThermalNetwork, T_K, G=None):
     array([[ 2., -2.],
            [-2.,  2.]])
     """
-    G = net.conductances(T_K) if G is None else G
-    i = np.array([e.i for e in net.elements])
-    j = np.array([e.j for e in net.elements])
-    adv = np.array([e.advective for e in net.elements])
-    sym = ~adv
-    rows = np.concatenate([i[sym], j[sym], i[sym], j[sym], j[adv], j[adv]])
-    cols = np.concatenate([i[sym], j[sym], j[sym], i[sym], j[adv], i[adv]])
-    vals = np.concatenate([G[sym], G[sym], -G[sym], -G[sym], G[adv], -G[adv]])
-    n = len(net.nodes)
-    return sp.csr_matrix((vals, (rows, cols)), shape=(n, n)), G
+    plan = _plan(net)
+    G = plan.conductances(T_K) if G is None else np.asarray(G, dtype=float)
+    return plan.csr(G), G
+
+
+_DENSE_MAX = 400      # networks up to this many nodes are solved with dense LU (faster than sparse there)
+
+
+class _Plan:
+    """Index structure of a network's conductance matrix and its temperature-independent
+    conductances, computed once per network (private; :func:`_plan` rebuilds it when the
+    elements or their parameters are replaced).
+
+    A = Σ_e G_e B_e with fixed 0/±1 patterns B_e (conductive elements symmetric, advective ones
+    upwind), so assembling is one weighted ``bincount`` over precomputed positions.  Elements
+    whose conductance depends on temperature are re-evaluated only when the temperatures of the
+    nodes they depend on change (``Element._T_nodes``); the harris-type convections sharing a fluid
+    node share one evaluation of the fluid properties (``Convection._harris_props``).
+    """
+
+    def __init__(self, net: ThermalNetwork):
+        els = net.elements
+        n = len(net.nodes)
+        self.n, self.elements = n, els
+        self.key = _plan_key(net)
+        i = np.array([e.i for e in els], dtype=int)
+        j = np.array([e.j for e in els], dtype=int)
+        adv = np.array([e.advective for e in els], dtype=bool)
+        ks, ka = np.flatnonzero(~adv), np.flatnonzero(adv)
+        rows = np.concatenate([i[ks], j[ks], i[ks], j[ks], j[ka], j[ka]])
+        cols = np.concatenate([i[ks], j[ks], j[ks], i[ks], j[ka], i[ka]])
+        self.eidx = np.concatenate([ks, ks, ks, ks, ka, ka])
+        self.sign = np.concatenate([np.ones(2 * ks.size), -np.ones(2 * ks.size), np.ones(ka.size),
+                                    -np.ones(ka.size)])
+        self.flat = rows * n + cols
+        uniq, self.inv = np.unique(self.flat, return_inverse=True)
+        self.nnz = uniq.size
+        ur, uc = np.divmod(uniq, n)
+        self.indices = uc.astype(np.int32)
+        self.indptr = np.searchsorted(ur, np.arange(n + 1)).astype(np.int32)
+        self.free = np.flatnonzero(~net.fixed)
+        self.fixed = np.flatnonzero(net.fixed)
+        self.dep = [k for k, e in enumerate(els) if e.T_dependent]
+        self.nodes_of = {k: tuple(els[k]._T_nodes()) for k in self.dep}
+        T0 = net.initial_T_K()
+        self.G0 = np.array([0.0 if k in self.dep else e.conductance(T0) for k, e in enumerate(els)], dtype=float)
+        self.memo: dict = {}
+
+    def conductances(self, T_K) -> np.ndarray:
+        """Conductance of every element [W/K] at node temperatures ``T_K`` [K] (as
+        ``net.conductances``)."""
+        if not self.dep:
+            return self.G0.copy()
+        T = np.asarray(T_K, dtype=float)
+        G = self.G0.copy()
+        shared: dict = {}
+        for k in self.dep:
+            key = tuple(float(T[m]) for m in self.nodes_of[k])
+            hit = self.memo.get(k)
+            if hit is not None and hit[0] == key:
+                G[k] = hit[1]
+                continue
+            e = self.elements[k]
+            g = float(e._conductance_shared(T, shared))
+            self.memo[k] = (key, g)
+            G[k] = g
+        return G
+
+    def dconductances(self, T_K, h_K: float = 1e-3):
+        """Conductances G [W/K] and their forward-difference derivatives with respect to the
+        temperatures of the nodes each element depends on: list of (element, node, dG/dT [W/K²])."""
+        T = np.array(T_K, dtype=float)
+        G = self.conductances(T)
+        out = []
+        for m in sorted({m for k in self.dep for m in self.nodes_of[k]}):
+            Tp = T.copy()
+            Tp[m] += h_K
+            shared: dict = {}                     # one property evaluation per perturbed node
+            for k in self.dep:
+                if m in self.nodes_of[k]:
+                    g = float(self.elements[k]._conductance_shared(Tp, shared))
+                    out.append((k, m, (g - G[k]) / h_K))
+        return G, out
+
+    def dAT(self, T_K, dG) -> np.ndarray:
+        """∂(A(T) T)/∂T from the conductances' temperature dependence (n×n, dense) [W/K]:
+        ``dG`` as returned by :meth:`dconductances`."""
+        T = np.asarray(T_K, dtype=float)
+        D = np.zeros((self.n, self.n))
+        for k, m, d in dG:
+            e = self.elements[k]
+            if e.advective:
+                D[e.j, m] += d * (T[e.j] - T[e.i])
+            else:
+                D[e.i, m] += d * (T[e.i] - T[e.j])
+                D[e.j, m] += d * (T[e.j] - T[e.i])
+        return D
+
+    def values(self, G):
+        """Contributions of the elements to the matrix entries (pattern ``self.flat``)."""
+        return self.sign * G[self.eidx]
+
+    def dense(self, G) -> np.ndarray:
+        """Full conductance matrix A (n×n, dense) for conductances G."""
+        n = self.n
+        return np.bincount(self.flat, self.values(G), minlength=n * n).reshape(n, n)
+
+    def csr(self, G):
+        """Full conductance matrix A (n×n, CSR) for conductances G."""
+        data = np.bincount(self.inv, self.values(G), minlength=self.nnz)
+        return sp.csr_matrix((data, self.indices.copy(), self.indptr.copy()), shape=(self.n, self.n))
+
+    def blocks(self, G):
+        """(A_ff, A_fb) blocks, free × free and free × fixed: dense arrays for networks up to
+        ``_DENSE_MAX`` nodes, else sparse (CSC / CSR)."""
+        if self.n <= _DENSE_MAX:
+            A = self.dense(G)
+            return A[np.ix_(self.free, self.free)], A[np.ix_(self.free, self.fixed)]
+        A = self.csr(G)
+        return A[self.free][:, self.free].tocsc(), A[self.free][:, self.fixed]
+
+
+def _plan_key(net):
+    els = net.elements
+    return (id(els), len(els), len(net.nodes), net.fixed.tobytes(),
+            tuple((id(e), e.i, e.j, id(e.p), tuple(map(id, e.p.values()))) for e in els))
+
+
+def _plan(net) -> _Plan:
+    """The cached :class:`_Plan` of a network (rebuilt when its elements changed)."""
+    plan = net.__dict__.get("_tb_plan")
+    if plan is None or plan.key != _plan_key(net):
+        plan = _Plan(net)
+        net.__dict__["_tb_plan"] = plan
+    return plan
+
+
+def _lin_solve(Aff, rhs):
+    """Solve A_ff x = rhs (dense LU or sparse LU); non-finite result when A_ff is singular."""
+    if isinstance(Aff, np.ndarray):
+        try:
+            return np.linalg.solve(Aff, rhs)
+        except np.linalg.LinAlgError:
+            return np.full(np.shape(rhs), np.nan)
+    return spsolve(Aff, rhs)
 
 
 def _flows(net, T, G):
@@ -246,11 +381,12 @@ def solve_steady(net: ThermalNetwork, sources_W=None, *, T_guess_K=None, tol_K: 
     T[fixed] = net.T_fixed_K[fixed]
     history = []
     it, res = 0, float("inf")
+    plan = _plan(net)
     for it in range(1, max_iter + 1):
-        A, G = assemble(net, T)
-        Aff = A[free][:, free].tocsc()
-        rhs = P[free] - A[free][:, fixed] @ T[fixed]
-        Tf = np.atleast_1d(spsolve(Aff, rhs))
+        G = plan.conductances(T)
+        Aff, Afb = plan.blocks(G)
+        rhs = P[free] - Afb @ T[fixed]
+        Tf = np.atleast_1d(_lin_solve(Aff, rhs))
         if not np.all(np.isfinite(Tf)):
             raise NoConvergence("singular conductance matrix (a node without conductance?)",
                                 iterations=it, last=T.copy(), history=history)
@@ -270,9 +406,10 @@ def solve_steady(net: ThermalNetwork, sources_W=None, *, T_guess_K=None, tol_K: 
                             last=T.copy(), history=history)
     if (relax < 1 or net.T_dependent) and not linearized:
         # final consistent linear solve with the converged conductances
-        A, G = assemble(net, T)
+        G = plan.conductances(T)
+        Aff, Afb = plan.blocks(G)
         T = T.copy()
-        T[free] = np.atleast_1d(spsolve(A[free][:, free].tocsc(), P[free] - A[free][:, fixed] @ T[fixed]))
+        T[free] = np.atleast_1d(_lin_solve(Aff, P[free] - Afb @ T[fixed]))
     flows = _flows(net, T, G)
     bal, rel = _balance(net, P[free], flows)
     return SteadyResult(T_C={n: float(T[k] - _C0) for k, n in enumerate(net.nodes)}, T_K=T,
@@ -301,7 +438,10 @@ def solve_transient(net: ThermalNetwork, sources, t_end: float, *, T0_C=None,
     sources : dict or callable  node → W, or ``sources(t, T_K) -> dict`` or
                                 ``-> (dict, report)`` with ``T_K`` a dict node → K
                                 and ``report`` a dict of numbers to record
-                                (e.g. the loss breakdown)
+                                (e.g. the loss breakdown).  A callable may carry an
+                                attribute ``_batch(t_array, T_K_arrays) -> (list of dicts,
+                                dict of arrays)`` giving the same for all output times at
+                                once; the output pass then calls it instead of the loop
     t_end : float               end time [s]
     T0_C : float, dict or None  initial temperature of the free nodes [°C]; None:
                                 the fixed node ``ambient`` (else the mean fixed T)
@@ -322,8 +462,9 @@ def solve_transient(net: ThermalNetwork, sources, t_end: float, *, T0_C=None,
     Notes
     -----
     C_f dT_f/dt = P_f(t,T) − A_ff(T) T_f − A_fb(T) T_b(t) (PHYSICS.md §8);
-    Jacobian −C⁻¹A_ff (sparse; dP/dT and dG/dT neglected in it, which only
-    affects the Newton iterations of the implicit scheme, not the solution).
+    Jacobian −C⁻¹A_ff (dense up to 400 nodes, else sparse; dP/dT and dG/dT neglected
+    in it, which only affects the Newton iterations of the implicit scheme, not the
+    solution: including them was tried and saved only 6 % of the evaluations).
 
     Examples
     --------
@@ -371,6 +512,7 @@ def solve_transient(net: ThermalNetwork, sources, t_end: float, *, T0_C=None,
         return Tb
 
     nfev = [0]
+    plan = _plan(net)
     t_eval = None if t_eval is None else np.asarray(t_eval, dtype=float)
     ts, Ys = [], []
     y = T[free].copy()
@@ -382,14 +524,16 @@ def solve_transient(net: ThermalNetwork, sources, t_end: float, *, T0_C=None,
         def rhs(t, yf, Tfull=Tfull, a=a, t_hi=t_hi):
             nfev[0] += 1
             Tfull[free] = yf
-            A, _ = assemble(net, Tfull)
+            Aff, Afb = plan.blocks(plan.conductances(Tfull))
             P, _ = _call_sources(sources, min(max(t, a), t_hi), Tfull, net)
-            return (P[free] - A[free] @ Tfull) / C
+            return (P[free] - Aff @ yf - Afb @ Tfull[fixed]) / C
 
         def jac(t, yf, Tfull=Tfull):
             Tfull[free] = yf
-            A, _ = assemble(net, Tfull)
-            return sp.diags(1.0 / C) @ (-A[free][:, free])
+            Aff, _ = plan.blocks(plan.conductances(Tfull))
+            if isinstance(Aff, np.ndarray):
+                return -Aff / C[:, None]
+            return sp.diags(1.0 / C) @ (-Aff)
 
         te_req = None if t_eval is None else t_eval[(t_eval >= a) & (t_eval <= b)]
         te = None if te_req is None else np.union1d(te_req, [b])
@@ -414,12 +558,22 @@ def solve_transient(net: ThermalNetwork, sources, t_end: float, *, T0_C=None,
     T_all[free] = np.concatenate([y_ for y_, _ in Ys], axis=1)
     src_series = {n: np.zeros(t_all.size) for n in net.free_nodes}
     report: dict = {}
-    for k, t in enumerate(t_all):
-        P, rep = _call_sources(sources, t, T_all[:, k], net)
-        for n in net.free_nodes:
-            src_series[n][k] = P[net.index[n]]
-        for key, v in rep.items():
-            report.setdefault(key, np.full(t_all.size, np.nan))[k] = v
+    batch = getattr(sources, "_batch", None) if callable(sources) else None
+    if batch is not None and t_all.size:
+        # the callback can evaluate all output times at once (one vectorised loss evaluation)
+        srcs, reps = batch(t_all, {n: T_all[k] for k, n in enumerate(net.nodes)})
+        for k, src in enumerate(srcs):
+            P = sources_vector(net, src)
+            for n in net.free_nodes:
+                src_series[n][k] = P[net.index[n]]
+        report = {key: np.asarray(v, dtype=float) for key, v in reps.items()}
+    else:
+        for k, t in enumerate(t_all):
+            P, rep = _call_sources(sources, t, T_all[:, k], net)
+            for n in net.free_nodes:
+                src_series[n][k] = P[net.index[n]]
+            for key, v in rep.items():
+                report.setdefault(key, np.full(t_all.size, np.nan))[k] = v
     return TransientResult(t=t_all, T_K=T_all, T_C={n: T_all[k] - _C0 for k, n in enumerate(net.nodes)},
                            sources_W=src_series, report=report, nfev=nfev[0], network=net)
 
