@@ -411,6 +411,36 @@ def _sources_c(scene, models, cs, roles, Ti, To, Toil):
     return src, r
 
 
+def _sources_batch(scene, models, cs, roles):
+    """:func:`_sources` for many node-temperature states at once (the output pass of a transient):
+    ``fn(t_s, T_K)`` with ``T_K`` node → array over the states [K] returns (list of source dicts,
+    report dict of arrays: P_W and P_<loss family> [W]); one vectorised loss evaluation."""
+    from .lubricant import T_VALID_C
+    from .thermal import split_losses
+
+    def fn(t_s, T_K):
+        lo, hi = T_VALID_C
+        Tb = np.asarray(T_K[roles["ball"]], float) - 273.15
+        Ti = np.clip(0.5 * (Tb + (np.asarray(T_K[roles["inner"]], float) - 273.15)), lo, hi)
+        To = np.clip(0.5 * (Tb + (np.asarray(T_K[roles["outer"]], float) - 273.15)), lo, hi)
+        Toil = np.clip(np.asarray(T_K[roles["oil"]], float) - 273.15, lo, hi)
+        csn = prepare_contacts(scene.bearing, scene.Fa, scene.Fr, np.full(Tb.size, scene.n_rpm), M=scene.M,
+                               rotating=scene.rotating, hertz_method=models["hertz"][0],
+                               centrifugal=models["high_speed"][0] != "yes", load=cs.load,
+                               control=models["kinematics"][0])
+        r = scene_losses(scene, T_inner_C=Ti, T_outer_C=To, T_oil_C=Toil, T_C=Toil, models=models, contacts=csn)
+        ci, co = r.contacts["inner"], r.contacts["outer"]
+        Pi = ci["P_rolling"] + ci["P_sliding"] + ci["P_pivoting"] + ci["P_hysteresis"]
+        Po = co["P_rolling"] + co["P_sliding"] + co["P_pivoting"] + co["P_hysteresis"]
+        drag = np.broadcast_to(r.breakdown_W["drag"], Tb.shape)
+        srcs = [split_losses(Pi[k], Po[k], drag[k], ball=roles["ball"], inner=roles["inner"],
+                             outer=roles["outer"], oil=roles["oil"]) for k in range(Tb.size)]
+        rep = {"P_W": np.broadcast_to(r.P_W, Tb.shape).astype(float),
+               **{f"P_{n}": np.broadcast_to(v, Tb.shape).astype(float) for n, v in r.breakdown_W.items()}}
+        return srcs, rep
+    return fn
+
+
 def _coupled_of(T_K, net, roles):
     """(inner contact, outer contact, oil) temperatures [K] from all node temperatures [K]."""
     ix = net.index
@@ -418,71 +448,100 @@ def _coupled_of(T_K, net, roles):
     return np.array([0.5 * (Tb + T_K[ix[roles["inner"]]]), 0.5 * (Tb + T_K[ix[roles["outer"]]]), T_K[ix[roles["oil"]]]])
 
 
-def _newton_coupled(scene, models, net, roles, cs1, tol_K, T_limit_K, maxiter=30, h=0.05):
-    """Newton on the three coupled temperatures x = (inner contact, outer contact, oil) [K].
-
-    One vectorised loss evaluation at x and x + h e_k (k = 1..3) and one sparse LU of the network
-    (conductances at the current node temperatures) with four right-hand sides give G(x) and its
-    Jacobian; Newton converges in a few iterations because the losses are smooth in temperature.
-    The Jacobian's eigenvalues are the loop gain (stability) for free.  Returns (x, T_nodes, iters,
-    residual, loop_gain, history) or None when it cannot decide (the caller then uses Anderson)."""
-    from scipy.sparse.linalg import splu
-
-    from .thermal.solve import assemble
+def _coupling_matrices(net, roles):
+    """C (3 × n_free): coupled temperatures (inner contact, outer contact, oil) = C T_free; S (n_free × 3):
+    free-node sources = S (P_inner contacts, P_outer contacts, P_drag) (½ ball, ½ race; drag to the oil)."""
     ix, free = net.index, ~net.fixed
-    Tfix = net.T_fixed_K
     nf = int(free.sum())
     fpos = -np.ones(len(net.nodes), int)
     fpos[free] = np.arange(nf)
-    C = np.zeros((3, nf))                       # coupled temperatures = C @ T_free
-    C[0, fpos[ix[roles["ball"]]]] += 0.5
-    C[0, fpos[ix[roles["inner"]]]] += 0.5
-    C[1, fpos[ix[roles["ball"]]]] += 0.5
-    C[1, fpos[ix[roles["outer"]]]] += 0.5
-    C[2, fpos[ix[roles["oil"]]]] += 1.0
-    S = np.zeros((nf, 4))                       # sources: columns (inner contacts, outer contacts, drag)
-    S[fpos[ix[roles["ball"]]], 0] += 0.5
-    S[fpos[ix[roles["ball"]]], 1] += 0.5
-    S[fpos[ix[roles["inner"]]], 0] += 0.5
-    S[fpos[ix[roles["outer"]]], 1] += 0.5
-    S[fpos[ix[roles["oil"]]], 2] += 1.0
+    b, i, o, oil = (fpos[ix[roles[k]]] for k in ("ball", "inner", "outer", "oil"))
+    C = np.zeros((3, nf))
+    C[0, b] += 0.5
+    C[0, i] += 0.5
+    C[1, b] += 0.5
+    C[1, o] += 0.5
+    C[2, oil] += 1.0
+    S = np.zeros((nf, 3))
+    S[b, 0] += 0.5
+    S[b, 1] += 0.5
+    S[i, 0] += 0.5
+    S[o, 1] += 0.5
+    S[oil, 2] += 1.0
+    return C, S
+
+
+def _losses_and_slopes(scene, models, cs4, x_K, h=0.05):
+    """Losses P = (inner contacts, outer contacts, drag) [W] at the coupled temperatures x [K] and
+    ∂P/∂x [W/K] (forward differences, step h [K]) from one vectorised evaluation at four
+    temperature triplets (``cs4``: the contacts with a batch of 4).  Temperatures are held in the
+    lubricant's validity range, as :func:`_sources_c` does."""
     from .lubricant import T_VALID_C
     lo, hi = T_VALID_C[0] + 273.15, T_VALID_C[1] + 273.15
+    x = np.asarray(x_K, float)
+    X = np.clip(np.column_stack([x, x[:, None] + h * np.eye(3)]), lo, hi) - 273.15   # 3 × 4 [°C]
+    r = scene_losses(scene, T_C=X[2], T_inner_C=X[0], T_outer_C=X[1], T_oil_C=X[2], models=models, contacts=cs4)
+    ci, co = r.contacts["inner"], r.contacts["outer"]
+    Pm = np.vstack([(ci["P_rolling"] + ci["P_sliding"] + ci["P_pivoting"] + ci["P_hysteresis"]).sum(-1),
+                    (co["P_rolling"] + co["P_sliding"] + co["P_pivoting"] + co["P_hysteresis"]).sum(-1),
+                    np.broadcast_to(r.breakdown_W["drag"], (4,))])                 # 3 × 4 [W]
+    return Pm, (Pm[:, 1:] - Pm[:, [0]]) / h
+
+
+def _newton_coupled(scene, models, net, roles, cs1, tol_K, T_limit_K, maxiter=30, h=0.05):
+    """Newton on the free-node temperatures T_f of the network coupled with the losses [K].
+
+    Residual (heat balance of each free node) [W] and its Jacobian:
+
+        R(T_f) = A_ff(T) T_f + A_fb(T) T_b − S P(x),   x = C T_f
+        ∂R/∂T_f = A_ff + ∂A/∂T·T − S (∂P/∂x) C
+
+    with x the three coupled temperatures (inner contact, outer contact — each the mean of ball and
+    race — and oil), P = (inner contacts, outer contacts, drag) [W] and S their split onto the nodes
+    (½ ball, ½ race; drag to the oil).  P and ∂P/∂x come from one vectorised loss evaluation at x
+    and x + h e_k (k = 1..3, ``cs1`` holds the contacts four times); ∂A/∂T·T from forward differences
+    of the temperature-dependent conductances (convection with fluid properties, radiation), so the
+    iteration converges quadratically.  Stops when the Newton step max |ΔT_f| ≤ tol_K (the step is
+    taken: the remaining error is of the order of the step squared).  The loop gain is the largest
+    real eigenvalue of dG/dx = C A_ff⁻¹ S ∂P/∂x (the losses through the network at the current
+    conductances, as :func:`thermobear.coupling.loop_gain` measures it).  Returns (x, T_nodes, iters,
+    residual, loop_gain, history) or None when it cannot decide (the caller then uses Anderson)."""
+    from .thermal.solve import _plan
+    plan = _plan(net)
+    free, fixed = ~net.fixed, net.fixed
+    C, S = _coupling_matrices(net, roles)
     T = net.initial_T_K()
-    x = C @ T[free]
+    Tb = T[fixed]
     history = []
     for it in range(1, maxiter + 1):
-        X = np.clip(np.column_stack([x, x[:, None] + h * np.eye(3)]), lo, hi) - 273.15   # 3 × 4 [°C]
-        r = scene_losses(scene, T_C=X[2], T_inner_C=X[0], T_outer_C=X[1], T_oil_C=X[2], models=models,
-                         contacts=cs1)
-        Pi = sum(r.contacts["inner"][k] for k in ("P_rolling", "P_sliding", "P_pivoting", "P_hysteresis")).sum(-1)
-        Po = sum(r.contacts["outer"][k] for k in ("P_rolling", "P_sliding", "P_pivoting", "P_hysteresis")).sum(-1)
-        Pd = np.broadcast_to(r.breakdown_W["drag"], Pi.shape)
-        Pf = S[:, :3] @ np.vstack([Pi, Po, Pd])            # nf × 4 free-node sources
-        A, _ = assemble(net, T)
-        Aff = A[free][:, free].tocsc()
-        rhs = Pf - (A[free][:, net.fixed] @ Tfix[net.fixed])[:, None]
-        Tf = splu(Aff).solve(rhs)
-        if not np.all(np.isfinite(Tf)):
+        x = C @ T[free]
+        Pm, dP = _losses_and_slopes(scene, models, cs1, x, h)
+        G, dG = plan.dconductances(T)
+        Aff, Afb = plan.blocks(G)
+        if not isinstance(Aff, np.ndarray):
+            Aff, Afb = Aff.toarray(), Afb.toarray()
+        Tf = T[free]
+        R = Aff @ Tf + Afb @ Tb - S @ Pm[:, 0]
+        Jr = Aff + plan.dAT(T, dG)[np.ix_(free, free)] - S @ dP @ C
+        try:
+            dT = np.linalg.solve(Jr, -R)
+            gain = float(np.max(np.linalg.eigvals(C @ np.linalg.solve(Aff, S @ dP)).real))
+        except np.linalg.LinAlgError:
             return None
-        Gx = C @ Tf                                         # 3 × 4: G(x), G(x + h e_k)
-        F = Gx[:, 0] - x
-        J = (Gx[:, 1:] - Gx[:, [0]]) / h                    # dG/dx
-        gain = float(np.max(np.linalg.eigvals(J).real))
-        T = T.copy()
-        T[free] = Tf[:, 0]
-        res = float(np.max(np.abs(F)))
-        history.append(dict(iteration=it, T_K=x.copy(), residual_K=res, mean_residual_K=float(np.mean(F)),
-                            P_W=float(Pi[0] + Po[0] + Pd[0]), step="newton"))
-        if res <= tol_K:
-            return x, T, it, res, gain, history
-        if gain >= 1.0 or np.max(Gx[:, 0]) > T_limit_K:
-            return None                                     # runaway suspected: the Anderson path decides
-        dx = np.linalg.solve(J - np.eye(3), -F)
-        step = float(np.max(np.abs(dx)))
+        if not (np.all(np.isfinite(dT)) and np.isfinite(gain)):
+            return None
+        step = float(np.max(np.abs(dT)))
         if step > 50.0:
-            dx *= 50.0 / step
-        x = x + dx
+            dT *= 50.0 / step
+        dx = C @ dT
+        history.append(dict(iteration=it, T_K=x.copy(), residual_K=step, mean_residual_K=float(np.mean(dx)),
+                            P_W=float(Pm[:, 0].sum()), step="newton"))
+        T = T.copy()
+        T[free] = Tf + dT
+        if step <= tol_K:
+            return C @ T[free], T, it, step, gain, history
+        if gain >= 1.0 or np.max(C @ T[free]) > T_limit_K:
+            return None                                     # runaway suspected: the Anderson path decides
     return None
 
 
@@ -659,6 +718,9 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
             T_C = {n: v - 273.15 for n, v in T_K.items()}
             src, r = _sources(sc, models, cs, roles, T_C)
             return src, {"P_W": float(r.P_W), **{f"P_{n}": float(v) for n, v in r.breakdown_W.items()}}
+
+        if contacts is None and models["losses"][0] == "local" and cs.batch == ():
+            sources._batch = _sources_batch(sc, models, cs, roles)
 
         if t_eval is None:
             seg = None
