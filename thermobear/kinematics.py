@@ -127,29 +127,7 @@ def ball_kinematics(omega_i, omega_o, alpha_i, alpha_o, D, dm, control: str = "o
         raise InputError("control", control, f"must be one of {', '.join(CONTROLS)}")
     wi, wo = np.asarray(omega_i, dtype=float), np.asarray(omega_o, dtype=float)
     ai, ao = np.asarray(alpha_i, dtype=float), np.asarray(alpha_o, dtype=float)
-    gp = D / dm
-    beta_given = beta
-    if beta is None:
-        if control == "outer":
-            beta = -np.arctan2(np.sin(ao), np.cos(ao) + gp)
-        elif control == "inner":
-            beta = -np.arctan2(np.sin(ai), np.cos(ai) - gp)
-        else:
-            beta = np.full(np.broadcast(ai, ao).shape, -np.pi / 2)
-    beta = np.asarray(beta, dtype=float)
-    # linear system  [ co   , (D/2) cos(ao+β) ] [ω_c]   [ co ω_o ]       co = (dm/2)(1 + γ' cos ao)
-    #                [ -ci  , (D/2) cos(ai+β) ] [ω_R] = [ -ci ω_i ]      ci = (dm/2)(1 − γ' cos ai)
-    co = 0.5 * dm * (1.0 + gp * np.cos(ao))
-    ci = 0.5 * dm * (1.0 - gp * np.cos(ai))
-    eo = 0.5 * D * np.cos(ao + beta)
-    ei = 0.5 * D * np.cos(ai + beta)
-    det = co * ei + ci * eo
-    if np.any(np.abs(det) < 1e-9 * dm * D):
-        raise InputError("control" if beta_given is None else "beta", control if beta_given is None else beta,
-                         "the ball axis is normal to both contacts (e.g. 'radial' control at a contact angle "
-                         "near 0): no rolling solution; use 'outer' or 'inner'")
-    omega_c = (co * wo * ei + ci * wi * eo) / det
-    omega_R = co * ci * (wo - wi) / det
+    omega_c, omega_R, beta, co, ci = _cage_spin(wi, wo, ai, ao, D, dm, control, beta)
     u_o = np.abs((wo - omega_c) * co)
     u_i = np.abs((wi - omega_c) * ci)
     spin_o = omega_R * np.sin(ao + beta) - (wo - omega_c) * np.sin(ao)
@@ -256,3 +234,33 @@ def caged_ball_kinematics(omega_i, omega_o, alpha_i, alpha_o, D, dm, omega_cage,
     f = _f
     return BallKinematics(omega_c=f(wc), omega_R=f(omega_R), beta=f(beta), u_i=f(u_i), u_o=f(u_o),
                           spin_i=f(spin_i), spin_o=f(spin_o), spin_roll_i=f(sr_i), spin_roll_o=f(sr_o))
+
+
+def _cage_spin(wi, wo, ai, ao, D, dm, control, beta=None):
+    """Cage speed ω_c, ball spin ω_R [rad/s], pitch β [rad] and the contact radii co, ci [m] of
+    :func:`ball_kinematics` (float arrays in, no input checks: the inner loop of the high-speed
+    load distribution calls it with validated arrays)."""
+    gp = D / dm
+    beta_given = beta
+    if beta is None:
+        if control == "outer":
+            beta = -np.arctan2(np.sin(ao), np.cos(ao) + gp)
+        elif control == "inner":
+            beta = -np.arctan2(np.sin(ai), np.cos(ai) - gp)
+        else:
+            beta = np.full(np.broadcast(ai, ao).shape, -np.pi / 2)
+    beta = np.asarray(beta, dtype=float)
+    # linear system  [ co   , (D/2) cos(ao+β) ] [ω_c]   [ co ω_o ]       co = (dm/2)(1 + γ' cos ao)
+    #                [ -ci  , (D/2) cos(ai+β) ] [ω_R] = [ -ci ω_i ]      ci = (dm/2)(1 − γ' cos ai)
+    co = 0.5 * dm * (1.0 + gp * np.cos(ao))
+    ci = 0.5 * dm * (1.0 - gp * np.cos(ai))
+    eo = 0.5 * D * np.cos(ao + beta)
+    ei = 0.5 * D * np.cos(ai + beta)
+    det = co * ei + ci * eo
+    if np.any(np.abs(det) < 1e-9 * dm * D):
+        raise InputError("control" if beta_given is None else "beta", control if beta_given is None else beta,
+                         "the ball axis is normal to both contacts (e.g. 'radial' control at a contact angle "
+                         "near 0): no rolling solution; use 'outer' or 'inner'")
+    omega_c = (co * wo * ei + ci * wi * eo) / det
+    omega_R = co * ci * (wo - wi) / det
+    return omega_c, omega_R, beta, co, ci

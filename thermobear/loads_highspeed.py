@@ -87,7 +87,7 @@ import numpy as np
 
 from .errors import InputError, NoConvergence, NoEquilibrium
 from .geometry import BallBearing
-from .kinematics import ball_kinematics
+from .kinematics import _cage_spin
 from .loads import STIFFNESS_MODES, LoadDistribution, load_distribution
 
 __all__ = ["HighSpeedExtras", "load_distribution_high_speed", "load_distribution_high_speed_full",
@@ -175,8 +175,10 @@ class _Problem:
         """Centrifugal force F_c [N] and gyroscopic moment M_g [N m] of each ball from its
         contact angles (Harris 2001 eqs 8.9, 8.34; kinematics of thermobear.kinematics)."""
         brg = self.brg
-        kin = ball_kinematics(self.omega[:, None], 0.0, a_i, a_o, brg.D, brg.dm, control=self.kin_control)
-        w_c, w_R, beta = (np.broadcast_to(v, a_i.shape) for v in (kin.omega_c, kin.omega_R, kin.beta))
+        w_c, w_R, beta = _cage_spin(self.omega[:, None], np.float64(0.0), a_i, a_o, brg.D, brg.dm,
+                                    self.kin_control)[:3]
+        if w_c.shape != a_i.shape:
+            w_c, w_R, beta = (np.broadcast_to(v, a_i.shape) for v in (w_c, w_R, beta))
         Fc = 0.5 * self.m * brg.dm * w_c**2
         Mg = self.J * w_R * w_c * np.sin(beta)
         return Fc, Mg, w_c, w_R, beta
@@ -313,12 +315,19 @@ def _newton(pb, x, g, tol, maxiter):
         lam = np.ones(n_t.shape)
         acc = np.zeros(n_t.shape, bool)
         best_x, best_g = x_t.copy(), g_t.copy()
+        best_st = None                              # states at the accepted trial points (reused below)
         for _ in range(30):
             tx = x_t + lam[:, None, None] * dx
             tg = g_t + lam[:, None] * dg
-            nt = sub.norm(sub.state(tx, tg))
+            st_try = sub.state(tx, tg)
+            nt = sub.norm(st_try)
             ok = (nt < (1.0 - 1e-4 * lam) * n_t) & ~acc & np.isfinite(nt)
             best_x[ok], best_g[ok] = tx[ok], tg[ok]
+            if best_st is None:
+                best_st = st_try
+            elif ok.any():
+                for k, v in best_st.items():
+                    v[ok] = st_try[k][ok]
             acc |= ok
             if acc.all():
                 break
@@ -329,7 +338,10 @@ def _newton(pb, x, g, tol, maxiter):
         x, g = x.copy(), g.copy()
         x[todo], g[todo] = best_x, best_g
         prev = norm.copy()
-        st = pb.state(x, g)
+        if acc.all() and todo.all():
+            st = best_st                            # every case took an evaluated trial point
+        else:
+            st = pb.state(x, g)
         norm = pb.norm(st)
         norm = np.where(np.isfinite(norm), norm, np.inf)
         floor |= todo & (norm <= 1e-9) & (norm > 0.5 * prev)
