@@ -87,7 +87,7 @@ import numpy as np
 
 from .errors import InputError, NoConvergence, NoEquilibrium
 from .geometry import BallBearing
-from .kinematics import _cage_spin
+from .kinematics import _cage_spin, common_cage_speed
 from .loads import STIFFNESS_MODES, LoadDistribution, load_distribution
 
 __all__ = ["HighSpeedExtras", "load_distribution_high_speed", "load_distribution_high_speed_full",
@@ -171,17 +171,32 @@ class _Problem:
         dQ = np.where(pos, 1.5 * K * np.sqrt(dp), self.k_eps)
         return Q, dQ
 
-    def inertia(self, a_i, a_o):
+    def inertia(self, a_i, a_o, Qi, Qo, w_cage=None):
         """Centrifugal force F_c [N] and gyroscopic moment M_g [N m] of each ball from its
-        contact angles (Harris 2001 eqs 8.9, 8.34; kinematics of thermobear.kinematics)."""
+        contact angles and loads (Harris 2001 eqs 8.9, 8.34; kinematics of thermobear.kinematics).
+
+        One rigid cage: every ball orbits at the cage speed, the Q_i-weighted mean of the balls'
+        no-slip orbital speeds (:func:`thermobear.kinematics.common_cage_speed`), and spins at the
+        load-weighted least-squares ω_R of :func:`thermobear.kinematics.caged_ball_kinematics`.
+        ``w_cage`` (nb,) freezes the cage speed (the Jacobian's finite differences: the cage
+        couples the balls only through a weighted mean, left out of the Newton matrix)."""
         brg = self.brg
-        w_c, w_R, beta = _cage_spin(self.omega[:, None], np.float64(0.0), a_i, a_o, brg.D, brg.dm,
-                                    self.kin_control)[:3]
-        if w_c.shape != a_i.shape:
-            w_c, w_R, beta = (np.broadcast_to(v, a_i.shape) for v in (w_c, w_R, beta))
-        Fc = 0.5 * self.m * brg.dm * w_c**2
-        Mg = self.J * w_R * w_c * np.sin(beta)
-        return Fc, Mg, w_c, w_R, beta
+        w_c, w_R, beta, co, ci = _cage_spin(self.omega[:, None], np.float64(0.0), a_i, a_o, brg.D, brg.dm,
+                                            self.kin_control)
+        qi, qo = np.maximum(Qi, 0.0), np.maximum(Qo, 0.0)
+        if w_cage is None:
+            w_cage = common_cage_speed(np.broadcast_to(w_c, a_i.shape), qi)
+        wc = np.asarray(w_cage)[:, None] * np.ones_like(a_i)
+        eo = 0.5 * brg.D * np.cos(a_o + beta)
+        ei = 0.5 * brg.D * np.cos(a_i + beta)
+        den = qo * eo * eo + qi * ei * ei
+        num = -qo * eo * co * wc - qi * ei * ci * (self.omega[:, None] - wc)
+        w_R = np.where(den > 0, num / np.where(den > 0, den, 1.0), w_R)
+        Fc = 0.5 * self.m * brg.dm * wc**2
+        Mg = self.J * w_R * wc * np.sin(beta)
+        if beta.shape != a_i.shape:
+            beta = beta * np.ones_like(a_i)
+        return Fc, Mg, wc, w_R, beta
 
     def state(self, x, g):
         """Everything at scaled unknowns x = X/A (nb, Z, 2) and g (nb, 3)."""
@@ -200,7 +215,7 @@ class _Problem:
             Ki, Ko = self.Ki0, self.Ko0
         Qi, dQi = self._contact_force(dl_i, Ki)
         Qo, dQo = self._contact_force(dl_o, Ko)
-        Fc, Mg, w_c, w_R, beta = self.inertia(a_i, a_o)
+        Fc, Mg, w_c, w_R, beta = self.inertia(a_i, a_o, Qi, Qo)
         Ti, To = self.lam_i * Mg / brg.D, self.lam_o * Mg / brg.D
         e_i = n_i @ _P.T
         e_o = n_o @ _P.T
@@ -248,8 +263,9 @@ class _Problem:
         # dα_i/dX = −e_i/d_i, dα_i/d(A1, A2) = e_i/d_i, dα_o/dX = e_o/d_o
         h = 1e-7
         a_i, a_o = st["a_i"], st["a_o"]
-        Fc_i, Mg_i = self.inertia(a_i + h, a_o)[:2]
-        Fc_o, Mg_o = self.inertia(a_i, a_o + h)[:2]
+        wcg = st["w_c"][:, 0]
+        Fc_i, Mg_i = self.inertia(a_i + h, a_o, st["Qi"], st["Qo"], wcg)[:2]
+        Fc_o, Mg_o = self.inertia(a_i, a_o + h, st["Qi"], st["Qo"], wcg)[:2]
         e_i, e_o = st["n_i"] @ _P.T, st["n_o"] @ _P.T
         D = self.brg.D
         drb_dMg = (self.lam_i * e_i - self.lam_o * e_o) / D                       # (nb, Z, 2)
