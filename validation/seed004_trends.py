@@ -153,13 +153,17 @@ def main() -> int:
           "temperature and runs its model with the measured IR and OR temperatures as boundary conditions (§4.5): the "
           "balls are free and run hotter at higher speed and load. `thermal.fixed_C` does the same here (rows marked "
           "\"rings at\"); \"uniform\" forces the balls to the ring temperature and is shown for contrast.",
-          "* **Radial load.** Balls outside the load zone follow the cage (one cage speed for all balls) and roll on the "
-          "outer race, loaded by their centrifugal force; their inner contacts carry no load and lose nothing. The "
-          "heavier-loaded balls gain what the unloaded inner contacts lose: the power stays within the spreads above. "
+          "* **Radial load.** All balls orbit at one cage speed (kinematics and the high-speed ball equilibrium): "
+          "a ball outside the load zone rolls on the outer race, pressed by its centrifugal force at the cage speed, "
+          "and its inner contact — a gap — carries no load and, in the Biboulet/Houpert forms, no rolling force. More "
+          "radial load moves load onto fewer balls: the unloaded inner contacts' losses vanish and the power falls. "
           "(Before the common cage speed, the unloaded balls' gap geometry — an inner \"contact angle\" of 60–75° — "
-          "set their orbital speed 1.7× the cage's, and the power rose 14 %.) The high-speed ball equilibrium "
-          "(loads_highspeed) still uses each ball's own orbital speed for its centrifugal force, which loads the outer "
-          "contacts of unloaded balls ~40 % more than the cage speed would.",
+          "set their orbital speed 1.7× the cage's, which raised their outer-contact speed, load and loss, and the "
+          "power rose 14 %.) Seed 004 keeps low-loaded balls in IVR with a finite force (its Fig. 19). A flooded gap "
+          "does carry a hydrodynamic rolling force: for a rigid iso-viscous contact the Moes H_RI asymptote and "
+          "Biboulet's IVR force give F_R ∝ η u R_x (R_x/h)^{1/6}, nearly independent of the gap h — enough to hold "
+          "the power flat. Modelling it needs the film in the load distribution (the dry one has the gap → 0 at the "
+          "edge of the load zone, where that force diverges): left open.",
           f"* **Speed.** Drag goes ×{drag_r[1] / drag_r[0]:.1f} for ×2 speed (∝ ω_c³ × Parker's X ∝ 1/n) against "
           "×3.1–3.4 for hydrodynamic rolling (F_R ∝ U^0.64–0.75): the drag share (§1, 3× the paper's) is what lifts "
           "the ratio above 3 at 50–70 °C.",
