@@ -236,3 +236,20 @@ def test_no_load_at_speed_presses_balls_on_the_outer_race():
     assert np.all(ld.Q_i == 0.0)
     assert np.allclose(ld.Q_o, ex.Fc, rtol=1e-9)
     assert ld.delta_a == 0.0 and ld.delta_r == 0.0
+
+
+def test_one_cage_speed_and_unloaded_balls_pressed_by_their_centrifugal_force():
+    # combined load at speed: the balls' own no-slip orbital speeds differ by > 50 % between the
+    # loaded and the lightly loaded balls; a rigid cage makes them orbit together, and a ball with
+    # an open inner contact rests on the outer race with its centrifugal force at the cage speed
+    b = tb.bearing("7210")
+    ld, ex = load_distribution_high_speed_full(b, Fa=450.0, Fr=750.0, n_rpm=4800.0)
+    assert np.ptp(ex.omega_c) <= 1e-12 * np.max(ex.omega_c)
+    free = ld.Q_i == 0
+    assert free.any()
+    Fc = 0.5 * b.ball_mass * b.dm * ex.omega_c[free] ** 2
+    np.testing.assert_allclose(ld.Q_o[free] * np.cos(ld.alpha_o[free]), Fc, rtol=0.02)
+    # the cage speed is the load-weighted mean of the loaded balls' own speeds: between their extremes
+    from thermobear.kinematics import ball_kinematics
+    own = ball_kinematics(4800 * np.pi / 30, 0.0, ld.alpha_i, ld.alpha_o, b.D, b.dm).omega_c
+    assert own[~free].min() <= ex.omega_c[0] <= own[~free].max()

@@ -56,17 +56,21 @@ O_i, hence the couple term):
 (Harris 2001 §8; PHYSICS.md §3.3 global equations with M_g,Harris = −M_g).  With
 outer-raceway control every M_g term leaves the global equations.
 
-Kinematics (ω_c, ω_R, β per ball) come from each ball's current α_i, α_o through
-:func:`thermobear.kinematics.ball_kinematics` and are iterated with the mechanics:
-each Newton step freezes F_c and M_g at the current iterate and every residual is
-evaluated with kinematics recomputed there, so a converged residual is the fixed
-point of the coupled problem.
+Kinematics: one rigid cage.  Every ball orbits at the cage speed ω_c, the Q_i-weighted mean of
+the balls' own no-slip orbital speeds (:func:`thermobear.kinematics.ball_kinematics` at each
+ball's current α_i, α_o; :func:`thermobear.kinematics.common_cage_speed`), and spins at the
+load-weighted least-squares ω_R of :func:`thermobear.kinematics.caged_ball_kinematics`.  Harris's
+model lets each ball orbit at its own speed; under combined load at speed those differ by 50 %
+and more, and a ball outside the load zone would orbit at the speed its gap's "contact angle"
+implies (with a centrifugal force to match).  Every residual is evaluated with the kinematics
+recomputed at the iterate, so a converged residual is the fixed point of the coupled problem.
 
 Solver: Newton on the 2Z + 3 unknowns (X per ball, δa, δr, θ) — the 4Z + 3 of Harris with
 δi, δo eliminated exactly — vectorised over the balls and a batch of load cases; the
 per-ball 2×2 blocks are eliminated in closed form (Schur complement) so only a 3×3 global
 system is solved per case.  The Jacobian includes the dependence of F_c and M_g on the
-contact angles (finite differences in α_i, α_o), so convergence is quadratic; steps are
+contact angles (finite differences in α_i, α_o) and, through the cage speed, on every ball (a
+rank-one term added by Sherman–Morrison), so convergence is quadratic; steps are
 capped at 0.1 A and damped by a backtracking line search; starting values from
 :func:`thermobear.loads.load_distribution` with each ball pushed out by its F_c.  A case
 that fails is re-solved by continuation in speed; if equilibria exist up to some speed
@@ -171,21 +175,31 @@ class _Problem:
         dQ = np.where(pos, 1.5 * K * np.sqrt(dp), self.k_eps)
         return Q, dQ
 
+    def free_speeds(self, a_i, a_o):
+        """Each ball's own no-slip orbital speed ω_c [rad/s], ball speed ω_R, pitch β and the contact
+        radii c_o, c_i (thermobear.kinematics.ball_kinematics), broadcast to the balls."""
+        brg = self.brg
+        w_c, w_R, beta, co, ci = _cage_spin(self.omega[:, None], np.float64(0.0), a_i, a_o, brg.D, brg.dm,
+                                            self.kin_control)
+        one = np.ones_like(a_i)
+        return w_c * one, w_R * one, beta * one, co * one, ci * one
+
     def inertia(self, a_i, a_o, Qi, Qo, w_cage=None):
         """Centrifugal force F_c [N] and gyroscopic moment M_g [N m] of each ball from its
         contact angles and loads (Harris 2001 eqs 8.9, 8.34; kinematics of thermobear.kinematics).
 
         One rigid cage: every ball orbits at the cage speed, the Q_i-weighted mean of the balls'
-        no-slip orbital speeds (:func:`thermobear.kinematics.common_cage_speed`), and spins at the
-        load-weighted least-squares ω_R of :func:`thermobear.kinematics.caged_ball_kinematics`.
-        ``w_cage`` (nb,) freezes the cage speed (the Jacobian's finite differences: the cage
-        couples the balls only through a weighted mean, left out of the Newton matrix)."""
+        own no-slip orbital speeds (:func:`thermobear.kinematics.common_cage_speed`), and spins at
+        the load-weighted least-squares ω_R of :func:`thermobear.kinematics.caged_ball_kinematics`
+        (Harris's model lets each ball orbit at its own speed; with combined loads at speed those
+        differ by 50 % and more between the loaded and the lightly loaded balls).  ``w_cage`` (nb,)
+        freezes the cage speed (finite differences at fixed cage speed; the cage's own dependence
+        on the balls enters the Newton step as a rank-one term, :meth:`newton_step`)."""
         brg = self.brg
-        w_c, w_R, beta, co, ci = _cage_spin(self.omega[:, None], np.float64(0.0), a_i, a_o, brg.D, brg.dm,
-                                            self.kin_control)
+        w_c, w_R, beta, co, ci = self.free_speeds(a_i, a_o)
         qi, qo = np.maximum(Qi, 0.0), np.maximum(Qo, 0.0)
         if w_cage is None:
-            w_cage = common_cage_speed(np.broadcast_to(w_c, a_i.shape), qi)
+            w_cage = common_cage_speed(w_c, qi)
         wc = np.asarray(w_cage)[:, None] * np.ones_like(a_i)
         eo = 0.5 * brg.D * np.cos(a_o + beta)
         ei = 0.5 * brg.D * np.cos(a_i + beta)
@@ -194,8 +208,6 @@ class _Problem:
         w_R = np.where(den > 0, num / np.where(den > 0, den, 1.0), w_R)
         Fc = 0.5 * self.m * brg.dm * wc**2
         Mg = self.J * w_R * wc * np.sin(beta)
-        if beta.shape != a_i.shape:
-            beta = beta * np.ones_like(a_i)
         return Fc, Mg, wc, w_R, beta
 
     def state(self, x, g):
@@ -216,6 +228,7 @@ class _Problem:
         Qi, dQi = self._contact_force(dl_i, Ki)
         Qo, dQo = self._contact_force(dl_o, Ko)
         Fc, Mg, w_c, w_R, beta = self.inertia(a_i, a_o, Qi, Qo)
+        w_cage = w_c[:, 0].copy()
         Ti, To = self.lam_i * Mg / brg.D, self.lam_o * Mg / brg.D
         e_i = n_i @ _P.T
         e_o = n_o @ _P.T
@@ -230,7 +243,7 @@ class _Problem:
         s = self.scale
         return dict(A1=A1, A2=A2, X1=X1, X2=X2, d_i=d_i, d_o=d_o, n_i=n_i, n_o=n_o, a_i=a_i, a_o=a_o,
                     dl_i=dl_i, dl_o=dl_o, Qi=Qi, Qo=Qo, dQi=dQi, dQo=dQo, Ti=Ti, To=To, Fc=Fc, Mg=Mg,
-                    w_c=w_c, w_R=w_R, beta=beta, r_b=r_b / s[:, None, None], r_g=r_g / s[:, None])
+                    w_c=w_c, w_R=w_R, beta=beta, w_cage=w_cage, r_b=r_b / s[:, None, None], r_g=r_g / s[:, None])
 
     def norm(self, st):
         nb = np.max(np.abs(st["r_b"]), axis=(1, 2))
@@ -263,7 +276,7 @@ class _Problem:
         # dα_i/dX = −e_i/d_i, dα_i/d(A1, A2) = e_i/d_i, dα_o/dX = e_o/d_o
         h = 1e-7
         a_i, a_o = st["a_i"], st["a_o"]
-        wcg = st["w_c"][:, 0]
+        wcg = st["w_cage"]
         Fc_i, Mg_i = self.inertia(a_i + h, a_o, st["Qi"], st["Qo"], wcg)[:2]
         Fc_o, Mg_o = self.inertia(a_i, a_o + h, st["Qi"], st["Qo"], wcg)[:2]
         e_i, e_o = st["n_i"] @ _P.T, st["n_o"] @ _P.T
@@ -296,16 +309,46 @@ class _Problem:
         Binv[..., 0, 1], Binv[..., 1, 0] = -Jbb[..., 0, 1] / det, -Jbb[..., 1, 0] / det
         JgbB = Jgb @ Binv
         S = Jgg - (JgbB @ Jbg).sum(1)
-        r_b, r_g = st["r_b"], st["r_g"]
-        rhs = -r_g + (JgbB @ r_b[..., None])[..., 0].sum(1)
         act = self.free_g
         S = S * (act[:, :, None] * act[:, None, :]) + np.eye(3)[None] * (1.0 - act)[:, :, None]
-        rhs = rhs * act
         sd = np.abs(np.linalg.det(S))
         S = np.where((sd < 1e-300)[:, None, None], S + 1e-6 * np.eye(3)[None], S)
-        dg = np.linalg.solve(S, rhs[..., None])[..., 0]
-        dx = (Binv @ (-r_b - (Jbg @ dg[:, None, :, None])[..., 0])[..., None])[..., 0]
-        return dx, dg
+
+        def solve(r_b, r_g):                                # (dx, dg) = −J_block⁻¹ (r_b, r_g)
+            rhs = (-r_g + (JgbB @ r_b[..., None])[..., 0].sum(1)) * act
+            dg = np.linalg.solve(S, rhs[..., None])[..., 0]
+            dx = (Binv @ (-r_b - (Jbg @ dg[:, None, :, None])[..., 0])[..., None])[..., 0]
+            return dx, dg
+
+        dx, dg = solve(st["r_b"], st["r_g"])
+        # the cage: every ball's F_c and M_g depend on the cage speed, a weighted mean over all balls —
+        # a rank-one term a bᵀ of the Jacobian (a = ∂r/∂ω_cage, b = ∂ω_cage/∂(x, g)), added by
+        # Sherman–Morrison: dz = dz0 − w (b·dz0)/(1 + b·w), w = J_block⁻¹ a
+        hw = 1e-7 * np.maximum(wcg, 1.0)
+        Fc_w, Mg_w = self.inertia(a_i, a_o, st["Qi"], st["Qo"], wcg + hw)[:2]
+        dFw, dMw = (Fc_w - st["Fc"]) / hw[:, None], (Mg_w - st["Mg"]) / hw[:, None]
+        s1 = self.scale[:, None, None]
+        a_b = drb_dMg * dMw[..., None] / s1
+        a_b[..., 1] += dFw / self.scale[:, None]
+        a_g = (drg_dMg * dMw[..., None]).sum(1) / self.scale[:, None] * act
+        w_own = self.free_speeds(a_i, a_o)[0]
+        dw_ai = (self.free_speeds(a_i + h, a_o)[0] - w_own) / h
+        dw_ao = (self.free_speeds(a_i, a_o + h)[0] - w_own) / h
+        q = np.maximum(st["Qi"], 0.0)
+        qs = q.sum(1, keepdims=True)
+        has = qs > 0
+        wgt = np.where(has, q / np.where(has, qs, 1.0), 1.0 / q.shape[1])
+        c_q = np.where(has & (st["Qi"] > 0), (w_own - wcg[:, None]) / np.where(has, qs, 1.0), 0.0)
+        c_ai, c_ao = wgt * dw_ai, wgt * dw_ao
+        dQn = (c_q * st["dQi"])[..., None] * st["n_i"]                          # via Q_i: dQ_i/dA = dQ_i n_i
+        b_x = A * (-c_ai[..., None] * gi + c_ao[..., None] * go - dQn)           # per scaled x
+        b_g = A * ((c_ai[..., None] * gi + dQn)[..., None, :] @ Wt)[..., 0, :].sum(1) * act
+        wx, wg = solve(-a_b, -a_g)
+        bz = (b_x * dx).sum((1, 2)) + (b_g * dg).sum(1)
+        bw = (b_x * wx).sum((1, 2)) + (b_g * wg).sum(1)
+        den = 1.0 + bw
+        f = np.where(np.abs(den) > 1e-12, bz / np.where(np.abs(den) > 1e-12, den, 1.0), 0.0)
+        return dx - f[:, None, None] * wx, dg - f[:, None] * wg
 
 
 def _newton(pb, x, g, tol, maxiter):
