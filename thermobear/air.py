@@ -36,6 +36,26 @@ def _table():
     return CubicSpline(T, np.column_stack([np.asarray(props[k], float) for k in _KEYS]))   # one spline, 4 columns
 
 
+@lru_cache(maxsize=1)
+def _scalar_table():
+    """The spline's polynomial pieces as Python floats, per 1 K interval: (c0, c1, c2, c3) per
+    property, v = c3 + c2 s + c1 s² + c0 s³ with s = T − T_i (the order in which scipy's PPoly sums)."""
+    sp = _table()
+    c = sp.c                                   # (4, n_intervals, 4 properties)
+    return [tuple(tuple(float(c[m, i, q]) for m in range(4)) for q in range(4)) for i in range(c.shape[1])]
+
+
+def _air_scalar(T):
+    """Air properties at one temperature [K] inside the table (rho, mu, k, cp), evaluated as
+    :func:`_table`'s spline does, without the array machinery."""
+    tab = _scalar_table()
+    i = min(int(T - T_RANGE_K[0]), len(tab) - 1)
+    s = T - (T_RANGE_K[0] + i)
+    s2 = s * s
+    s3 = s2 * s
+    return tuple(c3 + c2 * s + c1 * s2 + c0 * s3 for c0, c1, c2, c3 in tab[i])
+
+
 def air_properties(T_K, p_Pa=P_ATM):
     r"""Dry-air properties [SI] at temperature ``T_K`` [K] and pressure ``p_Pa`` [Pa].
 
@@ -50,6 +70,9 @@ def air_properties(T_K, p_Pa=P_ATM):
     >>> round(p["rho"], 3), round(p["k"], 4), round(p["Pr"], 3)
     (1.177, 0.0264, 0.707)
     """
+    if isinstance(T_K, (float, np.floating)) and p_Pa == P_ATM and T_RANGE_K[0] <= T_K <= T_RANGE_K[1]:
+        rho, mu, k, cp = _air_scalar(float(T_K))        # one temperature (thermal elements): no arrays
+        return {"rho": rho, "mu": mu, "k": k, "cp": cp, "nu": mu / rho, "Pr": mu * cp / k}
     T = np.asarray(T_K, dtype=float)
     if np.any(~np.isfinite(T)) or np.any(T < T_RANGE_K[0]) or np.any(T > T_RANGE_K[1]):
         raise InputError("T_K", T_K, f"air properties are provided for {T_RANGE_K[0]:g}..{T_RANGE_K[1]:g} K")

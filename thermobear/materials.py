@@ -5,7 +5,10 @@ with its unit in the key and its source in a comment).
 """
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
 
 import numpy as np
 
@@ -53,22 +56,44 @@ class Material:
                 raise InputError(f"material[{self.name}].{fld}", v, "must be > 0")
 
 
+@lru_cache(maxsize=8)
+def _names(folder: str, mtime_ns: int) -> tuple:
+    return tuple(names_in(Path(folder)))
+
+
 def material_names() -> list[str]:
-    """Names of the bundled materials."""
-    return names_in(data_dir("materials") / "solids")
+    """Names of the bundled materials (the folder is listed again only when it changed: a thermal
+    network resolves a material name per element, for every operating point).
+
+    >>> "aisi-52100" in material_names()
+    True
+    """
+    folder = _solids_dir()
+    return list(_names(folder, os.stat(folder).st_mtime_ns))
+
+
+@lru_cache(maxsize=1)
+def _solids_dir() -> str:
+    return str(data_dir("materials") / "solids")
+
+
+@lru_cache(maxsize=64)
+def _material(name: str) -> Material:
+    d = lookup("materials", "solids", name, "material")
+    return Material(E=float(d["E_Pa"]), nu=float(d["nu"]), rho=float(d["rho_kg_m3"]),
+                    k=d.get("k_W_mK"), cp=d.get("cp_J_kgK"), name=d.get("name", name))
 
 
 def material(name: str) -> Material:
-    """Bundled material by name (``aisi-52100``, ``m50``, ``si3n4``).
+    """Bundled material by name (``aisi-52100``, ``m50``, ``si3n4``); read once per name
+    (:class:`Material` is immutable, so the same object is returned every time).
 
     >>> material("aisi-52100").E
     210000000000.0
     """
     if isinstance(name, Material):
         return name
-    d = lookup("materials", "solids", str(name), "material")
-    return Material(E=float(d["E_Pa"]), nu=float(d["nu"]), rho=float(d["rho_kg_m3"]),
-                    k=d.get("k_W_mK"), cp=d.get("cp_J_kgK"), name=d.get("name", name))
+    return _material(str(name))
 
 
 def reduced_modulus(m1: Material, m2: Material) -> float:
