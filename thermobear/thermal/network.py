@@ -126,6 +126,103 @@ class _Evaluator:
         return v
 
 
+_NUM_TYPES = (int, float, np.floating, np.integer, np.ndarray)
+
+
+def _compile(node, as_num: bool):
+    """The expression tree as nested closures ``f(ev)`` (``ev`` an :class:`_Evaluator`, for the
+    context and the error messages): the checks and messages of :meth:`_Evaluator.visit` /
+    :meth:`_Evaluator.num`, in the same order, without walking the tree again at every evaluation
+    (networks are rebuilt for every operating point)."""
+    f = _compile_visit(node)
+    if not as_num:
+        return f
+    src = None
+
+    def num(ev):
+        v = f(ev)
+        if isinstance(v, (bool, str)) or not isinstance(v, _NUM_TYPES):
+            ev.fail(f"'{src or ast.unparse(node)}' is not a number")
+        return v
+    return num
+
+
+def _compile_visit(node):
+    if isinstance(node, ast.Constant):
+        if isinstance(node.value, bool) or not isinstance(node.value, (int, float)):
+            msg = f"only numbers are allowed as constants, not {node.value!r}"
+            return lambda ev: ev.fail(msg)
+        val = float(node.value)
+        return lambda ev: val
+    if isinstance(node, ast.BinOp) and type(node.op) in _BINOPS:
+        fa, fb, op = _compile(node.left, True), _compile(node.right, True), _BINOPS[type(node.op)]
+
+        def binop(ev):
+            a, b = fa(ev), fb(ev)
+            try:
+                return op(a, b)
+            except (ZeroDivisionError, OverflowError, ValueError) as exc:
+                ev.fail(f"cannot be evaluated: {exc}")
+        return binop
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
+        fo = _compile(node.operand, True)
+        if isinstance(node.op, ast.USub):
+            return lambda ev: -fo(ev)
+        return lambda ev: +fo(ev)
+    if isinstance(node, ast.Name):
+        name = node.id
+        if name in _CONSTS:
+            c = _CONSTS[name]
+            return lambda ev: c
+
+        def name_(ev):
+            v = _get(ev.ctx, name)
+            if v is _MISSING:
+                ev.fail(f"unknown name '{name}'; the context provides: "
+                        + ", ".join(sorted(map(str, ev.ctx.keys())) if isinstance(ev.ctx, Mapping) else []))
+            return v
+        return name_
+    if isinstance(node, ast.Attribute):
+        attr = node.attr
+        if attr.startswith("_"):
+            msg = f"private attribute '{attr}' is not allowed"
+            return lambda ev: ev.fail(msg)
+        fbase = _compile_visit(node.value)
+
+        def attr_(ev):
+            base = fbase(ev)
+            if isinstance(base, (float, int, np.ndarray)):
+                ev.fail(f"attribute '{attr}' of a number is not allowed")
+            v = _get(base, attr)
+            if v is _MISSING:
+                ev.fail(f"unknown name '{ast.unparse(node)}' in the context")
+            return v
+        return attr_
+    if isinstance(node, ast.Call):
+        if not isinstance(node.func, ast.Name) or node.func.id not in _FUNCS or node.keywords:
+            msg = f"only the functions {', '.join(sorted(_FUNCS))} may be called"
+            return lambda ev: ev.fail(msg)
+        fn, fargs = _FUNCS[node.func.id], [_compile(a, True) for a in node.args]
+
+        def call(ev):
+            args = [g(ev) for g in fargs]
+            try:
+                with np.errstate(all="raise"):
+                    return fn(*args)
+            except (ValueError, TypeError, FloatingPointError, OverflowError) as exc:
+                ev.fail(f"cannot be evaluated: {exc}")
+        return call
+    msg = (f"'{type(node).__name__}' is not allowed (numbers, names, + - * / **, "
+           f"{', '.join(sorted(_FUNCS))}, pi)")
+    return lambda ev: ev.fail(msg)
+
+
+@lru_cache(maxsize=1024)
+def _compiled(expr: str):
+    """:func:`_compile` of a parsed expression string, cached per string (raises SyntaxError)."""
+    return _compile(_parse(expr).body, True)
+
+
 @lru_cache(maxsize=1024)
 def _parse(expr: str):
     """Parsed expression (cached per string: networks are rebuilt for every operating point; the
@@ -162,11 +259,14 @@ def evaluate(expr, context=None, field="expression"):
     if not isinstance(expr, str) or len(expr) > 400:
         raise InputError(field, expr, "a number or an arithmetic expression string (≤ 400 characters)")
     try:
-        tree = _parse(expr)
+        fn = _compiled(expr)
     except SyntaxError as exc:
         raise InputError(field, expr, f"not a valid arithmetic expression ({exc.msg})") from None
-    ev = _Evaluator(context, field, expr)
-    v = ev.num(tree.body)
+    v = fn(_Evaluator(context, field, expr))
+    if isinstance(v, float):                      # also numpy float64
+        if not math.isfinite(v):
+            raise InputError(field, expr, "evaluates to a non-finite value")
+        return float(v)
     v = float(v) if np.ndim(v) == 0 else np.asarray(v, dtype=float)
     if not np.all(np.isfinite(v)):
         raise InputError(field, expr, "evaluates to a non-finite value")
@@ -230,7 +330,13 @@ def evaluate_object(expr, ctx, fld):
         raise InputError(fld, expr, "a material name or a dotted context name") from None
     if not isinstance(tree.body, (ast.Name, ast.Attribute)):
         raise InputError(fld, expr, "a material name or a dotted context name")
-    return _Evaluator(ctx, fld, expr).visit(tree.body)
+    return _compiled_object(expr)(_Evaluator(ctx, fld, expr))
+
+
+@lru_cache(maxsize=256)
+def _compiled_object(expr: str):
+    """:func:`_compile` of a (dotted) name, any object as the result; cached per string."""
+    return _compile(_parse(expr).body, False)
 
 
 @dataclass

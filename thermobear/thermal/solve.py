@@ -221,13 +221,18 @@ class _Plan:
             G[k] = g
         return G
 
-    def dconductances(self, T_K, h_K: float = 1e-3):
+    def dconductances(self, T_K, h_K: float = 1e-3, nodes=None):
         """Conductances G [W/K] and their forward-difference derivatives with respect to the
-        temperatures of the nodes each element depends on: list of (element, node, dG/dT [W/K²])."""
+        temperatures of the nodes each element depends on: list of (element, node, dG/dT [W/K²]);
+        ``nodes`` (indices) restricts the derivatives to those nodes (e.g. the free ones: a Newton
+        step on the free temperatures needs no derivative by a fixed one)."""
         T = np.array(T_K, dtype=float)
         G = self.conductances(T)
         out = []
+        want = None if nodes is None else {int(m) for m in nodes}
         for m in sorted({m for k in self.dep for m in self.nodes_of[k]}):
+            if want is not None and m not in want:
+                continue
             Tp = T.copy()
             Tp[m] += h_K
             shared: dict = {}                     # one property evaluation per perturbed node
