@@ -118,3 +118,169 @@ def test_cached_parse_keeps_contexts_apart():
     expr = "bearing.bore / 2 + 1e-3"
     assert evaluate(expr, {"bearing": {"bore": 0.05}}) == pytest.approx(0.026)
     assert evaluate(expr, {"bearing": {"bore": 0.03}}) == pytest.approx(0.016)
+
+
+# --------------------------------------------------------------------------- fused loss kernel
+from thermobear.film import film_thickness, lubrication_regime                    # noqa: E402
+from thermobear.friction.rolling import rolling_force                              # noqa: E402
+from thermobear.friction.sliding import mixed_friction_ianus                       # noqa: E402
+from thermobear.losses import (_contact_powers, _repeat_contacts, _rolling_auto_smooth,  # noqa: E402
+                               evaluate_losses, prepare_contacts)
+
+
+def _contacts_spread():
+    """7210 contacts over loads (balls outside the load zone: Q_i = 0), speeds (down to 0) and a
+    temperature spread that crosses the IVR / PVR / EHL boundaries."""
+    s = _scene()
+    n = np.array([0.0, 30.0, 400.0, 3200.0, 8070.0, 12000.0])
+    cs = prepare_contacts(s.bearing, Fa=np.array([450.0, 60.0, 450.0, 100.0, 900.0, 300.0]),
+                          Fr=np.array([325.0, 750.0, 0.0, 900.0, 25.0, 1500.0]), n_rpm=n)
+    return s, cs
+
+
+def _public_path(cs, oil, Ts, sigma, mu_e=0.05, mu_a=0.11):
+    """The per-contact quantities computed with the checked public functions, side by side."""
+    Ep = cs.brg.E_prime
+    out = {}
+    for side in ("inner", "outer"):
+        sd = cs.sides[side]
+        eta, alpha_p = oil.eta(Ts[side]), oil.alpha_p_at(Ts[side])
+        args = (sd["Q"], sd["Rx"], sd["Ry"], sd["u"], eta, alpha_p, Ep)
+        h_min = film_thickness(*args, kind="min")
+        reg = lubrication_regime(*args)
+        F = _rolling_auto_smooth(sd["Q"], sd["Rx"], sd["Ry"], sd["u"], eta, Ep, alpha_p, sd["a"], sd["b"], reg)
+        out[side] = dict(h_min=h_min, h_c=film_thickness(*args, kind="central"), regime=reg.code, M=reg.M,
+                         L=reg.L, mu=mixed_friction_ianus(h_min / sigma, mu_e, mu_a),
+                         F_R=np.where(sd["Q"] > 0, F, 0.0))
+    return out
+
+
+@pytest.mark.filterwarnings("ignore::thermobear.errors.ExtrapolationWarning")
+@pytest.mark.parametrize("per_ball", [False, True])
+def test_fused_loss_kernel_equals_public_functions(per_ball):
+    s, cs = _contacts_spread()
+    oil = s.lubricant
+    shape = cs.batch + (cs.brg.Z,)
+    rng = np.random.default_rng(11)
+    if per_ball:
+        Ti, To = rng.uniform(20.0, 140.0, shape), rng.uniform(20.0, 140.0, shape)
+    else:
+        Ti, To = np.linspace(20.0, 140.0, cs.batch[0]), np.linspace(140.0, 25.0, cs.batch[0])
+    r = evaluate_losses(cs, oil, 60.0, T_inner_C=Ti, T_outer_C=To, T_oil_C=45.0, oil_flow_m3_s=s.oil_flow)
+    sigma = np.hypot(0.05e-6, 0.1e-6)
+    Ts = {k: np.broadcast_to(np.asarray(v)[..., None] if not per_ball else v, shape)
+          for k, v in (("inner", Ti), ("outer", To))}
+    ref = _public_path(cs, oil, Ts, sigma)
+    codes = set()
+    for side in ("inner", "outer"):
+        got, exp = r.contacts[side], ref[side]
+        np.testing.assert_array_equal(got["regime"], exp["regime"])
+        codes |= set(np.unique(exp["regime"]).tolist())
+        for key in ("h_min", "h_c", "M", "L", "mu", "F_R"):
+            np.testing.assert_allclose(got[key], exp[key], rtol=1e-12, atol=0.0, err_msg=f"{side} {key}")
+        assert np.all(got["eta"] == oil.eta(Ts[side]))
+    # the spread reaches the regimes whose formulas the kernel blends, and the limits u = 0, Q = 0
+    assert {"IVR", "PVR", "EHL"} <= codes
+    assert np.any(cs.sides["inner"]["u"] == 0) and np.any(cs.sides["inner"]["Q"] == 0)
+    assert np.all(r.contacts["inner"]["F_R"][0] == 0) and np.all(r.contacts["inner"]["h_min"][0] == 0)
+
+
+@pytest.mark.filterwarnings("ignore::thermobear.errors.ExtrapolationWarning")
+@pytest.mark.parametrize("model", ["auto_sharp", "houpert_ivr", "biboulet_pvr", "houpert_ehl", "biboulet_transition"])
+def test_named_rolling_models_use_the_public_functions(model):
+    s, cs = _contacts_spread()
+    r = evaluate_losses(cs, s.lubricant, 70.0, oil_flow_m3_s=s.oil_flow, rolling_model=model)
+    sd, c = cs.sides["outer"], r.contacts["outer"]
+    kw = dict(regime=c["regime"]) if model == "auto_sharp" else {}
+    F = rolling_force(sd["Q"], sd["Rx"], sd["Ry"], sd["u"], c["eta"], cs.brg.E_prime,
+                      model="auto" if model == "auto_sharp" else model, alpha_p=s.lubricant.alpha_p_at(70.0),
+                      a=sd["a"], b=sd["b"], **kw)
+    np.testing.assert_allclose(c["F_R"], np.where(sd["Q"] > 0, F, 0.0), rtol=1e-13, atol=0.0)
+
+
+@pytest.mark.filterwarnings("ignore::thermobear.errors.ExtrapolationWarning")
+def test_contact_powers_and_repeated_contacts_equal_the_full_path():
+    s = _scene(n_rpm=6500.0, Fr=750.0)
+    models = choose_models(s)
+    cs = _setup_thermal(s, models)[1]
+    cs4 = _repeat_contacts(cs, 4)
+    ref4 = prepare_contacts(s.bearing, s.Fa, s.Fr, np.full(4, s.n_rpm), M=s.M, rotating=s.rotating,
+                            hertz_method=models["hertz"][0], centrifugal=models["high_speed"][0] != "yes",
+                            load=cs.load, control=models["kinematics"][0])
+    for side in ("inner", "outer"):
+        for key, v in ref4.sides[side].items():
+            np.testing.assert_allclose(np.broadcast_to(cs4.sides[side][key], np.shape(v)), v, rtol=1e-12,
+                                       atol=1e-12 * np.max(np.abs(v)))      # batch-4 vs batch-() round-off
+    Ti, To, Toil = np.array([40.0, 55.0, 70.0, 90.0]), np.array([35.0, 50.0, 60.0, 80.0]), np.array([30.0, 45.0, 50.0, 75.0])
+    P = _contact_powers(cs4, s.lubricant, Ti, To, Toil, oil_flow_m3_s=s.oil_flow)
+    r = evaluate_losses(ref4, s.lubricant, Toil, T_inner_C=Ti, T_outer_C=To, T_oil_C=Toil, oil_flow_m3_s=s.oil_flow)
+    np.testing.assert_allclose(P[0], 2.0 * r.heat_W["inner_ring"], rtol=1e-12)
+    np.testing.assert_allclose(P[1], 2.0 * r.heat_W["outer_ring"], rtol=1e-12)
+    np.testing.assert_allclose(P[2], r.breakdown_W["drag"], rtol=1e-12)
+    assert np.all(np.diff(P[0]) < 0) and np.all(np.diff(P[1]) < 0)   # hotter contacts, thinner oil: less loss
+    assert np.ptp(P[2]) > 1e-3 * P[2].max()                          # the mixture temperature enters the drag
+
+
+# --------------------------------------------------------------------------- cached look-ups, fast paths
+def test_air_scalar_path_equals_the_spline():
+    from thermobear.air import _table, air_properties
+    T = np.concatenate([np.random.default_rng(5).uniform(200.0, 600.0, 300), [200.0, 273.15, 599.5, 600.0]])
+    tab = _table()(T)
+    for k, t in enumerate(T):
+        p = air_properties(float(t))
+        assert (p["rho"], p["mu"], p["k"], p["cp"]) == tuple(tab[k])      # same bits
+    arr = air_properties(T)
+    assert air_properties(np.float64(T[0]))["Pr"] == arr["Pr"][0]
+    with pytest.raises(tb.errors.InputError, match="T_K"):
+        air_properties(650.0)
+
+
+def test_material_cache_returns_the_same_values_and_errors():
+    from thermobear.materials import material, material_names
+    m = material("aisi-52100")
+    assert material("aisi-52100") is m and m.E == 210e9
+    assert "aisi-52100" in material_names()
+    with pytest.raises(tb.errors.InputError, match="known: .*aisi-52100"):
+        material("unobtainium")
+
+
+def test_compiled_expressions_give_the_tree_walkers_values_and_messages():
+    import ast
+
+    from thermobear.thermal.network import _Evaluator
+    ctx = {"bearing": {"bore": 0.05, "D": 0.0127}, "scene": {"n_rpm": 3200.0}, "x": np.array([1.0, 2.0])}
+    exprs = ["bearing.bore / 2 + sqrt(4) * 1e-3", "-pi * bearing.D**2 / 4", "max(scene.n_rpm, 1.0) * 2",
+             "x * 2", "bearing.nope", "nope + 1", "1 / 0", "log(-1.0)", "bearing._x", "'a' + 1",
+             "(lambda: 1)()", "bearing.bore.real", "scene", "[1, 2]", "sqrt(4, k=1)", "True"]
+    for e in exprs:
+        try:
+            want = ("ok", _Evaluator(ctx, "f", e).num(ast.parse(e, mode="eval").body))
+        except tb.errors.InputError as exc:
+            want = ("err", str(exc))
+        try:
+            got = ("ok", evaluate(e, ctx, "f"))
+        except tb.errors.InputError as exc:
+            got = ("err", str(exc))
+        assert got[0] == want[0], e
+        if got[0] == "ok":
+            np.testing.assert_allclose(got[1], want[1], rtol=0, atol=0)
+        else:
+            assert got[1] == want[1]
+
+
+def test_dconductances_restricted_to_free_nodes():
+    net, _ = _network()
+    plan = _plan(net)
+    T = net.initial_T_K() + np.where(net.fixed, 0.0, np.linspace(5.0, 40.0, len(net.nodes)))
+    G, dG = plan.dconductances(T)
+    G2, dG2 = plan.dconductances(T, nodes=plan.free)
+    assert np.array_equal(G, G2)
+    assert dG2 == [d for d in dG if d[1] in set(plan.free.tolist())]
+    assert len(dG2) < len(dG)                       # some elements depend on fixed nodes (ambient)
+
+
+def test_cached_drag_factors_still_warn_at_every_evaluation():
+    s, cs = _contacts_spread()                       # 30 rpm: Parker's fraction > 1, clipped with a warning
+    for _ in range(2):                               # the second call runs on the cached factors
+        with pytest.warns(ExtrapolationWarning, match="Parker"):
+            evaluate_losses(cs, s.lubricant, 50.0, oil_flow_m3_s=s.oil_flow)

@@ -251,16 +251,41 @@ def moes_N(M, D):
     return _out(np.asarray(M, dtype=float) * np.sqrt(np.asarray(D, dtype=float)), M, D)
 
 
-def _ln_asymptotes(lnM, lnL, D):
-    """Natural logs of the four NVM asymptotes and of the h00 cap (PHYSICS.md §5.2)."""
+def _ln_asymptote_consts(D):
+    """The D-dependent parts of the logs of the NVM asymptotes (PHYSICS.md §5.2):
+    (c_RI, c_EI, c_RP, c_EP, ln h00) with ln H_RI = c_RI − 2 ln M, ln H_EI = c_EI − (2/15) ln M,
+    ln H_RP = c_RP + (2/3) ln L, ln H_EP = c_EP − ln M/12 + (3/4) ln L.  Split off so that a caller
+    evaluating many temperatures at one geometry (:func:`thermobear.losses.evaluate_losses`)
+    computes them once; :func:`_ln_asymptotes` adds the M, L terms in the same order (same bits)."""
     lnD = np.log(D)
     e = np.log1p(0.006 * lnD + 0.63 * D ** (4.0 / 7.0))
-    ln_RI = np.log(145.0) - (15.0 / 7.0) * np.log1p(0.796 * D ** (14.0 / 15.0)) - lnD - 2.0 * lnM
-    ln_EI = np.log(3.18) - (14.0 / 25.0) * e - lnD / 15.0 - (2.0 / 15.0) * lnM
-    ln_RP = np.log(1.29) - (2.0 / 3.0) * np.log1p(0.691 * D) + (2.0 / 3.0) * lnL
-    ln_EP = np.log(1.48) - (7.0 / 20.0) * e - lnD / 24.0 - lnM / 12.0 + 0.75 * lnL
+    c_RI = np.log(145.0) - (15.0 / 7.0) * np.log1p(0.796 * D ** (14.0 / 15.0)) - lnD
+    c_EI = np.log(3.18) - (14.0 / 25.0) * e - lnD / 15.0
+    c_RP = np.log(1.29) - (2.0 / 3.0) * np.log1p(0.691 * D)
+    c_EP = np.log(1.48) - (7.0 / 20.0) * e - lnD / 24.0
     ln_h00 = np.log(1.8) - lnD
-    return ln_RI, ln_EI, ln_RP, ln_EP, ln_h00
+    return c_RI, c_EI, c_RP, c_EP, ln_h00
+
+
+def _ln_asymptotes_from(consts, lnM, lnL):
+    """Logs of the four NVM asymptotes and of h00 from :func:`_ln_asymptote_consts` and ln M, ln L."""
+    c_RI, c_EI, c_RP, c_EP, ln_h00 = consts
+    return (c_RI - 2.0 * lnM, c_EI - (2.0 / 15.0) * lnM, c_RP + (2.0 / 3.0) * lnL,
+            c_EP - lnM / 12.0 + 0.75 * lnL, ln_h00)
+
+
+def _ln_asymptotes(lnM, lnL, D):
+    """Natural logs of the four NVM asymptotes and of the h00 cap (PHYSICS.md §5.2)."""
+    return _ln_asymptotes_from(_ln_asymptote_consts(D), lnM, lnL)
+
+
+def _ln_blend_ratios(ln_RI, ln_EI, ln_RP, ln_EP, ln_h00):
+    """(ln iso − ln piezo, ln H_RI − ln H_EI, ln H_EP − ln H_RP): the dominance ratios of the NVM
+    blend whose signs decide the regime (see :func:`moes_regime`), in logs."""
+    ln_EIc = -0.25 * np.logaddexp(-4.0 * ln_EI, -4.0 * ln_h00)
+    ln_iso = (2.0 / 3.0) * np.logaddexp(1.5 * ln_RI, 1.5 * ln_EIc)
+    ln_piezo = -0.125 * np.logaddexp(-8.0 * ln_RP, -8.0 * ln_EP)
+    return ln_iso - ln_piezo, ln_RI - ln_EI, ln_EP - ln_RP
 
 
 def _ln_branches(lnM, lnL, D):

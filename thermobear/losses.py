@@ -30,6 +30,7 @@ oil–air mixture.  The split conserves energy exactly (tested).
 """
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -37,10 +38,9 @@ import numpy as np
 from ._arrays import out as _as
 
 from .errors import InputError
-from .film import film_thickness, lubrication_regime
-from .friction.drag import drag_loss, oil_volume_fraction_parker
+from .friction.drag import oil_volume_fraction_parker
 from .friction.rolling import rolling_force
-from .friction.sliding import deformed_radius, hysteresis_moment, mixed_friction_ianus
+from .friction.sliding import deformed_radius, hysteresis_moment
 from .geometry import BallBearing
 from .hertz import hertz
 from .kinematics import ball_kinematics, caged_ball_kinematics, common_cage_speed
@@ -225,12 +225,245 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
                       models_used=models)
 
 
+# --------------------------------------------------------------------------- fused kernel
+# evaluate_losses runs many times on one ContactSet (coupled Newton, transient right-hand side):
+# everything that does not depend on temperature is computed once per ContactSet (``_kernel_pre``,
+# inputs validated there as the public functions validate them), the rest in one pass over both
+# raceways stacked on a leading axis (``_kernel``).  The formulas are those of the public functions
+# named in the comments; tests/test_perf_equivalence.py pins the two paths together (≤ 1e-12).
+_LN_TINY = float(np.log(1e-300))      # film._TINY: floor of the Moes groups and dominance ratios
+_LN2 = float(np.log(2.0))
+_REGIME_CODES = np.array(["IVR", "IVE", "PVR", "EHL"], dtype="<U3")
+
+
+def _kernel_pre(cs: ContactSet) -> dict:
+    """Temperature-independent factors of :func:`_kernel` for both raceways, stacked (2, *batch, Z);
+    inputs checked once as :func:`thermobear.film.film_thickness` and
+    :func:`thermobear.friction.rolling.biboulet_parameters` check them.  Cached on ``cs``."""
+    pre = cs.__dict__.get("_tb_kernel")
+    if pre is not None:
+        return pre
+    from scipy.special import ellipe
+
+    from .film import _contact, _ln_asymptote_consts
+    shape = cs.batch + (cs.brg.Z,)
+    Ep = float(cs.brg.E_prime)
+    sd = [cs.sides["inner"], cs.sides["outer"]]
+    for s in sd:          # the checks of film_thickness (geometry part; η and α_p are checked per call)
+        _contact(s["Q"], s["Rx"], s["Ry"], s["u"], 1.0, 1.0, Ep, True)
+
+    def st(key):
+        return np.stack([np.broadcast_to(np.asarray(s[key], float), shape) for s in sd])
+
+    Q, Rx, Ry, u, a, b = (st(k) for k in ("Q", "Rx", "Ry", "u", "a", "b"))
+    loaded = Q > 0
+    W = Q / (Ep * Rx**2)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        lnU2fac = np.log(2.0 * u / (Ep * Rx))                  # ln(2U/η); −inf at u = 0
+        kappa = np.where(a > 0, b / np.where(a > 0, a, 1.0), 1.0)
+    if np.any(kappa > 1.0 + 1e-12):
+        raise InputError("b/a", kappa, "must be <= 1 (b along rolling is the short semi-axis; "
+                         "formulas fitted for Ry >= Rx)")
+    ratio = Ry / Rx
+    k_hd = 1.0339 * ratio**0.636                               # Hamrock–Dowson ellipticity
+    Wl = np.where(loaded, Q, 1.0) / (Ep * Rx**2)
+    beta = (4.0 / np.pi) * ellipe(1.0 - kappa**2) / (1.0 + Rx / Ry)
+    den = beta**0.25 * kappa * W                               # M_B U2^(3/4) (biboulet_parameters)
+    pre = dict(
+        Q=Q, u=u, loaded=loaded, W_pos=W > 0, lnU2fac=lnU2fac,
+        # film_thickness (Hamrock–Dowson): h = C U^n G^m, C = c W^w (ellipticity factor) Rx
+        C_min=3.63 * Wl**-0.073 * (1.0 - np.exp(-0.68 * k_hd)) * Rx,
+        C_c=2.69 * Wl**-0.067 * (1.0 - 0.61 * np.exp(-0.73 * k_hd)) * Rx,
+        # lubrication_regime: ln W and the D-dependent parts of the NVM asymptotes
+        lnW=np.log(np.clip(W, 1e-300, None)), asym=_ln_asymptote_consts(Rx / Ry),
+        # rolling_force_houpert_ivr: 0.835 λ^-0.358 W^0.364 E' Rx² × U2^0.636
+        c_ivr=0.835 * (Rx / Ry) ** -0.358 * W**0.364 * Ep * Rx**2,
+        # rolling_force_biboulet_pvr (c_Bib truncation): E' Rx 2a × shape(U2, M_B) × C(M_B, κ)
+        den=den, p_ivr=0.77 * beta ** (-1.0 / 3.0) * kappa**0.12, p_ehl=1.8 * beta**-0.25,
+        c_pvr=Ep * Rx * 2.0 * a, ln_kappa=np.log(kappa),
+        # rolling_force_houpert_ehl: 0.674 κ^-0.043 (2a/Rx) (κW)^0.133 E' Rx² × G^0.022 U2^0.656
+        c_ehl=0.674 * kappa**-0.043 * (2.0 * a / Rx) * (kappa * W) ** 0.133 * Ep * Rx**2,
+        # per unit μ, and hysteresis (temperature independent: prepare_contacts)
+        I_sl=st("I_sl"), I_piv=st("I_piv"), P_hys=st("P_hysteresis"),
+    )
+    cs.__dict__["_tb_kernel"] = pre
+    return pre
+
+
+def _kernel(pre, eta, alpha_p, Ep, sigma, mu_e, mu_a, *, rolling=True, full=False):
+    """Temperature-dependent part of the local model on both raceways at once [SI].
+
+    ``eta`` [Pa s], ``alpha_p`` [1/Pa] broadcast against the stacked contacts (2, *batch, Z) of
+    ``pre`` (:func:`_kernel_pre`); ``sigma`` composite roughness [m] (0: smooth, Λ = ∞).  Returns a
+    dict: mu, h_min [m], Lambda, P_rolling (``rolling``), P_sliding, P_pivoting [W] and, with ``full``, h_c
+    [m], F_R [N], regime codes, Moes M, L.  Same formulas as film_thickness (Hamrock–Dowson),
+    lubrication_regime (NVM dominance), mixed_friction_ianus (seed 000 eq 18) and the smooth
+    regime-weighted rolling force of :func:`_rolling_auto_smooth` (seed 004 eqs 17–19), written in
+    logarithms of U2 = 2ηu/(E'Rx) and G = α_p E' so that one exp gives each power."""
+    from .film import _ln_asymptotes_from, _ln_blend_ratios
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        lnG = np.log(alpha_p * Ep)
+        lnU2 = np.log(eta) + pre["lnU2fac"]                                     # −inf at u = 0
+        loaded = pre["loaded"]
+        # film (film_thickness, Hamrock–Dowson): U^0.68 G^0.49, U = U2/2
+        h_min = np.where(loaded, np.exp(0.68 * (lnU2 - _LN2) + 0.49 * lnG) * pre["C_min"], 0.0)
+        Lam = h_min / sigma if sigma > 0 else np.full_like(h_min, np.inf)
+        phi = np.minimum(0.82 * (Lam if sigma > 0 else np.full_like(h_min, 1e6))**0.28, 1.0)  # mixed_friction_ianus
+        mu = np.asarray(mu_e) * phi + np.asarray(mu_a) * (1.0 - phi)
+        out = dict(mu=mu, h_min=h_min, Lambda=Lam, P_sliding=mu * pre["I_sl"], P_pivoting=mu * pre["I_piv"])
+        if not (rolling or full):
+            return out
+        # regime (lubrication_regime): dominance ratios of the NVM blend
+        lnU2r = np.maximum(lnU2, _LN_TINY)
+        lnM = pre["lnW"] - 0.75 * lnU2r
+        lnL = np.maximum(lnG, _LN_TINY) + 0.25 * lnU2r
+        d_ip, d_ri, d_ep = _ln_blend_ratios(*_ln_asymptotes_from(pre["asym"], lnM, lnL))
+        if rolling:
+            # the three rolling forces (rolling_force_houpert_ivr / _biboulet_pvr / _houpert_ehl)
+            U2_75 = np.exp(0.75 * lnU2)
+            F_ivr = pre["c_ivr"] * np.exp(0.636 * lnU2)
+            f_ivr = pre["p_ivr"] * np.exp((2.0 / 3.0) * lnU2)
+            f_ehl = pre["p_ehl"] * U2_75
+            den = pre["den"]
+            r = np.where(den > 0, 6.6 * U2_75 / np.where(den > 0, den, 1.0), np.inf)   # 6.6/M_B
+            shape = np.where(np.isinf(r), f_ivr, (f_ivr * r + f_ehl) / (1.0 + r))
+            lnMB = np.log(den) - 0.75 * lnU2                                        # ln M_B
+            c = np.where(lnMB > -np.inf, 0.85 / (1.0 + 4.72 * np.exp(-0.39 * lnMB)
+                                                 * np.exp(0.484 * np.exp(0.165 * lnMB) * pre["ln_kappa"])), 0.0)
+            C = 1.0 / (1.0 + np.where(c > 0, 1.0 / np.where(c > 0, c, 1.0) - 1.0, np.inf))
+            F_pvr = np.where(pre["W_pos"] & (lnU2 > -np.inf), pre["c_pvr"] * shape * C, 0.0)
+            F_ehl = pre["c_ehl"] * np.exp(0.022 * lnG + 0.656 * lnU2)
+            # smooth selection (_rolling_auto_smooth): logistic weights of the ln ratios
+            w = _SWITCH_WIDTH
+            s_piezo = _sigmoid(-np.clip(d_ip, _LN_TINY, 700.0) / w)
+            s_ri = _sigmoid(np.clip(d_ri, _LN_TINY, 700.0) / w)
+            s_rp = _sigmoid(np.clip(d_ep, _LN_TINY, 700.0) / w)
+            iso = s_ri * F_ivr + (1.0 - s_ri) * F_pvr
+            piezo = s_rp * F_pvr + (1.0 - s_rp) * F_ehl
+            F_R = np.where(loaded, (1.0 - s_piezo) * iso + s_piezo * piezo, 0.0)
+            out.update(F_R=F_R, P_rolling=2.0 * pre["u"] * F_R)
+        if full:
+            out["h_c"] = np.where(loaded, np.exp(0.67 * (lnU2 - _LN2) + 0.53 * lnG) * pre["C_c"], 0.0)
+            idx = np.where(d_ip >= 0, np.where(d_ri >= 0, 0, 1), np.where(d_ep >= 0, 2, 3))
+            out["regime"] = _REGIME_CODES[np.where(loaded, idx, 0)]
+            out["M"] = np.where(loaded, np.exp(np.clip(lnM, -700.0, 700.0)), 0.0)
+            out["L"] = np.exp(np.clip(lnL, -700.0, 700.0))
+    return out
+
+
+def _drag_pre(cs: ContactSet, supply: str, oil_flow_m3_s: float, dragged: bool) -> dict:
+    """Temperature-independent part of the drag term: mean cage speed [rad/s] and, when the balls
+    are dragged, Parker's oil fraction [-] and the pitch-line speed [m/s]; cached on ``cs``."""
+    cache = cs.__dict__.setdefault("_tb_drag", {})
+    key = (supply, float(oil_flow_m3_s), dragged)
+    if key in cache:
+        return cache[key]
+    brg, batch, nb = cs.brg, cs.batch, cs.n_rpm
+    # cage speed: the balls' pure-rolling orbital speeds differ when their contact angles do (high-speed
+    # form); the cage runs at the speed the loaded balls impose — their load-weighted mean
+    Qw = cs.sides["inner"]["Q"]
+    Qs = Qw.sum(-1)
+    wc_mean = np.where(Qs > 0, (Qw * cs.omega_c).sum(-1) / np.where(Qs > 0, Qs, 1.0), cs.omega_c.mean(-1))
+    d = dict(wc_mean=wc_mean)
+    if dragged:
+        if supply == "oil_jet":
+            W_cm3_min = oil_flow_m3_s * 1e6 * 60.0
+            X = np.zeros(batch)
+            run = np.broadcast_to(nb > 0, batch)
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                X[run] = oil_volume_fraction_parker(W_cm3_min, np.broadcast_to(nb, batch)[run], brg.dm * 1e3)
+            d["warn"] = [(str(w.message), w.category) for w in caught]
+        elif supply == "oil_air":
+            X = np.full(batch, 0.01)
+        else:
+            X = np.zeros(batch)
+        wc = np.maximum(wc_mean, 1e-12)
+        if np.any(~np.isfinite(wc) | (wc <= 0)):
+            raise InputError("omega_c", wc, "must be finite and > 0")
+        d.update(X=X, v=wc * brg.dm / 2.0, run=nb > 0)
+    cache[key] = d
+    return d
+
+
+def _drag_kernel(cs, dp, oil, Tm, rho_oil, mu_oil):
+    """Drag power of the balls [W] (:func:`thermobear.friction.drag.drag_loss`, Pouly 2010, seed 004
+    eq 21) at mixture temperatures ``Tm`` [°C] with the oil's density and viscosity there."""
+    from .air import air_properties
+    from .friction.drag import drag_coefficient_sphere
+    for w in dp.get("warn", ()):
+        warnings.warn(w[0], w[1], stacklevel=3)
+    brg = cs.brg
+    air = air_properties(np.asarray(Tm, float) + 273.15)
+    X = dp["X"]
+    rho_mix = X * rho_oil + (1.0 - X) * air["rho"]
+    mu_mix = X * mu_oil + (1.0 - X) * air["mu"]
+    v = dp["v"]
+    Re = rho_mix * v * brg.D / mu_mix
+    c_d = np.asarray(drag_coefficient_sphere(Re), float)
+    P = rho_mix * c_d * brg.Z * ((np.pi * brg.D ** 2 / 4.0) / 2.0) * np.abs(v) ** 3
+    return np.where(dp["run"], P, 0.0)
+
+
+def _repeat_contacts(cs: ContactSet, n: int) -> ContactSet:
+    """``cs`` (one operating point, batch ()) repeated ``n`` times as a batch (n,): the contacts of
+    :func:`prepare_contacts` with ``n_rpm = np.full(n, ...)`` and the same load, without recomputing
+    them (read-only broadcast views; the kernel factors are shared)."""
+    if cs.batch != ():
+        raise InputError("contacts", cs.batch, "must hold one operating point to be repeated")
+
+    def rep(v):
+        v = np.asarray(v)
+        return np.broadcast_to(v, (n,) + v.shape)
+
+    sides = {side: {k: (v if k == "Ry" else rep(v)) for k, v in sd.items()} for side, sd in cs.sides.items()}
+    out = ContactSet(brg=cs.brg, batch=(n,), n_rpm=rep(cs.n_rpm), omega=rep(cs.omega), load=cs.load,
+                     omega_c=rep(cs.omega_c), sides=sides, models_used=cs.models_used)
+    pre = _kernel_pre(cs)
+    out.__dict__["_tb_kernel"] = {k: (tuple(x[:, None] for x in v) if k == "asym" else v[:, None])
+                                  for k, v in pre.items()}
+    return out
+
+
+def _contact_powers(cs: ContactSet, oil, T_inner_C, T_outer_C, T_oil_C, *, supply: str = "oil_jet",
+                    oil_flow_m3_s: float = 0.0, Rq_ball: float = 0.05e-6, Rq_ring: float = 0.1e-6,
+                    mu_boundary: float = 0.11, mu_full_film: float = 0.05, drag: bool = True) -> np.ndarray:
+    """Inner-contact, outer-contact and drag power [W], shape (3, *batch), of the ``"auto"`` rolling
+    model at operating-point temperatures [°C] (each of shape ``cs.batch``): the sums
+    :func:`evaluate_losses` reports, without the per-contact detail (the coupled solvers' inner loop)."""
+    batch = cs.batch
+    pre = _kernel_pre(cs)
+    dragged = drag and supply not in ("oil_bath", "dry_film") and bool(np.any(cs.n_rpm > 0))
+    T = [np.broadcast_to(np.asarray(T_inner_C, float), batch), np.broadcast_to(np.asarray(T_outer_C, float), batch)]
+    if dragged:
+        T.append(np.broadcast_to(np.asarray(T_oil_C, float), batch))
+    T = np.stack(T)
+    eta_b = np.asarray(oil.eta(T), float)
+    alpha_p = np.asarray(oil.alpha_p_at(T[:2]), float)[..., None]
+    eta = eta_b[:2][..., None]
+    from .film import _arr
+    _arr("eta", eta, positive=True)
+    _arr("alpha_p", alpha_p, positive=True, nonneg=True)
+    sigma = float(np.hypot(Rq_ball, Rq_ring)) if (Rq_ball or Rq_ring) else 0.0
+    k = _kernel(pre, eta, alpha_p, cs.brg.E_prime, sigma, mu_full_film, mu_boundary)
+    Pc = (k["P_rolling"] + k["P_sliding"] + k["P_pivoting"] + pre["P_hys"]).sum(-1)
+    dp = _drag_pre(cs, supply, oil_flow_m3_s, dragged)
+    P_drag = (_drag_kernel(cs, dp, oil, T[2], np.asarray(oil.rho(T[2]), float), eta_b[2]) if dragged
+              else np.zeros(batch))
+    return np.concatenate([Pc, np.broadcast_to(P_drag, batch)[None]])
+
+
 def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=None, T_oil_C=None,
                     supply: str = "oil_jet", oil_flow_m3_s: float = 0.0, Rq_ball: float = 0.05e-6,
                     Rq_ring: float = 0.1e-6, mu_boundary: float = 0.11, mu_full_film: float = 0.05,
                     rolling_model: str = "auto", drag: bool = True) -> LossResult:
     """Temperature-dependent part of the local model on a prepared :class:`ContactSet`
-    (see :func:`bearing_losses` for the parameters)."""
+    (see :func:`bearing_losses` for the parameters).
+
+    The temperature-independent factors are computed (and the contact geometry checked) on the
+    first call and kept on ``cs`` for the next ones — treat a ContactSet as immutable; the
+    per-contact formulas run in one fused pass over both raceways (``_kernel``), the same
+    formulas as the public film / regime / friction / rolling functions (tests pin them together)."""
     if rolling_model not in ROLLING_MODELS:
         raise InputError("rolling_model", rolling_model, f"must be one of {', '.join(ROLLING_MODELS)}")
     if supply not in ("oil_jet", "grease", "oil_bath", "oil_air", "dry_film"):
@@ -247,72 +480,77 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
         except ValueError:
             raise InputError(nm, v, f"must broadcast to the operating points {batch}") from None
     Ep = brg.E_prime
-    out_c = {}
-    totals = {k: 0.0 for k in BREAKDOWN_KEYS}
-    per_contact_heat = {}
-    regimes_seen = set()
+    Ts = {}
     for side, T_side in (("inner", Ti), ("outer", To)):
-        sd = cs.sides[side]
-        Q, Rx, Ry, u, a, b = sd["Q"], sd["Rx"], sd["Ry"], sd["u"], sd["a"], sd["b"]
         if T_side.shape == shape:
-            Ts = T_side                                         # one temperature per ball
+            Ts[side] = T_side                                   # one temperature per ball
         else:                                                   # one per operating point
             try:
-                Ts = np.broadcast_to(np.broadcast_to(T_side, batch)[..., None], shape)
+                Ts[side] = np.broadcast_to(np.broadcast_to(T_side, batch)[..., None], shape)
             except ValueError:
                 name = "T_C" if (T_side is T_C_a) else f"T_{side}_C"
                 raise InputError(name, T_side, f"must broadcast to the operating points {batch} "
                                  f"(or be per ball, {shape})") from None
-        eta = np.asarray(oil.eta(Ts), float)
-        alpha_p = np.asarray(oil.alpha_p_at(Ts), float)
-        h_min = np.asarray(film_thickness(Q, Rx, Ry, u, eta, alpha_p, Ep, kind="min"))
-        h_c = np.asarray(film_thickness(Q, Rx, Ry, u, eta, alpha_p, Ep, kind="central"))
-        Lam = h_min / np.hypot(Rq_ball, Rq_ring) if (Rq_ball or Rq_ring) else np.full_like(h_min, np.inf)
-        reg = lubrication_regime(Q, Rx, Ry, u, eta, alpha_p, Ep)
-        code = np.asarray(reg.code)
-        regimes_seen |= set(np.unique(code).tolist())
-        mu = np.asarray(mixed_friction_ianus(np.where(np.isfinite(Lam), Lam, 1e6), mu_full_film, mu_boundary))
-        if rolling_model == "auto":
-            F_R = _rolling_auto_smooth(Q, Rx, Ry, u, eta, Ep, alpha_p, a, b, reg)
-        elif rolling_model == "auto_sharp":
-            F_R = np.asarray(rolling_force(Q, Rx, Ry, u, eta, Ep, model="auto", alpha_p=alpha_p, a=a, b=b,
-                                           regime=code))
-        else:
-            F_R = np.asarray(rolling_force(Q, Rx, Ry, u, eta, Ep, model=rolling_model, alpha_p=alpha_p, a=a, b=b))
-        F_R = np.where(Q > 0, F_R, 0.0)
-        P_roll = 2.0 * u * F_R
-        P_sl = mu * sd["I_sl"]
-        P_piv = mu * sd["I_piv"]
-        P_hys = sd["P_hysteresis"]
-        out_c[side] = dict(Q=Q, alpha=sd["alpha"], a=a, b=b, u=u, T_C=Ts, eta=eta, h_min=h_min, h_c=h_c,
-                           Lambda=Lam, regime=code, mu=mu, F_R=F_R, spin=sd["spin"], P_rolling=P_roll,
-                           P_sliding=P_sl, P_pivoting=P_piv, P_hysteresis=P_hys, M=reg.M, L=reg.L)
-        totals["rolling"] = totals["rolling"] + P_roll.sum(-1)
-        totals["sliding"] = totals["sliding"] + P_sl.sum(-1)
-        totals["pivoting"] = totals["pivoting"] + P_piv.sum(-1)
-        totals["hysteresis"] = totals["hysteresis"] + P_hys.sum(-1)
-        per_contact_heat[side] = (P_roll + P_sl + P_piv + P_hys).sum(-1)
+    pre = _kernel_pre(cs)
+    nb = cs.n_rpm
+    dragged = drag and supply not in ("oil_bath", "dry_film") and bool(np.any(nb > 0))
+    # lubricant properties: one call per property for both raceways (and the mixture, for drag)
+    per_ball = Ti.shape == shape or To.shape == shape
+    if per_ball:
+        eta = np.stack([np.asarray(oil.eta(Ts[k]), float) for k in ("inner", "outer")])
+        alpha_p = np.stack([np.asarray(oil.alpha_p_at(Ts[k]), float) for k in ("inner", "outer")])
+    else:
+        Tb = [np.broadcast_to(Ti, batch), np.broadcast_to(To, batch)]
+        if dragged:
+            Tb.append(np.broadcast_to(Toil, batch))
+        eta_b = np.asarray(oil.eta(np.stack(Tb)), float)
+        alpha_p = np.asarray(oil.alpha_p_at(np.stack(Tb[:2])), float)[..., None]
+        eta = eta_b[:2][..., None]
+    from .film import _arr
+    _arr("eta", eta, positive=True)                      # the checks of film_thickness (temperature part)
+    _arr("alpha_p", alpha_p, positive=True, nonneg=True)
+    sigma = float(np.hypot(Rq_ball, Rq_ring)) if (Rq_ball or Rq_ring) else 0.0
+    k = _kernel(pre, eta, alpha_p, Ep, sigma, mu_full_film, mu_boundary, rolling=rolling_model == "auto",
+                full=True)
+    code = k["regime"]
+    if rolling_model == "auto":
+        F_R = k["F_R"]
+    else:
+        F_R = []
+        for i, side in enumerate(("inner", "outer")):
+            sd = cs.sides[side]
+            e_i, a_i = np.broadcast_to(eta[i], shape), np.broadcast_to(alpha_p[i], shape)
+            if rolling_model == "auto_sharp":
+                f = rolling_force(sd["Q"], sd["Rx"], sd["Ry"], sd["u"], e_i, Ep, model="auto", alpha_p=a_i,
+                                  a=sd["a"], b=sd["b"], regime=code[i])
+            else:
+                f = rolling_force(sd["Q"], sd["Rx"], sd["Ry"], sd["u"], e_i, Ep, model=rolling_model,
+                                  alpha_p=a_i, a=sd["a"], b=sd["b"])
+            F_R.append(np.where(sd["Q"] > 0, np.asarray(f), 0.0))
+        F_R = np.stack(F_R)
+        k["P_rolling"] = 2.0 * pre["u"] * F_R
+    regimes_seen = set(np.unique(code).tolist())
+    P_roll, P_sl, P_piv, P_hys = k["P_rolling"], k["P_sliding"], k["P_pivoting"], pre["P_hys"]
+    heat_c = (P_roll + P_sl + P_piv + P_hys).sum(-1)
+    out_c = {}
+    for i, side in enumerate(("inner", "outer")):
+        sd = cs.sides[side]
+        out_c[side] = dict(Q=sd["Q"], alpha=sd["alpha"], a=sd["a"], b=sd["b"], u=sd["u"], T_C=Ts[side],
+                           eta=np.array(np.broadcast_to(eta[i], shape)), h_min=k["h_min"][i], h_c=k["h_c"][i],
+                           Lambda=k["Lambda"][i], regime=code[i], mu=k["mu"][i], F_R=F_R[i], spin=sd["spin"],
+                           P_rolling=P_roll[i], P_sliding=P_sl[i], P_pivoting=P_piv[i], P_hysteresis=sd["P_hysteresis"],
+                           M=k["M"][i], L=k["L"][i])
+    per_contact_heat = {"inner": heat_c[0], "outer": heat_c[1]}
+    totals = {"sliding": P_sl.sum(-1).sum(0), "rolling": P_roll.sum(-1).sum(0), "pivoting": P_piv.sum(-1).sum(0),
+              "hysteresis": P_hys.sum(-1).sum(0)}
 
     # drag of the balls in the oil–air mixture
-    nb = cs.n_rpm
-    # cage speed: the balls' pure-rolling orbital speeds differ when their contact angles do (high-speed
-    # form); the cage runs at the speed the loaded balls impose — their load-weighted mean
-    Qw = cs.sides["inner"]["Q"]
-    Qs = Qw.sum(-1)
-    wc_mean = np.where(Qs > 0, (Qw * cs.omega_c).sum(-1) / np.where(Qs > 0, Qs, 1.0), cs.omega_c.mean(-1))
-    if drag and supply not in ("oil_bath", "dry_film") and np.any(nb > 0):
-        if supply == "oil_jet":
-            W_cm3_min = oil_flow_m3_s * 1e6 * 60.0
-            X = np.zeros(batch)
-            run = np.broadcast_to(nb > 0, batch)
-            X[run] = oil_volume_fraction_parker(W_cm3_min, np.broadcast_to(nb, batch)[run], brg.dm * 1e3)
-        elif supply == "oil_air":
-            X = np.full(batch, 0.01)
-        else:
-            X = np.zeros(batch)
+    dp = _drag_pre(cs, supply, oil_flow_m3_s, dragged)
+    wc_mean = dp["wc_mean"]
+    if dragged:
         Tm = np.broadcast_to(Toil, batch)
-        dr = drag_loss(Z, brg.D, brg.dm, np.maximum(wc_mean, 1e-12), X, oil.rho(Tm), oil.eta(Tm), Tm + 273.15)
-        P_drag = np.where(nb > 0, np.asarray(dr.P_W), 0.0)
+        eta_m = eta_b[2] if not per_ball else np.asarray(oil.eta(Tm), float)
+        P_drag = _drag_kernel(cs, dp, oil, Tm, np.asarray(oil.rho(Tm), float), eta_m)
     else:
         P_drag = np.zeros(batch)
     totals["drag"] = P_drag

@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .errors import InputError, ThermalRunaway
-from .losses import ContactSet, LossResult, evaluate_losses, prepare_contacts
+from .losses import ContactSet, LossResult, _contact_powers, _repeat_contacts, evaluate_losses, prepare_contacts
 from .loads import LoadDistribution, axial_contact_angle, load_distribution, needs_high_speed
 from .scene import Scene
 
@@ -480,6 +480,12 @@ def _losses_and_slopes(scene, models, cs4, x_K, h=0.05):
     lo, hi = T_VALID_C[0] + 273.15, T_VALID_C[1] + 273.15
     x = np.asarray(x_K, float)
     X = np.clip(np.column_stack([x, x[:, None] + h * np.eye(3)]), lo, hi) - 273.15   # 3 × 4 [°C]
+    if models["rolling"][0] == "auto":         # the sums only, from the fused kernel (same numbers)
+        Pm = _contact_powers(cs4, scene.lubricant, X[0], X[1], X[2], supply=scene.supply,
+                             oil_flow_m3_s=scene.oil_flow, Rq_ball=scene.Rq_ball, Rq_ring=scene.Rq_ring,
+                             mu_boundary=scene.mu_boundary, mu_full_film=scene.mu_full_film,
+                             drag=bool(models["drag"][0]))
+        return Pm, (Pm[:, 1:] - Pm[:, [0]]) / h
     r = scene_losses(scene, T_C=X[2], T_inner_C=X[0], T_outer_C=X[1], T_oil_C=X[2], models=models, contacts=cs4)
     ci, co = r.contacts["inner"], r.contacts["outer"]
     Pm = np.vstack([(ci["P_rolling"] + ci["P_sliding"] + ci["P_pivoting"] + ci["P_hysteresis"]).sum(-1),
@@ -516,7 +522,7 @@ def _newton_coupled(scene, models, net, roles, cs1, tol_K, T_limit_K, maxiter=30
     for it in range(1, maxiter + 1):
         x = C @ T[free]
         Pm, dP = _losses_and_slopes(scene, models, cs1, x, h)
-        G, dG = plan.dconductances(T)
+        G, dG = plan.dconductances(T, nodes=plan.free)      # only ∂/∂T_free enters Jr below
         Aff, Afb = plan.blocks(G)
         if not isinstance(Aff, np.ndarray):
             Aff, Afb = Aff.toarray(), Afb.toarray()
@@ -602,10 +608,7 @@ def steady_state(scene: Scene, *, tol_K: float = 1e-6, contacts: ContactSet | No
         warnings.simplefilter("ignore", ExtrapolationWarning)
         nw = None
         if method == "newton" and models["losses"][0] == "local" and cs.batch == ():
-            cs4 = prepare_contacts(scene.bearing, scene.Fa, scene.Fr, np.full(4, scene.n_rpm), M=scene.M,
-                                   rotating=scene.rotating, hertz_method=models["hertz"][0],
-                                   centrifugal=models["high_speed"][0] != "yes", load=cs.load,
-                                   control=models["kinematics"][0])
+            cs4 = _repeat_contacts(cs, 4)          # the contacts four times (one per temperature triplet)
             nw = _newton_coupled(scene, models, net, roles, cs4, tol_K, kw["T_limit_K"])
         if nw is not None:
             x, state["T"], its, resid, gain, hist = nw
