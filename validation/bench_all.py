@@ -130,18 +130,18 @@ def run(full: bool = False, profile: bool = True) -> str:
             if target < 0.1 else (lambda x: f"{x:.2f} s")
         verdict = "met" if t <= target else f"**missed ×{t / target:.3g}**"
         L.append(f"| {name} | {fmt(t)} {unit} | {fmt(target)} | {verdict} |")
-    L += ["", "**Why the misses.** A coupled point runs 7–12 Newton iterations on the three temperatures the "
-          "losses depend on (Anderson mixing as fallback); each iteration is one vectorised loss evaluation at four "
-          "temperature triplets (≈ 2 ms for 4 × 30 contacts: about a hundred small numpy calls — film, regime, "
-          "three rolling-force formulas, drag — so per-call overhead, not arithmetic) and one network assembly "
-          "and LU (≈ 1 ms: a Python loop over the elements for the temperature-dependent convection "
-          "conductances); the conductances' own temperature dependence is not in the Jacobian, which is why "
-          "Newton needs more than 3–4 iterations. Setting up a point (high-speed ball equilibrium ≈ 10 ms, network "
-          "build) adds the rest. 5 ms would need a fused loss kernel without per-call overhead (or P(T_i, T_o, "
-          "T_oil) tabulated per operating point: the mechanics is temperature independent) and vectorised "
-          "conductance functions. The prescribed-temperature sweep is dominated by the high-speed ball "
-          "equilibrium (≈ 1.3 ms per speed, batched), which the 7210 scene needs above ≈ 3000 rpm; the "
-          "transient by ≈ 260 loss evaluations of the BDF right-hand side."]
+    L += ["", "**Why the misses.** A coupled point (seed 004) is now ≈ 45 % setup and ≈ 35 % Newton. Setup: the "
+          "high-speed ball equilibrium (≈ 7–10 ms: 10–15 Newton steps of ≈ 0.5 ms — each step is a few hundred "
+          "small numpy operations on 15 balls, and the start, which pushes every ball out by its centrifugal "
+          "force from the static solution, is 10²× the load off where balls leave the load zone), the network "
+          "build (≈ 1 ms) and the contact set (≈ 1 ms). Newton runs on all free node temperatures with the "
+          "conductances' temperature derivatives in the Jacobian (5–6 iterations), each a fused loss pass "
+          "(≈ 0.2 ms for 30 contacts × 4 temperature sets) plus ≈ 0.3 ms of network work. The seed 002 point "
+          "(closed-form loads) is at ≈ 5 ms. Reaching 5 ms for seed 004 needs a cheaper high-speed equilibrium "
+          "(a start that respects open contacts, or one compiled kernel per Newton step); the prescribed-"
+          "temperature sweep and the coupled sweep are dominated by the same equilibrium (one per speed and "
+          "load). The transient is ≈ 100 loss evaluations of the BDF right-hand side with the output losses in "
+          "one vectorised call."]
     if profile:
         L += ["", "Hot spots (cProfile):", ""]
         for k, v in prof.items():
