@@ -128,6 +128,12 @@ def ball_kinematics(omega_i, omega_o, alpha_i, alpha_o, D, dm, control: str = "o
     wi, wo = np.asarray(omega_i, dtype=float), np.asarray(omega_o, dtype=float)
     ai, ao = np.asarray(alpha_i, dtype=float), np.asarray(alpha_o, dtype=float)
     omega_c, omega_R, beta, co, ci = _cage_spin(wi, wo, ai, ao, D, dm, control, beta)
+    return _speeds(wi, wo, ai, ao, beta, omega_c, omega_R, co, ci)
+
+
+def _speeds(wi, wo, ai, ao, beta, omega_c, omega_R, co, ci) -> BallKinematics:
+    """Entrainment, spin and spin-to-roll at both contacts from the cage speed ω_c and ball speed
+    ω_R [rad/s] (module docstring; c_o, c_i the contact radii [m])."""
     u_o = np.abs((wo - omega_c) * co)
     u_i = np.abs((wi - omega_c) * ci)
     spin_o = omega_R * np.sin(ao + beta) - (wo - omega_c) * np.sin(ao)
@@ -209,31 +215,19 @@ def caged_ball_kinematics(omega_i, omega_o, alpha_i, alpha_o, D, dm, omega_cage,
     >>> bool(np.isclose(k.omega_R, k0.omega_R) and np.isclose(k.u_i, k0.u_i))
     True
     """
-    free = ball_kinematics(omega_i, omega_o, alpha_i, alpha_o, D, dm, control=control)
+    if control not in CONTROLS:
+        raise InputError("control", control, f"must be one of {', '.join(CONTROLS)}")
     wi, wo = np.asarray(omega_i, float), np.asarray(omega_o, float)
     ai, ao = np.asarray(alpha_i, float), np.asarray(alpha_o, float)
-    beta = np.asarray(free.beta, float)
+    w_free, wR_free, beta, co, ci = _cage_spin(wi, wo, ai, ao, D, dm, control)
     wc = np.broadcast_to(np.asarray(omega_cage, float), np.broadcast(ai, ao, wi, wo).shape)
-    gp = D / dm
-    co = 0.5 * dm * (1.0 + gp * np.cos(ao))
-    ci = 0.5 * dm * (1.0 - gp * np.cos(ai))
     eo = 0.5 * D * np.cos(ao + beta)
     ei = 0.5 * D * np.cos(ai + beta)
     qi, qo = np.asarray(Q_i, float), np.asarray(Q_o, float)
     den = qo * eo * eo + qi * ei * ei
     num = qo * eo * co * (wo - wc) - qi * ei * ci * (wi - wc)
-    omega_R = np.where(den > 0, num / np.where(den > 0, den, 1.0), np.asarray(free.omega_R, float))
-    u_o = np.abs((wo - wc) * co)
-    u_i = np.abs((wi - wc) * ci)
-    spin_o = omega_R * np.sin(ao + beta) - (wo - wc) * np.sin(ao)
-    spin_i = omega_R * np.sin(ai + beta) - (wi - wc) * np.sin(ai)
-    roll_o = omega_R * np.cos(ao + beta)
-    roll_i = omega_R * np.cos(ai + beta)
-    sr_o = np.where(roll_o != 0, spin_o / np.where(roll_o != 0, roll_o, 1.0), 0.0)
-    sr_i = np.where(roll_i != 0, spin_i / np.where(roll_i != 0, roll_i, 1.0), 0.0)
-    f = _f
-    return BallKinematics(omega_c=f(wc), omega_R=f(omega_R), beta=f(beta), u_i=f(u_i), u_o=f(u_o),
-                          spin_i=f(spin_i), spin_o=f(spin_o), spin_roll_i=f(sr_i), spin_roll_o=f(sr_o))
+    omega_R = np.where(den > 0, num / np.where(den > 0, den, 1.0), wR_free)
+    return _speeds(wi, wo, ai, ao, beta, wc, omega_R, co, ci)
 
 
 def _cage_spin(wi, wo, ai, ao, D, dm, control, beta=None):
