@@ -98,8 +98,9 @@ def test_cli_set_fixed(capsys):
     assert code == 2 and err.startswith("error: thermal.fixed_C.balls") and "Traceback" not in err
 
 
-@pytest.mark.xfail(strict=True, reason="known gap (issue 4): balls outside the load zone lose their inner-contact "
-                   "rolling force (no hydrodynamic force across a gap in the model); the power falls 7-13 %")
+@pytest.mark.xfail(strict=True, reason="known gap (issue 4): the dry load distribution ignores the film, as thick "
+                   "as the elastic approach at these loads; lightly loaded and out-of-zone balls lose their rolling "
+                   "force and the power falls 7-13 % (validation/report/seed004_trends.md)")
 def test_radial_load_barely_changes_power_at_equal_ring_temperature(scene):
     """Seed 004 §5.3.5, Figs 13a and 18: Fa 450 N, 4800 rpm, block radial load 50 → 1500 N (two
     bearings: 25 → 750 N each) leaves the power almost unchanged (< 10 %) at equal OR–IR mean
