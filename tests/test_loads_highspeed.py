@@ -253,3 +253,146 @@ def test_one_cage_speed_and_unloaded_balls_pressed_by_their_centrifugal_force():
     from thermobear.kinematics import ball_kinematics
     own = ball_kinematics(4800 * np.pi / 30, 0.0, ld.alpha_i, ld.alpha_o, b.D, b.dm).omega_c
     assert own[~free].min() <= ex.omega_c[0] <= own[~free].max()
+
+
+# --- robustness and exactness of the solver (one cage, analytic Jacobian) ---------------------------
+
+def _assert_equilibrium(b, ld, ex, Fa, Fr, M=0.0, rtol=1e-8):
+    """Every ball and ring equation, re-evaluated from the returned fields (forces in N)."""
+    ai, ao, Qi, Qo = ld.alpha_i, ld.alpha_o, ld.Q_i, ld.Q_o
+    li, lo, D = ex.lambda_i, ex.lambda_o, b.D
+    G = ex.Mg / D
+    scale = max(Fa, Fr, float(np.max(ex.Fc)))
+    fx = Qi * np.sin(ai) - Qo * np.sin(ao) + G * (li * np.cos(ai) - lo * np.cos(ao))
+    fr = Qi * np.cos(ai) - Qo * np.cos(ao) - G * (li * np.sin(ai) - lo * np.sin(ao)) + ex.Fc
+    assert np.max(np.abs(fx)) < rtol * scale and np.max(np.abs(fr)) < rtol * scale
+    c = np.cos(ld.psi)
+    fa_j = Qi * np.sin(ai) + li * G * np.cos(ai)
+    assert abs(fa_j.sum() - Fa) < rtol * scale
+    assert abs(((Qi * np.cos(ai) - li * G * np.sin(ai)) * c).sum() - Fr) < rtol * scale
+    # the geometry the loads come from: ball centre on both contact normals, Hertz at both contacts
+    A1 = ld.delta_a + b.R_inner_locus * ld.theta * c
+    A2 = b.A * np.cos(b.alpha0) + ld.delta_r * c
+    ri, ro = (b.fi - 0.5) * D + ex.delta_i, (b.fo - 0.5) * D + ex.delta_o
+    loaded = (Qi > 0) & (Qo > 0)
+    assert np.allclose((A1 - ex.X1)[loaded], (ri * np.sin(ai))[loaded], rtol=1e-9, atol=1e-15)
+    assert np.allclose((A2 - ex.X2)[loaded], (ri * np.cos(ai))[loaded], rtol=1e-9, atol=1e-15)
+    assert np.allclose(ex.X1, ro * np.sin(ao), rtol=1e-9, atol=1e-15)
+    an = b.alpha_nominal
+    assert np.allclose(Qi, b.K_i(an) * np.maximum(ex.delta_i, 0) ** 1.5, rtol=1e-12)
+    assert np.allclose(Qo, b.K_o(an) * np.maximum(ex.delta_o, 0) ** 1.5, rtol=1e-12)
+
+
+@pytest.mark.parametrize("name, Fa, Frs", [
+    ("7210", 450.0, [0.0, 25.0, 100.0, 300.0, 325.0, 450.0, 540.0, 650.0, 750.0, 1000.0, 1500.0]),
+    ("7210", 225.0, [0.0, 300.0, 650.0, 1500.0]),
+    ("6210", 0.0, [100.0, 1000.0, 3000.0]),
+    ("6210", 300.0, [100.0, 1000.0, 3000.0]),
+])
+def test_load_speed_grid_converges(name, Fa, Frs):
+    # combined loads from no to heavy radial load, 50 … 20 000 rpm, one batched call: balls leave the
+    # load zone, rest on the outer race or wedge between both races (before the polar step, the
+    # contact-closing limit and the placed start, 5 of these cases raised NoConvergence)
+    b = bearing(name)
+    Fr = np.array(Frs)[:, None]
+    n = np.array([50.0, 1000.0, 3200.0, 4800.0, 6500.0, 8070.0, 12000.0, 20000.0])
+    ld, ex = load_distribution_high_speed_full(b, Fa=Fa, Fr=Fr, n_rpm=n)
+    assert ld.residual <= 1e-10
+    assert np.all(ld.Q_o > 0)                     # at n > 0 every ball is pressed on the outer race
+    assert np.ptp(ex.omega_c, axis=-1).max() <= 1e-12 * ex.omega_c.max()
+
+
+@pytest.mark.parametrize("Fa, Fr, n", [(450.0, 450.0, 50.0), (450.0, 540.0, 50.0), (450.0, 650.0, 50.0),
+                                       (450.0, 650.0, 1000.0), (225.0, 300.0, 50.0)])
+def test_formerly_failing_cases_satisfy_every_equation(Fa, Fr, n):
+    b = bearing("7210")
+    ld, ex = load_distribution_high_speed_full(b, Fa=Fa, Fr=Fr, n_rpm=n)
+    _assert_equilibrium(b, ld, ex, Fa, Fr)
+    # the load zone is where it belongs: the heaviest ball at ψ = 0, symmetric about it
+    assert np.argmax(ld.Q_i) == 0
+    assert np.allclose(ld.Q_i[1:], ld.Q_i[1:][::-1], rtol=1e-6, atol=1e-9 * Fa)
+
+
+def test_out_of_zone_balls_wedged_with_loads_of_the_order_of_their_centrifugal_force():
+    # 50 rpm: F_c ≈ 1.5 mN.  A ball outside the load zone cannot rest on the outer race alone (it
+    # would sit in the axially offset inner groove); it is wedged between both races with loads
+    # of the order of F_c — not the kN loads of a ball pushed straight out by F_c
+    b = bearing("7210")
+    ld, ex = load_distribution_high_speed_full(b, Fa=450.0, Fr=650.0, n_rpm=50.0)
+    out = ld.Q_o < 1e-3 * ld.Q_o.max()
+    assert out.sum() >= 6
+    assert np.all(ld.Q_i[out] > 0)
+    ratio = ld.Q_o[out] / ex.Fc[out]
+    assert np.all((ratio > 1.0) & (ratio < 10.0))
+    assert np.all(ld.alpha_i[out] - ld.alpha_o[out] > np.deg2rad(5))   # two distinct contact normals
+    _assert_equilibrium(b, ld, ex, 450.0, 650.0)
+
+
+@pytest.mark.parametrize("control", ["outer", "inner", "both"])
+def test_kinematics_agree_with_the_kinematics_module(control):
+    # the solver evaluates β, the own orbital speeds, ω_R with sin/cos of the contact normals and
+    # analytic derivatives; thermobear.kinematics computes them from the angles
+    from thermobear.kinematics import ball_kinematics, caged_ball_kinematics, common_cage_speed
+    b = bearing("7210")
+    ld, ex = load_distribution_high_speed_full(b, Fa=450.0, Fr=540.0, n_rpm=6500.0, control=control)
+    w = 6500.0 * np.pi / 30
+    kc = "inner" if control == "inner" else "outer"
+    own = ball_kinematics(w, 0.0, ld.alpha_i, ld.alpha_o, b.D, b.dm, control=kc)
+    wc = common_cage_speed(own.omega_c, ld.Q_i)
+    np.testing.assert_allclose(ex.omega_c, wc, rtol=1e-12)
+    caged = caged_ball_kinematics(w, 0.0, ld.alpha_i, ld.alpha_o, b.D, b.dm, wc, ld.Q_i, ld.Q_o, control=kc)
+    np.testing.assert_allclose(ex.omega_R, caged.omega_R, rtol=1e-10)
+    np.testing.assert_allclose(ex.beta, own.beta, rtol=1e-12, atol=1e-15)
+    np.testing.assert_allclose(ex.Fc, 0.5 * b.ball_mass * b.dm * wc**2, rtol=1e-12)
+    np.testing.assert_allclose(ex.Mg, b.ball_mass * b.D**2 / 10 * ex.omega_R * wc * np.sin(ex.beta), rtol=1e-12)
+
+
+@pytest.mark.parametrize("control, Fr, n", [("outer", 325.0, 3200.0), ("inner", 325.0, 3200.0),
+                                            ("both", 325.0, 8000.0), ("outer", 1500.0, 1000.0)])
+def test_newton_direction_is_exact(control, Fr, n):
+    # the analytic Jacobian (contacts, kinematics, the cage as a rank-one coupling) gives the same
+    # Newton direction as central finite differences of the residual, at the start of the solve
+    import thermobear.loads_highspeed as lh
+    b = bearing("7210")
+    seen = {}
+    orig = lh._newton
+
+    def spy(pb, x, g, tol, maxiter, st=None):
+        seen.setdefault("args", (pb, x.copy(), g.copy()))
+        return orig(pb, x, g, tol, maxiter, st)
+
+    lh._newton = spy
+    try:
+        load_distribution_high_speed_full(b, Fa=450.0, Fr=Fr, n_rpm=n, control=control)
+    finally:
+        lh._newton = orig
+    pb, x, g = seen["args"]
+    Z = pb.Z
+
+    def res(z):
+        st = pb.state(z[:2 * Z].reshape(1, Z, 2), z[2 * Z:].reshape(1, 3))
+        return np.concatenate([st.r_b[0].ravel(), st.r_g[0] * pb.free_g[0]])
+
+    z0 = np.concatenate([x[0].ravel(), g[0]])
+    J = np.zeros((z0.size, z0.size))
+    for k in range(z0.size):
+        h = 1e-7 * max(abs(z0[k]), 1e-3)
+        zp, zm = z0.copy(), z0.copy()
+        zp[k] += h
+        zm[k] -= h
+        J[:, k] = (res(zp) - res(zm)) / (2 * h)
+    held = np.flatnonzero(pb.free_g[0] == 0) + 2 * Z
+    J[held, :] = 0.0
+    J[:, held] = 0.0
+    J[held, held] = 1.0
+    d_fd = np.linalg.solve(J, -res(z0))
+    dx, dg = pb.newton_step(pb.state(x, g))
+    d = np.concatenate([dx[0].ravel(), dg[0]])
+    assert np.max(np.abs(d - d_fd)) <= 1e-5 * np.max(np.abs(d_fd))
+
+
+def test_seed004_point_converges_quadratically():
+    # Fa 450 N, Fr 325 N, 3200 rpm (seed 004): exact Newton from the placed start
+    ld = load_distribution_high_speed(bearing("7210"), Fa=450.0, Fr=325.0, n_rpm=3200.0)
+    assert ld.residual <= 1e-13
+    assert ld.iterations <= 10

@@ -66,13 +66,24 @@ implies (with a centrifugal force to match).  Every residual is evaluated with t
 recomputed at the iterate, so a converged residual is the fixed point of the coupled problem.
 
 Solver: Newton on the 2Z + 3 unknowns (X per ball, δa, δr, θ) — the 4Z + 3 of Harris with
-δi, δo eliminated exactly — vectorised over the balls and a batch of load cases; the
-per-ball 2×2 blocks are eliminated in closed form (Schur complement) so only a 3×3 global
-system is solved per case.  The Jacobian includes the dependence of F_c and M_g on the
-contact angles (finite differences in α_i, α_o) and, through the cage speed, on every ball (a
-rank-one term added by Sherman–Morrison), so convergence is quadratic; steps are
-capped at 0.1 A and damped by a backtracking line search; starting values from
-:func:`thermobear.loads.load_distribution` with each ball pushed out by its F_c.  A case
+δi, δo eliminated exactly — vectorised over the balls and a batch of load cases.  The
+Jacobian is exact and analytic: contact stiffness matrices, and the derivatives of β, the
+balls' own orbital speeds, ω_R, F_c and M_g with respect to α_i, α_o, Q_i, Q_o and the cage
+speed (:meth:`_Problem.newton_step`); the cage speed, a load-weighted mean over all balls, enters
+as a fourth global unknown whose residual is zero at every iterate, so the per-ball 2×2 blocks
+are eliminated in closed form (Schur complement) and one 4×4 system is solved per case.
+Convergence is quadratic.  Globalisation: a ball's step follows the polar path about the outer
+groove centre (a ball resting on the outer race rolls along it instead of being pushed into
+it); a ball's step that would close an open contact is shortened to the approach carrying its
+own force scale; steps are capped at 0.1 A; a backtracking line search asks for a decrease
+against the largest of the last 5 residuals (non-monotone: a light ball changing between
+resting, wedged and floating may raise the residual for one step); a light ball whose residual
+stalls the line search is re-placed (:func:`_relax`).  Start (:func:`_start`): the static
+solution of :func:`thermobear.loads.load_distribution`, loaded balls pushed out by their F_c,
+light and out-of-zone balls placed in equilibrium under their F_c and gyroscopic friction with
+the rings held (on the outer race or wedged between both races with loads ~F_c).  Past the
+tolerance up to two more Newton steps are taken towards tol·10⁻³ (quadratic convergence makes
+them cheap; they fix the ill-conditioned positions of balls carrying ~F_c).  A case
 that fails is re-solved by continuation in speed; if equilibria exist up to some speed
 and not beyond (the branch ends: e.g. outer-raceway control in a thrust bearing, where the
 cage speed runs away as α_i passes 90°), NoEquilibrium says so.  For a thrust bearing δr is
@@ -86,12 +97,12 @@ defined at n = 0; its contact force is reported as 0 (the force it could carry,
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
 from .errors import InputError, NoConvergence, NoEquilibrium
 from .geometry import BallBearing
-from .kinematics import _cage_spin, common_cage_speed
 from .loads import STIFFNESS_MODES, LoadDistribution, load_distribution
 
 __all__ = ["HighSpeedExtras", "load_distribution_high_speed", "load_distribution_high_speed_full",
@@ -103,6 +114,13 @@ _ALIASES = {"none": "both"}
 _EPS_TENSION = 1e-12    # linear stiffness of an open contact, relative to K √A (numerical regularisation)
 _MAXIT = 100
 _STEP_CAP = 0.1         # largest Newton move of a ball centre or ring per step, in units of A
+_POLISH = 2            # Newton steps allowed after the tolerance is met, towards tol·1e-3
+_NONMONOTONE = 5        # line search: sufficient decrease against the largest of the last 5 norms
+_BALL_CAP = 0.05        # largest move of a ball centre per step of the per-ball start, in units of A
+_BALL_MAXIT = 40        # Newton steps of the per-ball start
+_BALL_HALVINGS = 12     # line-search halvings of the per-ball start
+_RELAX = 1e-2          # a light ball is re-placed when its residual exceeds this share of its F_c + friction
+_BALL_TOL = 1e-4        # per-ball start: force residual relative to the ball's external force
 
 
 @dataclass(frozen=True)
@@ -138,7 +156,26 @@ class HighSpeedExtras:
     n_rpm: np.ndarray
 
 
-_P = np.array([[0.0, 1.0], [-1.0, 0.0]])       # e = P n  (tangent from normal)
+@lru_cache(maxsize=32)
+def _stiffness_constants(brg):
+    """K_i, K_o at the nominal contact angle [N/m^1.5] and the open-contact regularising stiffness
+    ε K_n √A [N/m] of a bearing (cached: a BallBearing is immutable and hashable)."""
+    an = brg.alpha_nominal
+    return float(brg.K_i(an)), float(brg.K_o(an)), _EPS_TENSION * float(brg.Kn()) * np.sqrt(brg.A)
+
+
+class _State:
+    """Arrays of one Newton iterate, every one with the batch as its leading axis (set by
+    :meth:`_Problem.state`)."""
+
+    def take(self, m):
+        new = _State.__new__(_State)
+        new.__dict__ = {k: v[m] for k, v in self.__dict__.items()}
+        return new
+
+    def put(self, m, other):
+        for k, v in self.__dict__.items():
+            v[m] = other.__dict__[k]
 
 
 class _Problem:
@@ -151,262 +188,425 @@ class _Problem:
         self.c = np.cos(self.psi)[None, :]
         self.ci0 = (brg.fi - 0.5) * brg.D          # |O_i − C| unloaded [m]
         self.co0 = (brg.fo - 0.5) * brg.D          # |C − O_o| unloaded [m]
+        self.A2_0 = self.A * np.cos(brg.alpha0)    # radial groove-centre offset, centred rings [m]
         self.F_app, self.scale, self.free_g = F_app, scale, free_g
         self.omega = omega                          # (nb,) inner-ring speed [rad/s]
+        self.w_ref = np.maximum(omega, 1.0)         # (nb,) scale of the cage-speed unknown [rad/s]
         self.stiffness = stiffness
         self.lam_i, self.lam_o, self.kin_control = lam_i, lam_o, kin_control
-        an = brg.alpha_nominal
-        self.Ki0, self.Ko0 = float(brg.K_i(an)), float(brg.K_o(an))
-        self.k_eps = _EPS_TENSION * float(brg.Kn()) * np.sqrt(self.A)
+        self.Ki0, self.Ko0, self.k_eps = _stiffness_constants(brg)
+        self.D, self.dm, self.fi = brg.D, brg.dm, brg.fi
+        self.gp = brg.D / brg.dm
         self.m = brg.ball_mass
         self.J = self.m * brg.D**2 / 10.0
+        # dA/dg / A per ball: Wt = [[1, 0, c], [0, c, 0]] (2×3) and its transpose (3×2)
+        c = np.cos(self.psi)
+        self.Wt = np.zeros((1, brg.Z, 2, 3))
+        self.Wt[0, :, 0, 0] = 1.0
+        self.Wt[0, :, 0, 2] = c
+        self.Wt[0, :, 1, 1] = c
+        self.W = np.swapaxes(self.Wt, -1, -2).copy()
 
     def centres(self, g):
         """Inner groove-centre offsets A1, A2 [m] from scaled globals g = (δa/A, δr/A, θℜ/A)."""
         A, c = self.A, self.c
-        A1 = A * (g[:, 0:1] + g[:, 2:3] * c)
-        A2 = A * np.cos(self.brg.alpha0) + A * g[:, 1:2] * c
-        return A1, A2
+        return A * (g[:, 0:1] + g[:, 2:3] * c), self.A2_0 + (A * g[:, 1:2]) * c
 
     def _contact_force(self, delta, K):
         pos = delta > 0
-        dp = np.where(pos, delta, 0.0)
-        Q = np.where(pos, K * dp**1.5, self.k_eps * delta)
-        dQ = np.where(pos, 1.5 * K * np.sqrt(dp), self.k_eps)
+        sq = np.sqrt(np.where(pos, delta, 0.0))
+        Q = np.where(pos, K * delta * sq, self.k_eps * delta)
+        dQ = np.where(pos, 1.5 * K * sq, self.k_eps)
         return Q, dQ
 
-    def free_speeds(self, a_i, a_o):
-        """Each ball's own no-slip orbital speed ω_c [rad/s], ball speed ω_R, pitch β and the contact
-        radii c_o, c_i (thermobear.kinematics.ball_kinematics), broadcast to the balls."""
-        brg = self.brg
-        w_c, w_R, beta, co, ci = _cage_spin(self.omega[:, None], np.float64(0.0), a_i, a_o, brg.D, brg.dm,
-                                            self.kin_control)
-        one = np.ones_like(a_i)
-        return w_c * one, w_R * one, beta * one, co * one, ci * one
-
-    def inertia(self, a_i, a_o, Qi, Qo, w_cage=None):
-        """Centrifugal force F_c [N] and gyroscopic moment M_g [N m] of each ball from its
-        contact angles and loads (Harris 2001 eqs 8.9, 8.34; kinematics of thermobear.kinematics).
-
-        One rigid cage: every ball orbits at the cage speed, the Q_i-weighted mean of the balls'
-        own no-slip orbital speeds (:func:`thermobear.kinematics.common_cage_speed`), and spins at
-        the load-weighted least-squares ω_R of :func:`thermobear.kinematics.caged_ball_kinematics`
-        (Harris's model lets each ball orbit at its own speed; with combined loads at speed those
-        differ by 50 % and more between the loaded and the lightly loaded balls).  ``w_cage`` (nb,)
-        freezes the cage speed (finite differences at fixed cage speed; the cage's own dependence
-        on the balls enters the Newton step as a rank-one term, :meth:`newton_step`)."""
-        brg = self.brg
-        w_c, w_R, beta, co, ci = self.free_speeds(a_i, a_o)
-        qi, qo = np.maximum(Qi, 0.0), np.maximum(Qo, 0.0)
-        if w_cage is None:
-            w_cage = common_cage_speed(w_c, qi)
-        wc = np.asarray(w_cage)[:, None] * np.ones_like(a_i)
-        eo = 0.5 * brg.D * np.cos(a_o + beta)
-        ei = 0.5 * brg.D * np.cos(a_i + beta)
-        den = qo * eo * eo + qi * ei * ei
-        num = -qo * eo * co * wc - qi * ei * ci * (self.omega[:, None] - wc)
-        w_R = np.where(den > 0, num / np.where(den > 0, den, 1.0), w_R)
-        Fc = 0.5 * self.m * brg.dm * wc**2
-        Mg = self.J * w_R * wc * np.sin(beta)
-        return Fc, Mg, wc, w_R, beta
-
     def state(self, x, g):
-        """Everything at scaled unknowns x = X/A (nb, Z, 2) and g (nb, 3)."""
-        brg, A = self.brg, self.A
+        r"""Everything at scaled unknowns x = X/A (nb, Z, 2) and g (nb, 3).
+
+        Kinematics (:func:`thermobear.kinematics.ball_kinematics`, written with sin α, cos α of the
+        contact normals; outer control shown, inner control swaps the roles): tan β = −sin α_o /
+        (cos α_o + γ'), γ' = D/dm, contact radii R_o = (dm/2)(1 + γ' cos α_o), R_i = (dm/2)(1 − γ'
+        cos α_i), lever arms E = (D/2) cos(α + β); each ball's own no-slip orbital speed
+        ω_c,j = ω R_i E_o / (R_o E_i + R_i E_o); cage speed ω_cage = Σ Q_i ω_c,j / Σ Q_i
+        (:func:`thermobear.kinematics.common_cage_speed`); ball spin the load-weighted least-squares
+        ω_R = −[Q_o E_o R_o ω_cage + Q_i E_i R_i (ω − ω_cage)] / (Q_o E_o² + Q_i E_i²)
+        (:func:`thermobear.kinematics.caged_ball_kinematics`; own no-slip −ω R_o R_i / det when
+        both contacts are open); F_c = ½ m dm ω_cage², M_g = J ω_R ω_cage sin β."""
+        st = _State.__new__(_State)
+        A = self.A
         A1, A2 = self.centres(g)
         X1, X2 = A * x[..., 0], A * x[..., 1]
         p, q = A1 - X1, A2 - X2
         d_i, d_o = np.hypot(p, q), np.hypot(X1, X2)
-        n_i = np.stack([p / d_i, q / d_i], axis=-1)
-        n_o = np.stack([X1 / d_o, X2 / d_o], axis=-1)
-        a_i, a_o = np.arctan2(p, q), np.arctan2(X1, X2)
+        si, ci, so, co = p / d_i, q / d_i, X1 / d_o, X2 / d_o
         dl_i, dl_o = d_i - self.ci0, d_o - self.co0
         if self.stiffness == "per_ball":
-            Ki, Ko = brg.K_i(a_i), brg.K_o(a_o)
+            Ki, Ko = self.brg.K_i(np.arctan2(p, q)), self.brg.K_o(np.arctan2(X1, X2))
         else:
             Ki, Ko = self.Ki0, self.Ko0
         Qi, dQi = self._contact_force(dl_i, Ki)
         Qo, dQo = self._contact_force(dl_o, Ko)
-        Fc, Mg, w_c, w_R, beta = self.inertia(a_i, a_o, Qi, Qo)
-        w_cage = w_c[:, 0].copy()
-        Ti, To = self.lam_i * Mg / brg.D, self.lam_o * Mg / brg.D
-        e_i = n_i @ _P.T
-        e_o = n_o @ _P.T
-        F_i = Qi[..., None] * n_i + Ti[..., None] * e_i                 # inner ring on ball
-        F_o = -(Qo[..., None] * n_o + To[..., None] * e_o)              # outer ring on ball
-        r_b = F_i + F_o
-        r_b[..., 1] += Fc
+        # kinematics of each ball at its own contact angles
+        gp, hdm, hD = self.gp, 0.5 * self.dm, 0.5 * self.D
+        w = self.omega[:, None]
+        if self.kin_control == "outer":
+            rb2 = 1.0 + 2.0 * gp * co + gp * gp
+            rb = np.sqrt(rb2)
+            cb, sb = (co + gp) / rb, -so / rb
+            ceo, seo = (1.0 + gp * co) / rb, gp * so / rb                 # cos, sin (α_o + β)
+            cei, sei = ci * cb - si * sb, si * cb + ci * sb
+        else:
+            rb2 = 1.0 - 2.0 * gp * ci + gp * gp
+            rb = np.sqrt(rb2)
+            cb, sb = (ci - gp) / rb, -si / rb
+            cei, sei = (1.0 - gp * ci) / rb, -gp * si / rb
+            ceo, seo = co * cb - so * sb, so * cb + co * sb
+        Ro, Ri = hdm * (1.0 + gp * co), hdm * (1.0 - gp * ci)
+        Eo, Ei = hD * ceo, hD * cei
+        det = Ro * Ei + Ri * Eo
+        w_own = w * Ri * Eo / det
+        wR_own = -w * Ro * Ri / det
+        # one cage
+        qi, qo = np.maximum(Qi, 0.0), np.maximum(Qo, 0.0)
+        qs = qi.sum(1, keepdims=True)
+        has = qs > 0
+        qs1 = np.where(has, qs, 1.0)
+        wgt = np.where(has, qi / qs1, 1.0 / self.Z)
+        W = (wgt * w_own).sum(1, keepdims=True)                            # (nb, 1)
+        den = qo * Eo * Eo + qi * Ei * Ei
+        pos = den > 0
+        den1 = np.where(pos, den, 1.0)
+        wR = np.where(pos, -(qo * Eo * Ro * W + qi * Ei * Ri * (w - W)) / den1, wR_own)
+        Fc = 0.5 * self.m * self.dm * W * W                                 # (nb, 1)
+        Mg = self.J * wR * W * sb
+        # forces on the ball: inner ring Q_i n_i + T_i e_i, outer ring −(Q_o n_o + T_o e_o), e = (cos α, −sin α)
+        if self.lam_i:
+            Ti = self.lam_i / self.D * Mg
+            Fi1, Fi2 = Qi * si + Ti * ci, Qi * ci - Ti * si
+        else:
+            Fi1, Fi2 = Qi * si, Qi * ci
+        if self.lam_o:
+            To = self.lam_o / self.D * Mg
+            Fo1, Fo2 = Qo * so + To * co, Qo * co - To * so
+        else:
+            Fo1, Fo2 = Qo * so, Qo * co
+        s = self.scale[:, None]
+        r_b = np.stack([Fi1 - Fo1, Fi2 - Fo2 + Fc], axis=-1) / s[..., None]
         c = self.c
-        Fg = np.stack([F_i[..., 0].sum(1), (F_i[..., 1] * c).sum(1),
-                       ((F_i[..., 0] - self.lam_i * brg.fi * Mg / self.R) * c).sum(1)], axis=1)
-        r_g = Fg - self.F_app
-        s = self.scale
-        return dict(A1=A1, A2=A2, X1=X1, X2=X2, d_i=d_i, d_o=d_o, n_i=n_i, n_o=n_o, a_i=a_i, a_o=a_o,
-                    dl_i=dl_i, dl_o=dl_o, Qi=Qi, Qo=Qo, dQi=dQi, dQo=dQo, Ti=Ti, To=To, Fc=Fc, Mg=Mg,
-                    w_c=w_c, w_R=w_R, beta=beta, w_cage=w_cage, r_b=r_b / s[:, None, None], r_g=r_g / s[:, None])
+        Fx = Fi1 - (self.lam_i * self.fi / self.R) * Mg if self.lam_i else Fi1
+        r_g = (np.stack([Fi1.sum(1), (Fi2 * c).sum(1), (Fx * c).sum(1)], axis=1) - self.F_app) / s
+        st.__dict__.update(
+            X1=X1, X2=X2, p=p, q=q, d_i=d_i, d_o=d_o, si=si, ci=ci, so=so, co=co, dl_i=dl_i, dl_o=dl_o,
+            Qi=Qi, Qo=Qo, dQi=dQi, dQo=dQo, rb2=rb2, cb=cb, sb=sb, seo=seo, sei=sei, Ro=Ro, Ri=Ri,
+            Eo=Eo, Ei=Ei, det=det, w_own=w_own, wR_own=wR_own, qs=qs, wgt=wgt, W=W, den=den, wR=wR,
+            Fc=Fc, Mg=Mg, Fi1=Fi1, Fi2=Fi2, Fo1=Fo1, Fo2=Fo2, r_b=r_b, r_g=r_g)
+        return st
 
     def norm(self, st):
-        nb = np.max(np.abs(st["r_b"]), axis=(1, 2))
-        ng = np.max(np.abs(st["r_g"]) * self.free_g, axis=1)
+        nb = np.max(np.abs(st.r_b), axis=(1, 2))
+        ng = np.max(np.abs(st.r_g) * self.free_g, axis=1)
         return np.maximum(nb, ng)
 
+    def closing_limit(self, st, dx, dg):
+        r"""Per-ball factor (≤ 1) on a Newton step dx that would close an open contact.
+
+        An open contact has no stiffness in the linear model, so Newton moves a ball with one
+        open contact as if the race were not there; near a wedge (a ball outside the load zone
+        held between both races with loads ~F_c) the step then buries the ball deep in that race.
+        The ball's step is shortened so that the predicted approach of an open contact,
+        δ + n·(ΔA − ΔX) (inner) or δ + n·ΔX (outer), reaches at most δ_η = (F/K)^(2/3), the approach
+        that carries the ball's force scale F = max(F_c, |r_b|) — the next step then sees the contact."""
+        A = self.A
+        c = self.c
+        dA1 = A * (dg[:, 0:1] + dg[:, 2:3] * c)
+        dA2 = (A * dg[:, 1:2]) * c
+        dX1, dX2 = A * dx[..., 0], A * dx[..., 1]
+        dd_i = st.si * (dA1 - dX1) + st.ci * (dA2 - dX2)
+        dd_o = st.so * dX1 + st.co * dX2
+        F = np.maximum(st.Fc, np.max(np.abs(st.r_b), axis=-1) * self.scale[:, None])
+        kap = np.ones(dd_i.shape)
+        for dl, dd, K in ((st.dl_i, dd_i, self.Ki0), (st.dl_o, dd_o, self.Ko0)):
+            d_eta = (F / K) ** (2.0 / 3.0)
+            over = (dl < 0) & (dl + dd > d_eta)
+            if np.any(over):
+                kap = np.where(over, np.minimum(kap, (d_eta - dl) / np.where(over, dd, 1.0)), kap)
+        return kap
+
     def newton_step(self, st):
-        """Newton direction at frozen F_c, M_g (Schur complement over the per-ball 2×2 blocks)."""
-        A, s = self.A, self.scale[:, None, None, None]
-        eye = np.eye(2)
+        r"""Exact Newton direction (dx, dg) at the iterate ``st``.
 
-        def G(Q, dQ, T, n, d):
-            nn = n[..., :, None] * n[..., None, :]
-            tang = (Q[..., None, None] * eye + T[..., None, None] * _P) @ (eye - nn) / d[..., None, None]
-            return dQ[..., None, None] * nn + tang
-
-        Gi = G(st["Qi"], st["dQi"], st["Ti"], st["n_i"], st["d_i"]) * A / s
-        Go = G(st["Qo"], st["dQo"], st["To"], st["n_o"], st["d_o"]) * A / s
-        nb, Z = Gi.shape[:2]
-        Wt = np.zeros((nb, Z, 2, 3))                       # dA/dg / A = [[1, 0, c], [0, c, 0]]
-        Wt[..., 0, 0] = 1.0
-        Wt[..., 0, 2] = self.c
-        Wt[..., 1, 1] = self.c
-        W = np.swapaxes(Wt, -1, -2)
-        Jbb = -(Gi + Go)
-        Jbg = Gi @ Wt                                       # (nb, Z, 2, 3)
-        Jgb = -(W @ Gi)                                     # (nb, Z, 3, 2)
-        Jgg = (W @ Gi @ Wt).sum(1)                          # (nb, 3, 3)
-        # kinematic coupling: F_c and M_g depend on α_i, α_o (finite differences in the angles);
-        # dα_i/dX = −e_i/d_i, dα_i/d(A1, A2) = e_i/d_i, dα_o/dX = e_o/d_o
-        h = 1e-7
-        a_i, a_o = st["a_i"], st["a_o"]
-        wcg = st["w_cage"]
-        Fc_i, Mg_i = self.inertia(a_i + h, a_o, st["Qi"], st["Qo"], wcg)[:2]
-        Fc_o, Mg_o = self.inertia(a_i, a_o + h, st["Qi"], st["Qo"], wcg)[:2]
-        e_i, e_o = st["n_i"] @ _P.T, st["n_o"] @ _P.T
-        D = self.brg.D
-        drb_dMg = (self.lam_i * e_i - self.lam_o * e_o) / D                       # (nb, Z, 2)
-        drg_dMg = (W @ (self.lam_i * e_i / D)[..., None])[..., 0]                 # (nb, Z, 3)
-        drg_dMg[..., 2] -= self.lam_i * self.brg.fi * self.c / self.R
-        sc = A / self.scale[:, None, None]
-        vb, ub, vg, ug = [], [], [], []
-        for dFc, dMg in (((Fc_i - st["Fc"]) / h, (Mg_i - st["Mg"]) / h), ((Fc_o - st["Fc"]) / h, (Mg_o - st["Mg"]) / h)):
-            b = drb_dMg * dMg[..., None]
-            b[..., 1] += dFc
-            (vb if not vb else ub).append(b * sc)
-            (vg if not vg else ug).append(drg_dMg * dMg[..., None] * sc)
-        vb, ub, vg, ug = vb[0], ub[0], vg[0], ug[0]
-        gi = e_i / st["d_i"][..., None]                    # dα_i/dA
-        go = e_o / st["d_o"][..., None]                    # dα_o/dX
-        Jbb = Jbb - vb[..., :, None] * gi[..., None, :] + ub[..., :, None] * go[..., None, :]
-        Jbg = Jbg + vb[..., :, None] * (gi[..., None, :] @ Wt)
-        Jgb = Jgb - vg[..., :, None] * gi[..., None, :] + ug[..., :, None] * go[..., None, :]
-        Jgg = Jgg + (vg[..., :, None] * (gi[..., None, :] @ Wt)).sum(1)
-        det = Jbb[..., 0, 0] * Jbb[..., 1, 1] - Jbb[..., 0, 1] * Jbb[..., 1, 0]
+        Unknowns: x (2 per ball), the three ring globals g and, as a fourth global, the cage speed
+        with the residual r_W = (ω_cage − Σ Q_i ω_c,j / Σ Q_i)/ω_ref, zero at every iterate: its row
+        carries the dependence of the cage speed on every ball (a rank-one coupling), so the
+        Newton step of the augmented system is that of the reduced one.  The per-ball 2×2 blocks
+        are eliminated in closed form (Schur complement; a 4×4 system per case).  All kinematic
+        derivatives (of β, the contact radii, ω_c,j, ω_R, F_c and M_g with respect to α_i, α_o, Q_i,
+        Q_o and ω_cage) are analytic; dα_i/d(A − X) = e_i/d_i, dα_o/dX = e_o/d_o."""
+        A, D, J = self.A, self.D, self.J
+        gp, hdm, hD = self.gp, 0.5 * self.dm, 0.5 * self.D
+        w = self.omega[:, None]
+        si, ci, so, co = st.si, st.ci, st.so, st.co
+        Qi, Qo, dQi, dQo = st.Qi, st.Qo, st.dQi, st.dQo
+        Ro, Ri, Eo, Ei, det, W, wR, sb, cb = st.Ro, st.Ri, st.Eo, st.Ei, st.det, st.W, st.wR, st.sb, st.cb
+        # --- derivatives of the kinematics with respect to α_i (suffix _i) and α_o (suffix _o)
+        if self.kin_control == "outer":
+            b_o, b_i = -(1.0 + gp * co) / st.rb2, 0.0
+            Eo_o, Eo_i = -hD * st.seo * (1.0 + b_o), 0.0
+            Ei_i, Ei_o = -hD * st.sei, -hD * st.sei * b_o
+        else:
+            b_i, b_o = -(1.0 - gp * ci) / st.rb2, 0.0
+            Ei_i, Ei_o = -hD * st.sei * (1.0 + b_i), 0.0
+            Eo_o, Eo_i = -hD * st.seo, -hD * st.seo * b_i
+        Ro_o, Ri_i = -hdm * gp * so, hdm * gp * si
+        det_i = Ro * Ei_i + Ri_i * Eo + Ri * Eo_i
+        det_o = Ro_o * Ei + Ro * Ei_o + Ri * Eo_o
+        wo_i = (w * (Ri_i * Eo + Ri * Eo_i) - st.w_own * det_i) / det
+        wo_o = (w * Ri * Eo_o - st.w_own * det_o) / det
+        qi, qo = np.maximum(Qi, 0.0), np.maximum(Qo, 0.0)
+        pos = st.den > 0
+        den1 = np.where(pos, st.den, 1.0)
+        wmW = w - W
+        wR_i = np.where(pos, (-qo * W * Eo_i * Ro - qi * wmW * (Ei_i * Ri + Ei * Ri_i)
+                              - 2.0 * wR * (qo * Eo * Eo_i + qi * Ei * Ei_i)) / den1,
+                        (-w * Ro * Ri_i - st.wR_own * det_i) / det)
+        wR_o = np.where(pos, (-qo * W * (Eo_o * Ro + Eo * Ro_o) - qi * wmW * Ei_o * Ri
+                              - 2.0 * wR * (qo * Eo * Eo_o + qi * Ei * Ei_o)) / den1,
+                        (-w * Ro_o * Ri - st.wR_own * det_o) / det)
+        JW = J * W
+        Mg_i = JW * (wR_i * sb + wR * cb * b_i)
+        Mg_o = JW * (wR_o * sb + wR * cb * b_o)
+        Mg_W = J * sb * (wR + W * np.where(pos, (qi * Ei * Ri - qo * Eo * Ro) / den1, 0.0))
+        Mg_Qi = np.where(pos & (Qi > 0), JW * sb * (-Ei * Ri * wmW - wR * Ei * Ei) / den1, 0.0)
+        Mg_Qo = np.where(pos & (Qo > 0), JW * sb * (-Eo * Ro * W - wR * Eo * Eo) / den1, 0.0)
+        Fc_W = self.m * self.dm * W
+        # cage speed: ∂ω_cage/∂Q_i, ∂α_i, ∂α_o of each ball
+        W_Q = np.where((st.qs > 0) & (Qi > 0), (st.w_own - W) / np.where(st.qs > 0, st.qs, 1.0), 0.0)
+        W_i, W_o = st.wgt * wo_i, st.wgt * wo_o
+        # --- geometry: n = (sin α, cos α), e = (cos α, −sin α); p = A_offset − X
+        n_i = np.stack([si, ci], axis=-1)
+        e_i = np.stack([ci, -si], axis=-1)
+        n_o = np.stack([so, co], axis=-1)
+        e_o = np.stack([co, -so], axis=-1)
+        gi = e_i / st.d_i[..., None]                      # dα_i/dp
+        go = e_o / st.d_o[..., None]                      # dα_o/dX
+        mi = Mg_i[..., None] * gi + (Mg_Qi * dQi)[..., None] * n_i       # dM_g/dp
+        mo = Mg_o[..., None] * go + (Mg_Qo * dQo)[..., None] * n_o       # dM_g/dX
+        bi = W_i[..., None] * gi + (W_Q * dQi)[..., None] * n_i           # dω_cage/dp
+        bo = W_o[..., None] * go                                          # dω_cage/dX
+        # contact stiffness matrices d(Q n + T e)/dp = dQ n nᵀ + (Q e − T n) eᵀ / d
+        if self.lam_i:
+            Ti = self.lam_i / D * st.Mg
+            ti = Qi[..., None] * e_i - Ti[..., None] * n_i
+        else:
+            ti = Qi[..., None] * e_i
+        if self.lam_o:
+            To = self.lam_o / D * st.Mg
+            to = Qo[..., None] * e_o - To[..., None] * n_o
+        else:
+            to = Qo[..., None] * e_o
+        Gi = (dQi[..., None, None] * n_i[..., :, None] * n_i[..., None, :]
+              + (ti / st.d_i[..., None])[..., :, None] * e_i[..., None, :])
+        Go = (dQo[..., None, None] * n_o[..., :, None] * n_o[..., None, :]
+              + (to / st.d_o[..., None])[..., :, None] * e_o[..., None, :])
+        v = (self.lam_i * e_i - self.lam_o * e_o) / D                     # ∂r_b/∂M_g
+        Hi = Gi + v[..., :, None] * mi[..., None, :]                     # d r_b / dp
+        Ho = v[..., :, None] * mo[..., None, :] - Go                     # d r_b / dX
+        s = self.scale
+        As = (A / s)[:, None, None, None]
+        nb, Z = Qi.shape
+        Jbb = As * (Ho - Hi)
+        Jbg = np.empty((nb, Z, 2, 4))
+        Jbg[..., :3] = As * (Hi @ self.Wt)
+        a_b = v * Mg_W[..., None]
+        a_b[..., 1] += Fc_W
+        Jbg[..., 3] = a_b * (self.w_ref / s)[:, None, None]
+        Jgb = np.empty((nb, Z, 4, 2))
+        WGi = self.W @ Gi
+        if self.lam_i:
+            u = self.W @ (self.lam_i / D * e_i)[..., None]                 # (nb, Z, 3, 1)
+            u[..., 2, 0] -= self.lam_i * self.fi / self.R * self.c
+            Li = WGi + u * mi[..., None, :]
+            Jgb[..., :3, :] = As * (u * mo[..., None, :] - Li)
+            Jgg_b = Li @ self.Wt
+            a_g = (u[..., 0] * Mg_W[..., None]).sum(1) * (self.w_ref / s)[:, None]
+        else:
+            Jgb[..., :3, :] = -As * WGi
+            Jgg_b = WGi @ self.Wt
+            a_g = 0.0
+        Jgb[..., 3, :] = (A / self.w_ref)[:, None, None] * (bi - bo)
+        S = np.empty((nb, 4, 4))
+        S[:, :3, :3] = (A / s)[:, None, None] * Jgg_b.sum(1)
+        S[:, :3, 3] = a_g
+        S[:, 3, :3] = -(A / self.w_ref)[:, None] * (bi[..., None, :] @ self.Wt)[..., 0, :].sum(1)
+        S[:, 3, 3] = 1.0
+        # per-ball 2×2 inverse
+        det2 = Jbb[..., 0, 0] * Jbb[..., 1, 1] - Jbb[..., 0, 1] * Jbb[..., 1, 0]
         tiny = 1e-14 * np.maximum(np.abs(Jbb).max(axis=(-1, -2)), 1e-300)
-        bad = np.abs(det) < tiny ** 2
+        bad = np.abs(det2) < tiny ** 2
         if np.any(bad):                                     # ball exactly at the edge of contact
-            Jbb = Jbb - (bad * tiny)[..., None, None] * eye
-            det = Jbb[..., 0, 0] * Jbb[..., 1, 1] - Jbb[..., 0, 1] * Jbb[..., 1, 0]
+            Jbb = Jbb - (bad * tiny)[..., None, None] * np.eye(2)
+            det2 = Jbb[..., 0, 0] * Jbb[..., 1, 1] - Jbb[..., 0, 1] * Jbb[..., 1, 0]
         Binv = np.empty_like(Jbb)
-        Binv[..., 0, 0], Binv[..., 1, 1] = Jbb[..., 1, 1] / det, Jbb[..., 0, 0] / det
-        Binv[..., 0, 1], Binv[..., 1, 0] = -Jbb[..., 0, 1] / det, -Jbb[..., 1, 0] / det
-        JgbB = Jgb @ Binv
-        S = Jgg - (JgbB @ Jbg).sum(1)
-        act = self.free_g
-        S = S * (act[:, :, None] * act[:, None, :]) + np.eye(3)[None] * (1.0 - act)[:, :, None]
-        sd = np.abs(np.linalg.det(S))
-        S = np.where((sd < 1e-300)[:, None, None], S + 1e-6 * np.eye(3)[None], S)
-
-        def solve(r_b, r_g):                                # (dx, dg) = −J_block⁻¹ (r_b, r_g)
-            rhs = (-r_g + (JgbB @ r_b[..., None])[..., 0].sum(1)) * act
-            dg = np.linalg.solve(S, rhs[..., None])[..., 0]
-            dx = (Binv @ (-r_b - (Jbg @ dg[:, None, :, None])[..., 0])[..., None])[..., 0]
-            return dx, dg
-
-        dx, dg = solve(st["r_b"], st["r_g"])
-        # the cage: every ball's F_c and M_g depend on the cage speed, a weighted mean over all balls —
-        # a rank-one term a bᵀ of the Jacobian (a = ∂r/∂ω_cage, b = ∂ω_cage/∂(x, g)), added by
-        # Sherman–Morrison: dz = dz0 − w (b·dz0)/(1 + b·w), w = J_block⁻¹ a
-        hw = 1e-7 * np.maximum(wcg, 1.0)
-        Fc_w, Mg_w = self.inertia(a_i, a_o, st["Qi"], st["Qo"], wcg + hw)[:2]
-        dFw, dMw = (Fc_w - st["Fc"]) / hw[:, None], (Mg_w - st["Mg"]) / hw[:, None]
-        s1 = self.scale[:, None, None]
-        a_b = drb_dMg * dMw[..., None] / s1
-        a_b[..., 1] += dFw / self.scale[:, None]
-        a_g = (drg_dMg * dMw[..., None]).sum(1) / self.scale[:, None] * act
-        w_own = self.free_speeds(a_i, a_o)[0]
-        dw_ai = (self.free_speeds(a_i + h, a_o)[0] - w_own) / h
-        dw_ao = (self.free_speeds(a_i, a_o + h)[0] - w_own) / h
-        q = np.maximum(st["Qi"], 0.0)
-        qs = q.sum(1, keepdims=True)
-        has = qs > 0
-        wgt = np.where(has, q / np.where(has, qs, 1.0), 1.0 / q.shape[1])
-        c_q = np.where(has & (st["Qi"] > 0), (w_own - wcg[:, None]) / np.where(has, qs, 1.0), 0.0)
-        c_ai, c_ao = wgt * dw_ai, wgt * dw_ao
-        dQn = (c_q * st["dQi"])[..., None] * st["n_i"]                          # via Q_i: dQ_i/dA = dQ_i n_i
-        b_x = A * (-c_ai[..., None] * gi + c_ao[..., None] * go - dQn)           # per scaled x
-        b_g = A * ((c_ai[..., None] * gi + dQn)[..., None, :] @ Wt)[..., 0, :].sum(1) * act
-        wx, wg = solve(-a_b, -a_g)
-        bz = (b_x * dx).sum((1, 2)) + (b_g * dg).sum(1)
-        bw = (b_x * wx).sum((1, 2)) + (b_g * wg).sum(1)
-        den = 1.0 + bw
-        f = np.where(np.abs(den) > 1e-12, bz / np.where(np.abs(den) > 1e-12, den, 1.0), 0.0)
-        return dx - f[:, None, None] * wx, dg - f[:, None] * wg
+        Binv[..., 0, 0], Binv[..., 1, 1] = Jbb[..., 1, 1] / det2, Jbb[..., 0, 0] / det2
+        Binv[..., 0, 1], Binv[..., 1, 0] = -Jbb[..., 0, 1] / det2, -Jbb[..., 1, 0] / det2
+        Y = Binv @ Jbg                                      # (nb, Z, 2, 4)
+        S -= (Jgb @ Y).sum(1)
+        Br = (Binv @ st.r_b[..., None])                     # (nb, Z, 2, 1)
+        act = np.ones((nb, 4))
+        act[:, :3] = self.free_g
+        rhs = np.zeros((nb, 4))
+        rhs[:, :3] = -st.r_g
+        rhs += (Jgb @ Br)[..., 0].sum(1)
+        rhs *= act
+        S = S * (act[:, :, None] * act[:, None, :]) + np.eye(4)[None] * (1.0 - act)[:, :, None]
+        try:
+            dG = np.linalg.solve(S, rhs[..., None])        # (nb, 4, 1)
+        except np.linalg.LinAlgError:                       # a singular case: regularise it
+            sd = np.abs(np.linalg.det(S))
+            S = np.where((sd < 1e-300)[:, None, None], S + 1e-6 * np.eye(4)[None], S)
+            dG = np.linalg.solve(S, rhs[..., None])
+        dx = -(Br + Y @ dG[:, None])[..., 0]
+        return dx, dG[:, :3, 0]
 
 
-def _newton(pb, x, g, tol, maxiter):
-    """Damped Newton with frozen kinematics per step.  Returns x, g, norm, iterations, done mask."""
-    st = pb.state(x, g)
+def _newton(pb, x, g, tol, maxiter, st=None):
+    """Damped Newton.  Returns x, g, norm, iterations, done mask and the state at (x, g)."""
+    if st is None:
+        st = pb.state(x, g)
     norm = pb.norm(st)
     floor = np.zeros(norm.shape, bool)
+    hist = np.repeat(norm[:, None], _NONMONOTONE, axis=1)     # last accepted norms per case
+    polish = np.zeros(norm.shape, int)         # steps taken after reaching tol
     it = 0
     for it in range(1, maxiter + 1):
-        todo = (norm > tol) & ~floor
+        # past tol, up to _POLISH more steps towards tol·1e-3: Newton converges quadratically, so
+        # they cost little and fix the ill-conditioned positions of lightly loaded balls
+        todo = (norm > tol * 1e-3) & ~floor & (polish < _POLISH)
         if not np.any(todo):
             it -= 1
             break
-        sub = _Sub(pb, todo)
-        st_t = {k: v[todo] for k, v in st.items()}
+        every = bool(todo.all())
+        sub = pb if every else _Sub(pb, todo)
+        st_t = st if every else st.take(todo)
         dx, dg = sub.newton_step(st_t)
+        if np.any(st_t.dl_i < 0) or np.any(st_t.dl_o < 0):
+            dx = dx * sub.closing_limit(st_t, dx, dg)[..., None]
         # cap the step (a Hertz contact has zero stiffness where it opens: an unlimited
         # Newton step from there can throw a ball through its groove centre)
         big = np.maximum(np.max(np.abs(dx), axis=(1, 2)), np.max(np.abs(dg), axis=1))
         cap = np.minimum(1.0, _STEP_CAP / np.maximum(big, 1e-300))
         dx, dg = dx * cap[:, None, None], dg * cap[:, None]
-        x_t, g_t, n_t = x[todo], g[todo], norm[todo]
+        ref = hist.max(axis=1)
+        x_t, g_t, n_t = (x, g, ref) if every else (x[todo], g[todo], ref[todo])
+        pol = _polar(x_t, dx)
         lam = np.ones(n_t.shape)
         acc = np.zeros(n_t.shape, bool)
         best_x, best_g = x_t.copy(), g_t.copy()
         best_st = None                              # states at the accepted trial points (reused below)
         for _ in range(30):
-            tx = x_t + lam[:, None, None] * dx
+            tx = _polar_move(pol, lam[:, None])
             tg = g_t + lam[:, None] * dg
             st_try = sub.state(tx, tg)
             nt = sub.norm(st_try)
             ok = (nt < (1.0 - 1e-4 * lam) * n_t) & ~acc & np.isfinite(nt)
-            best_x[ok], best_g[ok] = tx[ok], tg[ok]
             if best_st is None:
                 best_st = st_try
+                best_x, best_g = np.where(ok[:, None, None], tx, best_x), np.where(ok[:, None], tg, best_g)
             elif ok.any():
-                for k, v in best_st.items():
-                    v[ok] = st_try[k][ok]
+                best_x[ok], best_g[ok] = tx[ok], tg[ok]
+                best_st.put(ok, st_try.take(ok))
             acc |= ok
             if acc.all():
                 break
             lam = np.where(acc, lam, 0.5 * lam)
         stuck = ~acc                                # take the smallest step anyway (leave flat regions)
-        best_x[stuck] = x_t[stuck] + lam[stuck, None, None] * dx[stuck]
-        best_g[stuck] = g_t[stuck] + lam[stuck, None] * dg[stuck]
-        x, g = x.copy(), g.copy()
-        x[todo], g[todo] = best_x, best_g
-        prev = norm.copy()
-        if acc.all() and todo.all():
+        if stuck.any():
+            best_x[stuck] = _polar_move(pol, lam[:, None])[stuck]
+            best_g[stuck] = g_t[stuck] + lam[stuck, None] * dg[stuck]
+        if every:
+            x, g = best_x, best_g
+        else:
+            x, g = x.copy(), g.copy()
+            x[todo], g[todo] = best_x, best_g
+        prev = norm
+        if acc.all() and every:
             st = best_st                            # every case took an evaluated trial point
         else:
             st = pb.state(x, g)
         norm = pb.norm(st)
         norm = np.where(np.isfinite(norm), norm, np.inf)
+        if not (acc.all() and np.all(lam == 1.0)):    # a damped step: look for stalled light balls
+            x, st, norm = _relax(pb, x, g, st, norm, todo)
         floor |= todo & (norm <= 1e-9) & (norm > 0.5 * prev)
+        hist = np.concatenate([hist[:, 1:], norm[:, None]], axis=1)
+        polish += todo & (prev <= tol)
     else:
         it = maxiter
-    return x, g, norm, it, norm <= np.maximum(tol, np.where(floor, 1e-9, tol))
+    return x, g, norm, it, norm <= np.maximum(tol, np.where(floor, 1e-9, tol)), st
+
+
+def _relax(pb, x, g, st, norm, todo):
+    r"""Re-place the light balls whose force residual is large against their own loads.
+
+    A ball outside the load zone carries loads ~F_c, tiny against the ring loads; near the
+    transitions between resting on the outer race, wedging between both races and (at n → 0)
+    floating, the Newton model of its contacts is poor, and the line search on the largest
+    residual of the case then stalls on that one ball.  Such a ball (static-type load Q_i ≤ |f|,
+    residual > 1 % of |f|, among the largest residuals of its case; f its centrifugal force plus
+    gyroscopic friction at the iterate, frozen) is placed again by :func:`_place` with the rings
+    held; the case keeps the new positions if its residual falls.  Near the solution no ball
+    qualifies, so the quadratic convergence of Newton is untouched."""
+    s = pb.scale[:, None]
+    rb = np.max(np.abs(st.r_b), axis=-1)
+    f1 = st.r_b[..., 0] * s - (st.Qi * st.si - st.Qo * st.so)
+    f2 = st.r_b[..., 1] * s - (st.Qi * st.ci - st.Qo * st.co)
+    fn = np.hypot(f1, f2)
+    light = ((np.maximum(st.Qi, 0.0) <= fn) & (rb * s > _RELAX * fn) & (rb >= 0.1 * norm[:, None])
+             & (fn > 0) & todo[:, None])
+    if not light.any() or pb.stiffness == "per_ball":
+        return x, st, norm
+    A = pb.A
+    k = np.flatnonzero(light)
+    A1, A2 = pb.centres(g)
+    shape = light.shape
+    X1, X2 = _place(st.X1.ravel()[k], st.X2.ravel()[k], A1.ravel()[k], A2.ravel()[k], f1.ravel()[k],
+                    f2.ravel()[k], pb.Ki0, pb.Ko0, (1e-9 / A) * np.broadcast_to(s, shape).ravel()[k],
+                    _BALL_TOL * fn.ravel()[k], pb.ci0, pb.co0, _BALL_CAP * A)
+    xn = x.copy()
+    xf = xn.reshape(-1, 2)
+    xf[k, 0], xf[k, 1] = X1 / A, X2 / A
+    cases = light.any(axis=1)
+    sub = _Sub(pb, cases)
+    st2 = sub.state(xn[cases], g[cases])
+    n2 = sub.norm(st2)
+    better = n2 < norm[cases]
+    if not better.any():
+        return x, st, norm
+    idx = np.flatnonzero(cases)[better]
+    x = x.copy()
+    x[idx] = xn[idx]
+    st.put(idx, st2.take(better))
+    norm = norm.copy()
+    norm[idx] = n2[better]
+    return x, st, norm
+
+
+def _polar(x, dx):
+    """Ball centres x (…, 2) and a step dx in polar form about the outer groove centre: radius ρ,
+    angle α_o, dρ = n_o·dx, dα = e_o·dx/ρ (n_o = (sin α_o, cos α_o), e_o = (cos α_o, −sin α_o))."""
+    rho = np.hypot(x[..., 0], x[..., 1])
+    n1, n2 = x[..., 0] / rho, x[..., 1] / rho
+    return (rho, np.arctan2(x[..., 0], x[..., 1]), n1 * dx[..., 0] + n2 * dx[..., 1],
+            (n2 * dx[..., 0] - n1 * dx[..., 1]) / rho)
+
+
+def _polar_move(pol, lam):
+    """x moved by the fraction lam of the step along the polar path: (ρ + λ dρ)(sin, cos)(α + λ dα).
+    To first order the Newton step itself; a ball resting on the outer race keeps its approach δ_o
+    when it rolls along the race (a straight tangential step would push it into the race by
+    ≈ step²/2ρ, far more than the δ_o of a lightly loaded ball)."""
+    rho, a, drho, da = pol
+    r, t = rho + lam * drho, a + lam * da
+    return np.stack([r * np.sin(t), r * np.cos(t)], axis=-1)
 
 
 class _Sub(_Problem):
@@ -415,7 +615,7 @@ class _Sub(_Problem):
     def __init__(self, pb, mask):            # noqa: D107  (no super().__init__: copy and slice)
         self.__dict__.update(pb.__dict__)
         self.F_app, self.scale = pb.F_app[mask], pb.scale[mask]
-        self.free_g, self.omega = pb.free_g[mask], pb.omega[mask]
+        self.free_g, self.omega, self.w_ref = pb.free_g[mask], pb.omega[mask], pb.w_ref[mask]
 
 
 def _check_options(control, stiffness, tol, maxiter):
@@ -533,9 +733,9 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
     g0[:, 1] = np.reshape(ls.delta_r, nb) / A
     g0[:, 2] = np.reshape(ls.theta, nb) * R / A
     x0 = _static_start(pb, g0)
-    xs0 = _spinning_start(pb, x0, g0)
+    xs0 = _start(pb, x0, g0) if np.any(omega > 0) else x0
 
-    x, g, norm, it, done = _newton(pb, xs0, g0.copy(), tol, maxiter)
+    x, g, norm, it, done, st = _newton(pb, xs0, g0.copy(), tol, maxiter)
     its = np.full(nb, it)
     if not np.all(done):
         _diagnose(pb, x, g, done, Fa_b, Fr_b, n_b, its, norm)
@@ -548,14 +748,19 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
         reached = np.zeros(idx.size)             # largest speed fraction with an equilibrium
         ns = np.full(idx.size, np.inf)
         tot = np.zeros(idx.size, int)
-        for frac in np.linspace(0.0, 1.0, 11)[1:]:
+        fracs = np.linspace(0.0, 1.0, 11)[1:]
+        for frac in fracs:
             if not alive.any():
                 break
             m = np.zeros(nb, bool)
             m[idx[alive]] = True
             sub = _Sub(pb, m)
             sub.omega = omega[m] * frac
-            xa, ga, na, k, da_ = _newton(sub, xs[alive].copy(), gs[alive].copy(), tol, maxiter)
+            sub.w_ref = np.maximum(sub.omega, 1.0)
+            xstart = xs[alive].copy()
+            if frac == fracs[0]:
+                xstart = _start(sub, xstart, gs[alive])
+            xa, ga, na, k, da_, _ = _newton(sub, xstart, gs[alive].copy(), tol, maxiter)
             tot[alive] += k
             ok = np.flatnonzero(alive)[da_]
             xs[ok], gs[ok], reached[ok], ns[ok] = xa[da_], ga[da_], frac, na[da_]
@@ -564,6 +769,7 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
             alive[bad] = False
         fin = alive & (reached == 1.0)
         x[idx[fin]], g[idx[fin]], norm[idx[fin]], done[idx[fin]] = xs[fin], gs[fin], ns[fin], True
+        st = pb.state(x, g)
         norm[idx[~fin]] = ns[~fin]
         its[idx] = it + tot
         fold = ~fin & (reached > 0)
@@ -577,7 +783,6 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
                 "contacts can balance (e.g. the cage speed runs away when a raceway-control hypothesis no longer "
                 "fits the contact angles); raise the axial load or preload, or check the control hypothesis",
                 iterations=int(its[k]), residual=float(ns[j]), last=np.concatenate([gs[j] * A, xs[j].ravel() * A]))
-    st = pb.state(x, g)
     if not np.all(done):
         _diagnose(pb, x, g, done, Fa_b, Fr_b, n_b, its, norm)
         k = int(np.argmax(np.where(done, -np.inf, norm)))
@@ -587,9 +792,21 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
             "iterations (direct and with continuation in speed)",
             iterations=int(its[k]), residual=float(norm[k]), last=np.concatenate([g[k] * A, x[k].ravel() * A]))
 
-    Qi = np.where(st["dl_i"] > 0, st["Qi"], 0.0)
-    Qo = np.where(st["dl_o"] > 0, st["Qo"], 0.0)
-    a_i, a_o = st["a_i"], st["a_o"]
+    if lam_i != 0.0:
+        # a converged point where the gyroscopic friction alone carries F_a has every inner contact
+        # open (friction without a normal load): the degenerate end of the branch, no equilibrium
+        gyro = (lam_i * st.Mg / brg.D * st.ci).sum(1)
+        bad = (n_b > 0) & (Fa_b > 0) & (gyro >= Fa_b * (1.0 - 1e-6))
+        if np.any(bad):
+            k = int(np.argmax(bad))
+            raise NoEquilibrium(
+                f"control = '{control}' at Fa = {Fa_b[k]:g} N, Fr = {Fr_b[k]:g} N, n = {n_b[k]:g} rpm: the gyroscopic "
+                f"friction the inner raceway must supply pushes the inner ring axially with {gyro[k]:.4g} N >= Fa; "
+                "no positive contact loads balance it. Use control = 'outer' or a larger axial load",
+                iterations=int(its[k]), residual=float(norm[k]))
+    Qi = np.where(st.dl_i > 0, st.Qi, 0.0)
+    Qo = np.where(st.dl_o > 0, st.Qo, 0.0)
+    a_i, a_o = np.arctan2(st.p, st.q), np.arctan2(st.X1, st.X2)
     if brg.kind == "angular_contact" and np.any((Qi > 0) & (a_i <= 0)):
         k = int(np.argmax(np.any((Qi > 0) & (a_i <= 0), axis=1)))
         raise NoEquilibrium(
@@ -601,10 +818,12 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
         a_i, a_o = np.where(free, brg.alpha0, a_i), np.where(free, brg.alpha0, a_o)
     else:
         a_i, a_o = np.where(zero[:, None] & free, 0.0, a_i), np.where(zero[:, None] & free, 0.0, a_o)
-    dn = np.maximum(st["dl_i"], 0.0) + np.maximum(st["dl_o"], 0.0)
+    dn = np.maximum(st.dl_i, 0.0) + np.maximum(st.dl_o, 0.0)
     da = np.where(zero, 0.0, g[:, 0] * A)
     dr = np.where(zero, 0.0, g[:, 1] * A)
     th = np.where(zero, 0.0, g[:, 2] * A / R)
+
+    ones = np.ones((nb, Z))
 
     def sh(v):
         return v.reshape(shape) if shape else float(v[0])
@@ -617,9 +836,9 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
         alpha_o=shz(a_o), psi=pb.psi, delta_n=shz(dn), residual=float(norm.max()) if norm.size else 0.0,
         iterations=int(its.max()) if its.size else 0, Fa=Fa_in, Fr=Fr_in, M=sh(Mv))
     ex = HighSpeedExtras(
-        Fc=shz(st["Fc"]), Mg=shz(st["Mg"]), omega_c=shz(st["w_c"]), omega_R=shz(st["w_R"]),
-        beta=shz(st["beta"]), X1=shz(st["X1"]), X2=shz(st["X2"]), delta_i=shz(st["dl_i"]),
-        delta_o=shz(st["dl_o"]), lambda_i=lam_i, lambda_o=lam_o, control=control,
+        Fc=shz(st.Fc * ones), Mg=shz(st.Mg), omega_c=shz(st.W * ones), omega_R=shz(st.wR),
+        beta=shz(np.arctan2(st.sb, st.cb)), X1=shz(st.X1), X2=shz(st.X2), delta_i=shz(st.dl_i),
+        delta_o=shz(st.dl_o), lambda_i=lam_i, lambda_o=lam_o, control=control,
         n_rpm=sh(n_b) if shape else float(n_b[0]))
     return ld, ex
 
@@ -643,43 +862,150 @@ def _static_start(pb, g):
 
 def _diagnose(pb, x, g, done, Fa_b, Fr_b, n_b, its, norm):
     """Raise NoEquilibrium for an unconverged case whose load cannot balance the friction the
-    control hypothesis demands from the inner raceway: the inner ring receives Σ λ_i (M_g/D) cos α_i
-    axially from the gyroscopic friction; when that reaches F_a, Q_i sin α_i would have to be < 0."""
+    control hypothesis demands from the inner raceway (the inner ring receives Σ λ_i (M_g/D) cos α_i
+    axially from the gyroscopic friction; when that reaches F_a, Q_i sin α_i would have to be < 0:
+    checked first, it is the cause), or whose loaded balls were driven over the low shoulder of an
+    angular contact bearing (α_i ≤ 0)."""
     st = pb.state(x, g)
+    if pb.lam_i != 0.0:
+        gyro = (pb.lam_i * st.Mg / pb.brg.D * st.ci).sum(1)
+        bad = ~done & (gyro >= np.maximum(Fa_b, 0.0)) & (n_b > 0)
+        if np.any(bad):
+            k = int(np.argmax(bad))
+            raise NoEquilibrium(
+                f"control = '{'inner' if pb.lam_o == 0 else 'both'}' at Fa = {Fa_b[k]:g} N, Fr = {Fr_b[k]:g} N, "
+                f"n = {n_b[k]:g} rpm: the gyroscopic friction the inner raceway must supply pushes the inner ring "
+                f"axially with {gyro[k]:.4g} N >= Fa; no positive contact loads balance it. Use control = 'outer' "
+                "or a larger axial load", iterations=int(its[k]), residual=float(norm[k]))
     if pb.brg.kind == "angular_contact":
-        bad = ~done & np.any((st["dl_i"] > 0) & (st["a_i"] <= 0), axis=1)
+        bad = ~done & np.any((st.dl_i > 0) & (np.arctan2(st.p, st.q) <= 0), axis=1)
         if np.any(bad):
             k = int(np.argmax(bad))
             raise NoEquilibrium(
                 f"angular contact bearing at Fa = {Fa_b[k]:g} N, Fr = {Fr_b[k]:g} N, n = {n_b[k]:g} rpm: no "
                 "equilibrium with positive inner contact angles (the balls would run over the low shoulder); "
                 "raise the axial load or preload", iterations=int(its[k]), residual=float(norm[k]))
-    if pb.lam_i == 0.0:
-        return
-    gyro = (pb.lam_i * st["Mg"] / pb.brg.D * np.cos(st["a_i"])).sum(1)
-    bad = ~done & (gyro >= np.maximum(Fa_b, 0.0)) & (n_b > 0)
-    if np.any(bad):
-        k = int(np.argmax(bad))
-        raise NoEquilibrium(
-            f"control = '{'inner' if pb.lam_o == 0 else 'both'}' at Fa = {Fa_b[k]:g} N, Fr = {Fr_b[k]:g} N, "
-            f"n = {n_b[k]:g} rpm: the gyroscopic friction the inner raceway must supply pushes the inner ring "
-            f"axially with {gyro[k]:.4g} N >= Fa; no positive contact loads balance it. Use control = 'outer' "
-            "or a larger axial load", iterations=int(its[k]), residual=float(norm[k]))
 
 
-def _spinning_start(pb, x_static, g):
-    """Static start with each ball pushed out by its centrifugal force: the outer contact takes
-    the static ball load plus F_c r̂ (kinematics at the static angles), the globals are kept."""
+def _start(pb, x_static, g):
+    r"""Starting ball positions at speed, the rings held at the static solution g.
+
+    With the kinematics of the static positions each ball carries a centrifugal force and a
+    gyroscopic friction, frozen here as one external force f (F_c r̂ included).
+
+    * A ball whose static load exceeds |f| is pushed out: its outer contact takes the static
+      inner-contact force plus F_c r̂ (Jones's usual start).
+    * A lighter ball, or one outside the load zone, is placed where it is in equilibrium under f
+      with the rings held: the minimum of its convex potential energy
+
+          U(X) = ⅖ K_i δ_i₊^2.5 + ⅖ K_o δ_o₊^2.5 − f·X,
+          δ_i = |O_i − X| − (f_i − ½)D,  δ_o = |X| − (f_o − ½)D,
+
+      (−∇U = Q_i n_i − Q_o n_o + f is its force residual, the Hessian the sum of the contact
+      stiffness matrices), by Newton's method with a step cap and an Armijo line search on U,
+      on all such balls at once.  A ball with both contacts open moves along f until it touches
+      a race and ends on the outer race or wedged between both races with loads of the order of
+      its centrifugal force — not, as a push by F_c alone would put it, deep in the axially
+      offset inner groove with kN contact loads.
+
+    Only a start: :func:`_newton` then solves the coupled problem."""
     st = pb.state(x_static, g)
-    Qs = np.maximum(st["Qi"], 0.0)
-    f1 = Qs * st["n_i"][..., 0]
-    f2 = Qs * st["n_i"][..., 1] + st["Fc"]
-    Qo = np.hypot(f1, f2)
-    Ko = pb.Ko0 if pb.stiffness == "nominal" else pb.brg.K_o(st["a_o"])
-    r_o = pb.co0 + (Qo / Ko) ** (2.0 / 3.0)
-    x = np.stack([r_o * f1, r_o * f2], axis=-1) / np.where(Qo > 0, Qo, 1.0)[..., None] / pb.A
-    moved = (st["Fc"] > 0)[..., None]
-    return np.where(moved, x, x_static)
+    A, ci0, co0 = pb.A, pb.ci0, pb.co0
+    s = pb.scale[:, None]
+    f1 = st.r_b[..., 0] * s - (st.Qi * st.si - st.Qo * st.so)
+    f2 = st.r_b[..., 1] * s - (st.Qi * st.ci - st.Qo * st.co)
+    fn = np.hypot(f1, f2)
+    Ki, Ko = pb.Ki0, pb.Ko0
+    if pb.stiffness == "per_ball":
+        Ki, Ko = pb.brg.K_i(np.arctan2(st.p, st.q)), pb.brg.K_o(np.arctan2(st.X1, st.X2))
+    # loaded balls: pushed out
+    Qs = np.maximum(st.Qi, 0.0)
+    g1, g2 = Qs * st.si, Qs * st.ci + st.Fc
+    Qo = np.hypot(g1, g2)
+    r_o = (co0 + (Qo / Ko) ** (2.0 / 3.0)) / np.where(Qo > 0, Qo, 1.0)
+    X1 = np.where(st.Fc > 0, r_o * g1, st.X1)
+    X2 = np.where(st.Fc > 0, r_o * g2, st.X2)
+    # light and unloaded balls: placed (flattened over the batch)
+    k = np.flatnonzero((Qs <= fn) & (fn > 0))
+    if k.size:
+        A1, A2 = pb.centres(g)
+        shape = X1.shape
+        X1, X2 = X1.ravel(), X2.ravel()
+        ki = Ki if np.ndim(Ki) == 0 else Ki.ravel()[k]
+        ko = Ko if np.ndim(Ko) == 0 else Ko.ravel()[k]
+        mu = (1e-9 / A) * np.broadcast_to(s, shape).ravel()[k]     # keeps a free ball's Hessian invertible
+        X1[k], X2[k] = _place(st.X1.ravel()[k], st.X2.ravel()[k], A1.ravel()[k], A2.ravel()[k],
+                              f1.ravel()[k], f2.ravel()[k], ki, ko, mu, _BALL_TOL * fn.ravel()[k],
+                              ci0, co0, _BALL_CAP * A)
+        X1, X2 = X1.reshape(shape), X2.reshape(shape)
+    return np.stack([X1, X2], axis=-1) / A
+
+
+def _place(x1, x2, a1, a2, f1, f2, Ki, Ko, mu, tol, ci0, co0, cap):
+    """Newton minimisation of each ball's potential energy (see :func:`_start`) on flat arrays of
+    balls; a ball leaves the active set when its force residual is below ``tol`` or its line
+    search fails (a start needs no more).  Returns the ball centres X1, X2 [m]."""
+    x1, x2 = x1.copy(), x2.copy()
+    act = np.arange(x1.size)
+    fabs = np.hypot(f1, f2)
+
+    def sub(v, m):
+        return v if np.ndim(v) == 0 else v[m]
+
+    for _ in range(_BALL_MAXIT):
+        X1, X2, A1, A2, h1, h2 = x1[act], x2[act], a1[act], a2[act], f1[act], f2[act]
+        ki, ko, fa = sub(Ki, act), sub(Ko, act), fabs[act]
+        p, q = A1 - X1, A2 - X2
+        d_i, d_o = np.hypot(p, q), np.hypot(X1, X2)
+        di, do = np.maximum(d_i - ci0, 0.0), np.maximum(d_o - co0, 0.0)
+        sqi, sqo = np.sqrt(di), np.sqrt(do)
+        Qi, Qo = ki * di * sqi, ko * do * sqo
+        si, ci, so, co = p / d_i, q / d_i, X1 / d_o, X2 / d_o
+        r1 = Qi * si - Qo * so + h1
+        r2 = Qi * ci - Qo * co + h2
+        go = np.hypot(r1, r2) > tol[act]
+        if not go.any():
+            break
+        if not go.all():
+            act = act[go]
+            X1, X2, A1, A2, h1, h2, r1, r2 = X1[go], X2[go], A1[go], A2[go], h1[go], h2[go], r1[go], r2[go]
+            Qi, Qo, d_i, d_o, si, ci, so, co = Qi[go], Qo[go], d_i[go], d_o[go], si[go], ci[go], so[go], co[go]
+            di, do, sqi, sqo, ki, ko, fa = di[go], do[go], sqi[go], sqo[go], sub(ki, go), sub(ko, go), fa[go]
+        # Hessian of U: dQ n nᵀ + (Q/d) e eᵀ per contact, e = (cos α, −sin α)
+        ti, to = Qi / d_i, Qo / d_o
+        kki, kko = 1.5 * ki * sqi, 1.5 * ko * sqo
+        m = mu[act]
+        h11 = kki * si * si + ti * ci * ci + kko * so * so + to * co * co + m
+        h22 = kki * ci * ci + ti * si * si + kko * co * co + to * so * so + m
+        h12 = (kki - ti) * si * ci + (kko - to) * so * co
+        dt = h11 * h22 - h12 * h12
+        d1, d2 = (h22 * r1 - h12 * r2) / dt, (h11 * r2 - h12 * r1) / dt
+        c = np.minimum(1.0, cap / np.maximum(np.hypot(d1, d2), 1e-300))
+        # an open contact closes to at most the approach that carries the ball's force |f|
+        for gap, dd, K in ((d_i - ci0, -(si * d1 + ci * d2), ki), (d_o - co0, so * d1 + co * d2, ko)):
+            eta = (fa / K) ** (2.0 / 3.0)
+            over = (gap < 0) & (gap + c * dd > eta)
+            c = np.where(over, (eta - gap) / np.where(over, dd, 1.0), c)
+        d1, d2 = d1 * c, d2 * c
+        slope = r1 * d1 + r2 * d2                                   # −∇U·dX > 0
+        U0 = 0.4 * (ki * di * di * sqi + ko * do * do * sqo)
+        lam = np.ones(X1.shape)
+        acc = np.zeros(X1.shape, bool)
+        for _ in range(_BALL_HALVINGS):
+            t1, t2 = X1 + lam * d1, X2 + lam * d2
+            ui = np.maximum(np.hypot(A1 - t1, A2 - t2) - ci0, 0.0)
+            uo = np.maximum(np.hypot(t1, t2) - co0, 0.0)
+            dU = 0.4 * (ki * ui * ui * np.sqrt(ui) + ko * uo * uo * np.sqrt(uo)) - U0 - lam * (h1 * d1 + h2 * d2)
+            acc |= dU <= -1e-4 * lam * slope
+            if acc.all():
+                break
+            lam = np.where(acc, lam, 0.5 * lam)
+        x1[act] = np.where(acc, X1 + lam * d1, X1)
+        x2[act] = np.where(acc, X2 + lam * d2, X2)
+        act = act[acc]
+        if not act.size:
+            break
+    return x1, x2
 
 
 def load_distribution_high_speed(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *,
