@@ -130,18 +130,18 @@ def run(full: bool = False, profile: bool = True) -> str:
             if target < 0.1 else (lambda x: f"{x:.2f} s")
         verdict = "met" if t <= target else f"**missed ×{t / target:.3g}**"
         L.append(f"| {name} | {fmt(t)} {unit} | {fmt(target)} | {verdict} |")
-    L += ["", "**Why the misses.** A coupled point (seed 004) is now ≈ 45 % setup and ≈ 35 % Newton. Setup: the "
-          "high-speed ball equilibrium (≈ 7–10 ms: 10–15 Newton steps of ≈ 0.5 ms — each step is a few hundred "
-          "small numpy operations on 15 balls, and the start, which pushes every ball out by its centrifugal "
-          "force from the static solution, is 10²× the load off where balls leave the load zone), the network "
-          "build (≈ 1 ms) and the contact set (≈ 1 ms). Newton runs on all free node temperatures with the "
-          "conductances' temperature derivatives in the Jacobian (5–6 iterations), each a fused loss pass "
-          "(≈ 0.2 ms for 30 contacts × 4 temperature sets) plus ≈ 0.3 ms of network work. The seed 002 point "
-          "(closed-form loads) is at ≈ 5 ms. Reaching 5 ms for seed 004 needs a cheaper high-speed equilibrium "
-          "(a start that respects open contacts, or one compiled kernel per Newton step); the prescribed-"
-          "temperature sweep and the coupled sweep are dominated by the same equilibrium (one per speed and "
-          "load). The transient is ≈ 100 loss evaluations of the BDF right-hand side with the output losses in "
-          "one vectorised call."]
+    L += ["", "**Why the misses.** A coupled seed 004 point is about half setup, half Newton. Setup: the "
+          "high-speed ball equilibrium (7 Newton steps with an exact Jacobian — the cage speed a fourth global "
+          "unknown — from a static solution that itself costs ≈ 0.8 ms; ≈ 4–7 ms in all, a few hundred small "
+          "numpy operations per step on 15 balls), the contact set (≈ 1 ms) and the network build (≈ 2 ms: "
+          "networkx graph, expression evaluation, element probes). Newton runs on all free node temperatures with "
+          "the conductances' temperature derivatives in the Jacobian (5–6 iterations), each a fused loss pass "
+          "(≈ 0.2 ms for 30 contacts × 4 temperature sets) plus ≈ 0.5 ms of conductance derivatives and matrix "
+          "work. The seed 002 point (closed-form loads, no high-speed equilibrium) is at ≈ 5 ms. Reaching 5 ms for "
+          "seed 004 needs the per-step numpy overhead gone (one compiled kernel per Newton step, or a network "
+          "built once per scene and only re-parametrised per point). The prescribed-temperature and coupled "
+          "sweeps are dominated by the same equilibrium (one per speed and load). The transient is ≈ 100 loss "
+          "evaluations of the BDF right-hand side with the output losses in one vectorised call."]
     if profile:
         L += ["", "Hot spots (cProfile):", ""]
         for k, v in prof.items():
