@@ -198,20 +198,40 @@ def _check_loads(brg, Fa, Fr, M):
             f"shoulder (Fa = 0, Fr = {np.max(Fr):g} N): give the axial reaction or preload of the arrangement")
 
 
-def _state(y, brg, Kn_mode, c_psi, A, R):
-    """Ball geometry and forces at scaled unknowns y; shapes (nb, Z).
+def _geometry(y, brg, c_psi, A):
+    """Groove-centre separations A1, A2, A_j [m] and the signed approach s = A_j − A [m]
+    (negative: a gap) at scaled unknowns y; shapes (nb, Z).
 
     y = (δa'/A, δr/A, θ R/A) with δa' the axial displacement from the position where
-    the balls just touch at α0.  The approach s = A_j − A is formed without
-    cancellation, s = [2A(sin α0 d1 + cos α0 d2) + d1² + d2²] / (A_j + A), so that
-    tiny loads (s ≪ A) keep full relative precision."""
+    the balls just touch at α0.  The approach is formed without cancellation,
+    s = [2A(sin α0 d1 + cos α0 d2) + d1² + d2²] / (A_j + A), so that tiny loads
+    (|s| ≪ A) keep full relative precision."""
     sa0, ca0 = np.sin(brg.alpha0), np.cos(brg.alpha0)
     d1 = A * (y[:, 0:1] + y[:, 2:3] * c_psi)
     d2 = A * (y[:, 1:2] * c_psi)
     A1 = A * sa0 + d1
     A2 = A * ca0 + d2
     Aj = np.hypot(A1, A2)
-    s = np.maximum((2.0 * A * (sa0 * d1 + ca0 * d2) + d1 * d1 + d2 * d2) / (Aj + A), 0.0)
+    s = (2.0 * A * (sa0 * d1 + ca0 * d2) + d1 * d1 + d2 * d2) / (Aj + A)
+    return A1, A2, Aj, s
+
+
+def _batch_loads(brg, Fa, Fr, M):
+    """Loads broadcast to one batch axis and checked: (shape, Fa, Fr, M or None, M or 0) [N, N m]."""
+    Fa_in, Fr_in = np.asarray(Fa, dtype=float), np.asarray(Fr, dtype=float)
+    M_in = None if M is None else np.asarray(M, dtype=float)
+    shape = np.broadcast_shapes(Fa_in.shape, Fr_in.shape, () if M_in is None else M_in.shape)
+    Fa_b = np.broadcast_to(Fa_in, shape).ravel()
+    Fr_b = np.broadcast_to(Fr_in, shape).ravel()
+    M_b = None if M_in is None else np.broadcast_to(M_in, shape).ravel()
+    _check_loads(brg, Fa_b, Fr_b, M_b)
+    return shape, Fa_b, Fr_b, M_b, (M_b if M_b is not None else np.zeros_like(Fa_b))
+
+
+def _state(y, brg, Kn_mode, c_psi, A, R):
+    """Ball geometry and dry (Hertz) forces at scaled unknowns y; shapes (nb, Z) (see _geometry)."""
+    A1, A2, Aj, s = _geometry(y, brg, c_psi, A)
+    s = np.maximum(s, 0.0)
     sa, ca = A1 / Aj, A2 / Aj
     if Kn_mode == "per_ball":
         Kn = brg.Kn(np.arctan2(A1, A2))
@@ -264,15 +284,8 @@ def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, st
     """
     if stiffness not in STIFFNESS_MODES:
         raise InputError("stiffness", stiffness, f"must be one of {', '.join(STIFFNESS_MODES)}")
-    Fa_in, Fr_in = np.asarray(Fa, dtype=float), np.asarray(Fr, dtype=float)
-    M_in = None if M is None else np.asarray(M, dtype=float)
-    shape = np.broadcast_shapes(Fa_in.shape, Fr_in.shape, () if M_in is None else M_in.shape)
-    Fa_b = np.broadcast_to(Fa_in, shape).ravel()
-    Fr_b = np.broadcast_to(Fr_in, shape).ravel()
-    M_b = None if M_in is None else np.broadcast_to(M_in, shape).ravel()
-    _check_loads(brg, Fa_b, Fr_b, M_b)
+    shape, Fa_b, Fr_b, M_b, Mv = _batch_loads(brg, Fa, Fr, M)
     tilt_free = M_b is not None
-    Mv = M_b if tilt_free else np.zeros_like(Fa_b)
 
     Z, A, R = brg.Z, brg.A, brg.R_inner_locus
     psi = 2.0 * np.pi * np.arange(Z) / Z
@@ -406,7 +419,7 @@ def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, st
         delta_a=sh(da), delta_r=sh(dr), theta=sh(th), Q_i=shz(Q), Q_o=shz(Q.copy()),
         alpha_i=shz(alpha), alpha_o=shz(alpha.copy()), psi=psi, delta_n=shz(np.where(zero[:, None], 0.0, s)),
         residual=float(norm.max()) if norm.size else 0.0, iterations=int(it),
-        Fa=Fa_in, Fr=Fr_in, M=Mv.reshape(out_shape) if out_shape else float(Mv[0]))
+        Fa=np.asarray(Fa, dtype=float), Fr=np.asarray(Fr, dtype=float), M=Mv.reshape(out_shape) if out_shape else float(Mv[0]))
 
 
 def residual_and_jac_partial(y, todo, brg, stiffness, c_psi, A, R, F_app, scale):
