@@ -14,6 +14,11 @@ from the scene's ``[models]`` table:
   only where ``needs_high_speed`` says they matter (F_c > 5 % of the ball load);
   otherwise the low-speed form, in which the centrifugal force F_c still loads the
   outer contact (it is what keeps balls outside the load zone on the race).
+  ``load_model = "film"`` (chosen in the scene only; prototype): the lubricant
+  films in each ball's contact law (:mod:`thermobear.loads_film`), low-speed
+  form, films at one temperature — the prescribed T, or in ``steady_state`` the
+  mean contact temperature of the solution (a fixed point on it); not in the
+  transient yet.
 * **drag** — only for jet / oil–air supply, or when n·dm ≥ 1e5 mm·rpm (below,
   churning of a few balls in air is < 0.1 % of the contact losses).
 * **rolling** — per-contact regime selection (seed 004) unless named.
@@ -55,19 +60,28 @@ def choose_models(scene: Scene) -> dict:
         raise InputError("thermal.network", None, "give a thermal network or prescribe operation.T_C")
     symmetric = scene.Fr == 0.0 and scene.M is None and m.get("stiffness", "nominal") == "nominal"
     if "load_model" in m:
-        if m["load_model"] not in ("closed_form", "jones_harris"):
-            raise InputError("models.load_model", m["load_model"], "must be 'closed_form' or 'jones_harris'")
+        if m["load_model"] not in ("closed_form", "jones_harris", "film"):
+            raise InputError("models.load_model", m["load_model"], "must be 'closed_form', 'jones_harris' or "
+                             "'film' (lubricant film in the contact law, low-speed form)")
         if m["load_model"] == "closed_form" and not symmetric:
             raise InputError("models.load_model", "closed_form", "the closed form needs Fr = 0, no moment and "
                              "the nominal stiffness")
-        out["load_model"] = (m["load_model"], "chosen in the scene")
+        if m["load_model"] == "film" and m.get("high_speed") is True:
+            raise InputError("models.load_model", "film", "the film load model has no high-speed form yet: "
+                             "set models.high_speed = false or use 'jones_harris'")
+        out["load_model"] = (m["load_model"], "chosen in the scene" if m["load_model"] != "film" else
+                             "chosen in the scene: Jones–Harris with the NVM films in each ball's contact law "
+                             "(thermobear.loads_film; prototype)")
     elif symmetric:
         out["load_model"] = ("closed_form", "pure axial load, tilt held: all balls equal (exact closed form)")
     else:
         out["load_model"] = ("jones_harris", "combined load: balls differ (Jones–Harris, seed 004 eqs 6–8)")
     Qtyp = max(scene.Fa / (b.Z * max(np.sin(b.alpha0), 1e-3)), scene.Fr * 5.0 / b.Z, 1e-9)
     need, ratio = needs_high_speed(b, scene.n_rpm, Qtyp, rotating=scene.rotating)
-    if "high_speed" in m:
+    if out["load_model"][0] == "film" and "high_speed" not in m:
+        out["high_speed"] = ("no", f"film load model: low-speed form (F_c/Q = {float(ratio):.2f}; F_c on the "
+                                   "outer contacts)")
+    elif "high_speed" in m:
         hs = m["high_speed"]
         if not isinstance(hs, bool):
             raise InputError("models.high_speed", hs, "must be true or false")
@@ -138,9 +152,29 @@ def _closed_form_axial(b, Fa) -> LoadDistribution:
                             residual=0.0, iterations=0, Fa=np.asarray(Fa), Fr=np.asarray(0.0), M=0.0)
 
 
-def scene_load(scene: Scene, models: dict | None = None) -> LoadDistribution:
-    """Load distribution by the model :func:`choose_models` picked."""
+def film_temperature_C(scene: Scene) -> float:
+    """Temperature [°C] at which the film load model evaluates the films when the caller gives none:
+    the prescribed T_C, else the oil inlet, else the ambient temperature (steady_state iterates it)."""
+    for T in (scene.T_C, scene.T_oil_in_C, scene.T_ambient_C):
+        if T is not None:
+            return float(T)
+    return 20.0
+
+
+def scene_load(scene: Scene, models: dict | None = None, T_film_C=None) -> LoadDistribution:
+    """Load distribution by the model :func:`choose_models` picked (``T_film_C`` [°C]: temperature of
+    the films for the ``"film"`` load model; default :func:`film_temperature_C`)."""
     models = models or choose_models(scene)
+    if models["load_model"][0] == "film":
+        from .kinematics import entrainment_speed
+        from .loads_film import film_load_distribution
+        T = film_temperature_C(scene) if T_film_C is None else float(T_film_C)
+        b = scene.bearing
+        u = float(entrainment_speed(scene.omega_i, scene.omega_o, b.D, b.dm, b.alpha0))
+        lub = scene.lubricant
+        return film_load_distribution(b, Fa=scene.Fa, Fr=scene.Fr, M=scene.M, u_i=max(u, 1e-6), u_o=max(u, 1e-6),
+                                      eta=float(lub.eta(T)), alpha_p=float(lub.alpha_p_at(T)),
+                                      stiffness=scene.models.get("stiffness", "nominal"))
     if models["load_model"][0] == "closed_form":
         return _closed_form_axial(scene.bearing, scene.Fa)
     stiff = scene.models.get("stiffness", "nominal")
@@ -152,12 +186,16 @@ def scene_load(scene: Scene, models: dict | None = None) -> LoadDistribution:
 
 
 def scene_contacts(scene: Scene, models: dict | None = None, load: LoadDistribution | None = None,
-                   n_rpm=None) -> ContactSet:
+                   n_rpm=None, T_film_C=None) -> ContactSet:
     """Temperature-independent contact data of a scene (loads, ellipses, kinematics).
 
-    ``n_rpm`` may override the scene's speed with an array (vectorised sweeps)."""
+    ``n_rpm`` may override the scene's speed with an array (vectorised sweeps); ``T_film_C``: see
+    :func:`scene_load` (the film load model's loads depend on the film temperature)."""
     models = models or choose_models(scene)
-    load = load if load is not None else scene_load(scene, models)
+    if load is None and models["load_model"][0] == "film" and n_rpm is not None and np.ndim(n_rpm):
+        raise InputError("models.load_model", "film", "the film load model takes one speed per call (no speed "
+                         "arrays): sweep the scenes one by one")
+    load = load if load is not None else scene_load(scene, models, T_film_C=T_film_C)
     n = scene.n_rpm if n_rpm is None else n_rpm
     return prepare_contacts(scene.bearing, scene.Fa, scene.Fr, n, M=scene.M, rotating=scene.rotating,
                             hertz_method=models["hertz"][0], centrifugal=models["high_speed"][0] != "yes", load=load,
@@ -551,6 +589,31 @@ def _newton_coupled(scene, models, net, roles, cs1, tol_K, T_limit_K, maxiter=30
     return None
 
 
+def _steady_film(scene, models, *, tol_K, method, tol_film_K=0.1, maxiter=10, **kw):
+    """Steady state with the film load model: the loads depend on the film temperature, taken as the
+    mean contact temperature of the solution — a fixed point on that one temperature (the loads vary
+    slowly with it: a few updates)."""
+    from .errors import NoConvergence
+    T_ref, hist = film_temperature_C(scene), []
+    for k in range(1, maxiter + 1):
+        cs = scene_contacts(scene, models, T_film_C=T_ref)
+        st = steady_state(scene, tol_K=tol_K, contacts=cs, method=method, **kw)
+        c = st.losses.contacts
+        T_new = float(np.mean(np.concatenate([np.ravel(c["inner"]["T_C"]), np.ravel(c["outer"]["T_C"])])))
+        hist.append(dict(iteration=k, T_film_C=T_ref, T_contacts_C=T_new, P_W=st.P_W))
+        if abs(T_new - T_ref) <= tol_film_K:
+            st.models_used["load_distribution"] = (
+                "film in the contact law (thermobear.loads_film)",
+                f"films at the mean contact temperature {T_ref:.2f} °C ({k} load updates)")
+            st.history = list(st.history) + [dict(h, step="film") for h in hist]
+            return st
+        T_ref = T_new
+    raise NoConvergence(f"film load model: the film temperature did not settle within {tol_film_K} K in {maxiter} "
+                        f"load updates (last {hist[-2]['T_contacts_C']:.2f} → {hist[-1]['T_contacts_C']:.2f} °C)",
+                        iterations=maxiter, residual=abs(hist[-1]["T_contacts_C"] - hist[-1]["T_film_C"]),
+                        history=hist)
+
+
 def steady_state(scene: Scene, *, tol_K: float = 1e-6, contacts: ContactSet | None = None,
                  method: str = "newton", **kw) -> SteadyState:
     """Coupled steady state: losses(T) ↔ thermal network, to a fixed point.
@@ -587,6 +650,8 @@ def steady_state(scene: Scene, *, tol_K: float = 1e-6, contacts: ContactSet | No
     if scene.T_C is not None:
         raise InputError("operation.T_C", scene.T_C, "the scene prescribes its temperature: use solve() "
                          "or remove operation.T_C to solve the thermal network")
+    if contacts is None and models["load_model"][0] == "film":
+        return _steady_film(scene, models, tol_K=tol_K, method=method, **kw)
     net, cs, roles = _setup_thermal(scene, models, contacts)
     kw.setdefault("T_limit_K", T_VALID_C[1] + 273.15)      # beyond the lubricant's validity: runaway
     state = {"T": net.initial_T_K()}
@@ -711,6 +776,10 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
         if te <= ts:
             continue
         models = choose_models(sc)
+        if contacts is None and models["load_model"][0] == "film":
+            raise InputError("models.load_model", "film", "the film load model is not in the transient yet (its "
+                             "loads depend on the temperature): use steady_state, a prescribed T, or inject "
+                             "contacts from scene_contacts(scene, T_film_C=...)")
         net, cs, roles = _setup_thermal(sc, models, contacts)
         first = first or (models, roles, list(net.nodes))
         if list(net.nodes) != first[2]:

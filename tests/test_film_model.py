@@ -1,0 +1,76 @@
+"""The film load model as a scene option (``[models] load_model = "film"``): selection, consistency
+with thermobear.loads_film, the steady-state fixed point on the film temperature, loud refusals."""
+from __future__ import annotations
+
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import thermobear as tb
+from thermobear.errors import InputError
+from thermobear.kinematics import entrainment_speed
+from thermobear.loads_film import film_load_distribution
+from thermobear.solver import choose_models, scene_contacts, scene_losses, steady_state
+
+ROOT = Path(__file__).resolve().parents[1]
+FILM = {"load_model": "film"}
+
+
+@pytest.fixture(scope="module")
+def scene():
+    warnings.simplefilter("ignore", tb.ExtrapolationWarning)
+    return tb.load_scene(ROOT / "examples" / "seed004_oil_jet_7210.toml").with_(n_rpm=4800.0, Fr=750.0, models=FILM)
+
+
+def test_selection_and_refusals(scene):
+    m = choose_models(scene)
+    assert m["load_model"][0] == "film" and m["high_speed"][0] == "no"
+    with pytest.raises(InputError) as e:
+        choose_models(scene.with_(models={"high_speed": True}))
+    assert e.value.field == "models.load_model"
+    with pytest.raises(InputError) as e:
+        choose_models(scene.with_(models={"load_model": "films"}))
+    assert e.value.field == "models.load_model" and "film" in e.value.expected
+
+
+def test_prescribed_temperature_equals_the_film_distribution_injected(scene):
+    T = 50.0
+    s = scene.with_(T_C=T)
+    b, lub = s.bearing, s.lubricant
+    u = float(entrainment_speed(s.omega, 0.0, b.D, b.dm, b.alpha0))
+    ld = film_load_distribution(b, Fa=s.Fa, Fr=s.Fr, u_i=u, u_o=u, eta=float(lub.eta(T)),
+                                alpha_p=float(lub.alpha_p_at(T)))
+    a = scene_losses(s)
+    ref = scene_losses(s.with_(models={"load_model": "jones_harris", "high_speed": False}), load=ld)
+    assert a.P_W == pytest.approx(ref.P_W, rel=1e-12)
+    # every ball carries load: no open contact in the film law
+    assert np.all(a.contacts["inner"]["Q"] > 0)
+
+
+def test_film_loads_depend_on_the_film_temperature(scene):
+    m = choose_models(scene)
+    cold, hot = (scene_contacts(scene, m, T_film_C=T).sides["inner"]["Q"] for T in (30.0, 80.0))
+    # thicker (cold) films carry more of the load on the lightly loaded balls
+    assert cold.min() > hot.min() > 0
+
+
+def test_steady_state_settles_the_film_temperature(scene):
+    st = steady_state(scene)
+    c = st.losses.contacts
+    T_contacts = np.mean(np.concatenate([c["inner"]["T_C"], c["outer"]["T_C"]]))
+    film_steps = [h for h in st.history if h.get("step") == "film"]
+    assert 1 <= len(film_steps) <= 10
+    assert film_steps[-1]["T_film_C"] == pytest.approx(T_contacts, abs=0.1)
+    assert abs(st.energy_balance_W) <= 1e-9 * st.P_W
+    assert "film" in st.models_used["load_distribution"][0]
+
+
+def test_transient_and_speed_arrays_are_refused(scene):
+    with pytest.raises(InputError) as e:
+        tb.transient(scene, t_end_s=10.0)
+    assert e.value.field == "models.load_model"
+    with pytest.raises(InputError) as e:
+        scene_losses(scene.with_(T_C=50.0), n_rpm=np.array([3200.0, 4800.0]))
+    assert e.value.field == "models.load_model"
