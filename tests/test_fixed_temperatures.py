@@ -119,7 +119,26 @@ def test_speed_x2_about_x3_at_equal_ring_temperature(scene):
         P = [steady_state(scene.with_(n_rpm=n, T_fixed_C={"inner_ring": T, "outer_ring": T})).P_W
              for n in (3200.0, 6400.0)]
         r.append(P[1] / P[0])
-    assert all(2.5 < x < 4.0 for x in r), r
+    assert all(2.5 < x < 3.5 for x in r), r
+
+
+def test_oil_injection_temperature_barely_changes_power_at_equal_ring_temperature(scene):
+    """Seed 004 §5.3.2, Fig. 10: oil injected at 25 or 50 °C (6500 rpm), power at equal OR–IR mean
+    temperature unchanged; rings imposed at 50 °C, balls and mixture from the network."""
+    P = [steady_state(scene.with_(n_rpm=6500.0, T_oil_in_C=Ti, T_fixed_C={"inner_ring": 50.0, "outer_ring": 50.0})).P_W
+         for Ti in (25.0, 50.0)]
+    assert abs(P[1] / P[0] - 1.0) < 0.05, P
+
+
+@pytest.mark.xfail(strict=True, reason="known gap (issue 4): the rig network runs cool — support blocks (oil-bath "
+                   "DGBBs and lip seals, heat sources) taken at ambient, housing and joints estimated")
+def test_inner_ring_heat_up_of_the_right_order(scene):
+    """Seed 004 §5.3.1, Fig. 8: inner ring ≈ 55 °C at 3200 rpm and ≈ 90 °C at 8070 rpm after 1000 s
+    (oil 10 L/h at 30 °C); 'of the right order' read as within 30 % of the rise above ambient."""
+    for n, ref in ((3200.0, 55.0), (8070.0, 90.0)):
+        tr = tb.transient(scene.with_(n_rpm=n), 1000.0, t_eval=[1000.0])
+        rise, ref_rise = tr.T_C["inner_ring"][-1] - scene.T_ambient_C, ref - scene.T_ambient_C
+        assert abs(rise / ref_rise - 1.0) < 0.3, (n, tr.T_C["inner_ring"][-1])
 
 
 def test_radial_load_effect_is_moderate_and_falls(scene):
