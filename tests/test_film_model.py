@@ -1,5 +1,6 @@
-"""The film load model as a scene option (``[models] load_model = "film"``): selection, consistency
-with thermobear.loads_film, the steady-state fixed point on the film temperature, loud refusals."""
+"""The film load model as a scene option (``[models] load_model = "film"``): selection (high-speed form
+where the dry model would use it, low-speed form on request), consistency with thermobear.loads_film and
+thermobear.loads_highspeed(film=...), the steady-state fixed point on the film temperature, loud refusals."""
 from __future__ import annotations
 
 import warnings
@@ -12,6 +13,7 @@ import thermobear as tb
 from thermobear.errors import InputError
 from thermobear.kinematics import entrainment_speed
 from thermobear.loads_film import film_load_distribution
+from thermobear.loads_highspeed import load_distribution_high_speed
 from thermobear.solver import choose_models, scene_contacts, scene_losses, steady_state
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -25,11 +27,13 @@ def scene():
 
 
 def test_selection_and_refusals(scene):
+    # the film model takes the high-speed form where the dry model does (F_c/Q > 0.05 at 4800 rpm)...
     m = choose_models(scene)
-    assert m["load_model"][0] == "film" and m["high_speed"][0] == "no"
-    with pytest.raises(InputError) as e:
-        choose_models(scene.with_(models={"high_speed": True}))
-    assert e.value.field == "models.load_model"
+    dry = choose_models(scene.with_(models={"load_model": "jones_harris"}))
+    assert m["load_model"][0] == "film" and m["high_speed"][0] == "yes" == dry["high_speed"][0]
+    # ...the low-speed form at crawl speed or on request
+    assert choose_models(scene.with_(n_rpm=300.0))["high_speed"][0] == "no"
+    assert choose_models(scene.with_(models={"high_speed": False}))["high_speed"][0] == "no"
     with pytest.raises(InputError) as e:
         choose_models(scene.with_(models={"load_model": "films"}))
     assert e.value.field == "models.load_model" and "film" in e.value.expected
@@ -37,7 +41,7 @@ def test_selection_and_refusals(scene):
 
 def test_prescribed_temperature_equals_the_film_distribution_injected(scene):
     T = 50.0
-    s = scene.with_(T_C=T)
+    s = scene.with_(T_C=T, models={"high_speed": False})
     b, lub = s.bearing, s.lubricant
     u = float(entrainment_speed(s.omega, 0.0, b.D, b.dm, b.alpha0))
     ld = film_load_distribution(b, Fa=s.Fa, Fr=s.Fr, u_i=u, u_o=u, eta=float(lub.eta(T)),
@@ -49,6 +53,22 @@ def test_prescribed_temperature_equals_the_film_distribution_injected(scene):
     assert np.all(a.contacts["inner"]["Q"] > 0)
 
 
+def test_high_speed_form_equals_the_high_speed_film_distribution_injected(scene):
+    T = 50.0
+    s = scene.with_(T_C=T)
+    b, lub = s.bearing, s.lubricant
+    ld = load_distribution_high_speed(b, Fa=s.Fa, Fr=s.Fr, n_rpm=s.n_rpm,
+                                      film=dict(eta=float(lub.eta(T)), alpha_p=float(lub.alpha_p_at(T))))
+    a = scene_losses(s)
+    ref = scene_losses(s.with_(models={"load_model": "jones_harris", "high_speed": True}), load=ld)
+    assert a.P_W == pytest.approx(ref.P_W, rel=1e-12)
+    assert np.all(a.contacts["inner"]["Q"] > 0)
+    # the dry high-speed model opens contacts at this load; the film model loads them (a little power more)
+    dry = scene_losses(s.with_(models={"load_model": "jones_harris"}))
+    assert np.any(dry.contacts["inner"]["Q"] == 0)
+    assert a.P_W > dry.P_W
+
+
 def test_film_loads_depend_on_the_film_temperature(scene):
     m = choose_models(scene)
     cold, hot = (scene_contacts(scene, m, T_film_C=T).sides["inner"]["Q"] for T in (30.0, 80.0))
@@ -56,8 +76,9 @@ def test_film_loads_depend_on_the_film_temperature(scene):
     assert cold.min() > hot.min() > 0
 
 
-def test_steady_state_settles_the_film_temperature(scene):
-    st = steady_state(scene)
+@pytest.mark.parametrize("high_speed", [False, True])
+def test_steady_state_settles_the_film_temperature(scene, high_speed):
+    st = steady_state(scene.with_(models={"high_speed": high_speed}))
     c = st.losses.contacts
     T_contacts = np.mean(np.concatenate([c["inner"]["T_C"], c["outer"]["T_C"]]))
     film_steps = [h for h in st.history if h.get("step") == "film"]

@@ -42,7 +42,8 @@ Jacobian of the film law (∂Q/∂s = 1/G_Q and ∂Q/∂α = −G_α/G_Q, G(Q, �
 side of the law; not symmetric once ∂Q/∂α ≠ 0) and a backtracking line search, started
 from the dry solution of :func:`thermobear.loads.load_distribution`.  At every iterate
 the law is inverted for each ball by a vectorised, bracketed (safeguarded) Newton
-iteration in x = ln Q.  Derivatives: dδ_el/d ln Q = (2/3) δ_el analytically; the film
+iteration in x = ln Q (a Newton step below the tolerance ends it, also when x has just become an
+end of the bracket).  Derivatives: dδ_el/d ln Q = (2/3) δ_el analytically; the film
 derivatives d(h_i + h_o)/d ln Q and ∂G/∂α by central differences (steps 1e-5 in ln Q,
 1e-6 rad in α) of the public NVM function.  The geometric approach is formed without
 cancellation by :mod:`thermobear.loads`' geometry (signed: a gap is s < 0, which the dry
@@ -178,11 +179,16 @@ def _invert(law: _Film, s, alpha, Q0):
         lo = np.where(f < 0, x, lo)
         hi = np.where(f > 0, x, hi)
         dG = law.G_lnQ(Q, alpha, d_el)
-        xn = x - f / np.where(dG > 0, dG, np.inf)
-        outside = ~((xn > lo) & (xn < hi)) | ~np.isfinite(xn) | (dG <= 0)
+        step = f / np.where(dG > 0, dG, np.inf)
+        xn = x - step
+        # a Newton step below the tolerance is convergence, even when x itself has just become an end
+        # of the bracket (xn may then round onto it; bisecting there would throw x away from the root)
+        small = (np.abs(step) <= _XTOL * np.maximum(1.0, np.abs(x))) & (dG > 0)
+        outside = (~((xn > lo) & (xn < hi)) | ~np.isfinite(xn) | (dG <= 0)) & ~small
         xn = np.where(outside, 0.5 * (lo + hi), xn)
         xn = np.where(done, x, xn)
-        conv = (np.abs(xn - x) <= _XTOL * np.maximum(1.0, np.abs(x))) | (hi - lo <= _XTOL * np.maximum(1.0, np.abs(x)))
+        xtol = _XTOL * np.maximum(1.0, np.abs(x))
+        conv = small | (np.abs(xn - x) <= xtol) | (hi - lo <= xtol)
         x = xn
         done = done | conv
         if done.all():

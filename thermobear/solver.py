@@ -15,10 +15,11 @@ from the scene's ``[models]`` table:
   otherwise the low-speed form, in which the centrifugal force F_c still loads the
   outer contact (it is what keeps balls outside the load zone on the race).
   ``load_model = "film"`` (chosen in the scene only; prototype): the lubricant
-  films in each ball's contact law (:mod:`thermobear.loads_film`), low-speed
-  form, films at one temperature — the prescribed T, or in ``steady_state`` the
-  mean contact temperature of the solution (a fixed point on it); not in the
-  transient yet.
+  films in each contact's law (:mod:`thermobear.loads_film` in the low-speed
+  form, ``film=`` of :mod:`thermobear.loads_highspeed` in the high-speed form,
+  chosen as for Jones–Harris), films at one temperature — the prescribed T, or
+  in ``steady_state`` the mean contact temperature of the solution (a fixed
+  point on it); not in the transient yet.
 * **drag** — only for jet / oil–air supply, or when n·dm ≥ 1e5 mm·rpm (below,
   churning of a few balls in air is < 0.1 % of the contact losses).
 * **rolling** — per-contact regime selection (seed 004) unless named.
@@ -62,26 +63,20 @@ def choose_models(scene: Scene) -> dict:
     if "load_model" in m:
         if m["load_model"] not in ("closed_form", "jones_harris", "film"):
             raise InputError("models.load_model", m["load_model"], "must be 'closed_form', 'jones_harris' or "
-                             "'film' (lubricant film in the contact law, low-speed form)")
+                             "'film' (lubricant film in the contact law)")
         if m["load_model"] == "closed_form" and not symmetric:
             raise InputError("models.load_model", "closed_form", "the closed form needs Fr = 0, no moment and "
                              "the nominal stiffness")
-        if m["load_model"] == "film" and m.get("high_speed") is True:
-            raise InputError("models.load_model", "film", "the film load model has no high-speed form yet: "
-                             "set models.high_speed = false or use 'jones_harris'")
         out["load_model"] = (m["load_model"], "chosen in the scene" if m["load_model"] != "film" else
-                             "chosen in the scene: Jones–Harris with the NVM films in each ball's contact law "
-                             "(thermobear.loads_film; prototype)")
+                             "chosen in the scene: Jones–Harris with the NVM films in each contact law "
+                             "(thermobear.loads_film, or thermobear.loads_highspeed with film=...; prototype)")
     elif symmetric:
         out["load_model"] = ("closed_form", "pure axial load, tilt held: all balls equal (exact closed form)")
     else:
         out["load_model"] = ("jones_harris", "combined load: balls differ (Jones–Harris, seed 004 eqs 6–8)")
     Qtyp = max(scene.Fa / (b.Z * max(np.sin(b.alpha0), 1e-3)), scene.Fr * 5.0 / b.Z, 1e-9)
     need, ratio = needs_high_speed(b, scene.n_rpm, Qtyp, rotating=scene.rotating)
-    if out["load_model"][0] == "film" and "high_speed" not in m:
-        out["high_speed"] = ("no", f"film load model: low-speed form (F_c/Q = {float(ratio):.2f}; F_c on the "
-                                   "outer contacts)")
-    elif "high_speed" in m:
+    if "high_speed" in m:
         hs = m["high_speed"]
         if not isinstance(hs, bool):
             raise InputError("models.high_speed", hs, "must be true or false")
@@ -170,8 +165,14 @@ def scene_load(scene: Scene, models: dict | None = None, T_film_C=None) -> LoadD
         from .loads_film import film_load_distribution
         T = film_temperature_C(scene) if T_film_C is None else float(T_film_C)
         b = scene.bearing
-        u = float(entrainment_speed(scene.omega_i, scene.omega_o, b.D, b.dm, b.alpha0))
         lub = scene.lubricant
+        if models["high_speed"][0] == "yes":
+            # high-speed form: per-contact films at the caged kinematics of the solution (one temperature T)
+            from .loads_highspeed import load_distribution_high_speed
+            return load_distribution_high_speed(b, Fa=scene.Fa, Fr=scene.Fr, M=scene.M, n_rpm=scene.n_rpm,
+                                                stiffness=scene.models.get("stiffness", "nominal"),
+                                                film=dict(eta=float(lub.eta(T)), alpha_p=float(lub.alpha_p_at(T))))
+        u = float(entrainment_speed(scene.omega_i, scene.omega_o, b.D, b.dm, b.alpha0))
         return film_load_distribution(b, Fa=scene.Fa, Fr=scene.Fr, M=scene.M, u_i=max(u, 1e-6), u_o=max(u, 1e-6),
                                       eta=float(lub.eta(T)), alpha_p=float(lub.alpha_p_at(T)),
                                       stiffness=scene.models.get("stiffness", "nominal"))
@@ -603,7 +604,8 @@ def _steady_film(scene, models, *, tol_K, method, tol_film_K=0.1, maxiter=10, **
         hist.append(dict(iteration=k, T_film_C=T_ref, T_contacts_C=T_new, P_W=st.P_W))
         if abs(T_new - T_ref) <= tol_film_K:
             st.models_used["load_distribution"] = (
-                "film in the contact law (thermobear.loads_film)",
+                "film in the contact law (" + ("high-speed, thermobear.loads_highspeed" if models["high_speed"][0] == "yes"
+                                              else "low-speed, thermobear.loads_film") + ")",
                 f"films at the mean contact temperature {T_ref:.2f} °C ({k} load updates)")
             st.history = list(st.history) + [dict(h, step="film") for h in hist]
             return st
