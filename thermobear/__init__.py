@@ -9,7 +9,7 @@ from .hertz import hertz, HertzContact
 from ._data import example_path
 from .geometry import BallBearing, bearing, bearing_names
 from .loads import load_distribution, LoadDistribution, needs_high_speed
-from .loads_highspeed import load_distribution_high_speed
+from .loads_highspeed import load_distribution_high_speed, FilmInputs
 from .loads_film import film_load_distribution, FilmLoadDistribution
 from .kinematics import ball_kinematics
 from .lubricant import Lubricant, lubricant, lubricant_names
