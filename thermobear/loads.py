@@ -242,6 +242,27 @@ def _state(y, brg, Kn_mode, c_psi, A, R):
     return A1, A2, Aj, s, sa, ca, Q, dQ
 
 
+def _backtrack(y_t, dy, n0, trial_norm, halvings: int = 30):
+    """Backtracking line search, vectorised over a batch: the step y_t + λ dy with the largest
+    λ ∈ {1, ½, ¼, …} whose residual norm ``trial_norm(trial)`` (per case) satisfies the Armijo-type
+    decrease n < (1 − 10⁻⁴ λ) n0.  A case that finds none takes the smallest step anyway (escapes a
+    flat region).  Returns the new unknowns (batch, n)."""
+    lam = np.ones(dy.shape[0])
+    best = y_t.copy()
+    accepted = np.zeros(dy.shape[0], bool)
+    for _ in range(halvings):
+        trial = y_t + lam[:, None] * dy
+        ok = (trial_norm(trial) < (1.0 - 1e-4 * lam) * n0) & ~accepted
+        best[ok] = trial[ok]
+        accepted |= ok
+        if accepted.all():
+            break
+        lam = np.where(accepted, lam, lam * 0.5)
+    stuck = ~accepted
+    best[stuck] = y_t[stuck] + lam[stuck, None] * dy[stuck]
+    return best
+
+
 def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, stiffness: str = "nominal",
                       tol: float = _TOL, maxiter: int = _MAXIT) -> LoadDistribution:
     r"""Quasi-static (low-speed) load distribution, rigid rings.
@@ -360,24 +381,11 @@ def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, st
         dy = np.zeros((int(todo.sum()), 3))
         dy[:, active] = -np.linalg.solve(Jt, res[todo][:, active][..., None])[..., 0]
         # no contact at all: move every active coordinate into contact along the load direction
-        y_t = y[todo]
-        lam = np.ones(dy.shape[0])
-        best_y, best_n = y_t.copy(), norm[todo].copy()
-        accepted = np.zeros(dy.shape[0], bool)
-        for _ in range(30):
-            trial = y_t + lam[:, None] * dy
+        def trial_norm(trial):
             r_t, _ = residual_and_jac_partial(trial, todo, brg, stiffness, c_psi, A, R, F_app, scale)
-            n_t = np.max(np.abs(r_t[:, active]), axis=1)
-            ok = (n_t < (1.0 - 1e-4 * lam) * norm[todo]) & ~accepted
-            best_y[ok], best_n[ok] = trial[ok], n_t[ok]
-            accepted |= ok
-            if accepted.all():
-                break
-            lam = np.where(accepted, lam, lam * 0.5)
-        # cases whose line search failed take the smallest step anyway (escape from flat regions)
-        stuck = ~accepted
-        best_y[stuck] = y_t[stuck] + lam[stuck, None] * dy[stuck]
-        y[todo] = best_y
+            return np.max(np.abs(r_t[:, active]), axis=1)
+
+        y[todo] = _backtrack(y[todo], dy, norm[todo], trial_norm)
         prev = norm.copy()
         res, J = residual_and_jac(y)
         norm = np.max(np.abs(res[:, active]), axis=1)

@@ -64,7 +64,7 @@ import numpy as np
 from .errors import InputError, NoConvergence, NoEquilibrium
 from .film import film_thickness_nvm
 from .geometry import BallBearing
-from .loads import STIFFNESS_MODES, LoadDistribution, _batch_loads, _geometry, load_distribution
+from .loads import STIFFNESS_MODES, LoadDistribution, _backtrack, _batch_loads, _geometry, load_distribution
 
 __all__ = ["FilmLoadDistribution", "film_load_distribution", "film_contact_law"]
 
@@ -392,26 +392,16 @@ def film_load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, *, u_i, u_o
         Jt = J[rows][:, active][:, :, active]
         dy = np.zeros((rows.size, 3))
         dy[:, active] = -np.linalg.solve(Jt, res[rows][:, active][..., None])[..., 0]
-        y_t, Q_t = y[rows], st["Q"][rows]
-        lam = np.ones(rows.size)
-        accepted = np.zeros(rows.size, bool)
-        best_y = y_t.copy()
-        for _ in range(30):
-            trial = y_t + lam[:, None] * dy
+        Q_t = st["Q"][rows]
+
+        def trial_norm(trial, Q_t=Q_t, rows=rows):
             try:
                 r_t, _, _ = evaluate(trial, Q_t, rows)
-                n_t = np.max(np.abs(r_t[:, active]), axis=1)
-            except NoConvergence:
-                n_t = np.full(rows.size, np.inf)
-            ok = (n_t < (1.0 - 1e-4 * lam) * norm[rows]) & ~accepted
-            best_y[ok] = trial[ok]
-            accepted |= ok
-            if accepted.all():
-                break
-            lam = np.where(accepted, lam, lam * 0.5)
-        stuck = ~accepted
-        best_y[stuck] = y_t[stuck] + lam[stuck, None] * dy[stuck]
-        y[rows] = best_y
+            except NoConvergence:                       # the law's inversion failed there: reject the trial
+                return np.full(rows.size, np.inf)
+            return np.max(np.abs(r_t[:, active]), axis=1)
+
+        y[rows] = _backtrack(y[rows], dy, norm[rows], trial_norm)
         prev = norm.copy()
         res, J, st = evaluate(y, st["Q"])
         norm = np.max(np.abs(res[:, active]), axis=1)
