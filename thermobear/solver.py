@@ -19,7 +19,8 @@ from the scene's ``[models]`` table:
   form, ``film=`` of :mod:`thermobear.loads_highspeed` in the high-speed form,
   chosen as for Jones–Harris), films at one temperature — the prescribed T, or
   in ``steady_state`` the mean contact temperature of the solution (a fixed
-  point on it); not in the transient yet.
+  point on it); in the transient the loads are re-solved piece by piece as the
+  mean contact temperature drifts (≈ 2 K per piece).
 * **drag** — only for jet / oil–air supply, or when n·dm ≥ 1e5 mm·rpm (below,
   churning of a few balls in air is < 0.1 % of the contact losses).
 * **rolling** — per-contact regime selection (seed 004) unless named.
@@ -731,6 +732,21 @@ class TransientRun:
     roles: dict = field(default_factory=dict)
 
 
+_FILM_DT0_S = 20.0      # first piece of a film-load-model transient [s]
+_FILM_DRIFT_K = 2.0     # film-temperature drift per piece [K] (loads re-solved at each piece's start)
+
+
+def _film_temperature_of(T_state, roles, scene) -> float:
+    """Mean contact temperature [°C] (ball with each race, seed 004 §4.5) of a transient state; a
+    scalar state (the start) is that temperature."""
+    if not isinstance(T_state, dict) or roles is None:
+        return float(T_state) if np.ndim(T_state) == 0 else film_temperature_C(scene)
+    Tb = T_state.get(roles["ball"], np.nan)
+    Ti, To = T_state.get(roles["inner"], np.nan), T_state.get(roles["outer"], np.nan)
+    T = 0.25 * (2.0 * Tb + Ti + To)
+    return float(T) if np.isfinite(T) else film_temperature_C(scene)
+
+
 def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=None, rtol: float = 1e-5,
               atol: float = 1e-3, contacts: ContactSet | None = None, **kw) -> TransientRun:
     """Heat-up of a scene on its thermal network, losses re-evaluated as temperatures change.
@@ -748,6 +764,10 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
                              (measured; tests/test_solver.py pins it) — two orders below a
                              thermocouple's accuracy; tighten them for numerical studies
     contacts : ContactSet    inject prepared contacts (one operating point: no schedule)
+
+    With ``models.load_model = "film"`` the loads depend on the film temperature: each segment is
+    run in pieces, the loads re-solved at the start of each at its mean contact temperature, the
+    pieces sized for ≈ 2 K of drift (20 s first, then ×½ … ×4).
     """
     from .thermal import solve_transient
     if not (np.isfinite(t_end_s) and t_end_s > 0):
@@ -773,20 +793,30 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
     T_state = scene.T_ambient_C if T0_C is None else T0_C
     out_t, out_T, out_rep = [], {}, {}
     first = None
-    for k, (ts, sc) in enumerate(scenes):
-        te = bounds[k + 1]
-        if te <= ts:
-            continue
+    # pieces of the run: one per schedule segment; with the film load model a segment is cut into pieces
+    # whose film temperature (the mean contact temperature at the piece's start) drifts by ≈ _FILM_DRIFT_K
+    pieces = [(ts, bounds[k + 1], sc, k == len(scenes) - 1) for k, (ts, sc) in enumerate(scenes)
+              if bounds[k + 1] > ts]
+    film_dt = None
+    i = -1
+    while i + 1 < len(pieces):
+        i += 1
+        ts, te, sc, last_seg = pieces[i]
         models = choose_models(sc)
-        if contacts is None and models["load_model"][0] == "film":
-            raise InputError("models.load_model", "film", "the film load model is not in the transient yet (its "
-                             "loads depend on the temperature): use steady_state, a prescribed T, or inject "
-                             "contacts from scene_contacts(scene, T_film_C=...)")
-        net, cs, roles = _setup_thermal(sc, models, contacts)
+        film = contacts is None and models["load_model"][0] == "film"
+        if film:
+            T_film = _film_temperature_of(T_state, first[1] if first else None, sc)
+            film_dt = min(_FILM_DT0_S, te - ts) if film_dt is None else film_dt
+            if ts + film_dt < te - 1e-9 * te:
+                pieces.insert(i + 1, (ts + film_dt, te, sc, last_seg))
+                te, last_seg = ts + film_dt, False
+            cs_film = scene_contacts(sc, models, T_film_C=T_film)
+            net, cs, roles = _setup_thermal(sc, models, cs_film)
+        else:
+            net, cs, roles = _setup_thermal(sc, models, contacts)
         first = first or (models, roles, list(net.nodes))
         if list(net.nodes) != first[2]:
             raise InputError("schedule", ts, "a step may not change the thermal network's nodes")
-        last_seg = k == len(scenes) - 1
 
         def sources(t, T_K, sc=sc, models=models, cs=cs, roles=roles):
             T_C = {n: v - 273.15 for n, v in T_K.items()}
@@ -814,6 +844,9 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
         for n, v in tr.report.items():
             out_rep.setdefault(n, []).append(np.asarray(v, float)[keep])
         T_state = {n: float(np.asarray(v)[-1]) for n, v in tr.T_C.items() if n in net.free_nodes}
+        if film:       # next piece: as long as gives ≈ _FILM_DRIFT_K of film-temperature drift (×½ … ×4)
+            drift = abs(_film_temperature_of(T_state, roles, sc) - T_film)
+            film_dt = (te - ts) * float(np.clip(_FILM_DRIFT_K / max(drift, 1e-9), 0.5, 4.0))
         hot = {n: v for n, v in T_state.items() if v > T_lim_C}
         if hot:
             node = max(hot, key=hot.get)

@@ -176,7 +176,7 @@ def main() -> int:
           "law — a gap carries the hydrodynamic load of a film as thick as the gap — in the low-speed "
           "(thermobear.loads_film) and the high-speed form: compared the paper's way it holds the spread within "
           "the paper's 10 % (row above; what-if tables in validation/report/seed004_film_whatif.md). Not the "
-          "default: one film temperature, not in the transient yet, ≈ 50–100 ms per load distribution (dry: "
+          "default: one film temperature for all contacts, ≈ 50–100 ms per load distribution (dry: "
           "5–10 ms).",
           f"* **Speed.** Drag goes ×{drag_r[1] / drag_r[0]:.1f} for ×2 speed (∝ ω_c³ × Parker's X ∝ 1/n) against "
           "×3.1–3.4 for hydrodynamic rolling (F_R ∝ U^0.64–0.75): the drag share (§1, 3× the paper's) is what lifts "
