@@ -359,11 +359,8 @@ def _drag_pre(cs: ContactSet, supply: str, oil_flow_m3_s: float, dragged: bool) 
     if key in cache:
         return cache[key]
     brg, batch, nb = cs.brg, cs.batch, cs.n_rpm
-    # cage speed: the balls' pure-rolling orbital speeds differ when their contact angles do (high-speed
-    # form); the cage runs at the speed the loaded balls impose — their load-weighted mean
-    Qw = cs.sides["inner"]["Q"]
-    Qs = Qw.sum(-1)
-    wc_mean = np.where(Qs > 0, (Qw * cs.omega_c).sum(-1) / np.where(Qs > 0, Qs, 1.0), cs.omega_c.mean(-1))
+    # cage speed: prepare_contacts already puts every ball at the one cage speed (common_cage_speed)
+    wc_mean = np.asarray(cs.omega_c)[..., 0]
     d = dict(wc_mean=wc_mean)
     if dragged:
         if supply == "oil_jet":
