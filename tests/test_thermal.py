@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 from scipy.special import ellipk
 
+from thermobear._data import data_dir, read_toml
 from thermobear.errors import InputError, NoConvergence
 from thermobear.thermal import (load_network, network_names, solve_steady, solve_transient,
                                 split_losses, evaluate)
@@ -445,3 +446,22 @@ def test_bad_toml_file_named(tmp_path):
     assert exc.value.field.endswith("nodes")
     with pytest.raises(InputError, match="elements"):
         net_of({"a": {}, "amb": {"T_C": 20.0}}, [])
+
+
+def test_rebuilding_a_frozen_spec_equals_a_fully_checked_build():
+    # the solver rebuilds one never-modified table per operating point and skips the context-free
+    # checks after the first build: the result must be the one a full build gives, and bad values
+    # in a new context must still be refused
+    from thermobear.thermal.network import _CHECKED
+    spec = read_toml(str(data_dir("networks") / "oil_jet_ball_bearing.toml"))
+    first = load_network(spec, oil_jet_context(), _frozen=True)
+    assert id(spec) in _CHECKED
+    for ctx in (oil_jet_context(n_rpm=3200.0, T_oil=50.0), oil_jet_context(flow_L_h=15.0)):
+        fast, full = load_network(spec, ctx, _frozen=True), load_network(spec, ctx)
+        T = full.initial_T_K() + 7.0
+        assert fast.nodes == full.nodes and fast.estimated == full.estimated == first.estimated
+        np.testing.assert_array_equal(fast.fixed, full.fixed)
+        np.testing.assert_allclose(fast.C_J_K, full.C_J_K, rtol=0, atol=0)
+        np.testing.assert_allclose(fast.conductances(T), full.conductances(T), rtol=1e-15)
+    with pytest.raises(InputError, match="oil_flow_m3_s|must be >= 0"):
+        load_network(spec, oil_jet_context(flow_L_h=-1.0), _frozen=True)

@@ -320,8 +320,47 @@ def network_spec(scene: Scene) -> dict:
     A key ``"<element or node name>.<parameter>"`` replaces that parameter (e.g.
     ``"bearing_to_ambient.G_W_K" = 0.8``, ``"oil_stream.beta" = 0.5``); a key without a dot is a
     context value the network reads as ``scene.<key>``.  Nodes named in ``scene.T_fixed_C`` become
-    fixed-temperature nodes at the imposed (measured) temperature.
+    fixed-temperature nodes at the imposed (measured) temperature.  Returns a fresh copy (the caller
+    may modify it).
     """
+    import copy
+    return copy.deepcopy(_network_spec_shared(scene))
+
+
+_SPECS: dict = {}
+
+
+def _network_spec_shared(scene: Scene) -> dict:
+    """:func:`network_spec`, cached per network file (path and modification time), imposed
+    temperatures and parameter overrides; the returned table is shared and never modified (the
+    network builder then checks its structure once: ``load_network(..., _frozen=True)``)."""
+    from pathlib import Path
+
+    from ._data import data_dir
+    from .thermal.network import network_names
+    name = str(scene.network)
+    if name in network_names():
+        path = data_dir("networks") / f"{name}.toml"
+    else:
+        path = Path(name)
+        if scene.path and not path.is_absolute():
+            path = Path(scene.path).resolve().parent / path
+    try:
+        stamp = path.resolve().stat().st_mtime_ns
+    except OSError:
+        return _network_spec_new(scene)      # raises the "unknown network" message
+    key = (str(path.resolve()), stamp, repr(sorted(scene.T_fixed_C.items())),
+           repr(sorted(scene.network_parameters.items())))
+    spec = _SPECS.get(key)
+    if spec is None:
+        spec = _network_spec_new(scene)
+        if len(_SPECS) > 64:
+            _SPECS.clear()
+        _SPECS[key] = spec
+    return spec
+
+
+def _network_spec_new(scene: Scene) -> dict:
     import copy
     from pathlib import Path
 
@@ -422,7 +461,7 @@ def _setup_thermal(scene: Scene, models: dict, contacts: ContactSet | None = Non
     # contact semi-axes for the contact conductances (temperature independent: rigid rings)
     contacts = {s: {"a_m": np.asarray(cs.sides[s]["a"], float), "b_m": np.asarray(cs.sides[s]["b"], float)}
                 for s in ("inner", "outer")}
-    net = load_network(network_spec(scene), network_context(scene, contacts))
+    net = load_network(_network_spec_shared(scene), network_context(scene, contacts), _frozen=True)
     return net, cs, _roles(net)
 
 

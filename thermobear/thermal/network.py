@@ -403,7 +403,7 @@ def network_names() -> list:
     return names_in(data_dir("networks"))
 
 
-def load_network(spec, context=None) -> ThermalNetwork:
+def load_network(spec, context=None, *, _frozen: bool = False) -> ThermalNetwork:
     """Build a thermal network from a bundled name, a TOML path or a dict.
 
     Parameters
@@ -425,7 +425,7 @@ def load_network(spec, context=None) -> ThermalNetwork:
     """
     ctx = dict(context or {})
     if isinstance(spec, Mapping):
-        data, src = dict(spec), "<dict>"
+        data, src = (spec if _frozen else dict(spec)), "<dict>"
     else:
         p = Path(spec)
         if p.suffix != ".toml" and not p.exists():
@@ -434,12 +434,33 @@ def load_network(spec, context=None) -> ThermalNetwork:
                 raise InputError("network", str(spec), f"unknown network; known: {', '.join(names)}")
             p = data_dir("networks") / f"{spec}.toml"
         data, src = read_toml(str(p)), p.name
-    return _build(data, ctx, src)
+    return _build(data, ctx, src, _frozen and isinstance(spec, Mapping))
 
 
-def _build(data, ctx, src) -> ThermalNetwork:
+# id(spec) -> (spec, estimated) of specs built once with every check (see _build's ``frozen``)
+_CHECKED: dict = {}
+
+
+def _build(data, ctx, src, frozen: bool = False) -> ThermalNetwork:
+    """Check and build a network.  ``frozen`` (private, for :mod:`thermobear.solver`, which rebuilds
+    the same never-modified table for every operating point): once such a table passed every check,
+    later builds of the same object skip the checks that do not depend on the context (keys, element
+    types and schemas, node names, reachability) and only evaluate, check and probe the values."""
     pre = f"{src}: "
-    unknown = set(data) - _TOP_KEYS
+    memo = _CHECKED.get(id(data)) if frozen else None
+    trusted = memo is not None and memo[0] is data
+    if trusted:
+        return _assemble(data, ctx, src, pre, trusted=True, estimated=dict(memo[1]))
+    net = _assemble(data, ctx, src, pre, trusted=False, estimated={})
+    if frozen:
+        if len(_CHECKED) > 64:
+            _CHECKED.clear()
+        _CHECKED[id(data)] = (data, dict(net.estimated))
+    return net
+
+
+def _assemble(data, ctx, src, pre, trusted, estimated) -> ThermalNetwork:
+    unknown = set() if trusted else set(data) - _TOP_KEYS
     if unknown:
         k = sorted(unknown)[0]
         raise InputError(pre + k, data[k], f"unknown top-level key; allowed: {', '.join(sorted(_TOP_KEYS))}")
@@ -454,17 +475,17 @@ def _build(data, ctx, src) -> ThermalNetwork:
     index = {n: i for i, n in enumerate(names)}
     n = len(names)
     fixed, T_fixed, C = np.zeros(n, bool), np.zeros(n), np.full(n, np.nan)
-    estimated = {}
     graph = nx.MultiGraph(name=data.get("name", src))
     for name, nd in nodes_tbl.items():
         f = f"{pre}nodes.{name}"
-        if not isinstance(nd, Mapping):
-            raise InputError(f, nd, "each node is a table")
-        bad = set(nd) - _NODE_KEYS
-        if bad:
-            k = sorted(bad)[0]
-            raise InputError(f"{f}.{k}", nd[k], f"unknown node key; allowed: {', '.join(sorted(_NODE_KEYS))}")
-        _check_estimated(f, nd, estimated)
+        if not trusted:
+            if not isinstance(nd, Mapping):
+                raise InputError(f, nd, "each node is a table")
+            bad = set(nd) - _NODE_KEYS
+            if bad:
+                k = sorted(bad)[0]
+                raise InputError(f"{f}.{k}", nd[k], f"unknown node key; allowed: {', '.join(sorted(_NODE_KEYS))}")
+            _check_estimated(f, nd, estimated)
         i = index[name]
         if "T_C" in nd:
             if {"C_J_K", "mass_kg", "volume_m3", "material"} & set(nd):
@@ -479,26 +500,14 @@ def _build(data, ctx, src) -> ThermalNetwork:
 
     elements, seen = [], set()
     for k, e in enumerate(els):
-        el = _element(pre, k, e, ctx, index, fixed, estimated, seen)
+        el = _element(pre, k, e, ctx, index, fixed, estimated, seen, trusted)
         elements.append(el)
         graph.add_edge(*el.nodes, key=el.name, type=el.type, advective=el.advective, **{
             kk: (vv.name if isinstance(vv, Material) else vv) for kk, vv in el.p.items()})
 
     # every free node must see a fixed node: conduction both ways, advection upstream → downstream
-    dg = nx.DiGraph()
-    dg.add_nodes_from(names)
-    for el in elements:
-        dg.add_edge(el.nodes[0], el.nodes[1])
-        if not el.advective:
-            dg.add_edge(el.nodes[1], el.nodes[0])
-    reach = set()
-    for nm in names:
-        if fixed[index[nm]]:
-            reach |= {nm} | nx.descendants(dg, nm)
-    for nm in names:
-        if nm not in reach:
-            raise InputError(f"{pre}nodes.{nm}", None,
-                             "has no path to a fixed-temperature node (its temperature would be undetermined)")
+    if not trusted:
+        _check_reachable(pre, names, index, fixed, elements)
 
     net = ThermalNetwork(name=data.get("name", src), nodes=names, index=index, fixed=fixed,
                          T_fixed_K=T_fixed, C_J_K=C, elements=elements, graph=graph,
@@ -513,6 +522,24 @@ def _build(data, ctx, src) -> ThermalNetwork:
         if not (np.isfinite(G) and G >= 0):
             raise InputError(f"{pre}elements[{el.name}]", G, "conductance must be finite and >= 0 [W/K]")
     return net
+
+
+def _check_reachable(pre, names, index, fixed, elements):
+    """Every free node must see a fixed node: conduction both ways, advection upstream → downstream."""
+    dg = nx.DiGraph()
+    dg.add_nodes_from(names)
+    for el in elements:
+        dg.add_edge(el.nodes[0], el.nodes[1])
+        if not el.advective:
+            dg.add_edge(el.nodes[1], el.nodes[0])
+    reach = set()
+    for nm in names:
+        if fixed[index[nm]]:
+            reach |= {nm} | nx.descendants(dg, nm)
+    for nm in names:
+        if nm not in reach:
+            raise InputError(f"{pre}nodes.{nm}", None,
+                             "has no path to a fixed-temperature node (its temperature would be undetermined)")
 
 
 def _check_estimated(f, tbl, estimated):
@@ -549,7 +576,8 @@ def _capacity(f, nd, ctx):
     return float(mass * m.cp)
 
 
-def _element(pre, k, e, ctx, index, fixed, estimated, seen) -> Element:
+def _element_checks(pre, k, e, index, estimated, seen):
+    """The context-free checks of an element table; returns (name, field prefix, type, between, schema)."""
     if not isinstance(e, Mapping):
         raise InputError(f"{pre}elements[{k}]", e, "each element is a table")
     between = e.get("between")
@@ -584,6 +612,18 @@ def _element(pre, k, e, ctx, index, fixed, estimated, seen) -> Element:
         if len(got) != 1:
             raise InputError(f"{f}.{group[0]}", None, f"give exactly one of {' / '.join(group)}")
     _check_estimated(f, e, estimated)
+    return name, f, typ, between, schema
+
+
+def _element(pre, k, e, ctx, index, fixed, estimated, seen, trusted=False) -> Element:
+    if trusted:                             # a table that passed every check below before (see _build)
+        between = e["between"]
+        name = e.get("name", f"{between[0]}--{between[1]}")
+        f = f"{pre}elements[{name}]"
+        typ = e["type"]
+        schema = ELEMENT_TYPES[typ]
+    else:
+        name, f, typ, between, schema = _element_checks(pre, k, e, index, estimated, seen)
 
     p = {}
     for kk, v in e.items():

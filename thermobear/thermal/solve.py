@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import lru_cache
 from typing import Callable
 
 import numpy as np
@@ -178,23 +179,8 @@ class _Plan:
         n = len(net.nodes)
         self.n, self.elements = n, els
         self.key = _plan_key(net)
-        i = np.array([e.i for e in els], dtype=int)
-        j = np.array([e.j for e in els], dtype=int)
-        adv = np.array([e.advective for e in els], dtype=bool)
-        ks, ka = np.flatnonzero(~adv), np.flatnonzero(adv)
-        rows = np.concatenate([i[ks], j[ks], i[ks], j[ks], j[ka], j[ka]])
-        cols = np.concatenate([i[ks], j[ks], j[ks], i[ks], j[ka], i[ka]])
-        self.eidx = np.concatenate([ks, ks, ks, ks, ka, ka])
-        self.sign = np.concatenate([np.ones(2 * ks.size), -np.ones(2 * ks.size), np.ones(ka.size),
-                                    -np.ones(ka.size)])
-        self.flat = rows * n + cols
-        uniq, self.inv = np.unique(self.flat, return_inverse=True)
-        self.nnz = uniq.size
-        ur, uc = np.divmod(uniq, n)
-        self.indices = uc.astype(np.int32)
-        self.indptr = np.searchsorted(ur, np.arange(n + 1)).astype(np.int32)
-        self.free = np.flatnonzero(~net.fixed)
-        self.fixed = np.flatnonzero(net.fixed)
+        (self.eidx, self.sign, self.flat, self.inv, self.nnz, self.indices, self.indptr, self.free,
+         self.fixed) = _pattern(n, tuple((e.i, e.j, bool(e.advective)) for e in els), net.fixed.tobytes())
         self.dep = [k for k, e in enumerate(els) if e.T_dependent]
         self.nodes_of = {k: tuple(els[k]._T_nodes()) for k in self.dep}
         T0 = net.initial_T_K()
@@ -278,6 +264,31 @@ class _Plan:
             return A[np.ix_(self.free, self.free)], A[np.ix_(self.free, self.fixed)]
         A = self.csr(G)
         return A[self.free][:, self.free].tocsc(), A[self.free][:, self.fixed]
+
+
+@lru_cache(maxsize=64)
+def _pattern(n, ija, fixed_bytes):
+    """Index structure of the conductance matrix of a topology (n nodes; elements (i, j, advective);
+    the fixed-node mask): cached, because networks are rebuilt for every operating point."""
+    i = np.array([t[0] for t in ija], dtype=int)
+    j = np.array([t[1] for t in ija], dtype=int)
+    adv = np.array([t[2] for t in ija], dtype=bool)
+    ks, ka = np.flatnonzero(~adv), np.flatnonzero(adv)
+    rows = np.concatenate([i[ks], j[ks], i[ks], j[ks], j[ka], j[ka]])
+    cols = np.concatenate([i[ks], j[ks], j[ks], i[ks], j[ka], i[ka]])
+    eidx = np.concatenate([ks, ks, ks, ks, ka, ka])
+    sign = np.concatenate([np.ones(2 * ks.size), -np.ones(2 * ks.size), np.ones(ka.size), -np.ones(ka.size)])
+    flat = rows * n + cols
+    uniq, inv = np.unique(flat, return_inverse=True)
+    ur, uc = np.divmod(uniq, n)
+    indptr = np.searchsorted(ur, np.arange(n + 1)).astype(np.int32)
+    fixed = np.frombuffer(fixed_bytes, dtype=bool)
+    out = (eidx, sign, flat, inv, uniq.size, uc.astype(np.int32), indptr, np.flatnonzero(~fixed),
+           np.flatnonzero(fixed))
+    for a in out:
+        if isinstance(a, np.ndarray):
+            a.setflags(write=False)          # shared between networks of one topology
+    return out
 
 
 def _plan_key(net):
