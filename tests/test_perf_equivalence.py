@@ -28,7 +28,8 @@ def _scene(name="seed004_oil_jet_7210.toml", **kw):
 
 
 @pytest.mark.parametrize("name,kw", [("seed004_oil_jet_7210.toml", {}),
-                                     ("seed004_oil_jet_7210.toml", {"n_rpm": 8070.0, "Fr": 750.0}),
+                                     ("seed004_oil_jet_7210.toml", {"n_rpm": 8070.0, "Fr": 750.0,
+                                                                    "models": {"load_model": "jones_harris"}}),
                                      ("seed002_grease_thrust_51107.toml", {})])
 def test_newton_steady_equals_anderson(name, kw):
     s = _scene(name, **kw)

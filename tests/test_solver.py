@@ -22,6 +22,36 @@ def test_seed001_rig_gets_a_smaller_model_than_seed004():
         assert reason, k
 
 
+def test_film_load_model_where_the_dry_solution_opens_contacts_in_a_flooded_bearing():
+    from thermobear.solver import open_contacts
+    loaded, lifted = S004.with_(Fr=150.0, n_rpm=4800.0), S004.with_(Fr=750.0, n_rpm=4800.0)
+    assert open_contacts(loaded, True) == 0 and open_contacts(lifted, True) > 0
+    assert choose_models(loaded)["load_model"][0] == "jones_harris"
+    m = choose_models(lifted)
+    assert m["load_model"][0] == "film" and "open contact" in m["load_model"][1]
+    # a greased bearing's unloaded contacts are starved: the dry law stays
+    d = _scene_dict()
+    d["lubricant"] = {k: v for k, v in d["lubricant"].items() if k not in ("flow_L_h", "T_in_C")} | {"supply": "grease"}
+    from thermobear.scene import scene_from_dict
+    greased = scene_from_dict(d)
+    g = choose_models(greased.with_(Fr=750.0, n_rpm=4800.0))
+    assert g["load_model"][0] == "jones_harris" and "starved" in g["load_model"][1]
+    # the scene's own choice wins
+    forced = lifted.with_(models={"load_model": "jones_harris"})
+    assert choose_models(forced)["load_model"] == ("jones_harris", "chosen in the scene")
+    # and the film changes the power where contacts open, barely where they do not
+    for sc, lo, hi in ((loaded, 0.0, 0.03), (lifted, 0.05, 0.5)):
+        Pd = solve(sc.with_(T_C=50.0, models={"load_model": "jones_harris"})).P_W
+        Pf = solve(sc.with_(T_C=50.0)).P_W
+        assert lo <= abs(Pf / Pd - 1.0) < hi, (Pd, Pf)
+
+
+def _scene_dict():
+    import tomllib
+    with open(tb.example_path("seed004_oil_jet_7210.toml"), "rb") as fh:
+        return tomllib.load(fh)
+
+
 @pytest.mark.parametrize("scene", [S001, S004.with_(Fr=0.0, T_C=50.0, n_rpm=1000.0), S002.with_(T_C=50.0)])
 def test_closed_form_and_jones_harris_paths_agree(scene):
     a = scene_losses(scene)
@@ -33,7 +63,7 @@ def test_closed_form_and_jones_harris_paths_agree(scene):
 
 def test_prescribed_temperature_equals_bearing_losses():
     # low-speed path: bearing_losses adds F_c to the outer contacts itself
-    r = solve(S004.with_(T_C=50.0, models={"high_speed": False}))
+    r = solve(S004.with_(T_C=50.0, models={"high_speed": False, "load_model": "jones_harris"}))
     ref = tb.bearing_losses(S004.bearing, S004.lubricant, Fa=450.0, Fr=325.0, n_rpm=3200.0, T_C=50.0,
                             oil_flow_m3_s=S004.oil_flow, Rq_ball=S004.Rq_ball, Rq_ring=S004.Rq_ring)
     assert r.P_W == pytest.approx(ref.P_W, rel=1e-12)

@@ -39,6 +39,9 @@ def test_prescribed_sweep_equals_single_solves(seed004):
         for k, v in single.breakdown_W.items():
             assert r["breakdown_W"][k] == pytest.approx(v, rel=1e-12, abs=1e-15)
         assert r["models"]["drag"] == single.models_used["drag"][0]
+        assert r["models"]["load_model"] == single.models_used["load_model"][0]
+    # Fr 1500 N lifts balls off the races: those points run the film load model, one by one
+    assert {r["models"]["load_model"] for r in rows if r["n_rpm"] > 0} == {"jones_harris", "film"}
     # physics of the rows: standstill dissipates nothing; losses fall with temperature (viscosity)
     assert all(r["P_W"] == 0.0 for r in rows if r["n_rpm"] == 0.0)
     by = {(r["n_rpm"], r["Fr"], r["Fa"], r["T_C"]): r["P_W"] for r in rows}

@@ -20,7 +20,7 @@ from .friction.drag import drag_loss
 from .losses import bearing_losses, LossResult, prepare_contacts, evaluate_losses
 from .thermal import load_network, solve_steady, solve_transient
 from .scene import Scene, load_scene
-from .solver import solve, steady_state, transient, choose_models
+from .solver import solve, steady_state, transient, choose_models, open_contacts
 from .sweep import run_sweep
 from .rig import read_log, compare, calibrate, RigLog
 

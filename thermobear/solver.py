@@ -14,13 +14,19 @@ from the scene's ``[models]`` table:
   only where ``needs_high_speed`` says they matter (F_c > 5 % of the ball load);
   otherwise the low-speed form, in which the centrifugal force F_c still loads the
   outer contact (it is what keeps balls outside the load zone on the race).
-  ``load_model = "film"`` (chosen in the scene only; prototype): the lubricant
-  films in each contact's law (:mod:`thermobear.loads_film` in the low-speed
-  form, ``film=`` of :mod:`thermobear.loads_highspeed` in the high-speed form,
-  chosen as for Jones–Harris), films at one temperature — the prescribed T, or
-  in ``steady_state`` the mean contact temperature of the solution (a fixed
-  point on it); in the transient the loads are re-solved piece by piece as the
-  mean contact temperature drifts (≈ 2 K per piece).
+  ``load_model = "film"``: the lubricant films in each contact's law
+  (:mod:`thermobear.loads_film` in the low-speed form, ``film=`` of
+  :mod:`thermobear.loads_highspeed` in the high-speed form, chosen as for
+  Jones–Harris), films at one temperature — the prescribed T, or in
+  ``steady_state`` the mean contact temperature of the solution (a fixed point
+  on it); in the transient the loads are re-solved piece by piece as the mean
+  contact temperature drifts (≈ 2 K per piece).  Chosen when the dry
+  Jones–Harris solution leaves a contact open in a flooded bearing (oil jet or
+  oil bath; :func:`open_contacts`): the films of those balls carry load and a
+  rolling loss the dry law drops (median 19 %, 2–50 % on a 7210 / 6210 grid;
+  median 0.2 %, at most 6 % where every contact is loaded —
+  validation/report/film_criterion.md).
+  Grease and oil–air contacts outside the load zone are taken as starved.
 * **drag** — only for jet / oil–air supply, or when n·dm ≥ 1e5 mm·rpm (below,
   churning of a few balls in air is < 0.1 % of the contact losses).
 * **rolling** — per-contact regime selection (seed 004) unless named.
@@ -41,7 +47,7 @@ from .losses import ContactSet, LossResult, _contact_powers, _repeat_contacts, e
 from .loads import LoadDistribution, axial_contact_angle, load_distribution, needs_high_speed
 from .scene import Scene
 
-__all__ = ["choose_models", "scene_losses", "solve", "steady_state", "transient", "RunResult",
+__all__ = ["choose_models", "open_contacts", "scene_losses", "solve", "steady_state", "transient", "RunResult",
            "SteadyState", "TransientRun", "network_context"]
 
 _ROLES = {"inner": ("inner_race", "shaft_washer", "inner_ring", "bearing"),
@@ -74,7 +80,7 @@ def choose_models(scene: Scene) -> dict:
     elif symmetric:
         out["load_model"] = ("closed_form", "pure axial load, tilt held: all balls equal (exact closed form)")
     else:
-        out["load_model"] = ("jones_harris", "combined load: balls differ (Jones–Harris, seed 004 eqs 6–8)")
+        out["load_model"] = ("jones_harris", "")         # dry or film: decided below, once high_speed is known
     Qtyp = max(scene.Fa / (b.Z * max(np.sin(b.alpha0), 1e-3)), scene.Fr * 5.0 / b.Z, 1e-9)
     need, ratio = needs_high_speed(b, scene.n_rpm, Qtyp, rotating=scene.rotating)
     if "high_speed" in m:
@@ -101,6 +107,8 @@ def choose_models(scene: Scene) -> dict:
                                    "of balls outside the load zone)")
     if out["high_speed"][0] == "yes" and out["load_model"][0] == "closed_form":
         out["load_model"] = ("jones_harris", "high-speed form: per-ball equilibrium with centrifugal force")
+    if out["load_model"] == ("jones_harris", ""):
+        out["load_model"] = _combined_load_model(scene, out["high_speed"][0] == "yes")
     ndm = scene.n_rpm * b.dm * 1e3
     if "drag" in m:
         out["drag"] = (bool(m["drag"]), "chosen in the scene")
@@ -123,6 +131,70 @@ def choose_models(scene: Scene) -> dict:
     out["hertz"] = (m.get("hertz", "exact"), "chosen in the scene" if "hertz" in m else
                     "exact elliptic integrals (approximations err 1–5 %)")
     return out
+
+
+_FLOODED = ("oil_jet", "oil_bath")
+
+
+def _combined_load_model(scene: Scene, high_speed: bool) -> tuple:
+    """Dry Jones–Harris, or the film load model when the dry solution leaves contacts open in a
+    flooded bearing (see :func:`open_contacts`)."""
+    jh = "combined load: balls differ (Jones–Harris, seed 004 eqs 6–8)"
+    if scene.supply not in _FLOODED:
+        return "jones_harris", jh + f"; {scene.supply}: contacts outside the load zone taken as starved (no film load)"
+    n_open = open_contacts(scene, high_speed)
+    if n_open == 0:
+        return "jones_harris", jh + "; every contact loaded in the dry solution (the films change the power by 0.2 % typically, at most 6 %)"
+    return ("film", f"combined load: the dry solution leaves {n_open} of {scene.bearing.Z} balls with an open contact "
+                    f"in a flooded bearing ({scene.supply}); their films carry load and rolling loss (seed 004 "
+                    "§5.3.5, Fig. 19), so the films enter each contact law (Jones–Harris with NVM films)")
+
+
+def open_contacts(scene: Scene, high_speed: bool) -> int:
+    r"""Number of balls with an open contact (Q = 0 at the inner or the outer race) in the dry
+    Jones–Harris solution of a scene (high-speed form when ``high_speed``).
+
+    The criterion of :func:`choose_models` for the film load model: in a flooded bearing a ball
+    that the dry contact law lifts off a race still rolls on a film that carries load and a
+    hydrodynamic rolling force nearly independent of the gap (IVR: F_R ∝ η u R_x (R_x/h)^(1/6);
+    seed 004 §5.3.5, Fig. 19), which the dry law sets to zero.  On the seed 004 7210 (Fa 225–675 N,
+    Fr 25–750 N, 3200 and 8070 rpm, 30 and 70 °C prescribed) and a 6210 (Fr 250–4000 N) the film law
+    changes the power by 2–50 % (median 19 %) wherever the dry solution opens a contact and by 0.2 %
+    (median; at most 6 %, next to a ball about to lift off) where it opens none
+    (``validation/film_criterion.py``, report ``film_criterion.md``).  The dry solution is
+    cached and reused by :func:`scene_load`.
+
+    >>> import thermobear as tb
+    >>> sc = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
+    >>> open_contacts(sc.with_(Fr=150.0), True), open_contacts(sc.with_(Fr=750.0, n_rpm=4800.0), True) > 0
+    (0, True)
+    """
+    ld = _dry_load(scene, high_speed)
+    Qi, Qo = np.asarray(ld.Q_i, float), np.asarray(ld.Q_o, float)
+    return int(np.count_nonzero((Qi <= 0.0) | (Qo <= 0.0)))
+
+
+def _dry_load(scene: Scene, high_speed: bool) -> LoadDistribution:
+    stiff = scene.models.get("stiffness", "nominal")
+    M = None if scene.M is None else float(scene.M)
+    if high_speed:
+        return _dry_load_cached(scene.bearing, float(scene.Fa), float(scene.Fr), M, stiff, float(scene.n_rpm))
+    return _dry_load_cached(scene.bearing, float(scene.Fa), float(scene.Fr), M, stiff, None)
+
+
+@__import__("functools").lru_cache(maxsize=128)
+def _dry_load_cached(brg, Fa, Fr, M, stiffness, n_rpm):
+    """Dry Jones–Harris load distribution (high-speed form when ``n_rpm`` is given), cached: the
+    model choice and the load step of one operating point share it.  Its arrays are read-only."""
+    if n_rpm is None:
+        ld = load_distribution(brg, Fa=Fa, Fr=Fr, M=M, stiffness=stiffness)
+    else:
+        from .loads_highspeed import load_distribution_high_speed
+        ld = load_distribution_high_speed(brg, Fa=Fa, Fr=Fr, M=M, n_rpm=n_rpm, stiffness=stiffness)
+    for v in vars(ld).values():
+        if isinstance(v, np.ndarray):
+            v.setflags(write=False)
+    return ld
 
 
 def _closed_form_axial(b, Fa) -> LoadDistribution:
@@ -179,12 +251,7 @@ def scene_load(scene: Scene, models: dict | None = None, T_film_C=None) -> LoadD
                                       stiffness=scene.models.get("stiffness", "nominal"))
     if models["load_model"][0] == "closed_form":
         return _closed_form_axial(scene.bearing, scene.Fa)
-    stiff = scene.models.get("stiffness", "nominal")
-    if models["high_speed"][0] == "yes":
-        from .loads_highspeed import load_distribution_high_speed
-        return load_distribution_high_speed(scene.bearing, Fa=scene.Fa, Fr=scene.Fr, M=scene.M,
-                                            n_rpm=scene.n_rpm, stiffness=stiff)
-    return load_distribution(scene.bearing, Fa=scene.Fa, Fr=scene.Fr, M=scene.M, stiffness=stiff)
+    return _dry_load(scene, models["high_speed"][0] == "yes")
 
 
 def scene_contacts(scene: Scene, models: dict | None = None, load: LoadDistribution | None = None,

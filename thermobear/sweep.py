@@ -14,7 +14,8 @@ Two kinds of points, as :func:`thermobear.solver.choose_models` decides:
   :func:`thermobear.solver.scene_losses` call with the group's single load
   distribution (the loads do not depend on speed or temperature in the
   low-speed model).  Scenes on the SKF global model (``models.losses = "skf"``)
-  are evaluated point by point.
+  or on the film load model (loads depend on the film temperature) are
+  evaluated point by point.
 * **coupled** (no ``T_C``): the thermal fixed point
   (:func:`thermobear.solver.steady_state`) per point, run in local processes
   (:class:`concurrent.futures.ProcessPoolExecutor`, ``processes`` workers,
@@ -118,7 +119,8 @@ def _prescribed(scenes, points, idx, rows):
         sc = scenes[members[0]]
         n = np.array([scenes[i].n_rpm for i in members], float)
         T = np.array([scenes[i].T_C for i in members], float)
-        if models.get("losses", ("local",))[0] != "local":         # SKF global model: per point
+        if models.get("losses", ("local",))[0] != "local" or models["load_model"][0] == "film":
+            # SKF global model, or loads that depend on the film temperature: per point
             rs = [solve(scenes[i]) for i in members]
             P = np.array([x.P_W for x in rs])
             M = np.array([x.torque_Nm for x in rs])
