@@ -76,7 +76,7 @@ def choose_models(scene: Scene) -> dict:
                              "the nominal stiffness")
         out["load_model"] = (m["load_model"], "chosen in the scene" if m["load_model"] != "film" else
                              "chosen in the scene: Jones–Harris with the NVM films in each contact law "
-                             "(thermobear.loads_film, or thermobear.loads_highspeed with film=...; prototype)")
+                             "(thermobear.loads_film, or thermobear.loads_highspeed with film=...)")
     elif symmetric:
         out["load_model"] = ("closed_form", "pure axial load, tilt held: all balls equal (exact closed form)")
     else:

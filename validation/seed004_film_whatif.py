@@ -3,8 +3,8 @@
 Seed 004 (Darul et al. 2024, §5.3.5, §6, Figs 13, 18, 19): on the oil-jet 7210 rig at 4800 rpm, Fa 450 N,
 the block radial load 50 → 1500 N (25 → 750 N per bearing) barely changes the measured power (< 10 %);
 its model keeps low-loaded balls in IVR with a finite rolling force.  thermobear's dry, rigid-ring load
-distribution opens the contacts outside the load zone, and the power falls (tests/test_fixed_temperatures.py,
-xfail).  Here the losses are computed twice at each operating point, with the ball loads of
+distribution opens the contacts outside the load zone, and the power falls (7-13 %; since then
+choose_models takes the film law where the dry solution opens a contact: validation/film_criterion.py).  Here the losses are computed twice at each operating point, with the ball loads of
 
 (a) the dry low-speed Jones–Harris distribution (thermobear.loads.load_distribution), and
 (b) the distribution with the NVM central film of both contacts in each ball's contact law
