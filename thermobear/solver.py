@@ -652,8 +652,10 @@ def _newton_coupled(scene, models, net, roles, cs1, tol_K, T_limit_K, maxiter=30
     race — and oil), P = (inner contacts, outer contacts, drag) [W] and S their split onto the nodes
     (½ ball, ½ race; drag to the oil).  P and ∂P/∂x come from one vectorised loss evaluation at x
     and x + h e_k (k = 1..3, ``cs1`` holds the contacts four times); ∂A/∂T·T from forward differences
-    of the temperature-dependent conductances (convection with fluid properties, radiation), so the
-    iteration converges quadratically.  Stops when the Newton step max |ΔT_f| ≤ tol_K (the step is
+    of the temperature-dependent conductances (convection with fluid properties, radiation),
+    re-evaluated while the steps exceed 1 K and then kept (a small, slowly varying part of the
+    Jacobian: the loss slopes and the conductances themselves are fresh at every iterate), so the
+    iteration converges quadratically to superlinearly (5–7 iterations from ambient).  Stops when the Newton step max |ΔT_f| ≤ tol_K (the step is
     taken: the remaining error is of the order of the step squared).  The loop gain is the largest
     real eigenvalue of dG/dx = C A_ff⁻¹ S ∂P/∂x (the losses through the network at the current
     conductances, as :func:`thermobear.coupling.loop_gain` measures it).  Returns (x, T_nodes, iters,
@@ -665,10 +667,14 @@ def _newton_coupled(scene, models, net, roles, cs1, tol_K, T_limit_K, maxiter=30
     T = net.initial_T_K()
     Tb = T[fixed]
     history = []
+    dG, step_prev = None, np.inf
     for it in range(1, maxiter + 1):
         x = C @ T[free]
         Pm, dP = _losses_and_slopes(scene, models, cs1, x, h)
-        G, dG = plan.dconductances(T, nodes=plan.free)      # only ∂/∂T_free enters Jr below
+        if dG is None or step_prev > 1.0:
+            G, dG = plan.dconductances(T, nodes=plan.free)  # only ∂/∂T_free enters Jr below
+        else:                                           # small steps: the slopes of the last iterate
+            G = plan.conductances(T)
         Aff, Afb = plan.blocks(G)
         if not isinstance(Aff, np.ndarray):
             Aff, Afb = Aff.toarray(), Afb.toarray()
@@ -682,7 +688,7 @@ def _newton_coupled(scene, models, net, roles, cs1, tol_K, T_limit_K, maxiter=30
             return None
         if not (np.all(np.isfinite(dT)) and np.isfinite(gain)):
             return None
-        step = float(np.max(np.abs(dT)))
+        step = step_prev = float(np.max(np.abs(dT)))
         if step > 50.0:
             dT *= 50.0 / step
         dx = C @ dT
