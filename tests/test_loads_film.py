@@ -149,3 +149,112 @@ def test_bad_input_and_impossible_loads():
         film_load_distribution(B7210, 450.0, 100.0, u_i=np.ones(4), u_o=U, eta=0.02, alpha_p=2e-8)
     with pytest.raises(NoEquilibrium):
         film_load_distribution(B7210, 0.0, 100.0, **OIL)
+
+
+# --- the fast path: analytic derivatives of the NVM film and the per-ball inversion -----------------------
+
+# contacts spanning the four Moes regimes (IVR, IVE, PVR, EHL) and the blends between them:
+# loads 1e-6–1e4 N, speeds 0.01–50 m/s, thin and viscous oils, α_p = 0 (iso-viscous) to 3e-8 1/Pa,
+# narrow and wide ellipses (D = Rx/Ry 0.02–1)
+_GRID = [dict(Q=Q, u=u, eta=eta, ap=ap, Rx=Rx, Ry=Ry)
+         for Q in (1e-6, 1e-3, 1.0, 100.0, 1e4) for u in (0.01, 1.0, 50.0)
+         for eta, ap in ((0.002, 1e-8), (0.0456, 2.2e-8), (0.5, 3e-8), (0.02, 0.0))
+         for Rx, Ry in ((4.23e-3, 0.1495), (6.5e-3, 6.6e-3), (3e-3, 0.02))]
+
+
+def _ln_h_public(Q, Rx, Ry, u, eta, ap):
+    return np.log(film_thickness_nvm(Q, Rx, Ry, u, eta, ap, B7210.E_prime))
+
+
+def test_nvm_log_derivatives_match_central_differences():
+    """∂ln h/∂ln Q, ∂ln h/∂ln R_x (R_y fixed: D moves too) and ∂ln h/∂ln u of the NVM central film, from
+    the chain rule through the blend (thermobear.loads_film._NVMFixed), against central differences of
+    the public film_thickness_nvm (step 1e-4 in the logs: truncation ~1e-8 × the third derivative)."""
+    from thermobear.loads_film import _NVMFixed
+    c = {k: np.array([g[k] for g in _GRID]) for k in _GRID[0]}
+    nvm = _NVMFixed(c["Rx"], c["Ry"], c["u"], c["eta"], c["ap"], B7210.E_prime)
+    ln_h, H_Q, shares = nvm.ln_h(c["Q"])
+    H_Rx, H_u = nvm.grad(shares)
+    # the same numbers as the public function, bit for bit
+    assert np.array_equal(np.exp(ln_h), film_thickness_nvm(c["Q"], c["Rx"], c["Ry"], c["u"], c["eta"], c["ap"],
+                                                           B7210.E_prime))
+    e = np.exp(1e-4)
+
+    def fd(**kw):
+        up = {**c, **{k: c[k] * e for k in kw}}
+        dn = {**c, **{k: c[k] / e for k in kw}}
+        return (_ln_h_public(up["Q"], up["Rx"], up["Ry"], up["u"], up["eta"], up["ap"])
+                - _ln_h_public(dn["Q"], dn["Rx"], dn["Ry"], dn["u"], dn["eta"], dn["ap"])) / 2e-4
+
+    for got, want in ((H_Q, fd(Q=1)), (H_Rx, fd(Rx=1)), (H_u, fd(u=1))):
+        assert np.allclose(got, want, rtol=1e-6, atol=1e-8)
+    # the grid does reach every regime, and the slope in ln Q spans the asymptotes' −2 … 0
+    assert H_Q.min() < -1.9 and H_Q.max() > -0.02
+    assert np.all(H_Q < 0)                         # h falls with the load everywhere on the grid
+
+
+@pytest.mark.parametrize("stiffness", ["nominal", "per_ball"])
+def test_law_alpha_derivative_matches_central_difference(stiffness):
+    """∂G/∂α at fixed Q of the low-speed law (films through R_x(α); K_n(α) with per_ball) and of the
+    high-speed law (R_x and u through 1 ∓ γ'cos α), against central differences of the public functions."""
+    from thermobear.loads_film import _Film, _invert
+    from thermobear.loads_highspeed import _FilmLaw
+    al = np.linspace(0.3, 0.9, 7)[None, :]
+    Q = np.array([[0.01, 0.3, 2.0, 15.0, 120.0, 800.0, 3000.0]])
+    law = _Film(B7210, np.full((1, 7), U), np.full((1, 7), 1.3 * U), np.array([[0.0221]]), np.array([[2e-8]]),
+                stiffness)
+    s = law.parts(Q, al)
+    s = s[0] - s[1] - s[2]
+    at = law.at(al)
+    Qn, d_el, h, GQ, Ga, _, it, rel = _invert(at, s, al, Q * 1.7)
+    assert np.allclose(Qn, Q, rtol=1e-12) and rel < 1e-13
+    eps = 1e-6
+    Gp = law.parts(Q, al + eps)
+    Gm = law.parts(Q, al - eps)
+    fd = ((Gp[0] - Gp[1] - Gp[2]) - (Gm[0] - Gm[1] - Gm[2])) / (2 * eps)
+    assert np.allclose(Ga, fd, rtol=1e-6, atol=1e-9 * np.abs(fd).max())
+    # dG/d ln Q at the solution against a central difference in ln Q
+    Gq = [law.parts(Q * f, al) for f in (np.exp(1e-5), np.exp(-1e-5))]
+    fdq = ((Gq[0][0] - Gq[0][1] - Gq[0][2]) - (Gq[1][0] - Gq[1][1] - Gq[1][2])) / 2e-5
+    assert np.allclose(GQ, fdq, rtol=1e-6)
+    # high-speed form: one film per contact, both contacts on a last axis
+    K = np.array([B7210.K_i(B7210.alpha0), B7210.K_o(B7210.alpha0)])
+    v = np.array([[[180.0, 150.0]]])                 # orbital speed factors |ω − ω_c|, ω_c [rad/s]
+    hs = _FilmLaw(B7210, np.array([[[0.0221]]]), np.array([[[2e-8]]])).bind(K, v)
+    a2 = np.stack([al, al - 0.05], axis=-1)
+    Q2 = np.stack([Q, 1.2 * Q], axis=-1)
+    gp, sg = B7210.D / B7210.dm, np.array([-1.0, 1.0])
+
+    def G_hs(a):
+        fac = 1.0 + sg * gp * np.cos(a)
+        h = film_thickness_nvm(Q2, 0.5 * B7210.D * fac, np.array([B7210.Ry_i, B7210.Ry_o]),
+                               v * 0.5 * B7210.dm * fac, 0.0221, 2e-8, B7210.E_prime)
+        return (Q2 / K) ** (2 / 3) - h
+
+    s2 = G_hs(a2)
+    Qn2, _, _, _, Ga2, _, _, rel2 = _invert(hs.at(a2), s2, a2, Q2 * 0.3)
+    assert np.allclose(Qn2, Q2, rtol=1e-12) and rel2 < 1e-13
+    fd2 = (G_hs(a2 + eps) - G_hs(a2 - eps)) / (2 * eps)
+    assert np.allclose(Ga2, fd2, rtol=1e-6, atol=1e-9 * np.abs(fd2).max())
+
+
+def test_inversion_from_any_warm_start_and_out_of_range():
+    """The per-ball inversion converges from warm starts 1e-250 N to 1e16 N to the same load (gaps and
+    heavy contacts alike), and says so when no load in [e^-600, e^40] N gives the approach."""
+    from thermobear.errors import NoConvergence
+    from thermobear.loads_film import _Film, _invert
+    law = _Film(B7210, np.full((1, 5), U), np.full((1, 5), U), np.array([[0.0221]]), np.array([[2e-8]]),
+                "nominal")
+    al = np.full((1, 5), B7210.alpha0)
+    s = np.array([[-3e-6, -5e-7, 0.0, 2e-6, 3e-5]])      # gaps, touching, loaded [m]
+    ref = None
+    for Q0 in (1e-250, 1e-6, 1.0, 1e4, 1e16):
+        Q, d_el, h, GQ, Ga, _, it, rel = _invert(law.at(al), s, al, np.full((1, 5), Q0))
+        assert rel < 1e-13 and np.all(GQ > 0) and it < 40
+        assert np.allclose(d_el - h.sum(-1), s, rtol=0, atol=1e-13 * np.abs(s).max())
+        ref = Q if ref is None else ref
+        assert np.allclose(Q, ref, rtol=1e-12)
+    with pytest.raises(NoConvergence, match="no load in"):          # 1000 km of approach: Q > e^40 N
+        _invert(law.at(al), np.array([[1e6, 0.0, 0.0, 0.0, 0.0]]), al, np.ones((1, 5)))
+    with pytest.raises(NoConvergence, match="no load in"):          # a gap wider than the largest film
+        _invert(law.at(al), np.array([[-1e305, 0.0, 0.0, 0.0, 0.0]]), al, np.ones((1, 5)))

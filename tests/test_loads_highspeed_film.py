@@ -228,3 +228,20 @@ def test_bad_film_input_raises_input_error(kw, field):
     with pytest.raises(InputError) as e:
         load_distribution_high_speed(B, 450.0, np.array([25.0, 750.0]), **args)
     assert e.value.field == field
+
+
+@pytest.mark.parametrize("Fr, n", [(25.0, 3200.0), (750.0, 4800.0), (325.0, 8070.0)])
+def test_warm_starts_and_refresh_skip_do_not_change_the_solution(Fr, n, monkeypatch):
+    # the film stage's shortcuts — inversions warm-started from the frozen iterate carried to first order,
+    # and the re-evaluation skipped while the cage-speed lag is small against the residual — only change
+    # the path: without them the same equilibrium comes out (to the Newton tolerance)
+    import thermobear.loads_highspeed as lh
+    fast = load_distribution_high_speed_full(B, 450.0, Fr, n_rpm=n, film=OIL50)
+    monkeypatch.setattr(lh, "_LAG_SKIP", 0.0)
+    monkeypatch.setattr(lh, "_carry", lambda Q, GQ, dG: Q)
+    slow = load_distribution_high_speed_full(B, 450.0, Fr, n_rpm=n, film=OIL50)
+    for k in ("Q_i", "Q_o"):
+        a, b = getattr(fast[0], k), getattr(slow[0], k)
+        assert np.max(np.abs(a / b - 1.0)) < 1e-9, k
+    assert np.max(np.abs(fast[0].alpha_i - slow[0].alpha_i)) < 1e-10
+    assert fast[1].film_law_residual < 1e-12 and fast[1].film_cage_lag < 1e-12

@@ -42,12 +42,15 @@ Jacobian of the film law (∂Q/∂s = 1/G_Q and ∂Q/∂α = −G_α/G_Q, G(Q, �
 side of the law; not symmetric once ∂Q/∂α ≠ 0) and a backtracking line search, started
 from the dry solution of :func:`thermobear.loads.load_distribution`.  At every iterate
 the law is inverted for each ball by a vectorised, bracketed (safeguarded) Newton
-iteration in x = ln Q (a Newton step below the tolerance ends it, also when x has just become an
-end of the bracket).  Derivatives: dδ_el/d ln Q = (2/3) δ_el analytically; the film
-derivatives d(h_i + h_o)/d ln Q and ∂G/∂α by central differences (steps 1e-5 in ln Q,
-1e-6 rad in α) of the public NVM function.  The geometric approach is formed without
-cancellation by :mod:`thermobear.loads`' geometry (signed: a gap is s < 0, which the dry
-law clips and the film law needs); the load checks are that module's too.
+iteration in x = ln Q on a logarithmic form of the law that is nearly linear in x
+(:func:`_invert`), warm-started from the loads of the last iterate carried to first
+order.  All derivatives are analytic: dδ_el/d ln Q = (2/3) δ_el, and the films'
+d ln h/d ln Q, d ln h/d ln R_x by the chain rule through the NVM blend (:class:`_NVMFixed`,
+checked against central differences in tests/test_loads_film.py); only ∂ ln K_n/∂α with
+``stiffness="per_ball"`` is a central difference (1e-6 rad).  The geometric approach is
+formed without cancellation by :mod:`thermobear.loads`' geometry (signed: a gap is
+s < 0, which the dry law clips and the film law needs); the load checks are that
+module's too.
 
 Approximations (prototype): one viscosity and one α_p for every contact (one
 temperature), entrainment speeds given (e.g. at the nominal angle), low-speed form (the
@@ -62,7 +65,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from .errors import InputError, NoConvergence, NoEquilibrium
-from .film import film_thickness_nvm
+from .film import _EXP_MAX as _NVM_EXP_MAX
+from .film import _TINY as _NVM_TINY
+from .film import _ln_asymptote_consts, film_thickness_nvm
 from .geometry import BallBearing
 from .loads import STIFFNESS_MODES, LoadDistribution, _backtrack, _batch_loads, _geometry, load_distribution
 
@@ -70,10 +75,12 @@ __all__ = ["FilmLoadDistribution", "film_load_distribution", "film_contact_law"]
 
 _TOL = 1e-12          # relative equilibrium residual at which Newton stops
 _MAXIT = 60
-_EPS_LNQ = 1e-5       # central-difference step in ln Q [-]
-_EPS_ALPHA = 1e-6     # central-difference step in the contact angle [rad]
+_EPS_ALPHA = 1e-6     # central-difference step of K_n(α) (stiffness = "per_ball") [rad]
 _LNQ_MIN, _LNQ_MAX = -600.0, 40.0      # bracket limits of ln(Q / 1 N)
-_XTOL = 1e-13         # convergence of the per-ball inversion in ln Q (relative load)
+_Q_MIN, _Q_MAX = np.exp(_LNQ_MIN + 1.0), np.exp(_LNQ_MAX - 1.0)   # warm starts clipped to these [N]
+_CAP0 = 16.0          # largest first Newton step in ln Q while the bracket is one-sided (doubling)
+_XTOL = 1e-13         # convergence of the per-ball inversion in ln Q (relative load): bracket, bisection
+_XNEWTON = 1e-8       # a Newton step in ln Q this small is the last one (error ~ step^2 ~ 1e-16)
 
 
 @dataclass(frozen=True)
@@ -99,6 +106,142 @@ class FilmLoadDistribution(LoadDistribution):
     inversion_iterations: int = 0
 
 
+class _NVMFixed:
+    r"""NVM central film at fixed R_x, R_y, u, η, α_p, E' and variable load, with its logarithmic derivatives.
+
+    The load-independent groups are formed once, U2 = 2ηu/(E'R_x), ln L = ln(α_p E') + ¼ ln U2, D = R_x/R_y
+    and the D-parts of the asymptotes (:func:`thermobear.film._ln_asymptote_consts`); per load
+    ln M = ln(Q/(E'R_x²)) − ¾ ln U2 and ln h = ln H(M, L, D) + ln R_x + ½ ln U2, with the operations of
+    :func:`thermobear.film.film_thickness_nvm` (the same bits).  The NVM (1994) blend (PHYSICS.md §5.2)
+
+        ln H = ln(e^{s a} + e^{s b}) / s,   a = ⅔ ln(H_RI^1.5 + H_EI'^1.5),   H_EI' = (H_EI^-4 + h00^-4)^-¼,
+        b = −⅛ ln(H_RP^-8 + H_EP^-8),       s = 1.5 (1 + e^{−1.2 r}),   r = H_EI / H_RI,
+
+    is differentiated by the chain rule.  With the shares w_a = e^{s(a − ln H)}, w_b = e^{s(b − ln H)},
+    p = H_RI^1.5 / (H_RI^1.5 + H_EI'^1.5), q = H_EI^-4 / (H_EI^-4 + h00^-4), t = H_RP^-8 / (H_RP^-8 + H_EP^-8):
+
+        ∂ln H = w_a [p ∂ln H_RI + (1 − p)(q ∂ln H_EI + (1 − q) ∂ln h00)] + w_b [t ∂ln H_RP + (1 − t) ∂ln H_EP]
+                + [w_a (a − ln H) + w_b (b − ln H)] / s · (−1.8 r e^{−1.2 r}) ∂ln r,
+
+    ∂(ln H_RI, ln H_EI, ln H_RP, ln H_EP, ln h00) = (−2, −2/15, 0, −1/12, 0) per ln M, (0, 0, ⅔, ¾, 0) per
+    ln L, (c'_RI, c'_EI, c'_RP, c'_EP, −1) per ln D (:func:`_ln_asymptote_dconsts`).  In the physical
+    variables (R_y, η, α_p, E' fixed; H_M = ∂ln H/∂ln M etc.):
+
+        ∂ln h/∂ln Q = H_M,   ∂ln h/∂ln u = −¾ H_M + ¼ H_L + ½,   ∂ln h/∂ln R_x = −5/4 H_M − ¼ H_L + H_D + ½.
+
+    Checked against central differences of :func:`~thermobear.film.film_thickness_nvm` in all four
+    regimes (tests/test_loads_film.py).
+
+    Examples
+    --------
+    7210 inner contact, 8.63 m/s, 22 mPa s: at 1 µN the rigid iso-viscous limit h ∝ (ηu)²/Q²
+    (Moes H_RI ∝ M^-2), at 1 kN the EHL slopes (h ∝ Q^-0.067 u^0.72, cf. Hamrock–Dowson −0.067, 0.67).
+
+    >>> nvm = _NVMFixed(4.23e-3, 0.1495, 8.63, 0.0221, 2e-8, 2.3e11)
+    >>> for Q in (1e-6, 1e3):
+    ...     ln_h, H_Q, shares = nvm.ln_h(Q)
+    ...     print(round(float(H_Q), 3), round(float(nvm.grad(shares)[1]), 2))
+    -2.0 2.0
+    -0.066 0.72
+    """
+
+    def __init__(self, Rx, Ry, u, eta, alpha_p, Ep):
+        U2 = 2.0 * eta * u / (Ep * Rx)
+        self.ERx2 = Ep * Rx ** 2
+        self.lnU2 = np.log(U2)
+        self.lnL = np.log(np.clip(alpha_p * Ep, _NVM_TINY, None)) + 0.25 * self.lnU2
+        self.D = Rx / Ry
+        self.c = _ln_asymptote_consts(self.D)
+        self.ln_RP = self.c[2] + (2.0 / 3.0) * self.lnL                     # H_RP does not depend on Q
+        self.lnRx = np.log(Rx)
+
+    def ln_h(self, Q):
+        """(ln(h_c / 1 m), ∂ln h_c/∂ln Q, shares) at loads Q [N]; the blend shares are for :meth:`grad`."""
+        c_RI, c_EI, c_RP, c_EP, ln_h00 = self.c
+        lnM = np.log(Q / self.ERx2) - 0.75 * self.lnU2
+        ln_RI, ln_EI = c_RI - 2.0 * lnM, c_EI - (2.0 / 15.0) * lnM          # film._ln_asymptotes_from
+        ln_RP, ln_EP = self.ln_RP, c_EP - lnM / 12.0 + 0.75 * self.lnL
+        A4 = np.logaddexp(-4.0 * ln_EI, -4.0 * ln_h00)                       # film._ln_branches
+        A15 = np.logaddexp(1.5 * ln_RI, 1.5 * (-0.25 * A4))
+        a = (2.0 / 3.0) * A15
+        A8 = np.logaddexp(-8.0 * ln_RP, -8.0 * ln_EP)
+        b = -0.125 * A8
+        r_ln = ln_EI - ln_RI
+        r = np.exp(np.minimum(np.maximum(r_ln, -_NVM_EXP_MAX), _NVM_EXP_MAX))
+        e12 = np.exp(-1.2 * r)
+        s = 1.5 * (1.0 + e12)
+        As = np.logaddexp(s * a, s * b)
+        ln_H = As / s
+        # derivative: the shares of the blends
+        wa, wb = np.exp(s * a - As), np.exp(s * b - As)
+        p = np.exp(1.5 * ln_RI - A15)
+        q = np.exp(-4.0 * ln_EI - A4)
+        t = np.exp(-8.0 * ln_RP - A8)
+        # ∂s/∂ln r = −1.8 r e^{−1.2 r} (where r is clipped, |ln r| ≥ 700, this is 0 to 1e-300 anyway)
+        H_s = (wa * (a - ln_H) + wb * (b - ln_H)) / s * (-1.8 * r * e12)
+        H_M = wa * (-2.0 * p - (2.0 / 15.0) * (1.0 - p) * q) - wb * (1.0 - t) / 12.0 + (28.0 / 15.0) * H_s
+        return ln_H + self.lnRx + 0.5 * self.lnU2, H_M, (wa, wb, p, q, t, H_s, H_M)
+
+    def grad(self, shares):
+        """(∂ln h/∂ln R_x, ∂ln h/∂ln u) [-] from the ``shares`` an :meth:`ln_h` call returned."""
+        wa, wb, p, q, t, H_s, H_M = shares
+        H_L = wb * ((2.0 / 3.0) * t + 0.75 * (1.0 - t))
+        dRI, dEI, dRP, dEP = _ln_asymptote_dconsts(self.D)
+        H_D = (wa * (p * dRI + (1.0 - p) * (q * dEI - (1.0 - q))) + wb * (t * dRP + (1.0 - t) * dEP)
+               + H_s * (dEI - dRI))
+        return -1.25 * H_M - 0.25 * H_L + H_D + 0.5, -0.75 * H_M + 0.25 * H_L + 0.5
+
+
+def _ln_asymptote_dconsts(D):
+    """d c_k / d ln D of the D-parts of the NVM asymptotes (:func:`thermobear.film._ln_asymptote_consts`),
+    (c'_RI, c'_EI, c'_RP, c'_EP):  c_RI = ln 145 − (15/7) ln(1 + 0.796 D^(14/15)) − ln D,
+    c_EI = ln 3.18 − (14/25) e − (ln D)/15,  c_RP = ln 1.29 − ⅔ ln(1 + 0.691 D),  c_EP = ln 1.48 − (7/20) e −
+    (ln D)/24,  e = ln(1 + 0.006 ln D + 0.63 D^(4/7))."""
+    D47, D1415 = D ** (4.0 / 7.0), D ** (14.0 / 15.0)
+    de = (0.006 + 0.63 * (4.0 / 7.0) * D47) / (1.0 + 0.006 * np.log(D) + 0.63 * D47)
+    return (-(15.0 / 7.0) * 0.796 * (14.0 / 15.0) * D1415 / (1.0 + 0.796 * D1415) - 1.0,
+            -(14.0 / 25.0) * de - 1.0 / 15.0,
+            -(2.0 / 3.0) * 0.691 * D / (1.0 + 0.691 * D),
+            -(7.0 / 20.0) * de - 1.0 / 24.0)
+
+
+class _FilmAt:
+    r"""The film contact law at fixed contact angles as a function of x = ln(Q / 1 N):
+
+        G(x) = δ_el − H,   δ_el = (e^x / K)^(2/3),   H = Σ_c h_c(e^x),   dG/dx = ⅔ δ_el − Σ_c h_c ∂ln h_c/∂ln Q,
+        ∂G/∂α = −⅔ δ_el ∂ln K/∂α − Σ_c h_c (∂ln h_c/∂ln R_x ∂ln R_x,c/∂α + ∂ln h_c/∂ln u ∂ln u_c/∂α).
+
+    ``pair``: the two films of a ball lie on a last axis of the :class:`_NVMFixed` arrays and are summed
+    (low-speed form); otherwise one film per load (one contact per element, high-speed form).
+    ``dlnRx``, ``dlnu``: ∂ln R_x,c/∂α, ∂ln u_c/∂α; ``dlnK``: ∂ln K/∂α (None: K does not vary)."""
+
+    def __init__(self, K, nvm, pair, dlnRx, dlnu, dlnK=None):
+        self.K, self.lnK, self.nvm, self.pair = K, np.log(K), nvm, pair
+        self.dlnRx, self.dlnu, self.dlnK = dlnRx, dlnu, dlnK
+
+    def ln_terms(self, x):
+        """(ln H, ∂ln H/∂x, ln h_c, ∂ln h_c/∂ln Q, shares) at x = ln Q (h_c per contact on the last axis;
+        the shares of the NVM blend for :meth:`G_alpha`)."""
+        Q = np.exp(x)
+        if not self.pair:
+            ln_h, H_M, sh = self.nvm.ln_h(Q)
+            return ln_h, H_M, ln_h, H_M, sh
+        ln_h, H_M, sh = self.nvm.ln_h(Q[..., None])
+        lnH = np.logaddexp(ln_h[..., 0], ln_h[..., 1])
+        w = np.exp(ln_h - lnH[..., None])
+        return lnH, w[..., 0] * H_M[..., 0] + w[..., 1] * H_M[..., 1], ln_h, H_M, sh
+
+    def G_alpha(self, d_el, h, shares):
+        """(∂G/∂α at fixed Q [m/rad], h ∂ln h/∂ln u [m] per contact) at a point evaluated by
+        :meth:`ln_terms` (δ_el, h [m] and the ``shares`` of that point)."""
+        g_Rx, g_u = self.nvm.grad(shares)
+        ha = h * (g_Rx * self.dlnRx + g_u * self.dlnu)
+        Ga = -(ha[..., 0] + ha[..., 1]) if self.pair else -ha
+        if self.dlnK is not None:
+            Ga = Ga - (2.0 / 3.0) * d_el * self.dlnK
+        return Ga, h * g_u
+
+
 class _Film:
     """Film-law context: bearing, film inputs broadcast to (nb, Z), stiffness mode."""
 
@@ -106,13 +249,30 @@ class _Film:
         self.brg, self.u_i, self.u_o, self.eta, self.ap, self.stiffness = brg, u_i, u_o, eta, alpha_p, stiffness
         self.Ep = brg.E_prime
         self.Kn0 = brg.Kn()
+        self.Ry = np.array([brg.Ry_i, brg.Ry_o])
+        self.u = np.stack(np.broadcast_arrays(u_i, u_o), axis=-1)                 # (nb, Z, 2)
+        self.eta2, self.ap2 = eta[..., None], alpha_p[..., None]
 
     def rows(self, rows):
         """The same law for a subset of the load cases (rows of the (nb, Z) inputs)."""
         return _Film(self.brg, self.u_i[rows], self.u_o[rows], self.eta[rows], self.ap[rows], self.stiffness)
 
+    def at(self, alpha):
+        r"""The law at contact angles α [rad], both films on a last axis (:class:`_FilmAt`):
+        R_x,c = (D/2)(1 ∓ γ'cos α), ∂ln R_x,c/∂α = ±γ' sin α / (1 ∓ γ'cos α), u fixed; with
+        ``stiffness="per_ball"`` ∂ln K_n/∂α by a central difference (1e-6 rad) of K_n(α)."""
+        b = self.brg
+        Rx = np.stack([b.Rx_i(alpha), b.Rx_o(alpha)], axis=-1)
+        dlnRx = (b.D / b.dm) * np.sin(alpha)[..., None] * np.array([0.5, -0.5]) * b.D / Rx
+        if self.stiffness == "per_ball":
+            Kn = b.Kn(alpha)
+            dlnK = (np.log(b.Kn(alpha + _EPS_ALPHA)) - np.log(b.Kn(alpha - _EPS_ALPHA))) / (2.0 * _EPS_ALPHA)
+        else:
+            Kn, dlnK = self.Kn0, None
+        return _FilmAt(Kn, _NVMFixed(Rx, self.Ry, self.u, self.eta2, self.ap2, self.Ep), True, dlnRx, 0.0, dlnK)
+
     def parts(self, Q, alpha):
-        """δ_el, h_i, h_o at loads Q > 0 and contact angles α, shapes (nb, Z) [m]."""
+        """δ_el, h_i, h_o at loads Q > 0 and contact angles α, shapes (nb, Z) [m] (public NVM function)."""
         b = self.brg
         Kn = b.Kn(alpha) if self.stiffness == "per_ball" else self.Kn0
         d_el = (Q / Kn) ** (2.0 / 3.0)
@@ -120,90 +280,121 @@ class _Film:
         h_o = np.asarray(film_thickness_nvm(Q, b.Rx_o(alpha), b.Ry_o, self.u_o, self.eta, self.ap, self.Ep))
         return d_el, h_i, h_o
 
-    def G(self, Q, alpha):
-        d_el, h_i, h_o = self.parts(Q, alpha)
-        return d_el - h_i - h_o
 
-    def G_lnQ(self, Q, alpha, d_el):
-        """dG/d ln Q: (2/3) δ_el analytically, the films by a central difference in ln Q [m]."""
-        e = np.exp(_EPS_LNQ)
-        _, hip, hop = self.parts(Q * e, alpha)
-        _, him, hom = self.parts(Q / e, alpha)
-        return (2.0 / 3.0) * d_el - ((hip + hop) - (him + hom)) / (2.0 * _EPS_LNQ)
-
-    def G_alpha(self, Q, alpha):
-        """∂G/∂α at fixed Q by a central difference [m/rad]."""
-        return (self.G(Q, alpha + _EPS_ALPHA) - self.G(Q, alpha - _EPS_ALPHA)) / (2.0 * _EPS_ALPHA)
+def _carry(Q, G_lnQ, dG):
+    """Loads Q [N] carried to first order to a point where the law's right-hand side has to change by dG
+    [m] (G_lnQ = ∂G/∂ln Q [m] at Q): Q e^{dG / G_lnQ}, the exponent clipped to ±3 (a warm start only)."""
+    with np.errstate(all="ignore"):
+        d = dG / G_lnQ
+    return Q * np.exp(np.clip(np.where(np.isfinite(d), d, 0.0), -3.0, 3.0))
 
 
-def _invert(law: _Film, s, alpha, Q0):
-    """Solve G(Q, α) = s for Q > 0 per ball: bracketed Newton in x = ln Q (vectorised).
+def _invert(law: _FilmAt, s, alpha, Q0):
+    r"""Solve G(Q) = s for Q > 0 per element at fixed contact angles (vectorised, bracketed Newton in x = ln Q).
 
-    Returns (Q, δ_el, h_i, h_o, G_lnQ, iterations, relative law residual)."""
-    x = np.log(np.clip(Q0, np.exp(_LNQ_MIN + 1.0), np.exp(_LNQ_MAX - 1.0)))
-    lo = np.full(x.shape, np.nan)
-    hi = np.full(x.shape, np.nan)
-    d_el, h_i, h_o = law.parts(np.exp(x), alpha)
-    f = d_el - h_i - h_o - s
-    lo = np.where(f < 0, x, lo)
-    hi = np.where(f > 0, x, hi)
-    # expand the bracket: step in ln Q doubling from 1 until G − s changes sign
-    step = np.ones_like(x)
-    xe = x.copy()
-    for _ in range(12):
-        need_hi = np.isnan(hi) & ~(f == 0)
-        need_lo = np.isnan(lo) & ~(f == 0)
-        if not (need_hi.any() or need_lo.any()):
-            break
-        xe = np.where(need_hi, np.minimum(xe + step, _LNQ_MAX), np.where(need_lo, np.maximum(xe - step, _LNQ_MIN), xe))
-        fe = law.G(np.exp(xe), alpha) - s
-        hi = np.where(need_hi & (fe > 0), xe, hi)
-        lo = np.where(need_hi & (fe <= 0), xe, lo)
-        lo = np.where(need_lo & (fe < 0), xe, lo)
-        hi = np.where(need_lo & (fe >= 0), xe, hi)
-        step *= 2.0
-    if np.any((np.isnan(lo) | np.isnan(hi)) & (f != 0)):
-        bad = (np.isnan(lo) | np.isnan(hi)) & (f != 0)
-        k = np.unravel_index(int(np.argmax(bad)), bad.shape)
-        raise NoConvergence(
-            f"film contact law: no load in [e^{_LNQ_MIN:g}, e^{_LNQ_MAX:g}] N gives the approach s = {s[k]:.4g} m "
-            f"(ball {k[-1]}, alpha = {alpha[k]:.4g} rad)", iterations=0, residual=float(np.abs(f[k])))
-    lo = np.where(np.isnan(lo), x, lo)
-    hi = np.where(np.isnan(hi), x, hi)
-    done = f == 0
+    ``law``: the law at the angles (:class:`_FilmAt`); ``alpha`` names the angle in error messages;
+    Q0 the warm start [N].  Returns (Q, δ_el, h, dG/d ln Q, ∂G/∂α, h ∂ln h/∂ln u, iterations, relative law
+    residual), h and h ∂ln h/∂ln u per contact (last axis (inner, outer) when ``law.pair``).
+
+    Newton runs on a form of δ_el − H = s in logarithms that is nearly linear in x (δ_el ∝ e^{2x/3},
+    H ≈ ∝ e^{−k x}, k = 0–2), with the same root and sign as G − s:
+
+        s > 0:  F = ln δ_el − ln(s + H),      F' = ⅔ − H/(s + H) · d ln H/dx
+        s ≤ 0:  F = ln(δ_el − s) − ln H,      F' = ⅔ δ_el/(δ_el − s) − d ln H/dx
+
+    (both logarithms of sums of positive terms; F' ≥ ⅔ min(1, δ_el/(δ_el − s)) > 0 where H falls with Q).
+    Each evaluated point narrows a bracket [lo, hi] (sign of F).  Until both ends are known a Newton step
+    is capped at 16, 32, 64 … in ln Q (a step along −F by the cap where F' ≤ 0); once bracketed a step that
+    leaves it (or F' ≤ 0) is replaced by bisection.  A Newton step below 1e-13 max(1, |x|) ends it (also
+    when x has just become an end of the bracket), as does a bracket that narrow.  The state returned is
+    that of the last evaluation carried over the last step Δx (|Δx| ≤ 1e-13 max(1, |x|)) to first order,
+    ln h ← ln h + ∂ln h/∂ln Q Δx (error O(Δx²)); dG/d ln Q and ∂G/∂α are those of the last evaluation."""
+    x = np.log(np.minimum(np.maximum(Q0, _Q_MIN), _Q_MAX))
+    pos = s > 0
+    ln_s = np.log(np.abs(s), out=np.full(s.shape, -np.inf), where=s != 0)   # −inf at s = 0: T = ln δ_el
+    lo = np.full(x.shape, -np.inf)
+    hi = np.full(x.shape, np.inf)
+    cap = None
+    done = np.zeros(x.shape, bool)
     it = 0
     for it in range(1, 101):
-        Q = np.exp(x)
-        d_el, h_i, h_o = law.parts(Q, alpha)
-        f = d_el - h_i - h_o - s
-        lo = np.where(f < 0, x, lo)
-        hi = np.where(f > 0, x, hi)
-        dG = law.G_lnQ(Q, alpha, d_el)
-        step = f / np.where(dG > 0, dG, np.inf)
+        lnH, dlnH, ln_h, H_M, shares = law.ln_terms(x)
+        lnd = (2.0 / 3.0) * (x - law.lnK)
+        Pl = np.where(pos, lnH, lnd)
+        T = np.logaddexp(ln_s, Pl)                         # ln(s + H) or ln(δ_el − s)
+        E = np.exp(Pl - T)                                  # H/(s + H) or δ_el/(δ_el − s), in (0, 1]
+        F = np.where(pos, lnd - T, T - lnH)
+        dF = np.where(pos, 2.0 / 3.0 - E * dlnH, (2.0 / 3.0) * E - dlnH)
+        xev = x
+        lo = np.where(F < 0, x, lo)
+        hi = np.where(F > 0, x, hi)
+        good = dF > 0                                       # (F' = NaN or F = ±inf/NaN: not good)
+        step = F / np.where(good, dF, np.inf)
+        good &= np.isfinite(step)
         xn = x - step
-        # a Newton step below the tolerance is convergence, even when x itself has just become an end
-        # of the bracket (xn may then round onto it; bisecting there would throw x away from the root)
-        small = (np.abs(step) <= _XTOL * np.maximum(1.0, np.abs(x))) & (dG > 0)
-        outside = (~((xn > lo) & (xn < hi)) | ~np.isfinite(xn) | (dG <= 0)) & ~small
-        xn = np.where(outside, 0.5 * (lo + hi), xn)
-        xn = np.where(done, x, xn)
+        if good.all() and (np.all((xn > lo) & (xn < hi)) and (np.abs(step).max() <= _CAP0 if cap is None else True)
+                           and xn.max() < _LNQ_MAX and xn.min() > _LNQ_MIN):
+            # plain Newton: every step valid, inside the bracket and the range
+            done |= np.abs(step) <= _XNEWTON
+            x = xn
+            if done.all():
+                break
+            continue
+        if x.max() >= _LNQ_MAX or x.min() <= _LNQ_MIN:
+            out = ((x >= _LNQ_MAX) & (F < 0)) | ((x <= _LNQ_MIN) & (F > 0))
+            if np.any(out):
+                k = np.unravel_index(int(np.argmax(out)), out.shape)
+                raise NoConvergence(
+                    f"film contact law: no load in [e^{_LNQ_MIN:g}, e^{_LNQ_MAX:g}] N gives the approach "
+                    f"s = {s[k]:.4g} m (ball {k[1]}, alpha = {alpha[k]:.4g} rad)", iterations=it,
+                    residual=float(np.abs(F[k])))
+        if cap is None:
+            cap = np.full(x.shape, _CAP0)
+        done |= F == 0
         xtol = _XTOL * np.maximum(1.0, np.abs(x))
+        small = (np.abs(step) <= _XNEWTON) & good
+        bracketed = np.isfinite(lo) & np.isfinite(hi)
+        # one-sided: the Newton step capped (a capped step along −F where F' ≤ 0); bracketed: bisection
+        # where the step leaves the bracket
+        xn1 = x + np.where(good, np.clip(-step, -cap, cap), np.where(F < 0, cap, -cap))
+        xn2 = np.where(good & (xn > lo) & (xn < hi), xn,
+                       0.5 * (np.where(bracketed, lo, x) + np.where(bracketed, hi, x)))
+        xn = np.where(small, xn, np.clip(np.where(bracketed, xn2, xn1), _LNQ_MIN, _LNQ_MAX))
+        cap = np.where(bracketed, cap, 2.0 * cap)
+        xn = np.where(done, x, xn)
         conv = small | (np.abs(xn - x) <= xtol) | (hi - lo <= xtol)
         x = xn
-        done = done | conv
+        done |= conv
         if done.all():
             break
-    Q = np.exp(x)
-    d_el, h_i, h_o = law.parts(Q, alpha)
-    scale = d_el + h_i + h_o
-    rel = np.abs(d_el - h_i - h_o - s) / scale
-    dG = law.G_lnQ(Q, alpha, d_el)
+    h = np.exp(np.minimum(np.maximum(ln_h, -_NVM_EXP_MAX), _NVM_EXP_MAX))
     if not done.all():
+        d_el = np.exp(lnd)
+        hs = h.sum(-1) if law.pair else h
+        rel = np.abs(d_el - hs - s) / (d_el + hs)
         k = np.unravel_index(int(np.argmax(np.where(done, 0.0, rel))), rel.shape)
         raise NoConvergence(
-            f"film contact law: per-ball inversion did not converge (ball {k[-1]}, s = {s[k]:.4g} m): "
+            f"film contact law: per-ball inversion did not converge (ball {k[1]}, s = {s[k]:.4g} m): "
             f"relative residual {rel[k]:.3g} after {it} iterations", iterations=it, residual=float(rel.max()))
-    return Q, d_el, h_i, h_o, dG, it, float(rel.max()) if rel.size else 0.0
+    dx = x - xev                       # the last step (≤ 1e-8, or ≤ 1e-13 max(1, |x|) after bisection)
+    Q = np.exp(x)
+    d_el = (Q / law.K) ** (2.0 / 3.0)
+    Ga, h_u = law.G_alpha(d_el, h, shares)
+    if law.pair:
+        h = np.exp(np.minimum(np.maximum(ln_h + H_M * dx[..., None], -_NVM_EXP_MAX), _NVM_EXP_MAX))
+        hm = h * H_M
+        hs, dG = h[..., 0] + h[..., 1], (2.0 / 3.0) * d_el - (hm[..., 0] + hm[..., 1])
+    else:
+        h = np.exp(np.minimum(np.maximum(ln_h + H_M * dx, -_NVM_EXP_MAX), _NVM_EXP_MAX))
+        hs, dG = h, (2.0 / 3.0) * d_el - h * H_M
+    rel = np.abs(d_el - hs - s) / (d_el + hs)
+    if np.any(~(rel <= 1e-9)):                  # e.g. a film beyond e^700 m (clipped): no load gives s
+        k = np.unravel_index(int(np.argmax(np.where(rel <= 1e-9, 0.0, 1.0))), rel.shape)
+        raise NoConvergence(
+            f"film contact law: no load in [e^{_LNQ_MIN:g}, e^{_LNQ_MAX:g}] N gives the approach s = {s[k]:.4g} m "
+            f"(ball {k[1]}, alpha = {alpha[k]:.4g} rad): relative law residual {rel[k]:.3g}", iterations=it,
+            residual=float(np.nanmax(rel)))
+    return Q, d_el, h, dG, Ga, h_u, it, float(rel.max()) if rel.size else 0.0
 
 
 def film_contact_law(brg: BallBearing, Q, alpha, *, u_i, u_o, eta, alpha_p, stiffness: str = "nominal"):
@@ -351,32 +542,44 @@ def film_load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, *, u_i, u_o
                   np.asarray(dry.theta) * R / A], axis=1)
     Qw = np.maximum(np.asarray(dry.Q_i).reshape(nb, Z), 1e-6 * (scale[:, None] / Z))   # warm start
 
-    def evaluate(yv, Q0, rows=slice(None)):
-        """Residual, Jacobian and per-ball state at scaled displacements yv (rows of the batch)."""
+    # dW/dg per ball (constant): Wt (3×2) maps (fa, fr) to the ring residuals, P (2×3) = d(A1, A2)/dy
+    cz = np.broadcast_to(c_psi[0], (Z,))
+    Wt = np.zeros((1, Z, 3, 2))
+    Wt[0, :, 0, 0], Wt[0, :, 1, 1], Wt[0, :, 2, 0] = 1.0, cz, cz
+    P = np.zeros((1, Z, 2, 3))
+    P[0, :, 0, 0], P[0, :, 0, 2], P[0, :, 1, 1] = A, A * cz, A * cz
+
+    def evaluate(yv, prev, rows=slice(None)):
+        """Residual, Jacobian and per-ball state at scaled displacements yv (rows of the batch).  ``prev``:
+        the state of an iterate (its loads carried to first order to yv give the inversion's warm start)
+        or warm-start loads [N]."""
         sub = law.rows(rows)
         A1, A2, Aj, s = _geometry(yv, brg, c_psi, A)
         al = np.arctan2(A1, A2)
-        Q, d_el, h_i, h_o, GQ, nit, rel = _invert(sub, s, al, Q0)
+        if isinstance(prev, dict):
+            dG = (s - prev["s"][rows]) - prev["Ga"][rows] * (al - prev["alpha"][rows])
+            Q0 = _carry(prev["Q"][rows], prev["GQ"][rows], dG)
+        else:
+            Q0 = prev
+        Q, d_el, h, GQ, Ga, _, nit, rel = _invert(sub.at(al), s, al, Q0)
         sa, ca = A1 / Aj, A2 / Aj
         fa, fr = Q * sa, Q * ca
         Fm = np.stack([fa.sum(1), (fr * c_psi).sum(1), (fa * c_psi).sum(1)], axis=1)
         res = (Fm - F_app[rows]) / scale[rows, None]
         # per-ball derivatives: Q(s, α), ∂Q/∂s = 1/G_Q = Q/G_lnQ, ∂Q/∂α = −G_α/G_Q
         Qs = Q / GQ
-        Qal = -sub.G_alpha(Q, al) * Qs
+        Qal = -Ga * Qs
+        QA = Q / Aj
         dQ1 = Qs * sa + Qal * ca / Aj            # dQ/dA1
         dQ2 = Qs * ca - Qal * sa / Aj            # dQ/dA2
         g = np.empty(Q.shape + (2, 2))           # d(fa, fr)/d(A1, A2)
-        g[..., 0, 0] = dQ1 * sa + Q * ca * ca / Aj
-        g[..., 0, 1] = dQ2 * sa - Q * sa * ca / Aj
-        g[..., 1, 0] = dQ1 * ca - Q * sa * ca / Aj
-        g[..., 1, 1] = dQ2 * ca + Q * sa * sa / Aj
-        c = np.broadcast_to(c_psi, Q.shape)
-        one, nil = np.ones_like(c), np.zeros_like(c)
-        Wt = np.stack([np.stack([one, nil], -1), np.stack([nil, c], -1), np.stack([c, nil], -1)], -2)  # (..,3,2)
-        P = A * np.stack([np.stack([one, nil, c], -1), np.stack([nil, c, nil], -1)], -2)             # (..,2,3)
-        J = np.einsum("bjik,bjkl,bjlm->bim", Wt, g, P) / scale[rows, None, None]
-        state = dict(Q=Q, d_el=d_el, h_i=h_i, h_o=h_o, s=s, alpha=al, Qs=Qs, nit=nit, rel=rel)
+        g[..., 0, 0] = dQ1 * sa + QA * ca * ca
+        g[..., 0, 1] = dQ2 * sa - QA * sa * ca
+        g[..., 1, 0] = dQ1 * ca - QA * sa * ca
+        g[..., 1, 1] = dQ2 * ca + QA * sa * sa
+        J = (Wt @ g @ P).sum(1) / scale[rows, None, None]
+        state = dict(Q=Q, d_el=d_el, h_i=h[..., 0], h_o=h[..., 1], s=s, alpha=al, Qs=Qs, GQ=GQ, Ga=Ga, nit=nit,
+                     rel=rel)
         return res, J, state
 
     res, J, st = evaluate(y, Qw)
@@ -392,18 +595,22 @@ def film_load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, *, u_i, u_o
         Jt = J[rows][:, active][:, :, active]
         dy = np.zeros((rows.size, 3))
         dy[:, active] = -np.linalg.solve(Jt, res[rows][:, active][..., None])[..., 0]
-        Q_t = st["Q"][rows]
+        last = {}
 
-        def trial_norm(trial, Q_t=Q_t, rows=rows):
+        def trial_norm(trial, st=st, rows=rows, last=last):
             try:
-                r_t, _, _ = evaluate(trial, Q_t, rows)
+                out = evaluate(trial, st, rows)
             except NoConvergence:                       # the law's inversion failed there: reject the trial
                 return np.full(rows.size, np.inf)
-            return np.max(np.abs(r_t[:, active]), axis=1)
+            last.update(y=trial.copy(), out=out)
+            return np.max(np.abs(out[0][:, active]), axis=1)
 
         y[rows] = _backtrack(y[rows], dy, norm[rows], trial_norm)
         prev = norm.copy()
-        res, J, st = evaluate(y, st["Q"])
+        if rows.size == nb and "y" in last and np.array_equal(last["y"], y):
+            res, J, st = last["out"]              # the accepted point is the last trial evaluated
+        else:
+            res, J, st = evaluate(y, st)
         norm = np.max(np.abs(res[:, active]), axis=1)
         floor |= todo & (norm <= 1e-9) & (norm > 0.5 * prev)
     else:

@@ -111,14 +111,16 @@ film) [m], K_c the Hertz constant (Harris 2001 eq 7.3 form), h_c the Nijenbannin
 outer ring fixed), one viscosity η and one α_p (one temperature) per load case, E' of the bearing.
 The law is inverted per contact for Q_c > 0 (every contact, every δ_c: no open contacts and no
 tension stiffness) by the vectorised bracketed Newton iteration in ln Q of
-:func:`thermobear.loads_film._invert`; dQ/dδ = 1/(dδ_el/dQ − dh/dQ) > 0, the film derivative by a
-central difference in ln Q.  In the Jacobian the contact law also carries ∂Q/∂α = −(∂G/∂α) dQ/dδ
-(G the right-hand side; through R_x and u of the film, by a central difference in α; the
+:func:`thermobear.loads_film._invert`, warm-started from the loads of the frozen iterate carried to
+first order; dQ/dδ = 1/(dδ_el/dQ − dh/dQ) > 0, the film derivative analytic (chain rule through the
+NVM blend, :class:`thermobear.loads_film._NVMFixed`).  In the Jacobian the contact law also carries
+∂Q/∂α = −(∂G/∂α) dQ/dδ (G the right-hand side; through R_x and u of the film, analytic; the
 α-dependence of K_c with ``stiffness="per_ball"`` is left out, as in the dry law), entering the
 contact stiffness matrices, dM_g/dx and dω_cage/dx.  The cage speed in the entrainment speeds is
-frozen per Newton step (taken from the iterate, the iterate re-evaluated with it; the Jacobian
-omits ∂h/∂ω_cage), so the converged point is a fixed point of both, and its lag is reported
-(``HighSpeedExtras.film_cage_lag``, ~1e-16 at convergence).  Convergence from the dry solution:
+frozen per Newton step (taken from the iterate, the iterate re-evaluated with it unless the lag is
+below 5 % of the iterate's residual; the Jacobian omits ∂h/∂ω_cage), so the converged point is a
+fixed point of both, and its lag is reported (``HighSpeedExtras.film_cage_lag``, ~1e-16 at
+convergence).  Convergence from the dry solution:
 quadratic until the lag dominates, then linear with a factor ~1e-3 (6–12 steps, seed 004 cases).
 Start: the dry high-speed solution (open contacts at a load of 1e-9 of the force scale, which the
 inversion's bracket expands from); failures are retried by continuation in viscosity.  At small n
@@ -135,10 +137,9 @@ from functools import lru_cache
 import numpy as np
 
 from .errors import InputError, NoConvergence, NoEquilibrium
-from .film import film_thickness_nvm
 from .geometry import BallBearing
 from .loads import STIFFNESS_MODES, LoadDistribution, load_distribution
-from .loads_film import _EPS_ALPHA, _EPS_LNQ, _invert
+from .loads_film import _carry, _FilmAt, _NVMFixed, _invert
 
 __all__ = ["HighSpeedExtras", "FilmInputs", "load_distribution_high_speed", "load_distribution_high_speed_full",
            "HS_CONTROLS"]
@@ -230,7 +231,7 @@ class _FilmLaw:
     (:func:`thermobear.film.film_thickness_nvm`) at R_x,c = (D/2)(1 ∓ γ'cos α_c), R_y,c, the mean
     entrainment speed u_c = v_c (d_m/2)(1 ∓ γ'cos α_c), v = (|ω − ω_cage|, ω_cage) (caged kinematics,
     :func:`thermobear.kinematics.caged_ball_kinematics`, outer ring fixed), one η and α_p per case.
-    The interface (``parts``, ``G``, ``G_lnQ``) is the one :func:`thermobear.loads_film._invert` needs."""
+    :meth:`at` gives the law at fixed angles that :func:`thermobear.loads_film._invert` inverts."""
 
     def __init__(self, brg, eta, alpha_p, K=None, v=None):
         self.brg, self.eta, self.ap, self.K, self.v = brg, eta, alpha_p, K, v
@@ -247,30 +248,15 @@ class _FilmLaw:
         """The law with the contact constants K [N/m^1.5] and orbital speed factors v [rad/s] set."""
         return _FilmLaw(self.brg, self.eta, self.ap, K, v)
 
-    def parts(self, Q, alpha):
-        """Elastic approach, film [m] (and 0: no third term) at loads Q [N] and angles α [rad], (nb, Z, 2)."""
-        fac = 1.0 + self.sgn * (self.gp * np.cos(alpha))
-        d_el = (Q / self.K) ** (2.0 / 3.0)
-        h = np.asarray(film_thickness_nvm(Q, 0.5 * self.brg.D * fac, self.Ry, self.v * (0.5 * self.brg.dm) * fac,
-                                          self.eta, self.ap, self.Ep))
-        return d_el, h, 0.0
-
-    def G(self, Q, alpha):
-        d_el, h, _ = self.parts(Q, alpha)
-        return d_el - h
-
-    def G_lnQ(self, Q, alpha, d_el):
-        """dG/d ln Q: (2/3) δ_el analytically, the film by a central difference in ln Q [m]."""
-        e = np.exp(_EPS_LNQ)
-        _, hp, _ = self.parts(Q * e, alpha)
-        _, hm, _ = self.parts(Q / e, alpha)
-        return (2.0 / 3.0) * d_el - (hp - hm) / (2.0 * _EPS_LNQ)
-
-    def G_alpha(self, Q, alpha):
-        """∂G/∂α at fixed Q and K (through R_x and u of the film) by a central difference [m/rad]."""
-        _, hp, _ = self.parts(Q, alpha + _EPS_ALPHA)
-        _, hm, _ = self.parts(Q, alpha - _EPS_ALPHA)
-        return -(hp - hm) / (2.0 * _EPS_ALPHA)
+    def at(self, alpha):
+        r"""The law at contact angles α [rad], shape (nb, Z, 2) (:class:`thermobear.loads_film._FilmAt`):
+        R_x and u both ∝ 1 ∓ γ'cos α, ∂ln R_x/∂α = ∂ln u/∂α = ±γ' sin α / (1 ∓ γ'cos α); K held."""
+        gc = self.sgn * (self.gp * np.cos(alpha))
+        fac = 1.0 + gc
+        dln = -self.sgn * (self.gp * np.sin(alpha)) / fac
+        nvm = _NVMFixed(0.5 * self.brg.D * fac, self.Ry, self.v * (0.5 * self.brg.dm) * fac, self.eta, self.ap,
+                        self.Ep)
+        return _FilmAt(self.K, nvm, False, dln, dln)
 
 
 def _film_inputs(film, shape):
@@ -453,7 +439,11 @@ class _Problem:
         Newton iteration in ln Q of :func:`thermobear.loads_film._invert` (vectorised over the batch, the
         balls and both contacts), warm-started from the loads of the last Newton iterate.  The
         entrainment speeds use the cage speed frozen in ``self.fz`` (updated every Newton step by
-        :func:`_newton`); dQ/dδ = 1/(dδ_el/dQ − dh/dQ) > 0."""
+        :func:`_newton`); dQ/dδ = 1/(dδ_el/dQ − dh/dQ) > 0.
+
+        Warm start: the loads of the iterate frozen in ``self.fz`` carried to first order to this point,
+        Δln Q = (Δδ − ∂G/∂α Δα + h ∂ln h/∂ln u Δln v) / (∂G/∂ln Q) (the derivatives of that iterate;
+        only a starting value: the inversion is converged from it)."""
         fz = self.fz
         al = np.stack([np.arctan2(p, q), np.arctan2(X1, X2)], axis=-1)
         dl = np.stack([dl_i, dl_o], axis=-1)
@@ -463,11 +453,14 @@ class _Problem:
             K = np.stack(np.broadcast_arrays(Ki, Ko), axis=-1)
         W = fz["W"]                                                        # (nb, 1)
         v = np.stack([np.abs(self.omega[:, None] - W), W], axis=-1)        # (nb, 1, 2)
-        law = self.film.bind(K, v)
-        Q, d_el, h, _, GQ, nit, rel = _invert(law, dl, al, fz["Q"])
+        Q0 = fz["Q"]
+        if "GQ" in fz:
+            Q0 = _carry(Q0, fz["GQ"], (dl - fz["dl"]) - fz["Ga"] * (al - fz["al"]) + fz["hu"] * np.log(v / fz["v"]))
+        law = self.film.bind(K, v).at(al)
+        Q, d_el, h, GQ, Ga, h_u, nit, rel = _invert(law, dl, al, Q0)
         dQ = Q / GQ
         nb = Q.shape[0]
-        fl = dict(f_al=al, f_K=np.broadcast_to(K, Q.shape).copy(), f_v=v, h_i=h[..., 0], h_o=h[..., 1],
+        fl = dict(f_al=al, f_Ga=Ga, f_GQ=GQ, f_hu=h_u, f_v=v, h_i=h[..., 0], h_o=h[..., 1],
                   del_i=d_el[..., 0], del_o=d_el[..., 1], f_rel=np.full(nb, rel), f_W=W.copy())
         return Q[..., 0], dQ[..., 0], Q[..., 1], dQ[..., 1], fl
 
@@ -560,8 +553,7 @@ class _Problem:
         go = e_o / st.d_o[..., None]                      # dα_o/dX
         if self.film is not None:
             # film law: Q_c(δ_c, α_c), ∂Q/∂α = −(∂G/∂α) dQ/dδ, so dQ/dp = dQ/dδ n + ∂Q/∂α e/d
-            law = self.film.bind(st.f_K, st.f_v)
-            Qa = -law.G_alpha(np.stack([Qi, Qo], axis=-1), st.f_al) * np.stack([dQi, dQo], axis=-1)
+            Qa = -st.f_Ga * np.stack([dQi, dQo], axis=-1)           # ∂G/∂α of the inversion (analytic)
             Qa_i, Qa_o = Qa[..., 0], Qa[..., 1]
             Mg_i = Mg_i + Mg_Qi * Qa_i
             Mg_o = Mg_o + Mg_Qo * Qa_o
@@ -730,10 +722,14 @@ def _newton(pb, x, g, tol, maxiter, st=None):
 
 def _film_refresh(pb, x, g, st, norm):
     """Freeze the cage speed and the warm-start loads of the film law at the iterate ``st`` and
-    re-evaluate the iterate with them (skipped when the cage speed has not moved)."""
-    lag = np.max(np.abs(st.W - pb.fz["W"])[:, 0] / pb.w_ref) if st.W.size else 0.0
-    pb.fz = {"W": st.W.copy(), "Q": np.stack([st.Qi, st.Qo], axis=-1)}
-    if lag <= 1e-15:
+    re-evaluate the iterate with them (skipped when the cage speed has not moved).  With the loads go
+    the approaches, angles, speed factors and law derivatives of the iterate, from which
+    :meth:`_Problem._film_force` carries the warm start to a new point."""
+    lag_k = np.abs(st.W - pb.fz["W"])[:, 0] / pb.w_ref
+    lag = np.max(lag_k) if st.W.size else 0.0
+    pb.fz = {"W": st.W.copy(), "Q": np.stack([st.Qi, st.Qo], axis=-1), "dl": np.stack([st.dl_i, st.dl_o], axis=-1),
+             "al": st.f_al, "v": st.f_v, "GQ": st.f_GQ, "Ga": st.f_Ga, "hu": st.f_hu}
+    if lag <= 1e-15 or np.all(lag_k <= _LAG_SKIP * norm):
         return st, norm
     st = pb.state(x, g)
     n = pb.norm(st)
@@ -1016,7 +1012,7 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
             iterations=int(its[k]), residual=float(norm[k]), last=np.concatenate([g[k] * A, x[k].ravel() * A]))
 
     if film is not None:
-        x, g, st, norm, its = _film_solve(pb, x, g, its, f_eta, f_ap, tol, maxiter, Fa_b, Fr_b, Mv, n_b)
+        x, g, st, norm, its = _film_solve(pb, x, g, st, its, f_eta, f_ap, tol, maxiter, Fa_b, Fr_b, Mv, n_b)
 
     if lam_i != 0.0:
         # a converged point where the gyroscopic friction alone carries F_a has every inner contact
@@ -1078,16 +1074,17 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
 
 
 _ETA_STEPS = (1e-6, 1e-4, 1e-2, 1e-1, 1.0)    # continuation in viscosity of the film stage (fractions of η)
+_LAG_SKIP = 0.05       # film refresh: keep the iterate when the cage-speed lag is below this fraction of its residual
 
 
-def _film_solve(pb, x, g, its, eta, ap, tol, maxiter, Fa_b, Fr_b, Mv, n_b):
+def _film_solve(pb, x, g, st0, its, eta, ap, tol, maxiter, Fa_b, Fr_b, Mv, n_b):
     r"""Film stage: Newton on the film contact law, started from the dry solution (x, g).
 
     The warm-start loads are the dry ones (an open contact starts at 1e-9 of the force scale; the
     inversion's bracket expands from there), the frozen cage speed the dry one.  Cases that fail are
     re-solved from the dry solution by continuation in viscosity, η·(1e-6, 1e-4, 1e-2, 0.1, 1): at
-    η·1e-6 the films are ~1e-4 of the final ones (h ∝ η^0.6–0.7 in the EHL regimes, ∝ η in IVR)."""
-    st0 = pb.state(x, g)
+    η·1e-6 the films are ~1e-4 of the final ones (h ∝ η^0.6–0.7 in the EHL regimes, ∝ η in IVR).
+    ``st0`` is the dry state at (x, g)."""
     Q0 = np.maximum(np.stack([st0.Qi, st0.Qo], axis=-1), 1e-9 * pb.scale[:, None, None])
     pb.film = _FilmLaw(pb.brg, eta, ap)
     pb.fz = {"W": st0.W.copy(), "Q": Q0}
@@ -1112,7 +1109,7 @@ def _film_solve(pb, x, g, its, eta, ap, tol, maxiter, Fa_b, Fr_b, Mv, n_b):
             x, g = x.copy(), g.copy()
             x[idx], g[idx], norm = xs, gs, norm.copy()
             norm[idx] = ns
-            pb.fz = {k: v.copy() for k, v in pb.fz.items()}
+            pb.fz = {k: v.copy() for k, v in pb.fz.items() if k in sub.fz}
             for k in pb.fz:
                 pb.fz[k][idx] = sub.fz[k]
             st = pb.state(x, g)
