@@ -28,7 +28,7 @@ def test_film_load_model_where_the_dry_solution_opens_contacts_in_a_flooded_bear
     assert open_contacts(loaded, True) == 0 and open_contacts(lifted, True) > 0
     assert choose_models(loaded)["load_model"][0] == "jones_harris"
     m = choose_models(lifted)
-    assert m["load_model"][0] == "film" and "open contact" in m["load_model"][1]
+    assert m["load_model"][0] == "film" and "off a race" in m["load_model"][1]
     # a greased bearing's unloaded contacts are starved: the dry law stays
     d = _scene_dict()
     d["lubricant"] = {k: v for k, v in d["lubricant"].items() if k not in ("flow_L_h", "T_in_C")} | {"supply": "grease"}

@@ -13,9 +13,9 @@ Two kinds of points, as :func:`thermobear.solver.choose_models` decides:
   loads and model choices, a "group" — are computed in **one** vectorised
   :func:`thermobear.solver.scene_losses` call with the group's single load
   distribution (the loads do not depend on speed or temperature in the
-  low-speed model).  Scenes on the SKF global model (``models.losses = "skf"``)
-  or on the film load model (loads depend on the film temperature) are
-  evaluated point by point.
+  low-speed model; the high-speed and the film load models solve the group's
+  loads in one batched call, one case per speed and temperature).  Scenes on the
+  SKF global model (``models.losses = "skf"``) are evaluated point by point.
 * **coupled** (no ``T_C``): the thermal fixed point
   (:func:`thermobear.solver.steady_state`) per point, run in local processes
   (:class:`concurrent.futures.ProcessPoolExecutor`, ``processes`` workers,
@@ -119,15 +119,17 @@ def _prescribed(scenes, points, idx, rows):
         sc = scenes[members[0]]
         n = np.array([scenes[i].n_rpm for i in members], float)
         T = np.array([scenes[i].T_C for i in members], float)
-        if models.get("losses", ("local",))[0] != "local" or models["load_model"][0] == "film":
-            # SKF global model, or loads that depend on the film temperature: per point
+        if models.get("losses", ("local",))[0] != "local":         # SKF global model: per point
             rs = [solve(scenes[i]) for i in members]
             P = np.array([x.P_W for x in rs])
             M = np.array([x.torque_Nm for x in rs])
             bd = {k: np.array([x.breakdown_W[k] for x in rs]) for k in rs[0].breakdown_W}
         else:
             load = None
-            if models["high_speed"][0] == "yes":   # high-speed ball loads depend on speed: one batched solve
+            if models["load_model"][0] == "film":   # loads depend on speed and film temperature: one batched solve
+                from .solver import film_scene_load
+                load = film_scene_load(sc, models, T, n_rpm=n)
+            elif models["high_speed"][0] == "yes":   # high-speed ball loads depend on speed: one batched solve
                 from .loads_highspeed import load_distribution_high_speed
                 load = load_distribution_high_speed(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, M=sc.M, n_rpm=n,
                                                     stiffness=sc.models.get("stiffness", "nominal"))

@@ -288,8 +288,19 @@ def calibrate_L0_seed002(case: Case):
 
 
 # ------------------------------------------------------------------------------------ scoring
+def _cold(fn):
+    """``fn`` with the solver's per-operating-point cache (the dry load distribution) cleared first:
+    every timed call computes its point from scratch."""
+    from thermobear.solver import _dry_load_cached
+
+    def f(*a):
+        _dry_load_cached.cache_clear()
+        return fn(*a)
+    return f
+
+
 def _median_time(fn, repeat):
-    return median_time(fn, repeat, warmup=False)
+    return median_time(_cold(fn), repeat, warmup=False)
 
 
 @dataclass
@@ -363,10 +374,11 @@ def _coupled(level, fn, cases, quantities, warm=True):
             pass
     errs = {f: [] for f in quantities}
     failed, ts = [], []
+    run = _cold(fn)
     for c in cases:
         t0 = time.perf_counter()
         try:
-            r = fn(c)
+            r = run(c)
         except _FAILS as exc:
             failed.append((c.name, _why(exc)))
             continue

@@ -77,6 +77,13 @@ def main():
              "(IVR: F_R nearly independent of the gap), which the dry law sets to zero;",
              f"* cost per point (prescribed T, losses included): dry {1e3 * np.median([r['td'] for r in rs]):.1f} ms, "
              f"film {1e3 * np.median([r['tf'] for r in rs]):.1f} ms (medians).", "",
+             "By the number of balls the dry solution lifts off a race:", "",
+             "| bearing | lifted | points | abs(ΔP) min | median | max |", "|---|---|---|---|---|---|"]
+    for (name, k) in sorted({(r["bearing"], r["n_open"]) for r in rs}):
+        d = np.abs([r["dP"] for r in rs if r["bearing"] == name and r["n_open"] == k])
+        lines.append(f"| {name} | {k} | {d.size} | {100 * d.min():.2f} % | {100 * np.median(d):.2f} % | "
+                     f"{100 * d.max():.2f} % |")
+    lines += ["",
              "`choose_models` therefore takes the film law exactly where the dry solution opens a contact in a flooded "
              "bearing; grease and oil–air are taken as starved outside the load zone (dry law).", "",
              "## All points", "",
