@@ -138,18 +138,22 @@ def run(full: bool = False, profile: bool = True) -> str:
             if target < 0.1 else (lambda x: f"{x:.2f} s")
         verdict = "met" if t <= target else f"**missed ×{t / target:.3g}**"
         L.append(f"| {name} | {fmt(t)} {unit} | {fmt(target)} | {verdict} |")
-    L += ["", "**Why the misses.** A coupled seed 004 point is about half setup, half Newton. Setup: the "
-          "high-speed ball equilibrium (7 Newton steps with an exact Jacobian — the cage speed a fourth global "
-          "unknown — from a static solution that itself costs ≈ 0.8 ms; ≈ 4–7 ms in all, a few hundred small "
-          "numpy operations per step on 15 balls), the contact set (≈ 1 ms) and the network build (≈ 2 ms: "
-          "networkx graph, expression evaluation, element probes). Newton runs on all free node temperatures with "
-          "the conductances' temperature derivatives in the Jacobian (5–6 iterations), each a fused loss pass "
-          "(≈ 0.2 ms for 30 contacts × 4 temperature sets) plus ≈ 0.5 ms of conductance derivatives and matrix "
-          "work. The seed 002 point (closed-form loads, no high-speed equilibrium) is at ≈ 5 ms. Reaching 5 ms for "
-          "seed 004 needs the per-step numpy overhead gone (one compiled kernel per Newton step, or a network "
-          "built once per scene and only re-parametrised per point). The prescribed-temperature and coupled "
-          "sweeps are dominated by the same equilibrium (one per speed and load). The transient is ≈ 100 loss "
-          "evaluations of the BDF right-hand side with the output losses in one vectorised call."]
+    L += ["", "**Why the misses.** A coupled seed 004 point (each timed call a cold operating point: the dry load "
+          "distribution the solver caches per point is cleared) is about 40 % ball equilibrium and 60 % thermal "
+          "coupling. The high-speed ball equilibrium costs ≈ 4 ms (7 Newton steps with an exact Jacobian — the "
+          "cage speed a fourth global unknown — from a static Jones solution of ≈ 0.9 ms; a few hundred small "
+          "numpy operations per step on 15 balls). With the loads known, the rest costs ≈ 6–7 ms: the contact set "
+          "(≈ 0.7 ms), the network build (≈ 0.9 ms: the table's structure is checked once, then values evaluated "
+          "and elements probed per point), Newton on all free node temperatures (5–6 iterations, ≈ 2.3 ms: a "
+          "fused loss pass over 30 contacts × 4 temperature sets, conductances and their slopes, a dense solve), "
+          "and the final network solve with the loss breakdown (≈ 0.7 ms). The seed 002 point (closed-form loads) "
+          "is at ≈ 4–5 ms. Reaching 5 ms for seed 004 needs the per-step numpy overhead gone (a compiled kernel "
+          "for the ball equilibrium and the loss pass). Points where the dry solution lifts balls off a race run "
+          "the film load model (≈ 40 ms coupled: 2–3 film load distributions of 5–15 ms); in the coupled sweep "
+          "(2000–8000 rpm) that is the points below ≈ 3200 rpm, where the low-speed form applies and lifts two "
+          "balls. The prescribed-temperature sweep solves each load group in one batched call (dry high-speed "
+          "or film). The transient is ≈ 100 loss evaluations of the BDF right-hand side with the output losses "
+          "in one vectorised call. Timings vary by ±30–50 % between runs on the 2-core CI machine."]
     if profile:
         L += ["", "Hot spots (cProfile):", ""]
         for k, v in prof.items():
