@@ -174,3 +174,12 @@ def test_transient_default_tolerances_are_accurate():
     for node in ref.T_C:
         np.testing.assert_allclose(run.T_C[node], ref.T_C[node], atol=0.01)
     np.testing.assert_allclose(run.P_W, ref.P_W, rtol=5e-4)
+
+
+def test_transient_reports_model_changes_along_the_schedule():
+    # a radial step that lifts balls off the races switches the load model mid-run
+    s = S004.with_(n_rpm=4800.0)
+    tr = transient(s, 400.0, schedule=[(200.0, {"Fr": 750.0})], t_eval=[0.0, 199.0, 400.0])
+    assert tr.models_used["load_model"][0] == "jones_harris"
+    assert tr.models_used["schedule"][1].startswith("from t = 200 s: load_model film")
+    assert np.all(np.isfinite(tr.P_W)) and tr.t_s[-1] == 400.0

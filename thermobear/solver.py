@@ -851,7 +851,8 @@ class TransientRun:
     T_C : dict               node → temperatures [°C] (arrays over t_s)
     P_W : ndarray            total power loss [W]
     breakdown_W : dict       loss family → power [W] over t_s
-    models_used : dict
+    models_used : dict       model → (choice, reason) of the first segment; "schedule" lists the choices
+                             that later schedule steps change (e.g. the film load model from a radial step)
     """
 
     t_s: np.ndarray
@@ -923,6 +924,7 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
     T_state = scene.T_ambient_C if T0_C is None else T0_C
     out_t, out_T, out_rep = [], {}, {}
     first = None
+    seg_changes: dict = {}          # schedule step time [s] → model choices that differ from the first segment's
     # pieces of the run: one per schedule segment; with the film load model a segment is cut into pieces
     # whose film temperature (the mean contact temperature at the piece's start) drifts by ≈ _FILM_DRIFT_K
     pieces = [(ts, bounds[k + 1], sc, k == len(scenes) - 1) for k, (ts, sc) in enumerate(scenes)
@@ -945,6 +947,9 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
         else:
             net, cs, roles = _setup_thermal(sc, models, contacts)
         first = first or (models, roles, list(net.nodes))
+        changed = {k: v for k, v in models.items() if first[0].get(k, (None,))[0] != v[0]}
+        if changed and ts not in seg_changes:
+            seg_changes[ts] = changed
         if list(net.nodes) != first[2]:
             raise InputError("schedule", ts, "a step may not change the thermal network's nodes")
 
@@ -987,8 +992,13 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
     rep = {n: cat(v) for n, v in out_rep.items()}
     P = rep.get("P_W", np.zeros(0))
     bd = {n[2:]: v for n, v in rep.items() if n.startswith("P_") and n != "P_W"}
+    used = dict(first[0])
+    if seg_changes:
+        used["schedule"] = ("models change with the schedule", "; ".join(
+            f"from t = {t:g} s: " + ", ".join(f"{k} {v[0]} ({v[1]})" for k, v in ch.items())
+            for t, ch in sorted(seg_changes.items())))
     return TransientRun(t_s=cat(out_t), T_C={n: cat(v) for n, v in out_T.items()}, P_W=P, breakdown_W=bd,
-                        models_used=first[0], roles=first[1])
+                        models_used=used, roles=first[1])
 
 
 @dataclass
