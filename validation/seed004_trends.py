@@ -173,6 +173,20 @@ def main() -> int:
         for Tsb in (25.0, 45.0, 65.0):
             t = transient(SCENE.with_(n_rpm=n, T_fixed_C={"support_block": Tsb}), 1000.0, t_eval=[1000.0])
             sens.append(f"{n:g} rpm, support block {Tsb:g} °C: {float(t.T_C['inner_ring'][-1]):.1f} °C")
+    # the 10x ambiguity of the mixture convection coefficient (PHYSICS.md sec. 8 item 4: Harris 0.0332 vs
+    # laminar flat-plate 0.332, the network's choice): does the other reading warm the inner ring?
+    import dataclasses
+    import tempfile
+    from thermobear._data import data_dir
+    net_txt = data_dir("networks") / "oil_jet_ball_bearing.toml"
+    with tempfile.TemporaryDirectory() as tmp:
+        alt = Path(tmp) / "oil_jet_harris.toml"
+        alt.write_text(net_txt.read_text(encoding="utf-8").replace('correlation = "flat_plate_laminar"',
+                                                                     'correlation = "harris"'), encoding="utf-8")
+        conv = []
+        for n in (3200.0, 8070.0):
+            t = transient(dataclasses.replace(SCENE, network=str(alt)).with_(n_rpm=n), 1000.0, t_eval=[1000.0])
+            conv.append(f"{n:g} rpm: {float(t.T_C['inner_ring'][-1]):.1f} °C")
     drag_r = [scene_losses(SCENE.with_(n_rpm=n, T_C=50.0)).breakdown_W["drag"] for n in (3200.0, 6400.0)]
     L += ["", "### Notes", "",
           "* **Comparison at equal ring temperature.** Seed 004 plots its measured powers against the OR–IR mean "
@@ -205,7 +219,9 @@ def main() -> int:
           "oil-bath DGBBs and lip seals heat it and, through the shaft, the inner ring. Sensitivity (inner ring at "
           "1000 s): " + "; ".join(sens) + " (the blocks modelled as heat sources, a-priori estimates: "
           "validation/report/seed004_support_heat.md, +1.5 / +4.9 K). Energy budget: " + "; ".join(budget) + ". "
-          "The inner ring's inertia is the shaft share's (an estimate, 0.18 m of Ø50 steel), and the split of the "
+          "With Harris's mixture convection coefficient 0.0332 (PHYSICS.md §8 item 4) instead of the laminar "
+          "0.332 the inner ring at 1000 s is " + "; ".join(conv) + " — cooler, not warmer (hotter balls, lower "
+          "viscosity, less power). The inner ring's inertia is the shaft share's (an estimate, 0.18 m of Ø50 steel), and the split of the "
           "heat between the shaft side and the housing / oil side sets the curve. The model stays cooler than the "
           "rig; the power level itself cannot be "
           "checked against the paper (measured powers only in figures). With a logged heat-up, impose the logged "
