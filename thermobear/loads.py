@@ -133,8 +133,10 @@ def axial_contact_angle(brg: BallBearing, Fa, Kn=None, tol: float = 1e-14):
     lo = np.full_like(Fa, a0)
     hi = np.full_like(Fa, np.pi / 2 - 1e-9)
     # start: small-deflection estimate t ≈ (target / sin α0)^(2/3) or for α0 = 0, α ≈ (2 target)^(1/4)
-    al = np.where(a0 > 1e-6, np.arccos(np.clip(c0 / (1.0 + (target / max(np.sin(a0), 1e-12)) ** (2 / 3)), -1, 1)),
-                  np.arccos(1.0 / (1.0 + np.sqrt(np.maximum(2.0 * target, 0.0)) ** (2 / 3))))
+    if a0 > 1e-6:
+        al = np.arccos(np.clip(c0 / (1.0 + (target / max(np.sin(a0), 1e-12)) ** (2 / 3)), -1, 1))
+    else:
+        al = np.arccos(1.0 / (1.0 + np.sqrt(np.maximum(2.0 * target, 0.0)) ** (2 / 3)))
     al = np.clip(al, a0 + 1e-12, np.pi / 2 - 1e-9)
     for _ in range(100):
         f, t = g(al)
@@ -145,7 +147,7 @@ def axial_contact_angle(brg: BallBearing, Fa, Kn=None, tol: float = 1e-14):
         new = al - step
         out = (new <= lo) | (new >= hi) | ~np.isfinite(new)
         new = np.where(out, 0.5 * (lo + hi), new)
-        if np.all(np.abs(new - al) <= tol * np.maximum(1.0, np.abs(al))):
+        if (np.abs(new - al) <= tol * np.maximum(1.0, np.abs(al))).all():
             al = new
             break
         al = new
@@ -344,23 +346,24 @@ def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, st
 
     active = [0, 1, 2] if tilt_free else [0, 1]
     na = len(active)
+    sums = _sum_matrix(c_psi[0])
 
     def residual_and_jac(yv):
         A1, A2, Aj, s, sa, ca, Q, dQ = _state(yv, brg, stiffness, c_psi, A, R)
-        fa_j = Q * sa
-        fr_j = Q * ca
-        Fm = np.stack([fa_j.sum(1), (fr_j * c_psi).sum(1), (fa_j * c_psi).sum(1)], axis=1)
-        res = (Fm - F_app) / scale[:, None]
+        # per-ball stiffness g = dQ n nᵀ + (Q/A_j) e eᵀ and forces Q n, summed over the balls by one
+        # product with the lever arms of dA/dy = A (1, 0, c), A (0, c, 0) (see _sum_matrix)
         Qa = np.where(Aj > 0, Q / Aj, 0.0)
-        g11 = dQ * sa * sa + Qa * ca * ca
-        g12 = dQ * sa * ca - Qa * sa * ca
-        g22 = dQ * ca * ca + Qa * sa * sa
-        # d(force)/d(y) with dA1/dy = A (1, 0, c), dA2/dy = A (0, c, 0)
-        c = c_psi
-        J = np.empty((yv.shape[0], 3, 3))
-        J[:, 0, 0] = g11.sum(1); J[:, 0, 1] = (g12 * c).sum(1); J[:, 0, 2] = (g11 * c).sum(1)
-        J[:, 1, 0] = (g12 * c).sum(1); J[:, 1, 1] = (g22 * c * c).sum(1); J[:, 1, 2] = (g12 * c * c).sum(1)
-        J[:, 2, 0] = (g11 * c).sum(1); J[:, 2, 1] = (g12 * c * c).sum(1); J[:, 2, 2] = (g11 * c * c).sum(1)
+        P = np.empty((yv.shape[0], 5, Z))
+        g11, g12, g22 = P[:, 0], P[:, 1], P[:, 2]
+        np.multiply(Q, sa, out=P[:, 3])
+        np.multiply(Q, ca, out=P[:, 4])
+        dQs, Qas = dQ * sa, Qa * ca
+        np.add(dQs * sa, Qas * ca, out=g11)
+        np.multiply(dQs - Qa * sa, ca, out=g12)
+        np.add(dQ * ca * ca, Qa * sa * sa, out=g22)
+        out = P.reshape(-1, 5 * Z) @ sums
+        res = (out[:, 9:] - F_app) / scale[:, None]
+        J = out[:, _JAC].reshape(-1, 3, 3)
         J *= A / scale[:, None, None]
         return res, J
 
@@ -371,24 +374,51 @@ def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, st
     floor = np.zeros(nb, bool)      # at the floating-point floor: below 1e-9 and no longer improving
     for it in range(1, maxiter + 1):
         todo = (norm > tol) & ~floor
-        if not np.any(todo):
+        every = bool(todo.all())
+        if not every and not todo.any():
             it -= 1
             break
-        Jt = J[todo][:, active][:, :, active]
-        # regularise rows of a singular Jacobian (no ball in contact): push towards contact
-        det_ok = np.abs(np.linalg.det(Jt)) > 1e-300
-        Jt[~det_ok] += np.eye(na)[None] * 1e-3
-        dy = np.zeros((int(todo.sum()), 3))
-        dy[:, active] = -np.linalg.solve(Jt, res[todo][:, active][..., None])[..., 0]
-        # no contact at all: move every active coordinate into contact along the load direction
-        def trial_norm(trial):
-            r_t, _ = residual_and_jac_partial(trial, todo, brg, stiffness, c_psi, A, R, F_app, scale)
-            return np.max(np.abs(r_t[:, active]), axis=1)
-
-        y[todo] = _backtrack(y[todo], dy, norm[todo], trial_norm)
         prev = norm.copy()
-        res, J = residual_and_jac(y)
-        norm = np.max(np.abs(res[:, active]), axis=1)
+        if every:
+            # every case: the full Newton step first, its residual and Jacobian kept when accepted
+            Jt = J if tilt_free else J[:, :2, :2]
+            try:
+                dy_a = -np.linalg.solve(Jt, res[:, active, None])[..., 0]
+            except np.linalg.LinAlgError:           # a case with no ball in contact: general path below
+                every = False
+        if every:
+            trial = y.copy()
+            trial[:, active] += dy_a
+            r_t, J_t = residual_and_jac(trial)
+            n_t = np.max(np.abs(r_t[:, active]), axis=1)
+            if (n_t < (1.0 - 1e-4) * norm).all():
+                y, res, J, norm = trial, r_t, J_t, n_t
+            else:
+                dy = np.zeros((nb, 3))
+                dy[:, active] = dy_a
+
+                def trial_norm(tr):
+                    r_t, _ = residual_and_jac_partial(tr, todo, brg, stiffness, c_psi, A, R, F_app, scale)
+                    return np.max(np.abs(r_t[:, active]), axis=1)
+
+                y = _backtrack(y, dy, norm, trial_norm)
+                res, J = residual_and_jac(y)
+                norm = np.max(np.abs(res[:, active]), axis=1)
+        else:
+            Jt = J[todo][:, active][:, :, active]
+            # regularise rows of a singular Jacobian (no ball in contact): push towards contact
+            det_ok = np.abs(np.linalg.det(Jt)) > 1e-300
+            Jt[~det_ok] += np.eye(na)[None] * 1e-3
+            dy = np.zeros((int(todo.sum()), 3))
+            dy[:, active] = -np.linalg.solve(Jt, res[todo][:, active][..., None])[..., 0]
+
+            def trial_norm(trial):
+                r_t, _ = residual_and_jac_partial(trial, todo, brg, stiffness, c_psi, A, R, F_app, scale)
+                return np.max(np.abs(r_t[:, active]), axis=1)
+
+            y[todo] = _backtrack(y[todo], dy, norm[todo], trial_norm)
+            res, J = residual_and_jac(y)
+            norm = np.max(np.abs(res[:, active]), axis=1)
         norm[zero] = 0.0
         floor |= todo & (norm <= 1e-9) & (norm > 0.5 * prev)
     else:
@@ -428,6 +458,22 @@ def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, st
         alpha_i=shz(alpha), alpha_o=shz(alpha.copy()), psi=psi, delta_n=shz(np.where(zero[:, None], 0.0, s)),
         residual=float(norm.max()) if norm.size else 0.0, iterations=int(it),
         Fa=np.asarray(Fa, dtype=float), Fr=np.asarray(Fr, dtype=float), M=Mv.reshape(out_shape) if out_shape else float(Mv[0]))
+
+
+_JAC = np.array([0, 1, 2, 1, 3, 4, 2, 4, 5])   # symmetric 3×3 Jacobian from its six distinct sums
+
+
+def _sum_matrix(c):
+    """(5 Z, 12) matrix turning per-ball rows (g11, g12, g22, Q sin α, Q cos α) [each Z long] into the
+    sums Σ g11, Σ g12 c, Σ g11 c, Σ g22 c², Σ g12 c², Σ g11 c² (Jacobian) and Σ Q sin α, Σ Q cos α c,
+    Σ Q sin α c (ring forces); c = cos ψ."""
+    Z = c.size
+    M = np.zeros((5, Z, 12))
+    one, c2 = np.ones(Z), c * c
+    for row, col, w in ((0, 0, one), (1, 1, c), (0, 2, c), (2, 3, c2), (1, 4, c2), (0, 5, c2),
+                        (3, 9, one), (4, 10, c), (3, 11, c)):
+        M[row, :, col] = w
+    return M.reshape(5 * Z, 12)
 
 
 def residual_and_jac_partial(y, todo, brg, stiffness, c_psi, A, R, F_app, scale):

@@ -157,6 +157,8 @@ _BALL_MAXIT = 40        # Newton steps of the per-ball start
 _BALL_HALVINGS = 12     # line-search halvings of the per-ball start
 _RELAX = 1e-2          # a light ball is re-placed when its residual exceeds this share of its F_c + friction
 _BALL_TOL = 1e-4        # per-ball start: force residual relative to the ball's external force
+_SGN_E = np.array([1.0, -1.0])                  # (cos α, sin α) -> e = (cos α, −sin α)
+_SGN_2 = np.array([[1.0, -1.0], [-1.0, 1.0]])   # cofactor signs of a 2×2 inverse
 
 
 @dataclass(frozen=True)
@@ -303,7 +305,10 @@ class _State:
 
 
 class _Problem:
-    """Fixed data of one batch: bearing constants, loads, weights.  Arrays have shape (nb, Z[, ...])."""
+    """Fixed data of one batch: bearing constants, loads, weights.  Arrays have shape (nb, Z[, ...]).
+
+    For one load case every array is tiny: a solve costs the number of numpy calls, not the
+    arithmetic (the hot paths skip masks that are all true and preallocate their stacks)."""
 
     def __init__(self, brg, F_app, scale, omega, free_g, stiffness, lam_i, lam_o, kin_control):
         self.brg = brg
@@ -332,6 +337,19 @@ class _Problem:
         self.W = np.swapaxes(self.Wt, -1, -2).copy()
         self.film = None            # _FilmLaw of the film contact law (None: dry Hertz contacts)
         self.fz = None              # film law: frozen cage speed "W" (nb, 1) and warm-start loads "Q" (nb, Z, 2)
+        self._prep()
+
+    def _prep(self):
+        """Per-case factors of the Newton step (from scale, w_ref and free_g; call again after changing them)."""
+        s = self.scale
+        self.As = (self.A / s)[:, None, None, None]
+        self.wrs = (self.w_ref / s)[:, None, None]
+        self.Aw = (self.A / self.w_ref)[:, None, None]
+        act = np.ones((s.size, 4))
+        act[:, :3] = self.free_g
+        self.act = act
+        self.act2 = act[:, :, None] * act[:, None, :]
+        self.eye_fix = np.eye(4)[None] * (1.0 - act)[:, :, None]
 
     def centres(self, g):
         """Inner groove-centre offsets A1, A2 [m] from scaled globals g = (δa/A, δr/A, θℜ/A)."""
@@ -339,7 +357,12 @@ class _Problem:
         return A * (g[:, 0:1] + g[:, 2:3] * c), self.A2_0 + (A * g[:, 1:2]) * c
 
     def _contact_force(self, delta, K):
+        """Hertz load K δ^1.5 and dQ/dδ at approach δ; an open contact (δ ≤ 0) gets the linear
+        tension stiffness k_ε."""
         pos = delta > 0
+        if pos.all():
+            sq = np.sqrt(delta)
+            return K * delta * sq, 1.5 * K * sq
         sq = np.sqrt(np.where(pos, delta, 0.0))
         Q = np.where(pos, K * delta * sq, self.k_eps * delta)
         dQ = np.where(pos, 1.5 * K * sq, self.k_eps)
@@ -398,13 +421,18 @@ class _Problem:
         qi, qo = np.maximum(Qi, 0.0), np.maximum(Qo, 0.0)
         qs = qi.sum(1, keepdims=True)
         has = qs > 0
-        qs1 = np.where(has, qs, 1.0)
-        wgt = np.where(has, qi / qs1, 1.0 / self.Z)
+        if has.all():
+            wgt = qi / qs
+        else:
+            wgt = np.where(has, qi / np.where(has, qs, 1.0), 1.0 / self.Z)
         W = (wgt * w_own).sum(1, keepdims=True)                            # (nb, 1)
         den = qo * Eo * Eo + qi * Ei * Ei
         pos = den > 0
-        den1 = np.where(pos, den, 1.0)
-        wR = np.where(pos, -(qo * Eo * Ro * W + qi * Ei * Ri * (w - W)) / den1, wR_own)
+        num = -(qo * Eo * Ro * W + qi * Ei * Ri * (w - W))
+        if pos.all():
+            wR = num / den
+        else:
+            wR = np.where(pos, num / np.where(pos, den, 1.0), wR_own)
         Fc = 0.5 * self.m * self.dm * W * W                                 # (nb, 1)
         Mg = self.J * wR * W * sb
         # forces on the ball: inner ring Q_i n_i + T_i e_i, outer ring −(Q_o n_o + T_o e_o), e = (cos α, −sin α)
@@ -419,10 +447,18 @@ class _Problem:
         else:
             Fo1, Fo2 = Qo * so, Qo * co
         s = self.scale[:, None]
-        r_b = np.stack([Fi1 - Fo1, Fi2 - Fo2 + Fc], axis=-1) / s[..., None]
+        r_b = np.empty(Fi1.shape + (2,))
+        np.subtract(Fi1, Fo1, out=r_b[..., 0])
+        np.add(Fi2 - Fo2, Fc, out=r_b[..., 1])
+        r_b /= s[..., None]
         c = self.c
         Fx = Fi1 - (self.lam_i * self.fi / self.R) * Mg if self.lam_i else Fi1
-        r_g = (np.stack([Fi1.sum(1), (Fi2 * c).sum(1), (Fx * c).sum(1)], axis=1) - self.F_app) / s
+        r_g = np.empty(self.F_app.shape)
+        r_g[:, 0] = Fi1.sum(1)
+        r_g[:, 1] = (Fi2 * c).sum(1)
+        r_g[:, 2] = (Fx * c).sum(1)
+        r_g -= self.F_app
+        r_g /= s
         st.__dict__.update(
             X1=X1, X2=X2, p=p, q=q, d_i=d_i, d_o=d_o, si=si, ci=ci, so=so, co=co, dl_i=dl_i, dl_o=dl_o,
             Qi=Qi, Qo=Qo, dQi=dQi, dQo=dQo, rb2=rb2, cb=cb, sb=sb, seo=seo, sei=sei, Ro=Ro, Ri=Ri,
@@ -465,8 +501,8 @@ class _Problem:
         return Q[..., 0], dQ[..., 0], Q[..., 1], dQ[..., 1], fl
 
     def norm(self, st):
-        nb = np.max(np.abs(st.r_b), axis=(1, 2))
-        ng = np.max(np.abs(st.r_g) * self.free_g, axis=1)
+        nb = np.abs(st.r_b).max(axis=(1, 2))
+        ng = (np.abs(st.r_g) * self.free_g).max(axis=1)
         return np.maximum(nb, ng)
 
     def closing_limit(self, st, dx, dg):
@@ -490,7 +526,7 @@ class _Problem:
         for dl, dd, K in ((st.dl_i, dd_i, self.Ki0), (st.dl_o, dd_o, self.Ko0)):
             d_eta = (F / K) ** (2.0 / 3.0)
             over = (dl < 0) & (dl + dd > d_eta)
-            if np.any(over):
+            if over.any():
                 kap = np.where(over, np.minimum(kap, (d_eta - dl) / np.where(over, dd, 1.0)), kap)
         return kap
 
@@ -526,29 +562,39 @@ class _Problem:
         wo_o = (w * Ri * Eo_o - st.w_own * det_o) / det
         qi, qo = np.maximum(Qi, 0.0), np.maximum(Qo, 0.0)
         pos = st.den > 0
-        den1 = np.where(pos, st.den, 1.0)
+        allpos = bool(pos.all())
+        den1 = st.den if allpos else np.where(pos, st.den, 1.0)
         wmW = w - W
-        wR_i = np.where(pos, (-qo * W * Eo_i * Ro - qi * wmW * (Ei_i * Ri + Ei * Ri_i)
-                              - 2.0 * wR * (qo * Eo * Eo_i + qi * Ei * Ei_i)) / den1,
-                        (-w * Ro * Ri_i - st.wR_own * det_i) / det)
-        wR_o = np.where(pos, (-qo * W * (Eo_o * Ro + Eo * Ro_o) - qi * wmW * Ei_o * Ri
-                              - 2.0 * wR * (qo * Eo * Eo_o + qi * Ei * Ei_o)) / den1,
-                        (-w * Ro_o * Ri - st.wR_own * det_o) / det)
+        wR_i = (-qo * W * Eo_i * Ro - qi * wmW * (Ei_i * Ri + Ei * Ri_i)
+                - 2.0 * wR * (qo * Eo * Eo_i + qi * Ei * Ei_i)) / den1
+        wR_o = (-qo * W * (Eo_o * Ro + Eo * Ro_o) - qi * wmW * Ei_o * Ri
+                - 2.0 * wR * (qo * Eo * Eo_o + qi * Ei * Ei_o)) / den1
+        if not allpos:
+            wR_i = np.where(pos, wR_i, (-w * Ro * Ri_i - st.wR_own * det_i) / det)
+            wR_o = np.where(pos, wR_o, (-w * Ro_o * Ri - st.wR_own * det_o) / det)
         JW = J * W
         Mg_i = JW * (wR_i * sb + wR * cb * b_i)
         Mg_o = JW * (wR_o * sb + wR * cb * b_o)
-        Mg_W = J * sb * (wR + W * np.where(pos, (qi * Ei * Ri - qo * Eo * Ro) / den1, 0.0))
-        Mg_Qi = np.where(pos & (Qi > 0), JW * sb * (-Ei * Ri * wmW - wR * Ei * Ei) / den1, 0.0)
-        Mg_Qo = np.where(pos & (Qo > 0), JW * sb * (-Eo * Ro * W - wR * Eo * Eo) / den1, 0.0)
+        JWsb = JW * sb
+        if allpos:
+            Mg_W = J * sb * (wR + W * ((qi * Ei * Ri - qo * Eo * Ro) / den1))
+            Mg_Qi = (JWsb * (-Ei * Ri * wmW - wR * Ei * Ei) / den1) * (Qi > 0)
+            Mg_Qo = (JWsb * (-Eo * Ro * W - wR * Eo * Eo) / den1) * (Qo > 0)
+        else:
+            Mg_W = J * sb * (wR + W * np.where(pos, (qi * Ei * Ri - qo * Eo * Ro) / den1, 0.0))
+            Mg_Qi = np.where(pos & (Qi > 0), JWsb * (-Ei * Ri * wmW - wR * Ei * Ei) / den1, 0.0)
+            Mg_Qo = np.where(pos & (Qo > 0), JWsb * (-Eo * Ro * W - wR * Eo * Eo) / den1, 0.0)
         Fc_W = self.m * self.dm * W
         # cage speed: ∂ω_cage/∂Q_i, ∂α_i, ∂α_o of each ball
-        W_Q = np.where((st.qs > 0) & (Qi > 0), (st.w_own - W) / np.where(st.qs > 0, st.qs, 1.0), 0.0)
+        if (st.qs > 0).all():
+            W_Q = ((st.w_own - W) / st.qs) * (Qi > 0)
+        else:
+            W_Q = np.where((st.qs > 0) & (Qi > 0), (st.w_own - W) / np.where(st.qs > 0, st.qs, 1.0), 0.0)
         W_i, W_o = st.wgt * wo_i, st.wgt * wo_o
         # --- geometry: n = (sin α, cos α), e = (cos α, −sin α); p = A_offset − X
-        n_i = np.stack([si, ci], axis=-1)
-        e_i = np.stack([ci, -si], axis=-1)
-        n_o = np.stack([so, co], axis=-1)
-        e_o = np.stack([co, -so], axis=-1)
+        n_i, n_o = np.empty(si.shape + (2,)), np.empty(si.shape + (2,))
+        n_i[..., 0], n_i[..., 1], n_o[..., 0], n_o[..., 1] = si, ci, so, co
+        e_i, e_o = n_i[..., ::-1] * _SGN_E, n_o[..., ::-1] * _SGN_E
         gi = e_i / st.d_i[..., None]                      # dα_i/dp
         go = e_o / st.d_o[..., None]                      # dα_o/dX
         if self.film is not None:
@@ -584,14 +630,16 @@ class _Problem:
         Hi = Gi + v[..., :, None] * mi[..., None, :]                     # d r_b / dp
         Ho = v[..., :, None] * mo[..., None, :] - Go                     # d r_b / dX
         s = self.scale
-        As = (A / s)[:, None, None, None]
+        As = self.As
         nb, Z = Qi.shape
         Jbb = As * (Ho - Hi)
-        Jbg = np.empty((nb, Z, 2, 4))
-        Jbg[..., :3] = As * (Hi @ self.Wt)
+        # per-ball right-hand sides [∂r_b/∂g, ∂r_b/∂ω_cage, r_b], eliminated together below
+        Jbg = np.empty((nb, Z, 2, 5))
+        np.multiply(As, Hi @ self.Wt, out=Jbg[..., :3])
         a_b = v * Mg_W[..., None]
         a_b[..., 1] += Fc_W
-        Jbg[..., 3] = a_b * (self.w_ref / s)[:, None, None]
+        np.multiply(a_b, self.wrs, out=Jbg[..., 3])
+        Jbg[..., 4] = st.r_b
         Jgb = np.empty((nb, Z, 4, 2))
         WGi = self.W @ Gi
         if self.lam_i:
@@ -600,45 +648,45 @@ class _Problem:
             Li = WGi + u * mi[..., None, :]
             Jgb[..., :3, :] = As * (u * mo[..., None, :] - Li)
             Jgg_b = Li @ self.Wt
-            a_g = (u[..., 0] * Mg_W[..., None]).sum(1) * (self.w_ref / s)[:, None]
+            S_W = (u[..., 0] * Mg_W[..., None]).sum(1) * (self.w_ref / s)[:, None]
         else:
-            Jgb[..., :3, :] = -As * WGi
+            np.multiply(-As, WGi, out=Jgb[..., :3, :])
             Jgg_b = WGi @ self.Wt
-            a_g = 0.0
-        Jgb[..., 3, :] = (A / self.w_ref)[:, None, None] * (bi - bo)
+            S_W = 0.0
+        np.multiply(self.Aw, bi - bo, out=Jgb[..., 3, :])
         S = np.empty((nb, 4, 4))
-        S[:, :3, :3] = (A / s)[:, None, None] * Jgg_b.sum(1)
-        S[:, :3, 3] = a_g
-        S[:, 3, :3] = -(A / self.w_ref)[:, None] * (bi[..., None, :] @ self.Wt)[..., 0, :].sum(1)
+        np.multiply(self.As[..., 0], Jgg_b.sum(1), out=S[:, :3, :3])
+        S[:, :3, 3] = S_W
+        S[:, 3, :3] = -self.Aw[..., 0] * (bi[..., None, :] @ self.Wt)[..., 0, :].sum(1)
         S[:, 3, 3] = 1.0
-        # per-ball 2×2 inverse
+        # per-ball 2×2 inverse [[d, −b], [−c, a]] / det
         det2 = Jbb[..., 0, 0] * Jbb[..., 1, 1] - Jbb[..., 0, 1] * Jbb[..., 1, 0]
-        tiny = 1e-14 * np.maximum(np.abs(Jbb).max(axis=(-1, -2)), 1e-300)
-        bad = np.abs(det2) < tiny ** 2
-        if np.any(bad):                                     # ball exactly at the edge of contact
+        big = np.abs(Jbb).max(axis=(-1, -2))
+        if (np.abs(det2) < (1e-14 * big) ** 2).any():      # ball exactly at the edge of contact
+            tiny = 1e-14 * np.maximum(big, 1e-300)
+            bad = np.abs(det2) < tiny ** 2
             Jbb = Jbb - (bad * tiny)[..., None, None] * np.eye(2)
             det2 = Jbb[..., 0, 0] * Jbb[..., 1, 1] - Jbb[..., 0, 1] * Jbb[..., 1, 0]
-        Binv = np.empty_like(Jbb)
-        Binv[..., 0, 0], Binv[..., 1, 1] = Jbb[..., 1, 1] / det2, Jbb[..., 0, 0] / det2
-        Binv[..., 0, 1], Binv[..., 1, 0] = -Jbb[..., 0, 1] / det2, -Jbb[..., 1, 0] / det2
-        Y = Binv @ Jbg                                      # (nb, Z, 2, 4)
-        S -= (Jgb @ Y).sum(1)
-        Br = (Binv @ st.r_b[..., None])                     # (nb, Z, 2, 1)
-        act = np.ones((nb, 4))
-        act[:, :3] = self.free_g
-        rhs = np.zeros((nb, 4))
-        rhs[:, :3] = -st.r_g
-        rhs += (Jgb @ Br)[..., 0].sum(1)
-        rhs *= act
-        S = S * (act[:, :, None] * act[:, None, :]) + np.eye(4)[None] * (1.0 - act)[:, :, None]
+        Binv = Jbb[..., ::-1, ::-1].swapaxes(-1, -2) * _SGN_2 / det2[..., None, None]
+        YB = Binv @ Jbg                                     # (nb, Z, 2, 5): Y = B⁻¹ J_bg and B⁻¹ r_b
+        T = (Jgb @ YB).sum(1)                               # (nb, 4, 5)
+        S -= T[..., :4]
+        rhs = T[..., 4]
+        rhs[:, :3] -= st.r_g
+        rhs *= self.act
+        S *= self.act2
+        S += self.eye_fix
         try:
             dG = np.linalg.solve(S, rhs[..., None])        # (nb, 4, 1)
         except np.linalg.LinAlgError:                       # a singular case: regularise it
             sd = np.abs(np.linalg.det(S))
             S = np.where((sd < 1e-300)[:, None, None], S + 1e-6 * np.eye(4)[None], S)
             dG = np.linalg.solve(S, rhs[..., None])
-        dx = -(Br + Y @ dG[:, None])[..., 0]
-        return dx, dG[:, :3, 0]
+        ext = np.empty((nb, 1, 5, 1))
+        ext[:, 0, :4] = dG
+        ext[:, 0, 4] = 1.0
+        dx = YB @ ext
+        return np.negative(dx[..., 0], out=dx[..., 0]), dG[:, :3, 0]
 
 
 def _newton(pb, x, g, tol, maxiter, st=None):
@@ -647,7 +695,7 @@ def _newton(pb, x, g, tol, maxiter, st=None):
         st = pb.state(x, g)
     norm = pb.norm(st)
     floor = np.zeros(norm.shape, bool)
-    hist = np.repeat(norm[:, None], _NONMONOTONE, axis=1)     # last accepted norms per case
+    hist = np.repeat(norm[:, None], _NONMONOTONE, axis=1)     # last accepted norms per case (a ring buffer)
     polish = np.zeros(norm.shape, int)         # steps taken after reaching tol
     it = 0
     for it in range(1, maxiter + 1):
@@ -657,63 +705,74 @@ def _newton(pb, x, g, tol, maxiter, st=None):
         # past tol, up to _POLISH more steps towards tol·1e-3: Newton converges quadratically, so
         # they cost little and fix the ill-conditioned positions of lightly loaded balls
         todo = (norm > tol * 1e-3) & ~floor & (polish < _POLISH)
-        if not np.any(todo):
+        every = bool(todo.all())
+        if not every and not todo.any():
             it -= 1
             break
-        every = bool(todo.all())
         sub = pb if every else _Sub(pb, todo)
         st_t = st if every else st.take(todo)
         dx, dg = sub.newton_step(st_t)
-        if np.any(st_t.dl_i < 0) or np.any(st_t.dl_o < 0):
-            dx = dx * sub.closing_limit(st_t, dx, dg)[..., None]
+        if (st_t.dl_i < 0).any() or (st_t.dl_o < 0).any():
+            dx *= sub.closing_limit(st_t, dx, dg)[..., None]
         # cap the step (a Hertz contact has zero stiffness where it opens: an unlimited
         # Newton step from there can throw a ball through its groove centre)
-        big = np.maximum(np.max(np.abs(dx), axis=(1, 2)), np.max(np.abs(dg), axis=1))
+        big = np.maximum(np.abs(dx).max(axis=(1, 2)), np.abs(dg).max(axis=1))
         cap = np.minimum(1.0, _STEP_CAP / np.maximum(big, 1e-300))
-        dx, dg = dx * cap[:, None, None], dg * cap[:, None]
+        dx *= cap[:, None, None]
+        dg *= cap[:, None]
         ref = hist.max(axis=1)
         x_t, g_t, n_t = (x, g, ref) if every else (x[todo], g[todo], ref[todo])
         pol = _polar(x_t, dx)
-        lam = np.ones(n_t.shape)
-        acc = np.zeros(n_t.shape, bool)
-        best_x, best_g = x_t.copy(), g_t.copy()
-        best_st = None                              # states at the accepted trial points (reused below)
-        for _ in range(30):
-            tx = _polar_move(pol, lam[:, None])
-            tg = g_t + lam[:, None] * dg
-            st_try = sub.state(tx, tg)
-            nt = sub.norm(st_try)
-            ok = (nt < (1.0 - 1e-4 * lam) * n_t) & ~acc & np.isfinite(nt)
-            if best_st is None:
-                best_st = st_try
-                best_x, best_g = np.where(ok[:, None, None], tx, best_x), np.where(ok[:, None], tg, best_g)
-            elif ok.any():
-                best_x[ok], best_g[ok] = tx[ok], tg[ok]
-                best_st.put(ok, st_try.take(ok))
-            acc |= ok
-            if acc.all():
-                break
+        # the full step first (accepted, as a rule, from the second step on)
+        tx, tg = _polar_move(pol, None), g_t + dg
+        st_try = sub.state(tx, tg)
+        nt = sub.norm(st_try)
+        ok = (nt < (1.0 - 1e-4) * n_t) & np.isfinite(nt)
+        full = bool(ok.all())
+        if full:
+            best_x, best_g, best_st, acc = tx, tg, st_try, ok
+        else:
+            lam = np.ones(n_t.shape)
+            best_st = st_try                        # states at the accepted trial points (reused below)
+            best_x, best_g = np.where(ok[:, None, None], tx, x_t), np.where(ok[:, None], tg, g_t)
+            acc = ok
             lam = np.where(acc, lam, 0.5 * lam)
-        stuck = ~acc                                # take the smallest step anyway (leave flat regions)
-        if stuck.any():
-            best_x[stuck] = _polar_move(pol, lam[:, None])[stuck]
-            best_g[stuck] = g_t[stuck] + lam[stuck, None] * dg[stuck]
+            for _ in range(29):
+                tx = _polar_move(pol, lam[:, None])
+                tg = g_t + lam[:, None] * dg
+                st_try = sub.state(tx, tg)
+                nt = sub.norm(st_try)
+                ok = (nt < (1.0 - 1e-4 * lam) * n_t) & ~acc & np.isfinite(nt)
+                if ok.any():
+                    best_x[ok], best_g[ok] = tx[ok], tg[ok]
+                    best_st.put(ok, st_try.take(ok))
+                acc |= ok
+                if acc.all():
+                    break
+                lam = np.where(acc, lam, 0.5 * lam)
+            stuck = ~acc                            # take the smallest step anyway (leave flat regions)
+            if stuck.any():
+                best_x[stuck] = _polar_move(pol, lam[:, None])[stuck]
+                best_g[stuck] = g_t[stuck] + lam[stuck, None] * dg[stuck]
         if every:
             x, g = best_x, best_g
         else:
             x, g = x.copy(), g.copy()
             x[todo], g[todo] = best_x, best_g
         prev = norm
-        if acc.all() and every:
-            st = best_st                            # every case took an evaluated trial point
+        if every and full:
+            st, norm = best_st, nt                  # every case took the full step (nt finite)
         else:
-            st = pb.state(x, g)
-        norm = pb.norm(st)
-        norm = np.where(np.isfinite(norm), norm, np.inf)
-        if not (acc.all() and np.all(lam == 1.0)):    # a damped step: look for stalled light balls
-            x, st, norm = _relax(pb, x, g, st, norm, todo)
+            if every and acc.all():
+                st = best_st                        # every case took an evaluated trial point
+            else:
+                st = pb.state(x, g)
+            norm = pb.norm(st)
+            norm = np.where(np.isfinite(norm), norm, np.inf)
+            if not (full or (acc.all() and np.all(lam == 1.0))):    # a damped step: look for stalled light balls
+                x, st, norm = _relax(pb, x, g, st, norm, todo)
         floor |= todo & (norm <= 1e-9) & (norm > 0.5 * prev)
-        hist = np.concatenate([hist[:, 1:], norm[:, None]], axis=1)
+        hist[:, it % _NONMONOTONE] = norm
         polish += todo & (prev <= tol)
     else:
         it = maxiter
@@ -785,20 +844,25 @@ def _relax(pb, x, g, st, norm, todo):
 def _polar(x, dx):
     """Ball centres x (…, 2) and a step dx in polar form about the outer groove centre: radius ρ,
     angle α_o, dρ = n_o·dx, dα = e_o·dx/ρ (n_o = (sin α_o, cos α_o), e_o = (cos α_o, −sin α_o))."""
-    rho = np.hypot(x[..., 0], x[..., 1])
-    n1, n2 = x[..., 0] / rho, x[..., 1] / rho
-    return (rho, np.arctan2(x[..., 0], x[..., 1]), n1 * dx[..., 0] + n2 * dx[..., 1],
-            (n2 * dx[..., 0] - n1 * dx[..., 1]) / rho)
+    x1, x2, d1, d2 = x[..., 0], x[..., 1], dx[..., 0], dx[..., 1]
+    rho = np.hypot(x1, x2)
+    return rho, np.arctan2(x1, x2), (x1 * d1 + x2 * d2) / rho, (x2 * d1 - x1 * d2) / (rho * rho)
 
 
 def _polar_move(pol, lam):
     """x moved by the fraction lam of the step along the polar path: (ρ + λ dρ)(sin, cos)(α + λ dα).
     To first order the Newton step itself; a ball resting on the outer race keeps its approach δ_o
     when it rolls along the race (a straight tangential step would push it into the race by
-    ≈ step²/2ρ, far more than the δ_o of a lightly loaded ball)."""
+    ≈ step²/2ρ, far more than the δ_o of a lightly loaded ball).  ``lam=None``: the full step."""
     rho, a, drho, da = pol
-    r, t = rho + lam * drho, a + lam * da
-    return np.stack([r * np.sin(t), r * np.cos(t)], axis=-1)
+    if lam is None:
+        r, t = rho + drho, a + da
+    else:
+        r, t = rho + lam * drho, a + lam * da
+    out = np.empty(r.shape + (2,))
+    np.multiply(r, np.sin(t), out=out[..., 0])
+    np.multiply(r, np.cos(t), out=out[..., 1])
+    return out
 
 
 class _Sub(_Problem):
@@ -811,6 +875,7 @@ class _Sub(_Problem):
         if pb.film is not None:
             self.film = pb.film.take(mask)
             self.fz = None if pb.fz is None else {k: v[mask] for k, v in pb.fz.items()}
+        self._prep()
 
 
 def _check_options(control, stiffness, tol, maxiter):
@@ -976,6 +1041,7 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
             sub = _Sub(pb, m)
             sub.omega = omega[m] * frac
             sub.w_ref = np.maximum(sub.omega, 1.0)
+            sub._prep()
             xstart = xs[alive].copy()
             if frac == fracs[0]:
                 xstart = _start(sub, xstart, gs[alive])
@@ -1234,8 +1300,10 @@ def _place(x1, x2, a1, a2, f1, f2, Ki, Ko, mu, tol, ci0, co0, cap):
     act = np.arange(x1.size)
     fabs = np.hypot(f1, f2)
 
+    per_ball = np.ndim(Ki) != 0
+
     def sub(v, m):
-        return v if np.ndim(v) == 0 else v[m]
+        return v[m] if per_ball else v
 
     for _ in range(_BALL_MAXIT):
         X1, X2, A1, A2, h1, h2 = x1[act], x2[act], a1[act], a2[act], f1[act], f2[act]
@@ -1268,9 +1336,13 @@ def _place(x1, x2, a1, a2, f1, f2, Ki, Ko, mu, tol, ci0, co0, cap):
         c = np.minimum(1.0, cap / np.maximum(np.hypot(d1, d2), 1e-300))
         # an open contact closes to at most the approach that carries the ball's force |f|
         for gap, dd, K in ((d_i - ci0, -(si * d1 + ci * d2), ki), (d_o - co0, so * d1 + co * d2, ko)):
+            shut = gap < 0
+            if not shut.any():
+                continue
             eta = (fa / K) ** (2.0 / 3.0)
-            over = (gap < 0) & (gap + c * dd > eta)
-            c = np.where(over, (eta - gap) / np.where(over, dd, 1.0), c)
+            over = shut & (gap + c * dd > eta)
+            if over.any():
+                c = np.where(over, (eta - gap) / np.where(over, dd, 1.0), c)
         d1, d2 = d1 * c, d2 * c
         slope = r1 * d1 + r2 * d2                                   # −∇U·dX > 0
         U0 = 0.4 * (ki * di * di * sqi + ko * do * do * sqo)
@@ -1285,6 +1357,9 @@ def _place(x1, x2, a1, a2, f1, f2, Ki, Ko, mu, tol, ci0, co0, cap):
             if acc.all():
                 break
             lam = np.where(acc, lam, 0.5 * lam)
+        if acc.all():
+            x1[act], x2[act] = X1 + lam * d1, X2 + lam * d2
+            continue
         x1[act] = np.where(acc, X1 + lam * d1, X1)
         x2[act] = np.where(acc, X2 + lam * d2, X2)
         act = act[acc]
