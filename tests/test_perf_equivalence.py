@@ -285,3 +285,117 @@ def test_cached_drag_factors_still_warn_at_every_evaluation():
     for _ in range(2):                               # the second call runs on the cached factors
         with pytest.warns(ExtrapolationWarning, match="Parker"):
             evaluate_losses(cs, s.lubricant, 50.0, oil_flow_m3_s=s.oil_flow)
+
+
+# --------------------------------------------------------------------------- scalar fast paths, fused drag
+@pytest.mark.filterwarnings("ignore::thermobear.errors.ExtrapolationWarning")
+def test_fused_drag_equals_the_public_drag_loss():
+    from thermobear.friction.drag import drag_loss
+    s, cs = _contacts_spread()                       # 0 … 12000 rpm (Parker's fraction clipped at 30 rpm)
+    oil, T_oil = s.lubricant, np.array([25.0, 40.0, 60.0, 80.0, 110.0, 140.0])
+    r = evaluate_losses(cs, oil, 60.0, T_oil_C=T_oil, oil_flow_m3_s=s.oil_flow)
+    dp = cs.__dict__["_tb_drag"][("oil_jet", float(s.oil_flow), True)]
+    run = cs.n_rpm > 0
+    ref = drag_loss(cs.brg.Z, cs.brg.D, cs.brg.dm, np.asarray(cs.omega_c)[run, 0], dp["X"][run],
+                    oil.rho(T_oil[run]), oil.eta(T_oil[run]), T_oil[run] + 273.15)
+    np.testing.assert_allclose(r.breakdown_W["drag"][run], ref.P_W, rtol=1e-12, atol=0.0)
+    assert np.all(r.breakdown_W["drag"][~run] == 0.0)
+    # the repeated operating point (coupled Newton) takes the same factors, repeated
+    cs1 = prepare_contacts(s.bearing, s.Fa, s.Fr, 8070.0)
+    P4 = _contact_powers(_repeat_contacts(cs1, 4), oil, 50.0, 50.0, T_oil[:4], oil_flow_m3_s=s.oil_flow)
+    r1 = [evaluate_losses(cs1, oil, 50.0, T_oil_C=t, oil_flow_m3_s=s.oil_flow).breakdown_W["drag"] for t in T_oil[:4]]
+    np.testing.assert_allclose(P4[2], r1, rtol=1e-12, atol=0.0)
+
+
+@pytest.mark.filterwarnings("ignore::thermobear.errors.ExtrapolationWarning")
+def test_fused_kernel_smooth_surfaces_and_sums():
+    s, cs = _contacts_spread()
+    oil, Ti, To = s.lubricant, np.linspace(20.0, 140.0, 6), np.linspace(140.0, 25.0, 6)
+    kw = dict(T_inner_C=Ti, T_outer_C=To, T_oil_C=45.0, oil_flow_m3_s=s.oil_flow)
+    rough = evaluate_losses(cs, oil, 60.0, **kw)
+    smooth = evaluate_losses(cs, oil, 60.0, Rq_ball=0.0, Rq_ring=0.0, **kw)
+    for side in ("inner", "outer"):                  # Λ = ∞: full-film friction, the same rolling forces
+        assert np.all(smooth.contacts[side]["mu"] == 0.05) and np.all(np.isinf(smooth.contacts[side]["Lambda"]))
+        np.testing.assert_array_equal(smooth.contacts[side]["F_R"], rough.contacts[side]["F_R"])
+    for r, rq in ((rough, 0.05e-6), (smooth, 0.0)):   # the sums of the Newton path = the per-contact path
+        P = _contact_powers(cs, oil, Ti, To, 45.0, oil_flow_m3_s=s.oil_flow, Rq_ball=rq, Rq_ring=2 * rq)
+        np.testing.assert_allclose(P[0], 2.0 * r.heat_W["inner_ring"], rtol=1e-12, atol=1e-300)
+        np.testing.assert_allclose(P[1], 2.0 * r.heat_W["outer_ring"], rtol=1e-12, atol=1e-300)
+
+
+def test_lubricant_scalar_path_equals_the_array_path():
+    from thermobear.errors import OutsideValidity
+    from thermobear.lubricant import lubricant
+    T = [-20.0, -3.7, 0.0, 23.5, 40.0, 77.7, 100.0, 149.9, 150.0]
+    for name in ("seed004-mineral", "seed002-mg1", "seed002-pg2", "mol-liton-00"):
+        oil = lubricant(name)
+        for prop in ("nu", "rho", "eta", "k_th", "cp"):
+            f = getattr(oil, prop)
+            arr = f(np.array(T))
+            got = np.array([f(t) for t in T])
+            np.testing.assert_allclose(got, arr, rtol=1e-14, atol=0.0, err_msg=f"{name} {prop}")
+            assert f(np.float64(50.0)) == f(50.0)
+        eta, alpha, rho = oil._eta_alpha_rho(np.array(T))             # the kernels' combined look-up
+        assert np.array_equal(eta, oil.eta(np.array(T))) and np.array_equal(rho, oil.rho(np.array(T)))
+        assert np.array_equal(alpha, oil.alpha_p_at(np.array(T)))
+    oil = lubricant("seed004-mineral")
+    with pytest.warns(ExtrapolationWarning):                          # outside T_WARN_C: the array path's warning
+        oil.eta(180.0)
+    with pytest.raises(OutsideValidity):
+        oil.rho(300.0)
+    with pytest.raises(tb.errors.InputError):
+        oil.nu(float("nan"))
+
+
+def test_element_fast_paths_equal_the_public_functions():
+    from thermobear.thermal.elements import (advection_conductance, air_properties, h_harris,
+                                             h_natural_horizontal_cylinder, h_radiation, oil_air_properties,
+                                             planar_conductance, shell_conductance)
+    net, _ = _network()
+    oil = _scene().lubricant
+    T = net.initial_T_K() + np.where(net.fixed, 0.0, np.linspace(5.0, 60.0, len(net.nodes)))
+    seen = set()
+    for e in net.elements:
+        if not e.T_dependent:
+            continue
+        Ts, Tf = float(T[e.i]), float(T[e.j])
+        p = e.p
+        if e.type == "convection" and p["correlation"] in ("harris", "flat_plate_laminar"):
+            Tc = Tf - 273.15
+            pr = oil_air_properties(np.array(p["oil_fraction"]), np.array(oil.rho(Tc)), np.array(oil.nu(Tc)),
+                                    np.array(oil.k_th(Tc)), np.array(oil.cp(Tc)), np.array(Tf))     # array path
+            ref = h_harris(pr["k"], pr["Pr"], p["u_m_s"], pr["nu"], p["x_m"], p["correlation"]) * p["A_m2"]
+        elif e.type == "convection":
+            ref = h_natural_horizontal_cylinder(np.array(Ts), np.array(Tf), np.array(p["D_m"])) * p["A_m2"]
+        elif e.type == "radiation":
+            ref = h_radiation(np.array(p["emissivity"]), np.array(Ts), np.array(Tf)) * p["A_m2"]
+        else:
+            Tc = Ts - 273.15
+            ref = advection_conductance(np.array(oil.rho(Tc)), np.array(oil.cp(Tc)), p["Q_m3_s"], p["beta"])
+        seen.add(e.type + p.get("correlation", ""))
+        for G in (e.conductance(T), e._conductance_shared(T, {}), e._conductance_shared(T.tolist(), {})):
+            assert G == pytest.approx(ref, rel=1e-14, abs=0.0), e.name
+    assert seen == {"convectionflat_plate_laminar", "convectionnatural_horizontal_cylinder", "radiation", "advection"}
+    a = air_properties(np.array(330.0))
+    assert oil_air_properties(0.0, 860.0, 20.0, 0.13, 1950.0, 330.0)["k"] == pytest.approx(float(a["k"]), rel=1e-15)
+    assert shell_conductance(42.7, 0.02, 0.025, 0.0286) == pytest.approx(
+        float(shell_conductance(np.array(42.7), 0.02, 0.025, 0.0286)), rel=1e-15)
+    assert planar_conductance(40.0, 1e-3, 0.1) == float(planar_conductance(np.array(40.0), 1e-3, 0.1))
+    with pytest.raises(tb.errors.InputError):                         # the scalar paths keep the checks
+        shell_conductance(42.7, 0.02, 0.03, 0.025)
+    with pytest.raises(tb.errors.InputError):
+        oil_air_properties(1.5, 860.0, 20.0, 0.13, 1950.0, 330.0)
+
+
+def test_ellipticity_start_table_gives_the_root_of_the_plain_iteration():
+    import sys
+    H = sys.modules["thermobear.hertz"]
+    r = np.concatenate([np.exp(np.linspace(0.0, np.log(1e5), 400)), [1.0, 1.00005, 1.0002, 5.0, 32.3]])
+    k = H.ellipticity(r)
+    k_hb = H._ellipticity_newton(r, 1.0339 * r**0.6360, 1e-13, 50)        # started at Hamrock–Brewe
+    inside = (r > 1.01) & (r < 300.0)          # near 1 and beyond 300 F(κ) is flat: the root is known to ~1e-12
+    np.testing.assert_allclose(k[inside], k_hb[inside], rtol=1e-13)
+    np.testing.assert_allclose(k, k_hb, rtol=2e-12)
+    kk = np.where(r < 1.0001, 2.0, k)                                      # the residual of the defining equation
+    res = np.where(r < 1.0001, 0.0, H._f_rho(kk) - (r - 1.0) / (r + 1.0))
+    assert np.max(np.abs(res)) <= 1e-10

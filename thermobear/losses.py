@@ -55,6 +55,7 @@ ROLLING_MODELS = ("auto", "auto_sharp", "biboulet_ivr", "biboulet_ehl", "biboule
 _SWITCH_WIDTH = 0.05   # ln-ratio width of the smooth regime switch (±5 % around a boundary)
 _XI0 = 0.3473   # root of ξ − ξ³/3 = 1/3: pure-rolling points of the Hertz strip load (Heathcote)
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(32)
+_CLIFT_GAUVIN_RE_MAX = 2e5     # range of fluids.drag.drag_sphere_correlations["Clift_Gauvin"]
 
 
 @dataclass(frozen=True)
@@ -158,6 +159,17 @@ class ContactSet:
     models_used: dict
 
 
+def _view(v, shape):
+    """A read-only view of ``v`` broadcast to ``shape`` (``np.broadcast_to`` without its overhead when
+    ``v`` has that shape already)."""
+    a = np.asarray(v)
+    if a.shape != shape:
+        return np.broadcast_to(a, shape)
+    a = a.view()
+    a.flags.writeable = False
+    return a
+
+
 def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rotating: str = "inner",
                      hertz_method: str = "exact", control: str | None = None, centrifugal: bool = True,
                      load: LoadDistribution | None = None, batch_extra: tuple = ()) -> ContactSet:
@@ -171,47 +183,57 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
     Fa_a, Fr_a = np.asarray(Fa, float), np.asarray(Fr, float)
     batch = np.broadcast_shapes(Fa_a.shape, Fr_a.shape, n.shape, tuple(batch_extra))
     Z = brg.Z
-    ld = load if load is not None else load_distribution(brg, Fa=np.broadcast_to(Fa_a, batch),
-                                                          Fr=np.broadcast_to(Fr_a, batch), M=M)
+    ld = load if load is not None else load_distribution(brg, Fa=_view(Fa_a, batch),
+                                                          Fr=_view(Fr_a, batch), M=M)
     ex = (...,) + (None,)                         # batch → batch + (Z,)
-    nb = np.broadcast_to(n, batch)
+    nb = _view(n, batch)
     omega = nb * np.pi / 30.0
     w_i = omega if rotating == "inner" else np.zeros_like(omega)
     w_o = omega if rotating == "outer" else np.zeros_like(omega)
-    ai = np.broadcast_to(ld.alpha_i, batch + (Z,))
-    ao = np.broadcast_to(ld.alpha_o, batch + (Z,))
+    ai = _view(ld.alpha_i, batch + (Z,))
+    ao = _view(ld.alpha_o, batch + (Z,))
     if control is None:
         control = "radial" if brg.kind == "thrust" else "outer"
-    Qi = np.broadcast_to(ld.Q_i, batch + (Z,)).astype(float)
-    Qo = np.broadcast_to(ld.Q_o, batch + (Z,)).astype(float)
+    Qi = _view(ld.Q_i, batch + (Z,)).astype(float)
+    Qo = _view(ld.Q_o, batch + (Z,)).astype(float)
     # one rigid cage: every ball orbits at the load-weighted mean of the balls' no-slip orbital
     # speeds (they differ when the contact angles do: combined and high-speed loads); a ball
     # outside the load zone follows the cage and rolls on the race that carries it
     free = ball_kinematics(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, control=control)
-    w_cage = common_cage_speed(np.broadcast_to(np.asarray(free.omega_c), batch + (Z,)), Qi)
-    omega_c = np.broadcast_to(np.asarray(w_cage)[ex], batch + (Z,))
+    w_cage = common_cage_speed(_view(np.asarray(free.omega_c), batch + (Z,)), Qi)
+    omega_c = _view(np.asarray(w_cage)[ex], batch + (Z,))
     if centrifugal and brg.kind != "thrust":
         Fc = 0.5 * brg.ball_mass * brg.dm * omega_c**2
         ca = np.cos(ao)
         Qo = Qo + np.where(ca > np.cos(np.deg2rad(80.0)), Fc / np.maximum(ca, 1e-3), 0.0)
     kin = caged_ball_kinematics(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, omega_c, Qi, Qo, control=control)
     Ep = brg.E_prime
-    sides = {}
-    for side, Q, al, u, spin, f in (("inner", Qi, ai, kin.u_i, kin.spin_i, brg.fi),
-                                    ("outer", Qo, ao, kin.u_o, kin.spin_o, brg.fo)):
-        Rx = brg.Rx_i(al) if side == "inner" else brg.Rx_o(al)
-        Ry = brg.Ry_i if side == "inner" else brg.Ry_o
-        u = np.broadcast_to(np.asarray(u, float), batch + (Z,))
-        c = hertz(Q, Rx, Ry, Ep, method=hertz_method)
-        a, b = np.asarray(c.a), np.asarray(c.b)
-        omega_roll = np.broadcast_to(np.asarray(kin.omega_R) * np.cos(al + np.asarray(kin.beta)), batch + (Z,))
-        Ra = deformed_radius(brg.D, f)
-        I_sl = np.where(Q > 0, _heathcote_power(1.0, Q, a, Ra, omega_roll), 0.0)
-        I_piv = 0.375 * Q * a * np.abs(np.broadcast_to(np.asarray(spin, float), batch + (Z,)))
-        MER = np.asarray(hysteresis_moment(Q, brg.D, np.maximum(Ry / Rx, 1.0)))
-        sides[side] = dict(Q=Q, alpha=al, Rx=np.broadcast_to(Rx, batch + (Z,)), Ry=Ry, a=a, b=b, u=u,
-                           spin=np.broadcast_to(np.asarray(spin, float), batch + (Z,)), omega_roll=omega_roll,
-                           I_sl=I_sl, I_piv=I_piv, P_hysteresis=MER * np.abs(omega_roll))
+    # both raceways at once, stacked on a leading axis (inner, outer): one vectorised Hertz ellipticity
+    # iteration and one pass of each loss factor
+    sh = batch + (Z,)
+    col = (2,) + (1,) * (len(batch) + 1)                        # per-raceway constants against (2, *sh)
+    Q2 = np.stack((Qi, Qo))
+    al2 = np.stack((ai, ao))
+    Rx2 = np.stack((_view(brg.Rx_i(ai), sh), _view(brg.Rx_o(ao), sh)))
+    Ry2 = np.array((brg.Ry_i, brg.Ry_o)).reshape(col)
+    c2 = hertz(Q2, Rx2, Ry2, Ep, method=hertz_method)
+    a2, b2 = np.asarray(c2.a), np.asarray(c2.b)
+    u2 = np.empty((2,) + sh)
+    u2[0], u2[1] = kin.u_i, kin.u_o
+    spin2 = np.empty((2,) + sh)
+    spin2[0], spin2[1] = kin.spin_i, kin.spin_o
+    omega_roll2 = np.empty((2,) + sh)
+    omega_roll2[...] = np.asarray(kin.omega_R) * np.cos(al2 + np.asarray(kin.beta))
+    Ra2 = np.array((deformed_radius(brg.D, brg.fi), deformed_radius(brg.D, brg.fo))).reshape(col)
+    I_sl2 = np.where(Q2 > 0, _heathcote_power(1.0, Q2, a2, Ra2, omega_roll2), 0.0)
+    I_piv2 = 0.375 * Q2 * a2 * np.abs(spin2)
+    P_hys2 = np.asarray(hysteresis_moment(Q2, brg.D, np.maximum(Ry2 / Rx2, 1.0))) * np.abs(omega_roll2)
+    for arr in (u2, spin2, omega_roll2):
+        arr.flags.writeable = False
+    sides = {side: dict(Q=Q2[k], alpha=al2[k], Rx=Rx2[k], Ry=(brg.Ry_i, brg.Ry_o)[k], a=a2[k], b=b2[k], u=u2[k],
+                        spin=spin2[k], omega_roll=omega_roll2[k], I_sl=I_sl2[k], I_piv=I_piv2[k],
+                        P_hysteresis=P_hys2[k])
+             for k, side in enumerate(("inner", "outer"))}
     models = {
         "load_distribution": ("Jones–Harris low-speed, rigid rings" + (", tilt free" if M is not None else ""),
                               "quasi-static ball loads and angles (seed 004 eqs 6–8)"),
@@ -236,26 +258,53 @@ _LN2 = float(np.log(2.0))
 _REGIME_CODES = np.array(["IVR", "IVE", "PVR", "EHL"], dtype="<U3")
 
 
+# The temperature enters a contact through ln U2 = ln η + ln(2u/(E'Rx)) and ln G = ln(α_p E') only, so
+# every power law of the film, friction and rolling formulas is exp(k_U ln η + k_G ln G + c) with c a
+# per-contact constant: the kernel evaluates them as one stacked exp (rows below) and the NVM
+# dominance ratios as affine functions of ln U2 and ln G — fewer, larger numpy calls (the contact
+# arrays are small: the calls' overhead, not the arithmetic, is the cost).
+# Rows (exponents of η and G; the rows that depend on G first): h_min, h_min^0.28 (Λ^0.28 σ^0.28),
+# F_ehl, h_c, F_ivr, c_pvr f_ivr, c_pvr f_ehl (Biboulet PVR, c_pvr = E' Rx 2a), r = 6.6/M_B,
+# 4.72 M_B^-0.39 and M_B^0.165 (the c_Bib truncation, M_B = den U2^-3/4).
+_ROW_KU = np.array([0.68, 0.28 * 0.68, 0.656, 0.67, 0.636, 2.0 / 3.0, 0.75, 0.75, 0.39 * 0.75, -0.165 * 0.75])
+_ROW_KG = np.array([0.49, 0.28 * 0.49, 0.022, 0.53])
+# NVM ratios (film._ln_asymptotes_from, ._ln_blend_ratios) with ln M = ln W − ¾ u, ln L = g + ¼ u
+# (u = ln U2, g = ln G, both floored at ln 1e-300): rows d_ri = ln H_RI − ln H_EI, d_ep = ln H_EP − ln H_RP,
+# −4 ln H_EI, 1.5 ln H_RI, −8 ln H_RP, −8 ln H_EP
+_NVM_KU = np.array([1.4, 1.0 / 12.0, -0.4, 2.25, -4.0 / 3.0, -2.0])
+_NVM_KG = np.array([0.0, 1.0 / 12.0, 0.0, 0.0, -16.0 / 3.0, -6.0])
+_SIG_K = np.array([-0.5, 0.5, 0.5]) / _SWITCH_WIDTH          # logistic weights 0.5 (1 + tanh(x/2)), x = ±d/w
+
+
 def _kernel_pre(cs: ContactSet) -> dict:
-    """Temperature-independent factors of :func:`_kernel` for both raceways, stacked (2, *batch, Z);
-    inputs checked once as :func:`thermobear.film.film_thickness` and
-    :func:`thermobear.friction.rolling.biboulet_parameters` check them.  Cached on ``cs``."""
+    """Temperature-independent factors of :func:`_kernel` for both raceways, stacked (2, *batch, Z)
+    (row constants (rows, 2, *batch, Z)); inputs checked once as :func:`thermobear.film.film_thickness`
+    and :func:`thermobear.friction.rolling.biboulet_parameters` check them.  Cached on ``cs``."""
     pre = cs.__dict__.get("_tb_kernel")
     if pre is not None:
         return pre
     from scipy.special import ellipe
 
-    from .film import _contact, _ln_asymptote_consts
+    from .film import _arr, _ln_asymptote_consts
     shape = cs.batch + (cs.brg.Z,)
     Ep = float(cs.brg.E_prime)
     sd = [cs.sides["inner"], cs.sides["outer"]]
-    for s in sd:          # the checks of film_thickness (geometry part; η and α_p are checked per call)
-        _contact(s["Q"], s["Rx"], s["Ry"], s["u"], 1.0, 1.0, Ep, True)
 
-    def st(key):
-        return np.stack([np.broadcast_to(np.asarray(s[key], float), shape) for s in sd])
+    def st(key):                      # both raceways stacked, each broadcast to (*batch, Z)
+        out = np.empty((2,) + shape)
+        out[0], out[1] = sd[0][key], sd[1][key]
+        return out
 
     Q, Rx, Ry, u, a, b = (st(k) for k in ("Q", "Rx", "Ry", "u", "a", "b"))
+    # the checks of film_thickness (thermobear.film._contact, geometry part; η and α_p are checked per call)
+    _arr("Q", Q, nonneg=True)
+    _arr("Rx", Rx, positive=True)
+    _arr("Ry", Ry, positive=True)
+    if np.any(Ry < Rx * (1.0 - 1e-12)):
+        raise InputError("Ry/Rx", Ry / Rx, "must be >= 1 (Ry transverse, Rx rolling direction; "
+                         "these formulas were fitted for Ry >= Rx)")
+    _arr("u", u, nonneg=True)
+    _arr("E_prime", Ep, positive=True)
     loaded = Q > 0
     W = Q / (Ep * Rx**2)
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -269,85 +318,103 @@ def _kernel_pre(cs: ContactSet) -> dict:
     Wl = np.where(loaded, Q, 1.0) / (Ep * Rx**2)
     beta = (4.0 / np.pi) * ellipe(1.0 - kappa**2) / (1.0 + Rx / Ry)
     den = beta**0.25 * kappa * W                               # M_B U2^(3/4) (biboulet_parameters)
-    pre = dict(
-        Q=Q, u=u, loaded=loaded, W_pos=W > 0, lnU2fac=lnU2fac,
-        # film_thickness (Hamrock–Dowson): h = C U^n G^m, C = c W^w (ellipticity factor) Rx
-        C_min=3.63 * Wl**-0.073 * (1.0 - np.exp(-0.68 * k_hd)) * Rx,
-        C_c=2.69 * Wl**-0.067 * (1.0 - 0.61 * np.exp(-0.73 * k_hd)) * Rx,
-        # lubrication_regime: ln W and the D-dependent parts of the NVM asymptotes
-        lnW=np.log(np.clip(W, 1e-300, None)), asym=_ln_asymptote_consts(Rx / Ry),
+    lnW = np.log(np.clip(W, 1e-300, None))
+    pvr_ok = (W > 0) & (lnU2fac > -np.inf)                     # Biboulet PVR defined (loaded, rolling)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        # film_thickness (Hamrock–Dowson): h = C U^n G^m, C = c W^w (ellipticity factor) Rx, U = U2/2
+        ln_hmin = np.where(loaded, np.log(3.63 * Wl**-0.073 * (1.0 - np.exp(-0.68 * k_hd)) * Rx) - 0.68 * _LN2
+                           + 0.68 * lnU2fac, -np.inf)
+        ln_hc = np.where(loaded, np.log(2.69 * Wl**-0.067 * (1.0 - 0.61 * np.exp(-0.73 * k_hd)) * Rx) - 0.67 * _LN2
+                         + 0.67 * lnU2fac, -np.inf)
         # rolling_force_houpert_ivr: 0.835 λ^-0.358 W^0.364 E' Rx² × U2^0.636
-        c_ivr=0.835 * (Rx / Ry) ** -0.358 * W**0.364 * Ep * Rx**2,
-        # rolling_force_biboulet_pvr (c_Bib truncation): E' Rx 2a × shape(U2, M_B) × C(M_B, κ)
-        den=den, p_ivr=0.77 * beta ** (-1.0 / 3.0) * kappa**0.12, p_ehl=1.8 * beta**-0.25,
-        c_pvr=Ep * Rx * 2.0 * a, ln_kappa=np.log(kappa),
+        ln_ivr = np.log(0.835 * (Rx / Ry) ** -0.358 * W**0.364 * Ep * Rx**2) + 0.636 * lnU2fac
+        # rolling_force_biboulet_pvr (c_Bib truncation): E' Rx 2a × (f_ivr r + f_ehl)/(1 + r) × C(M_B, κ),
+        # f_ivr = 0.77 β^-1/3 κ^0.12 U2^2/3, f_ehl = 1.8 β^-1/4 U2^3/4, r = 6.6/M_B, M_B = den U2^-3/4
+        ln_pvr = np.log(Ep * Rx * 2.0 * a)
+        ln_f_ivr = ln_pvr + np.log(0.77 * beta ** (-1.0 / 3.0) * kappa**0.12) + (2.0 / 3.0) * lnU2fac
+        ln_f_ehl = ln_pvr + np.log(1.8 * beta**-0.25) + 0.75 * lnU2fac
+        ln_den = np.log(den)
+        ln_r = np.where(pvr_ok, np.log(6.6) - ln_den + 0.75 * lnU2fac, -np.inf)
+        ln_m1 = np.where(pvr_ok, np.log(4.72) - 0.39 * ln_den + 0.39 * 0.75 * lnU2fac, 0.0)
+        ln_m2 = np.where(pvr_ok, 0.165 * ln_den - 0.165 * 0.75 * lnU2fac, 0.0)
         # rolling_force_houpert_ehl: 0.674 κ^-0.043 (2a/Rx) (κW)^0.133 E' Rx² × G^0.022 U2^0.656
-        c_ehl=0.674 * kappa**-0.043 * (2.0 * a / Rx) * (kappa * W) ** 0.133 * Ep * Rx**2,
+        ln_ehl = np.log(0.674 * kappa**-0.043 * (2.0 * a / Rx) * (kappa * W) ** 0.133 * Ep * Rx**2) + 0.656 * lnU2fac
+    c_RI, c_EI, c_RP, c_EP, ln_h00 = _ln_asymptote_consts(Rx / Ry)
+    A_RI, A_EI, A_EP = c_RI - 2.0 * lnW, c_EI - (2.0 / 15.0) * lnW, c_EP - lnW / 12.0
+    I_sl, I_piv, P_hys = st("I_sl"), st("I_piv"), st("P_hysteresis")
+    pre = dict(
+        u=u, loaded=loaded, lnU2fac=lnU2fac, lnW=lnW,
+        rows=np.stack([ln_hmin, 0.28 * ln_hmin, ln_ehl, ln_hc, ln_ivr, ln_f_ivr, ln_f_ehl, ln_r, ln_m1, ln_m2]),
+        nvm=np.stack([A_RI - A_EI, A_EP - c_RP, -4.0 * A_EI, 1.5 * A_RI, -8.0 * c_RP, -8.0 * A_EP]),
+        nvm_h00=-4.0 * ln_h00, k_kappa=0.484 * np.log(kappa),
         # per unit μ, and hysteresis (temperature independent: prepare_contacts)
-        I_sl=st("I_sl"), I_piv=st("I_piv"), P_hys=st("P_hysteresis"),
+        I_sl=I_sl, I_piv=I_piv, I_sp=I_sl + I_piv, P_hys=P_hys, two_u=2.0 * u,
     )
     cs.__dict__["_tb_kernel"] = pre
     return pre
 
 
-def _kernel(pre, eta, alpha_p, Ep, sigma, mu_e, mu_a, *, rolling=True, full=False):
+def _kernel(pre, eta, alpha_p, Ep, sigma, mu_e, mu_a, *, rolling=True, full=False, sums=False):
     """Temperature-dependent part of the local model on both raceways at once [SI].
 
     ``eta`` [Pa s], ``alpha_p`` [1/Pa] broadcast against the stacked contacts (2, *batch, Z) of
     ``pre`` (:func:`_kernel_pre`); ``sigma`` composite roughness [m] (0: smooth, Λ = ∞).  Returns a
     dict: mu, h_min [m], Lambda, P_rolling (``rolling``), P_sliding, P_pivoting [W] and, with ``full``, h_c
-    [m], F_R [N], regime codes, Moes M, L.  Same formulas as film_thickness (Hamrock–Dowson),
-    lubrication_regime (NVM dominance), mixed_friction_ianus (seed 000 eq 18) and the smooth
-    regime-weighted rolling force of :func:`_rolling_auto_smooth` (seed 004 eqs 17–19), written in
-    logarithms of U2 = 2ηu/(E'Rx) and G = α_p E' so that one exp gives each power."""
-    from .film import _ln_asymptotes_from, _ln_blend_ratios
+    [m], F_R [N], regime codes, Moes M, L; with ``sums`` only the contact power summed over the balls
+    (2, *batch) [W] (rolling + sliding + pivoting + hysteresis).  Same formulas as film_thickness
+    (Hamrock–Dowson), lubrication_regime (NVM dominance), mixed_friction_ianus (seed 000 eq 18) and the
+    smooth regime-weighted rolling force of :func:`_rolling_auto_smooth` (seed 004 eqs 17–19), written
+    in logarithms of U2 = 2ηu/(E'Rx) and G = α_p E' so that one exp gives each power."""
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        le = np.log(eta)
         lnG = np.log(alpha_p * Ep)
-        lnU2 = np.log(eta) + pre["lnU2fac"]                                     # −inf at u = 0
+        lnU2 = le + pre["lnU2fac"]                                              # −inf at u = 0
         loaded = pre["loaded"]
-        # film (film_thickness, Hamrock–Dowson): U^0.68 G^0.49, U = U2/2
-        h_min = np.where(loaded, np.exp(0.68 * (lnU2 - _LN2) + 0.49 * lnG) * pre["C_min"], 0.0)
-        Lam = h_min / sigma if sigma > 0 else np.full_like(h_min, np.inf)
-        phi = np.minimum(0.82 * (Lam if sigma > 0 else np.full_like(h_min, 1e6))**0.28, 1.0)  # mixed_friction_ianus
-        mu = np.asarray(mu_e) * phi + np.asarray(mu_a) * (1.0 - phi)
-        out = dict(mu=mu, h_min=h_min, Lambda=Lam, P_sliding=mu * pre["I_sl"], P_pivoting=mu * pre["I_piv"])
+        nd = (1,) * le.ndim
+        arg = _ROW_KU.reshape((-1,) + nd) * le
+        arg[:4] += _ROW_KG.reshape((-1,) + nd) * lnG
+        E = np.exp(arg + pre["rows"])
+        h_min = E[0]                                                            # film_thickness, kind="min"
+        if sigma > 0:                                                           # mixed_friction_ianus
+            mu = mu_a + (np.asarray(mu_e) - mu_a) * np.minimum(E[1] * (0.82 * sigma**-0.28), 1.0)
+        else:                                                                   # smooth: Λ = ∞, φ = 1
+            mu = np.broadcast_to(np.asarray(mu_e, float), h_min.shape)
         if not (rolling or full):
-            return out
+            Lam = h_min / sigma if sigma > 0 else np.full_like(h_min, np.inf)
+            return dict(mu=mu, h_min=h_min, Lambda=Lam, P_sliding=mu * pre["I_sl"], P_pivoting=mu * pre["I_piv"])
         # regime (lubrication_regime): dominance ratios of the NVM blend
-        lnU2r = np.maximum(lnU2, _LN_TINY)
-        lnM = pre["lnW"] - 0.75 * lnU2r
-        lnL = np.maximum(lnG, _LN_TINY) + 0.25 * lnU2r
-        d_ip, d_ri, d_ep = _ln_blend_ratios(*_ln_asymptotes_from(pre["asym"], lnM, lnL))
+        u = np.maximum(lnU2, _LN_TINY)
+        g = np.maximum(lnG, _LN_TINY)
+        nvm = _NVM_KU.reshape((-1,) + nd) * u + (_NVM_KG.reshape((-1,) + nd) * g + pre["nvm"])
+        ln_EIc15 = -0.375 * np.logaddexp(nvm[2], pre["nvm_h00"])               # 1.5 ln H_EI' (h00 cap)
+        d_ip = ((2.0 / 3.0) * np.logaddexp(nvm[3], ln_EIc15)                  # ln iso − ln piezo
+                + 0.125 * np.logaddexp(nvm[4], nvm[5]))
+        # smooth selection (_rolling_auto_smooth): logistic weights of the ln ratios
+        s_piezo, s_ri, s_rp = 0.5 + 0.5 * np.tanh(
+            np.clip(np.stack((d_ip, nvm[0], nvm[1])), _LN_TINY, 700.0) * _SIG_K.reshape((-1,) + nd))
         if rolling:
             # the three rolling forces (rolling_force_houpert_ivr / _biboulet_pvr / _houpert_ehl)
-            U2_75 = np.exp(0.75 * lnU2)
-            F_ivr = pre["c_ivr"] * np.exp(0.636 * lnU2)
-            f_ivr = pre["p_ivr"] * np.exp((2.0 / 3.0) * lnU2)
-            f_ehl = pre["p_ehl"] * U2_75
-            den = pre["den"]
-            r = np.where(den > 0, 6.6 * U2_75 / np.where(den > 0, den, 1.0), np.inf)   # 6.6/M_B
-            shape = np.where(np.isinf(r), f_ivr, (f_ivr * r + f_ehl) / (1.0 + r))
-            lnMB = np.log(den) - 0.75 * lnU2                                        # ln M_B
-            c = np.where(lnMB > -np.inf, 0.85 / (1.0 + 4.72 * np.exp(-0.39 * lnMB)
-                                                 * np.exp(0.484 * np.exp(0.165 * lnMB) * pre["ln_kappa"])), 0.0)
-            C = 1.0 / (1.0 + np.where(c > 0, 1.0 / np.where(c > 0, c, 1.0) - 1.0, np.inf))
-            F_pvr = np.where(pre["W_pos"] & (lnU2 > -np.inf), pre["c_pvr"] * shape * C, 0.0)
-            F_ehl = pre["c_ehl"] * np.exp(0.022 * lnG + 0.656 * lnU2)
-            # smooth selection (_rolling_auto_smooth): logistic weights of the ln ratios
-            w = _SWITCH_WIDTH
-            s_piezo = _sigmoid(-np.clip(d_ip, _LN_TINY, 700.0) / w)
-            s_ri = _sigmoid(np.clip(d_ri, _LN_TINY, 700.0) / w)
-            s_rp = _sigmoid(np.clip(d_ep, _LN_TINY, 700.0) / w)
-            iso = s_ri * F_ivr + (1.0 - s_ri) * F_pvr
-            piezo = s_rp * F_pvr + (1.0 - s_rp) * F_ehl
-            F_R = np.where(loaded, (1.0 - s_piezo) * iso + s_piezo * piezo, 0.0)
-            out.update(F_R=F_R, P_rolling=2.0 * pre["u"] * F_R)
+            F_ivr, F_ehl, r = E[4], E[2], E[7]
+            C = 0.85 / (1.0 + E[8] * np.exp(pre["k_kappa"] * E[9]))                 # c_Bib(M_B, κ)
+            # (the row constants are −inf where a force is undefined or zero — unloaded, u = 0 —, so
+            # these forces, and F_R, are exactly 0 there without masks)
+            F_pvr = (E[5] * r + E[6]) / (1.0 + r) * C
+            iso = F_pvr + s_ri * (F_ivr - F_pvr)
+            piezo = F_ehl + s_rp * (F_pvr - F_ehl)
+            F_R = iso + s_piezo * (piezo - iso)
+            if sums:
+                return (F_R * pre["two_u"] + mu * pre["I_sp"] + pre["P_hys"]).sum(-1)
+        Lam = h_min / sigma if sigma > 0 else np.full_like(h_min, np.inf)
+        out = dict(mu=mu, h_min=h_min, Lambda=Lam, P_sliding=mu * pre["I_sl"], P_pivoting=mu * pre["I_piv"])
+        if rolling:
+            out.update(F_R=F_R, P_rolling=pre["two_u"] * F_R)
         if full:
-            out["h_c"] = np.where(loaded, np.exp(0.67 * (lnU2 - _LN2) + 0.53 * lnG) * pre["C_c"], 0.0)
-            idx = np.where(d_ip >= 0, np.where(d_ri >= 0, 0, 1), np.where(d_ep >= 0, 2, 3))
+            out["h_c"] = E[3]
+            idx = np.where(d_ip >= 0, np.where(nvm[0] >= 0, 0, 1), np.where(nvm[1] >= 0, 2, 3))
             out["regime"] = _REGIME_CODES[np.where(loaded, idx, 0)]
+            lnM = pre["lnW"] - 0.75 * u
             out["M"] = np.where(loaded, np.exp(np.clip(lnM, -700.0, 700.0)), 0.0)
-            out["L"] = np.exp(np.clip(lnL, -700.0, 700.0))
+            out["L"] = np.exp(np.clip(g + 0.25 * u, -700.0, 700.0))
     return out
 
 
@@ -358,6 +425,13 @@ def _drag_pre(cs: ContactSet, supply: str, oil_flow_m3_s: float, dragged: bool) 
     key = (supply, float(oil_flow_m3_s), dragged)
     if key in cache:
         return cache[key]
+    rep = cs.__dict__.get("_tb_repeat_of")
+    if rep is not None:                  # a repeated operating point: its factors, repeated
+        base, n = rep
+        d = {k: (v[None].repeat(n, axis=0) if isinstance(v, np.ndarray) else v)
+             for k, v in _drag_pre(base, supply, oil_flow_m3_s, dragged).items()}
+        cache[key] = d
+        return d
     brg, batch, nb = cs.brg, cs.batch, cs.n_rpm
     # cage speed: prepare_contacts already puts every ball at the one cage speed (common_cage_speed)
     wc_mean = np.asarray(cs.omega_c)[..., 0]
@@ -378,47 +452,61 @@ def _drag_pre(cs: ContactSet, supply: str, oil_flow_m3_s: float, dragged: bool) 
         wc = np.maximum(wc_mean, 1e-12)
         if np.any(~np.isfinite(wc) | (wc <= 0)):
             raise InputError("omega_c", wc, "must be finite and > 0")
-        d.update(X=X, v=wc * brg.dm / 2.0, run=nb > 0)
+        v = wc * brg.dm / 2.0
+        # Re = ρ v D / μ, P = ρ C_d Z (π D²/4)/2 |v|³ (drag_loss)
+        d.update(X=X, X1=1.0 - X, v=v, vD=v * brg.D, K=brg.Z * ((np.pi * brg.D ** 2 / 4.0) / 2.0) * np.abs(v) ** 3,
+                 run=nb > 0)
     cache[key] = d
     return d
 
 
 def _drag_kernel(cs, dp, oil, Tm, rho_oil, mu_oil):
-    """Drag power of the balls [W] (:func:`thermobear.friction.drag.drag_loss`, Pouly 2010, seed 004
-    eq 21) at mixture temperatures ``Tm`` [°C] with the oil's density and viscosity there."""
+    """Drag power of the balls [W] (:func:`thermobear.friction.drag.drag_loss` with the default
+    Clift–Gauvin sphere drag, Pouly 2010, seed 004 eq 21) at mixture temperatures ``Tm`` [°C] with the
+    oil's density and viscosity there."""
     from .air import air_properties
-    from .friction.drag import drag_coefficient_sphere
     for w in dp.get("warn", ()):
         warnings.warn(w[0], w[1], stacklevel=3)
-    brg = cs.brg
-    air = air_properties(np.asarray(Tm, float) + 273.15)
-    X = dp["X"]
-    rho_mix = X * rho_oil + (1.0 - X) * air["rho"]
-    mu_mix = X * mu_oil + (1.0 - X) * air["mu"]
-    v = dp["v"]
-    Re = rho_mix * v * brg.D / mu_mix
-    c_d = np.asarray(drag_coefficient_sphere(Re), float)
-    P = rho_mix * c_d * brg.Z * ((np.pi * brg.D ** 2 / 4.0) / 2.0) * np.abs(v) ** 3
-    return np.where(dp["run"], P, 0.0)
+    Tm = np.asarray(Tm, float)
+    if Tm.size <= 8:                  # a few states: the table's scalar path (same values, no spline call)
+        air = {}
+        for t in Tm.ravel().tolist():
+            if t not in air:
+                air[t] = air_properties(t + 273.15)
+        rho_a = np.array([air[t]["rho"] for t in Tm.ravel().tolist()]).reshape(Tm.shape)
+        mu_a = np.array([air[t]["mu"] for t in Tm.ravel().tolist()]).reshape(Tm.shape)
+    else:
+        air = air_properties(Tm + 273.15)
+        rho_a, mu_a = air["rho"], air["mu"]
+    X, X1 = dp["X"], dp["X1"]
+    rho_mix = X * rho_oil + X1 * rho_a
+    mu_mix = X * mu_oil + X1 * mu_a
+    Re = rho_mix * dp["vD"] / mu_mix
+    if Re.min() > 0.0 and Re.max() <= _CLIFT_GAUVIN_RE_MAX:
+        # fluids.drag.Clift_Gauvin (Clift & Gauvin 1970), as drag_coefficient_sphere evaluates it
+        c_d = 24. / Re * (1 + 0.152 * Re**0.677) + 0.417 / (1 + 5070 * Re**-0.94)
+    else:                                   # outside its range (or invalid): its warning or error
+        from .friction.drag import drag_coefficient_sphere
+        c_d = np.asarray(drag_coefficient_sphere(Re), float)
+    return np.where(dp["run"], rho_mix * c_d * dp["K"], 0.0)
 
 
 def _repeat_contacts(cs: ContactSet, n: int) -> ContactSet:
     """``cs`` (one operating point, batch ()) repeated ``n`` times as a batch (n,): the contacts of
     :func:`prepare_contacts` with ``n_rpm = np.full(n, ...)`` and the same load, without recomputing
-    them (read-only broadcast views; the kernel factors are shared)."""
+    them (repeated copies; the kernel and drag factors are those of ``cs``, repeated)."""
     if cs.batch != ():
         raise InputError("contacts", cs.batch, "must hold one operating point to be repeated")
 
     def rep(v):
-        v = np.asarray(v)
-        return np.broadcast_to(v, (n,) + v.shape)
+        return np.asarray(v)[None].repeat(n, axis=0)
 
     sides = {side: {k: (v if k == "Ry" else rep(v)) for k, v in sd.items()} for side, sd in cs.sides.items()}
     out = ContactSet(brg=cs.brg, batch=(n,), n_rpm=rep(cs.n_rpm), omega=rep(cs.omega), load=cs.load,
                      omega_c=rep(cs.omega_c), sides=sides, models_used=cs.models_used)
-    pre = _kernel_pre(cs)
-    out.__dict__["_tb_kernel"] = {k: (tuple(x[:, None] for x in v) if k == "asym" else v[:, None])
-                                  for k, v in pre.items()}
+    pre = _kernel_pre(cs)          # (…, Z) → (…, 1, Z): the batch axis before the balls
+    out.__dict__["_tb_kernel"] = {k: v[..., None, :] for k, v in pre.items()}
+    out.__dict__["_tb_repeat_of"] = (cs, n)
     return out
 
 
@@ -430,24 +518,54 @@ def _contact_powers(cs: ContactSet, oil, T_inner_C, T_outer_C, T_oil_C, *, suppl
     :func:`evaluate_losses` reports, without the per-contact detail (the coupled solvers' inner loop)."""
     batch = cs.batch
     pre = _kernel_pre(cs)
-    dragged = drag and supply not in ("oil_bath", "dry_film") and bool(np.any(cs.n_rpm > 0))
-    T = [np.broadcast_to(np.asarray(T_inner_C, float), batch), np.broadcast_to(np.asarray(T_outer_C, float), batch)]
+    dragged = drag and supply not in ("oil_bath", "dry_film") and _running(cs)
+    T = np.empty((3 if dragged else 2,) + batch)          # the temperatures broadcast to the batch
+    T[0], T[1] = T_inner_C, T_outer_C
     if dragged:
-        T.append(np.broadcast_to(np.asarray(T_oil_C, float), batch))
-    T = np.stack(T)
-    eta_b = np.asarray(oil.eta(T), float)
-    alpha_p = np.asarray(oil.alpha_p_at(T[:2]), float)[..., None]
+        T[2] = T_oil_C
+    eta_b, alpha_b, rho_b = _oil_props(oil, T)
+    alpha_p = alpha_b[:2][..., None]
     eta = eta_b[:2][..., None]
     from .film import _arr
     _arr("eta", eta, positive=True)
     _arr("alpha_p", alpha_p, positive=True, nonneg=True)
     sigma = float(np.hypot(Rq_ball, Rq_ring)) if (Rq_ball or Rq_ring) else 0.0
-    k = _kernel(pre, eta, alpha_p, cs.brg.E_prime, sigma, mu_full_film, mu_boundary)
-    Pc = (k["P_rolling"] + k["P_sliding"] + k["P_pivoting"] + pre["P_hys"]).sum(-1)
+    Pc = _kernel(pre, eta, alpha_p, cs.brg.E_prime, sigma, mu_full_film, mu_boundary, sums=True)
     dp = _drag_pre(cs, supply, oil_flow_m3_s, dragged)
-    P_drag = (_drag_kernel(cs, dp, oil, T[2], np.asarray(oil.rho(T[2]), float), eta_b[2]) if dragged
-              else np.zeros(batch))
-    return np.concatenate([Pc, np.broadcast_to(P_drag, batch)[None]])
+    out = np.empty((3,) + batch)
+    out[:2] = Pc
+    out[2] = _drag_kernel(cs, dp, oil, T[2], rho_b[2], eta_b[2]) if dragged else 0.0
+    return out
+
+
+def _oil_props(oil, T):
+    """η [Pa s], α_p [1/Pa], ρ [kg/m³] of the lubricant at temperatures ``T`` [°C] (an array): one
+    look-up for a :class:`~thermobear.lubricant.Lubricant`, else its three public methods."""
+    f = getattr(oil, "_eta_alpha_rho", None)
+    if f is not None:
+        return f(T)
+    return (np.asarray(oil.eta(T), float), np.asarray(oil.alpha_p_at(T), float), np.asarray(oil.rho(T), float))
+
+
+def _running(cs: ContactSet) -> bool:
+    """Any operating point of ``cs`` turning (n > 0); cached on ``cs``."""
+    run = cs.__dict__.get("_tb_running")
+    if run is None:
+        run = cs.__dict__["_tb_running"] = bool(np.any(cs.n_rpm > 0))
+    return run
+
+
+def _bc(v, shape):
+    """``np.broadcast_to(v, shape)``, or ``v`` itself (as an array) when it has that shape already."""
+    a = np.asarray(v)
+    return a if a.shape == shape else np.broadcast_to(a, shape)
+
+
+def _filled(v, shape):
+    """A new array of ``shape`` filled with (broadcast) ``v``."""
+    out = np.empty(shape)
+    out[...] = v
+    return out
 
 
 def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=None, T_oil_C=None,
@@ -473,7 +591,7 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     Toil = np.asarray(T_C if T_oil_C is None else T_oil_C, float)
     for nm, v in (("T_C", T_C_a), ("T_oil_C", Toil)):
         try:
-            np.broadcast_to(v, batch)
+            _bc(v, batch)
         except ValueError:
             raise InputError(nm, v, f"must broadcast to the operating points {batch}") from None
     Ep = brg.E_prime
@@ -483,25 +601,24 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
             Ts[side] = T_side                                   # one temperature per ball
         else:                                                   # one per operating point
             try:
-                Ts[side] = np.broadcast_to(np.broadcast_to(T_side, batch)[..., None], shape)
+                Ts[side] = _filled(_bc(T_side, batch)[..., None], shape)
             except ValueError:
                 name = "T_C" if (T_side is T_C_a) else f"T_{side}_C"
                 raise InputError(name, T_side, f"must broadcast to the operating points {batch} "
                                  f"(or be per ball, {shape})") from None
     pre = _kernel_pre(cs)
-    nb = cs.n_rpm
-    dragged = drag and supply not in ("oil_bath", "dry_film") and bool(np.any(nb > 0))
+    dragged = drag and supply not in ("oil_bath", "dry_film") and _running(cs)
     # lubricant properties: one call per property for both raceways (and the mixture, for drag)
     per_ball = Ti.shape == shape or To.shape == shape
     if per_ball:
         eta = np.stack([np.asarray(oil.eta(Ts[k]), float) for k in ("inner", "outer")])
         alpha_p = np.stack([np.asarray(oil.alpha_p_at(Ts[k]), float) for k in ("inner", "outer")])
     else:
-        Tb = [np.broadcast_to(Ti, batch), np.broadcast_to(To, batch)]
+        Tb = [_bc(Ti, batch), _bc(To, batch)]
         if dragged:
-            Tb.append(np.broadcast_to(Toil, batch))
-        eta_b = np.asarray(oil.eta(np.stack(Tb)), float)
-        alpha_p = np.asarray(oil.alpha_p_at(np.stack(Tb[:2])), float)[..., None]
+            Tb.append(_bc(Toil, batch))
+        eta_b, alpha_b, rho_b = _oil_props(oil, np.stack(Tb))
+        alpha_p = alpha_b[:2][..., None]
         eta = eta_b[:2][..., None]
     from .film import _arr
     _arr("eta", eta, positive=True)                      # the checks of film_thickness (temperature part)
@@ -526,14 +643,14 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
             F_R.append(np.where(sd["Q"] > 0, np.asarray(f), 0.0))
         F_R = np.stack(F_R)
         k["P_rolling"] = 2.0 * pre["u"] * F_R
-    regimes_seen = set(np.unique(code).tolist())
+    regimes_seen = set(code.ravel().tolist())
     P_roll, P_sl, P_piv, P_hys = k["P_rolling"], k["P_sliding"], k["P_pivoting"], pre["P_hys"]
     heat_c = (P_roll + P_sl + P_piv + P_hys).sum(-1)
     out_c = {}
     for i, side in enumerate(("inner", "outer")):
         sd = cs.sides[side]
         out_c[side] = dict(Q=sd["Q"], alpha=sd["alpha"], a=sd["a"], b=sd["b"], u=sd["u"], T_C=Ts[side],
-                           eta=np.array(np.broadcast_to(eta[i], shape)), h_min=k["h_min"][i], h_c=k["h_c"][i],
+                           eta=_filled(eta[i], shape), h_min=k["h_min"][i], h_c=k["h_c"][i],
                            Lambda=k["Lambda"][i], regime=code[i], mu=k["mu"][i], F_R=F_R[i], spin=sd["spin"],
                            P_rolling=P_roll[i], P_sliding=P_sl[i], P_pivoting=P_piv[i], P_hysteresis=sd["P_hysteresis"],
                            M=k["M"][i], L=k["L"][i])
@@ -545,14 +662,17 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     dp = _drag_pre(cs, supply, oil_flow_m3_s, dragged)
     wc_mean = dp["wc_mean"]
     if dragged:
-        Tm = np.broadcast_to(Toil, batch)
-        eta_m = eta_b[2] if not per_ball else np.asarray(oil.eta(Tm), float)
-        P_drag = _drag_kernel(cs, dp, oil, Tm, np.asarray(oil.rho(Tm), float), eta_m)
+        Tm = _bc(Toil, batch)
+        if per_ball:
+            eta_m, rho_m = np.asarray(oil.eta(Tm), float), np.asarray(oil.rho(Tm), float)
+        else:
+            eta_m, rho_m = eta_b[2], rho_b[2]
+        P_drag = _drag_kernel(cs, dp, oil, Tm, rho_m, eta_m)
     else:
         P_drag = np.zeros(batch)
     totals["drag"] = P_drag
-    breakdown = {k: _as(np.broadcast_to(v, batch)) for k, v in totals.items()}
-    P = sum(np.broadcast_to(v, batch) for v in totals.values())
+    breakdown = {k: _as(_bc(v, batch)) for k, v in totals.items()}
+    P = sum(_bc(v, batch) for v in totals.values())
     omega = cs.omega
     with np.errstate(divide="ignore", invalid="ignore"):
         torque = np.where(omega > 0, P / np.where(omega > 0, omega, 1.0), 0.0)

@@ -27,6 +27,7 @@ Data: ``materials/lubricants/<name>.toml`` (see :func:`lubricant_names`).
 """
 from __future__ import annotations
 
+import math
 import warnings
 
 import numpy as np
@@ -290,6 +291,12 @@ def _out(x, like):
     return float(x) if np.ndim(like) == 0 else np.asarray(x, dtype=float)
 
 
+def _plain(T_C) -> bool:
+    """True for one temperature [°C] as a Python or numpy float inside T_WARN_C (no check, warning or
+    error to give: the scalar fast path of :class:`Lubricant` applies)."""
+    return type(T_C) in (float, np.float64) and T_WARN_C[0] <= T_C <= T_WARN_C[1]
+
+
 def _positive(field, v):
     if v is None or not np.isfinite(v) or v <= 0:
         raise InputError(field, v, "must be finite and > 0")
@@ -459,22 +466,60 @@ class Lubricant:
                           stacklevel=3)
         return T
 
+    # -- scalar fast path -----------------------------------------------------
+    # The thermal elements ask for one temperature at a time, many times per coupled solve: a
+    # Python float inside T_WARN_C is evaluated with ``math`` (the formulas of walther_nu and
+    # density_api; equal to the array path to rounding), anything else takes the array path
+    # (its checks, warnings and errors).
+    def _nu_s(self, T):
+        Z = 10.0 ** (10.0 ** (self.walther_A - self.walther_B * math.log10(T + ZERO_C_K)))
+        x = Z - 0.7
+        return x - math.exp(-0.7487 - 3.295 * x + 0.6119 * (x * x) - 0.3193 * (x * x * x))
+
+    def _rho_s(self, T):
+        a = _K1_API_LUBE / self.rho15
+        dT = T - 15.0
+        return self.rho15 * math.exp(-a * dT * (1.0 + 0.8 * a * dT))
+
     # -- properties -----------------------------------------------------------
     def nu(self, T_C):
         """Kinematic viscosity [cSt] at T_C [°C], ASTM D341 (see :func:`walther_nu`)."""
+        if _plain(T_C):
+            return self._nu_s(float(T_C))
         T = self._T(T_C, "nu")
         return _out(walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K), T_C)
 
     def rho(self, T_C):
         """Density [kg/m³] at T_C [°C] (see :func:`density_api`)."""
+        if _plain(T_C):
+            return self._rho_s(float(T_C))
         T = self._T(T_C, "rho")
         return _out(density_api(self.rho15, T), T_C)
 
     def eta(self, T_C):
         """Dynamic viscosity [Pa s] at T_C [°C]: η = ν [cSt] × 1e-6 × ρ [kg/m³] (PHYSICS.md §12.2)."""
+        if _plain(T_C):
+            T = float(T_C)
+            return self._nu_s(T) * 1e-6 * self._rho_s(T)
         T = self._T(T_C, "eta")
         nu = walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K)
         return _out(nu * 1e-6 * density_api(self.rho15, T), T_C)
+
+    def _eta_alpha_rho(self, T_C):
+        """(η [Pa s], α_p [1/Pa], ρ [kg/m³]) at the temperatures ``T_C`` [°C] (arrays): :meth:`eta`,
+        :meth:`alpha_p_at` and :meth:`rho` with one temperature check and the viscosity and density
+        computed once (the loss kernels' look-up; same values)."""
+        T = self._T(T_C, "eta")
+        nu = walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K)
+        rho = density_api(self.rho15, T)
+        if self.gold_s is not None:
+            alpha = gold_alpha_p(nu, self.gold_s, self.gold_t)
+        elif self.alpha_p is None:
+            raise InputError(f"lubricant[{self.name}].alpha_p", None,
+                             "unknown: give alpha_p [1/Pa] or Gold coefficients gold_s, gold_t")
+        else:
+            alpha = np.full(np.shape(T), self.alpha_p)
+        return nu * 1e-6 * rho, alpha, rho
 
     def alpha_p_at(self, T_C):
         """Pressure–viscosity coefficient [1/Pa] at T_C [°C].
@@ -493,6 +538,11 @@ class Lubricant:
 
     def k_th(self, T_C):
         """Thermal conductivity [W/(m K)] at T_C [°C]: constant, or Cragoe (1929) (:func:`cragoe_k_th`)."""
+        if _plain(T_C):
+            T = float(T_C)
+            if self._k_th is not None:
+                return self._k_th
+            return 0.117257 / (self.rho15 / _RHO_WATER_15_KG_M3) * (1.0 - 0.00054 * T)
         T = self._T(T_C, "k_th")
         if self._k_th is not None:
             return _out(np.full(np.shape(T), self._k_th), T_C)
@@ -500,6 +550,11 @@ class Lubricant:
 
     def cp(self, T_C):
         """Specific heat [J/(kg K)] at T_C [°C]: constant, or Cragoe (1929) (:func:`cragoe_cp`)."""
+        if _plain(T_C):
+            T = float(T_C)
+            if self._cp is not None:
+                return self._cp
+            return (1684.8 + 3.391 * T) / math.sqrt(self.rho15 / _RHO_WATER_15_KG_M3)
         T = self._T(T_C, "cp")
         if self._cp is not None:
             return _out(np.full(np.shape(T), self._cp), T_C)

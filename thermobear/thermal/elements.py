@@ -24,6 +24,7 @@ live here; which element joins which nodes is data (``networks/*.toml``).
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -31,7 +32,10 @@ import numpy as np
 from .._arrays import _within
 from scipy.special import ellipk
 
+from ..air import T_RANGE_K as _AIR_T_RANGE_K
+from ..air import air_properties as _air_properties
 from ..errors import InputError
+from ..lubricant import T_VALID_C as _T_VALID_C
 
 __all__ = [
     "SIGMA_SB", "shell_conductance", "planar_conductance", "constriction_resistance",
@@ -60,6 +64,19 @@ def _out(x):
     return float(x) if np.ndim(x) == 0 else x
 
 
+_FLOATS = (float, np.float64)
+
+
+def _floats(*vs) -> bool:
+    """True when every value is one Python (or numpy) float: the scalar fast paths below apply."""
+    return all(type(v) in _FLOATS for v in vs)
+
+
+def _all_pos(*vs) -> bool:
+    """Floats all finite and > 0 (the check of :func:`_pos`)."""
+    return all(0.0 < v < math.inf for v in vs)
+
+
 # ---------------------------------------------------------------------------
 # conduction
 # ---------------------------------------------------------------------------
@@ -81,6 +98,8 @@ def shell_conductance(k, L, r1, r2):
     >>> round(shell_conductance(42.7, 0.02, 0.025, 0.0286), 2)
     39.9
     """
+    if _floats(k, L, r1, r2) and _all_pos(k, L, r1, r2) and r2 > r1:          # one element: no arrays
+        return 2.0 * math.pi * k * L / math.log(r2 / r1)
     k, L, r1, r2 = (_pos(n, v) for n, v in (("k_W_mK", k), ("L_m", L), ("r1_m", r1), ("r2_m", r2)))
     if np.any(r2 <= r1):
         raise InputError("r2_m", _out(r2), f"outer radius must exceed the inner radius r1_m = {_out(r1)}")
@@ -105,6 +124,8 @@ def planar_conductance(k, A, length):
     >>> planar_conductance(40.0, 1e-3, 0.1)
     0.4
     """
+    if _floats(k, A, length) and _all_pos(k, A, length):                     # one element: no arrays
+        return k * A / length
     k, A, length = _pos("k_W_mK", k), _pos("A_m2", A), _pos("length_m", length)
     return _out(k * A / length)
 
@@ -170,7 +191,11 @@ def ball_race_conductance(k_ball, k_ring, a, b):
         raise InputError("contacts.a_m/b_m", a, "semi-axes must be finite and >= 0 [m]")
     loaded = (a > 0) & (b > 0)
     aa, bb = np.where(loaded, a, 1.0), np.where(loaded, b, 1.0)
-    R = constriction_resistance(k_ball, aa, bb) + constriction_resistance(k_ring, aa, bb)
+    k_ball, k_ring = _pos("k_W_mK", k_ball), _pos("k_W_mK", k_ring)
+    # constriction_resistance of each body; the ellipse (major axis, 𝔎(m)) is the same for both
+    major, minor = np.maximum(aa, bb), np.minimum(aa, bb)
+    Km = ellipk(1.0 - (minor / major) ** 2)
+    R = Km / (2.0 * np.pi * k_ball * major) + Km / (2.0 * np.pi * k_ring * major)
     return _out(np.sum(np.where(loaded, 1.0 / R, 0.0), axis=-1))
 
 
@@ -226,8 +251,7 @@ def air_properties(T_K, p_Pa=101325.0):
     >>> round(p["rho"], 3), round(p["k"], 4), round(p["Pr"], 3)
     (1.177, 0.0264, 0.707)
     """
-    from ..air import air_properties as _air
-    return _air(T_K, p_Pa)
+    return _air_properties(T_K, p_Pa)
 
 
 def oil_air_properties(X, rho_oil, nu_oil_cSt, k_oil, cp_oil, T_K):
@@ -257,6 +281,15 @@ def oil_air_properties(X, rho_oil, nu_oil_cSt, k_oil, cp_oil, T_K):
     >>> round(p["k"], 4) == round(air_properties(300.0)["k"], 4)
     True
     """
+    if _floats(X, rho_oil, nu_oil_cSt, k_oil, cp_oil, T_K) and 0.0 <= X <= 1.0:
+        # one state (the thermal elements): the same arithmetic on Python floats
+        air = _air_properties(T_K)
+        mu_oil = nu_oil_cSt * 1e-6 * rho_oil
+        rho = X * rho_oil + (1 - X) * air["rho"]
+        mu = X * mu_oil + (1 - X) * air["mu"]
+        k = X * k_oil + (1 - X) * air["k"]
+        cp = (X * rho_oil * cp_oil + (1 - X) * air["rho"] * air["cp"]) / rho
+        return dict(rho=rho, mu=mu, k=k, cp=cp, nu=mu / rho, Pr=mu * cp / k)
     X = np.asarray(X, dtype=float)
     if np.any(~np.isfinite(X) | (X < 0) | (X > 1)):
         raise InputError("oil_fraction", _out(X), "oil volume fraction must lie in [0, 1]")
@@ -296,12 +329,18 @@ def h_natural_horizontal_cylinder(T_s_K, T_inf_K, D, method="Churchill-Chu"):
     >>> round(h_natural_horizontal_cylinder(330.0, 300.0, 0.15), 2)
     4.76
     """
+    D = float(_pos("D_m", D))
+    return _h_natural_cylinder(float(T_s_K), float(T_inf_K), D, method)
+
+
+def _h_natural_cylinder(T_s_K: float, T_inf_K: float, D: float, method="Churchill-Chu") -> float:
+    """:func:`h_natural_horizontal_cylinder` on checked floats (the network's fast path)."""
     import ht
 
-    D = float(_pos("D_m", D))
-    Tf, air = _film_air(T_s_K, T_inf_K)
-    dT = abs(float(T_s_K) - float(T_inf_K))
-    Gr = 9.80665 * (1.0 / float(Tf)) * dT * D**3 / air["nu"] ** 2
+    Tf = 0.5 * (T_s_K + T_inf_K)
+    air = _air_properties(min(max(Tf, _AIR_T_RANGE_K[0]), _AIR_T_RANGE_K[1]))   # as _film_air
+    dT = abs(T_s_K - T_inf_K)
+    Gr = 9.80665 * (1.0 / Tf) * dT * D**3 / air["nu"] ** 2
     Nu = ht.Nu_horizontal_cylinder(Pr=air["Pr"], Gr=Gr, Method=method)
     return Nu * air["k"] / D
 
@@ -463,6 +502,18 @@ class Element:
         (a dict the caller keeps for one temperature state; the network solvers' fast path)."""
         return self.conductance(T_K)
 
+    def _memo(self, compute):
+        """``compute()`` (the conductance of a temperature-independent element) memoised on the
+        element's parameter values: the network's load check and the solver's plan both evaluate
+        it, for every operating point."""
+        key = tuple((k, (v.shape, v.tobytes()) if isinstance(v, np.ndarray) else v) for k, v in self.p.items())
+        hit = self.__dict__.get("_tb_G")
+        if hit is not None and hit[0] == key:
+            return hit[1]
+        G = compute()
+        self.__dict__["_tb_G"] = (key, G)
+        return G
+
 
 def _k(p, key="k_W_mK", mat="material"):
     return p[key] if key in p else p[mat].k
@@ -479,21 +530,24 @@ class Shell(Element):
     """Radial conduction through a cylindrical shell (``shell_conductance``)."""
 
     def conductance(self, T_K):
-        return shell_conductance(_k(self.p), self.p["L_m"], self.p["r1_m"], self.p["r2_m"])
+        return self._memo(lambda: shell_conductance(_k(self.p), self.p["L_m"], self.p["r1_m"], self.p["r2_m"]))
 
 
 class Planar(Element):
     """Planar / axial conduction (``planar_conductance``)."""
 
     def conductance(self, T_K):
-        return planar_conductance(_k(self.p), self.p["A_m2"], self.p["length_m"])
+        return self._memo(lambda: planar_conductance(_k(self.p), self.p["A_m2"], self.p["length_m"]))
 
 
 class Interface(Element):
     """Thermal contact conductance of a fitted or clamped joint: G = h_c A."""
 
     def conductance(self, T_K):
-        return float(_pos("h_W_m2K", self.p["h_W_m2K"]) * _pos("A_m2", self.p["A_m2"]))
+        h, A = self.p["h_W_m2K"], self.p["A_m2"]
+        if _floats(h, A) and _all_pos(h, A):
+            return h * A
+        return float(_pos("h_W_m2K", h) * _pos("A_m2", A))
 
 
 class BallRaceContact(Element):
@@ -509,7 +563,7 @@ class BallRaceContact(Element):
     def conductance(self, T_K):
         kb = self.p["k_ball_W_mK"] if "k_ball_W_mK" in self.p else self.p["material_ball"].k
         kr = self.p["k_ring_W_mK"] if "k_ring_W_mK" in self.p else self.p["material_ring"].k
-        return ball_race_conductance(kb, kr, self.p["a_m"], self.p["b_m"])
+        return self._memo(lambda: ball_race_conductance(kb, kr, self.p["a_m"], self.p["b_m"]))
 
 
 class Convection(Element):
@@ -561,10 +615,12 @@ class Convection(Element):
         if c in HARRIS_COEFFICIENTS:
             props = self._harris_props(Tf, _shared)
             if _shared is not None:        # parameters checked at load, properties from the tables: no re-check
-                return float(HARRIS_COEFFICIENTS[c] * props["k"] * np.cbrt(props["Pr"])
-                             * np.sqrt(p["u_m_s"] / (props["nu"] * p["x_m"])))
+                return (HARRIS_COEFFICIENTS[c] * props["k"] * math.cbrt(props["Pr"])
+                        * math.sqrt(p["u_m_s"] / (props["nu"] * p["x_m"])))
             return h_harris(props["k"], props["Pr"], p["u_m_s"], props["nu"], p["x_m"], c)
         if c == "natural_horizontal_cylinder":
+            if _shared is not None:        # D_m checked at load
+                return _h_natural_cylinder(Ts, Tf, float(p["D_m"]))
             return h_natural_horizontal_cylinder(Ts, Tf, p["D_m"])
         if c == "forced_cylinder":
             return h_forced_cylinder(p["u_air_m_s"], p["D_m"], Ts, Tf)
@@ -573,7 +629,9 @@ class Convection(Element):
         raise InputError(f"elements[{self.name}].correlation", c, f"one of {CORRELATIONS}")
 
     def conductance(self, T_K):
-        return self.h(T_K) * float(self.p["A_m2"])
+        # the keys were checked on load (network.py: units, correlation names), the fluid properties
+        # come from the tables: the fast path, without re-checking them
+        return self._h(T_K, {}) * float(self.p["A_m2"])
 
     def _conductance_shared(self, T_K, shared):
         return self._h(T_K, shared) * float(self.p["A_m2"])
@@ -581,16 +639,14 @@ class Convection(Element):
 
 def _air_T(T_K: float) -> float:
     """Temperature [K] for the air table, held inside 200–600 K (see :func:`_oil_T`)."""
-    from ..air import T_RANGE_K
-    return min(max(float(T_K), T_RANGE_K[0]), T_RANGE_K[1])
+    return min(max(float(T_K), _AIR_T_RANGE_K[0]), _AIR_T_RANGE_K[1])
 
 
 def _oil_T(T_K: float) -> float:
     """Temperature [°C] for the oil's property correlations, held inside their validity: an iterate of
     the coupled solve may overshoot transiently; an equilibrium beyond the limit is reported as runaway
     by the solver, not as an error from a property call."""
-    from ..lubricant import T_VALID_C
-    return min(max(T_K - 273.15, T_VALID_C[0]), T_VALID_C[1])
+    return min(max(T_K - 273.15, _T_VALID_C[0]), _T_VALID_C[1])
 
 
 class Radiation(Element):
@@ -599,7 +655,14 @@ class Radiation(Element):
     T_dependent = True
 
     def conductance(self, T_K):
-        return h_radiation(self.p["emissivity"], T_K[self.i], T_K[self.j]) * float(self.p["A_m2"])
+        eps, T1, T2 = self.p["emissivity"], float(T_K[self.i]), float(T_K[self.j])
+        if not (_floats(eps) and 0.0 < eps <= 1.0 and T1 > 0.0 and T2 > 0.0 and T1 < math.inf and T2 < math.inf):
+            # the checks of h_radiation and their errors
+            return h_radiation(self.p["emissivity"], T_K[self.i], T_K[self.j]) * float(self.p["A_m2"])
+        return eps * SIGMA_SB * (T1 * T1 + T2 * T2) * (T1 + T2) * float(self.p["A_m2"])   # h_radiation
+
+    def _conductance_shared(self, T_K, shared):
+        return self.conductance(T_K)
 
 
 class Advection(Element):
@@ -627,7 +690,11 @@ class Advection(Element):
             oil = self.context["oil"]
             rho = p["rho_kg_m3"] if "rho_kg_m3" in p else oil.rho(T_C)
             cp = p["cp_J_kgK"] if "cp_J_kgK" in p else oil.cp(T_C)
-        return advection_conductance(rho, cp, p["Q_m3_s"], p["beta"])
+        Q, beta = p["Q_m3_s"], p["beta"]
+        if not (_floats(rho, cp, Q, beta) and rho > 0.0 and cp > 0.0 and 0.0 < beta <= 1.0
+                and Q >= 0.0 and rho * cp * Q < math.inf):
+            return advection_conductance(rho, cp, Q, beta)              # the checks and their errors
+        return rho * cp * Q * beta                                      # advection_conductance
 
 
 CORRELATIONS = ("harris", "flat_plate_laminar", "natural_horizontal_cylinder",

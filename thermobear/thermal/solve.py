@@ -129,14 +129,15 @@ def sources_vector(net: ThermalNetwork, sources_W) -> np.ndarray:
     """Heat sources as a vector over ``net.nodes`` [W] (unknown or fixed nodes → InputError)."""
     P = np.zeros(len(net.nodes))
     for name, q in (sources_W or {}).items():
-        if name not in net.index:
+        k = net.index.get(name)
+        if k is None:
             raise InputError("sources", name, f"unknown node; nodes: {', '.join(net.nodes)}")
-        if net.fixed[net.index[name]]:
+        if net.fixed[k]:
             raise InputError(f"sources.{name}", q, "heat cannot be injected into a fixed-temperature node")
-        q = float(np.sum(q))
+        q = q if type(q) is float else float(np.sum(q))
         if not math.isfinite(q):
             raise InputError(f"sources.{name}", q, "must be a finite heat flow [W]")
-        P[net.index[name]] += q
+        P[k] += q
     return P
 
 
@@ -183,6 +184,13 @@ class _Plan:
          self.fixed) = _pattern(n, tuple((e.i, e.j, bool(e.advective)) for e in els), net.fixed.tobytes())
         self.dep = [k for k, e in enumerate(els) if e.T_dependent]
         self.nodes_of = {k: tuple(els[k]._T_nodes()) for k in self.dep}
+        self._dep_items = [(k, els[k], self.nodes_of[k]) for k in self.dep]
+        # node → the temperature-dependent elements whose conductance it changes (dconductances)
+        self._users = {m: [k for k in self.dep if m in self.nodes_of[k]]
+                       for m in sorted({m for k in self.dep for m in self.nodes_of[k]})}
+        # positions of the free × free and free × fixed blocks in the flattened dense matrix
+        self._ff = (self.free[:, None] * n + self.free[None, :]).ravel()
+        self._fb = (self.free[:, None] * n + self.fixed[None, :]).ravel()
         T0 = net.initial_T_K()
         self.G0 = np.array([0.0 if k in self.dep else e.conductance(T0) for k, e in enumerate(els)], dtype=float)
         self.memo: dict = {}
@@ -192,18 +200,18 @@ class _Plan:
         ``net.conductances``)."""
         if not self.dep:
             return self.G0.copy()
-        T = np.asarray(T_K, dtype=float)
+        T = np.asarray(T_K, dtype=float).tolist()      # the elements read single temperatures: floats
         G = self.G0.copy()
         shared: dict = {}
-        for k in self.dep:
-            key = tuple(float(T[m]) for m in self.nodes_of[k])
-            hit = self.memo.get(k)
+        memo = self.memo
+        for k, e, nodes in self._dep_items:
+            key = tuple([T[m] for m in nodes])
+            hit = memo.get(k)
             if hit is not None and hit[0] == key:
                 G[k] = hit[1]
                 continue
-            e = self.elements[k]
             g = float(e._conductance_shared(T, shared))
-            self.memo[k] = (key, g)
+            memo[k] = (key, g)
             G[k] = g
         return G
 
@@ -212,20 +220,20 @@ class _Plan:
         temperatures of the nodes each element depends on: list of (element, node, dG/dT [W/K²]);
         ``nodes`` (indices) restricts the derivatives to those nodes (e.g. the free ones: a Newton
         step on the free temperatures needs no derivative by a fixed one)."""
-        T = np.array(T_K, dtype=float)
+        T = np.asarray(T_K, dtype=float).tolist()
         G = self.conductances(T)
         out = []
         want = None if nodes is None else {int(m) for m in nodes}
-        for m in sorted({m for k in self.dep for m in self.nodes_of[k]}):
+        els = self.elements
+        for m, users in self._users.items():
             if want is not None and m not in want:
                 continue
-            Tp = T.copy()
+            Tp = list(T)
             Tp[m] += h_K
             shared: dict = {}                     # one property evaluation per perturbed node
-            for k in self.dep:
-                if m in self.nodes_of[k]:
-                    g = float(self.elements[k]._conductance_shared(Tp, shared))
-                    out.append((k, m, (g - G[k]) / h_K))
+            for k in users:
+                g = float(els[k]._conductance_shared(Tp, shared))
+                out.append((k, m, (g - G[k]) / h_K))
         return G, out
 
     def dAT(self, T_K, dG) -> np.ndarray:
@@ -260,8 +268,9 @@ class _Plan:
         """(A_ff, A_fb) blocks, free × free and free × fixed: dense arrays for networks up to
         ``_DENSE_MAX`` nodes, else sparse (CSC / CSR)."""
         if self.n <= _DENSE_MAX:
-            A = self.dense(G)
-            return A[np.ix_(self.free, self.free)], A[np.ix_(self.free, self.fixed)]
+            A = np.bincount(self.flat, self.values(G), minlength=self.n * self.n)
+            nf = self.free.size
+            return A[self._ff].reshape(nf, nf), A[self._fb].reshape(nf, self.fixed.size)
         A = self.csr(G)
         return A[self.free][:, self.free].tocsc(), A[self.free][:, self.fixed]
 
@@ -318,9 +327,10 @@ def _lin_solve(Aff, rhs):
 
 def _flows(net, T, G):
     out = {}
-    for e, g in zip(net.elements, G):
+    T = T.tolist()
+    for e, g in zip(net.elements, G.tolist()):
         Q = g * (T[e.j] - T[e.i]) if e.advective else g * (T[e.i] - T[e.j])
-        out[e.name] = Flow(e.name, e.type, e.nodes, float(Q), float(g))
+        out[e.name] = Flow(e.name, e.type, e.nodes, Q, g)
     return out
 
 
@@ -428,8 +438,9 @@ def solve_steady(net: ThermalNetwork, sources_W=None, *, T_guess_K=None, tol_K: 
         T[free] = np.atleast_1d(_lin_solve(Aff, P[free] - Afb @ T[fixed]))
     flows = _flows(net, T, G)
     bal, rel = _balance(net, P[free], flows)
-    return SteadyResult(T_C={n: float(T[k] - _C0) for k, n in enumerate(net.nodes)}, T_K=T,
-                        flows=flows, sources_W={n: float(P[k]) for k, n in enumerate(net.nodes) if P[k]},
+    Tl, Pl = (T - _C0).tolist(), P.tolist()
+    return SteadyResult(T_C=dict(zip(net.nodes, Tl)), T_K=T,
+                        flows=flows, sources_W={n: q for n, q in zip(net.nodes, Pl) if q},
                         balance_W=bal, balance_rel=rel, iterations=it, residual_K=res, network=net)
 
 
@@ -623,10 +634,10 @@ def split_losses(P_inner_W=0.0, P_outer_W=0.0, P_drag_W=0.0, *, ball="balls", in
     arr = {}
     for k, v in parts.items():
         a = np.asarray(v, dtype=float)
-        if np.any(~np.isfinite(a) | (a < 0)):
+        if a.size and not (a.min() >= 0.0 and a.max() < math.inf):         # NaN fails both
             raise InputError(k, v, "losses must be finite and >= 0 [W]")
-        arr[k] = a
-    Pi, Po = math.fsum(arr["P_inner_W"].ravel()), math.fsum(arr["P_outer_W"].ravel())
+        arr[k] = a.ravel().tolist()
+    Pi, Po = math.fsum(arr["P_inner_W"]), math.fsum(arr["P_outer_W"])
     out: dict = {}
 
     def add(node, q):
@@ -635,10 +646,10 @@ def split_losses(P_inner_W=0.0, P_outer_W=0.0, P_drag_W=0.0, *, ball="balls", in
     add(ball, 0.5 * Pi + 0.5 * Po)
     add(inner, 0.5 * Pi)
     add(outer, 0.5 * Po)
-    add(oil, math.fsum(arr["P_drag_W"].ravel()))
+    add(oil, math.fsum(arr["P_drag_W"]))
     for k, v in (extra or {}).items():
-        add(k, math.fsum(arr[f"extra.{k}"].ravel()))
-    total_losses = math.fsum(math.fsum(a.ravel()) for a in arr.values())
+        add(k, math.fsum(arr[f"extra.{k}"]))
+    total_losses = math.fsum(math.fsum(a) for a in arr.values())
     total_sources = math.fsum(out.values())
     if abs(total_sources - total_losses) > 1e-12 * max(total_losses, 1e-300):
         raise RuntimeError(f"heat split does not conserve energy: sources {total_sources!r} W "
