@@ -421,20 +421,13 @@ def _network_spec_shared(scene: Scene) -> dict:
     network builder then checks its structure once: ``load_network(..., _frozen=True)``)."""
     from pathlib import Path
 
-    from ._data import data_dir
-    from .thermal.network import network_names
     name = str(scene.network)
-    if name in network_names():
-        path = data_dir("networks") / f"{name}.toml"
-    else:
-        path = Path(name)
-        if scene.path and not path.is_absolute():
-            path = Path(scene.path).resolve().parent / path
+    path = _network_path(name, scene.path)
     try:
-        stamp = path.resolve().stat().st_mtime_ns
+        stamp = path.stat().st_mtime_ns
     except OSError:
         return _network_spec_new(scene)      # raises the "unknown network" message
-    key = (str(path.resolve()), stamp, repr(sorted(scene.T_fixed_C.items())),
+    key = (str(path), stamp, repr(sorted(scene.T_fixed_C.items())),
            repr(sorted(scene.network_parameters.items())))
     spec = _SPECS.get(key)
     if spec is None:
@@ -443,6 +436,21 @@ def _network_spec_shared(scene: Scene) -> dict:
             _SPECS.clear()
         _SPECS[key] = spec
     return spec
+
+
+@__import__("functools").lru_cache(maxsize=64)
+def _network_path(name: str, scene_path):
+    """Resolved file of a bundled network name or of a path (relative to the scene file)."""
+    from pathlib import Path
+
+    from ._data import data_dir
+    from .thermal.network import network_names
+    if name in network_names():
+        return (data_dir("networks") / f"{name}.toml").resolve()
+    path = Path(name)
+    if scene_path and not path.is_absolute():
+        path = Path(scene_path).resolve().parent / path
+    return path.resolve()
 
 
 def _network_spec_new(scene: Scene) -> dict:
@@ -701,12 +709,21 @@ def _newton_coupled(scene, models, net, roles, cs1, tol_K, T_limit_K, maxiter=30
         Jr = Aff + plan.dAT(T, dG)[np.ix_(free, free)] - S @ dP @ C
         try:
             dT = np.linalg.solve(Jr, -R)
-            gain = float(np.max(np.linalg.eigvals(C @ np.linalg.solve(Aff, S @ dP)).real))
         except np.linalg.LinAlgError:
             return None
-        if not (np.all(np.isfinite(dT)) and np.isfinite(gain)):
+        if not np.all(np.isfinite(dT)):
             return None
-        step = step_prev = float(np.max(np.abs(dT)))
+        step = float(np.max(np.abs(dT)))
+        # loop gain (an eigenvalue problem): at the first iterate, whenever the step does not shrink, and at
+        # the answer — a converging sequence needs no runaway check in between
+        if it == 1 or step >= step_prev or step <= tol_K:
+            try:
+                gain = float(np.max(np.linalg.eigvals(C @ np.linalg.solve(Aff, S @ dP)).real))
+            except np.linalg.LinAlgError:
+                return None
+            if not np.isfinite(gain):
+                return None
+        step_prev = step
         if step > 50.0:
             dT *= 50.0 / step
         dx = C @ dT
