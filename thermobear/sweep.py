@@ -108,6 +108,18 @@ def _losses_batch(sc: Scene, n_rpm, T_C, models: dict, load=None):
                         load=scene_load(sc, models) if load is None else load)
 
 
+def _expand(load, index, nb):
+    """A batched load distribution (leading batch axis of size ``nb``) taken at ``index``: every batched
+    array indexed along its first axis, the rest (azimuths, scalars) kept."""
+    import dataclasses
+    out = {}
+    for f in dataclasses.fields(load):
+        v = getattr(load, f.name)
+        out[f.name] = v[index] if isinstance(v, np.ndarray) and v.ndim >= 1 and v.shape[0] == nb \
+            and f.name != "psi" else v
+    return dataclasses.replace(load, **out)
+
+
 def _prescribed(scenes, points, idx, rows):
     groups: dict = {}
     for i in idx:
@@ -129,10 +141,12 @@ def _prescribed(scenes, points, idx, rows):
             if models["load_model"][0] == "film":   # loads depend on speed and film temperature: one batched solve
                 from .solver import film_scene_load
                 load = film_scene_load(sc, models, T, n_rpm=n)
-            elif models["high_speed"][0] == "yes":   # high-speed ball loads depend on speed: one batched solve
-                from .loads_highspeed import load_distribution_high_speed
-                load = load_distribution_high_speed(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, M=sc.M, n_rpm=n,
-                                                    stiffness=sc.models.get("stiffness", "nominal"))
+            elif models["high_speed"][0] == "yes":   # high-speed ball loads depend on speed only: one batched
+                from .loads_highspeed import load_distribution_high_speed    # solve over the distinct speeds
+                n_u, back = np.unique(n, return_inverse=True)
+                load = _expand(load_distribution_high_speed(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, M=sc.M, n_rpm=n_u,
+                                                            stiffness=sc.models.get("stiffness", "nominal")),
+                               back, n_u.size)
             r = _losses_batch(sc, n, T, models, load=load)
             P, M = np.atleast_1d(r.P_W), np.atleast_1d(r.torque_Nm)
             bd = {k: np.broadcast_to(np.atleast_1d(v), P.shape) for k, v in r.breakdown_W.items()}
