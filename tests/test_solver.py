@@ -183,3 +183,20 @@ def test_transient_reports_model_changes_along_the_schedule():
     assert tr.models_used["load_model"][0] == "jones_harris"
     assert tr.models_used["schedule"][1].startswith("from t = 200 s: load_model film")
     assert np.all(np.isfinite(tr.P_W)) and tr.t_s[-1] == 400.0
+
+
+def test_film_steady_state_is_the_fixed_point_of_its_film_temperature():
+    import re
+    from thermobear.solver import scene_contacts
+    s = S004.with_(n_rpm=4800.0, Fr=750.0)
+    st = steady_state(s)
+    assert choose_models(s)["load_model"][0] == "film"
+    T_film = float(re.search(r"temperature ([\d.]+) °C", st.models_used["load_distribution"][1]).group(1))
+    c = st.losses.contacts
+    T_contacts = float(np.mean(np.concatenate([np.ravel(c["inner"]["T_C"]), np.ravel(c["outer"]["T_C"])])))
+    assert abs(T_contacts - T_film) <= 0.1 + 0.005          # tolerance of the film update, print rounding
+    # the same loads solved from scratch (ambient start) give the same state
+    ref = steady_state(s, contacts=scene_contacts(s, choose_models(s), T_film_C=T_film))
+    assert ref.P_W == pytest.approx(st.P_W, rel=1e-4)
+    assert abs(ref.T_C["inner_ring"] - st.T_C["inner_ring"]) < 0.01
+    assert abs(st.energy_balance_W) <= 1e-9 * st.P_W

@@ -666,7 +666,7 @@ def _losses_and_slopes(scene, models, cs4, x_K, h=0.05):
     return Pm, (Pm[:, 1:] - Pm[:, [0]]) / h
 
 
-def _newton_coupled(scene, models, net, roles, cs1, tol_K, T_limit_K, maxiter=30, h=0.05):
+def _newton_coupled(scene, models, net, roles, cs1, tol_K, T_limit_K, maxiter=30, h=0.05, T0_K=None):
     """Newton on the free-node temperatures T_f of the network coupled with the losses [K].
 
     Residual (heat balance of each free node) [W] and its Jacobian:
@@ -690,7 +690,7 @@ def _newton_coupled(scene, models, net, roles, cs1, tol_K, T_limit_K, maxiter=30
     plan = _plan(net)
     free, fixed = ~net.fixed, net.fixed
     C, S = _coupling_matrices(net, roles)
-    T = net.initial_T_K()
+    T = net.initial_T_K() if T0_K is None else np.where(net.fixed, net.T_fixed_K, T0_K)
     Tb = T[fixed]
     history = []
     dG, step_prev = None, np.inf
@@ -741,12 +741,20 @@ def _newton_coupled(scene, models, net, roles, cs1, tol_K, T_limit_K, maxiter=30
 def _steady_film(scene, models, *, tol_K, method, tol_film_K=0.1, maxiter=10, **kw):
     """Steady state with the film load model: the loads depend on the film temperature, taken as the
     mean contact temperature of the solution — a fixed point on that one temperature (the loads vary
-    slowly with it: a few updates)."""
+    slowly with it: a few updates), started from the dry solution's mean contact temperature, each
+    update's Newton started from the last solution."""
     from .errors import NoConvergence
-    T_ref, hist = film_temperature_C(scene), []
+    # start: the dry solution's mean contact temperature (its loads are cached from the model choice;
+    # the films change the power by a few to tens of per cent, the contact temperature by a few kelvin)
+    dry = {**models, "load_model": ("jones_harris", "start of the film fixed point")}
+    st0 = steady_state(scene, tol_K=max(tol_K, 1e-3), contacts=scene_contacts(scene, dry), method=method, **kw)
+    c0 = st0.losses.contacts
+    T_ref = float(np.mean(np.concatenate([np.ravel(c0["inner"]["T_C"]), np.ravel(c0["outer"]["T_C"])])))
+    hist, start = [], st0.T_C
     for k in range(1, maxiter + 1):
         cs = scene_contacts(scene, models, T_film_C=T_ref)
-        st = steady_state(scene, tol_K=tol_K, contacts=cs, method=method, **kw)
+        st = steady_state(scene, tol_K=tol_K, contacts=cs, method=method, _T_start_C=start, **kw)
+        start = st.T_C                      # the next update starts from this solution (the loads moved a little)
         c = st.losses.contacts
         T_new = float(np.mean(np.concatenate([np.ravel(c["inner"]["T_C"]), np.ravel(c["outer"]["T_C"])])))
         hist.append(dict(iteration=k, T_film_C=T_ref, T_contacts_C=T_new, P_W=st.P_W))
@@ -754,7 +762,8 @@ def _steady_film(scene, models, *, tol_K, method, tol_film_K=0.1, maxiter=10, **
             st.models_used["load_distribution"] = (
                 "film in the contact law (" + ("high-speed, thermobear.loads_highspeed" if models["high_speed"][0] == "yes"
                                               else "low-speed, thermobear.loads_film") + ")",
-                f"films at the mean contact temperature {T_ref:.2f} °C ({k} load updates)")
+                f"films at the mean contact temperature {T_ref:.2f} °C ({k} load updates from the dry "
+                f"solution's {hist[0]['T_film_C']:.2f} °C)")
             st.history = list(st.history) + [dict(h, step="film") for h in hist]
             return st
         T_ref = T_new
@@ -805,6 +814,10 @@ def steady_state(scene: Scene, *, tol_K: float = 1e-6, contacts: ContactSet | No
     net, cs, roles = _setup_thermal(scene, models, contacts)
     kw.setdefault("T_limit_K", T_VALID_C[1] + 273.15)      # beyond the lubricant's validity: runaway
     state = {"T": net.initial_T_K()}
+    T0_K = kw.pop("_T_start_C", None)
+    if T0_K is not None:          # a start: node → °C (e.g. the last film update's solution), nodes matched by name
+        T0_K = np.array([T0_K.get(nm, net.initial_T_K()[i] - 273.15) + 273.15 for i, nm in enumerate(net.nodes)])
+        state["T"] = np.where(net.fixed, net.T_fixed_K, T0_K)
 
     def sources_at(x_K):
         return _sources_c(scene, models, cs, roles, *(np.asarray(x_K) - 273.15))
@@ -824,7 +837,7 @@ def steady_state(scene: Scene, *, tol_K: float = 1e-6, contacts: ContactSet | No
         nw = None
         if method == "newton" and models["losses"][0] == "local" and cs.batch == ():
             cs4 = _repeat_contacts(cs, 4)          # the contacts four times (one per temperature triplet)
-            nw = _newton_coupled(scene, models, net, roles, cs4, tol_K, kw["T_limit_K"])
+            nw = _newton_coupled(scene, models, net, roles, cs4, tol_K, kw["T_limit_K"], T0_K=T0_K)
         if nw is not None:
             x, state["T"], its, resid, gain, hist = nw
             res = CoupledResult(T_K=x, P_W=hist[-1]["P_W"], iterations=its, evaluations=its * 4,
