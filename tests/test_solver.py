@@ -200,3 +200,43 @@ def test_film_steady_state_is_the_fixed_point_of_its_film_temperature():
     assert ref.P_W == pytest.approx(st.P_W, rel=1e-4)
     assert abs(ref.T_C["inner_ring"] - st.T_C["inner_ring"]) < 0.01
     assert abs(st.energy_balance_W) <= 1e-9 * st.P_W
+
+
+def test_a_load_the_bearing_cannot_carry_is_reported_per_point_not_by_the_model_choice():
+    from thermobear.errors import NoEquilibrium
+    from thermobear.sweep import run_sweep
+    bad = S004.with_(Fa=0.0, Fr=300.0)              # an angular contact bearing with no axial load
+    m = choose_models(bad)                           # choosing models does not solve the loads' failure
+    assert m["load_model"][0] == "jones_harris" and "failed" in m["load_model"][1]
+    with pytest.raises(NoEquilibrium):
+        steady_state(bad)
+    rows = run_sweep(S004, {"Fa": [0.0, 500.0], "Fr": [300.0]}, processes=1)
+    assert [r["status"] for r in rows] == ["NoEquilibrium", "ok"]
+
+
+def test_schedule_change_reported_once_per_segment_with_film_pieces():
+    tr = transient(S004.with_(n_rpm=4800.0, Fr=150.0), 3000.0, schedule=[(200.0, {"Fr": 750.0})], t_eval=[3000.0])
+    assert tr.models_used["schedule"][1].count("from t =") == 1
+
+
+def test_relative_network_path_follows_the_working_directory(tmp_path, monkeypatch):
+    import dataclasses
+    from pathlib import Path
+    from thermobear.solver import network_spec
+    from thermobear._data import data_dir
+    text = (data_dir("networks") / "one_node.toml").read_text(encoding="utf-8")
+    for sub, tag in (("a", "variant-a"), ("b", "variant-b")):
+        (tmp_path / sub).mkdir()
+        (tmp_path / sub / "net.toml").write_text(text.replace('name = "one_node"', f'name = "{tag}"'),
+                                                  encoding="utf-8")
+    sc = dataclasses.replace(S002, network="net.toml", path=None)
+    monkeypatch.chdir(tmp_path / "a")
+    assert network_spec(sc)["name"] == "variant-a"
+    monkeypatch.chdir(tmp_path / "b")
+    assert network_spec(sc)["name"] == "variant-b"
+    # an edited file is read again (cache keyed by modification time)
+    p = tmp_path / "b" / "net.toml"
+    import os
+    p.write_text(text.replace('name = "one_node"', 'name = "variant-b2"'), encoding="utf-8")
+    os.utime(p, ns=(p.stat().st_atime_ns, p.stat().st_mtime_ns + 10**9))
+    assert network_spec(sc)["name"] == "variant-b2"
