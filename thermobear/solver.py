@@ -191,10 +191,11 @@ def _dry_load(scene: Scene, high_speed: bool) -> LoadDistribution:
     return _dry_load_cached(scene.bearing, float(scene.Fa), float(scene.Fr), M, stiff, None)
 
 
-@__import__("functools").lru_cache(maxsize=128)
+@__import__("functools").lru_cache(maxsize=4096)
 def _dry_load_cached(brg, Fa, Fr, M, stiffness, n_rpm):
     """Dry Jones–Harris load distribution (high-speed form when ``n_rpm`` is given), cached: the
-    model choice and the load step of one operating point share it.  Its arrays are read-only."""
+    model choice and the load step of one operating point share it (a sweep chooses the models of
+    all its points first: room for a few thousand, ≈ 2 kB each).  Its arrays are read-only."""
     if n_rpm is None:
         ld = load_distribution(brg, Fa=Fa, Fr=Fr, M=M, stiffness=stiffness)
     else:
