@@ -263,7 +263,8 @@ def film_scene_load(scene: Scene, models: dict, T_film_C, n_rpm=None) -> LoadDis
     eta, ap = val(lub.eta(T)), val(lub.alpha_p_at(T))
     stiff = scene.models.get("stiffness", "nominal")
     Fa, Fr, M = scene.Fa, scene.Fr, scene.M
-    w = n * np.pi / 30.0
+    from .units import rpm_to_rad_s
+    w = rpm_to_rad_s(n)
     wi, wo = (w, 0.0 * w) if scene.rotating == "inner" else (0.0 * w, w)
     u = np.maximum(np.asarray(entrainment_speed(wi, wo, b.D, b.dm, b.alpha0), float), 1e-6)
     if batch:                                       # one load case per operating point
@@ -840,7 +841,8 @@ def steady_state(scene: Scene, *, tol_K: float = 1e-6, contacts: ContactSet | No
     state = {"T": net.initial_T_K()}
     T0_K = kw.pop("_T_start_C", None)
     if T0_K is not None:          # a start: node → °C (e.g. the last film update's solution), nodes matched by name
-        T0_K = np.array([T0_K.get(nm, net.initial_T_K()[i] - 273.15) + 273.15 for i, nm in enumerate(net.nodes)])
+        init = net.initial_T_K()
+        T0_K = np.array([T0_K[nm] + 273.15 if nm in T0_K else init[i] for i, nm in enumerate(net.nodes)])
         state["T"] = np.where(net.fixed, net.T_fixed_K, T0_K)
 
     def sources_at(x_K):
