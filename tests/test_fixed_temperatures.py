@@ -130,9 +130,10 @@ def test_oil_injection_temperature_barely_changes_power_at_equal_ring_temperatur
     assert abs(P[1] / P[0] - 1.0) < 0.05, P
 
 
-@pytest.mark.xfail(strict=True, reason="known gap (issue 4): the rig network runs cool (37 / 62 °C against 55 / 90); "
-                   "the support blocks as heat sources add only 1.5 / 4.9 K (validation/report/seed004_support_heat.md); "
-                   "the shaft share, joints and housing are estimates")
+@pytest.mark.xfail(strict=True, reason="known gap (issue 4): the rig network runs cool at 3200 rpm (41 / 72 °C "
+                   "against 55 / 90; its steady state 44 / 79 °C is below the rig's 1000 s readings, so the heat balance, "
+                   "not the inertia, is off); the support blocks as heat sources add only 1.2 / 4.0 K "
+                   "(validation/report/seed004_support_heat.md); the shaft path, joints and housing are estimates")
 def test_inner_ring_heat_up_of_the_right_order(scene):
     """Seed 004 §5.3.1, Fig. 8: inner ring ≈ 55 °C at 3200 rpm and ≈ 90 °C at 8070 rpm after 1000 s
     (oil 10 L/h at 30 °C); 'of the right order' read as within 30 % of the rise above ambient."""
@@ -140,6 +141,49 @@ def test_inner_ring_heat_up_of_the_right_order(scene):
         tr = tb.transient(scene.with_(n_rpm=n), 1000.0, t_eval=[1000.0])
         rise, ref_rise = tr.T_C["inner_ring"][-1] - scene.T_ambient_C, ref - scene.T_ambient_C
         assert abs(rise / ref_rise - 1.0) < 0.3, (n, tr.T_C["inner_ring"][-1])
+
+
+def _shaft_segments(text, n):
+    """The shipped seed 004 network with its 150 mm shaft path in ``n`` equal segments (0: the whole
+    0.18 m shaft share as one lumped node)."""
+    head, rest = text.split("# BEGIN shaft segments", 1)
+    tail = rest.split("# END shaft segments", 1)[1]
+    if n == 0:
+        head = head.replace('bearing.bore**2 * 0.03"', 'bearing.bore**2 * 0.18"', 1)
+        return head + ('[[elements]]\nname = "shaft_path"\ntype = "planar"\nbetween = ["shaft", "support_block"]\n'
+                       'material = "aisi-52100"\nA_m2 = "pi / 4 * bearing.bore**2"\nlength_m = 0.15\n\n') + tail
+    dl = 0.15 / n
+    chain = ["shaft"] + [f"shaft_{k}" for k in range(1, n + 1)] + ["support_block"]
+    body = "".join(f'[nodes.{m}]\nvolume_m3 = "pi / 4 * bearing.bore**2 * {dl!r}"\nmaterial = "aisi-52100"\n\n'
+                   for m in chain[1:-1])
+    for a, b in zip(chain[:-1], chain[1:]):
+        L = 0.015 + dl / 2 if a == "shaft" else (dl / 2 if b == "support_block" else dl)
+        body += (f'[[elements]]\nname = "{a}_{b}"\ntype = "planar"\nbetween = ["{a}", "{b}"]\n'
+                 f'material = "aisi-52100"\nA_m2 = "pi / 4 * bearing.bore**2"\nlength_m = {L!r}\n\n')
+    return head + body + tail
+
+
+def test_shaft_path_discretisation_is_converged_and_conserves_conductance(scene, tmp_path):
+    """The shipped network splits the 150 mm shaft path into 5 segments (Fo = a t / L² ≈ 0.55 over
+    the whole path at 1000 s: one lumped node is not valid).  Refining to 12 segments moves the inner
+    ring at 1000 s by < 0.2 K; the steady state depends only on the path's total conductance, so it
+    moves by < 0.05 K; one lumped node for the whole shaft share heats the inner ring slower."""
+    import dataclasses
+
+    from thermobear._data import data_dir
+    text = (data_dir("networks") / "oil_jet_ball_bearing.toml").read_text(encoding="utf-8")
+    s = scene.with_(n_rpm=8070.0)
+    fine, coarse = tmp_path / "fine.toml", tmp_path / "coarse.toml"
+    fine.write_text(_shaft_segments(text, 12), encoding="utf-8")
+    coarse.write_text(_shaft_segments(text, 0), encoding="utf-8")
+    T = {}
+    for key, sc in (("shipped", s), ("fine", dataclasses.replace(s, network=str(fine))),
+                    ("coarse", dataclasses.replace(s, network=str(coarse)))):
+        T[key] = (float(tb.transient(sc, 1000.0, t_eval=[1000.0]).T_C["inner_ring"][-1]),
+                  tb.steady_state(sc).T_C["inner_ring"])
+    assert abs(T["fine"][0] - T["shipped"][0]) < 0.2, T
+    assert abs(T["fine"][1] - T["shipped"][1]) < 0.05, T
+    assert T["shipped"][0] > T["coarse"][0] + 5.0, T     # lumped: the whole share heats at once (10 K here)
 
 
 def test_radial_load_effect_of_the_dry_load_model_is_moderate_and_falls(scene):
