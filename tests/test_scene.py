@@ -65,6 +65,21 @@ def test_missing_file():
         load_scene("/nonexistent/scene.toml")
 
 
+def test_edited_scene_file_is_read_again(tmp_path):
+    """A scene file changed during a session (notebook, CLI loop) is re-read, not served from the
+    cache of its first reading; an unchanged file gives the same scene."""
+    import os
+    text = Path(tb.example_path("seed004_oil_jet_7210.toml")).read_text(encoding="utf-8")
+    p = tmp_path / "scene.toml"
+    p.write_text(text, encoding="utf-8")
+    assert load_scene(str(p)).n_rpm == 3200.0
+    p.write_text(text.replace("n_rpm = 3200.0", "n_rpm = 4800.0"), encoding="utf-8")
+    st = os.stat(p)
+    os.utime(p, ns=(st.st_atime_ns, st.st_mtime_ns + 1_000_000_000))    # coarse file-system clocks
+    assert load_scene(str(p)).n_rpm == 4800.0
+    assert load_scene(str(p)).n_rpm == 4800.0
+
+
 # ------------------------------------------------------------------ fuzz
 _KEYS = {
     "scene": ["name", "description", "source"],

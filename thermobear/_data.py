@@ -7,6 +7,7 @@ repository.  The package never reads anything outside these two places.
 """
 from __future__ import annotations
 
+import os
 import tomllib
 from functools import lru_cache
 from pathlib import Path
@@ -24,17 +25,34 @@ def data_dir(kind: str) -> Path:
     raise FileNotFoundError(f"thermobear data folder '{kind}' not found next to the package")
 
 
-@lru_cache(maxsize=None)
 def read_toml(path: str) -> dict:
-    """Read a TOML file, turning a syntax error into an InputError naming the file."""
+    """Read a TOML file, turning a syntax error into an InputError naming the file.
+
+    Cached per file and version: a file edited since its last read (another modification time or
+    size) is read again, so a scene, network or catalog file changed during a session is seen.  The
+    returned dict is shared between callers: copy it before changing it.
+
+    >>> import thermobear
+    >>> read_toml(thermobear.example_path("seed004_oil_jet_7210.toml"))["operation"]["n_rpm"]
+    3200.0
+    """
     p = Path(path)
     try:
-        with open(p, "rb") as fh:
+        st = os.stat(p)
+    except (FileNotFoundError, NotADirectoryError):
+        raise InputError(str(p), None, "file not found") from None
+    return _read_toml(str(p), st.st_mtime_ns, st.st_size)
+
+
+@lru_cache(maxsize=256)
+def _read_toml(path: str, mtime_ns: int, size: int) -> dict:
+    try:
+        with open(path, "rb") as fh:
             return tomllib.load(fh)
     except tomllib.TOMLDecodeError as exc:
-        raise InputError(str(p), None, f"is not valid TOML: {exc}") from None
+        raise InputError(path, None, f"is not valid TOML: {exc}") from None
     except FileNotFoundError:
-        raise InputError(str(p), None, "file not found") from None
+        raise InputError(path, None, "file not found") from None
 
 
 def names_in(folder: Path) -> list[str]:

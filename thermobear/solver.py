@@ -487,8 +487,7 @@ def _network_spec_new(scene: Scene) -> dict:
         if not path.is_file():
             raise InputError("thermal.network", name, f"unknown network; known: {', '.join(network_names())} "
                              "or a path to a .toml file")
-    spec = copy.deepcopy(read_toml.__wrapped__(str(path.resolve())))   # the file as it is now (the caller
-    # caches by modification time; read_toml's own cache would keep an edited file's old content)
+    spec = copy.deepcopy(read_toml(str(path.resolve())))   # the file as it is now (read_toml re-reads an edited file)
     _impose_temperatures(spec, scene.T_fixed_C, name)
     for key, val in scene.network_parameters.items():
         if "." not in key:
