@@ -104,3 +104,36 @@ def test_dask_path_identical_to_local(seed002):
         for k in a["temperatures_C"]:
             np.testing.assert_allclose(b["temperatures_C"][k], a["temperatures_C"][k], rtol=1e-13)
         assert a["iterations"] == b["iterations"]
+
+
+def test_primed_dry_loads_equal_single_solves(seed004):
+    """A sweep solves the dry loads of its points in batched calls (high-speed and low-speed forms
+    apart); every cached case equals its own single solve to round-off."""
+    from thermobear.solver import _dry_load_cached, _dry_load_solve, _dry_need, _prime_dry_loads
+    scenes = [seed004.with_(n_rpm=n, Fr=Fr) for n in (1500.0, 2500.0, 5000.0, 8000.0) for Fr in (100.0, 325.0)]
+    keys = [_dry_need(sc) for sc in scenes]
+    assert {k[5] is None for k in keys} == {True, False}            # both forms in the grid
+    _dry_load_cached.cache_clear()
+    assert _prime_dry_loads(scenes) == len(set(keys))
+    for k in keys:
+        assert k in _dry_load_cached
+        got, ref = _dry_load_cached(*k), _dry_load_solve(*k)
+        for f in ("Q_i", "Q_o", "alpha_i", "alpha_o"):
+            assert np.allclose(getattr(got, f), getattr(ref, f), rtol=1e-11, atol=1e-12 * 450.0), f
+        assert got.residual >= ref.residual - 1e-15                  # the batch's residual bounds the case's
+    assert _prime_dry_loads(scenes) == 0                             # nothing left to solve
+
+
+def test_a_failing_load_batch_leaves_each_point_to_its_own_solve(seed004):
+    """Fa = 0 under a radial load has no equilibrium in an angular contact bearing: that batch is not
+    cached (the batch is halved around it), and the sweep reports the failure on that point only."""
+    from thermobear.solver import _dry_load_cached, _prime_dry_loads
+    pts = [seed004.with_(Fa=Fa, n_rpm=n) for Fa in (0.0, 450.0) for n in (5000.0, 5500.0, 6000.0, 6500.0)]
+    _dry_load_cached.cache_clear()
+    assert _prime_dry_loads(pts) == 4
+    _dry_load_cached.cache_clear()
+    rows = run_sweep(seed004, {"Fa": [0.0, 450.0], "n_rpm": [5000.0, 6000.0]}, processes=1)
+    assert [r["status"] for r in rows] == ["NoEquilibrium", "NoEquilibrium", "ok", "ok"]
+    for r in rows[2:]:
+        st = tb.steady_state(seed004.with_(Fa=450.0, n_rpm=r["n_rpm"]))
+        assert r["P_W"] == pytest.approx(st.P_W, rel=1e-12)

@@ -80,30 +80,7 @@ def choose_models(scene: Scene) -> dict:
         out["load_model"] = ("closed_form", "pure axial load, tilt held: all balls equal (exact closed form)")
     else:
         out["load_model"] = ("jones_harris", "")         # dry or film: decided below, once high_speed is known
-    Qtyp = max(scene.Fa / (b.Z * max(np.sin(b.alpha0), 1e-3)), scene.Fr * 5.0 / b.Z, 1e-9)
-    need, ratio = needs_high_speed(b, scene.n_rpm, Qtyp, rotating=scene.rotating)
-    if "high_speed" in m:
-        hs = m["high_speed"]
-        if not isinstance(hs, bool):
-            raise InputError("models.high_speed", hs, "must be true or false")
-        if hs and b.kind == "thrust":
-            raise InputError("models.high_speed", True, "the high-speed form is for radial and angular contact "
-                             "bearings (a thrust bearing's centrifugal force acts across its grooves)")
-        if hs and scene.rotating != "inner":
-            raise InputError("models.high_speed", True, "the high-speed form is implemented for a rotating inner "
-                             "ring (operation.rotating = 'inner')")
-        out["high_speed"] = ("yes" if hs else "no", "chosen in the scene")
-    elif b.kind == "thrust":
-        out["high_speed"] = ("no", "thrust bearing: centrifugal force acts across the groove; not modelled")
-    elif bool(need) and scene.rotating != "inner":
-        out["high_speed"] = ("no", f"F_c/Q = {float(ratio):.2f} > 0.05, but the high-speed form is implemented for "
-                                   "a rotating inner ring: low-speed form with F_c on the outer contacts")
-    elif bool(need):
-        out["high_speed"] = ("yes", f"F_c/Q = {float(ratio):.2f} > 0.05: Jones high-speed form (centrifugal force, "
-                                    "gyroscopic moment, outer-race control) shifts the contact angles")
-    else:
-        out["high_speed"] = ("no", f"F_c/Q = {float(ratio):.3f} <= 0.05 (F_c still loads the outer contacts "
-                                   "of balls outside the load zone)")
+    out["high_speed"] = _high_speed_choice(scene)
     if out["high_speed"][0] == "yes" and out["load_model"][0] == "closed_form":
         out["load_model"] = ("jones_harris", "high-speed form: per-ball equilibrium with centrifugal force")
     if out["load_model"] == ("jones_harris", ""):
@@ -130,6 +107,34 @@ def choose_models(scene: Scene) -> dict:
     out["hertz"] = (m.get("hertz", "exact"), "chosen in the scene" if "hertz" in m else
                     "exact elliptic integrals (approximations err 1–5 %)")
     return out
+
+
+def _high_speed_choice(scene: Scene) -> tuple:
+    """``("yes" | "no", reason)``: the high-speed ball equilibrium, by the scene's choice or F_c/Q."""
+    b, m = scene.bearing, scene.models
+    Qtyp = max(scene.Fa / (b.Z * max(np.sin(b.alpha0), 1e-3)), scene.Fr * 5.0 / b.Z, 1e-9)
+    need, ratio = needs_high_speed(b, scene.n_rpm, Qtyp, rotating=scene.rotating)
+    if "high_speed" in m:
+        hs = m["high_speed"]
+        if not isinstance(hs, bool):
+            raise InputError("models.high_speed", hs, "must be true or false")
+        if hs and b.kind == "thrust":
+            raise InputError("models.high_speed", True, "the high-speed form is for radial and angular contact "
+                             "bearings (a thrust bearing's centrifugal force acts across its grooves)")
+        if hs and scene.rotating != "inner":
+            raise InputError("models.high_speed", True, "the high-speed form is implemented for a rotating inner "
+                             "ring (operation.rotating = 'inner')")
+        return ("yes" if hs else "no", "chosen in the scene")
+    if b.kind == "thrust":
+        return ("no", "thrust bearing: centrifugal force acts across the groove; not modelled")
+    if bool(need) and scene.rotating != "inner":
+        return ("no", f"F_c/Q = {float(ratio):.2f} > 0.05, but the high-speed form is implemented for "
+                      "a rotating inner ring: low-speed form with F_c on the outer contacts")
+    if bool(need):
+        return ("yes", f"F_c/Q = {float(ratio):.2f} > 0.05: Jones high-speed form (centrifugal force, "
+                       "gyroscopic moment, outer-race control) shifts the contact angles")
+    return ("no", f"F_c/Q = {float(ratio):.3f} <= 0.05 (F_c still loads the outer contacts "
+                  "of balls outside the load zone)")
 
 
 _FLOODED = ("oil_jet", "oil_bath")
@@ -191,20 +196,119 @@ def _dry_load(scene: Scene, high_speed: bool) -> LoadDistribution:
     return _dry_load_cached(scene.bearing, float(scene.Fa), float(scene.Fr), M, stiff, None)
 
 
-@__import__("functools").lru_cache(maxsize=4096)
-def _dry_load_cached(brg, Fa, Fr, M, stiffness, n_rpm):
-    """Dry Jones–Harris load distribution (high-speed form when ``n_rpm`` is given), cached: the
-    model choice and the load step of one operating point share it (a sweep chooses the models of
-    all its points first: room for a few thousand, ≈ 2 kB each).  Its arrays are read-only."""
+class _LoadCache:
+    """Least-recently-used cache of dry load distributions keyed by operating point, which a batched
+    solve can fill (:func:`_prime_dry_loads`); ``cache_clear()`` as for ``functools.lru_cache``."""
+
+    def __init__(self, fn, maxsize: int):
+        self.fn, self.maxsize, self._d = fn, maxsize, {}
+
+    def __call__(self, *key):
+        d = self._d
+        if key in d:
+            d[key] = d.pop(key)                         # most recently used last
+            return d[key]
+        ld = self.fn(*key)                              # an exception is not cached
+        self.put(key, ld)
+        return ld
+
+    def __contains__(self, key) -> bool:
+        return key in self._d
+
+    def put(self, key, ld):
+        for v in vars(ld).values():
+            if isinstance(v, np.ndarray):
+                v.setflags(write=False)
+        self._d[key] = ld
+        while len(self._d) > self.maxsize:
+            self._d.pop(next(iter(self._d)))
+
+    def cache_clear(self):
+        self._d.clear()
+
+
+def _dry_load_solve(brg, Fa, Fr, M, stiffness, n_rpm):
+    """Dry Jones–Harris load distribution (high-speed form when ``n_rpm`` is given)."""
     if n_rpm is None:
-        ld = load_distribution(brg, Fa=Fa, Fr=Fr, M=M, stiffness=stiffness)
-    else:
-        from .loads_highspeed import load_distribution_high_speed
-        ld = load_distribution_high_speed(brg, Fa=Fa, Fr=Fr, M=M, n_rpm=n_rpm, stiffness=stiffness)
-    for v in vars(ld).values():
-        if isinstance(v, np.ndarray):
-            v.setflags(write=False)
-    return ld
+        return load_distribution(brg, Fa=Fa, Fr=Fr, M=M, stiffness=stiffness)
+    from .loads_highspeed import load_distribution_high_speed
+    return load_distribution_high_speed(brg, Fa=Fa, Fr=Fr, M=M, n_rpm=n_rpm, stiffness=stiffness)
+
+
+# The model choice and the load step of one operating point share the dry solution (a sweep chooses
+# the models of all its points first: room for a few thousand, ≈ 2 kB each).  Its arrays are read-only.
+_dry_load_cached = _LoadCache(_dry_load_solve, 4096)
+
+
+def _dry_need(scene: Scene):
+    """Key of the dry load distribution :func:`choose_models` and :func:`scene_load` will ask for, or
+    None when the scene needs none (closed form, film model chosen in the scene) or is invalid
+    (choose_models will say why)."""
+    m = scene.models
+    if m.get("load_model") in ("closed_form", "film") or (scene.T_C is None and not scene.network):
+        return None
+    try:
+        hs = _high_speed_choice(scene)[0] == "yes"
+    except InputError:
+        return None
+    symmetric = scene.Fr == 0.0 and scene.M is None and m.get("stiffness", "nominal") == "nominal"
+    if symmetric and not hs and "load_model" not in m:
+        return None
+    M = None if scene.M is None else float(scene.M)
+    return (scene.bearing, float(scene.Fa), float(scene.Fr), M, m.get("stiffness", "nominal"),
+            float(scene.n_rpm) if hs else None)
+
+
+def _prime_dry_loads(scenes) -> int:
+    """Solve the dry loads of many operating points in batched calls and cache them.
+
+    Points sharing a bearing, stiffness option, load form and moment convention form one load batch
+    (:func:`thermobear.loads_highspeed.load_distribution_high_speed` or
+    :func:`thermobear.loads.load_distribution`, vectorised over load cases: each case converges on its
+    own, equal to a single solve to round-off).  A cached case carries the batch's largest residual
+    and iteration count (upper bounds of its own).  A batch that fails is halved until the points
+    without equilibrium stand alone; those are left to their own solves, which report the failure per
+    point.  Returns the number of cases solved and cached."""
+    from .errors import SolverError
+    groups: dict = {}
+    for sc in scenes:
+        key = _dry_need(sc)
+        if key is not None and key not in _dry_load_cached:
+            groups.setdefault((key[0], key[3] is None, key[4], key[5] is None), {})[key] = None
+
+    def batch(brg, no_M, stiff, low, keys) -> int:
+        if len(keys) < 2:
+            return 0
+        Fa = np.array([k[1] for k in keys])
+        Fr = np.array([k[2] for k in keys])
+        M = None if no_M else np.array([k[3] for k in keys])
+        try:
+            if low:
+                ld = load_distribution(brg, Fa=Fa, Fr=Fr, M=M, stiffness=stiff)
+            else:
+                from .loads_highspeed import load_distribution_high_speed
+                ld = load_distribution_high_speed(brg, Fa=Fa, Fr=Fr, M=M, n_rpm=np.array([k[5] for k in keys]),
+                                                  stiffness=stiff)
+        except SolverError:         # a point without equilibrium: halve the batch (log2 n more batches)
+            h = len(keys) // 2
+            return batch(brg, no_M, stiff, low, keys[:h]) + batch(brg, no_M, stiff, low, keys[h:])
+        for j, key in enumerate(keys):
+            _dry_load_cached.put(key, _load_case(ld, j, len(keys)))
+        return len(keys)
+
+    return sum(batch(*g, list(keys)) for g, keys in groups.items())
+
+
+def _load_case(load, index, nb):
+    """A batched load distribution (leading batch axis of size ``nb``) taken at ``index``: every batched
+    array indexed along its first axis, the rest (azimuths, scalars) kept."""
+    import dataclasses
+    out = {}
+    for f in dataclasses.fields(load):
+        v = getattr(load, f.name)
+        out[f.name] = v[index] if isinstance(v, np.ndarray) and v.ndim >= 1 and v.shape[0] == nb \
+            and f.name != "psi" else v
+    return dataclasses.replace(load, **out)
 
 
 def _closed_form_axial(b, Fa) -> LoadDistribution:

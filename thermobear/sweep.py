@@ -45,7 +45,7 @@ import numpy as np
 
 from .errors import InputError, SolverError
 from .scene import Scene
-from .solver import choose_models, scene_load, scene_losses, solve, steady_state
+from .solver import _load_case, _prime_dry_loads, choose_models, scene_load, scene_losses, solve, steady_state
 
 __all__ = ["run_sweep", "sweep_points"]
 
@@ -109,15 +109,8 @@ def _losses_batch(sc: Scene, n_rpm, T_C, models: dict, load=None):
 
 
 def _expand(load, index, nb):
-    """A batched load distribution (leading batch axis of size ``nb``) taken at ``index``: every batched
-    array indexed along its first axis, the rest (azimuths, scalars) kept."""
-    import dataclasses
-    out = {}
-    for f in dataclasses.fields(load):
-        v = getattr(load, f.name)
-        out[f.name] = v[index] if isinstance(v, np.ndarray) and v.ndim >= 1 and v.shape[0] == nb \
-            and f.name != "psi" else v
-    return dataclasses.replace(load, **out)
+    """A batched load distribution taken at ``index`` (see :func:`thermobear.solver._load_case`)."""
+    return _load_case(load, index, nb)
 
 
 def _prescribed(scenes, points, idx, rows):
@@ -233,6 +226,7 @@ def run_sweep(scene: Scene, grid: dict, *, scheduler=None, processes: int | None
         raise InputError("processes", processes, "an integer >= 1")
     points = sweep_points(grid)
     scenes = [scene.with_(**p) for p in points]          # validates every override first
+    _prime_dry_loads(scenes)                             # the dry loads of all points in batched solves
     for sc in scenes:
         choose_models(sc)                                # InputError (e.g. no network) before running
     total = len(points)
