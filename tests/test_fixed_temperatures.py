@@ -143,25 +143,24 @@ def test_inner_ring_heat_up_of_the_right_order(scene):
         assert abs(rise / ref_rise - 1.0) < 0.3, (n, tr.T_C["inner_ring"][-1])
 
 
-def _shaft_segments(text, n):
-    """The shipped seed 004 network with its 150 mm shaft path in ``n`` equal segments (0: the whole
-    0.18 m shaft share as one lumped node)."""
-    head, rest = text.split("# BEGIN shaft segments", 1)
-    tail = rest.split("# END shaft segments", 1)[1]
-    if n == 0:
-        head = head.replace('bearing.bore**2 * 0.03"', 'bearing.bore**2 * 0.18"', 1)
-        return head + ('[[elements]]\nname = "shaft_path"\ntype = "planar"\nbetween = ["shaft", "support_block"]\n'
-                       'material = "aisi-52100"\nA_m2 = "pi / 4 * bearing.bore**2"\nlength_m = 0.15\n\n') + tail
-    dl = 0.15 / n
-    chain = ["shaft"] + [f"shaft_{k}" for k in range(1, n + 1)] + ["support_block"]
-    body = "".join(f'[nodes.{m}]\nvolume_m3 = "pi / 4 * bearing.bore**2 * {dl!r}"\nmaterial = "aisi-52100"\n\n'
-                   for m in chain[1:-1])
-    for a, b in zip(chain[:-1], chain[1:]):
-        L = 0.015 + dl / 2 if a == "shaft" else (dl / 2 if b == "support_block" else dl)
-        body += (f'[[elements]]\nname = "{a}_{b}"\ntype = "planar"\nbetween = ["{a}", "{b}"]\n'
-                 f'material = "aisi-52100"\nA_m2 = "pi / 4 * bearing.bore**2"\nlength_m = {L!r}\n\n')
-    return head + body + tail
-
+def _shaft_segments(net_text: str, segments: int) -> str:
+    """The shipped seed 004 network with its 150 mm shaft path in ``segments`` equal segments (0: the
+    whole 0.18 m shaft share as one lumped node; validation/seed004_trends.py has the same study)."""
+    def swap(text, tag, new):
+        head, rest = text.split(f"# BEGIN shaft segment {tag}", 1)
+        return head + new + rest.split(f"# END shaft segment {tag}", 1)[1].split("\n", 1)[1]
+    el = ('[[elements]]\nname = "{a}_to_{b}"\ntype = "planar"\nbetween = ["{a}", "{b}"]\nmaterial = "aisi-52100"\n'
+          'A_m2 = "pi / 4 * bearing.bore**2"\nlength_m = {L!r}\n\n')
+    if segments == 0:
+        net_text = net_text.replace('bearing.bore**2 * 0.03"', 'bearing.bore**2 * 0.18"', 1)
+        return swap(swap(net_text, "nodes", ""), "elements", el.format(a="shaft", b="support_block", L=0.15))
+    dl = 0.15 / segments
+    chain = ["shaft"] + [f"shaft_{k}" for k in range(1, segments + 1)] + ["support_block"]
+    nodes = "".join(f'[nodes.{n}]\nvolume_m3 = "pi / 4 * bearing.bore**2 * {dl!r}"\nmaterial = "aisi-52100"\n\n'
+                    for n in chain[1:-1])
+    els = "".join(el.format(a=a, b=b, L=(0.015 + dl / 2) if a == "shaft" else (dl / 2 if b == "support_block" else dl))
+                  for a, b in zip(chain[:-1], chain[1:]))
+    return swap(swap(net_text, "nodes", nodes), "elements", els)
 
 def test_shaft_path_discretisation_is_converged_and_conserves_conductance(scene, tmp_path):
     """The shipped network splits the 150 mm shaft path into 5 segments (Fo = a t / L² ≈ 0.55 over

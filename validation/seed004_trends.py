@@ -264,22 +264,21 @@ def main() -> int:
 def shaft_variant(net_text: str, segments: int) -> str:
     """The shipped network with its shaft path to the support block rewritten in ``segments`` equal
     segments (0: the older single lumped node, 0.18 m of shaft, 0.15 m conduction path)."""
-    head, rest = net_text.split("# BEGIN shaft segments", 1)
-    _, tail = rest.split("# END shaft segments", 1)
-    area = 'A_m2 = "pi / 4 * bearing.bore**2"\n'
-    node = '[nodes.{n}]\nvolume_m3 = "pi / 4 * bearing.bore**2 * {L!r}"\nmaterial = "aisi-52100"\n\n'
-    el = '[[elements]]\nname = "{a}_to_{b}"\ntype = "planar"\nbetween = ["{a}", "{b}"]\nmaterial = "aisi-52100"\n' + \
-        area + 'length_m = {L!r}\n\n'
+    def swap(text, tag, new):
+        head, rest = text.split(f"# BEGIN shaft segment {tag}", 1)
+        return head + new + rest.split(f"# END shaft segment {tag}", 1)[1].split("\n", 1)[1]
+    el = ('[[elements]]\nname = "{a}_to_{b}"\ntype = "planar"\nbetween = ["{a}", "{b}"]\nmaterial = "aisi-52100"\n'
+          'A_m2 = "pi / 4 * bearing.bore**2"\nlength_m = {L!r}\n\n')
     if segments == 0:
-        head = head.replace('volume_m3 = "pi / 4 * bearing.bore**2 * 0.03"', 'volume_m3 = "pi / 4 * bearing.bore**2 * 0.18"', 1)
-        return head + el.format(a="shaft", b="support_block", L=0.15) + tail
+        net_text = net_text.replace('bearing.bore**2 * 0.03"', 'bearing.bore**2 * 0.18"', 1)
+        return swap(swap(net_text, "nodes", ""), "elements", el.format(a="shaft", b="support_block", L=0.15))
     dl = 0.15 / segments
     chain = ["shaft"] + [f"shaft_{k}" for k in range(1, segments + 1)] + ["support_block"]
-    body = "".join(node.format(n=n, L=dl) for n in chain[1:-1])
-    body += "".join(el.format(a=a, b=b, L=(0.015 + dl / 2) if a == "shaft" else (dl / 2 if b == "support_block" else dl))
-                    for a, b in zip(chain[:-1], chain[1:]))
-    return head + body + tail
-
+    nodes = "".join(f'[nodes.{n}]\nvolume_m3 = "pi / 4 * bearing.bore**2 * {dl!r}"\nmaterial = "aisi-52100"\n\n'
+                    for n in chain[1:-1])
+    els = "".join(el.format(a=a, b=b, L=(0.015 + dl / 2) if a == "shaft" else (dl / 2 if b == "support_block" else dl))
+                  for a, b in zip(chain[:-1], chain[1:]))
+    return swap(swap(net_text, "nodes", nodes), "elements", els)
 
 def film_vs_approach(T=50.0, n=4800.0, Fr=750.0):
     """Evidence for the radial-load gap: the film is as thick as the elastic approach of these balls."""
