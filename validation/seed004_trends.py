@@ -251,7 +251,9 @@ def main() -> int:
           "paths), not only in the heat capacities. "
           "The model stays cooler than the rig; the power level itself cannot be "
           "checked against the paper (measured powers only in figures). With a logged heat-up, impose the logged "
-          "support-block temperature (`fixed_C`) and calibrate the housing joint and β (`thermobear calibrate`).", "",
+          "support-block temperature (`fixed_C`) and calibrate the housing joint and β (`thermobear calibrate`). Which "
+          "estimate matters most, each within a-priori bounds and all at once: "
+          "validation/report/seed004_heatup_sensitivity.md.", "",
           "Shaft path to the support block, discretisation study (inner ring °C; nothing else changed):", "",
           "| shaft path | 3200 rpm, 1000 s | 3200 rpm, steady | 8070 rpm, 1000 s | 8070 rpm, steady |",
           "|---|---|---|---|---|"] + seg_rows + [""]
