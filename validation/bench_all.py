@@ -8,7 +8,8 @@ Targets (per operating point unless stated):
 
 1. load distribution in a batch of 1000 combined-load cases      ≤ 100 µs per case
 2. local losses in a batch of 1000 operating points              ≤ 200 µs per point
-3. one coupled steady point (seed 004 scene, 10-node network)    ≤ 5 ms
+3. one coupled steady point (seed 004 scene, its network)        ≤ 5 ms
+   (median over 20 new operating points, each solved once: no operating-point cache is warm)
 4. 1000-point coupled sweep on one core                          ≤ 2 s
    (default: timed on ``N_SWEEP`` points and scaled, stated as such; ``--full`` runs all 1000)
 5. 3600 s heat-up transient (seed 004 scene)                     ≤ 0.5 s
@@ -99,23 +100,31 @@ def run(full: bool = False, profile: bool = True) -> str:
     if profile:
         prof["2. losses (bearing_losses batch)"] = _profile(f2)
         prof["2b. run_sweep prescribed"] = _profile(f2b)
-    # 3. coupled single point: a new operating point each call (the solver caches the dry load distribution
-    # of an operating point for the model choice and the load step; cleared here so that it is timed)
-    from thermobear.solver import _dry_load_cached
+    # 3. coupled single point: every timed call a NEW operating point (n_rpm = n0 (1 + k 1e-4), k = 1..20,
+    # each solved once) after one warm-up solve of the scene: bearing-level caches (network values that
+    # read only the bearing, stiffness constants, the network table) are warm as in any sweep or repeated
+    # use; everything keyed on the operating point (the dry loads the solver caches) is cold
+    def new_points(scene, k0=0, n=20):
+        return [scene.with_(n_rpm=scene.n_rpm * (1.0 + k * 1e-4)) for k in range(k0 + 1, k0 + n + 1)]
 
-    def cold(scene):
-        def f():
-            _dry_load_cached.cache_clear()
-            return steady_state(scene)
-        return f
-    f3 = cold(s)
-    t = _median(f3, 5)
-    res.append(("coupled steady point (seed 004, oil_jet_ball_bearing network)", t, 5e-3, "per point"))
+    def per_point(scene):
+        steady_state(scene)                                   # warm-up (imports, bearing-level caches)
+        ts = []
+        for sc in new_points(scene):
+            t0 = time.perf_counter()
+            steady_state(sc)
+            ts.append(time.perf_counter() - t0)
+        return float(np.median(ts))
+    t = per_point(s)
+    res.append(("coupled steady point (seed 004, oil_jet_ball_bearing network; 20 new points, median)", t, 5e-3,
+                "per point"))
     s2 = tb.load_scene(tb.example_path("seed002_grease_thrust_51107.toml"))
-    t = _median(cold(s2), 5)
-    res.append(("coupled steady point (seed 002, grease_thrust_four_ball network)", t, 5e-3, "per point"))
+    t = per_point(s2)
+    res.append(("coupled steady point (seed 002, grease_thrust_four_ball network; 20 new points, median)", t, 5e-3,
+                "per point"))
     if profile:
-        prof["3. coupled steady point (seed 004)"] = _profile(f3, 16)
+        pts = new_points(s, k0=100)
+        prof["3. coupled steady point (seed 004, 20 new points)"] = _profile(lambda: [steady_state(p) for p in pts], 16)
     # 4. coupled sweep on one core
     npts = 1000 if full else N_SWEEP
     grid = {"n_rpm": list(np.linspace(2000, 8000, npts))}
@@ -138,22 +147,33 @@ def run(full: bool = False, profile: bool = True) -> str:
             if target < 0.1 else (lambda x: f"{x:.2f} s")
         verdict = "met" if t <= target else f"**missed ×{t / target:.3g}**"
         L.append(f"| {name} | {fmt(t)} {unit} | {fmt(target)} | {verdict} |")
-    L += ["", "**Why the misses.** A coupled seed 004 point (each timed call a cold operating point: the dry load "
-          "distribution the solver caches per point is cleared) is about 40 % ball equilibrium and 60 % thermal "
-          "coupling. The high-speed ball equilibrium costs ≈ 4 ms (7 Newton steps with an exact Jacobian — the "
-          "cage speed a fourth global unknown — from a static Jones solution of ≈ 0.9 ms; a few hundred small "
-          "numpy operations per step on 15 balls). With the loads known, the rest costs ≈ 6–7 ms: the contact set "
-          "(≈ 0.7 ms), the network build (≈ 0.9 ms: the table's structure is checked once, then values evaluated "
-          "and elements probed per point), Newton on all free node temperatures (5–6 iterations, ≈ 2.3 ms: a "
-          "fused loss pass over 30 contacts × 4 temperature sets, conductances and their slopes, a dense solve), "
-          "and the final network solve with the loss breakdown (≈ 0.7 ms). The seed 002 point (closed-form loads) "
-          "is at ≈ 4–5 ms. Reaching 5 ms for seed 004 needs the per-step numpy overhead gone (a compiled kernel "
-          "for the ball equilibrium and the loss pass). Points where the dry solution lifts balls off a race run "
-          "the film load model (≈ 40 ms coupled: 2–3 film load distributions of 5–15 ms); in the coupled sweep "
-          "(2000–8000 rpm) that is the points below ≈ 3200 rpm, where the low-speed form applies and lifts two "
-          "balls. The prescribed-temperature sweep solves each load group in one batched call (dry high-speed "
-          "or film). The transient is ≈ 100 loss evaluations of the BDF right-hand side with the output losses "
-          "in one vectorised call. Timings vary by ±30–50 % between runs on the 2-core CI machine."]
+    L += ["", "**Why the misses.** A coupled seed 004 point (each timed call a new operating point, n = 3200 (1 + "
+          "k 1e-4) rpm: what the solver caches per operating point — the dry loads — is cold; what depends only "
+          "on the bearing — the network's volumes, areas, lengths and materials, the stiffness constants — is "
+          "warm, as in any sweep) measures ≈ 7.5–9.5 ms, about half ball equilibrium and half thermal coupling. "
+          "The dry high-speed ball equilibrium costs ≈ 4.3 ms: the static Jones solution it starts from "
+          "(thermobear.loads, ≈ 1.0 ms), the per-ball start (≈ 0.6 ms, of which ≈ 0.3 ms placing the light "
+          "balls), then 7 Newton steps of ≈ 0.3 ms (state ≈ 0.12 ms, exact Newton step ≈ 0.16 ms: a few hundred "
+          "numpy calls on 15-ball arrays). The 7th step lands at a residual ≈ 4e-14 < tol·1e-3, so no polish "
+          "step is taken at these points (limiting the polish would save nothing here; it runs at e.g. 8070 "
+          "rpm, one step). With the loads known: the contact set ≈ 0.7 ms (Hertz ellipticity iteration, "
+          "kinematics), the network build ≈ 0.45 ms (0.87 ms before the bearing-only values were shared between "
+          "points; the scene-dependent values — speeds, oil flow, temperatures, contact ellipses — are evaluated "
+          "per point), Newton on the free node temperatures ≈ 2.0–2.3 ms for 5 iterations (≈ 1.3 ms of it the "
+          "iterations themselves: a fused loss pass of ≈ 0.12 ms over 30 contacts × 4 temperature sets, "
+          "conductances and their slopes, a dense solve; the rest first-use factors of the new contact set and "
+          "network), and the final losses with the network solve ≈ 0.6 ms. Measured before/after the shared "
+          "values interleaved in one process: 8.1 → 7.65 ms median; separate runs overlap (run-to-run noise "
+          "±15 %). The seed 002 point (closed-form loads) is at ≈ 3–3.5 ms. Reaching 5 ms for seed 004 needs "
+          "about half of the remaining cost gone: the per-call numpy overhead of the ball equilibrium and the "
+          "loss pass (a compiled kernel), or fewer passes (e.g. a static start reused across speeds of one load "
+          "case — an operating-point cache, which this benchmark deliberately keeps cold). Points where the dry "
+          "solution lifts balls off a race run the film load model (≈ 40 ms coupled: 2–3 film load "
+          "distributions of 5–15 ms); in the coupled sweep (2000–8000 rpm) that is the points below ≈ 3200 rpm, "
+          "where the low-speed form applies and lifts two balls. The prescribed-temperature sweep solves each "
+          "load group in one batched call (dry high-speed or film). The transient is ≈ 100 loss evaluations of "
+          "the BDF right-hand side with the output losses in one vectorised call. Timings vary by ±30–50 % "
+          "between runs on the 2-core CI machine."]
     if profile:
         L += ["", "Hot spots (cProfile):", ""]
         for k, v in prof.items():

@@ -437,29 +437,120 @@ def load_network(spec, context=None, *, _frozen: bool = False) -> ThermalNetwork
     return _build(data, ctx, src, _frozen and isinstance(spec, Mapping))
 
 
-# id(spec) -> (spec, estimated) of specs built once with every check (see _build's ``frozen``)
+# id(spec) -> (spec, estimated, static leaves) of specs built once with every check (see _build's ``frozen``)
 _CHECKED: dict = {}
+# (id(spec), values of the static leaves) -> (spec, {field: checked value}) (see _static_values)
+_STATIC: dict = {}
+#: Context roots whose values do not change with the operating point (a bearing's geometry and
+#: materials); expressions reading only these are evaluated once per set of values they read.
+_STATIC_ROOTS = frozenset({"bearing"})
 
 
 def _build(data, ctx, src, frozen: bool = False) -> ThermalNetwork:
     """Check and build a network.  ``frozen`` (private, for :mod:`thermobear.solver`, which rebuilds
     the same never-modified table for every operating point): once such a table passed every check,
     later builds of the same object skip the checks that do not depend on the context (keys, element
-    types and schemas, node names, reachability) and only evaluate, check and probe the values."""
+    types and schemas, node names, reachability) and only evaluate, check and probe the values; the
+    values that read nothing but the bearing (volumes, areas, lengths, materials: see
+    :func:`_static_values`) are taken from the build with the same bearing values."""
     pre = f"{src}: "
     memo = _CHECKED.get(id(data)) if frozen else None
     trusted = memo is not None and memo[0] is data
     if trusted:
-        return _assemble(data, ctx, src, pre, trusted=True, estimated=dict(memo[1]))
+        return _assemble(data, ctx, src, pre, trusted=True, estimated=dict(memo[1]),
+                         static=_static_values(data, ctx, memo[2]))
     net = _assemble(data, ctx, src, pre, trusted=False, estimated={})
     if frozen:
         if len(_CHECKED) > 64:
             _CHECKED.clear()
-        _CHECKED[id(data)] = (data, dict(net.estimated))
+        _CHECKED[id(data)] = (data, dict(net.estimated), _spec_leaves(data))
     return net
 
 
-def _assemble(data, ctx, src, pre, trusted, estimated) -> ThermalNetwork:
+@lru_cache(maxsize=1024)
+def _leaves(expr: str):
+    """The context names an expression reads, as (root, attribute, ...) paths, when every root is in
+    ``_STATIC_ROOTS``; None when it reads another root (scene, contacts, oil ...) or does not parse."""
+    try:
+        tree = _parse(expr)
+    except SyntaxError:
+        return None
+    out = set()
+    todo = [tree.body]
+    while todo:
+        node = todo.pop()
+        if isinstance(node, ast.Attribute):
+            path, base = [], node
+            while isinstance(base, ast.Attribute):
+                path.append(base.attr)
+                base = base.value
+            if not isinstance(base, ast.Name):
+                return None
+            if base.id not in _STATIC_ROOTS:
+                return None
+            out.add((base.id, *reversed(path)))
+        elif isinstance(node, ast.Name):
+            if node.id in _CONSTS:
+                continue
+            if node.id not in _STATIC_ROOTS:
+                return None
+            out.add((node.id,))
+        elif isinstance(node, ast.Call):
+            todo.extend(node.args)          # the function name is not a context name
+        else:
+            todo.extend(ast.iter_child_nodes(node))
+    return frozenset(out)
+
+
+def _static_expr(v) -> bool:
+    """True for an expression string that reads only static context names (``_STATIC_ROOTS``)."""
+    return isinstance(v, str) and len(v) <= 400 and _leaves(v) is not None
+
+
+def _spec_leaves(data) -> tuple:
+    """Every static context name (path) that the expressions of a checked table read, sorted."""
+    out = set()
+    tables = list(data["nodes"].values()) + list(data["elements"])
+    for tbl in tables:
+        for k, v in tbl.items():
+            if k in _ELEMENT_META or k in STRING_KEYS or k in ("description", "measured_by", "source"):
+                continue
+            if _static_expr(v):
+                out |= _leaves(v)
+    return tuple(sorted(out))
+
+
+def _static_values(data, ctx, leaves):
+    """Checked values of the static entries of a checked table for this context (field → value),
+    shared by every build whose context gives the same values to ``leaves`` (the static names the
+    table reads): a pure cache, keyed on the values actually read (a bearing changed in any of them
+    gets its own entry).  Filled by the first build of each key; None when a value cannot be read or
+    hashed (the build then evaluates everything, with the usual errors)."""
+    vals = []
+    for path in leaves:
+        v = _get(ctx, path[0])
+        for a in path[1:]:
+            if v is _MISSING:
+                break
+            v = _get(v, a)
+        if v is _MISSING:
+            return None
+        vals.append(v)
+    key = (id(data), tuple(vals))
+    try:
+        hit = _STATIC.get(key)
+    except TypeError:                   # an unhashable value (e.g. an array): no sharing
+        return None
+    if hit is not None and hit[0] is data:
+        return hit[1]
+    if len(_STATIC) > 256:
+        _STATIC.clear()
+    d: dict = {}
+    _STATIC[key] = (data, d)
+    return d
+
+
+def _assemble(data, ctx, src, pre, trusted, estimated, static=None) -> ThermalNetwork:
     unknown = set() if trusted else set(data) - _TOP_KEYS
     if unknown:
         k = sorted(unknown)[0]
@@ -492,6 +583,15 @@ def _assemble(data, ctx, src, pre, trusted, estimated) -> ThermalNetwork:
                 raise InputError(f"{f}.T_C", nd["T_C"], "a fixed-temperature node takes no heat capacity or material")
             fixed[i] = True
             T_fixed[i] = _check_value(f"{f}.T_C", "T_C", evaluate(nd["T_C"], ctx, f"{f}.T_C")) + 273.15
+        elif static is not None:
+            c = static.get(f)
+            if c is None:
+                c = _capacity(f, nd, ctx)
+                if all(_static_expr(nd[k]) or isinstance(nd[k], (int, float)) or k == "material"
+                       and nd[k] in material_names() for k in ("C_J_K", "mass_kg", "volume_m3", "material")
+                       if k in nd):
+                    static[f] = c
+            C[i] = c
         else:
             C[i] = _capacity(f, nd, ctx)
         graph.add_node(name, fixed=bool(fixed[i]), **({"T_C": T_fixed[i] - 273.15} if fixed[i] else {"C_J_K": C[i]}))
@@ -500,7 +600,7 @@ def _assemble(data, ctx, src, pre, trusted, estimated) -> ThermalNetwork:
 
     elements, seen = [], set()
     for k, e in enumerate(els):
-        el = _element(pre, k, e, ctx, index, fixed, estimated, seen, trusted)
+        el = _element(pre, k, e, ctx, index, fixed, estimated, seen, trusted, static)
         elements.append(el)
         graph.add_edge(*el.nodes, key=el.name, type=el.type, advective=el.advective, **{
             kk: (vv.name if isinstance(vv, Material) else vv) for kk, vv in el.p.items()})
@@ -515,12 +615,20 @@ def _assemble(data, ctx, src, pre, trusted, estimated) -> ThermalNetwork:
     # probe every element once at a representative state, naming the element on failure
     T_probe = net.initial_T_K() + np.where(fixed, 0.0, 10.0)
     for el in elements:
+        if static is not None:
+            # the memoised conductance of a temperature-independent element of the last build with these
+            # bearing values (Element._memo keeps it only where the parameters are equal)
+            memo = static.get(("G", el.name))
+            if memo is not None:
+                el.__dict__["_tb_G"] = memo
         try:
             G = el.conductance(T_probe)
         except InputError as exc:
             raise InputError(f"{pre}elements[{el.name}].{exc.field}", exc.value, exc.expected) from None
         if not (np.isfinite(G) and G >= 0):
             raise InputError(f"{pre}elements[{el.name}]", G, "conductance must be finite and >= 0 [W/K]")
+        if static is not None and "_tb_G" in el.__dict__ and not el.p.get("semi_axes_from") == "context":
+            static[("G", el.name)] = el.__dict__["_tb_G"]
     return net
 
 
@@ -615,7 +723,7 @@ def _element_checks(pre, k, e, index, estimated, seen):
     return name, f, typ, between, schema
 
 
-def _element(pre, k, e, ctx, index, fixed, estimated, seen, trusted=False) -> Element:
+def _element(pre, k, e, ctx, index, fixed, estimated, seen, trusted=False, static=None) -> Element:
     if trusted:                             # a table that passed every check below before (see _build)
         between = e["between"]
         name = e.get("name", f"{between[0]}--{between[1]}")
@@ -630,17 +738,26 @@ def _element(pre, k, e, ctx, index, fixed, estimated, seen, trusted=False) -> El
         if kk in _ELEMENT_META:
             continue
         fld = f"{f}.{kk}"
+        if static is not None:
+            hit = static.get(fld, _MISSING)
+            if hit is not _MISSING:             # a static value (see _static_values), checked before
+                p[kk] = hit
+                continue
         if kk in STRING_KEYS:
             if v not in STRING_KEYS[kk]:
                 raise InputError(fld, v, f"one of {', '.join(STRING_KEYS[kk])}")
             p[kk] = v
         elif kk in MATERIAL_KEYS:
             p[kk] = _resolve_material(v, ctx, fld)
+            if static is not None and (_static_expr(v) or isinstance(v, str) and v in material_names()):
+                static[fld] = p[kk]
         else:
             val = evaluate(v, ctx, fld)
             if np.ndim(val):
                 raise InputError(fld, v, "must evaluate to a single number")
             p[kk] = _check_value(fld, kk, val)
+            if static is not None and _static_expr(v):
+                static[fld] = p[kk]
 
     i, j = index[between[0]], index[between[1]]
     if typ == "convection":
