@@ -74,6 +74,13 @@ def test_run_bad_scene_exit_2_no_plot(capsys, tmp_path):
     assert not (tmp_path / "plots").exists()
 
 
+def test_thrust_bearing_without_axial_load_exit_2(capsys, tmp_path):
+    code, out, err = run(capsys, "run", str(EX / "seed002_grease_thrust_51107.toml"), "--set", "Fa=0",
+                         "--plot", tmp_path / "plots")
+    assert_bad_input(code, err, "Fa_N")
+    assert out == "" and not (tmp_path / "plots").exists()
+
+
 def test_run_bad_plot_dir_checked_before_computing(capsys, tmp_path):
     code, out, err = run(capsys, "run", SEED000, "--plot", tmp_path / "no" / "such" / "dir")
     assert_bad_input(code, err, "--plot")

@@ -214,6 +214,18 @@ def test_a_load_the_bearing_cannot_carry_is_reported_per_point_not_by_the_model_
     assert [r["status"] for r in rows] == ["NoEquilibrium", "ok"]
 
 
+def test_thrust_bearing_without_axial_load_is_refused_not_a_singular_network():
+    """A thrust bearing at Fa = 0 has no contact: NoEquilibrium naming the field (CLI exit 2), in solve,
+    steady state and per sweep point — not P = 0 W, nor a 'singular conductance matrix'."""
+    from thermobear.errors import NoEquilibrium
+    from thermobear.sweep import run_sweep
+    for f in (lambda: solve(S002.with_(Fa=0.0, T_C=50.0)), lambda: steady_state(S002.with_(Fa=0.0))):
+        with pytest.raises(NoEquilibrium, match="Fa_N"):
+            f()
+    rows = run_sweep(S002, {"Fa": [0.0, 100.0]}, processes=1)
+    assert [r["status"] for r in rows] == ["NoEquilibrium", "ok"]
+
+
 def test_schedule_change_reported_once_per_segment_with_film_pieces():
     tr = transient(S004.with_(n_rpm=4800.0, Fr=150.0), 3000.0, schedule=[(200.0, {"Fr": 750.0})], t_eval=[3000.0])
     assert tr.models_used["schedule"][1].count("from t =") == 1

@@ -312,8 +312,16 @@ def _load_case(load, index, nb):
 
 
 def _closed_form_axial(b, Fa) -> LoadDistribution:
-    """Pure axial load, all balls equal: Harris eq 7.36 (radial/angular) or Q = Fa/Z (thrust)."""
+    """Pure axial load, all balls equal: Harris eq 7.36 (radial/angular) or Q = Fa/Z (thrust).
+
+    A thrust bearing without axial load has no contact at all (its washers are not radially located
+    and nothing presses the balls): NoEquilibrium, as the high-speed form says."""
     Z = b.Z
+    if b.kind == "thrust" and not Fa > 0:
+        from .errors import NoEquilibrium
+        raise NoEquilibrium(f"a thrust ball bearing needs an axial load (operation.Fa_N = {Fa:g} N; accepted: > 0): "
+                            "without it the balls leave the washers and no contact carries or loses anything "
+                            "(in service a minimum axial load keeps them rolling)")
     psi = 2.0 * np.pi * np.arange(Z) / Z
     if b.kind == "thrust" and b.alpha0 >= np.pi / 2 - 1e-12:
         al = np.pi / 2
