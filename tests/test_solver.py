@@ -226,6 +226,15 @@ def test_thrust_bearing_without_axial_load_is_refused_not_a_singular_network():
     assert [r["status"] for r in rows] == ["NoEquilibrium", "ok"]
 
 
+def test_network_reading_a_dimension_the_bearing_lacks_names_network_field_and_fix():
+    """The ISO/TS 16281 reference bearing has no envelope dimensions; the rig network reads its bore."""
+    from thermobear.errors import InputError
+    with pytest.raises(InputError) as e:
+        steady_state(S004.with_(bearing="iso-dgbb"))
+    msg = str(e.value)
+    assert "network oil_jet_ball_bearing" in msg and "bearing.bore" in msg and "bore_mm" in msg
+
+
 def test_schedule_change_reported_once_per_segment_with_film_pieces():
     tr = transient(S004.with_(n_rpm=4800.0, Fr=150.0), 3000.0, schedule=[(200.0, {"Fr": 750.0})], t_eval=[3000.0])
     assert tr.models_used["schedule"][1].count("from t =") == 1

@@ -122,8 +122,12 @@ class _Evaluator:
     def num(self, node):
         v = self.visit(node)
         if isinstance(v, (bool, str)) or not isinstance(v, (int, float, np.floating, np.integer, np.ndarray)):
-            self.fail(f"'{ast.unparse(node)}' is not a number")
+            self.fail(f"'{ast.unparse(node)}' " + (_NONE_MSG if v is None else "is not a number"))
         return v
+
+
+_NONE_MSG = ("has no value in this scene (None), but the network reads it: give it in the scene (a bearing's "
+             "bore_mm, outer_diameter_mm, width_mm) or use a network that does not need it")
 
 
 _NUM_TYPES = (int, float, np.floating, np.integer, np.ndarray)
@@ -142,7 +146,7 @@ def _compile(node, as_num: bool):
     def num(ev):
         v = f(ev)
         if isinstance(v, (bool, str)) or not isinstance(v, _NUM_TYPES):
-            ev.fail(f"'{src or ast.unparse(node)}' is not a number")
+            ev.fail(f"'{src or ast.unparse(node)}' " + (_NONE_MSG if v is None else "is not a number"))
         return v
     return num
 
@@ -425,7 +429,8 @@ def load_network(spec, context=None, *, _frozen: bool = False) -> ThermalNetwork
     """
     ctx = dict(context or {})
     if isinstance(spec, Mapping):
-        data, src = (spec if _frozen else dict(spec)), "<dict>"
+        data = spec if _frozen else dict(spec)
+        src = f"network {spec['name']}" if isinstance(spec.get("name"), str) else "<dict>"
     else:
         p = Path(spec)
         if p.suffix != ".toml" and not p.exists():
