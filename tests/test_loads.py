@@ -56,6 +56,23 @@ def test_axial_contact_angle_one_load_equals_the_vectorised_solve(name):
         assert np.allclose(rhs, lhs, rtol=1e-10)
 
 
+@pytest.mark.parametrize("Fr", [0.5, 5.0])
+@pytest.mark.parametrize("ratio", [0.05, 0.3])
+def test_light_combined_load_solved_by_continuation_one_ball_analytic(Fr, ratio):
+    """A few newtons on a 7210 with Fa/Fr < 0.5: the closed-form start fails (the solution is almost pure
+    geometry); continuation in the load magnitude finds it.  One ball carries everything, so
+    Q sin α = Fa and Q cos α = Fr give tan α = Fa/Fr and Q = √(Fa² + Fr²) exactly."""
+    b = bearing("7210")
+    ld = load_distribution(b, Fa=ratio * Fr, Fr=Fr)
+    k = ld.Q > 0
+    assert k.sum() == 1 and ld.residual <= 1e-9
+    assert np.tan(ld.alpha_i[k][0]) == pytest.approx(ratio, rel=1e-8)
+    assert ld.Q[k][0] == pytest.approx(np.hypot(ratio * Fr, Fr), rel=1e-8)
+    batch = load_distribution(b, Fa=np.array([ratio * Fr, 450.0]), Fr=np.array([Fr, 325.0]))
+    assert np.allclose(batch.Q[0], ld.Q, rtol=1e-9, atol=1e-12)
+    assert np.allclose(batch.Q[1], load_distribution(b, Fa=450.0, Fr=325.0).Q, rtol=1e-12)
+
+
 def test_stribeck_sum_zero_clearance():
     # zero clearance, pure radial: Q_max·Z/Fr → 4.37 (discrete sums 4.385 Z=9, 4.364 Z=12, 4.369 Z=20)
     for Z, ref in ((9, 4.385), (12, 4.364), (20, 4.369)):

@@ -295,7 +295,7 @@ def _backtrack(y_t, dy, n0, trial_norm, halvings: int = 30):
 
 
 def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, stiffness: str = "nominal",
-                      tol: float = _TOL, maxiter: int = _MAXIT) -> LoadDistribution:
+                      tol: float = _TOL, maxiter: int = _MAXIT, _y0=None, _cont: bool = True) -> LoadDistribution:
     r"""Quasi-static (low-speed) load distribution, rigid rings.
 
     Parameters
@@ -323,7 +323,12 @@ def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, st
     Notes
     -----
     Seed 004 eqs 6–8; Harris 2001 §7.4; Jones 1960.  See the module docstring for
-    the equations and conventions.
+    the equations and conventions.  A case whose Newton iteration fails from the
+    closed-form start is solved again by continuation in the load magnitude: the same
+    load ratios ×10, ×100, ... until it converges, then back down to the given loads
+    in steps of √10, each step started from the last solution (at very light loads
+    the solution is almost pure geometry — the contact angles of the few loaded
+    balls set by Fa/Fr — and the Hertz approach too small to guide Newton there).
 
     Examples
     --------
@@ -373,6 +378,8 @@ def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, st
             al_m = axial_contact_angle(brg, Fm_eq[mdom], Kn0)
             y[mdom, 2] = np.sign(Mv[mdom]) * (np.cos(brg.alpha0) * np.tan(al_m))
 
+    if _y0 is not None:                 # continuation (see _continue_in_load): the last solution
+        y = np.array(_y0, float).reshape(nb, 3)
     active = [0, 1, 2] if tilt_free else [0, 1]
     na = len(active)
     sums = _sum_matrix(c_psi[0])
@@ -452,6 +459,17 @@ def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, st
         floor |= todo & (norm <= 1e-9) & (norm > 0.5 * prev)
     else:
         it = maxiter
+    extra_it = 0                        # Newton iterations spent by continuation (see Notes)
+    if _cont and brg.kind != "thrust" and np.any(norm > max(tol, 1e-9)):
+        for k in np.flatnonzero(norm > max(tol, 1e-9)):
+            if brg.kind == "angular_contact":       # balls over the low shoulder: no equilibrium (raised below)
+                A1, _, _, _, _, _, Q, _ = _state(y[k:k + 1], brg, stiffness, c_psi, A, R)
+                if np.any((Q > 0) & (A1 <= 0)):
+                    continue
+            got = _continue_in_load(brg, Fa_b[k], Fr_b[k], Mv[k] if tilt_free else None, stiffness, tol, maxiter)
+            if got is not None:
+                y[k], norm[k], n_it = got
+                extra_it = max(extra_it, n_it)
     if np.any(norm > max(tol, 1e-9)):
         k = int(np.argmax(norm))
         if brg.kind == "angular_contact":
@@ -485,8 +503,38 @@ def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, st
     return LoadDistribution(
         delta_a=sh(da), delta_r=sh(dr), theta=sh(th), Q_i=shz(Q), Q_o=shz(Q.copy()),
         alpha_i=shz(alpha), alpha_o=shz(alpha.copy()), psi=psi, delta_n=shz(np.where(zero[:, None], 0.0, s)),
-        residual=float(norm.max()) if norm.size else 0.0, iterations=int(it),
+        residual=float(norm.max()) if norm.size else 0.0, iterations=int(it) + extra_it,
         Fa=np.asarray(Fa, dtype=float), Fr=np.asarray(Fr, dtype=float), M=Mv.reshape(out_shape) if out_shape else float(Mv[0]))
+
+
+def _continue_in_load(brg, Fa, Fr, M, stiffness, tol, maxiter):
+    """Scaled unknowns y (3,), the residual and the Newton iterations spent, for one load case by
+    continuation in the load magnitude (see :func:`load_distribution`, Notes); None when no scaled case
+    converges either."""
+    from .errors import SolverError
+    A, R = brg.A, brg.R_inner_locus
+    spent = [0]
+
+    def solve(f, y0=None):
+        ld = load_distribution(brg, Fa=f * Fa, Fr=f * Fr, M=None if M is None else f * M, stiffness=stiffness,
+                               tol=tol, maxiter=maxiter, _y0=y0, _cont=False)
+        spent[0] += ld.iterations
+        return np.array([(ld.delta_a - A * np.sin(brg.alpha0)) / A, ld.delta_r / A, ld.theta * R / A]), ld.residual
+
+    for k in range(1, 7):                       # up: ×10 … ×1e6 until one converges from the closed-form start
+        try:
+            y, res = solve(10.0 ** k)
+            break
+        except SolverError:
+            continue
+    else:
+        return None
+    for j in range(2 * k - 1, -1, -1):          # down in steps of √10, each from the last solution
+        try:
+            y, res = solve(10.0 ** (j / 2), y)
+        except SolverError:
+            return None
+    return y, res, spent[0]
 
 
 _JAC = np.array([0, 1, 2, 1, 3, 4, 2, 4, 5])   # symmetric 3×3 Jacobian from its six distinct sums
