@@ -143,38 +143,22 @@ def test_inner_ring_heat_up_of_the_right_order(scene):
         assert abs(rise / ref_rise - 1.0) < 0.3, (n, tr.T_C["inner_ring"][-1])
 
 
-def _shaft_segments(net_text: str, segments: int) -> str:
-    """The shipped seed 004 network with its 150 mm shaft path in ``segments`` equal segments (0: the
-    whole 0.18 m shaft share as one lumped node; validation/seed004_trends.py has the same study)."""
-    def swap(text, tag, new):
-        head, rest = text.split(f"# BEGIN shaft segment {tag}", 1)
-        return head + new + rest.split(f"# END shaft segment {tag}", 1)[1].split("\n", 1)[1]
-    el = ('[[elements]]\nname = "{a}_to_{b}"\ntype = "planar"\nbetween = ["{a}", "{b}"]\nmaterial = "aisi-52100"\n'
-          'A_m2 = "pi / 4 * bearing.bore**2"\nlength_m = {L!r}\n\n')
-    if segments == 0:
-        net_text = net_text.replace('bearing.bore**2 * 0.03"', 'bearing.bore**2 * 0.18"', 1)
-        return swap(swap(net_text, "nodes", ""), "elements", el.format(a="shaft", b="support_block", L=0.15))
-    dl = 0.15 / segments
-    chain = ["shaft"] + [f"shaft_{k}" for k in range(1, segments + 1)] + ["support_block"]
-    nodes = "".join(f'[nodes.{n}]\nvolume_m3 = "pi / 4 * bearing.bore**2 * {dl!r}"\nmaterial = "aisi-52100"\n\n'
-                    for n in chain[1:-1])
-    els = "".join(el.format(a=a, b=b, L=(0.015 + dl / 2) if a == "shaft" else (dl / 2 if b == "support_block" else dl))
-                  for a, b in zip(chain[:-1], chain[1:]))
-    return swap(swap(net_text, "nodes", nodes), "elements", els)
-
 def test_shaft_path_discretisation_is_converged_and_conserves_conductance(scene, tmp_path):
     """The shipped network splits the 150 mm shaft path into 5 segments (Fo = a t / L² ≈ 0.55 over
     the whole path at 1000 s: one lumped node is not valid).  Refining to 12 segments moves the inner
     ring at 1000 s by < 0.2 K; the steady state depends only on the path's total conductance, so it
     moves by < 0.05 K; one lumped node for the whole shaft share heats the inner ring slower."""
     import dataclasses
+    import sys
 
     from thermobear._data import data_dir
+    sys.path.insert(0, str(ROOT / "validation"))
+    from seed004_trends import shaft_variant              # the report's own variants (validation/)
     text = (data_dir("networks") / "oil_jet_ball_bearing.toml").read_text(encoding="utf-8")
     s = scene.with_(n_rpm=8070.0)
     fine, coarse = tmp_path / "fine.toml", tmp_path / "coarse.toml"
-    fine.write_text(_shaft_segments(text, 12), encoding="utf-8")
-    coarse.write_text(_shaft_segments(text, 0), encoding="utf-8")
+    fine.write_text(shaft_variant(text, 12), encoding="utf-8")
+    coarse.write_text(shaft_variant(text, 0), encoding="utf-8")
     T = {}
     for key, sc in (("shipped", s), ("fine", dataclasses.replace(s, network=str(fine))),
                     ("coarse", dataclasses.replace(s, network=str(coarse)))):
