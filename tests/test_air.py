@@ -23,3 +23,24 @@ def test_other_pressure_goes_direct():
 def test_range():
     with pytest.raises(InputError, match="T_K"):
         air_properties(700.0)
+
+
+def test_shipped_table_is_coolprop_at_every_node():
+    """materials/air_1atm.toml (written by thermobear.air.write_table) against the installed CoolProp."""
+    from thermobear._data import data_dir, read_toml
+    d = read_toml(str(data_dir("materials") / "air_1atm.toml"))
+    T = np.asarray(d["T_K"], float)
+    assert T[0] == 200.0 and T[-1] == 600.0 and np.all(np.diff(T) == 1.0) and d["p_Pa"] == 101325.0
+    for key, code in (("rho_kg_m3", "D"), ("mu_Pa_s", "V"), ("k_W_mK", "L"), ("cp_J_kgK", "C")):
+        np.testing.assert_allclose(d[key], PropsSI(code, "T", T, "P", 101325.0, "Air"), rtol=1e-6)
+
+
+def test_a_steady_state_does_not_import_coolprop():
+    """The 1 atm table is data: a coupled solve in a fresh process never pays CoolProp's import (≈ 1.7 s)."""
+    import subprocess
+    import sys
+    code = ("import sys, thermobear as tb; "
+            "st = tb.steady_state(tb.load_scene(tb.example_path('seed004_oil_jet_7210.toml'))); "
+            "print('CoolProp' in sys.modules, st.P_W > 0)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split()
+    assert out == ["False", "True"]

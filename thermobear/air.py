@@ -1,11 +1,14 @@
-r"""Dry-air properties from CoolProp, tabulated once for speed.
+r"""Dry-air properties from CoolProp, tabulated for speed.
 
 CoolProp's ``PropsSI`` (Lemmon et al. 2000 pseudo-pure air; Lemmon & Jacobsen
-2004 transport) costs about a millisecond per call, which dominated the
-coupled thermal solve.  At the cavity pressure (1 atm) this module tabulates
-density, viscosity, conductivity and c_p once per process on 200–600 K at
-1 K steps and interpolates with cubic splines (relative error < 1e-6 against
-``PropsSI``; tests/test_air.py).  Other pressures go to ``PropsSI`` directly.
+2004 transport) costs about a millisecond per call, and importing CoolProp
+about 1.7 s per process.  At the cavity pressure (1 atm) this module reads
+density, viscosity, conductivity and c_p on 200–600 K at 1 K steps from
+``materials/air_1atm.toml`` — a table written from ``PropsSI`` by
+:func:`write_table` (its header names the CoolProp version) — and interpolates
+with cubic splines (relative error < 1e-6 against ``PropsSI``; tests/test_air.py
+checks the shipped table against the installed CoolProp).  Other pressures go
+to ``PropsSI`` directly.
 """
 from __future__ import annotations
 
@@ -29,11 +32,43 @@ def _propssi(T, p):
             "k": PropsSI("L", "T", T, "P", p, "Air"), "cp": PropsSI("C", "T", T, "P", p, "Air")}
 
 
+_TABLE_KEYS = {"rho": "rho_kg_m3", "mu": "mu_Pa_s", "k": "k_W_mK", "cp": "cp_J_kgK"}
+
+
+def _grid_K() -> np.ndarray:
+    return np.arange(T_RANGE_K[0], T_RANGE_K[1] + 0.5, 1.0)
+
+
 @lru_cache(maxsize=1)
 def _table():
-    T = np.arange(T_RANGE_K[0], T_RANGE_K[1] + 0.5, 1.0)
+    from ._data import data_dir, read_toml
+    d = read_toml(str(data_dir("materials") / "air_1atm.toml"))
+    T = np.asarray(d["T_K"], float)
+    if not np.array_equal(T, _grid_K()) or d.get("p_Pa") != P_ATM:
+        raise InputError("materials/air_1atm.toml", d.get("p_Pa"), f"a 1 K grid on {T_RANGE_K} K at {P_ATM} Pa "
+                         "(regenerate it with thermobear.air.write_table)")
+    return CubicSpline(T, np.column_stack([np.asarray(d[_TABLE_KEYS[k]], float) for k in _KEYS]))  # 4 columns
+
+
+def write_table(path) -> None:
+    """Write the 1 atm air table (``materials/air_1atm.toml``) from CoolProp's ``PropsSI``.
+
+    Run it when CoolProp's air model changes: ``python -c "import thermobear.air as a;
+    a.write_table('materials/air_1atm.toml')"``; tests/test_air.py compares the shipped table with the
+    installed CoolProp."""
+    import CoolProp
+    T = _grid_K()
     props = _propssi(T, P_ATM)
-    return CubicSpline(T, np.column_stack([np.asarray(props[k], float) for k in _KEYS]))   # one spline, 4 columns
+    lines = ["# Dry air at 1 atm, 200-600 K in 1 K steps: thermobear.air interpolates it with cubic splines.",
+             f"# Source: CoolProp {CoolProp.__version__} PropsSI(\"D\"|\"V\"|\"L\"|\"C\", \"T\", T, \"P\", 101325, \"Air\")",
+             "# (Lemmon et al. 2000 pseudo-pure air; Lemmon & Jacobsen 2004 viscosity and conductivity).",
+             "# Written by thermobear.air.write_table; checked against the installed CoolProp by tests/test_air.py.",
+             'name = "air_1atm"', f"p_Pa = {P_ATM!r}",
+             "T_K = [" + ", ".join(f"{t:.1f}" for t in T) + "]"]
+    for k in _KEYS:
+        lines.append(f"{_TABLE_KEYS[k]} = [" + ", ".join(repr(float(v)) for v in np.asarray(props[k], float)) + "]")
+    with open(path, "w", encoding="utf-8") as fh:
+        fh.write("\n".join(lines) + "\n")
 
 
 @lru_cache(maxsize=1)
