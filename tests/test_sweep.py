@@ -137,3 +137,22 @@ def test_a_failing_load_batch_leaves_each_point_to_its_own_solve(seed004):
     for r in rows[2:]:
         st = tb.steady_state(seed004.with_(Fa=450.0, n_rpm=r["n_rpm"]))
         assert r["P_W"] == pytest.approx(st.P_W, rel=1e-12)
+
+
+@pytest.mark.parametrize("processes", [1, 2])
+def test_coupled_film_points_batched_equal_single_solves(seed004, processes):
+    """Coupled points on the film load model run their film fixed points together, the film load
+    distributions of each round solved in one batched call: every row equals its single solve."""
+    grid = {"n_rpm": [2000.0, 2600.0, 3600.0], "Fr": [325.0, 700.0]}
+    seen = []
+    rows = run_sweep(seed004, grid, processes=processes, progress=lambda d, t: seen.append((d, t)))
+    assert [d for d, _ in seen] == list(range(1, 7)) and {t for _, t in seen} == {6}
+    kinds = []
+    for r in rows:
+        st = steady_state(seed004.with_(n_rpm=r["n_rpm"], Fr=r["Fr"]))
+        kinds.append(st.models_used["load_model"][0])
+        assert r["status"] == "ok"
+        assert r["P_W"] == pytest.approx(st.P_W, rel=1e-12)
+        assert r["temperatures_C"]["balls"] == pytest.approx(st.T_C["balls"], rel=1e-12)
+        assert r["iterations"] == st.iterations and r["models"]["load_model"] == kinds[-1]
+    assert kinds.count("film") >= 3 and "jones_harris" in kinds

@@ -872,7 +872,21 @@ def _steady_film(scene, models, *, tol_K, method, tol_film_K=0.1, maxiter=10, **
     """Steady state with the film load model: the loads depend on the film temperature, taken as the
     mean contact temperature of the solution — a fixed point on that one temperature (the loads vary
     slowly with it: a few updates), started from the dry solution's mean contact temperature, each
-    update's Newton started from the last solution."""
+    update's Newton started from the last solution.  Drives :func:`_steady_film_steps`, solving each
+    film load distribution it asks for on its own (a sweep batches them over its points)."""
+    steps = _steady_film_steps(scene, models, tol_K=tol_K, method=method, tol_film_K=tol_film_K,
+                               maxiter=maxiter, **kw)
+    T_film = next(steps)
+    while True:
+        try:
+            T_film = steps.send(film_scene_load(scene, models, T_film))
+        except StopIteration as done:
+            return done.value
+
+
+def _steady_film_steps(scene, models, *, tol_K, method, tol_film_K=0.1, maxiter=10, **kw):
+    """:func:`_steady_film` as a generator: yields each film temperature [°C] at which it needs the film
+    load distribution, receives that distribution (``send``), and returns the steady state."""
     from .errors import NoConvergence
     # start: the dry solution's mean contact temperature (its loads are cached from the model choice;
     # the films change the power by a few to tens of per cent, the contact temperature by a few kelvin)
@@ -888,7 +902,8 @@ def _steady_film(scene, models, *, tol_K, method, tol_film_K=0.1, maxiter=10, **
         T_ref, start = film_temperature_C(scene), None
     hist = []
     for k in range(1, maxiter + 1):
-        cs = scene_contacts(scene, models, T_film_C=T_ref)
+        load = yield T_ref                  # the film loads at T_ref (film_scene_load)
+        cs = scene_contacts(scene, models, load=load)
         st = steady_state(scene, tol_K=tol_K, contacts=cs, method=method, _T_start_C=start, **kw)
         start = st.T_C                      # the next update starts from this solution (the loads moved a little)
         c = st.losses.contacts

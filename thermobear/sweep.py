@@ -80,11 +80,18 @@ def _base_row(point: dict) -> dict:
 
 def _solve_point(scene: Scene, point: dict) -> dict:
     """Coupled steady state of one point (runs in a worker process or on a Dask worker)."""
-    row = _base_row(point)
     sc = scene.with_(**point)
     try:
         st = steady_state(sc)
     except (SolverError, InputError) as exc:   # inputs were validated up front: a model range left mid-solve
+        return _row(point, sc, exc=exc)
+    return _row(point, sc, st=st)
+
+
+def _row(point: dict, sc: Scene, st=None, exc=None) -> dict:
+    """A coupled point's row from its steady state, or from the error that stopped it."""
+    row = _base_row(point)
+    if exc is not None:
         row.update(P_W=None, torque_Nm=None, breakdown_W={}, temperatures_C={}, models=_choices(choose_models(sc)),
                    status=type(exc).__name__, reason=str(exc.reason if hasattr(exc, "reason") else exc),
                    iterations=getattr(exc, "iterations", None), residual_K=getattr(exc, "residual", None))
@@ -96,6 +103,60 @@ def _solve_point(scene: Scene, point: dict) -> dict:
                iterations=int(st.iterations),
                residual_K=float(st.residual_K))
     return row
+
+
+def _film_points(scene: Scene, points: list, progress=None) -> list:
+    """Rows of coupled points on the film load model (worker side, or in this process).
+
+    Each point runs the film fixed point of :func:`thermobear.solver.steady_state`
+    (:func:`thermobear.solver._steady_film_steps`: a dry start, then film load updates, each followed by
+    a network solve).  The film load distributions the points ask for in the same round are solved in
+    one batched call per group of points that differ only in speed and film temperature
+    (:func:`thermobear.solver.film_scene_load`, each case equal to its single solve to round-off); a
+    batch that fails is solved point by point, so a failure stays with its point."""
+    from .solver import _steady_film_steps, film_scene_load
+    rows: list = [None] * len(points)
+    live = {}
+    for j, p in enumerate(points):
+        sc = scene.with_(**p)
+        models = choose_models(sc)
+        steps = _steady_film_steps(sc, models, tol_K=1e-6, method="newton")
+        try:
+            live[j] = (steps, sc, models, next(steps))
+        except (SolverError, InputError) as exc:
+            rows[j] = _row(p, sc, exc=exc)
+            if progress:
+                progress()
+    while live:
+        groups: dict = {}
+        for j, (_, sc, models, _) in live.items():
+            key = (sc.bearing, id(sc.lubricant), sc.Fa, sc.Fr, sc.M, sc.rotating, sc.models.get("stiffness"),
+                   models["high_speed"][0])
+            groups.setdefault(key, []).append(j)
+        nxt = {}
+        for members in groups.values():
+            loads = {}
+            if len(members) > 1:
+                sc0, models0 = live[members[0]][1], live[members[0]][2]
+                try:
+                    ld = film_scene_load(sc0, models0, np.array([live[j][3] for j in members]),
+                                         n_rpm=np.array([live[j][1].n_rpm for j in members]))
+                    loads = {j: _load_case(ld, k, len(members)) for k, j in enumerate(members)}
+                except SolverError:
+                    loads = {}
+            for j in members:
+                steps, sc, models, T_film = live[j]
+                try:
+                    load = loads[j] if j in loads else film_scene_load(sc, models, T_film)
+                    nxt[j] = (steps, sc, models, steps.send(load))
+                except StopIteration as done:
+                    rows[j] = _row(points[j], sc, st=done.value)
+                except (SolverError, InputError) as exc:
+                    rows[j] = _row(points[j], sc, exc=exc)
+                if rows[j] is not None and progress:
+                    progress()
+        live = nxt
+    return rows
 
 
 def _losses_batch(sc: Scene, n_rpm, T_C, models: dict, load=None):
@@ -151,22 +212,42 @@ def _prescribed(scenes, points, idx, rows):
             rows[i] = row
 
 
-def _coupled_local(scene, points, idx, rows, processes, progress, done, total):
+def _film_chunk(scene, points):
+    return _film_points(scene, points)
+
+
+def _coupled_local(scene, points, idx, rows, processes, progress, done, total, scenes=None):
+    # points on the film load model run together (their film load distributions batched per round)
+    film = [i for i in idx if scenes is not None and choose_models(scenes[i])["load_model"][0] == "film"]
+    in_film = set(film)
+    rest = [i for i in idx if i not in in_film]
+    count = [done]
+
+    def tick():
+        count[0] += 1
+        if progress:
+            progress(count[0], total)
     if processes == 1 or len(idx) == 1:
-        for i in idx:
+        if film:
+            for i, row in zip(film, _film_points(scene, [points[i] for i in film], progress=tick)):
+                rows[i] = row
+        for i in rest:
             rows[i] = _solve_point(scene, points[i])
-            done += 1
-            if progress:
-                progress(done, total)
-        return done
+            tick()
+        return count[0]
     with ProcessPoolExecutor(max_workers=min(processes, len(idx))) as ex:
-        futs = {ex.submit(_solve_point, scene, points[i]): i for i in idx}
+        futs = {ex.submit(_solve_point, scene, points[i]): [i] for i in rest}
+        n_chunks = min(processes, len(film))
+        for c in range(n_chunks):                   # contiguous chunks: neighbouring speeds batch together
+            part = film[c * len(film) // n_chunks:(c + 1) * len(film) // n_chunks]
+            futs[ex.submit(_film_chunk, scene, [points[i] for i in part])] = part
         for f in as_completed(futs):
-            rows[futs[f]] = f.result()
-            done += 1
-            if progress:
-                progress(done, total)
-    return done
+            part = futs[f]
+            out = f.result()
+            for i, row in zip(part, out if isinstance(out, list) else [out]):
+                rows[i] = row
+                tick()
+    return count[0]
 
 
 def _coupled_dask(scene, points, idx, rows, scheduler, progress, done, total):
@@ -241,5 +322,6 @@ def run_sweep(scene: Scene, grid: dict, *, scheduler=None, processes: int | None
         if scheduler is not None:
             _coupled_dask(scene, points, coupled, rows, scheduler, progress, done, total)
         else:
-            _coupled_local(scene, points, coupled, rows, processes or os.cpu_count() or 1, progress, done, total)
+            _coupled_local(scene, points, coupled, rows, processes or os.cpu_count() or 1, progress, done, total,
+                           scenes=scenes)
     return rows
