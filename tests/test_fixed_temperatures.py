@@ -144,7 +144,7 @@ def test_inner_ring_heat_up_of_the_right_order(scene):
 
 
 def test_shaft_path_discretisation_is_converged_and_conserves_conductance(scene, tmp_path):
-    """The shipped network splits the 150 mm shaft path into 5 segments (Fo = a t / L² ≈ 0.55 over
+    """The shipped network splits the 150 mm shaft path into 5 segments (Fo = a t / L² ≈ 0.51 over
     the whole path at 1000 s: one lumped node is not valid).  Refining to 12 segments moves the inner
     ring at 1000 s by < 0.2 K; the steady state depends only on the path's total conductance, so it
     moves by < 0.05 K; one lumped node for the whole shaft share heats the inner ring slower."""

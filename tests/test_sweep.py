@@ -156,3 +156,33 @@ def test_coupled_film_points_batched_equal_single_solves(seed004, processes):
         assert r["temperatures_C"]["balls"] == pytest.approx(st.T_C["balls"], rel=1e-12)
         assert r["iterations"] == st.iterations and r["models"]["load_model"] == kinds[-1]
     assert kinds.count("film") >= 3 and "jones_harris" in kinds
+
+
+def test_prescribed_sweep_records_a_point_without_equilibrium_on_its_row(seed002):
+    """A thrust bearing at Fa = 0 (no contact) in a prescribed-temperature sweep, local and SKF losses:
+    that point's row says NoEquilibrium; the others are computed."""
+    for sc in (seed002.with_(T_C=40.0), seed002.with_(T_C=40.0, models={"losses": "skf"})):
+        rows = run_sweep(sc, {"Fa": [0.0, 1000.0, 7000.0]})
+        assert [r["status"] for r in rows] == ["NoEquilibrium", "ok", "ok"]
+        assert rows[0]["P_W"] is None and rows[1]["P_W"] > 0
+
+
+def test_dry_load_cache_is_thread_safe(seed004):
+    """Dask workers run points in threads: concurrent hits, misses and evictions of the dry-load cache."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    from thermobear.solver import _LoadCache, _dry_load_solve
+    cache = _LoadCache(_dry_load_solve, 8)
+    b = seed004.bearing
+    keys = [(b, 450.0, float(Fr), None, "nominal", None) for Fr in range(100, 124)]
+
+    def work(k):
+        out = []
+        for j in range(60):
+            key = keys[(k * 7 + j) % len(keys)]
+            out.append((key[2], float(cache(*key).Q_i[0])))
+        return out
+    with ThreadPoolExecutor(8) as ex:
+        results = [r for chunk in ex.map(work, range(8)) for r in chunk]
+    ref = {key[2]: float(_dry_load_solve(*key).Q_i[0]) for key in keys}
+    assert all(q == ref[Fr] for Fr, q in results)

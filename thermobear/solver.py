@@ -198,33 +198,40 @@ def _dry_load(scene: Scene, high_speed: bool) -> LoadDistribution:
 
 class _LoadCache:
     """Least-recently-used cache of dry load distributions keyed by operating point, which a batched
-    solve can fill (:func:`_prime_dry_loads`); ``cache_clear()`` as for ``functools.lru_cache``."""
+    solve can fill (:func:`_prime_dry_loads`); ``cache_clear()`` as for ``functools.lru_cache``.
+    Thread-safe (Dask workers run points in threads): the dictionary is touched under a lock, the
+    solve itself runs outside it (two threads may solve the same point; both answers are equal)."""
 
     def __init__(self, fn, maxsize: int):
-        self.fn, self.maxsize, self._d = fn, maxsize, {}
+        import threading
+        self.fn, self.maxsize, self._d, self._lock = fn, maxsize, {}, threading.Lock()
 
     def __call__(self, *key):
-        d = self._d
-        if key in d:
-            d[key] = d.pop(key)                         # most recently used last
-            return d[key]
+        with self._lock:
+            ld = self._d.pop(key, None)
+            if ld is not None:
+                self._d[key] = ld                       # most recently used last
+                return ld
         ld = self.fn(*key)                              # an exception is not cached
         self.put(key, ld)
         return ld
 
     def __contains__(self, key) -> bool:
-        return key in self._d
+        with self._lock:
+            return key in self._d
 
     def put(self, key, ld):
         for v in vars(ld).values():
             if isinstance(v, np.ndarray):
                 v.setflags(write=False)
-        self._d[key] = ld
-        while len(self._d) > self.maxsize:
-            self._d.pop(next(iter(self._d)))
+        with self._lock:
+            self._d[key] = ld
+            while len(self._d) > self.maxsize:
+                self._d.pop(next(iter(self._d)))
 
     def cache_clear(self):
-        self._d.clear()
+        with self._lock:
+            self._d.clear()
 
 
 def _dry_load_solve(brg, Fa, Fr, M, stiffness, n_rpm):
@@ -246,6 +253,8 @@ def _dry_need(scene: Scene):
     (choose_models will say why)."""
     m = scene.models
     if m.get("load_model") in ("closed_form", "film") or (scene.T_C is None and not scene.network):
+        return None
+    if m.get("losses") == "skf" and scene.supply not in _FLOODED:      # SKF losses, no film test: no loads
         return None
     try:
         hs = _high_speed_choice(scene)[0] == "yes"
@@ -271,10 +280,16 @@ def _prime_dry_loads(scenes) -> int:
     point.  Returns the number of cases solved and cached."""
     from .errors import SolverError
     groups: dict = {}
+    room = _dry_load_cached.maxsize       # more would evict what was primed before it is used
     for sc in scenes:
         key = _dry_need(sc)
         if key is not None and key not in _dry_load_cached:
-            groups.setdefault((key[0], key[3] is None, key[4], key[5] is None), {})[key] = None
+            g = groups.setdefault((key[0], key[3] is None, key[4], key[5] is None), {})
+            if key not in g:
+                if room == 0:
+                    break
+                g[key] = None
+                room -= 1
 
     def batch(brg, no_M, stiff, low, keys) -> int:
         if len(keys) < 2:
@@ -283,8 +298,8 @@ def _prime_dry_loads(scenes) -> int:
         Fr = np.array([k[2] for k in keys])
         M = None if no_M else np.array([k[3] for k in keys])
         try:
-            if low:
-                ld = load_distribution(brg, Fa=Fa, Fr=Fr, M=M, stiffness=stiff)
+            if low:     # no continuation in a priming batch: a case that needs it is left to its own solve
+                ld = load_distribution(brg, Fa=Fa, Fr=Fr, M=M, stiffness=stiff, _cont=False)
             else:
                 from .loads_highspeed import load_distribution_high_speed
                 ld = load_distribution_high_speed(brg, Fa=Fa, Fr=Fr, M=M, n_rpm=np.array([k[5] for k in keys]),
@@ -311,6 +326,13 @@ def _load_case(load, index, nb):
     return dataclasses.replace(load, **out)
 
 
+def _refuse_unloaded_thrust(Fa):
+    from .errors import NoEquilibrium
+    raise NoEquilibrium(f"a thrust ball bearing needs an axial load (operation.Fa_N = {Fa:g} N; accepted: > 0): "
+                        "without it the balls leave the washers and no contact carries or loses anything "
+                        "(in service a minimum axial load keeps them rolling)")
+
+
 def _closed_form_axial(b, Fa) -> LoadDistribution:
     """Pure axial load, all balls equal: Harris eq 7.36 (radial/angular) or Q = Fa/Z (thrust).
 
@@ -318,10 +340,7 @@ def _closed_form_axial(b, Fa) -> LoadDistribution:
     and nothing presses the balls): NoEquilibrium, as the high-speed form says."""
     Z = b.Z
     if b.kind == "thrust" and not Fa > 0:
-        from .errors import NoEquilibrium
-        raise NoEquilibrium(f"a thrust ball bearing needs an axial load (operation.Fa_N = {Fa:g} N; accepted: > 0): "
-                            "without it the balls leave the washers and no contact carries or loses anything "
-                            "(in service a minimum axial load keeps them rolling)")
+        _refuse_unloaded_thrust(Fa)
     psi = 2.0 * np.pi * np.arange(Z) / Z
     if b.kind == "thrust" and b.alpha0 >= np.pi / 2 - 1e-12:
         al = np.pi / 2
@@ -465,6 +484,8 @@ def skf_scene_losses(scene: Scene, T_C, models: dict | None = None) -> SKFLosses
     losses); drag to the oil."""
     from .friction.skf import skf_friction
     models = models or choose_models(scene)
+    if scene.bearing.kind == "thrust" and not scene.Fa > 0:
+        _refuse_unloaded_thrust(scene.Fa)
     m = scene.models
     lub = "grease" if scene.supply == "grease" else scene.supply
     base = _SKF_MU_EHL.get(getattr(scene.lubricant, "base_oil", "mineral"), "mineral")

@@ -182,34 +182,46 @@ def _prescribed(scenes, points, idx, rows):
                tuple(sorted((k, repr(v[0])) for k, v in models.items() if k != "thermal")))
         groups.setdefault(key, (models, []))[1].append(i)
     for models, members in groups.values():
-        sc = scenes[members[0]]
-        n = np.array([scenes[i].n_rpm for i in members], float)
-        T = np.array([scenes[i].T_C for i in members], float)
-        if models.get("losses", ("local",))[0] != "local":         # SKF global model: per point
-            rs = [solve(scenes[i]) for i in members]
-            P = np.array([x.P_W for x in rs])
-            M = np.array([x.torque_Nm for x in rs])
-            bd = {k: np.array([x.breakdown_W[k] for x in rs]) for k in rs[0].breakdown_W}
-        else:
-            load = None
-            if models["load_model"][0] == "film":   # loads depend on speed and film temperature: one batched solve
-                from .solver import film_scene_load
-                load = film_scene_load(sc, models, T, n_rpm=n)
-            elif models["high_speed"][0] == "yes":   # high-speed ball loads depend on speed only: one batched
-                from .loads_highspeed import load_distribution_high_speed    # solve over the distinct speeds
-                n_u, back = np.unique(n, return_inverse=True)
-                load = _expand(load_distribution_high_speed(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, M=sc.M, n_rpm=n_u,
-                                                            stiffness=sc.models.get("stiffness", "nominal")),
-                               back, n_u.size)
-            r = _losses_batch(sc, n, T, models, load=load)
-            P, M = np.atleast_1d(r.P_W), np.atleast_1d(r.torque_Nm)
-            bd = {k: np.broadcast_to(np.atleast_1d(v), P.shape) for k, v in r.breakdown_W.items()}
-        for j, i in enumerate(members):
-            row = _base_row(points[i])
-            row.update(P_W=float(P[j]), torque_Nm=float(M[j]), breakdown_W={k: float(v[j]) for k, v in bd.items()},
-                       temperatures_C={"contacts (prescribed)": float(T[j])}, models=_choices(models), status="ok",
-                       reason="", iterations=0, residual_K=0.0)
-            rows[i] = row
+        try:
+            _prescribed_group(scenes, points, rows, models, members)
+        except SolverError:         # a point without equilibrium: each point alone, the failure on its own row
+            for i in members:
+                try:
+                    _prescribed_group(scenes, points, rows, models, [i])
+                except SolverError as exc:
+                    rows[i] = _row(points[i], scenes[i], exc=exc)
+
+
+def _prescribed_group(scenes, points, rows, models, members):
+    """Rows of one group of prescribed-temperature points (one vectorised loss evaluation)."""
+    sc = scenes[members[0]]
+    n = np.array([scenes[i].n_rpm for i in members], float)
+    T = np.array([scenes[i].T_C for i in members], float)
+    if models.get("losses", ("local",))[0] != "local":         # SKF global model: per point
+        rs = [solve(scenes[i]) for i in members]
+        P = np.array([x.P_W for x in rs])
+        M = np.array([x.torque_Nm for x in rs])
+        bd = {k: np.array([x.breakdown_W[k] for x in rs]) for k in rs[0].breakdown_W}
+    else:
+        load = None
+        if models["load_model"][0] == "film":   # loads depend on speed and film temperature: one batched solve
+            from .solver import film_scene_load
+            load = film_scene_load(sc, models, T, n_rpm=n)
+        elif models["high_speed"][0] == "yes":   # high-speed ball loads depend on speed only: one batched
+            from .loads_highspeed import load_distribution_high_speed    # solve over the distinct speeds
+            n_u, back = np.unique(n, return_inverse=True)
+            load = _expand(load_distribution_high_speed(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, M=sc.M, n_rpm=n_u,
+                                                        stiffness=sc.models.get("stiffness", "nominal")),
+                           back, n_u.size)
+        r = _losses_batch(sc, n, T, models, load=load)
+        P, M = np.atleast_1d(r.P_W), np.atleast_1d(r.torque_Nm)
+        bd = {k: np.broadcast_to(np.atleast_1d(v), P.shape) for k, v in r.breakdown_W.items()}
+    for j, i in enumerate(members):
+        row = _base_row(points[i])
+        row.update(P_W=float(P[j]), torque_Nm=float(M[j]), breakdown_W={k: float(v[j]) for k, v in bd.items()},
+                   temperatures_C={"contacts (prescribed)": float(T[j])}, models=_choices(models), status="ok",
+                   reason="", iterations=0, residual_K=0.0)
+        rows[i] = row
 
 
 def _film_chunk(scene, points):

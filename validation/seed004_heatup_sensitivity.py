@@ -61,14 +61,16 @@ BOUNDS = [
      "block size not given: ×0.5–×2",
      {"housing.volume_m3": 0.5 * HOUSING_V}, {"housing.volume_m3": 2.0 * HOUSING_V}),
     ("shaft section away from the bearing (×1: solid Ø50)",
-     "a stepped or hollow shaft: ×0.5 of the section (area and heat capacity); ×1 is the upper bound",
+     "a stepped or hollow shaft: ×0.5 of the section (area and heat capacity); ×1 taken as the upper bound (a "
+     "shaft stepped up away from the bearing would cool the IR: that side is not explored)",
      _shaft_section(0.5), _shaft_section(1.0)),
     ("housing emissivity (0.8)",
      "bare machined steel 0.3 to painted 0.9",
      {"housing_radiation.emissivity": 0.3}, {"housing_radiation.emissivity": 0.9}),
     ("support-block temperature [°C] (25, ambient)",
      "its oil-bath DGBB and lip seal heat it: 25–45 °C (validation/report/seed004_support_heat.md: "
-     "central estimate 35 °C at 3200 rpm, 58 °C at 8070 rpm at 1000 s)",
+     "central estimate 35 °C at 3200 rpm, 58 °C at 8070 rpm at 1000 s; 45 °C is below the latter: the warm "
+     "bound is conservative at 8070 rpm)",
      ("T_fixed_C", {"support_block": 25.0}), ("T_fixed_C", {"support_block": 45.0})),
 ]
 

@@ -209,6 +209,11 @@ def main() -> int:
           "paper's reading.", ""]
     print("4. imposed support-block temperature needed")
     k_shaft = tb.materials.material("aisi-52100").k
+    from thermobear._data import data_dir, read_toml
+    net = read_toml(str(data_dir("networks") / "oil_jet_ball_bearing.toml"))
+    path_m = sum(float(e["length_m"]) for e in net["elements"]      # shaft node centre → support block face
+                 if e["type"] == "planar" and all(n.startswith("shaft") or n == "support_block" for n in e["between"]))
+    G_path = k_shaft * math.pi / 4 * 0.05 ** 2 / path_m
     need = {}
     for n, target in PAPER_IR_C.items():
         f = lambda T: heat_up(n, T_fixed_C=T)[0] - target  # noqa: E731
@@ -219,8 +224,8 @@ def main() -> int:
         T_need = need[n] = brentq(f, SCENE.T_ambient_C, hi, xtol=0.5)
         slope = (heat_up(n, T_fixed_C=65.0)[0] - heat_up(n, T_fixed_C=25.0)[0]) / 40.0
         L.append(f"* {n:g} rpm: IR {target:g} °C needs the support block held at ≈ {T_need:.0f} °C from t = 0 "
-                 f"(dT_IR/dT_block ≈ {slope:.2f} through the 150 mm shaft path, G = k A / L ≈ "
-                 f"{k_shaft * math.pi / 4 * 0.05 ** 2 / 0.15:.2f} W/K).")
+                 f"(dT_IR/dT_block ≈ {slope:.2f} through the {1e3 * path_m:.0f} mm shaft path from the shaft node, "
+                 f"G = k A / L ≈ {G_path:.2f} W/K).")
         print(f"  {n:6.0f} rpm: support block {T_need:.0f} °C needed (slope {slope:.2f})")
 
     lo, ce, hi_ = (tuple(rows[n][1][e.name] for n in (3200.0, 8070.0)) for e in ESTIMATES)
@@ -232,7 +237,7 @@ def main() -> int:
           "the same order as the test bearing. As a free node the block warms instead of sinking heat at ambient.",
           f"* IR at 1000 s, 3200 / 8070 rpm: shipped {base[0]:.1f} / {base[1]:.1f} °C; low {lo[0][0]:.1f} / {lo[1][0]:.1f}; "
           f"central {ce[0][0]:.1f} / {ce[1][0]:.1f}; high {hi_[0][0]:.1f} / {hi_[1][0]:.1f} °C; paper ≈ 55 / 90 °C.",
-          f"* The IR responds weakly: the only path is the estimated 150 mm steel shaft (≈ 0.6 W/K), so the IR "
+          f"* The IR responds weakly: the only path is the estimated {1e3 * path_m:.0f} mm steel shaft (≈ {G_path:.1f} W/K), so the IR "
           f"rises by about a quarter of the block's rise, and a block of several kJ/K is far from equilibrium at "
           f"1000 s. The high set reaches {hi_[1][0]:.0f} °C at 8070 rpm only with the block at {hi_[1][1]:.0f} °C "
           "(two seals at 1.5× the ISO/TR value, V_M 3e-4, a light, poorly cooled block): an oil bath that hot is "
