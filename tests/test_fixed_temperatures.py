@@ -130,17 +130,20 @@ def test_oil_injection_temperature_barely_changes_power_at_equal_ring_temperatur
     assert abs(P[1] / P[0] - 1.0) < 0.05, P
 
 
-@pytest.mark.xfail(strict=True, reason="known gap (issue 4): the rig network runs cool at 3200 rpm (41 / 72 °C "
-                   "against 55 / 90; its steady state 44 / 79 °C is below the rig's 1000 s readings, so the heat balance, "
-                   "not the inertia, is off); the support blocks as heat sources add only 1.2 / 4.0 K "
-                   "(validation/report/seed004_support_heat.md); the shaft path, joints and housing are estimates")
-def test_inner_ring_heat_up_of_the_right_order(scene):
+_COOL_3200 = pytest.mark.xfail(strict=True, reason=(
+    "known gap (issue 4): at 3200 rpm the rig network runs cool (41 °C against ≈ 55 °C, rise 45 % low; its steady "
+    "state 44 °C is below the rig's 1000 s reading, so the heat balance, not the inertia, is off); the support "
+    "blocks as heat sources add 1.2 K (validation/report/seed004_support_heat.md); every estimate at its warm "
+    "bound reaches 52 °C (seed004_heatup_sensitivity.md): needs a logged heat-up of the rig"))
+
+
+@pytest.mark.parametrize("n, ref", [pytest.param(3200.0, 55.0, marks=_COOL_3200), (8070.0, 90.0)])
+def test_inner_ring_heat_up_of_the_right_order(scene, n, ref):
     """Seed 004 §5.3.1, Fig. 8: inner ring ≈ 55 °C at 3200 rpm and ≈ 90 °C at 8070 rpm after 1000 s
     (oil 10 L/h at 30 °C); 'of the right order' read as within 30 % of the rise above ambient."""
-    for n, ref in ((3200.0, 55.0), (8070.0, 90.0)):
-        tr = tb.transient(scene.with_(n_rpm=n), 1000.0, t_eval=[1000.0])
-        rise, ref_rise = tr.T_C["inner_ring"][-1] - scene.T_ambient_C, ref - scene.T_ambient_C
-        assert abs(rise / ref_rise - 1.0) < 0.3, (n, tr.T_C["inner_ring"][-1])
+    tr = tb.transient(scene.with_(n_rpm=n), 1000.0, t_eval=[1000.0])
+    rise, ref_rise = tr.T_C["inner_ring"][-1] - scene.T_ambient_C, ref - scene.T_ambient_C
+    assert abs(rise / ref_rise - 1.0) < 0.3, (n, tr.T_C["inner_ring"][-1])
 
 
 def test_shaft_path_discretisation_is_converged_and_conserves_conductance(scene, tmp_path):
