@@ -43,11 +43,19 @@ def _grid_K() -> np.ndarray:
 def _table():
     from ._data import data_dir, read_toml
     d = read_toml(str(data_dir("materials") / "air_1atm.toml"))
-    T = np.asarray(d["T_K"], float)
+    where, fix = "materials/air_1atm.toml", " (regenerate it with thermobear.air.write_table)"
+    cols = []
+    try:
+        T = np.asarray(d["T_K"], float)
+        for k in _KEYS:
+            cols.append(np.asarray(d[_TABLE_KEYS[k]], float))
+    except (KeyError, TypeError, ValueError) as exc:
+        raise InputError(where, str(exc), "columns T_K, " + ", ".join(_TABLE_KEYS.values()) + " of numbers" + fix) from None
     if not np.array_equal(T, _grid_K()) or d.get("p_Pa") != P_ATM:
-        raise InputError("materials/air_1atm.toml", d.get("p_Pa"), f"a 1 K grid on {T_RANGE_K} K at {P_ATM} Pa "
-                         "(regenerate it with thermobear.air.write_table)")
-    return CubicSpline(T, np.column_stack([np.asarray(d[_TABLE_KEYS[k]], float) for k in _KEYS]))  # 4 columns
+        raise InputError(where, d.get("p_Pa"), f"a 1 K grid on {T_RANGE_K} K at {P_ATM} Pa" + fix)
+    if any(c.shape != T.shape or not np.all(np.isfinite(c) & (c > 0)) for c in cols):
+        raise InputError(where, None, f"{T.size} finite, positive values per column" + fix)
+    return CubicSpline(T, np.column_stack(cols))   # one spline, 4 columns
 
 
 def write_table(path) -> None:

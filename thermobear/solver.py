@@ -254,8 +254,8 @@ def _dry_need(scene: Scene):
     m = scene.models
     if m.get("load_model") in ("closed_form", "film") or (scene.T_C is None and not scene.network):
         return None
-    if m.get("losses") == "skf" and scene.supply not in _FLOODED:      # SKF losses, no film test: no loads
-        return None
+    if m.get("losses") == "skf" and scene.supply not in _FLOODED and scene.T_C is not None:
+        return None         # prescribed T, SKF losses, no film test: no loads (a network needs the contacts)
     try:
         hs = _high_speed_choice(scene)[0] == "yes"
     except InputError:

@@ -142,7 +142,7 @@ def _film_points(scene: Scene, points: list, progress=None) -> list:
                     ld = film_scene_load(sc0, models0, np.array([live[j][3] for j in members]),
                                          n_rpm=np.array([live[j][1].n_rpm for j in members]))
                     loads = {j: _load_case(ld, k, len(members)) for k, j in enumerate(members)}
-                except SolverError:
+                except (SolverError, InputError):       # each point on its own: a failure stays on its row
                     loads = {}
             for j in members:
                 steps, sc, models, T_film = live[j]
