@@ -36,8 +36,12 @@ FAMILY_MARKERS = {"seed001 torque": "o", "seed002 torque": "s", "seed002 tempera
                   "seed004 P ratio": "^", "seed004 IR temperature": "v"}
 
 
-def run_scripts(timeout_s=600):
-    scripts = sorted(p for p in HERE.glob("*.py") if p.name not in OWN and not p.name.startswith("_"))
+TIMED = {"bench_loads.py"}       # benchmarks: run alone, after the rest (timings of a busy machine mislead)
+
+
+def run_scripts(timeout_s=600, timed=False, workers=2):
+    scripts = sorted(p for p in HERE.glob("*.py") if p.name not in OWN and not p.name.startswith("_")
+                     and (p.name in TIMED) == timed)
     env = dict(os.environ, MPLBACKEND="Agg")
 
     def one(p):
@@ -50,7 +54,7 @@ def run_scripts(timeout_s=600):
             code, out, err = "timeout", "", f"timed out after {timeout_s} s"
         return p.name, code, time.perf_counter() - t0, out, err
 
-    with ThreadPoolExecutor(max_workers=2) as ex:
+    with ThreadPoolExecutor(max_workers=workers) as ex:
         return list(ex.map(one, scripts))
 
 
@@ -98,6 +102,7 @@ def main(argv=()):
         t_fid = time.perf_counter() - t0
         speed_accuracy_chart(scores, REPORT / "speed_accuracy.png")
         scripts = fut.result()
+    scripts = sorted(scripts + run_scripts(timed=True, workers=1))      # the benchmark scripts alone
     t0 = time.perf_counter()
     stab = stability.run(REPORT / "stability_map.png", processes=2)
     t_stab = time.perf_counter() - t0
