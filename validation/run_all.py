@@ -36,7 +36,8 @@ FAMILY_MARKERS = {"seed001 torque": "o", "seed002 torque": "s", "seed002 tempera
                   "seed004 P ratio": "^", "seed004 IR temperature": "v"}
 
 
-TIMED = {"bench_loads.py"}       # benchmarks: run alone, after the rest (timings of a busy machine mislead)
+TIMED = {"bench_loads.py", "film_criterion.py", "seed004_film_whatif.py"}   # they time things: run alone, after
+# the rest (timings taken on a busy machine mislead)
 
 
 def run_scripts(timeout_s=600, timed=False, workers=2):
