@@ -36,7 +36,7 @@ from thermobear.losses import bearing_losses
 from thermobear.solver import steady_state, transient
 from thermobear.sweep import run_sweep
 
-N_SWEEP = 20
+N_SWEEP = 200     # enough points for the batched loads of a sweep to count as they do in a real one
 _TB_FILES = {str(p.relative_to(p.parents[1] if p.parent.name != "thermobear" else p.parent)).replace("\\", "/")
              for p in __import__("pathlib").Path(tb.__file__).parent.rglob("*.py")}
 
