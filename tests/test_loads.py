@@ -42,20 +42,6 @@ def test_pure_axial_contact_angle_equation():
         assert ld.Q.sum() * np.sin(al[0]) == pytest.approx(Fa, rel=1e-10)
 
 
-@pytest.mark.parametrize("name", ["7210", "6210", "iso-dgbb", "51107"])
-def test_axial_contact_angle_one_load_equals_the_vectorised_solve(name):
-    """The float path for one load solves the same equation as the array path (Harris eq 7.36)."""
-    b = bearing(name)
-    Fa = np.array([0.0, 1.0, 50.0, 450.0, 5000.0, 50000.0])
-    one = np.array([float(axial_contact_angle(b, f)) for f in Fa])
-    assert np.allclose(one, axial_contact_angle(b, Fa), rtol=0, atol=1e-13)
-    assert one[0] == b.alpha0 and np.shape(axial_contact_angle(b, 450.0)) == ()
-    lhs = Fa[1:] / (b.Z * b.Kn() * b.A**1.5)
-    if b.alpha0 < np.pi / 2 - 1e-9:
-        rhs = np.sin(one[1:]) * (np.cos(b.alpha0) / np.cos(one[1:]) - 1.0) ** 1.5
-        assert np.allclose(rhs, lhs, rtol=1e-10)
-
-
 @pytest.mark.parametrize("Fr", [0.5, 5.0])
 @pytest.mark.parametrize("ratio", [0.05, 0.3])
 def test_light_combined_load_solved_by_continuation_one_ball_analytic(Fr, ratio):

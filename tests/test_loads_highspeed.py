@@ -11,6 +11,7 @@ from thermobear.geometry import BallBearing, bearing
 from thermobear.loads import load_distribution
 from thermobear.loads_highspeed import load_distribution_high_speed, load_distribution_high_speed_full
 
+from _highspeed_checks import assert_ball_centres
 from _newton_fd import assert_newton_matches_fd
 
 STEEL = tb.Material(E=2.075e11, nu=0.3, rho=7850.0)
@@ -145,12 +146,7 @@ def test_ball_and_ring_equilibrium_from_returned_fields(control):
     assert ((Qi * np.cos(ai) - li * G * np.sin(ai)) * c).sum() == pytest.approx(Fr, rel=1e-9)
     assert ((fa_j * R - li * b.fi * ex.Mg) * c).sum() == pytest.approx(M, rel=1e-8)
     # geometry: ball centre on both contact normals
-    assert np.allclose(ex.X1, ((b.fo - 0.5) * D + ex.delta_o) * np.sin(ao), rtol=1e-12, atol=1e-15)
-    assert np.allclose(ex.X2, ((b.fo - 0.5) * D + ex.delta_o) * np.cos(ao), rtol=1e-12, atol=1e-15)
-    A1 = ld.delta_a + R * ld.theta * c
-    A2 = b.A * np.cos(b.alpha0) + ld.delta_r * c
-    assert np.allclose(A1 - ex.X1, ((b.fi - 0.5) * D + ex.delta_i) * np.sin(ai), rtol=1e-10, atol=1e-15)
-    assert np.allclose(A2 - ex.X2, ((b.fi - 0.5) * D + ex.delta_i) * np.cos(ai), rtol=1e-10, atol=1e-15)
+    assert_ball_centres(b, ld, ex)
     # Hertz
     assert np.allclose(Qi, b.K_i(b.alpha0) * np.maximum(ex.delta_i, 0) ** 1.5, rtol=1e-12)
 

@@ -12,6 +12,7 @@ from thermobear.kinematics import ball_kinematics, caged_ball_kinematics, common
 from thermobear.loads_film import film_load_distribution
 from thermobear.loads_highspeed import FilmInputs, load_distribution_high_speed, load_distribution_high_speed_full
 
+from _highspeed_checks import assert_ball_centres
 from _newton_fd import assert_newton_matches_fd
 
 B = bearing("7210")
@@ -105,12 +106,7 @@ def test_ball_and_ring_equilibrium_from_returned_fields(control):
     assert abs(((Qi * np.cos(ai) - li * G * np.sin(ai)) * c).sum() - Fr) < tol
     assert abs(((fa_j * R - li * B.fi * ex.Mg) * c).sum() - M) < tol * R
     # geometry: the ball centre on both contact normals, at the signed approaches δ_c = δ_el − h
-    assert np.allclose(ex.X1, ((B.fo - 0.5) * D + ex.delta_o) * np.sin(ao), rtol=1e-12, atol=1e-15)
-    assert np.allclose(ex.X2, ((B.fo - 0.5) * D + ex.delta_o) * np.cos(ao), rtol=1e-12, atol=1e-15)
-    A1 = ld.delta_a + R * ld.theta * c
-    A2 = B.A * np.cos(B.alpha0) + ld.delta_r * c
-    assert np.allclose(A1 - ex.X1, ((B.fi - 0.5) * D + ex.delta_i) * np.sin(ai), rtol=1e-10, atol=1e-15)
-    assert np.allclose(A2 - ex.X2, ((B.fi - 0.5) * D + ex.delta_i) * np.cos(ai), rtol=1e-10, atol=1e-15)
+    assert_ball_centres(B, ld, ex)
 
 
 def test_film_law_holds_per_contact(wet750):

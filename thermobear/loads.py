@@ -126,9 +126,6 @@ def axial_contact_angle(brg: BallBearing, Fa, Kn=None, tol: float = 1e-14):
         # α stays 90°: the approach is Fa/(Z Kn) ^ (2/3) along the axis
         return np.full_like(Fa, np.pi / 2)
 
-    if Fa.ndim == 0:                    # one load: the same iteration on floats (no array overhead)
-        return np.asarray(_axial_angle_float(float(target), a0, c0, tol) if Fa > 0 else a0)
-
     def g(al):
         t = np.maximum(c0 / np.cos(al) - 1.0, 0.0)
         return np.sin(al) * t**1.5 - target, t
@@ -155,32 +152,6 @@ def axial_contact_angle(brg: BallBearing, Fa, Kn=None, tol: float = 1e-14):
             break
         al = new
     return np.where(Fa > 0, al, a0)
-
-
-def _axial_angle_float(target: float, a0: float, c0: float, tol: float) -> float:
-    """:func:`axial_contact_angle` for one load (``target`` = F_a / (Z K_n A^1.5) > 0) on floats."""
-    import math
-    lo, hi = a0, math.pi / 2 - 1e-9
-    if a0 > 1e-6:
-        al = math.acos(min(max(c0 / (1.0 + (target / max(math.sin(a0), 1e-12)) ** (2 / 3)), -1.0), 1.0))
-    else:
-        al = math.acos(1.0 / (1.0 + math.sqrt(max(2.0 * target, 0.0)) ** (2 / 3)))
-    al = min(max(al, a0 + 1e-12), math.pi / 2 - 1e-9)
-    for _ in range(100):
-        t = max(c0 / math.cos(al) - 1.0, 0.0)
-        f = math.sin(al) * t**1.5 - target
-        if f < 0:
-            lo = al
-        elif f > 0:
-            hi = al
-        dfd = math.cos(al) * t**1.5 + 1.5 * math.tan(al) ** 2 * math.sqrt(t) * c0
-        new = al - f / dfd if dfd > 0 else al
-        if not (lo < new < hi) or not math.isfinite(new):
-            new = 0.5 * (lo + hi)
-        if abs(new - al) <= tol * max(1.0, abs(al)):
-            return new
-        al = new
-    return al
 
 
 def needs_high_speed(brg: BallBearing, n_rpm, Q_typical, threshold: float = 0.05, rotating: str = "inner"):

@@ -65,7 +65,7 @@ def choose_models(scene: Scene) -> dict:
         out["thermal"] = (f"network {scene.network}", "temperatures solved with the losses (fixed point)")
     else:
         raise InputError("thermal.network", None, "give a thermal network or prescribe operation.T_C")
-    symmetric = scene.Fr == 0.0 and scene.M is None and m.get("stiffness", "nominal") == "nominal"
+    symmetric = _symmetric(scene)
     if "load_model" in m:
         if m["load_model"] not in ("closed_form", "jones_harris", "film"):
             raise InputError("models.load_model", m["load_model"], "must be 'closed_form', 'jones_harris' or "
@@ -107,6 +107,11 @@ def choose_models(scene: Scene) -> dict:
     out["hertz"] = (m.get("hertz", "exact"), "chosen in the scene" if "hertz" in m else
                     "exact elliptic integrals (approximations err 1–5 %)")
     return out
+
+
+def _symmetric(scene: Scene) -> bool:
+    """Pure axial load, tilt held, nominal stiffness: every ball carries the same load."""
+    return scene.Fr == 0.0 and scene.M is None and scene.models.get("stiffness", "nominal") == "nominal"
 
 
 def _high_speed_choice(scene: Scene) -> tuple:
@@ -260,7 +265,7 @@ def _dry_need(scene: Scene):
         hs = _high_speed_choice(scene)[0] == "yes"
     except InputError:
         return None
-    symmetric = scene.Fr == 0.0 and scene.M is None and m.get("stiffness", "nominal") == "nominal"
+    symmetric = _symmetric(scene)
     if symmetric and not hs and "load_model" not in m:
         return None
     M = None if scene.M is None else float(scene.M)

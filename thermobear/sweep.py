@@ -169,11 +169,6 @@ def _losses_batch(sc: Scene, n_rpm, T_C, models: dict, load=None):
                         load=scene_load(sc, models) if load is None else load)
 
 
-def _expand(load, index, nb):
-    """A batched load distribution taken at ``index`` (see :func:`thermobear.solver._load_case`)."""
-    return _load_case(load, index, nb)
-
-
 def _prescribed(scenes, points, idx, rows):
     groups: dict = {}
     for i in idx:
@@ -210,9 +205,9 @@ def _prescribed_group(scenes, points, rows, models, members):
         elif models["high_speed"][0] == "yes":   # high-speed ball loads depend on speed only: one batched
             from .loads_highspeed import load_distribution_high_speed    # solve over the distinct speeds
             n_u, back = np.unique(n, return_inverse=True)
-            load = _expand(load_distribution_high_speed(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, M=sc.M, n_rpm=n_u,
-                                                        stiffness=sc.models.get("stiffness", "nominal")),
-                           back, n_u.size)
+            load = _load_case(load_distribution_high_speed(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, M=sc.M, n_rpm=n_u,
+                                                           stiffness=sc.models.get("stiffness", "nominal")),
+                              back, n_u.size)
         r = _losses_batch(sc, n, T, models, load=load)
         P, M = np.atleast_1d(r.P_W), np.atleast_1d(r.torque_Nm)
         bd = {k: np.broadcast_to(np.atleast_1d(v), P.shape) for k, v in r.breakdown_W.items()}
