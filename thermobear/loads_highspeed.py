@@ -144,6 +144,18 @@ from .loads_film import _carry, _FilmAt, _NVMFixed, _invert
 __all__ = ["HighSpeedExtras", "FilmInputs", "load_distribution_high_speed", "load_distribution_high_speed_full",
            "HS_CONTROLS"]
 
+_HK = []
+
+
+def _kernels():
+    """The compiled kernels (:mod:`thermobear._hs_kernels`) when numba is installed and not turned off
+    by ``THERMOBEAR_NUMBA=0``, else None; imported on first use (numba's import costs ≈ 0.3 s)."""
+    if not _HK:
+        from . import _hs_kernels
+        _HK.append(_hs_kernels if _hs_kernels.ENABLED else None)
+    return _HK[0]
+
+
 #: raceway-control hypotheses: name -> (λ_i, λ_o, control passed to ball_kinematics for β)
 HS_CONTROLS = {"outer": (0.0, 2.0, "outer"), "inner": (2.0, 0.0, "inner"), "both": (1.0, 1.0, "outer")}
 _ALIASES = {"none": "both"}
@@ -379,7 +391,12 @@ class _Problem:
         (:func:`thermobear.kinematics.common_cage_speed`); ball spin the load-weighted least-squares
         ω_R = −[Q_o E_o R_o ω_cage + Q_i E_i R_i (ω − ω_cage)] / (Q_o E_o² + Q_i E_i²)
         (:func:`thermobear.kinematics.caged_ball_kinematics`; own no-slip −ω R_o R_i / det when
-        both contacts are open); F_c = ½ m dm ω_cage², M_g = J ω_R ω_cage sin β."""
+        both contacts are open); F_c = ½ m dm ω_cage², M_g = J ω_R ω_cage sin β.
+
+        Dry contacts with one stiffness per race run the compiled kernel
+        :func:`thermobear._hs_kernels.state_kernel` when numba is installed (same equations)."""
+        if self._compiled():
+            return self._state_compiled(x, g)
         st = _State.__new__(_State)
         A = self.A
         A1, A2 = self.centres(g)
@@ -468,6 +485,29 @@ class _Problem:
             st.__dict__.update(fl)
         return st
 
+    def _compiled(self) -> bool:
+        """Whether the compiled kernels serve this problem (numba installed; dry contacts; one stiffness
+        per race)."""
+        return self.film is None and self.stiffness != "per_ball" and _kernels() is not None
+
+    def _state_compiled(self, x, g):
+        """:meth:`state` by :func:`thermobear._hs_kernels.state_kernel`: the per-ball fields are views
+        into one block (nb, fields, Z), the per-case ones (Σ Q_i, ω_cage, F_c) into another (nb, 3)."""
+        _hk = _kernels()
+        nb, Z = x.shape[0], self.Z
+        blk, cblk = np.empty((nb, _hk.N_BALL_FIELDS, Z)), np.empty((nb, 3))
+        r_b, r_g = np.empty((nb, Z, 2)), np.empty((nb, 3))
+        _hk.state_kernel(np.ascontiguousarray(x, dtype=float), np.ascontiguousarray(g, dtype=float),
+                         self.c[0], self.omega, self.scale, self.F_app, self.A, self.A2_0, self.ci0, self.co0,
+                         self.Ki0, self.Ko0, self.k_eps, self.gp, self.dm, self.D, self.m, self.J,
+                         float(self.lam_i), float(self.lam_o), self.fi, self.R, self.kin_control == "outer",
+                         blk, cblk, r_b, r_g)
+        st = _State.__new__(_State)
+        d = {name: blk[:, k] for k, name in enumerate(_hk.BALL_FIELDS)}
+        d.update(qs=cblk[:, 0:1], W=cblk[:, 1:2], Fc=cblk[:, 2:3], r_b=r_b, r_g=r_g, _blk=blk, _cblk=cblk)
+        st.__dict__.update(d)
+        return st
+
     def _film_force(self, p, q, X1, X2, dl_i, dl_o, Ki, Ko):
         r"""Contact loads and dQ/dδ of both contacts under the film law (:class:`_FilmLaw`).
 
@@ -539,7 +579,18 @@ class _Problem:
         Newton step of the augmented system is that of the reduced one.  The per-ball 2×2 blocks
         are eliminated in closed form (Schur complement; a 4×4 system per case).  All kinematic
         derivatives (of β, the contact radii, ω_c,j, ω_R, F_c and M_g with respect to α_i, α_o, Q_i,
-        Q_o and ω_cage) are analytic; dα_i/d(A − X) = e_i/d_i, dα_o/dX = e_o/d_o."""
+        Q_o and ω_cage) are analytic; dα_i/d(A − X) = e_i/d_i, dα_o/dX = e_o/d_o.
+
+        A state from the compiled kernel gets its step from :func:`thermobear._hs_kernels.step_kernel`
+        (the same elimination written ball by ball)."""
+        if "_blk" in st.__dict__:
+            _hk = _kernels()
+            nb = st._blk.shape[0]
+            dx, dg = np.empty((nb, self.Z, 2)), np.empty((nb, 3))
+            _hk.step_kernel(st._blk, st._cblk, st.r_b, st.r_g, self.c[0], self.omega, self.w_ref, self.scale,
+                            self.act, self.A, self.gp, self.dm, self.D, self.m, self.J, float(self.lam_i),
+                            float(self.lam_o), self.fi, self.R, self.kin_control == "outer", dx, dg)
+            return dx, dg
         A, D, J = self.A, self.D, self.J
         gp, hdm, hD = self.gp, 0.5 * self.dm, 0.5 * self.D
         w = self.omega[:, None]
@@ -1295,8 +1346,15 @@ def _start(pb, x_static, g):
 def _place(x1, x2, a1, a2, f1, f2, Ki, Ko, mu, tol, ci0, co0, cap):
     """Newton minimisation of each ball's potential energy (see :func:`_start`) on flat arrays of
     balls; a ball leaves the active set when its force residual is below ``tol`` or its line
-    search fails (a start needs no more).  Returns the ball centres X1, X2 [m]."""
+    search fails (a start needs no more).  Returns the ball centres X1, X2 [m].  With numba, ball by
+    ball in :func:`thermobear._hs_kernels.place_kernel` (the same iteration)."""
     x1, x2 = x1.copy(), x2.copy()
+    _hk = _kernels()
+    if _hk is not None:
+        n = x1.size
+        fl = [np.ascontiguousarray(np.broadcast_to(v, (n,)), dtype=float) for v in (a1, a2, f1, f2, Ki, Ko, mu, tol)]
+        _hk.place_kernel(x1, x2, *fl, float(ci0), float(co0), float(cap), _BALL_MAXIT, _BALL_HALVINGS)
+        return x1, x2
     act = np.arange(x1.size)
     fabs = np.hypot(f1, f2)
 
