@@ -42,6 +42,18 @@ __all__ = ["LoadDistribution", "load_distribution", "axial_contact_angle", "need
 STIFFNESS_MODES = ("nominal", "per_ball")
 _TOL = 1e-12          # relative equilibrium residual at which Newton stops
 _MAXIT = 60
+_HALVINGS = 30        # line-search halvings per Newton step
+
+_KERNELS = []
+
+
+def _kernels():
+    """The compiled kernels (:mod:`thermobear._kernels`) when numba is installed and not turned off by
+    ``THERMOBEAR_NUMBA=0``, else None; imported on first use (numba's import costs ≈ 0.3 s)."""
+    if not _KERNELS:
+        from . import _kernels as k
+        _KERNELS.append(k if k.ENABLED else None)
+    return _KERNELS[0]
 
 
 @dataclass(frozen=True)
@@ -125,6 +137,13 @@ def axial_contact_angle(brg: BallBearing, Fa, Kn=None, tol: float = 1e-14):
     if brg.kind == "thrust" and a0 >= np.pi / 2 - 1e-12:
         # α stays 90°: the approach is Fa/(Z Kn) ^ (2/3) along the axis
         return np.full_like(Fa, np.pi / 2)
+
+    kern = _kernels()
+    if kern is not None:            # the same iteration, compiled, element by element (thermobear._kernels)
+        tg = np.ascontiguousarray(target, dtype=float).ravel()
+        al = np.empty(tg.size)
+        kern.axial_angle_kernel(tg, float(a0), float(c0), float(tol), 100, al)
+        return np.where(Fa > 0, al.reshape(np.shape(target)), a0)
 
     def g(al):
         t = np.maximum(c0 / np.cos(al) - 1.0, 0.0)
@@ -244,7 +263,7 @@ def _state(y, brg, Kn_mode, c_psi, A, R):
     return A1, A2, Aj, s, sa, ca, Q, dQ
 
 
-def _backtrack(y_t, dy, n0, trial_norm, halvings: int = 30):
+def _backtrack(y_t, dy, n0, trial_norm, halvings: int = _HALVINGS):
     """Backtracking line search, vectorised over a batch: the step y_t + λ dy with the largest
     λ ∈ {1, ½, ¼, …} whose residual norm ``trial_norm(trial)`` (per case) satisfies the Armijo-type
     decrease n < (1 − 10⁻⁴ λ) n0.  A case that finds none takes the smallest step anyway (escapes a
@@ -375,61 +394,68 @@ def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, st
         return res, J
 
     it = 0
-    res, J = residual_and_jac(y)
-    norm = np.max(np.abs(res[:, active]), axis=1)
-    norm[zero] = 0.0
-    floor = np.zeros(nb, bool)      # at the floating-point floor: below 1e-9 and no longer improving
-    for it in range(1, maxiter + 1):
-        todo = (norm > tol) & ~floor
-        every = bool(todo.all())
-        if not every and not todo.any():
-            it -= 1
-            break
-        prev = norm.copy()
-        if every:
-            # every case: the full Newton step first, its residual and Jacobian kept when accepted
-            Jt = J if tilt_free else J[:, :2, :2]
-            try:
-                dy_a = -np.linalg.solve(Jt, res[:, active, None])[..., 0]
-            except np.linalg.LinAlgError:           # a case with no ball in contact: general path below
-                every = False
-        if every:
-            trial = y.copy()
-            trial[:, active] += dy_a
-            r_t, J_t = residual_and_jac(trial)
-            n_t = np.max(np.abs(r_t[:, active]), axis=1)
-            if (n_t < (1.0 - 1e-4) * norm).all():
-                y, res, J, norm = trial, r_t, J_t, n_t
-            else:
-                dy = np.zeros((nb, 3))
-                dy[:, active] = dy_a
+    kern = _kernels() if stiffness == "nominal" else None
+    if kern is not None:            # the same iteration, compiled, case by case (thermobear._kernels)
+        norm, its = np.empty(nb), np.empty(nb, np.int64)
+        kern.static_kernel(y, F_app, scale, zero, na, c_psi[0], A, np.sin(brg.alpha0), np.cos(brg.alpha0),
+                           float(Kn0), float(tol), int(maxiter), _HALVINGS, norm, its)
+        it = int(its.max()) if nb else 0
+    else:
+        res, J = residual_and_jac(y)
+        norm = np.max(np.abs(res[:, active]), axis=1)
+        norm[zero] = 0.0
+        floor = np.zeros(nb, bool)      # at the floating-point floor: below 1e-9 and no longer improving
+        for it in range(1, maxiter + 1):
+            todo = (norm > tol) & ~floor
+            every = bool(todo.all())
+            if not every and not todo.any():
+                it -= 1
+                break
+            prev = norm.copy()
+            if every:
+                # every case: the full Newton step first, its residual and Jacobian kept when accepted
+                Jt = J if tilt_free else J[:, :2, :2]
+                try:
+                    dy_a = -np.linalg.solve(Jt, res[:, active, None])[..., 0]
+                except np.linalg.LinAlgError:           # a case with no ball in contact: general path below
+                    every = False
+            if every:
+                trial = y.copy()
+                trial[:, active] += dy_a
+                r_t, J_t = residual_and_jac(trial)
+                n_t = np.max(np.abs(r_t[:, active]), axis=1)
+                if (n_t < (1.0 - 1e-4) * norm).all():
+                    y, res, J, norm = trial, r_t, J_t, n_t
+                else:
+                    dy = np.zeros((nb, 3))
+                    dy[:, active] = dy_a
 
-                def trial_norm(tr):
-                    r_t, _ = residual_and_jac_partial(tr, todo, brg, stiffness, c_psi, A, R, F_app, scale)
+                    def trial_norm(tr):
+                        r_t, _ = residual_and_jac_partial(tr, todo, brg, stiffness, c_psi, A, R, F_app, scale)
+                        return np.max(np.abs(r_t[:, active]), axis=1)
+
+                    y = _backtrack(y, dy, norm, trial_norm)
+                    res, J = residual_and_jac(y)
+                    norm = np.max(np.abs(res[:, active]), axis=1)
+            else:
+                Jt = J[todo][:, active][:, :, active]
+                # regularise rows of a singular Jacobian (no ball in contact): push towards contact
+                det_ok = np.abs(np.linalg.det(Jt)) > 1e-300
+                Jt[~det_ok] += np.eye(na)[None] * 1e-3
+                dy = np.zeros((int(todo.sum()), 3))
+                dy[:, active] = -np.linalg.solve(Jt, res[todo][:, active][..., None])[..., 0]
+
+                def trial_norm(trial):
+                    r_t, _ = residual_and_jac_partial(trial, todo, brg, stiffness, c_psi, A, R, F_app, scale)
                     return np.max(np.abs(r_t[:, active]), axis=1)
 
-                y = _backtrack(y, dy, norm, trial_norm)
+                y[todo] = _backtrack(y[todo], dy, norm[todo], trial_norm)
                 res, J = residual_and_jac(y)
                 norm = np.max(np.abs(res[:, active]), axis=1)
+            norm[zero] = 0.0
+            floor |= todo & (norm <= 1e-9) & (norm > 0.5 * prev)
         else:
-            Jt = J[todo][:, active][:, :, active]
-            # regularise rows of a singular Jacobian (no ball in contact): push towards contact
-            det_ok = np.abs(np.linalg.det(Jt)) > 1e-300
-            Jt[~det_ok] += np.eye(na)[None] * 1e-3
-            dy = np.zeros((int(todo.sum()), 3))
-            dy[:, active] = -np.linalg.solve(Jt, res[todo][:, active][..., None])[..., 0]
-
-            def trial_norm(trial):
-                r_t, _ = residual_and_jac_partial(trial, todo, brg, stiffness, c_psi, A, R, F_app, scale)
-                return np.max(np.abs(r_t[:, active]), axis=1)
-
-            y[todo] = _backtrack(y[todo], dy, norm[todo], trial_norm)
-            res, J = residual_and_jac(y)
-            norm = np.max(np.abs(res[:, active]), axis=1)
-        norm[zero] = 0.0
-        floor |= todo & (norm <= 1e-9) & (norm > 0.5 * prev)
-    else:
-        it = maxiter
+            it = maxiter
     extra_it = 0                        # Newton iterations spent by continuation (see Notes)
     if _cont and brg.kind != "thrust" and np.any(norm > max(tol, 1e-9)):
         for k in np.flatnonzero(norm > max(tol, 1e-9)):

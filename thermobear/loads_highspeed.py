@@ -94,6 +94,12 @@ vanishing linear "tension" stiffness ε K √A (ε = 1e-12) so that its position
 defined at n = 0; its contact force is reported as 0 (the force it could carry,
 < 1e-9 of the applied load, is below every tolerance).
 
+Cost: with numba installed (the ``fast`` extra) the per-ball state, the Newton step and the per-ball
+start of dry cases run as compiled loops (:mod:`thermobear._kernels`, the same equations; a
+seed 004 case ≈ 1.1 ms instead of ≈ 4 ms); without it, and for the film law or per-ball
+stiffness, the numpy methods here run (a load case is then a few hundred numpy calls on
+Z-element arrays).
+
 Film contact law (optional, ``film=dict(eta=..., alpha_p=...)``; prototype, as
 :mod:`thermobear.loads_film` is for the low-speed form).  The dry law opens a contact whose
 groove-centre distance exceeds the unloaded one; a lubricated contact still carries the
@@ -148,11 +154,11 @@ _HK = []
 
 
 def _kernels():
-    """The compiled kernels (:mod:`thermobear._hs_kernels`) when numba is installed and not turned off
+    """The compiled kernels (:mod:`thermobear._kernels`) when numba is installed and not turned off
     by ``THERMOBEAR_NUMBA=0``, else None; imported on first use (numba's import costs ≈ 0.3 s)."""
     if not _HK:
-        from . import _hs_kernels
-        _HK.append(_hs_kernels if _hs_kernels.ENABLED else None)
+        from . import _kernels
+        _HK.append(_kernels if _kernels.ENABLED else None)
     return _HK[0]
 
 
@@ -394,7 +400,7 @@ class _Problem:
         both contacts are open); F_c = ½ m dm ω_cage², M_g = J ω_R ω_cage sin β.
 
         Dry contacts with one stiffness per race run the compiled kernel
-        :func:`thermobear._hs_kernels.state_kernel` when numba is installed (same equations)."""
+        :func:`thermobear._kernels.state_kernel` when numba is installed (same equations)."""
         if self._compiled():
             return self._state_compiled(x, g)
         st = _State.__new__(_State)
@@ -491,7 +497,7 @@ class _Problem:
         return self.film is None and self.stiffness != "per_ball" and _kernels() is not None
 
     def _state_compiled(self, x, g):
-        """:meth:`state` by :func:`thermobear._hs_kernels.state_kernel`: the per-ball fields are views
+        """:meth:`state` by :func:`thermobear._kernels.state_kernel`: the per-ball fields are views
         into one block (nb, fields, Z), the per-case ones (Σ Q_i, ω_cage, F_c) into another (nb, 3)."""
         _hk = _kernels()
         nb, Z = x.shape[0], self.Z
@@ -581,7 +587,7 @@ class _Problem:
         derivatives (of β, the contact radii, ω_c,j, ω_R, F_c and M_g with respect to α_i, α_o, Q_i,
         Q_o and ω_cage) are analytic; dα_i/d(A − X) = e_i/d_i, dα_o/dX = e_o/d_o.
 
-        A state from the compiled kernel gets its step from :func:`thermobear._hs_kernels.step_kernel`
+        A state from the compiled kernel gets its step from :func:`thermobear._kernels.step_kernel`
         (the same elimination written ball by ball)."""
         if "_blk" in st.__dict__:
             _hk = _kernels()
@@ -1347,7 +1353,7 @@ def _place(x1, x2, a1, a2, f1, f2, Ki, Ko, mu, tol, ci0, co0, cap):
     """Newton minimisation of each ball's potential energy (see :func:`_start`) on flat arrays of
     balls; a ball leaves the active set when its force residual is below ``tol`` or its line
     search fails (a start needs no more).  Returns the ball centres X1, X2 [m].  With numba, ball by
-    ball in :func:`thermobear._hs_kernels.place_kernel` (the same iteration)."""
+    ball in :func:`thermobear._kernels.place_kernel` (the same iteration)."""
     x1, x2 = x1.copy(), x2.copy()
     _hk = _kernels()
     if _hk is not None:

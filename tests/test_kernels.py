@@ -1,10 +1,10 @@
-"""The compiled kernels of the high-speed ball equilibrium (thermobear._hs_kernels) against the numpy
+"""The compiled kernels of the high-speed ball equilibrium (thermobear._kernels) against the numpy
 reference methods they transcribe: every state field, the Newton step, the per-ball start, and whole
 solutions.  Skipped without numba (or with THERMOBEAR_NUMBA=0), where only the numpy path runs."""
 import numpy as np
 import pytest
 
-from thermobear import _hs_kernels as hk
+from thermobear import _kernels as hk
 from thermobear import loads_highspeed as hs
 from thermobear.geometry import bearing
 
@@ -141,3 +141,44 @@ def test_switch_off_by_environment():
     out = subprocess.run([sys.executable, "-c", "from thermobear import loads_highspeed as h; print(h._kernels())"],
                          env={**os.environ, "THERMOBEAR_NUMBA": "0"}, capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "None"
+
+
+@compiled
+@pytest.mark.parametrize("name", ["7210", "6210", "iso-dgbb", "51107"])
+@pytest.mark.parametrize("moment", [False, True])
+def test_static_solutions_equal_numpy(name, moment, monkeypatch):
+    """The low-speed Newton (thermobear.loads) compiled and in numpy: same loads, angles, iterations."""
+    from thermobear import loads
+    brg = bearing(name)
+    rng = np.random.default_rng(5)
+    n = 200
+    if brg.kind == "thrust":
+        Fa, Fr = rng.uniform(200.0, 3000.0, n), np.zeros(n)
+        M = rng.uniform(-0.5, 0.5, n) if moment else None
+    else:
+        Fr = rng.uniform(0.0, 3000.0, n)
+        Fa = (rng.uniform(300.0, 3000.0, n) + 0.5 * Fr if brg.kind == "angular_contact"
+              else rng.uniform(0.0, 3000.0, n))
+        M = rng.uniform(-5.0, 5.0, n) if moment else None
+    a = loads.load_distribution(brg, Fa=Fa, Fr=Fr, M=M)
+    assert loads._kernels() is not None
+    monkeypatch.setattr(loads, "_kernels", lambda: None)
+    b = loads.load_distribution(brg, Fa=Fa, Fr=Fr, M=M)
+    assert a.iterations == b.iterations and a.residual <= 1e-9
+    np.testing.assert_allclose(a.Q_i, b.Q_i, rtol=1e-10, atol=1e-10 * np.max(b.Q_i))
+    np.testing.assert_allclose(a.alpha_i, b.alpha_i, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(a.delta_a, b.delta_a, rtol=1e-10, atol=1e-18)
+
+
+@compiled
+def test_axial_angle_equals_numpy(monkeypatch):
+    from thermobear import loads
+    for name in ("7210", "6210", "iso-dgbb"):
+        brg = bearing(name)
+        F = np.concatenate([[0.0, 1e-6], np.geomspace(1e-3, 1e6, 200)])
+        a = loads.axial_contact_angle(brg, F)
+        with monkeypatch.context() as m:
+            m.setattr(loads, "_kernels", lambda: None)
+            b = loads.axial_contact_angle(brg, F)
+        np.testing.assert_allclose(a, b, rtol=0, atol=1e-13)
+        assert a[0] == brg.alpha0 and np.all(np.diff(a) > 0)

@@ -1,18 +1,24 @@
-"""Compiled kernels of the high-speed ball equilibrium (optional: numba).
+"""Compiled kernels of the ball equilibria (optional: numba).
 
-The Newton iteration of :mod:`thermobear.loads_highspeed` evaluates, at every iterate, the forces,
-kinematics and residuals of every ball (:meth:`~thermobear.loads_highspeed._Problem.state`) and the
-exact Newton step (:meth:`~thermobear.loads_highspeed._Problem.newton_step`).  Written with numpy,
-one load case is a few hundred calls on 15-element arrays: their call overhead, not the
-arithmetic, sets the cost (≈ 0.3 ms per Newton step).  This module holds the same two
-computations written ball by ball, compiled with numba when it is installed (``pip install
-thermobear[fast]``); the numpy methods stay the reference and serve every case these kernels do
-not cover (the film contact law, per-ball stiffness).
+The Newton iterations of :mod:`thermobear.loads` (low speed) and :mod:`thermobear.loads_highspeed`
+evaluate, at every iterate, the forces, kinematics and residuals of every ball and an exact
+Newton step.  Written with numpy, one load case is a few hundred calls on Z-element arrays: their
+call overhead, not the arithmetic, sets the cost (≈ 0.3 ms per high-speed Newton step).  This
+module holds the same computations written ball by ball and case by case, compiled with numba
+when it is installed (``pip install thermobear[fast]``):
 
-The kernels transcribe the numpy methods line for line — same equations, same order of
-operations where it matters — so the two agree to rounding (tests/test_hs_kernels.py compares
-every field and the Newton step on random batches, and whole solutions).  The equations and
-their references are in the docstrings of the numpy methods.
+* :func:`state_kernel`, :func:`step_kernel` — the high-speed state and exact Newton step
+  (:meth:`thermobear.loads_highspeed._Problem.state`, ``newton_step``);
+* :func:`place_kernel` — the per-ball start of the high-speed solve (``_place``);
+* :func:`static_kernel` — the damped Newton of :func:`thermobear.loads.load_distribution`;
+* :func:`axial_angle_kernel` — :func:`thermobear.loads.axial_contact_angle`.
+
+The numpy code stays the reference and serves every case these kernels do not cover (the film
+contact law, per-ball stiffness).  The kernels transcribe it line for line — same equations, same
+iteration logic (line searches, caps, stopping rules) — so the two agree to rounding:
+tests/test_kernels.py compares every state field, the Newton steps and whole solutions, and CI
+runs the load-distribution tests on both paths.  The equations and their references are in the
+docstrings of the numpy functions.
 
 ``THERMOBEAR_NUMBA=0`` in the environment turns the kernels off (numpy only); :data:`ENABLED`
 says whether they are in use.
@@ -37,7 +43,8 @@ except ImportError:
             return args[0]
         return lambda f: f
 
-__all__ = ["ENABLED", "N_BALL_FIELDS", "BALL_FIELDS", "state_kernel", "step_kernel", "place_kernel"]
+__all__ = ["ENABLED", "N_BALL_FIELDS", "BALL_FIELDS", "state_kernel", "step_kernel", "place_kernel", "static_kernel",
+           "axial_angle_kernel"]
 
 #: per-ball fields of the state, in the order of the kernel's output array (nb, n_fields, Z)
 BALL_FIELDS = ("X1", "X2", "p", "q", "d_i", "d_o", "si", "ci", "so", "co", "dl_i", "dl_o",
@@ -445,3 +452,143 @@ def place_kernel(x1, x2, a1, a2, f1, f2, Ki, Ko, mu, tol, ci0, co0, cap, maxit, 
                 break
             X1, X2 = X1 + lam * d1, X2 + lam * d2
         x1[k], x2[k] = X1, X2
+
+
+@njit(cache=True, error_model="numpy")
+def _static_rj(y0, y1, y2, c, A, sa0, ca0, Kn, F_app, s, res, J):  # pragma: no cover (compiled)
+    """Residual res (3,) and Jacobian J (3, 3) of the low-speed equilibrium at scaled unknowns
+    (y0, y1, y2) (:func:`thermobear.loads.load_distribution`'s ``residual_and_jac`` for one case)."""
+    s0 = s1 = s2 = s3 = s4 = s5 = 0.0
+    f0 = f1 = f2 = 0.0
+    for j in range(c.size):
+        cj = c[j]
+        d1 = A * (y0 + y2 * cj)
+        d2 = A * (y1 * cj)
+        A1 = A * sa0 + d1
+        A2 = A * ca0 + d2
+        Aj = math.hypot(A1, A2)
+        sp = max((2.0 * A * (sa0 * d1 + ca0 * d2) + d1 * d1 + d2 * d2) / (Aj + A), 0.0)
+        sa, ca = A1 / Aj, A2 / Aj
+        Q = Kn * sp ** 1.5
+        dQ = 1.5 * Kn * math.sqrt(sp)
+        Qa = Q / Aj if Aj > 0 else 0.0
+        g11 = dQ * sa * sa + Qa * ca * ca
+        g12 = (dQ * sa - Qa * sa) * ca
+        g22 = dQ * ca * ca + Qa * sa * sa
+        c2 = cj * cj
+        s0 += g11
+        s1 += g12 * cj
+        s2 += g11 * cj
+        s3 += g22 * c2
+        s4 += g12 * c2
+        s5 += g11 * c2
+        f0 += Q * sa
+        f1 += Q * ca * cj
+        f2 += Q * sa * cj
+    res[0], res[1], res[2] = (f0 - F_app[0]) / s, (f1 - F_app[1]) / s, (f2 - F_app[2]) / s
+    k = A / s
+    J[0, 0], J[0, 1], J[0, 2] = s0 * k, s1 * k, s2 * k
+    J[1, 0], J[1, 1], J[1, 2] = s1 * k, s3 * k, s4 * k
+    J[2, 0], J[2, 1], J[2, 2] = s2 * k, s4 * k, s5 * k
+
+
+@njit(cache=True, error_model="numpy")
+def static_kernel(y, F_app, scale, zero, na, c, A, sa0, ca0, Kn, tol, maxiter, halvings, norm_out,
+                  it_out):  # pragma: no cover (compiled)
+    """Damped Newton of the low-speed load distribution, case by case (the iteration of
+    :func:`thermobear.loads.load_distribution`: full step first, then halvings until the residual
+    norm falls by the Armijo factor 1 − 10⁻⁴ λ, the smallest step taken when none does; a singular
+    Jacobian regularised by 10⁻³ on its diagonal; stops at ``tol`` or at the floating-point floor).
+    ``na`` = 2 (tilt held) or 3 active unknowns.  Updates y (nb, 3); writes the final residual norm
+    and the Newton steps taken per case."""
+    res = np.empty(3)
+    J = np.empty((3, 3))
+    rt = np.empty(3)
+    Jt = np.empty((3, 3))
+    M = np.empty((na, na))
+    dy = np.empty(na)
+    for b in range(y.shape[0]):
+        if zero[b]:
+            norm_out[b], it_out[b] = 0.0, 0
+            continue
+        s = scale[b]
+        Fb = F_app[b]
+        _static_rj(y[b, 0], y[b, 1], y[b, 2], c, A, sa0, ca0, Kn, Fb, s, res, J)
+        norm = 0.0
+        for i in range(na):
+            norm = max(norm, abs(res[i]))
+        floor = False
+        it = 0
+        for step in range(1, maxiter + 1):
+            if not (norm > tol) or floor:
+                break
+            it = step
+            prev = norm
+            for i in range(na):
+                dy[i] = -res[i]
+                for k in range(na):
+                    M[i, k] = J[i, k]
+            det = M[0, 0] * M[1, 1] - M[0, 1] * M[1, 0] if na == 2 else (
+                M[0, 0] * (M[1, 1] * M[2, 2] - M[1, 2] * M[2, 1]) - M[0, 1] * (M[1, 0] * M[2, 2] - M[1, 2] * M[2, 0])
+                + M[0, 2] * (M[1, 0] * M[2, 1] - M[1, 1] * M[2, 0]))
+            if not abs(det) > 1e-300:          # no ball in contact: push towards contact
+                for i in range(na):
+                    M[i, i] += 1e-3
+            _solve4(M, dy)
+            lam = 1.0
+            t0, t1, t2 = y[b, 0], y[b, 1], y[b, 2]
+            for _h in range(halvings):
+                t0 = y[b, 0] + lam * dy[0]
+                t1 = y[b, 1] + lam * dy[1]
+                t2 = y[b, 2] + lam * dy[2] if na == 3 else y[b, 2]
+                _static_rj(t0, t1, t2, c, A, sa0, ca0, Kn, Fb, s, rt, Jt)
+                nt = 0.0
+                for i in range(na):
+                    nt = max(nt, abs(rt[i]))
+                if nt < (1.0 - 1e-4 * lam) * norm:
+                    break
+                lam = 0.5 * lam
+            else:                               # none accepted: the smallest step anyway
+                t0 = y[b, 0] + lam * dy[0]
+                t1 = y[b, 1] + lam * dy[1]
+                t2 = y[b, 2] + lam * dy[2] if na == 3 else y[b, 2]
+            y[b, 0], y[b, 1], y[b, 2] = t0, t1, t2
+            _static_rj(t0, t1, t2, c, A, sa0, ca0, Kn, Fb, s, res, J)
+            norm = 0.0
+            for i in range(na):
+                norm = max(norm, abs(res[i]))
+            floor = floor or (norm <= 1e-9 and norm > 0.5 * prev)
+        else:
+            it = maxiter
+        norm_out[b], it_out[b] = norm, it
+
+
+@njit(cache=True, error_model="numpy")
+def axial_angle_kernel(target, a0, c0, tol, maxit, out):  # pragma: no cover (compiled)
+    """Contact angle under pure axial load, element by element: the bracketed Newton iteration of
+    :func:`thermobear.loads.axial_contact_angle` on sin α (cos α0 / cos α − 1)^1.5 = target."""
+    hi0 = 0.5 * math.pi - 1e-9
+    for k in range(target.size):
+        tk = target[k]
+        lo, hi = a0, hi0
+        if a0 > 1e-6:
+            al = math.acos(min(max(c0 / (1.0 + (tk / max(math.sin(a0), 1e-12)) ** (2 / 3)), -1.0), 1.0))
+        else:
+            al = math.acos(1.0 / (1.0 + math.sqrt(max(2.0 * tk, 0.0)) ** (2 / 3)))
+        al = min(max(al, a0 + 1e-12), hi0)
+        for _ in range(maxit):
+            t = max(c0 / math.cos(al) - 1.0, 0.0)
+            f = math.sin(al) * t ** 1.5 - tk
+            if f < 0:
+                lo = al
+            if f > 0:
+                hi = al
+            dfd = math.cos(al) * t ** 1.5 + 1.5 * math.tan(al) ** 2 * math.sqrt(t) * c0
+            new = al - (f / dfd if dfd > 0 else 0.0)
+            if new <= lo or new >= hi or not math.isfinite(new):
+                new = 0.5 * (lo + hi)
+            done = abs(new - al) <= tol * max(1.0, abs(al))
+            al = new
+            if done:
+                break
+        out[k] = al
