@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import warnings
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 
@@ -43,7 +44,7 @@ from .friction.rolling import rolling_force
 from .friction.sliding import deformed_radius, hysteresis_moment
 from .geometry import BallBearing
 from .hertz import hertz
-from .kinematics import ball_kinematics, caged_ball_kinematics, common_cage_speed
+from .kinematics import CONTROLS, _cage_spin, caged_ball_kinematics, common_cage_speed
 from .loads import LoadDistribution, load_distribution
 
 __all__ = ["LossResult", "ContactSet", "bearing_losses", "prepare_contacts", "evaluate_losses",
@@ -199,8 +200,12 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
     # one rigid cage: every ball orbits at the load-weighted mean of the balls' no-slip orbital
     # speeds (they differ when the contact angles do: combined and high-speed loads); a ball
     # outside the load zone follows the cage and rolls on the race that carries it
-    free = ball_kinematics(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, control=control)
-    w_cage = common_cage_speed(_view(np.asarray(free.omega_c), batch + (Z,)), Qi)
+    if control not in CONTROLS:                 # (the check of ball_kinematics)
+        raise InputError("control", control, f"must be one of {', '.join(CONTROLS)}")
+    # the balls' free orbital speeds: ball_kinematics(...).omega_c, without the rest of its output
+    free_wc = _cage_spin(np.asarray(w_i[ex], float), np.asarray(w_o[ex], float), np.asarray(ai, float),
+                         np.asarray(ao, float), brg.D, brg.dm, control)[0]
+    w_cage = common_cage_speed(_view(free_wc, batch + (Z,)), Qi)
     omega_c = _view(np.asarray(w_cage)[ex], batch + (Z,))
     if centrifugal and brg.kind != "thrust":
         Fc = 0.5 * brg.ball_mass * brg.dm * omega_c**2
@@ -274,6 +279,13 @@ _ROW_KG = np.array([0.49, 0.28 * 0.49, 0.022, 0.53])
 _NVM_KU = np.array([1.4, 1.0 / 12.0, -0.4, 2.25, -4.0 / 3.0, -2.0])
 _NVM_KG = np.array([0.0, 1.0 / 12.0, 0.0, 0.0, -16.0 / 3.0, -6.0])
 _SIG_K = np.array([-0.5, 0.5, 0.5]) / _SWITCH_WIDTH          # logistic weights 0.5 (1 + tanh(x/2)), x = ±d/w
+
+
+@lru_cache(maxsize=8)
+def _row_consts(nd: int) -> tuple:
+    """The row constants above shaped (rows, 1, …, 1) against arrays of ``nd`` dimensions."""
+    sh = (-1,) + (1,) * nd
+    return tuple(v.reshape(sh) for v in (_ROW_KU, _ROW_KG, _NVM_KU, _NVM_KG, _SIG_K))
 
 
 def _kernel_pre(cs: ContactSet) -> dict:
@@ -370,9 +382,9 @@ def _kernel(pre, eta, alpha_p, Ep, sigma, mu_e, mu_a, *, rolling=True, full=Fals
         lnG = np.log(alpha_p * Ep)
         lnU2 = le + pre["lnU2fac"]                                              # −inf at u = 0
         loaded = pre["loaded"]
-        nd = (1,) * le.ndim
-        arg = _ROW_KU.reshape((-1,) + nd) * le
-        arg[:4] += _ROW_KG.reshape((-1,) + nd) * lnG
+        row_ku, row_kg, nvm_ku, nvm_kg, sig_k = _row_consts(le.ndim)
+        arg = row_ku * le
+        arg[:4] += row_kg * lnG
         E = np.exp(arg + pre["rows"])
         h_min = E[0]                                                            # film_thickness, kind="min"
         if sigma > 0:                                                           # mixed_friction_ianus
@@ -385,13 +397,15 @@ def _kernel(pre, eta, alpha_p, Ep, sigma, mu_e, mu_a, *, rolling=True, full=Fals
         # regime (lubrication_regime): dominance ratios of the NVM blend
         u = np.maximum(lnU2, _LN_TINY)
         g = np.maximum(lnG, _LN_TINY)
-        nvm = _NVM_KU.reshape((-1,) + nd) * u + (_NVM_KG.reshape((-1,) + nd) * g + pre["nvm"])
+        nvm = nvm_ku * u + (nvm_kg * g + pre["nvm"])
         ln_EIc15 = -0.375 * np.logaddexp(nvm[2], pre["nvm_h00"])               # 1.5 ln H_EI' (h00 cap)
         d_ip = ((2.0 / 3.0) * np.logaddexp(nvm[3], ln_EIc15)                  # ln iso − ln piezo
                 + 0.125 * np.logaddexp(nvm[4], nvm[5]))
         # smooth selection (_rolling_auto_smooth): logistic weights of the ln ratios
-        s_piezo, s_ri, s_rp = 0.5 + 0.5 * np.tanh(
-            np.clip(np.stack((d_ip, nvm[0], nvm[1])), _LN_TINY, 700.0) * _SIG_K.reshape((-1,) + nd))
+        x = np.empty((3,) + d_ip.shape)
+        x[0], x[1:] = d_ip, nvm[:2]
+        np.minimum(np.maximum(x, _LN_TINY, out=x), 700.0, out=x)               # (np.clip)
+        s_piezo, s_ri, s_rp = 0.5 + 0.5 * np.tanh(x * sig_k)
         if rolling:
             # the three rolling forces (rolling_force_houpert_ivr / _biboulet_pvr / _houpert_ehl)
             F_ivr, F_ehl, r = E[4], E[2], E[7]
@@ -440,10 +454,10 @@ def _drag_pre(cs: ContactSet, supply: str, oil_flow_m3_s: float, dragged: bool) 
         if supply == "oil_jet":
             W_cm3_min = oil_flow_m3_s * 1e6 * 60.0
             X = np.zeros(batch)
-            run = np.broadcast_to(nb > 0, batch)
+            run = _bc(nb > 0, batch)
             with warnings.catch_warnings(record=True) as caught:
                 warnings.simplefilter("always")
-                X[run] = oil_volume_fraction_parker(W_cm3_min, np.broadcast_to(nb, batch)[run], brg.dm * 1e3)
+                X[run] = oil_volume_fraction_parker(W_cm3_min, _bc(nb, batch)[run], brg.dm * 1e3)
             d["warn"] = [(str(w.message), w.category) for w in caught]
         elif supply == "oil_air":
             X = np.full(batch, 0.01)

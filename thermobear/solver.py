@@ -799,30 +799,36 @@ def _coupling_matrices(net, roles):
     return C, S
 
 
-def _losses_and_slopes(scene, models, cs4, x_K, h=0.05):
+def _losses_and_slopes(scene, models, cs2, x_K, h=0.05):
     """Losses P = (inner contacts, outer contacts, drag) [W] at the coupled temperatures x [K] and
-    ∂P/∂x [W/K] (forward differences, step h [K]) from one vectorised evaluation at four
-    temperature triplets (``cs4``: the contacts with a batch of 4).  Temperatures are held in the
-    lubricant's validity range, as :func:`_sources_c` does."""
+    ∂P/∂x [W/K] (forward differences, step h [K]).  Each part depends on its own temperature only
+    (the inner contacts on x_inner, the outer contacts on x_outer, drag on x_oil), so ∂P/∂x is
+    diagonal and one vectorised evaluation at two temperature triplets, x and x + h (all three
+    stepped at once; ``cs2``: the contacts with a batch of 2), gives all of it
+    (:func:`thermobear.losses.evaluate_losses` reads T_inner for the inner contacts, T_outer for the
+    outer ones and T_oil for drag only; a loss model that couples them needs the differences one
+    temperature at a time again — tests/test_thermal_fast_paths.py checks the two agree).
+    Temperatures are held in the lubricant's validity range, as :func:`_sources_c` does."""
     from .lubricant import T_VALID_C
     lo, hi = T_VALID_C[0] + 273.15, T_VALID_C[1] + 273.15
     x = np.asarray(x_K, float)
-    X = np.clip(np.column_stack([x, x[:, None] + h * np.eye(3)]), lo, hi) - 273.15   # 3 × 4 [°C]
+    X = np.clip(np.column_stack((x, x + h)), lo, hi) - 273.15          # 3 × 2 [°C]
     if models["rolling"][0] == "auto":         # the sums only, from the fused kernel (same numbers)
-        Pm = _contact_powers(cs4, scene.lubricant, X[0], X[1], X[2], supply=scene.supply,
+        Pm = _contact_powers(cs2, scene.lubricant, X[0], X[1], X[2], supply=scene.supply,
                              oil_flow_m3_s=scene.oil_flow, Rq_ball=scene.Rq_ball, Rq_ring=scene.Rq_ring,
                              mu_boundary=scene.mu_boundary, mu_full_film=scene.mu_full_film,
                              drag=bool(models["drag"][0]))
-        return Pm, (Pm[:, 1:] - Pm[:, [0]]) / h
-    r = scene_losses(scene, T_C=X[2], T_inner_C=X[0], T_outer_C=X[1], T_oil_C=X[2], models=models, contacts=cs4)
-    ci, co = r.contacts["inner"], r.contacts["outer"]
-    Pm = np.vstack([(ci["P_rolling"] + ci["P_sliding"] + ci["P_pivoting"] + ci["P_hysteresis"]).sum(-1),
-                    (co["P_rolling"] + co["P_sliding"] + co["P_pivoting"] + co["P_hysteresis"]).sum(-1),
-                    np.broadcast_to(r.breakdown_W["drag"], (4,))])                 # 3 × 4 [W]
-    return Pm, (Pm[:, 1:] - Pm[:, [0]]) / h
+    else:
+        r = scene_losses(scene, T_C=X[2], T_inner_C=X[0], T_outer_C=X[1], T_oil_C=X[2], models=models,
+                         contacts=cs2)
+        ci, co = r.contacts["inner"], r.contacts["outer"]
+        Pm = np.vstack([(ci["P_rolling"] + ci["P_sliding"] + ci["P_pivoting"] + ci["P_hysteresis"]).sum(-1),
+                        (co["P_rolling"] + co["P_sliding"] + co["P_pivoting"] + co["P_hysteresis"]).sum(-1),
+                        np.broadcast_to(r.breakdown_W["drag"], (2,))])                 # 3 × 2 [W]
+    return Pm[:, 0], np.diag((Pm[:, 1] - Pm[:, 0]) / h)
 
 
-def _newton_coupled(scene, models, net, roles, cs1, tol_K, T_limit_K, maxiter=30, h=0.05, T0_K=None):
+def _newton_coupled(scene, models, net, roles, cs2, tol_K, T_limit_K, maxiter=30, h=0.05, T0_K=None):
     """Newton on the free-node temperatures T_f of the network coupled with the losses [K].
 
     Residual (heat balance of each free node) [W] and its Jacobian:
@@ -832,8 +838,9 @@ def _newton_coupled(scene, models, net, roles, cs1, tol_K, T_limit_K, maxiter=30
 
     with x the three coupled temperatures (inner contact, outer contact — each the mean of ball and
     race — and oil), P = (inner contacts, outer contacts, drag) [W] and S their split onto the nodes
-    (½ ball, ½ race; drag to the oil).  P and ∂P/∂x come from one vectorised loss evaluation at x
-    and x + h e_k (k = 1..3, ``cs1`` holds the contacts four times); ∂A/∂T·T from forward differences
+    (½ ball, ½ race; drag to the oil).  P and its diagonal ∂P/∂x come from one vectorised loss
+    evaluation at x and x + h (:func:`_losses_and_slopes`; ``cs2`` holds the contacts twice);
+    ∂A/∂T·T from forward differences
     of the temperature-dependent conductances (convection with fluid properties, radiation),
     re-evaluated while the steps exceed 1 K and then kept (a small, slowly varying part of the
     Jacobian: the loss slopes and the conductances themselves are fresh at every iterate), so the
@@ -842,7 +849,7 @@ def _newton_coupled(scene, models, net, roles, cs1, tol_K, T_limit_K, maxiter=30
     real eigenvalue of dG/dx = C A_ff⁻¹ S ∂P/∂x (the losses through the network at the current
     conductances, as :func:`thermobear.coupling.loop_gain` measures it).  Returns (x, T_nodes, iters,
     residual, loop_gain, history) or None when it cannot decide (the caller then uses Anderson)."""
-    from .thermal.solve import _plan
+    from .thermal.solve import _dense_solve, _max_real_eigenvalue, _plan
     plan = _plan(net)
     free, fixed = ~net.fixed, net.fixed
     C, S = _coupling_matrices(net, roles)
@@ -852,7 +859,7 @@ def _newton_coupled(scene, models, net, roles, cs1, tol_K, T_limit_K, maxiter=30
     dG, step_prev = None, np.inf
     for it in range(1, maxiter + 1):
         x = C @ T[free]
-        Pm, dP = _losses_and_slopes(scene, models, cs1, x, h)
+        P, dP = _losses_and_slopes(scene, models, cs2, x, h)
         if dG is None or step_prev > 1.0:
             G, dG = plan.dconductances(T, nodes=plan.free)  # only ∂/∂T_free enters Jr below
         else:                                           # small steps: the slopes of the last iterate
@@ -861,30 +868,27 @@ def _newton_coupled(scene, models, net, roles, cs1, tol_K, T_limit_K, maxiter=30
         if not isinstance(Aff, np.ndarray):
             Aff, Afb = Aff.toarray(), Afb.toarray()
         Tf = T[free]
-        R = Aff @ Tf + Afb @ Tb - S @ Pm[:, 0]
-        Jr = Aff + plan.dAT(T, dG)[np.ix_(free, free)] - S @ dP @ C
-        try:
-            dT = np.linalg.solve(Jr, -R)
-        except np.linalg.LinAlgError:
+        R = Aff @ Tf + Afb @ Tb - S @ P
+        Jr = Aff + plan.dAT_free(T, dG) - S @ dP @ C
+        dT = _dense_solve(Jr, -R)
+        if dT is None or not np.isfinite(dT).all():
             return None
-        if not np.all(np.isfinite(dT)):
-            return None
-        step = float(np.max(np.abs(dT)))
+        step = float(np.abs(dT).max())
         # loop gain (an eigenvalue problem): at the first iterate, whenever the step does not shrink, and at
         # the answer — a converging sequence needs no runaway check in between
         if it == 1 or step >= step_prev or step <= tol_K:
-            try:
-                gain = float(np.max(np.linalg.eigvals(C @ np.linalg.solve(Aff, S @ dP)).real))
-            except np.linalg.LinAlgError:
+            X = _dense_solve(Aff, S @ dP)
+            if X is None:
                 return None
-            if not np.isfinite(gain):
+            gain = _max_real_eigenvalue(C @ X)
+            if not math.isfinite(gain):
                 return None
         step_prev = step
         if step > 50.0:
             dT *= 50.0 / step
         dx = C @ dT
-        history.append(dict(iteration=it, T_K=x.copy(), residual_K=step, mean_residual_K=float(np.mean(dx)),
-                            P_W=float(Pm[:, 0].sum()), step="newton"))
+        history.append(dict(iteration=it, T_K=x.copy(), residual_K=step,
+                            mean_residual_K=float(dx.sum() / dx.size), P_W=float(P.sum()), step="newton"))
         T = T.copy()
         T[free] = Tf + dT
         if step <= tol_K:
@@ -1014,8 +1018,8 @@ def steady_state(scene: Scene, *, tol_K: float = 1e-6, contacts: ContactSet | No
         warnings.simplefilter("ignore", ExtrapolationWarning)
         nw = None
         if method == "newton" and models["losses"][0] == "local" and cs.batch == ():
-            cs4 = _repeat_contacts(cs, 4)          # the contacts four times (one per temperature triplet)
-            nw = _newton_coupled(scene, models, net, roles, cs4, tol_K, kw["T_limit_K"], T0_K=T0_K)
+            cs2 = _repeat_contacts(cs, 2)          # the contacts twice (x and x + h: _losses_and_slopes)
+            nw = _newton_coupled(scene, models, net, roles, cs2, tol_K, kw["T_limit_K"], T0_K=T0_K)
         if nw is not None:
             x, state["T"], its, resid, gain, hist = nw
             res = CoupledResult(T_K=x, P_W=hist[-1]["P_W"], iterations=its, evaluations=its * 4,

@@ -38,9 +38,10 @@ from __future__ import annotations
 
 import ast
 import math
+import operator
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from functools import lru_cache
+from functools import cached_property, lru_cache
 from pathlib import Path
 
 import networkx as nx
@@ -57,13 +58,14 @@ __all__ = ["ThermalNetwork", "load_network", "network_names", "evaluate"]
 _FUNCS = {"sqrt": np.sqrt, "log": np.log, "log10": np.log10, "exp": np.exp, "sin": np.sin,
           "cos": np.cos, "tan": np.tan, "radians": np.radians, "abs": abs, "min": min, "max": max}
 _CONSTS = {"pi": math.pi}
-_BINOPS = {ast.Add: lambda a, b: a + b, ast.Sub: lambda a, b: a - b, ast.Mult: lambda a, b: a * b,
-           ast.Div: lambda a, b: a / b, ast.Pow: lambda a, b: a ** b}
+_BINOPS = {ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul, ast.Div: operator.truediv,
+           ast.Pow: operator.pow}
+_PLAIN_FUNCS = frozenset({"abs", "min", "max"})     # Python built-ins: no floating-point state to watch
 _MISSING = object()
 
 
 def _get(obj, name):
-    if isinstance(obj, Mapping):
+    if type(obj) is dict or isinstance(obj, Mapping):
         return obj.get(name, _MISSING)
     return getattr(obj, name, _MISSING)
 
@@ -143,9 +145,13 @@ def _compile(node, as_num: bool):
         return f
     src = None
 
+    if (isinstance(node, ast.Constant) and type(node.value) in (int, float)
+            or isinstance(node, ast.Name) and node.id in _CONSTS):
+        return f                            # a number: nothing to check
+
     def num(ev):
         v = f(ev)
-        if isinstance(v, (bool, str)) or not isinstance(v, _NUM_TYPES):
+        if type(v) is not float and (isinstance(v, (bool, str)) or not isinstance(v, _NUM_TYPES)):
             ev.fail(f"'{src or ast.unparse(node)}' " + (_NONE_MSG if v is None else "is not a number"))
         return v
     return num
@@ -207,6 +213,14 @@ def _compile_visit(node):
             msg = f"only the functions {', '.join(sorted(_FUNCS))} may be called"
             return lambda ev: ev.fail(msg)
         fn, fargs = _FUNCS[node.func.id], [_compile(a, True) for a in node.args]
+        if node.func.id in _PLAIN_FUNCS:
+            def call_plain(ev):
+                args = [g(ev) for g in fargs]
+                try:
+                    return fn(*args)
+                except (ValueError, TypeError, OverflowError) as exc:
+                    ev.fail(f"cannot be evaluated: {exc}")
+            return call_plain
 
         def call(ev):
             args = [g(ev) for g in fargs]
@@ -356,7 +370,8 @@ class ThermalNetwork:
     T_fixed_K : ndarray           fixed temperatures [K] (free nodes: 0, unused)
     C_J_K : ndarray               heat capacities [J/K] (NaN where the file gives none)
     elements : list of Element
-    graph : networkx.MultiGraph   nodes and elements with their data (edge key = element name)
+    graph : networkx.MultiGraph   nodes and elements with their data (edge key = element name), built
+                                  from the arrays and elements above on first access
     estimated : dict              "nodes.x" / "elements[y]" → list of estimated keys
     source : str                  file the network came from
     """
@@ -368,9 +383,22 @@ class ThermalNetwork:
     T_fixed_K: np.ndarray
     C_J_K: np.ndarray
     elements: list
-    graph: nx.MultiGraph
     estimated: dict = field(default_factory=dict)
     source: str = ""
+
+    @cached_property
+    def graph(self) -> nx.MultiGraph:
+        """The network as a networkx MultiGraph: nodes with ``fixed`` and ``T_C`` [°C] or ``C_J_K``
+        [J/K], one edge per element (key = element name) with its type, ``advective`` and evaluated
+        parameters (materials by name).  Built on first access (the solvers do not need it)."""
+        graph = nx.MultiGraph(name=self.name)
+        for i, name in enumerate(self.nodes):
+            graph.add_node(name, fixed=bool(self.fixed[i]),
+                           **({"T_C": self.T_fixed_K[i] - 273.15} if self.fixed[i] else {"C_J_K": self.C_J_K[i]}))
+        for el in self.elements:
+            graph.add_edge(*el.nodes, key=el.name, type=el.type, advective=el.advective, **{
+                kk: (vv.name if isinstance(vv, Material) else vv) for kk, vv in el.p.items()})
+        return graph
 
     @property
     def free_nodes(self) -> list:
@@ -457,7 +485,8 @@ def _build(data, ctx, src, frozen: bool = False) -> ThermalNetwork:
     later builds of the same object skip the checks that do not depend on the context (keys, element
     types and schemas, node names, reachability) and only evaluate, check and probe the values; the
     values that read nothing but the bearing (volumes, areas, lengths, materials: see
-    :func:`_static_values`) are taken from the build with the same bearing values."""
+    :func:`_static_values`) and the plain numbers are taken from the build with the same bearing
+    values."""
     pre = f"{src}: "
     memo = _CHECKED.get(id(data)) if frozen else None
     trusted = memo is not None and memo[0] is data
@@ -571,7 +600,7 @@ def _assemble(data, ctx, src, pre, trusted, estimated, static=None) -> ThermalNe
     index = {n: i for i, n in enumerate(names)}
     n = len(names)
     fixed, T_fixed, C = np.zeros(n, bool), np.zeros(n), np.full(n, np.nan)
-    graph = nx.MultiGraph(name=data.get("name", src))
+    values: dict = {}          # expression string → value, for this build's context (a repeated expression once)
     for name, nd in nodes_tbl.items():
         f = f"{pre}nodes.{name}"
         if not trusted:
@@ -587,7 +616,7 @@ def _assemble(data, ctx, src, pre, trusted, estimated, static=None) -> ThermalNe
             if {"C_J_K", "mass_kg", "volume_m3", "material"} & set(nd):
                 raise InputError(f"{f}.T_C", nd["T_C"], "a fixed-temperature node takes no heat capacity or material")
             fixed[i] = True
-            T_fixed[i] = _check_value(f"{f}.T_C", "T_C", evaluate(nd["T_C"], ctx, f"{f}.T_C")) + 273.15
+            T_fixed[i] = _check_value(f"{f}.T_C", "T_C", _evaluate_once(values, nd["T_C"], ctx, f"{f}.T_C")) + 273.15
         elif static is not None:
             c = static.get(f)
             if c is None:
@@ -599,26 +628,23 @@ def _assemble(data, ctx, src, pre, trusted, estimated, static=None) -> ThermalNe
             C[i] = c
         else:
             C[i] = _capacity(f, nd, ctx)
-        graph.add_node(name, fixed=bool(fixed[i]), **({"T_C": T_fixed[i] - 273.15} if fixed[i] else {"C_J_K": C[i]}))
     if not fixed.any():
         raise InputError(pre + "nodes", None, "at least one fixed-temperature node (T_C = ...) is required")
 
     elements, seen = [], set()
     for k, e in enumerate(els):
-        el = _element(pre, k, e, ctx, index, fixed, estimated, seen, trusted, static)
-        elements.append(el)
-        graph.add_edge(*el.nodes, key=el.name, type=el.type, advective=el.advective, **{
-            kk: (vv.name if isinstance(vv, Material) else vv) for kk, vv in el.p.items()})
+        elements.append(_element(pre, k, e, ctx, index, fixed, estimated, seen, trusted, static, values))
 
     # every free node must see a fixed node: conduction both ways, advection upstream → downstream
     if not trusted:
         _check_reachable(pre, names, index, fixed, elements)
 
     net = ThermalNetwork(name=data.get("name", src), nodes=names, index=index, fixed=fixed,
-                         T_fixed_K=T_fixed, C_J_K=C, elements=elements, graph=graph,
-                         estimated=estimated, source=src)
-    # probe every element once at a representative state, naming the element on failure
+                         T_fixed_K=T_fixed, C_J_K=C, elements=elements, estimated=estimated, source=src)
+    # probe every element once at a representative state, naming the element on failure (the elements
+    # share their fluid-property evaluations, as in the solvers: Element._conductance_shared)
     T_probe = net.initial_T_K() + np.where(fixed, 0.0, 10.0)
+    shared: dict = {}
     for el in elements:
         if static is not None:
             # the memoised conductance of a temperature-independent element of the last build with these
@@ -627,7 +653,7 @@ def _assemble(data, ctx, src, pre, trusted, estimated, static=None) -> ThermalNe
             if memo is not None:
                 el.__dict__["_tb_G"] = memo
         try:
-            G = el.conductance(T_probe)
+            G = el._conductance_shared(T_probe, shared)
         except InputError as exc:
             raise InputError(f"{pre}elements[{el.name}].{exc.field}", exc.value, exc.expected) from None
         if not (np.isfinite(G) and G >= 0):
@@ -728,21 +754,38 @@ def _element_checks(pre, k, e, index, estimated, seen):
     return name, f, typ, between, schema
 
 
-def _element(pre, k, e, ctx, index, fixed, estimated, seen, trusted=False, static=None) -> Element:
-    if trusted:                             # a table that passed every check below before (see _build)
-        between = e["between"]
-        name = e.get("name", f"{between[0]}--{between[1]}")
-        f = f"{pre}elements[{name}]"
-        typ = e["type"]
-        schema = ELEMENT_TYPES[typ]
-    else:
-        name, f, typ, between, schema = _element_checks(pre, k, e, index, estimated, seen)
+def _evaluate_once(values, expr, ctx, fld):
+    """:func:`evaluate` of an expression string once per build (``values``: string → value for this
+    build's context; an expression repeated in the table gives the same value)."""
+    if not isinstance(expr, str):
+        return evaluate(expr, ctx, fld)
+    v = values.get(expr, _MISSING)
+    if v is _MISSING:
+        v = values[expr] = evaluate(expr, ctx, fld)
+    return v
 
-    p = {}
-    for kk, v in e.items():
-        if kk in _ELEMENT_META:
-            continue
-        fld = f"{f}.{kk}"
+
+def _element(pre, k, e, ctx, index, fixed, estimated, seen, trusted=False, static=None, values=None) -> Element:
+    head = static.get(("element", k)) if static is not None and trusted else None
+    template = None
+    if head is not None:                    # the names and fields of this table entry, from an earlier build
+        name, f, typ, between, schema, items, template = head
+    else:
+        if trusted:                         # a table that passed every check below before (see _build)
+            between = e["between"]
+            name = e.get("name", f"{between[0]}--{between[1]}")
+            f = f"{pre}elements[{name}]"
+            typ = e["type"]
+            schema = ELEMENT_TYPES[typ]
+        else:
+            name, f, typ, between, schema = _element_checks(pre, k, e, index, estimated, seen)
+        items = [(kk, v, f"{f}.{kk}") for kk, v in e.items() if kk not in _ELEMENT_META]
+
+    if template is not None:                # the static values in place, the others evaluated below
+        p, todo = template[0].copy(), template[1]
+    else:
+        p, todo = {}, items
+    for kk, v, fld in todo:
         if static is not None:
             hit = static.get(fld, _MISSING)
             if hit is not _MISSING:             # a static value (see _static_values), checked before
@@ -752,17 +795,24 @@ def _element(pre, k, e, ctx, index, fixed, estimated, seen, trusted=False, stati
             if v not in STRING_KEYS[kk]:
                 raise InputError(fld, v, f"one of {', '.join(STRING_KEYS[kk])}")
             p[kk] = v
+            if static is not None:
+                static[fld] = v
         elif kk in MATERIAL_KEYS:
             p[kk] = _resolve_material(v, ctx, fld)
             if static is not None and (_static_expr(v) or isinstance(v, str) and v in material_names()):
                 static[fld] = p[kk]
         else:
-            val = evaluate(v, ctx, fld)
+            val = evaluate(v, ctx, fld) if values is None else _evaluate_once(values, v, ctx, fld)
             if np.ndim(val):
                 raise InputError(fld, v, "must evaluate to a single number")
             p[kk] = _check_value(fld, kk, val)
-            if static is not None and _static_expr(v):
+            if static is not None and (_static_expr(v) or type(v) in (int, float)):   # the bearing's, or a number
                 static[fld] = p[kk]
+    if static is not None and trusted and head is None:
+        # every static field of this entry is known now: the next builds copy them (keys in table order)
+        # and evaluate only the rest
+        template = ({kk: static.get(fld) for kk, v, fld in items}, [t for t in items if t[2] not in static])
+        static[("element", k)] = (name, f, typ, between, schema, items, template)
 
     i, j = index[between[0]], index[between[1]]
     if typ == "convection":

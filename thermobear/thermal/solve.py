@@ -25,6 +25,7 @@ from typing import Callable
 import numpy as np
 import scipy.sparse as sp
 from scipy.integrate import solve_ivp
+from scipy.linalg.lapack import dgeev, dgesv
 from scipy.sparse.linalg import spsolve
 
 from ..errors import InputError, NoConvergence
@@ -191,6 +192,9 @@ class _Plan:
         # positions of the free × free and free × fixed blocks in the flattened dense matrix
         self._ff = (self.free[:, None] * n + self.free[None, :]).ravel()
         self._fb = (self.free[:, None] * n + self.fixed[None, :]).ravel()
+        self._fpos = [-1] * n                   # node → position among the free nodes (−1: fixed)
+        for q, m in enumerate(self.free.tolist()):
+            self._fpos[m] = q
         T0 = net.initial_T_K()
         self.G0 = np.array([0.0 if k in self.dep else e.conductance(T0) for k, e in enumerate(els)], dtype=float)
         self.memo: dict = {}
@@ -248,6 +252,30 @@ class _Plan:
             else:
                 D[e.i, m] += d * (T[e.i] - T[e.j])
                 D[e.j, m] += d * (T[e.j] - T[e.i])
+        return D
+
+    def dAT_free(self, T_K, dG) -> np.ndarray:
+        """The free × free block of :meth:`dAT` (``dG`` with derivatives by free nodes only, as
+        ``dconductances(..., nodes=self.free)`` gives them), built directly [W/K]."""
+        T = np.asarray(T_K, dtype=float).tolist()
+        fpos = self._fpos
+        nf = self.free.size
+        D = np.zeros((nf, nf))
+        els = self.elements
+        for k, m, d in dG:
+            e = els[k]
+            c = fpos[m]
+            if e.advective:
+                r = fpos[e.j]
+                if r >= 0:
+                    D[r, c] += d * (T[e.j] - T[e.i])
+            else:
+                r = fpos[e.i]
+                if r >= 0:
+                    D[r, c] += d * (T[e.i] - T[e.j])
+                r = fpos[e.j]
+                if r >= 0:
+                    D[r, c] += d * (T[e.j] - T[e.i])
         return D
 
     def values(self, G):
@@ -315,13 +343,28 @@ def _plan(net) -> _Plan:
     return plan
 
 
+def _dense_solve(A, b):
+    """x with A x = b (LAPACK gesv: LU with partial pivoting, as ``numpy.linalg.solve``, called
+    directly: the networks' matrices are small and the wrapper's overhead is most of the cost);
+    None when A is singular."""
+    lu, piv, x, info = dgesv(A, b)
+    return None if info else x
+
+
+def _max_real_eigenvalue(M) -> float:
+    """Largest real part of the eigenvalues of a small dense matrix (LAPACK geev, as
+    ``numpy.linalg.eigvals``); NaN when M is not finite or the eigenvalues do not converge."""
+    if not np.isfinite(M).all():
+        return math.nan
+    wr, wi, vl, vr, info = dgeev(M, compute_vl=0, compute_vr=0)
+    return math.nan if info else float(wr.max())
+
+
 def _lin_solve(Aff, rhs):
     """Solve A_ff x = rhs (dense LU or sparse LU); non-finite result when A_ff is singular."""
     if isinstance(Aff, np.ndarray):
-        try:
-            return np.linalg.solve(Aff, rhs)
-        except np.linalg.LinAlgError:
-            return np.full(np.shape(rhs), np.nan)
+        x = _dense_solve(Aff, rhs)
+        return np.full(np.shape(rhs), np.nan) if x is None else x
     return spsolve(Aff, rhs)
 
 
@@ -337,9 +380,10 @@ def _flows(net, T, G):
 def _heat_out(net, flows):
     """Heat leaving the free part of the network: into each fixed node, and into the stream."""
     out = {}
+    fixed = net.fixed.tolist()
     for e in net.elements:
         f = flows[e.name]
-        fi, fj = net.fixed[e.i], net.fixed[e.j]
+        fi, fj = fixed[e.i], fixed[e.j]
         if e.advective:
             if not fj:
                 out["stream"] = out.get("stream", 0.0) + f.Q_W
@@ -353,8 +397,9 @@ def _heat_out(net, flows):
 def _balance(net, P, flows):
     out = _heat_out(net, flows)
     total_out = math.fsum(out.values())
+    P = np.asarray(P, dtype=float).tolist()
     bal = math.fsum(P) - total_out
-    scale = math.fsum(np.abs(P)) or math.fsum(abs(f.Q_W) for f in flows.values()) or 1.0
+    scale = math.fsum([abs(q) for q in P]) or math.fsum(abs(f.Q_W) for f in flows.values()) or 1.0
     return bal, abs(bal) / scale
 
 
