@@ -1358,7 +1358,9 @@ def _place(x1, x2, a1, a2, f1, f2, Ki, Ko, mu, tol, ci0, co0, cap):
     _hk = _kernels()
     if _hk is not None:
         n = x1.size
-        fl = [np.ascontiguousarray(np.broadcast_to(v, (n,)), dtype=float) for v in (a1, a2, f1, f2, Ki, Ko, mu, tol)]
+        # fresh writeable float arrays: numba compiles (and caches) one version per argument type, and a
+        # read-only view (broadcast_to, a cached solution's arrays) is another type
+        fl = [np.array(np.broadcast_to(v, (n,)), dtype=float) for v in (a1, a2, f1, f2, Ki, Ko, mu, tol)]
         _hk.place_kernel(x1, x2, *fl, float(ci0), float(co0), float(cap), _BALL_MAXIT, _BALL_HALVINGS)
         return x1, x2
     act = np.arange(x1.size)
