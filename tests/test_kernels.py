@@ -182,3 +182,31 @@ def test_axial_angle_equals_numpy(monkeypatch):
             b = loads.axial_contact_angle(brg, F)
         np.testing.assert_allclose(a, b, rtol=0, atol=1e-13)
         assert a[0] == brg.alpha0 and np.all(np.diff(a) > 0)
+
+
+@compiled
+def test_one_compiled_version_per_kernel():
+    """numba compiles (and caches) one machine-code version per argument-type signature; a read-only
+    or non-contiguous array is another type, and a new version costs seconds at first use.  Every entry
+    point — scalar and batched loads, read-only inputs, a tilt-free case, a steady state, a sweep —
+    must reach the kernels with one signature each."""
+    import warnings
+
+    import thermobear as tb
+    from thermobear import loads
+    from thermobear.sweep import run_sweep
+    brg = bearing("7210")
+    ro = np.broadcast_to(np.array([500.0, 800.0]), (2,))                      # read-only inputs
+    loads.load_distribution(brg, Fa=450.0, Fr=300.0)
+    loads.load_distribution(brg, Fa=ro, Fr=ro * 0.5, M=np.array([1.0, -2.0]))
+    loads.axial_contact_angle(brg, ro)
+    hs.load_distribution_high_speed(brg, Fa=450.0, Fr=300.0, n_rpm=6000.0)
+    hs.load_distribution_high_speed(brg, Fa=ro, Fr=ro * 0.5, n_rpm=np.array([3000.0, 9000.0]), control="inner")
+    hs.load_distribution_high_speed(bearing("51107"), Fa=ro, n_rpm=4000.0)
+    scene = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        tb.steady_state(scene.with_(n_rpm=5000.0))
+        run_sweep(scene, {"n_rpm": [4000.0, 7000.0]}, processes=1)
+    for name in ("state_kernel", "step_kernel", "place_kernel", "static_kernel", "axial_angle_kernel"):
+        assert len(getattr(hk, name).signatures) == 1, (name, getattr(hk, name).signatures)
