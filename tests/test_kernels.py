@@ -210,3 +210,42 @@ def test_one_compiled_version_per_kernel():
         run_sweep(scene, {"n_rpm": [4000.0, 7000.0]}, processes=1)
     for name in ("state_kernel", "step_kernel", "place_kernel", "static_kernel", "axial_angle_kernel"):
         assert len(getattr(hk, name).signatures) == 1, (name, getattr(hk, name).signatures)
+
+
+@pytest.mark.parametrize("kernels", [True, False])
+@pytest.mark.parametrize("loads_", [dict(Fa=1e300, Fr=1e300), dict(Fa=1e-200, M=1e-200),
+                                    dict(Fa=1e-30, Fr=1e-30, M=1e-30)])
+def test_absurd_loads_fail_loudly_on_both_paths(kernels, loads_, monkeypatch):
+    """Overflowing or vanishing loads: an answer or a named SolverError, never NaN loads, never a raw
+    LinAlgError (review finding: a NaN residual read as converged; numpy's singular solve leaked)."""
+    from thermobear import loads
+    from thermobear.errors import SolverError
+    if not kernels:
+        monkeypatch.setattr(loads, "_kernels", lambda: None)
+    elif loads._kernels() is None:
+        pytest.skip("numba not installed (or THERMOBEAR_NUMBA=0)")
+    try:
+        with np.errstate(all="ignore"):             # the numpy path overflows on the way (1e300 N)
+            ld = loads.load_distribution(bearing("7210"), **loads_)
+    except SolverError:
+        return
+    assert np.all(np.isfinite(ld.Q_i)) and ld.residual <= 1e-9
+
+
+def test_uncacheable_location_compiles_in_memory(monkeypatch):
+    """Where numba finds no writable cache location it refuses cache=True when decorating (review
+    finding): the kernel is then compiled without the cache instead of failing the import."""
+    calls = []
+
+    def fake_njit(**kw):
+        calls.append(kw)
+        if kw.get("cache"):
+            raise RuntimeError("cannot cache function 'f': no locator available")
+        return lambda f: f
+
+    monkeypatch.setattr(hk, "njit", fake_njit)
+
+    def f(x):
+        return x
+    assert hk._jit(f)(3) == 3
+    assert [c["cache"] for c in calls] == [True, False] and all(c["error_model"] == "numpy" for c in calls)

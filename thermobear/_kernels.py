@@ -14,7 +14,8 @@ when it is installed (``pip install thermobear[fast]``):
 * :func:`axial_angle_kernel` — :func:`thermobear.loads.axial_contact_angle`.
 
 The numpy code stays the reference and serves every case these kernels do not cover (the film
-contact law, per-ball stiffness).  The kernels transcribe it line for line — same equations, same
+contact law; per-ball stiffness, except in the per-ball start, whose kernel takes one stiffness per
+ball).  The kernels transcribe it line for line — same equations, same
 iteration logic (line searches, caps, stopping rules) — so the two agree to rounding:
 tests/test_kernels.py compares every state field, the Newton steps and whole solutions, and CI
 runs the load-distribution tests on both paths.  The equations and their references are in the
@@ -31,7 +32,7 @@ import os
 import numpy as np
 
 try:                                    # optional dependency
-    if os.environ.get("THERMOBEAR_NUMBA", "1").strip() in ("0", "false", "no", "off"):
+    if os.environ.get("THERMOBEAR_NUMBA", "1").strip().lower() in ("0", "false", "no", "off"):
         raise ImportError("disabled by THERMOBEAR_NUMBA")
     from numba import njit
     ENABLED = True
@@ -42,6 +43,19 @@ except ImportError:
         if args and callable(args[0]):
             return args[0]
         return lambda f: f
+
+
+
+def _jit(f):
+    """numba's njit with IEEE float semantics (a division by zero gives inf/NaN as in numpy, no
+    exception) and an on-disk cache.  Where numba finds no writable cache location (package folder
+    and user cache both read-only) it refuses ``cache=True`` when decorating: the kernels are then
+    compiled in memory, once per process (≈ 5 s)."""
+    try:
+        return njit(cache=True, error_model="numpy")(f)
+    except RuntimeError:
+        return njit(cache=False, error_model="numpy")(f)
+
 
 __all__ = ["ENABLED", "N_BALL_FIELDS", "BALL_FIELDS", "state_kernel", "step_kernel", "place_kernel", "static_kernel",
            "axial_angle_kernel"]
@@ -56,7 +70,7 @@ N_BALL_FIELDS = len(BALL_FIELDS)
  _FO2) = range(N_BALL_FIELDS)
 
 
-@njit(cache=True, error_model="numpy")
+@_jit
 def state_kernel(x, g, c, omega, scale, F_app, A, A2_0, ci0, co0, Ki, Ko, k_eps, gp, dm, D, m, J,
                  lam_i, lam_o, fi, R, outer, out, case_out, r_b, r_g):  # pragma: no cover (compiled)
     """State of every ball of every case (dry Hertz contacts, one stiffness per race).
@@ -162,7 +176,7 @@ def state_kernel(x, g, c, omega, scale, F_app, A, A2_0, ci0, co0, Ki, Ko, k_eps,
         case_out[b, 0], case_out[b, 1], case_out[b, 2] = qs, W, Fc
 
 
-@njit(cache=True, error_model="numpy")
+@_jit
 def _solve4(S, r):  # pragma: no cover (compiled)
     """Solve the n×n system S y = r in place by Gaussian elimination with partial pivoting;
     False when a pivot is exactly zero (singular)."""
@@ -191,7 +205,7 @@ def _solve4(S, r):  # pragma: no cover (compiled)
     return True
 
 
-@njit(cache=True, error_model="numpy")
+@_jit
 def step_kernel(out, case_out, r_b, r_g, c, omega, w_ref, scale, act, A, gp, dm, D, m, J, lam_i, lam_o,
                 fi, R, outer, dx, dg):  # pragma: no cover (compiled)
     """Exact Newton step of every case from its state (the outputs of :func:`state_kernel`).
@@ -383,7 +397,8 @@ def step_kernel(out, case_out, r_b, r_g, c, omega, w_ref, scale, act, A, gp, dm,
         if not _solve4(S, rhs):                    # a singular case: regularise it
             for ii in range(4):
                 S0[ii, ii] += 1e-6
-            _solve4(S0, r0)
+            if not _solve4(S0, r0):                # still singular: no step (NaN, rejected by the caller)
+                r0[:] = math.nan
             rhs[:] = r0
         for k in range(3):
             dg[b, k] = rhs[k]
@@ -395,7 +410,7 @@ def step_kernel(out, case_out, r_b, r_g, c, omega, w_ref, scale, act, A, gp, dm,
                 dx[b, j, i2] = -t
 
 
-@njit(cache=True, error_model="numpy")
+@_jit
 def place_kernel(x1, x2, a1, a2, f1, f2, Ki, Ko, mu, tol, ci0, co0, cap, maxit, halvings):  # pragma: no cover
     """Per-ball Newton minimisation of the potential energy of :func:`thermobear.loads_highspeed._place`
     (same steps, step cap, closing limit and Armijo line search), ball by ball.  ``Ki``, ``Ko``
@@ -454,7 +469,15 @@ def place_kernel(x1, x2, a1, a2, f1, f2, Ki, Ko, mu, tol, ci0, co0, cap, maxit, 
         x1[k], x2[k] = X1, X2
 
 
-@njit(cache=True, error_model="numpy")
+@_jit
+def _nanmax(a, b):  # pragma: no cover (compiled)
+    """max(a, b) that keeps a NaN (as numpy's max does; Python's max drops one in its second argument)."""
+    if a != a or b != b:
+        return math.nan
+    return a if a >= b else b
+
+
+@_jit
 def _static_rj(y0, y1, y2, c, A, sa0, ca0, Kn, F_app, s, res, J):  # pragma: no cover (compiled)
     """Residual res (3,) and Jacobian J (3, 3) of the low-speed equilibrium at scaled unknowns
     (y0, y1, y2) (:func:`thermobear.loads.load_distribution`'s ``residual_and_jac`` for one case)."""
@@ -492,7 +515,7 @@ def _static_rj(y0, y1, y2, c, A, sa0, ca0, Kn, F_app, s, res, J):  # pragma: no 
     J[2, 0], J[2, 1], J[2, 2] = s2 * k, s4 * k, s5 * k
 
 
-@njit(cache=True, error_model="numpy")
+@_jit
 def static_kernel(y, F_app, scale, zero, na, c, A, sa0, ca0, Kn, tol, maxiter, halvings, norm_out,
                   it_out):  # pragma: no cover (compiled)
     """Damped Newton of the low-speed load distribution, case by case (the iteration of
@@ -516,7 +539,7 @@ def static_kernel(y, F_app, scale, zero, na, c, A, sa0, ca0, Kn, tol, maxiter, h
         _static_rj(y[b, 0], y[b, 1], y[b, 2], c, A, sa0, ca0, Kn, Fb, s, res, J)
         norm = 0.0
         for i in range(na):
-            norm = max(norm, abs(res[i]))
+            norm = _nanmax(norm, abs(res[i]))
         floor = False
         it = 0
         for step in range(1, maxiter + 1):
@@ -534,7 +557,9 @@ def static_kernel(y, F_app, scale, zero, na, c, A, sa0, ca0, Kn, tol, maxiter, h
             if not abs(det) > 1e-300:          # no ball in contact: push towards contact
                 for i in range(na):
                     M[i, i] += 1e-3
-            _solve4(M, dy)
+            if not _solve4(M, dy):             # singular even regularised: the case fails (NaN norm)
+                norm = math.nan
+                break
             lam = 1.0
             t0, t1, t2 = y[b, 0], y[b, 1], y[b, 2]
             for _h in range(halvings):
@@ -544,7 +569,7 @@ def static_kernel(y, F_app, scale, zero, na, c, A, sa0, ca0, Kn, tol, maxiter, h
                 _static_rj(t0, t1, t2, c, A, sa0, ca0, Kn, Fb, s, rt, Jt)
                 nt = 0.0
                 for i in range(na):
-                    nt = max(nt, abs(rt[i]))
+                    nt = _nanmax(nt, abs(rt[i]))
                 if nt < (1.0 - 1e-4 * lam) * norm:
                     break
                 lam = 0.5 * lam
@@ -556,14 +581,14 @@ def static_kernel(y, F_app, scale, zero, na, c, A, sa0, ca0, Kn, tol, maxiter, h
             _static_rj(t0, t1, t2, c, A, sa0, ca0, Kn, Fb, s, res, J)
             norm = 0.0
             for i in range(na):
-                norm = max(norm, abs(res[i]))
+                norm = _nanmax(norm, abs(res[i]))
             floor = floor or (norm <= 1e-9 and norm > 0.5 * prev)
         else:
             it = maxiter
         norm_out[b], it_out[b] = norm, it
 
 
-@njit(cache=True, error_model="numpy")
+@_jit
 def axial_angle_kernel(target, a0, c0, tol, maxit, out):  # pragma: no cover (compiled)
     """Contact angle under pure axial load, element by element: the bracketed Newton iteration of
     :func:`thermobear.loads.axial_contact_angle` on sin α (cos α0 / cos α − 1)^1.5 = target."""

@@ -51,8 +51,14 @@ def _kernels():
     """The compiled kernels (:mod:`thermobear._kernels`) when numba is installed and not turned off by
     ``THERMOBEAR_NUMBA=0``, else None; imported on first use (numba's import costs ≈ 0.3 s)."""
     if not _KERNELS:
-        from . import _kernels as k
-        _KERNELS.append(k if k.ENABLED else None)
+        try:
+            from . import _kernels as k
+        except Exception as exc:        # numba installed but broken (e.g. a version clash): numpy path
+            import warnings
+            warnings.warn(f"thermobear: compiled kernels unavailable ({type(exc).__name__}: {exc}); "
+                          "using the numpy path", RuntimeWarning, stacklevel=2)
+            k = None
+        _KERNELS.append(k if k is not None and k.ENABLED else None)
     return _KERNELS[0]
 
 
@@ -443,7 +449,11 @@ def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, st
                 det_ok = np.abs(np.linalg.det(Jt)) > 1e-300
                 Jt[~det_ok] += np.eye(na)[None] * 1e-3
                 dy = np.zeros((int(todo.sum()), 3))
-                dy[:, active] = -np.linalg.solve(Jt, res[todo][:, active][..., None])[..., 0]
+                try:
+                    dy[:, active] = -np.linalg.solve(Jt, res[todo][:, active][..., None])[..., 0]
+                except np.linalg.LinAlgError:       # singular even regularised: those cases fail below
+                    norm[todo] = np.nan
+                    break
 
                 def trial_norm(trial):
                     r_t, _ = residual_and_jac_partial(trial, todo, brg, stiffness, c_psi, A, R, F_app, scale)
@@ -457,8 +467,9 @@ def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, st
         else:
             it = maxiter
     extra_it = 0                        # Newton iterations spent by continuation (see Notes)
-    if _cont and brg.kind != "thrust" and np.any(norm > max(tol, 1e-9)):
-        for k in np.flatnonzero(norm > max(tol, 1e-9)):
+    thr = max(tol, 1e-9)                # (a NaN residual — a singular step, an overflow — counts as failed)
+    if _cont and brg.kind != "thrust" and np.any(~(norm <= thr)):
+        for k in np.flatnonzero(~(norm <= thr)):
             if brg.kind == "angular_contact":       # balls over the low shoulder: no equilibrium (raised below)
                 A1, _, _, _, _, _, Q, _ = _state(y[k:k + 1], brg, stiffness, c_psi, A, R)
                 if np.any((Q > 0) & (A1 <= 0)):
@@ -467,8 +478,8 @@ def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, st
             if got is not None:
                 y[k], norm[k], n_it = got
                 extra_it = max(extra_it, n_it)
-    if np.any(norm > max(tol, 1e-9)):
-        k = int(np.argmax(norm))
+    if np.any(~(norm <= thr)):
+        k = int(np.argmax(np.where(norm <= thr, -1.0, np.nan_to_num(norm, nan=np.inf))))
         if brg.kind == "angular_contact":
             A1, A2, Aj, s_, sa, ca, Q, dQ = _state(y[k:k + 1], brg, stiffness, c_psi, A, R)
             if np.any((Q > 0) & (A1 <= 0)):
@@ -479,7 +490,7 @@ def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, st
         raise NoConvergence(
             f"load distribution did not reach equilibrium for Fa = {Fa_b[k]:g} N, Fr = {Fr_b[k]:g} N, "
             f"M = {Mv[k]:g} N m: relative residual {norm[k]:.3g} after {it} Newton iterations",
-            iterations=it, residual=float(norm.max()), last=y[k] * np.array([A, A, A / R]))
+            iterations=it, residual=float(norm[k]), last=y[k] * np.array([A, A, A / R]))
 
     A1, A2, Aj, s, sa, ca, Q, dQ = _state(y, brg, stiffness, c_psi, A, R)
     Q = np.where(zero[:, None], 0.0, Q)

@@ -96,8 +96,8 @@ defined at n = 0; its contact force is reported as 0 (the force it could carry,
 
 Cost: with numba installed (the ``fast`` extra) the per-ball state, the Newton step and the per-ball
 start of dry cases run as compiled loops (:mod:`thermobear._kernels`, the same equations; a
-seed 004 case ≈ 1.1 ms instead of ≈ 4 ms); without it, and for the film law or per-ball
-stiffness, the numpy methods here run (a load case is then a few hundred numpy calls on
+seed 004 case ≈ 1 ms instead of ≈ 4 ms); without it, and for the film law or per-ball
+stiffness (whose per-ball start is still compiled), the numpy methods here run (a load case is then a few hundred numpy calls on
 Z-element arrays).
 
 Film contact law (optional, ``film=dict(eta=..., alpha_p=...)``; prototype, as
@@ -157,8 +157,8 @@ def _kernels():
     """The compiled kernels (:mod:`thermobear._kernels`) when numba is installed and not turned off
     by ``THERMOBEAR_NUMBA=0``, else None; imported on first use (numba's import costs ≈ 0.3 s)."""
     if not _HK:
-        from . import _kernels
-        _HK.append(_kernels if _kernels.ENABLED else None)
+        from .loads import _kernels as loader      # one import, one warning if numba is broken
+        _HK.append(loader())
     return _HK[0]
 
 
@@ -320,6 +320,36 @@ class _State:
     def put(self, m, other):
         for k, v in self.__dict__.items():
             v[m] = other.__dict__[k]
+
+
+class _BlkState(_State):
+    """A Newton iterate from the compiled kernel: four arrays — per-ball fields (nb, fields, Z), per-case
+    Σ Q_i, ω_cage, F_c (nb, 3), r_b, r_g — and every field of :class:`_State` as a view into them, made
+    on access (:meth:`take` and :meth:`put` move the four arrays)."""
+
+    _CASE = {"qs": 0, "W": 1, "Fc": 2}
+
+    def __getattr__(self, name):                # called only for names not in __dict__
+        d = self.__dict__
+        if "_blk" in d:
+            k = _BALL_INDEX().get(name)
+            if k is not None:
+                return d["_blk"][:, k]
+            k = self._CASE.get(name)
+            if k is not None:
+                return d["_cblk"][:, k:k + 1]
+        raise AttributeError(name)
+
+    def take(self, m):
+        new = _BlkState.__new__(_BlkState)
+        new.__dict__ = {k: v[m] for k, v in self.__dict__.items()}
+        return new
+
+
+@lru_cache(maxsize=1)
+def _BALL_INDEX():
+    """Per-ball field name → index in the compiled state block (thermobear._kernels.BALL_FIELDS)."""
+    return {name: k for k, name in enumerate(_kernels().BALL_FIELDS)}
 
 
 class _Problem:
@@ -508,10 +538,8 @@ class _Problem:
                          self.Ki0, self.Ko0, self.k_eps, self.gp, self.dm, self.D, self.m, self.J,
                          float(self.lam_i), float(self.lam_o), self.fi, self.R, self.kin_control == "outer",
                          blk, cblk, r_b, r_g)
-        st = _State.__new__(_State)
-        d = {name: blk[:, k] for k, name in enumerate(_hk.BALL_FIELDS)}
-        d.update(qs=cblk[:, 0:1], W=cblk[:, 1:2], Fc=cblk[:, 2:3], r_b=r_b, r_g=r_g, _blk=blk, _cblk=cblk)
-        st.__dict__.update(d)
+        st = _BlkState.__new__(_BlkState)
+        st.__dict__.update(_blk=blk, _cblk=cblk, r_b=r_b, r_g=r_g)
         return st
 
     def _film_force(self, p, q, X1, X2, dl_i, dl_o, Ki, Ko):

@@ -1022,7 +1022,7 @@ def steady_state(scene: Scene, *, tol_K: float = 1e-6, contacts: ContactSet | No
             nw = _newton_coupled(scene, models, net, roles, cs2, tol_K, kw["T_limit_K"], T0_K=T0_K)
         if nw is not None:
             x, state["T"], its, resid, gain, hist = nw
-            res = CoupledResult(T_K=x, P_W=hist[-1]["P_W"], iterations=its, evaluations=its * 4,
+            res = CoupledResult(T_K=x, P_W=hist[-1]["P_W"], iterations=its, evaluations=its * 2,
                                 residual_K=resid, energy_residual_rel=float("nan"), loop_gain=gain,
                                 history=hist, method="newton")
         else:

@@ -265,6 +265,8 @@ class _Plan:
         for k, m, d in dG:
             e = els[k]
             c = fpos[m]
+            if c < 0:                           # a derivative by a fixed node: not in this block
+                continue
             if e.advective:
                 r = fpos[e.j]
                 if r >= 0:
