@@ -85,3 +85,28 @@ def test_unknown_catalog_name_lists_known():
     with pytest.raises(InputError) as e:
         bearing("6299X")
     assert "6299X" in str(e.value) and "7210" in str(e.value)
+
+
+def test_an_edited_material_file_is_read_again(tmp_path, monkeypatch):
+    """material() serves its cache only while the file is unchanged (a user editing materials/solids
+    in a session gets the new values, as read_toml does for every other data file)."""
+    import shutil
+    import time
+
+    from thermobear import _data
+    from thermobear import materials as mats
+    root = tmp_path / "materials"
+    shutil.copytree(_data.data_dir("materials") / "solids", root / "solids")
+    monkeypatch.setattr(_data, "data_dir", lambda kind: root if kind == "materials" else None)
+    monkeypatch.setattr(mats, "data_dir", lambda kind: root)
+    mats._solids_dir.cache_clear()
+    try:
+        E0 = mats.material("aisi-52100").E
+        f = root / "solids" / "aisi-52100.toml"
+        text = f.read_text()
+        key = next(ln for ln in text.splitlines() if ln.strip().startswith("E_Pa"))
+        time.sleep(0.01)
+        f.write_text(text.replace(key, "E_Pa = 1.5e11"))
+        assert mats.material("aisi-52100").E == 1.5e11 != E0
+    finally:
+        mats._solids_dir.cache_clear()

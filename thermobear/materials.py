@@ -78,22 +78,28 @@ def _solids_dir() -> str:
 
 
 @lru_cache(maxsize=64)
-def _material(name: str) -> Material:
+def _material(name: str, stamp) -> Material:
     d = lookup("materials", "solids", name, "material")
     return Material(E=float(d["E_Pa"]), nu=float(d["nu"]), rho=float(d["rho_kg_m3"]),
                     k=d.get("k_W_mK"), cp=d.get("cp_J_kgK"), name=d.get("name", name))
 
 
 def material(name: str) -> Material:
-    """Bundled material by name (``aisi-52100``, ``m50``, ``si3n4``); read once per name
-    (:class:`Material` is immutable, so the same object is returned every time).
+    """Bundled material by name (``aisi-52100``, ``m50``, ``si3n4``); read again only when its file
+    changed (:class:`Material` is immutable, so until then the same object is returned).
 
     >>> material("aisi-52100").E
     210000000000.0
     """
     if isinstance(name, Material):
         return name
-    return _material(str(name))
+    name = str(name)
+    try:
+        st = os.stat(os.path.join(_solids_dir(), f"{name}.toml"))
+        stamp = (st.st_mtime_ns, st.st_size)
+    except OSError:
+        stamp = None                    # unknown name: lookup says which names exist
+    return _material(name, stamp)
 
 
 def reduced_modulus(m1: Material, m2: Material) -> float:
