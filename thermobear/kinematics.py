@@ -123,8 +123,7 @@ def ball_kinematics(omega_i, omega_o, alpha_i, alpha_o, D, dm, control: str = "o
     >>> round(float(abs(k.omega_R)), 2), round(float(k.omega_c), 2), round(float(abs(k.spin_i)), 2)
     (23.75, 5.24, 5.24)
     """
-    if control not in CONTROLS:
-        raise InputError("control", control, f"must be one of {', '.join(CONTROLS)}")
+    _check_control(control)
     wi, wo = np.asarray(omega_i, dtype=float), np.asarray(omega_o, dtype=float)
     ai, ao = np.asarray(alpha_i, dtype=float), np.asarray(alpha_o, dtype=float)
     omega_c, omega_R, beta, co, ci = _cage_spin(wi, wo, ai, ao, D, dm, control, beta)
@@ -215,8 +214,7 @@ def caged_ball_kinematics(omega_i, omega_o, alpha_i, alpha_o, D, dm, omega_cage,
     >>> bool(np.isclose(k.omega_R, k0.omega_R) and np.isclose(k.u_i, k0.u_i))
     True
     """
-    if control not in CONTROLS:
-        raise InputError("control", control, f"must be one of {', '.join(CONTROLS)}")
+    _check_control(control)
     wi, wo = np.asarray(omega_i, float), np.asarray(omega_o, float)
     ai, ao = np.asarray(alpha_i, float), np.asarray(alpha_o, float)
     w_free, wR_free, beta, co, ci = _cage_spin(wi, wo, ai, ao, D, dm, control)
@@ -228,6 +226,12 @@ def caged_ball_kinematics(omega_i, omega_o, alpha_i, alpha_o, D, dm, omega_cage,
     num = qo * eo * co * (wo - wc) - qi * ei * ci * (wi - wc)
     omega_R = np.where(den > 0, num / np.where(den > 0, den, 1.0), wR_free)
     return _speeds(wi, wo, ai, ao, beta, wc, omega_R, co, ci)
+
+
+def _check_control(control):
+    """Raise InputError unless ``control`` names a raceway-control hypothesis (:data:`CONTROLS`)."""
+    if control not in CONTROLS:
+        raise InputError("control", control, f"must be one of {', '.join(CONTROLS)}")
 
 
 def _cage_spin(wi, wo, ai, ao, D, dm, control, beta=None):

@@ -144,23 +144,11 @@ import numpy as np
 
 from .errors import InputError, NoConvergence, NoEquilibrium
 from .geometry import BallBearing
-from .loads import STIFFNESS_MODES, LoadDistribution, load_distribution
+from .loads import STIFFNESS_MODES, LoadDistribution, _kernels, load_distribution
 from .loads_film import _carry, _FilmAt, _NVMFixed, _invert
 
 __all__ = ["HighSpeedExtras", "FilmInputs", "load_distribution_high_speed", "load_distribution_high_speed_full",
            "HS_CONTROLS"]
-
-_HK = []
-
-
-def _kernels():
-    """The compiled kernels (:mod:`thermobear._kernels`) when numba is installed and not turned off
-    by ``THERMOBEAR_NUMBA=0``, else None; imported on first use (numba's import costs ≈ 0.3 s)."""
-    if not _HK:
-        from .loads import _kernels as loader      # one import, one warning if numba is broken
-        _HK.append(loader())
-    return _HK[0]
-
 
 #: raceway-control hypotheses: name -> (λ_i, λ_o, control passed to ball_kinematics for β)
 HS_CONTROLS = {"outer": (0.0, 2.0, "outer"), "inner": (2.0, 0.0, "inner"), "both": (1.0, 1.0, "outer")}
@@ -332,7 +320,7 @@ class _BlkState(_State):
     def __getattr__(self, name):                # called only for names not in __dict__
         d = self.__dict__
         if "_blk" in d:
-            k = _BALL_INDEX().get(name)
+            k = _ball_index().get(name)
             if k is not None:
                 return d["_blk"][:, k]
             k = self._CASE.get(name)
@@ -347,7 +335,7 @@ class _BlkState(_State):
 
 
 @lru_cache(maxsize=1)
-def _BALL_INDEX():
+def _ball_index():
     """Per-ball field name → index in the compiled state block (thermobear._kernels.BALL_FIELDS)."""
     return {name: k for k, name in enumerate(_kernels().BALL_FIELDS)}
 

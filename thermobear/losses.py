@@ -44,7 +44,7 @@ from .friction.rolling import rolling_force
 from .friction.sliding import deformed_radius, hysteresis_moment
 from .geometry import BallBearing
 from .hertz import hertz
-from .kinematics import CONTROLS, _cage_spin, caged_ball_kinematics, common_cage_speed
+from .kinematics import _cage_spin, _check_control, caged_ball_kinematics, common_cage_speed
 from .loads import LoadDistribution, load_distribution
 
 __all__ = ["LossResult", "ContactSet", "bearing_losses", "prepare_contacts", "evaluate_losses",
@@ -200,8 +200,7 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
     # one rigid cage: every ball orbits at the load-weighted mean of the balls' no-slip orbital
     # speeds (they differ when the contact angles do: combined and high-speed loads); a ball
     # outside the load zone follows the cage and rolls on the race that carries it
-    if control not in CONTROLS:                 # (the check of ball_kinematics)
-        raise InputError("control", control, f"must be one of {', '.join(CONTROLS)}")
+    _check_control(control)
     # the balls' free orbital speeds: ball_kinematics(...).omega_c, without the rest of its output
     free_wc = _cage_spin(np.asarray(w_i[ex], float), np.asarray(w_o[ex], float), np.asarray(ai, float),
                          np.asarray(ao, float), brg.D, brg.dm, control)[0]

@@ -77,16 +77,13 @@ def _solids_dir() -> str:
     return str(data_dir("materials") / "solids")
 
 
-@lru_cache(maxsize=64)
-def _material(name: str, stamp) -> Material:
-    d = lookup("materials", "solids", name, "material")
-    return Material(E=float(d["E_Pa"]), nu=float(d["nu"]), rho=float(d["rho_kg_m3"]),
-                    k=d.get("k_W_mK"), cp=d.get("cp_J_kgK"), name=d.get("name", name))
+_MATERIALS: dict = {}      # name → (the file's table as read_toml gave it, the Material built from it)
 
 
 def material(name: str) -> Material:
-    """Bundled material by name (``aisi-52100``, ``m50``, ``si3n4``); read again only when its file
-    changed (:class:`Material` is immutable, so until then the same object is returned).
+    """Bundled material by name (``aisi-52100``, ``m50``, ``si3n4``); built again only when its file
+    changed (read through :func:`thermobear._data.read_toml`, which re-reads a changed file;
+    :class:`Material` is immutable, so until then the same object is returned).
 
     >>> material("aisi-52100").E
     210000000000.0
@@ -94,12 +91,12 @@ def material(name: str) -> Material:
     if isinstance(name, Material):
         return name
     name = str(name)
-    try:
-        st = os.stat(os.path.join(_solids_dir(), f"{name}.toml"))
-        stamp = (st.st_mtime_ns, st.st_size)
-    except OSError:
-        stamp = None                    # unknown name: lookup says which names exist
-    return _material(name, stamp)
+    d = lookup("materials", "solids", name, "material")
+    hit = _MATERIALS.get(name)
+    if hit is None or hit[0] is not d:
+        hit = _MATERIALS[name] = (d, Material(E=float(d["E_Pa"]), nu=float(d["nu"]), rho=float(d["rho_kg_m3"]),
+                                              k=d.get("k_W_mK"), cp=d.get("cp_J_kgK"), name=d.get("name", name)))
+    return hit[1]
 
 
 def reduced_modulus(m1: Material, m2: Material) -> float:
