@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 from CoolProp.CoolProp import PropsSI
 
-from thermobear.air import air_properties
+from thermobear.lubrication.air import air_properties
 from thermobear.errors import InputError
 
 
@@ -26,10 +26,10 @@ def test_range():
 
 
 def test_shipped_table_is_coolprop_at_every_node():
-    """materials/air_1atm.toml (written by thermobear.air.write_table from CoolProp 8.0.0) against the installed
+    """materials/air_1atm.toml (written by thermobear.lubrication.air.write_table from CoolProp 8.0.0) against the installed
     CoolProp: equal with 8.0.0; another release may move the air model slightly, so 1e-4 — beyond that the
     table is stale and must be regenerated."""
-    from thermobear._data import data_dir, read_toml
+    from thermobear.files import data_dir, read_toml
     d = read_toml(str(data_dir("materials") / "air_1atm.toml"))
     T = np.asarray(d["T_K"], float)
     assert T[0] == 200.0 and T[-1] == 600.0 and np.all(np.diff(T) == 1.0) and d["p_Pa"] == 101325.0
@@ -50,8 +50,8 @@ def test_a_steady_state_does_not_import_coolprop():
 
 @pytest.mark.parametrize("broken", [{"T_K": [200.0]}, "short", "nan"])
 def test_a_broken_table_is_a_named_input_error(monkeypatch, broken):
-    import thermobear._data as data
-    import thermobear.air as air
+    import thermobear.files as data
+    import thermobear.lubrication.air as air
     good = data.read_toml(str(data.data_dir("materials") / "air_1atm.toml"))
     if broken == "short":
         bad = {**good, "k_W_mK": good["k_W_mK"][:-1]}

@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from thermobear.cli import main
+from thermobear.app.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]
 EX = ROOT / "examples"
@@ -96,7 +96,7 @@ def test_list_and_loads(capsys):
 
 
 def test_solver_error_exit_3(capsys, monkeypatch):
-    import thermobear.solver as solver
+    import thermobear.coupled.solver as solver
     from thermobear.errors import ThermalRunaway
 
     def boom(scene):
@@ -108,7 +108,7 @@ def test_solver_error_exit_3(capsys, monkeypatch):
 
 def test_console_script_bad_input_no_traceback(tmp_path):
     exe = shutil.which("thermobear", path=str(Path(sys.executable).parent))
-    cmd = [exe] if exe else [sys.executable, "-m", "thermobear.cli"]
+    cmd = [exe] if exe else [sys.executable, "-m", "thermobear.app.cli"]
     r = subprocess.run(cmd + ["run", str(bad_scene(tmp_path))], capture_output=True, text=True, timeout=120)
     assert r.returncode == 2
     assert "Traceback" not in r.stderr
@@ -162,7 +162,7 @@ def test_transient_refuses_prescribed_temperature(capsys):
 
 # ------------------------------------------------------------------ sweep
 def test_sweep_csv(capsys, tmp_path):
-    pytest.importorskip("thermobear.sweep")          # helper G's engine (issue 6)
+    pytest.importorskip("thermobear.app.sweep")          # helper G's engine (issue 6)
     out_csv = tmp_path / "sw.csv"
     code, _, err = run(capsys, "sweep", SEED000, "--n-rpm", "100:300:3", "--T-C", "23.5,40", "--csv", out_csv,
                        "--processes", 1)

@@ -13,7 +13,7 @@ from scipy.special import lambertw
 sys.path.insert(0, str(Path(__file__).parent))
 from test_thermal import StubOil, oil_jet_context  # noqa: E402
 
-from thermobear.coupling import loop_gain, solve_coupled, solve_network_coupled  # noqa: E402
+from thermobear.coupled.fixedpoint import loop_gain, solve_coupled, solve_network_coupled  # noqa: E402
 from thermobear.errors import InputError, NoConvergence, ThermalRunaway  # noqa: E402
 from thermobear.thermal import load_network, solve_steady, split_losses  # noqa: E402
 

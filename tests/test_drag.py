@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from thermobear.errors import ExtrapolationWarning, InputError
-from thermobear.friction.drag import (air_properties, drag_coefficient_sphere, drag_loss, drag_power_pouly,
+from thermobear.losses.drag import (air_properties, drag_coefficient_sphere, drag_loss, drag_power_pouly,
                                       mixture_density, mixture_viscosity, oil_volume_fraction_parker)
 
 # seed 004: 7210, Z 15, dm 70 mm, 40°, D 12.7 mm (estimated, bearings.toml), 10 L/h

@@ -15,7 +15,7 @@ import pytest
 
 import thermobear as tb
 from thermobear.errors import ExtrapolationWarning, InputError
-from thermobear.solver import _network_spec_shared, _setup_thermal, choose_models, network_context
+from thermobear.coupled.solver import _network_spec_shared, _setup_thermal, choose_models, network_context
 from thermobear.thermal import load_network
 from thermobear.thermal.network import _leaves
 
@@ -136,7 +136,7 @@ def test_operating_point_values_are_evaluated_per_build():
 def test_steady_point_unchanged_by_shared_values():
     # a point solved after another point (bearing values shared) equals the same point solved with
     # nothing shared
-    from thermobear import solver
+    from thermobear.coupled import solver
     from thermobear.thermal import network
     s = _scene(n_rpm=3200.32)
     solver.steady_state(_scene(n_rpm=5000.0))

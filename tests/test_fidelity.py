@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import thermobear as tb
-from thermobear.solver import solve
+from thermobear.coupled.solver import solve
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "validation"))
 fidelity = pytest.importorskip("fidelity")
@@ -69,7 +69,7 @@ def test_level1_differs_from_level2_under_combined_load(s004):
 
 
 def test_level0_is_skf_friction(s002):
-    from thermobear.friction.skf import skf_friction
+    from thermobear.losses.skf import skf_friction
     out = fidelity.level0(s002, [1000.0], [49.8])
     nu = float(s002.lubricant.nu(49.8))
     ref = skf_friction(s002.bearing, nu, 1000.0, 7000.0, 0.0, lubrication="grease", mu_bl=0.15, mu_EHL=0.05)

@@ -11,11 +11,11 @@ import numpy as np
 import pytest
 
 from thermobear.errors import InputError
-from thermobear.film import (composite_roughness, film_thickness, film_thickness_nvm,
+from thermobear.lubrication.film import (composite_roughness, film_thickness, film_thickness_nvm,
                              hamrock_dowson_groups, lubrication_regime, moes_map_boundaries,
                              moes_N, moes_parameters, moes_regime, nvm_asymptotes, nvm_H,
                              specific_film_thickness)
-from thermobear.lubricant import lubricant
+from thermobear.lubrication.lubricant import lubricant
 
 # 209 deep groove example (PHYSICS.md §1, §5.1): Q_max 4527 N, u_e 6.25 m/s
 E209 = 228e9

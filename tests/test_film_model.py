@@ -1,6 +1,6 @@
 """The film load model as a scene option (``[models] load_model = "film"``): selection (high-speed form
-where the dry model would use it, low-speed form on request), consistency with thermobear.loads_film and
-thermobear.loads_highspeed(film=...), the steady-state fixed point on the film temperature, loud refusals."""
+where the dry model would use it, low-speed form on request), consistency with thermobear.loads.film and
+thermobear.loads.highspeed(film=...), the steady-state fixed point on the film temperature, loud refusals."""
 from __future__ import annotations
 
 import warnings
@@ -11,10 +11,10 @@ import pytest
 
 import thermobear as tb
 from thermobear.errors import InputError
-from thermobear.kinematics import entrainment_speed
-from thermobear.loads_film import film_load_distribution
-from thermobear.loads_highspeed import load_distribution_high_speed
-from thermobear.solver import choose_models, scene_contacts, scene_losses, steady_state
+from thermobear.contact.kinematics import entrainment_speed
+from thermobear.loads.film import film_load_distribution
+from thermobear.loads.highspeed import load_distribution_high_speed
+from thermobear.coupled.solver import choose_models, scene_contacts, scene_losses, steady_state
 
 ROOT = Path(__file__).resolve().parents[1]
 FILM = {"load_model": "film"}

@@ -9,10 +9,10 @@ import numpy as np
 import pytest
 
 import thermobear as tb
-from thermobear.cli import main
+from thermobear.app.cli import main
 from thermobear.errors import InputError
-from thermobear.scene import scene_from_dict
-from thermobear.solver import choose_models, steady_state
+from thermobear.scene.scene import scene_from_dict
+from thermobear.coupled.solver import choose_models, steady_state
 
 ROOT = Path(__file__).resolve().parents[1]
 SEED004 = ROOT / "examples" / "seed004_oil_jet_7210.toml"
@@ -154,7 +154,7 @@ def test_shaft_path_discretisation_is_converged_and_conserves_conductance(scene,
     import dataclasses
     import sys
 
-    from thermobear._data import data_dir
+    from thermobear.files import data_dir
     sys.path.insert(0, str(ROOT / "validation"))
     from seed004_trends import shaft_variant              # the report's own variants (validation/)
     text = (data_dir("networks") / "oil_jet_ball_bearing.toml").read_text(encoding="utf-8")

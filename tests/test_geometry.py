@@ -4,7 +4,7 @@ import pytest
 
 import thermobear as tb
 from thermobear.errors import InputError
-from thermobear.geometry import BallBearing, bearing, bearing_names
+from thermobear.contact.geometry import BallBearing, bearing, bearing_names
 
 STEEL = tb.Material(E=2.1e11, nu=0.3, rho=7850.0)
 
@@ -93,8 +93,8 @@ def test_an_edited_material_file_is_read_again(tmp_path, monkeypatch):
     import shutil
     import time
 
-    from thermobear import _data
-    from thermobear import materials as mats
+    from thermobear import files as _data
+    from thermobear.contact import materials as mats
     root = tmp_path / "materials"
     shutil.copytree(_data.data_dir("materials") / "solids", root / "solids")
     monkeypatch.setattr(_data, "data_dir", lambda kind: root if kind == "materials" else None)

@@ -5,7 +5,7 @@ import pytest
 from scipy.special import ellipe, ellipk
 
 from thermobear.errors import InputError
-from thermobear.hertz import ellipticity, hertz, series_stiffness
+from thermobear.contact.hertz import ellipticity, hertz, series_stiffness
 
 
 def test_circular_contact_is_classical_hertz():

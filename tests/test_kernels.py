@@ -1,12 +1,12 @@
-"""The compiled kernels of the high-speed ball equilibrium (thermobear._kernels) against the numpy
+"""The compiled kernels of the high-speed ball equilibrium (thermobear.loads._kernels) against the numpy
 reference methods they transcribe: every state field, the Newton step, the per-ball start, and whole
 solutions.  Skipped without numba (or with THERMOBEAR_NUMBA=0), where only the numpy path runs."""
 import numpy as np
 import pytest
 
-from thermobear import _kernels as hk
-from thermobear import loads_highspeed as hs
-from thermobear.geometry import bearing
+from thermobear.loads import _kernels as hk
+from thermobear.loads import highspeed as hs
+from thermobear.contact.geometry import bearing
 
 
 compiled = pytest.mark.skipif(not hk.ENABLED, reason="numba not installed (or THERMOBEAR_NUMBA=0)")
@@ -138,7 +138,7 @@ def test_switch_off_by_environment():
     import os
     import subprocess
     import sys
-    out = subprocess.run([sys.executable, "-c", "from thermobear import loads_highspeed as h; print(h._kernels())"],
+    out = subprocess.run([sys.executable, "-c", "from thermobear.loads import highspeed as h; print(h._kernels())"],
                          env={**os.environ, "THERMOBEAR_NUMBA": "0"}, capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "None"
 
@@ -147,8 +147,8 @@ def test_switch_off_by_environment():
 @pytest.mark.parametrize("name", ["7210", "6210", "iso-dgbb", "51107"])
 @pytest.mark.parametrize("moment", [False, True])
 def test_static_solutions_equal_numpy(name, moment, monkeypatch):
-    """The low-speed Newton (thermobear.loads) compiled and in numpy: same loads, angles, iterations."""
-    from thermobear import loads
+    """The low-speed Newton (thermobear.loads.static) compiled and in numpy: same loads, angles, iterations."""
+    from thermobear.loads import static as loads
     brg = bearing(name)
     rng = np.random.default_rng(5)
     n = 200
@@ -172,7 +172,7 @@ def test_static_solutions_equal_numpy(name, moment, monkeypatch):
 
 @compiled
 def test_axial_angle_equals_numpy(monkeypatch):
-    from thermobear import loads
+    from thermobear.loads import static as loads
     for name in ("7210", "6210", "iso-dgbb"):
         brg = bearing(name)
         F = np.concatenate([[0.0, 1e-6], np.geomspace(1e-3, 1e6, 200)])
@@ -193,8 +193,8 @@ def test_one_compiled_version_per_kernel():
     import warnings
 
     import thermobear as tb
-    from thermobear import loads
-    from thermobear.sweep import run_sweep
+    from thermobear.loads import static as loads
+    from thermobear.app.sweep import run_sweep
     brg = bearing("7210")
     ro = np.broadcast_to(np.array([500.0, 800.0]), (2,))                      # read-only inputs
     loads.load_distribution(brg, Fa=450.0, Fr=300.0)
@@ -218,7 +218,7 @@ def test_one_compiled_version_per_kernel():
 def test_absurd_loads_fail_loudly_on_both_paths(kernels, loads_, monkeypatch):
     """Overflowing or vanishing loads: an answer or a named SolverError, never NaN loads, never a raw
     LinAlgError (review finding: a NaN residual read as converged; numpy's singular solve leaked)."""
-    from thermobear import loads
+    from thermobear.loads import static as loads
     from thermobear.errors import SolverError
     if not kernels:
         monkeypatch.setattr(loads, "_kernels", lambda: None)

@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 from thermobear.errors import InputError
-from thermobear.kinematics import (ball_kinematics, cage_speed, caged_ball_kinematics, common_cage_speed,
+from thermobear.contact.kinematics import (ball_kinematics, cage_speed, caged_ball_kinematics, common_cage_speed,
                                    entrainment_speed)
 
 D, DM = 12.7e-3, 70e-3

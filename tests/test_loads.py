@@ -5,8 +5,8 @@ import pytest
 
 import thermobear as tb
 from thermobear.errors import InputError, NoEquilibrium
-from thermobear.geometry import BallBearing, bearing
-from thermobear.loads import axial_contact_angle, load_distribution
+from thermobear.contact.geometry import BallBearing, bearing
+from thermobear.loads.static import axial_contact_angle, load_distribution
 
 STEEL = tb.Material(E=2.1e11, nu=0.3, rho=7850.0)
 

@@ -1,13 +1,13 @@
-"""Load distribution with the lubricant film in the contact law (thermobear.loads_film)."""
+"""Load distribution with the lubricant film in the contact law (thermobear.loads.film)."""
 import numpy as np
 import pytest
 
 from thermobear.errors import InputError, NoEquilibrium
-from thermobear.film import film_thickness_nvm
-from thermobear.geometry import bearing
-from thermobear.kinematics import entrainment_speed
-from thermobear.loads import axial_contact_angle, load_distribution
-from thermobear.loads_film import film_contact_law, film_load_distribution
+from thermobear.lubrication.film import film_thickness_nvm
+from thermobear.contact.geometry import bearing
+from thermobear.contact.kinematics import entrainment_speed
+from thermobear.loads.static import axial_contact_angle, load_distribution
+from thermobear.loads.film import film_contact_law, film_load_distribution
 
 B7210 = bearing("7210")
 B6210 = bearing("6210")
@@ -168,9 +168,9 @@ def _ln_h_public(Q, Rx, Ry, u, eta, ap):
 
 def test_nvm_log_derivatives_match_central_differences():
     """∂ln h/∂ln Q, ∂ln h/∂ln R_x (R_y fixed: D moves too) and ∂ln h/∂ln u of the NVM central film, from
-    the chain rule through the blend (thermobear.loads_film._NVMFixed), against central differences of
+    the chain rule through the blend (thermobear.loads.film._NVMFixed), against central differences of
     the public film_thickness_nvm (step 1e-4 in the logs: truncation ~1e-8 × the third derivative)."""
-    from thermobear.loads_film import _NVMFixed
+    from thermobear.loads.film import _NVMFixed
     c = {k: np.array([g[k] for g in _GRID]) for k in _GRID[0]}
     nvm = _NVMFixed(c["Rx"], c["Ry"], c["u"], c["eta"], c["ap"], B7210.E_prime)
     ln_h, H_Q, shares = nvm.ln_h(c["Q"])
@@ -197,8 +197,8 @@ def test_nvm_log_derivatives_match_central_differences():
 def test_law_alpha_derivative_matches_central_difference(stiffness):
     """∂G/∂α at fixed Q of the low-speed law (films through R_x(α); K_n(α) with per_ball) and of the
     high-speed law (R_x and u through 1 ∓ γ'cos α), against central differences of the public functions."""
-    from thermobear.loads_film import _Film, _invert
-    from thermobear.loads_highspeed import _FilmLaw
+    from thermobear.loads.film import _Film, _invert
+    from thermobear.loads.highspeed import _FilmLaw
     al = np.linspace(0.3, 0.9, 7)[None, :]
     Q = np.array([[0.01, 0.3, 2.0, 15.0, 120.0, 800.0, 3000.0]])
     law = _Film(B7210, np.full((1, 7), U), np.full((1, 7), 1.3 * U), np.array([[0.0221]]), np.array([[2e-8]]),
@@ -242,7 +242,7 @@ def test_inversion_from_any_warm_start_and_out_of_range():
     """The per-ball inversion converges from warm starts 1e-250 N to 1e16 N to the same load (gaps and
     heavy contacts alike), and says so when no load in [e^-600, e^40] N gives the approach."""
     from thermobear.errors import NoConvergence
-    from thermobear.loads_film import _Film, _invert
+    from thermobear.loads.film import _Film, _invert
     law = _Film(B7210, np.full((1, 5), U), np.full((1, 5), U), np.array([[0.0221]]), np.array([[2e-8]]),
                 "nominal")
     al = np.full((1, 5), B7210.alpha0)

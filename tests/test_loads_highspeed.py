@@ -7,9 +7,9 @@ from scipy.optimize import fsolve
 
 import thermobear as tb
 from thermobear.errors import InputError, NoEquilibrium
-from thermobear.geometry import BallBearing, bearing
-from thermobear.loads import load_distribution
-from thermobear.loads_highspeed import load_distribution_high_speed, load_distribution_high_speed_full
+from thermobear.contact.geometry import BallBearing, bearing
+from thermobear.loads.static import load_distribution
+from thermobear.loads.highspeed import load_distribution_high_speed, load_distribution_high_speed_full
 
 from _highspeed_checks import assert_ball_centres
 from _newton_fd import assert_newton_matches_fd
@@ -248,7 +248,7 @@ def test_one_cage_speed_and_unloaded_balls_pressed_by_their_centrifugal_force():
     Fc = 0.5 * b.ball_mass * b.dm * ex.omega_c[free] ** 2
     np.testing.assert_allclose(ld.Q_o[free] * np.cos(ld.alpha_o[free]), Fc, rtol=0.02)
     # the cage speed is the load-weighted mean of the loaded balls' own speeds: between their extremes
-    from thermobear.kinematics import ball_kinematics
+    from thermobear.contact.kinematics import ball_kinematics
     own = ball_kinematics(4800 * np.pi / 30, 0.0, ld.alpha_i, ld.alpha_o, b.D, b.dm).omega_c
     assert own[~free].min() <= ex.omega_c[0] <= own[~free].max()
 
@@ -329,8 +329,8 @@ def test_out_of_zone_balls_wedged_with_loads_of_the_order_of_their_centrifugal_f
 @pytest.mark.parametrize("control", ["outer", "inner", "both"])
 def test_kinematics_agree_with_the_kinematics_module(control):
     # the solver evaluates β, the own orbital speeds, ω_R with sin/cos of the contact normals and
-    # analytic derivatives; thermobear.kinematics computes them from the angles
-    from thermobear.kinematics import ball_kinematics, caged_ball_kinematics, common_cage_speed
+    # analytic derivatives; thermobear.contact.kinematics computes them from the angles
+    from thermobear.contact.kinematics import ball_kinematics, caged_ball_kinematics, common_cage_speed
     b = bearing("7210")
     ld, ex = load_distribution_high_speed_full(b, Fa=450.0, Fr=540.0, n_rpm=6500.0, control=control)
     w = 6500.0 * np.pi / 30
@@ -350,7 +350,7 @@ def test_kinematics_agree_with_the_kinematics_module(control):
 def test_newton_direction_is_exact(control, Fr, n):
     # the analytic Jacobian (contacts, kinematics, the cage as a rank-one coupling) gives the same
     # Newton direction as central finite differences of the residual, at the start of the solve
-    import thermobear.loads_highspeed as lh
+    import thermobear.loads.highspeed as lh
     b = bearing("7210")
     seen = {}
     orig = lh._newton

@@ -1,4 +1,4 @@
-"""High-speed load distribution with the lubricant film in each contact law (thermobear.loads_highspeed,
+"""High-speed load distribution with the lubricant film in each contact law (thermobear.loads.highspeed,
 ``film=...``): the dry path unchanged, the dry limit, every contact loaded, ball and ring equilibrium and
 the film law recomputed independently, symmetry, the low-speed film law as n -> 0, the exact Newton
 direction, trends, batching and loud input errors."""
@@ -6,11 +6,11 @@ import numpy as np
 import pytest
 
 from thermobear.errors import InputError
-from thermobear.film import film_thickness_nvm
-from thermobear.geometry import bearing
-from thermobear.kinematics import ball_kinematics, caged_ball_kinematics, common_cage_speed
-from thermobear.loads_film import film_load_distribution
-from thermobear.loads_highspeed import FilmInputs, load_distribution_high_speed, load_distribution_high_speed_full
+from thermobear.lubrication.film import film_thickness_nvm
+from thermobear.contact.geometry import bearing
+from thermobear.contact.kinematics import ball_kinematics, caged_ball_kinematics, common_cage_speed
+from thermobear.loads.film import film_load_distribution
+from thermobear.loads.highspeed import FilmInputs, load_distribution_high_speed, load_distribution_high_speed_full
 
 from _highspeed_checks import assert_ball_centres
 from _newton_fd import assert_newton_matches_fd
@@ -166,7 +166,7 @@ def test_low_speed_limit_is_the_low_speed_film_law(Fr):
 def test_newton_direction_is_exact_with_the_film():
     # the analytic Jacobian with the film law (dQ/dδ, ∂Q/∂α through R_x and u) equals central finite
     # differences of the residual, the cage speed of the entrainment speeds frozen (as in the solver)
-    import thermobear.loads_highspeed as lh
+    import thermobear.loads.highspeed as lh
     seen = []
     orig = lh._newton
 
@@ -231,7 +231,7 @@ def test_warm_starts_and_refresh_skip_do_not_change_the_solution(Fr, n, monkeypa
     # the film stage's shortcuts — inversions warm-started from the frozen iterate carried to first order,
     # and the re-evaluation skipped while the cage-speed lag is small against the residual — only change
     # the path: without them the same equilibrium comes out (to the Newton tolerance)
-    import thermobear.loads_highspeed as lh
+    import thermobear.loads.highspeed as lh
     fast = load_distribution_high_speed_full(B, 450.0, Fr, n_rpm=n, film=OIL50)
     monkeypatch.setattr(lh, "_LAG_SKIP", 0.0)
     monkeypatch.setattr(lh, "_carry", lambda Q, GQ, dG: Q)

@@ -4,7 +4,7 @@ import pytest
 
 import thermobear as tb
 from thermobear.errors import InputError
-from thermobear.losses import BREAKDOWN_KEYS, bearing_losses
+from thermobear.losses.local import BREAKDOWN_KEYS, bearing_losses
 
 B7210 = tb.bearing("7210")
 OIL = tb.lubricant("seed004-mineral")
@@ -98,7 +98,7 @@ def test_one_cage_speed_for_all_balls():
     # a rigid cage: balls in and out of the load zone orbit at one speed, and the unloaded balls'
     # outer entrainment speed stays that of a ball rolling on the outer race (within the spread
     # of the contact angles), not the 1.7x that a no-slip solution with a gap's "contact angle" gives
-    from thermobear.losses import prepare_contacts
+    from thermobear.losses.local import prepare_contacts
     cs = prepare_contacts(B7210, Fa=450.0, Fr=750.0, n_rpm=4800.0)
     assert np.ptp(cs.omega_c) <= 1e-12 * np.max(cs.omega_c)
     r = losses(Fr=750.0)

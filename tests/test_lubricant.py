@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from thermobear.errors import ExtrapolationWarning, InputError, OutsideValidity
-from thermobear.lubricant import (Lubricant, cragoe_cp, cragoe_k_th, density_api, gold_alpha_p,
+from thermobear.lubrication.lubricant import (Lubricant, cragoe_cp, cragoe_k_th, density_api, gold_alpha_p,
                                   lubricant, lubricant_names, walther_nu_from_Z, walther_Z)
 
 SEED002 = ["seed002-mg1", "seed002-mg2", "seed002-eg1", "seed002-eg2", "seed002-pg1", "seed002-pg2"]
@@ -35,7 +35,7 @@ def test_all_bundled_lubricants_listed_and_load():
 @pytest.mark.parametrize("name", ["mol-liton-00", *SEED002, "seed004-mineral"])
 def test_d341_reproduces_nu40_nu100_exactly(name):
     import tomllib
-    from thermobear._data import data_dir
+    from thermobear.files import data_dir
     d = tomllib.loads((data_dir("materials") / "lubricants" / f"{name}.toml").read_text())
     lub = lubricant(name)
     assert lub.nu(40.0) == pytest.approx(d["nu40_cSt"], rel=1e-12)

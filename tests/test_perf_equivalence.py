@@ -15,7 +15,7 @@ import scipy.sparse as sp
 
 import thermobear as tb
 from thermobear.errors import ExtrapolationWarning
-from thermobear.solver import _setup_thermal, _sources, choose_models, steady_state, transient
+from thermobear.coupled.solver import _setup_thermal, _sources, choose_models, steady_state, transient
 from thermobear.thermal.network import evaluate
 from thermobear.thermal.solve import _plan, assemble
 
@@ -122,10 +122,10 @@ def test_cached_parse_keeps_contexts_apart():
 
 
 # --------------------------------------------------------------------------- fused loss kernel
-from thermobear.film import film_thickness, lubrication_regime                    # noqa: E402
-from thermobear.friction.rolling import rolling_force                              # noqa: E402
-from thermobear.friction.sliding import mixed_friction_ianus                       # noqa: E402
-from thermobear.losses import (_contact_powers, _repeat_contacts, _rolling_auto_smooth,  # noqa: E402
+from thermobear.lubrication.film import film_thickness, lubrication_regime                    # noqa: E402
+from thermobear.losses.rolling import rolling_force                              # noqa: E402
+from thermobear.losses.sliding import mixed_friction_ianus                       # noqa: E402
+from thermobear.losses.local import (_contact_powers, _repeat_contacts, _rolling_auto_smooth,  # noqa: E402
                                evaluate_losses, prepare_contacts)
 
 
@@ -224,7 +224,7 @@ def test_contact_powers_and_repeated_contacts_equal_the_full_path():
 
 # --------------------------------------------------------------------------- cached look-ups, fast paths
 def test_air_scalar_path_equals_the_spline():
-    from thermobear.air import _table, air_properties
+    from thermobear.lubrication.air import _table, air_properties
     T = np.concatenate([np.random.default_rng(5).uniform(200.0, 600.0, 300), [200.0, 273.15, 599.5, 600.0]])
     tab = _table()(T)
     for k, t in enumerate(T):
@@ -237,7 +237,7 @@ def test_air_scalar_path_equals_the_spline():
 
 
 def test_material_cache_returns_the_same_values_and_errors():
-    from thermobear.materials import material, material_names
+    from thermobear.contact.materials import material, material_names
     m = material("aisi-52100")
     assert material("aisi-52100") is m and m.E == 210e9
     assert "aisi-52100" in material_names()
@@ -290,7 +290,7 @@ def test_cached_drag_factors_still_warn_at_every_evaluation():
 # --------------------------------------------------------------------------- scalar fast paths, fused drag
 @pytest.mark.filterwarnings("ignore::thermobear.errors.ExtrapolationWarning")
 def test_fused_drag_equals_the_public_drag_loss():
-    from thermobear.friction.drag import drag_loss
+    from thermobear.losses.drag import drag_loss
     s, cs = _contacts_spread()                       # 0 … 12000 rpm (Parker's fraction clipped at 30 rpm)
     oil, T_oil = s.lubricant, np.array([25.0, 40.0, 60.0, 80.0, 110.0, 140.0])
     r = evaluate_losses(cs, oil, 60.0, T_oil_C=T_oil, oil_flow_m3_s=s.oil_flow)
@@ -325,7 +325,7 @@ def test_fused_kernel_smooth_surfaces_and_sums():
 
 def test_lubricant_scalar_path_equals_the_array_path():
     from thermobear.errors import OutsideValidity
-    from thermobear.lubricant import lubricant
+    from thermobear.lubrication.lubricant import lubricant
     T = [-20.0, -3.7, 0.0, 23.5, 40.0, 77.7, 100.0, 149.9, 150.0]
     for name in ("seed004-mineral", "seed002-mg1", "seed002-pg2", "mol-liton-00"):
         oil = lubricant(name)
@@ -389,7 +389,7 @@ def test_element_fast_paths_equal_the_public_functions():
 
 def test_ellipticity_start_table_gives_the_root_of_the_plain_iteration():
     import sys
-    H = sys.modules["thermobear.hertz"]
+    H = sys.modules["thermobear.contact.hertz"]
     r = np.concatenate([np.exp(np.linspace(0.0, np.log(1e5), 400)), [1.0, 1.00005, 1.0002, 5.0, 32.3]])
     k = H.ellipticity(r)
     k_hb = H._ellipticity_newton(r, 1.0339 * r**0.6360, 1e-13, 50)        # started at Hamrock–Brewe

@@ -6,9 +6,9 @@ import pytest
 
 import thermobear as tb
 from thermobear.errors import InputError
-from thermobear.hertz import hertz
-from thermobear.kinematics import ball_kinematics
-from thermobear.solver import choose_models, scene_losses
+from thermobear.contact.hertz import hertz
+from thermobear.contact.kinematics import ball_kinematics
+from thermobear.coupled.solver import choose_models, scene_losses
 
 S004 = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
 

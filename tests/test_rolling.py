@@ -12,7 +12,7 @@ import pytest
 from scipy.integrate import quad
 
 from thermobear.errors import InputError
-from thermobear.friction import rolling as R
+from thermobear.losses import rolling as R
 
 E = 2.3e11
 D = 7.938e-3
@@ -222,7 +222,7 @@ def test_auto_regime_jumps_are_quantified():
     Seed 000 contact, u = 0.0942 m/s, η 0.089, α_p 2.5e-8: F drops by ~47 % entering
     PVR (c_Bib ≈ 0.5 there) and by ~16 % entering EHL (values in the seed 001 report).
     """
-    film = pytest.importorskip("thermobear.film")
+    film = pytest.importorskip("thermobear.lubrication.film")
     q = np.logspace(-4, 4, 20001)
     reg = film.lubrication_regime(q, RX, RY, 0.0942, ETA, 2.5e-8, E).code
     f = R.rolling_force(q, RX, RY, 0.0942, ETA, E, model="auto", alpha_p=2.5e-8)

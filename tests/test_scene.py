@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 
 import thermobear as tb
 from thermobear.errors import InputError, ThermobearError
-from thermobear.scene import load_scene, scene_from_dict
+from thermobear.scene.scene import load_scene, scene_from_dict
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = sorted((ROOT / "examples").glob("*.toml")) + sorted((ROOT / "examples" / "logs").glob("*.toml"))

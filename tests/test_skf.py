@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from thermobear.errors import InputError
-from thermobear.friction.skf import (G_rr_G_sl, K_RS, alpha_F_deg, mu_EHL_from_torque, phi_bl, phi_ish,
+from thermobear.losses.skf import (G_rr_G_sl, K_RS, alpha_F_deg, mu_EHL_from_torque, phi_bl, phi_ish,
                                      phi_rs, skf_constants, skf_friction, skf_moment)
 
 DATA = Path(__file__).resolve().parents[1] / "validation" / "data" / "seed002_greases.csv"
@@ -148,7 +148,7 @@ def test_oil_bath_drag_term_scales_with_n_squared():
 
 # ------------------------------------------------------------------ public wrapper
 def test_skf_friction_with_catalog_bearing():
-    from thermobear.geometry import bearing
+    from thermobear.contact.geometry import bearing
     brg = bearing("51107")
     r = skf_friction(brg, 129.8, 1000, 7000, 0, R1=R1_FIT, S1=S1_FIT, mu_bl=0.09, mu_EHL=0.044)
     ref = _m(129.8, mu_bl=0.09, mu_EHL=0.044)

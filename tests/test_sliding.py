@@ -12,9 +12,9 @@ from scipy.integrate import dblquad, quad
 from scipy.special import ellipe
 
 from thermobear.errors import InputError
-from thermobear.friction import rolling as R
-from thermobear.friction import sliding as S
-from thermobear.hertz import hertz
+from thermobear.losses import rolling as R
+from thermobear.losses import sliding as S
+from thermobear.contact.hertz import hertz
 
 D, DM, F, Q, E = 7.938e-3, 0.036, 0.53, 1.42, 2.3e11
 RX, RY = D / 2, F * D / (2 * F - 1)

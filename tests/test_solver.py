@@ -5,7 +5,7 @@ import pytest
 
 import thermobear as tb
 from thermobear.errors import InputError, ThermalRunaway
-from thermobear.solver import choose_models, scene_losses, solve, steady_state, transient
+from thermobear.coupled.solver import choose_models, scene_losses, solve, steady_state, transient
 
 S004 = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
 S001 = tb.load_scene(tb.example_path("seed001_spin_down_3ball.toml"))
@@ -23,7 +23,7 @@ def test_seed001_rig_gets_a_smaller_model_than_seed004():
 
 
 def test_film_load_model_where_the_dry_solution_opens_contacts_in_a_flooded_bearing():
-    from thermobear.solver import open_contacts
+    from thermobear.coupled.solver import open_contacts
     loaded, lifted = S004.with_(Fr=150.0, n_rpm=4800.0), S004.with_(Fr=750.0, n_rpm=4800.0)
     assert open_contacts(loaded, True) == 0 and open_contacts(lifted, True) > 0
     assert choose_models(loaded)["load_model"][0] == "jones_harris"
@@ -32,7 +32,7 @@ def test_film_load_model_where_the_dry_solution_opens_contacts_in_a_flooded_bear
     # a greased bearing's unloaded contacts are starved: the dry law stays
     d = _scene_dict()
     d["lubricant"] = {k: v for k, v in d["lubricant"].items() if k not in ("flow_L_h", "T_in_C")} | {"supply": "grease"}
-    from thermobear.scene import scene_from_dict
+    from thermobear.scene.scene import scene_from_dict
     greased = scene_from_dict(d)
     g = choose_models(greased.with_(Fr=750.0, n_rpm=4800.0))
     assert g["load_model"][0] == "jones_harris" and "starved" in g["load_model"][1]
@@ -70,7 +70,7 @@ def test_prescribed_temperature_equals_bearing_losses():
 
 
 def test_high_speed_path_when_centrifugal_force_matters():
-    from thermobear.loads_highspeed import load_distribution_high_speed
+    from thermobear.loads.highspeed import load_distribution_high_speed
     sc = S004.with_(T_C=50.0, n_rpm=6500.0)
     m = choose_models(sc)
     assert m["high_speed"][0] == "yes" and "F_c/Q" in m["high_speed"][1]
@@ -187,7 +187,7 @@ def test_transient_reports_model_changes_along_the_schedule():
 
 def test_film_steady_state_is_the_fixed_point_of_its_film_temperature():
     import re
-    from thermobear.solver import scene_contacts
+    from thermobear.coupled.solver import scene_contacts
     s = S004.with_(n_rpm=4800.0, Fr=750.0)
     st = steady_state(s)
     assert choose_models(s)["load_model"][0] == "film"
@@ -204,7 +204,7 @@ def test_film_steady_state_is_the_fixed_point_of_its_film_temperature():
 
 def test_a_load_the_bearing_cannot_carry_is_reported_per_point_not_by_the_model_choice():
     from thermobear.errors import NoEquilibrium
-    from thermobear.sweep import run_sweep
+    from thermobear.app.sweep import run_sweep
     bad = S004.with_(Fa=0.0, Fr=300.0)              # an angular contact bearing with no axial load
     m = choose_models(bad)                           # choosing models does not solve the loads' failure
     assert m["load_model"][0] == "jones_harris" and "failed" in m["load_model"][1]
@@ -218,7 +218,7 @@ def test_thrust_bearing_without_axial_load_is_refused_not_a_singular_network():
     """A thrust bearing at Fa = 0 has no contact: NoEquilibrium naming the field (CLI exit 2), in solve,
     steady state and per sweep point — not P = 0 W, nor a 'singular conductance matrix'."""
     from thermobear.errors import NoEquilibrium
-    from thermobear.sweep import run_sweep
+    from thermobear.app.sweep import run_sweep
     for f in (lambda: solve(S002.with_(Fa=0.0, T_C=50.0)), lambda: steady_state(S002.with_(Fa=0.0))):
         with pytest.raises(NoEquilibrium, match="Fa_N"):
             f()
@@ -243,8 +243,8 @@ def test_schedule_change_reported_once_per_segment_with_film_pieces():
 def test_relative_network_path_follows_the_working_directory(tmp_path, monkeypatch):
     import dataclasses
     from pathlib import Path
-    from thermobear.solver import network_spec
-    from thermobear._data import data_dir
+    from thermobear.coupled.solver import network_spec
+    from thermobear.files import data_dir
     text = (data_dir("networks") / "one_node.toml").read_text(encoding="utf-8")
     for sub, tag in (("a", "variant-a"), ("b", "variant-b")):
         (tmp_path / sub).mkdir()

@@ -5,8 +5,8 @@ import numpy as np
 import pytest
 
 from thermobear.errors import InputError, NoConvergence
-from thermobear.friction import rolling as R
-from thermobear import spindown as SD
+from thermobear.losses import rolling as R
+from thermobear.app import spindown as SD
 
 J = 2.0e-4
 

@@ -6,8 +6,8 @@ import pytest
 
 import thermobear as tb
 from thermobear.errors import InputError
-from thermobear.solver import solve, steady_state
-from thermobear.sweep import run_sweep, sweep_points
+from thermobear.coupled.solver import solve, steady_state
+from thermobear.app.sweep import run_sweep, sweep_points
 
 
 @pytest.fixture(scope="module")
@@ -109,7 +109,7 @@ def test_dask_path_identical_to_local(seed002):
 def test_primed_dry_loads_equal_single_solves(seed004):
     """A sweep solves the dry loads of its points in batched calls (high-speed and low-speed forms
     apart); every cached case equals its own single solve to round-off."""
-    from thermobear.solver import _dry_load_cached, _dry_load_solve, _dry_need, _prime_dry_loads
+    from thermobear.coupled.solver import _dry_load_cached, _dry_load_solve, _dry_need, _prime_dry_loads
     scenes = [seed004.with_(n_rpm=n, Fr=Fr) for n in (1500.0, 2500.0, 5000.0, 8000.0) for Fr in (100.0, 325.0)]
     keys = [_dry_need(sc) for sc in scenes]
     assert {k[5] is None for k in keys} == {True, False}            # both forms in the grid
@@ -127,7 +127,7 @@ def test_primed_dry_loads_equal_single_solves(seed004):
 def test_a_failing_load_batch_leaves_each_point_to_its_own_solve(seed004):
     """Fa = 0 under a radial load has no equilibrium in an angular contact bearing: that batch is not
     cached (the batch is halved around it), and the sweep reports the failure on that point only."""
-    from thermobear.solver import _dry_load_cached, _prime_dry_loads
+    from thermobear.coupled.solver import _dry_load_cached, _prime_dry_loads
     pts = [seed004.with_(Fa=Fa, n_rpm=n) for Fa in (0.0, 450.0) for n in (5000.0, 5500.0, 6000.0, 6500.0)]
     _dry_load_cached.cache_clear()
     assert _prime_dry_loads(pts) == 4
@@ -171,7 +171,7 @@ def test_dry_load_cache_is_thread_safe(seed004):
     """Dask workers run points in threads: concurrent hits, misses and evictions of the dry-load cache."""
     from concurrent.futures import ThreadPoolExecutor
 
-    from thermobear.solver import _LoadCache, _dry_load_solve
+    from thermobear.coupled.solver import _LoadCache, _dry_load_solve
     cache = _LoadCache(_dry_load_solve, 8)
     b = seed004.bearing
     keys = [(b, 450.0, float(Fr), None, "nominal", None) for Fr in range(100, 124)]

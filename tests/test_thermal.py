@@ -8,12 +8,12 @@ import numpy as np
 import pytest
 from scipy.special import ellipk
 
-from thermobear._data import data_dir, read_toml
+from thermobear.files import data_dir, read_toml
 from thermobear.errors import InputError, NoConvergence
 from thermobear.thermal import (load_network, network_names, solve_steady, solve_transient,
                                 split_losses, evaluate)
 from thermobear.thermal import elements as el
-from thermobear.materials import material
+from thermobear.contact.materials import material
 
 C0 = 273.15
 

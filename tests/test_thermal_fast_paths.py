@@ -17,8 +17,8 @@ import pytest
 
 import thermobear as tb
 from thermobear.errors import ExtrapolationWarning, InputError
-from thermobear.losses import _contact_powers, _repeat_contacts
-from thermobear.solver import (_losses_and_slopes, _network_spec_shared, _setup_thermal, choose_models,
+from thermobear.losses.local import _contact_powers, _repeat_contacts
+from thermobear.coupled.solver import (_losses_and_slopes, _network_spec_shared, _setup_thermal, choose_models,
                                network_context)
 from thermobear.thermal.network import evaluate, load_network
 from thermobear.thermal.solve import _dense_solve, _max_real_eigenvalue, _plan

@@ -31,10 +31,10 @@ from _common import median_time
 
 import thermobear as tb
 from thermobear.errors import ExtrapolationWarning
-from thermobear.loads import load_distribution
-from thermobear.losses import bearing_losses
-from thermobear.solver import steady_state, transient
-from thermobear.sweep import run_sweep
+from thermobear.loads.static import load_distribution
+from thermobear.losses.local import bearing_losses
+from thermobear.coupled.solver import steady_state, transient
+from thermobear.app.sweep import run_sweep
 
 N_SWEEP = 200     # enough points for the batched loads of a sweep to count as they do in a real one
 _TB_FILES = {str(p.relative_to(p.parents[1] if p.parent.name != "thermobear" else p.parent)).replace("\\", "/")

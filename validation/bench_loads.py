@@ -10,8 +10,8 @@ import numpy as np
 
 from _common import median_time
 
-from thermobear.geometry import bearing
-from thermobear.loads import load_distribution
+from thermobear.contact.geometry import bearing
+from thermobear.loads.static import load_distribution
 
 
 def timeit(fn, repeat=7):

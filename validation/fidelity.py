@@ -2,7 +2,7 @@
 
 Levels (each a function of a scene and operating points; importable):
 
-* **L0** — SKF 2004 global model (:func:`thermobear.friction.skf.skf_friction`) at a given
+* **L0** — SKF 2004 global model (:func:`thermobear.losses.skf.skf_friction`) at a given
   temperature, base-oil ν(T).  Two variants: ``L0`` with the series constants of
   ``materials/skf_constants.toml`` and SKF's μ_bl = 0.15, μ_EHL by base oil (the model as a user
   runs it), and ``L0-cal`` with R1, S1 backed out of ONE case (seed 002, MG1 at 1000 rpm, its
@@ -13,9 +13,9 @@ Levels (each a function of a scene and operating points; importable):
   axial balance (clipped at 0), all at the free contact angle; Hamrock–Brewe Hertz approximations.
 * **L2** — Jones–Harris (low speed, F_c added on the outer contact) + local losses at a given
   temperature; Hamrock–Brewe Hertz.
-* **L3** — L2 + the scene's thermal network, fixed point (:func:`thermobear.solver.steady_state`)
-  or heat-up (:func:`thermobear.solver.transient`).
-* **L4** — L3 with high-speed ball dynamics (:func:`thermobear.loads_highspeed.load_distribution_high_speed`,
+* **L3** — L2 + the scene's thermal network, fixed point (:func:`thermobear.coupled.solver.steady_state`)
+  or heat-up (:func:`thermobear.coupled.solver.transient`).
+* **L4** — L3 with high-speed ball dynamics (:func:`thermobear.loads.highspeed.load_distribution_high_speed`,
   centrifugal force and gyroscopic moment inside the load distribution), exact Hertz and per-ball
   stiffness.  Thrust bearings: per-ball Jones–Harris (the high-speed model is radial/angular only).
 
@@ -54,11 +54,11 @@ from _common import median_time
 
 import thermobear as tb
 from thermobear.errors import ExtrapolationWarning, InputError, SolverError
-from thermobear.friction.skf import MU_EHL, skf_constants, skf_friction
-from thermobear.loads import LoadDistribution, axial_contact_angle, load_distribution
-from thermobear.losses import prepare_contacts
-from thermobear.scene import Scene, scene_from_dict
-from thermobear.solver import choose_models, scene_losses, steady_state, transient
+from thermobear.losses.skf import MU_EHL, skf_constants, skf_friction
+from thermobear.loads.static import LoadDistribution, axial_contact_angle, load_distribution
+from thermobear.losses.local import prepare_contacts
+from thermobear.scene.scene import Scene, scene_from_dict
+from thermobear.coupled.solver import choose_models, scene_losses, steady_state, transient
 
 HERE = Path(__file__).resolve().parent
 DATA = HERE / "data"
@@ -130,8 +130,8 @@ def _exact(scene: Scene) -> Scene:
 
 
 def _batch_losses(scene, n_rpm, T_C, load, models):
-    """bearing_losses over arrays of speed and temperature with one load (thermobear.sweep's path)."""
-    from thermobear.sweep import _losses_batch   # same argument mapping as the sweep
+    """bearing_losses over arrays of speed and temperature with one load (thermobear.app.sweep's path)."""
+    from thermobear.app.sweep import _losses_batch   # same argument mapping as the sweep
     return _losses_batch(scene, np.asarray(n_rpm, float), np.asarray(T_C, float), models, load=load)
 
 
@@ -166,7 +166,7 @@ def level2(scene: Scene, n_rpm, T_C):
 def _hs_load(sc: Scene):
     if sc.bearing.kind == "thrust":
         return load_distribution(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, M=sc.M, stiffness="per_ball"), False
-    from thermobear.loads_highspeed import load_distribution_high_speed
+    from thermobear.loads.highspeed import load_distribution_high_speed
     return load_distribution_high_speed(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, M=sc.M, n_rpm=sc.n_rpm,
                                         stiffness="per_ball"), True
 
@@ -291,7 +291,7 @@ def calibrate_L0_seed002(case: Case):
 def _cold(fn):
     """``fn`` with the solver's per-operating-point cache (the dry load distribution) cleared first:
     every timed call computes its point from scratch."""
-    from thermobear.solver import _dry_load_cached
+    from thermobear.coupled.solver import _dry_load_cached
 
     def f(*a):
         _dry_load_cached.cache_clear()

@@ -21,9 +21,9 @@ import numpy as np
 from scipy.optimize import brentq
 
 import thermobear as tb
-from thermobear.geometry import BallBearing, bearing
-from thermobear.loads import load_distribution, needs_high_speed
-from thermobear.loads_highspeed import load_distribution_high_speed_full
+from thermobear.contact.geometry import BallBearing, bearing
+from thermobear.loads.static import load_distribution, needs_high_speed
+from thermobear.loads.highspeed import load_distribution_high_speed_full
 
 STEEL = tb.Material(E=2.075e11, nu=0.3, rho=7850.0)     # PHYSICS.md §3.2 (E, ν); ρ: steel, assumed
 B218 = BallBearing(D=22.23e-3, dm=125.3e-3, Z=16, fi=0.5232, fo=0.5232, alpha0=np.deg2rad(40.0),
@@ -75,7 +75,7 @@ def criterion_check(brg, Fa, label):
 
 def main():
     print("Harris 218 angular contact ball bearing, high-speed quasi-static load distribution "
-          "(thermobear.loads_highspeed)")
+          "(thermobear.loads.highspeed)")
     print(f"A = {B218.A * 1e3:.4f} mm, Kn(α0) = {B218.Kn():.4g} N/m^1.5, ball mass = {B218.ball_mass * 1e3:.2f} g")
     for Fa in LOADS_N:
         ls, ld = table(B218, Fa)

@@ -5,7 +5,7 @@ Writes validation/report/seed000_table1.md and prints the same text.
 
 Inputs are the paper's (seed 000 §3): Fa 4.26 N (Q 1.42 N per ball), D 7.938 mm,
 f 0.53, dm 36 mm, α_p 2.5e-8 1/Pa, μ_a 0.11, μ_e 0.05, Rq 0.06 / 0.03 µm; the
-base-oil viscosity comes from the lubricant model (thermobear.lubricant,
+base-oil viscosity comes from the lubricant model (thermobear.lubrication.lubricant,
 "mol-liton-00") at the stated laboratory temperature 23–24 °C (23.5 °C): it is
 not fitted.  The rig deceleration dω_c/dt is a measured input (Table 1 row).
 """
@@ -21,12 +21,12 @@ import numpy as np
 from _common import write_report
 from scipy.optimize import brentq
 
-from thermobear.film import film_thickness
-from thermobear.friction import rolling as R
-from thermobear.friction import sliding as S
-from thermobear.geometry import bearing
-from thermobear.hertz import hertz
-from thermobear.lubricant import lubricant
+from thermobear.lubrication.film import film_thickness
+from thermobear.losses import rolling as R
+from thermobear.losses import sliding as S
+from thermobear.contact.geometry import bearing
+from thermobear.contact.hertz import hertz
+from thermobear.lubrication.lubricant import lubricant
 
 HERE = Path(__file__).resolve().parent
 T_LAB_C = 23.5
@@ -166,7 +166,7 @@ def main():
     # E3: mu cap
     w("**E3 — eq 18 needs a cap.**  Unclipped, 0.82 λ^0.28 > 1 for λ > 2.03 and μ falls below μ_e "
       "(0.048, 0.043, 0.039 at the printed λ 2.26, 2.96, 3.6); the table prints 0.05, so the film share is "
-      "capped at 1 (thermobear.friction.sliding.mixed_friction_ianus).  MP at 100 rpm (3.26e-6) "
+      "capped at 1 (thermobear.losses.sliding.mixed_friction_ianus).  MP at 100 rpm (3.26e-6) "
       "implies μ = {:.4f}, not the 0.06 of the μ row (eq 28 with Houpert's a).\n".format(
           paper["MP"][0] / (0.375 * m["Q"] * m["a"][0])))
     # E4: methods agree, eq 14 double counting

@@ -21,12 +21,12 @@ import numpy as np
 
 from _common import write_report
 
-from thermobear.film import film_thickness, lubrication_regime
-from thermobear.friction import rolling as R
-from thermobear.friction import sliding as S
-from thermobear.hertz import hertz
-from thermobear.lubricant import lubricant
-from thermobear.spindown import fit_from_stop, stop_time, total_angle
+from thermobear.lubrication.film import film_thickness, lubrication_regime
+from thermobear.losses import rolling as R
+from thermobear.losses import sliding as S
+from thermobear.contact.hertz import hertz
+from thermobear.lubrication.lubricant import lubricant
+from thermobear.app.spindown import fit_from_stop, stop_time, total_angle
 
 HERE = Path(__file__).resolve().parent
 E_PRIME = 2.3e11          # seed 001 §2: E* ≈ 2.3e11 Pa for steel on steel
@@ -156,7 +156,7 @@ def main():
     w("## Spin-down method round trip (seed 001 eqs 20–21)\n")
     J = 2.0e-4   # kg m², illustrative (the disc inertia is not published); K*, n do not depend on it
     w("For each Table 2 run, (t_max, φ_max) generated from the published K*, n with an illustrative "
-      f"J = {J:g} kg m², then fitted back with `thermobear.spindown.fit_from_stop`:\n")
+      f"J = {J:g} kg m², then fitted back with `thermobear.app.spindown.fit_from_stop`:\n")
     w("| rpm | K* paper | n paper | t_max [s] | φ_max [rad] | K* fit | n fit |")
     w("|---|---|---|---|---|---|---|")
     for r in (r for r in rows if r["table"] == "2"):
@@ -169,7 +169,7 @@ def main():
     w("\n## Continuity of `rolling_force(model=\"auto\")` across regime boundaries\n")
     w("Seed 004 switches formulas by regime (IVR → Houpert IVR, PVR → Biboulet PVR with c_Bib, "
       "EHL → Houpert EHL).  Jump F(after)/F(before) at each boundary of a fine load sweep "
-      "(regimes from thermobear.film.lubrication_regime):\n")
+      "(regimes from thermobear.lubrication.film.lubrication_regime):\n")
     w("| contact | boundary | at Q [N] | jump ratio |")
     w("|---|---|---|---|")
     q = np.logspace(-4, 4, 20001)

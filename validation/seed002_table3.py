@@ -24,9 +24,9 @@ import numpy as np
 from _common import write_report
 from scipy.optimize import brentq
 
-from thermobear.friction.skf import (mu_EHL_from_torque, phi_bl, phi_ish, phi_rs, skf_constants,
+from thermobear.losses.skf import (mu_EHL_from_torque, phi_bl, phi_ish, phi_rs, skf_constants,
                                      skf_friction)
-from thermobear.geometry import bearing
+from thermobear.contact.geometry import bearing
 
 HERE = Path(__file__).resolve().parent
 DATA = HERE / "data" / "seed002_greases.csv"
@@ -39,9 +39,9 @@ OUTLIER_TOL = 0.02      # a grease whose implied constant is > 2 % from the medi
 
 
 def walther_nu(nu40, nu100, T_C):
-    """ASTM D341 kinematic viscosity [cSt] (cross-check only; thermobear.lubricant is used when present)."""
+    """ASTM D341 kinematic viscosity [cSt] (cross-check only; thermobear.lubrication.lubricant is used when present)."""
     try:
-        from thermobear.lubricant import Lubricant
+        from thermobear.lubrication.lubricant import Lubricant
         return float(Lubricant(nu40, nu100, 900.0).nu(T_C))
     except Exception:  # noqa: BLE001 - fall back to the two-point Walther line
         A = lambda nu: np.log10(np.log10(nu + 0.7))          # noqa: E731
@@ -211,7 +211,7 @@ def main() -> str:
       "2000 r/min torque is printed this is **not reproduced**: the catalogue constants back out positive "
       "μ_EHD (table above), about half of the fitted-constant values — low, but not negative. The other "
       "greases' 2000 r/min torques are only in Fig. 3a (not available), and the statement may refer to "
-      "the fully formulated oils of §3. `thermobear.friction.skf.mu_EHL_from_torque` returns negative "
+      "the fully formulated oils of §3. `thermobear.losses.skf.mu_EHL_from_torque` returns negative "
       "values unclipped, so a measured speed sweep will expose them.\n")
     text = "\n".join(out)
     return text, dict(R1_fit=R1_fit, S1_fit=S1_fit, R1_imp=R1_imp, S1_imp=S1_imp, names=names)

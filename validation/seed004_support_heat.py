@@ -5,14 +5,14 @@ Issue 4: the model's inner ring (IR) at t = 1000 s is 37 °C at 3200 rpm and 62 
 10 L/h at 30 °C).  The network (networks/oil_jet_ball_bearing.toml) holds the shaft's support block at
 ambient, yet the block carries an oil-bath DGBB and a lip seal running at the shaft speed (seed 004
 §5.1–5.1.2).  Here the support block becomes a FREE node with a heat capacity, losses to the room and
-the rig bed, and a heat source = its DGBB (SKF 2004 model, thermobear.friction.skf) + its lip seal(s)
+the rig bed, and a heat source = its DGBB (SKF 2004 model, thermobear.losses.skf) + its lip seal(s)
 (ISO/TR 14179 form P = 7.69e-6 d_s² n W, d_s in mm, n in r/min).  Every parameter is an estimate fixed
 a priori in three sets (low / central / high; reasoning next to
 ``ESTIMATES`` below); nothing is fitted to 55 / 90 °C.
 
 Only public pieces of thermobear are used (network_spec, network_context, load_network,
 solve_transient) plus the solver's own loss-source helpers (choose_models, scene_contacts, _roles,
-_sources), so the bearing losses are exactly those of ``thermobear.solver.transient``.
+_sources), so the bearing losses are exactly those of ``thermobear.coupled.solver.transient``.
 
 Run:  python validation/seed004_support_heat.py   (≈ 10 s)
 """
@@ -32,13 +32,13 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from _common import write_report  # noqa: E402
 
 import thermobear as tb  # noqa: E402
-from thermobear.friction.skf import skf_friction  # noqa: E402
-from thermobear.solver import _roles, _sources, choose_models, network_context, network_spec, scene_contacts  # noqa: E402
+from thermobear.losses.skf import skf_friction  # noqa: E402
+from thermobear.coupled.solver import _roles, _sources, choose_models, network_context, network_spec, scene_contacts  # noqa: E402
 from thermobear.thermal import load_network, solve_transient  # noqa: E402
 
 SCENE = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
 OIL = SCENE.lubricant                        # seed 004 Table 3 mineral oil (ν40 36.6, ν100 7.8 cSt)
-DGBB = tb.geometry.bearing("6210")           # estimated: support DGBB type not given in seed 004
+DGBB = tb.bearing("6210")           # estimated: support DGBB type not given in seed 004
 FR_SUPPORT_N = 650.0 / 2                     # block load shared by the two support blocks (mid-span, symmetric)
 FA_SUPPORT_N = 0.0                           # preload closed inside the measurement block (lock washers)
 D_SEAL_MM = 50.0                             # estimated: seal on the Ø50 shaft
@@ -163,7 +163,7 @@ def main() -> int:
          "(test 1). The network's `support_block` (fixed at ambient in `networks/oil_jet_ball_bearing.toml`) "
          "is made a free node with a heat capacity, natural convection + radiation to the room, a conductance "
          "to the rig bed, and a heat source = one 6210 DGBB in an oil bath (SKF 2004, "
-         "`thermobear.friction.skf`) + lip seal(s) (ISO/TR 14179: P = 7.69e-6 d_s² n W, d_s = 50 mm). "
+         "`thermobear.losses.skf`) + lip seal(s) (ISO/TR 14179: P = 7.69e-6 d_s² n W, d_s = 50 mm). "
          "Three a-priori estimate sets (reasoning next to `ESTIMATES` in the script). Nothing is fitted.", ""]
 
     # 1. the heat sources
@@ -208,8 +208,8 @@ def main() -> int:
           "(an upper bound on its effect — a real block starts cold), solved for the IR at 1000 s to equal the "
           "paper's reading.", ""]
     print("4. imposed support-block temperature needed")
-    k_shaft = tb.materials.material("aisi-52100").k
-    from thermobear._data import data_dir, read_toml
+    k_shaft = tb.material("aisi-52100").k
+    from thermobear.files import data_dir, read_toml
     net = read_toml(str(data_dir("networks") / "oil_jet_ball_bearing.toml"))
     path_m = sum(float(e["length_m"]) for e in net["elements"]      # shaft node centre → support block face
                  if e["type"] == "planar" and all(n.startswith("shaft") or n == "support_block" for n in e["between"]))

@@ -21,9 +21,9 @@ import numpy as np
 from _common import write_report
 
 import thermobear as tb
-from thermobear.film import film_thickness_nvm
-from thermobear.loads_highspeed import load_distribution_high_speed_full
-from thermobear.solver import choose_models, scene_losses, steady_state, transient
+from thermobear.lubrication.film import film_thickness_nvm
+from thermobear.loads.highspeed import load_distribution_high_speed_full
+from thermobear.coupled.solver import choose_models, scene_losses, steady_state, transient
 
 OUT = Path(__file__).resolve().parent / "report" / "seed004_trends.md"
 SCENE = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
@@ -154,7 +154,7 @@ def main() -> int:
         t = transient(SCENE.with_(n_rpm=n), 1000.0, t_eval=np.linspace(0.0, 1000.0, 101))
         heat[n] = (float(t.T_C["inner_ring"][-1]), ref)
         # energy budget: what the bearing and its shaft share could store at most (adiabatic)
-        from thermobear.solver import _setup_thermal
+        from thermobear.coupled.solver import _setup_thermal
         net = _setup_thermal(SCENE.with_(n_rpm=n), choose_models(SCENE.with_(n_rpm=n)))[0]
         C = dict(zip(net.nodes, net.C_J_K))
         E = float(np.trapezoid(t.P_W, t.t_s))
@@ -178,7 +178,7 @@ def main() -> int:
     # laminar flat-plate 0.332, the network's choice): does the other reading warm the inner ring?
     import dataclasses
     import tempfile
-    from thermobear._data import data_dir
+    from thermobear.files import data_dir
     net_txt = data_dir("networks") / "oil_jet_ball_bearing.toml"
     with tempfile.TemporaryDirectory() as tmp:
         alt = Path(tmp) / "oil_jet_harris.toml"
@@ -223,7 +223,7 @@ def main() -> int:
           "Biboulet's IVR force give F_R ∝ η u R_x (R_x/h)^{1/6}, nearly independent of the gap h — of the size that would hold "
           "the power flat. The film must then be in the load distribution (below: it is as thick as the elastic "
           "approach of these balls). The film load model puts the films in each contact's law — a gap carries the "
-          "hydrodynamic load of a film as thick as the gap — in the low-speed (thermobear.loads_film) and the "
+          "hydrodynamic load of a film as thick as the gap — in the low-speed (thermobear.loads.film) and the "
           "high-speed form. `choose_models` takes it where the dry solution lifts a ball off a race in a flooded "
           "bearing (here at 1500 N on the block; evidence in validation/report/film_criterion.md): compared the "
           "paper's way the spread then stays within the paper's 10 % (row above; what-if tables in "

@@ -7,15 +7,15 @@ A. Jones–Harris Newton (low speed, :func:`thermobear.loads.load_distribution`)
    from 1e-6 N to 1e5 N × diametral clearance, deep groove 6210 under radial load and 7210 under
    axial load.  Outcome per case: converged (with iterations, residual) / NoEquilibrium /
    NoConvergence / other error.
-B. Jones–Harris high speed (:func:`thermobear.loads_highspeed.load_distribution_high_speed`):
+B. Jones–Harris high speed (:func:`thermobear.loads.highspeed.load_distribution_high_speed`):
    7210, Fa = 450 N, speed × radial load.
-C. Coupled fixed point (:func:`thermobear.solver.steady_state` through
-   :func:`thermobear.sweep.run_sweep`): the seed 004 7210 on the ``one_node`` network with a low
+C. Coupled fixed point (:func:`thermobear.coupled.solver.steady_state` through
+   :func:`thermobear.app.sweep.run_sweep`): the seed 004 7210 on the ``one_node`` network with a low
    conductance to ambient (``thermal.parameters`` override ``bearing_to_ambient.G_W_K``), speed ×
    oil viscosity × conductance → converged (Anderson) / damped (Picard fallback) / no equilibrium
    (ThermalRunaway) / failed.
 D. SKF 2004 full-film friction backed out of a torque (seed 002 eqs A.12–A.13,
-   :func:`thermobear.friction.skf.mu_EHL_from_torque`) with the catalogue constants, when the
+   :func:`thermobear.losses.skf.mu_EHL_from_torque`) with the catalogue constants, when the
    torque follows the constants calibrated on seed 002 MG1: the region of ν·n where μ_EHL < 0,
    with the measured seed 002 points.
 E. Explicit vs implicit time stepping of the transient: the seed 004 network linearised at the
@@ -35,8 +35,8 @@ import numpy as np
 
 import thermobear as tb
 from thermobear.errors import ExtrapolationWarning, InputError, NoConvergence, NoEquilibrium, SolverError
-from thermobear.friction.skf import mu_EHL_from_torque, skf_constants, skf_friction
-from thermobear.loads import load_distribution
+from thermobear.losses.skf import mu_EHL_from_torque, skf_constants, skf_friction
+from thermobear.loads.static import load_distribution
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
@@ -80,7 +80,7 @@ def jones_harris_low_speed():
 
 # ------------------------------------------------------------------------------------------- B
 def jones_harris_high_speed():
-    from thermobear.loads_highspeed import load_distribution_high_speed
+    from thermobear.loads.highspeed import load_distribution_high_speed
     b = tb.bearing("7210")
     speeds = np.array([0.0, 1000, 3200, 4800, 6500, 8070, 12000, 16000, 20000])
     Frs = np.array([0.0, 100.0, 300.0, 450.0, 540.0, 650.0, 1000.0])
@@ -106,7 +106,7 @@ COUPLED_N = (1000.0, 2000.0, 4000.0, 6000.0, 8000.0, 12000.0, 16000.0)
 
 
 def coupled_map(processes=None):
-    from thermobear.sweep import run_sweep
+    from thermobear.app.sweep import run_sweep
     s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
     s = dataclasses.replace(s, network="one_node")
     grid = {"network_parameters": [{"bearing_to_ambient.G_W_K": g} for g in COUPLED_G],
@@ -158,7 +158,7 @@ def skf_negative_mu():
 
 # ------------------------------------------------------------------------------------------- E
 def explicit_vs_implicit(t_end_s=600.0):
-    from thermobear.solver import network_context, network_spec, scene_contacts, choose_models
+    from thermobear.coupled.solver import network_context, network_spec, scene_contacts, choose_models
     from thermobear.thermal import load_network, solve_transient
     from thermobear.thermal.solve import assemble
     s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
@@ -374,7 +374,7 @@ def run(png=HERE / "report" / "stability_map.png", processes=None) -> str:
     w("### D. SKF model: sign of the μ_EHL backed out of a torque\n")
     N, NU, mu, pts = D
     neg = mu < 0
-    from thermobear.friction.skf import phi_bl
+    from thermobear.losses.skf import phi_bl
     pbl = phi_bl(N, NU, 43.5)
     ill = pbl > 0.5
     w("Stand-in measurement: the SKF torque with R1, S1 calibrated on seed 002 MG1 (μ_EHL 0.05).  μ_EHL "

@@ -12,7 +12,7 @@ import math
 import numpy as np
 from scipy.special import lambertw
 
-from thermobear.coupling import solve_coupled
+from thermobear.coupled.fixedpoint import solve_coupled
 from thermobear.errors import NoConvergence, ThermalRunaway
 
 TA, G, THETA = 293.15, 2.0, 20.0

@@ -13,9 +13,9 @@ from pathlib import Path
 
 import numpy as np
 
-from thermobear.rig import resolve_scene_paths
-from thermobear.scene import load_scene
-from thermobear.solver import transient
+from thermobear.app.rig import resolve_scene_paths
+from thermobear.scene.scene import load_scene
+from thermobear.coupled.solver import transient
 
 HERE = Path(__file__).resolve().parent
 PARAM = "bearing_to_ambient.G_W_K"

@@ -29,13 +29,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .._arrays import _within
+from thermobear.arrays import _within
 from scipy.special import ellipk
 
-from ..air import T_RANGE_K as _AIR_T_RANGE_K
-from ..air import air_properties as _air_properties
-from ..errors import InputError
-from ..lubricant import T_VALID_C as _T_VALID_C
+from thermobear.lubrication.air import T_RANGE_K as _AIR_T_RANGE_K
+from thermobear.lubrication.air import air_properties as _air_properties
+from thermobear.errors import InputError
+from thermobear.lubrication.lubricant import T_VALID_C as _T_VALID_C
 
 __all__ = [
     "SIGMA_SB", "shell_conductance", "planar_conductance", "constriction_resistance",
@@ -245,7 +245,7 @@ def h_harris(k, Pr, u, nu, x, coefficient="harris"):
 
 
 def air_properties(T_K, p_Pa=101325.0):
-    r"""Dry-air properties (CoolProp, tabulated): see :func:`thermobear.air.air_properties`.
+    r"""Dry-air properties (CoolProp, tabulated): see :func:`thermobear.lubrication.air.air_properties`.
 
     >>> p = air_properties(300.0)
     >>> round(p["rho"], 3), round(p["k"], 4), round(p["Pr"], 3)
@@ -305,7 +305,7 @@ def oil_air_properties(X, rho_oil, nu_oil_cSt, k_oil, cp_oil, T_K):
 
 def _film_air(T_s_K, T_inf_K):
     Tf = 0.5 * (np.asarray(T_s_K, float) + np.asarray(T_inf_K, float))
-    from ..air import T_RANGE_K
+    from thermobear.lubrication.air import T_RANGE_K
     return Tf, air_properties(np.clip(Tf, *T_RANGE_K))   # properties held in the table's range
 
 

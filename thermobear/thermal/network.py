@@ -47,10 +47,10 @@ from pathlib import Path
 import networkx as nx
 import numpy as np
 
-from .._data import data_dir, names_in, read_toml
-from ..errors import InputError
-from ..materials import Material, material, material_names
-from .elements import (CORRELATION_KEYS, ELEMENT_TYPES, HARRIS_COEFFICIENTS, MATERIAL_KEYS,
+from thermobear.files import data_dir, names_in, read_toml
+from thermobear.errors import InputError
+from thermobear.contact.materials import Material, material, material_names
+from thermobear.thermal.elements import (CORRELATION_KEYS, ELEMENT_TYPES, HARRIS_COEFFICIENTS, MATERIAL_KEYS,
                        STRING_KEYS, Element)
 
 __all__ = ["ThermalNetwork", "load_network", "network_names", "evaluate"]
@@ -480,7 +480,7 @@ _STATIC_ROOTS = frozenset({"bearing"})
 
 
 def _build(data, ctx, src, frozen: bool = False) -> ThermalNetwork:
-    """Check and build a network.  ``frozen`` (private, for :mod:`thermobear.solver`, which rebuilds
+    """Check and build a network.  ``frozen`` (private, for :mod:`thermobear.coupled.solver`, which rebuilds
     the same never-modified table for every operating point): once such a table passed every check,
     later builds of the same object skip the checks that do not depend on the context (keys, element
     types and schemas, node names, reachability) and only evaluate, check and probe the values; the
@@ -860,7 +860,7 @@ def _semi_axes(f, p, ctx):
     if "a_fallback_m" in p and "b_fallback_m" in p:
         return np.full(n_balls, p["a_fallback_m"]), np.full(n_balls, p["b_fallback_m"]), "fallback"
     if "Q_fallback_N" in p:
-        from ..hertz import hertz
+        from thermobear.contact.hertz import hertz
         b_ = _get(ctx, "bearing")
         try:
             alpha = b_.alpha0

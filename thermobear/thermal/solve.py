@@ -28,8 +28,8 @@ from scipy.integrate import solve_ivp
 from scipy.linalg.lapack import dgeev, dgesv
 from scipy.sparse.linalg import spsolve
 
-from ..errors import InputError, NoConvergence
-from .network import ThermalNetwork
+from thermobear.errors import InputError, NoConvergence
+from thermobear.thermal.network import ThermalNetwork
 
 __all__ = ["SteadyResult", "TransientResult", "Flow", "solve_steady", "solve_transient",
            "assemble", "split_losses", "sources_vector"]

@@ -1,0 +1,1 @@
+"""What users run: sweeps, rig logs, spin-down, plots and the command line."""

@@ -1,0 +1,261 @@
+r"""Plots of results (matplotlib, Agg backend: files only, no display needed).
+
+Every function writes one PNG and returns its path:
+
+* :func:`plot_ball_loads`         per-ball contact load and lubrication regime (polar)
+* :func:`plot_regime_map`         the Moes (M, L) map with its regime boundaries and every contact
+* :func:`plot_loss_breakdown`     loss families of one operating point (bar)
+* :func:`plot_losses_vs_speed`    loss breakdown vs speed (stacked)
+* :func:`plot_heatup`             node temperatures vs time, with measured points
+* :func:`plot_vs_speed`           torque or temperature vs speed, with measured points
+* :func:`plot_spin_down`          coast-down speed vs time
+
+:func:`plot_result` writes the plots of ``thermobear run``.
+"""
+from __future__ import annotations
+
+import math
+import os
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+__all__ = ["plot_result", "plot_ball_loads", "plot_regime_map", "plot_loss_breakdown", "plot_losses_vs_speed",
+           "plot_heatup", "plot_vs_speed", "plot_spin_down", "REGIME_COLORS"]
+
+REGIME_COLORS = {"IVR": "tab:blue", "IVE": "tab:cyan", "PVR": "tab:orange", "EHL": "tab:red",
+                 "unloaded": "lightgrey", "none": "lightgrey"}
+FAMILY_COLORS = {"rolling": "tab:blue", "sliding": "tab:orange", "pivoting": "tab:green",
+                 "hysteresis": "tab:purple", "drag": "tab:brown"}
+
+
+def _save(fig, path) -> str:
+    path = Path(path)
+    tmp = path.with_name(path.name + ".tmp.png")
+    fig.savefig(tmp, dpi=110, bbox_inches="tight")
+    plt.close(fig)
+    os.replace(tmp, path)
+    return str(path)
+
+
+def _regime_str(code):
+    return np.asarray(code).astype(str)
+
+
+def plot_ball_loads(losses, path, title: str = "") -> str:
+    """Per-ball inner-contact load (bar length [N]) at its azimuth, coloured by the contact's regime.
+
+    Parameters
+    ----------
+    losses : LossResult   one operating point (contacts per ball)
+    path : str            PNG to write
+    """
+    ld = losses.load
+    psi = np.asarray(ld.psi, float)
+    fig, axs = plt.subplots(1, 2, subplot_kw={"projection": "polar"}, figsize=(10, 5))
+    width = 2 * np.pi / max(psi.size, 1) * 0.7
+    for ax, side in zip(axs, ("inner", "outer")):
+        c = losses.contacts[side]
+        Q = np.asarray(c["Q"], float).reshape(-1)
+        reg = _regime_str(c["regime"]).reshape(-1)
+        cols = [REGIME_COLORS.get(r, "black") for r in reg]
+        ax.bar(psi, Q, width=width, color=cols, edgecolor="k", linewidth=0.5)
+        ax.set_theta_zero_location("N")
+        ax.set_title(f"{side} contacts: Q [N] at azimuth ψ", fontsize=10)
+        for r in sorted(set(reg)):
+            ax.bar([0], [0], color=REGIME_COLORS.get(r, "black"), label=r)
+        ax.legend(loc="lower left", bbox_to_anchor=(-0.15, -0.15), fontsize=8, title="regime")
+    fig.suptitle(title or "Ball loads and lubrication regimes")
+    return _save(fig, path)
+
+
+def plot_regime_map(losses, brg, path, title: str = "") -> str:
+    r"""Every contact on the Moes (M, L) map, with the regime boundaries of :func:`thermobear.lubrication.film.moes_map_boundaries`.
+
+    The boundaries depend on D = Rx/Ry; they are drawn for the mean D of the
+    plotted contacts (the spread of D between contacts is printed in the legend).
+    """
+    from thermobear.lubrication.film import moes_map_boundaries
+    fig, ax = plt.subplots(figsize=(7, 5.5))
+    Ms, Ls, Ds = [], [], []
+    for side, mk in (("inner", "o"), ("outer", "s")):
+        c = losses.contacts[side]
+        M, L = np.asarray(c["M"], float).reshape(-1), np.asarray(c["L"], float).reshape(-1)
+        reg = _regime_str(c["regime"]).reshape(-1)
+        al = np.asarray(c["alpha"], float).reshape(-1)
+        Rx = brg.Rx_i(al) if side == "inner" else brg.Rx_o(al)
+        Ry = brg.Ry_i if side == "inner" else brg.Ry_o
+        ok = np.isfinite(M) & np.isfinite(L) & (M > 0) & (L > 0)
+        for r in sorted(set(reg[ok])):
+            sel = ok & (reg == r)
+            ax.scatter(M[sel], L[sel], marker=mk, color=REGIME_COLORS.get(r, "k"), edgecolor="k", s=40,
+                       label=f"{side} contacts, {r} ({int(sel.sum())})", zorder=3)
+        Ms.append(M[ok]), Ls.append(L[ok]), Ds.append(np.broadcast_to(np.asarray(Rx / Ry, float), M.shape)[ok])
+    M_all, L_all, D_all = (np.concatenate(v) if v else np.array([]) for v in (Ms, Ls, Ds))
+    D = float(np.clip(np.mean(D_all), 1e-6, 1.0)) if D_all.size else 1.0
+    lo = min(0.1, float(M_all.min()) / 3) if M_all.size else 0.1
+    hi = max(1e4, float(M_all.max()) * 3) if M_all.size else 1e4
+    Mg = np.logspace(np.log10(lo), np.log10(hi), 300)
+    b = moes_map_boundaries(D, M=Mg)
+    ax.plot(Mg, b.L_iso_piezo, "k-", lw=1.5, label="iso-viscous | piezo-viscous")
+    piezo = b.L_rigid_elastic_piezo >= b.L_iso_piezo
+    ax.plot(Mg[piezo], b.L_rigid_elastic_piezo[piezo], "k--", lw=1.5, label="PVR | EHL")
+    Liso = b.L_iso_piezo[np.argmin(np.abs(Mg - b.M_rigid_elastic_iso))]
+    ax.plot([b.M_rigid_elastic_iso] * 2, [1e-3, Liso], "k:", lw=1.5, label="IVR | IVE")
+    ax.set_xscale("log"), ax.set_yscale("log")
+    Lmin = min(0.1, float(L_all.min()) / 3) if L_all.size else 0.1
+    Lmax = max(1e2, float(L_all.max()) * 3) if L_all.size else 1e2
+    ax.set_xlim(lo, hi), ax.set_ylim(Lmin, Lmax)
+    ax.set_xlabel("Moes load parameter M [-]"), ax.set_ylabel("Moes material parameter L [-]")
+    def at(M):                                   # boundaries at one M
+        return (float(np.interp(np.log(M), np.log(Mg), b.L_iso_piezo)),
+                float(np.interp(np.log(M), np.log(Mg), b.L_rigid_elastic_piezo)))
+    Mre = b.M_rigid_elastic_iso
+    M_ivr, M_ive, M_ehl = Mre / 10, Mre * 30, Mre * 30
+    labels = (("IVR", M_ivr, min(at(M_ivr)[0], Lmax) / 10), ("IVE", M_ive, at(M_ive)[0] / 10),
+              ("PVR", 2 * Mre, 4 * max(at(2 * Mre))), ("EHL", M_ehl, math.sqrt(at(M_ehl)[0] * max(at(M_ehl)))))
+    for txt, x, y in labels:
+        if lo < x < hi and Lmin < y < Lmax:
+            ax.text(x, y, txt, fontsize=11, color="grey", ha="center", va="center")
+    spread = f", D spread {D_all.min():.3g}–{D_all.max():.3g}" if D_all.size else ""
+    ax.set_title(title or f"Moes regime map (boundaries at D = Rx/Ry = {D:.3g}{spread})", fontsize=10)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    ax.grid(True, which="both", alpha=0.2)
+    return _save(fig, path)
+
+
+def plot_loss_breakdown(breakdown_W: dict, path, title: str = "") -> str:
+    """Bar chart of the loss families of one operating point [W]."""
+    fig, ax = plt.subplots(figsize=(6, 4))
+    keys = list(breakdown_W)
+    vals = [float(np.asarray(breakdown_W[k]).sum()) for k in keys]
+    ax.bar(keys, vals, color=[FAMILY_COLORS.get(k, "grey") for k in keys])
+    tot = sum(vals)
+    for i, v in enumerate(vals):
+        ax.text(i, v, f"{v:.3g} W\n{100 * v / tot:.0f} %" if tot > 0 else f"{v:.3g}", ha="center", va="bottom", fontsize=8)
+    if vals and max(vals) > 0:
+        ax.set_ylim(0, 1.15 * max(vals))          # headroom for the labels of the tallest bar
+    ax.set_ylabel("power loss [W]")
+    ax.set_title(title or f"Loss breakdown (total {tot:.3g} W)")
+    return _save(fig, path)
+
+
+def plot_losses_vs_speed(n_rpm, breakdown_W: dict, path, title: str = "", measured=None) -> str:
+    """Stacked loss families vs speed [W]; optional measured total power ``(n_rpm, P_W)``."""
+    n = np.asarray(n_rpm, float)
+    order = np.argsort(n)
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    keys = list(breakdown_W)
+    ax.stackplot(n[order], *[np.asarray(breakdown_W[k], float)[order] for k in keys], labels=keys,
+                 colors=[FAMILY_COLORS.get(k, "grey") for k in keys], alpha=0.85)
+    if measured is not None:
+        ax.plot(*measured, "ko", label="measured total")
+    ax.set_xlabel("speed n [rpm]"), ax.set_ylabel("power loss [W]")
+    ax.legend(loc="upper left", fontsize=8)
+    ax.set_title(title or "Loss breakdown vs speed")
+    ax.grid(alpha=0.3)
+    return _save(fig, path)
+
+
+def plot_heatup(t_s, simulated: dict, path, measured: dict | None = None, title: str = "",
+                mapping: dict | None = None) -> str:
+    """Temperatures vs time [°C]: simulated lines, measured points in the same colour.
+
+    Parameters
+    ----------
+    t_s : array_like       simulation times [s]
+    simulated : dict       name → temperatures [°C] (same length as t_s)
+    measured : dict        name → (t_s, T_C) measured points, keyed like ``simulated``
+    mapping : dict         optional name → label suffix (e.g. channel → node)
+    """
+    t = np.asarray(t_s, float)
+    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    unit, scale = ("min", 60.0) if t.max() > 600 else ("s", 1.0)
+    for i, (k, T) in enumerate(simulated.items()):
+        col = f"C{i % 10}"
+        lab = k + (f" → {mapping[k]}" if mapping and k in mapping else "")
+        ax.plot(t / scale, np.asarray(T, float), "-", color=col, label=f"{lab} (model)")
+        if measured and k in measured:
+            tm, Tm = measured[k]
+            ax.plot(np.asarray(tm, float) / scale, np.asarray(Tm, float), "o", ms=3.5, color=col, alpha=0.7,
+                    label=f"{k} (measured)")
+    ax.set_xlabel(f"time [{unit}]"), ax.set_ylabel("temperature [°C]")
+    ax.legend(fontsize=7, ncol=2)
+    ax.grid(alpha=0.3)
+    ax.set_title(title or "Heat-up")
+    return _save(fig, path)
+
+
+def plot_vs_speed(n_rpm, simulated: dict, path, measured: dict | None = None, ylabel: str = "",
+                  title: str = "", yscale: float = 1.0, labels=None) -> str:
+    """Quantities vs speed: model lines (or markers) and measured points.
+
+    Parameters
+    ----------
+    n_rpm : array_like    speeds [rpm]
+    simulated : dict      name → values at n_rpm
+    measured : dict       name → values at n_rpm (NaN = not measured)
+    ylabel : str          axis label with unit
+    yscale : float        factor applied to every value (e.g. 1e3 for N m → N mm)
+    labels : list[str]    optional per-point text (e.g. the lubricant of each row)
+    """
+    n = np.asarray(n_rpm, float)
+    order = np.argsort(n, kind="stable")
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    if labels is not None:                      # one point per labelled row: spread rows sharing a speed
+        span = max(float(np.ptp(n)), float(np.max(n)) * 0.5, 1.0)
+        x = n.copy()
+        for v in np.unique(n):
+            idx = np.flatnonzero(n == v)
+            x[idx] = v + (np.arange(idx.size) - (idx.size - 1) / 2) * 0.025 * span
+    for i, (k, v) in enumerate(simulated.items()):
+        col = f"C{i % 10}"
+        v = np.asarray(v, float) * yscale
+        m = np.asarray(measured[k], float) * yscale if measured and k in measured else None
+        if labels is None:
+            ax.plot(n[order], v[order], "-x", color=col, label=f"{k} (model)")
+            if m is not None:
+                ax.plot(n, m, "o", color=col, mfc="none", ms=7, label=f"{k} (measured)")
+            continue
+        ax.plot(x, v, "x", color=col, ms=7, label=f"{k} (model)")
+        if m is not None:
+            ax.plot(x, m, "o", color=col, mfc="none", ms=7, label=f"{k} (measured)")
+            ax.vlines(x, np.fmin(v, m), np.fmax(v, m), color=col, lw=0.6, alpha=0.5)
+        for xi, yi, s in zip(x, v if m is None else np.where(np.isnan(m), v, np.fmax(v, m)), labels):
+            ax.annotate(s, (xi, yi), fontsize=6, rotation=90, xytext=(0, 5), textcoords="offset points",
+                        ha="center", va="bottom")
+        lo, hi = ax.get_ylim()
+        ax.set_ylim(lo, hi + 0.25 * (hi - lo))
+    ax.set_xlabel("speed n [rpm]"), ax.set_ylabel(ylabel)
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    ax.set_title(title)
+    return _save(fig, path)
+
+
+def plot_spin_down(runs: list, path, title: str = "") -> str:
+    """Coast-down speed vs time, one curve per initial speed; ``runs`` = [(label, t_s, omega_rad_s), ...]."""
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for lab, t, w in runs:
+        ax.plot(t, np.asarray(w) * 30 / np.pi, label=lab)
+    ax.set_xlabel("time [s]"), ax.set_ylabel("speed [rpm]")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    ax.set_title(title or "Spin-down")
+    return _save(fig, path)
+
+
+def plot_result(res, outdir) -> list:
+    """Plots of a ``thermobear run`` result: ball loads, regime map, loss breakdown. Returns the paths."""
+    out = Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+    s = res.scene
+    tag = f"{s.bearing.name}, {s.n_rpm:g} rpm, Fa {s.Fa:g} N, Fr {s.Fr:g} N"
+    return [plot_ball_loads(res.losses, out / "ball_loads.png", f"Ball loads and regimes — {tag}"),
+            plot_regime_map(res.losses, s.bearing, out / "regime_map.png"),
+            plot_loss_breakdown(res.breakdown_W, out / "loss_breakdown.png",
+                                f"Loss breakdown — {tag} (total {res.P_W:.3g} W)")]

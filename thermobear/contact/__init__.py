@@ -1,0 +1,1 @@
+"""Bearing geometry, materials, Hertz point contact and ball kinematics."""

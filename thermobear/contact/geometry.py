@@ -1,0 +1,328 @@
+r"""Ball bearing internal geometry and the bearing catalog.
+
+``BallBearing`` holds the internal geometry in SI and derives what the
+mechanics needs: the distance between groove curvature centres A, the free
+contact angle, the reduced radii of each contact as functions of the contact
+angle, the contact stiffnesses.  The catalog of the seed papers' bearings is
+data: ``materials/bearings.toml``.
+
+Conventions (Harris 2001 ch. 2; PHYSICS.md §1; seed 004 eqs 1–5): x is the
+rolling direction, y the transverse one; osculations f = r/D; diametral
+clearance Pd = d_o − d_i − 2D; A = (fi + fo − 1) D; cos α0 = 1 − Pd/(2A);
+γ = D cos α / dm.
+"""
+from __future__ import annotations
+
+import numbers
+from dataclasses import dataclass, field, replace
+from functools import cached_property
+
+import numpy as np
+
+from thermobear.files import data_dir, read_toml
+from thermobear.errors import InputError
+from thermobear.contact.hertz import contact_stiffness, series_stiffness
+from thermobear.contact.materials import Material, material, reduced_modulus
+
+__all__ = ["BallBearing", "bearing", "bearing_names", "KINDS"]
+
+KINDS = ("deep_groove", "angular_contact", "thrust")
+
+
+def _default_steel() -> Material:
+    return material("aisi-52100")
+
+
+@dataclass(frozen=True)
+class BallBearing:
+    r"""Internal geometry of a single-row ball bearing (SI units).
+
+    Parameters
+    ----------
+    D : float             ball diameter [m]
+    dm : float            pitch diameter (ball-centre circle) [m]
+    Z : int               number of balls [-]
+    fi, fo : float        inner / outer osculation r/D [-], > 0.5
+    Pd : float            diametral clearance [m], ≥ 0 (deep groove; derived for the others)
+    alpha0 : float        free contact angle [rad]; required for angular contact,
+                          π/2 for thrust; derived from Pd for deep groove if not given
+    kind : str            ``"deep_groove"``, ``"angular_contact"`` or ``"thrust"``
+    ball_material, ring_material : Material   (default AISI 52100)
+    name : str            label
+    bore, outer_diameter, width : float   boundary dimensions [m] (optional; the SKF
+                          model and thermal networks need them)
+    series : str          SKF series key for the global model (e.g. "62", "72B", "511")
+    C0 : float            static load rating [N] (optional)
+    estimated : tuple     names of fields that are estimates, not published data
+
+    Examples
+    --------
+    The ISO/TS 16281 reference ball bearing:
+
+    >>> from thermobear import Material
+    >>> steel = Material(E=2.1e11, nu=0.3, rho=7850.0)
+    >>> brg = BallBearing(D=11.5e-3, dm=43.5e-3, Z=7, fi=0.52, fo=0.53, Pd=0.0,
+    ...                   kind="deep_groove", ball_material=steel, ring_material=steel)
+    >>> round(brg.A * 1e3, 4), round(brg.Ry_i * 1e3, 2), round(float(brg.Rx_i(0.0)) * 1e3, 4)
+    (0.575, 149.5, 4.23)
+    """
+
+    D: float
+    dm: float
+    Z: int
+    fi: float
+    fo: float
+    Pd: float | None = None
+    alpha0: float | None = None
+    kind: str = "deep_groove"
+    ball_material: Material = field(default_factory=_default_steel)
+    ring_material: Material = field(default_factory=_default_steel)
+    name: str = "custom"
+    bore: float | None = None
+    outer_diameter: float | None = None
+    width: float | None = None
+    series: str | None = None
+    C0: float | None = None
+    estimated: tuple = ()
+
+    def __post_init__(self):
+        p = f"bearing[{self.name}]"
+        if self.kind not in KINDS:
+            raise InputError(f"{p}.kind", self.kind, f"must be one of {', '.join(KINDS)}")
+        for fld in ("D", "dm"):
+            v = getattr(self, fld)
+            if isinstance(v, bool) or not isinstance(v, numbers.Real) or not (np.isfinite(v) and v > 0):
+                raise InputError(f"{p}.{fld}", v, "must be a finite length > 0 [m]")
+        if self.D >= self.dm:
+            raise InputError(f"{p}.D", self.D, f"ball diameter must be smaller than the pitch diameter dm = {self.dm} m")
+        if int(self.Z) != self.Z or self.Z < 3:
+            raise InputError(f"{p}.Z", self.Z, "number of balls must be an integer >= 3")
+        if self.D > self.dm * np.sin(np.pi / self.Z) * (1 + 1e-9):
+            raise InputError(f"{p}.Z", self.Z, f"{self.Z} balls of D = {self.D * 1e3:.4g} mm do not fit on "
+                             f"dm = {self.dm * 1e3:.4g} mm (need D <= dm sin(pi/Z))")
+        for fld in ("fi", "fo"):
+            v = getattr(self, fld)
+            if isinstance(v, bool) or not isinstance(v, numbers.Real) or not (np.isfinite(v) and v > 0.5):
+                raise InputError(f"{p}.{fld}", v, "osculation must be > 0.5 (groove radius / ball diameter)")
+        A = (self.fi + self.fo - 1.0) * self.D
+        a0, Pd = self.alpha0, self.Pd
+        if self.kind == "thrust":
+            if a0 is None:
+                a0 = np.pi / 2
+            if not (np.pi / 4 <= a0 <= np.pi / 2 + 1e-12):
+                raise InputError(f"{p}.alpha0", a0, "thrust bearing contact angle must lie in [45°, 90°] [rad]")
+            if Pd not in (None, 0.0):
+                raise InputError(f"{p}.Pd", Pd, "a thrust bearing has no diametral clearance; leave Pd unset")
+            Pd = 2.0 * A * (1.0 - np.cos(a0))
+        elif self.kind == "angular_contact":
+            if a0 is None:
+                raise InputError(f"{p}.alpha0", None, "an angular contact bearing needs its free contact angle alpha0 in (0°, 60°] [rad]")
+            if not (0.0 < a0 <= np.pi / 3 + 1e-12):
+                raise InputError(f"{p}.alpha0", a0, "free contact angle must lie in (0°, 60°] [rad]")
+            implied = 2.0 * A * (1.0 - np.cos(a0))
+            if Pd is not None and abs(Pd - implied) > 1e-3 * max(implied, 1e-9):
+                raise InputError(f"{p}.Pd", Pd, f"inconsistent with alpha0: Pd = 2A(1 - cos alpha0) = {implied:.4g} m; give one of them")
+            Pd = implied
+        else:  # deep groove
+            if Pd is None:
+                Pd = 0.0 if a0 is None else 2.0 * A * (1.0 - np.cos(a0))
+            if not (np.isfinite(Pd) and Pd >= 0):
+                raise InputError(f"{p}.Pd", Pd, "diametral clearance must be >= 0 [m]")
+            if Pd >= 2.0 * A:
+                raise InputError(f"{p}.Pd", Pd, f"clearance must be < 2A = {2 * A:.4g} m (else the free contact angle exceeds 90°)")
+            a_from_pd = float(np.arccos(1.0 - Pd / (2.0 * A)))
+            if a0 is not None and abs(a0 - a_from_pd) > 1e-6:
+                raise InputError(f"{p}.alpha0", a0, f"inconsistent with Pd: arccos(1 - Pd/2A) = {a_from_pd:.6g} rad; give one of them")
+            a0 = a_from_pd
+        object.__setattr__(self, "alpha0", float(a0))
+        object.__setattr__(self, "Pd", float(Pd))
+        object.__setattr__(self, "Z", int(self.Z))
+        if self.bore is not None and not (0 < self.bore < self.dm - self.D):
+            raise InputError(f"{p}.bore", self.bore, f"bore must lie in (0, dm − D = {self.dm - self.D:.6g}) [m] "
+                             "(the inner ring needs a wall under the raceway)")
+        if self.outer_diameter is not None and not (self.outer_diameter > self.dm + self.D):
+            raise InputError(f"{p}.outer_diameter", self.outer_diameter,
+                             f"outer diameter must exceed dm + D = {self.dm + self.D:.6g} [m]")
+        if self.width is not None and not (self.width > 0):
+            raise InputError(f"{p}.width", self.width, "width must be > 0 [m]")
+        if self.C0 is not None and not (self.C0 > 0):
+            raise InputError(f"{p}.C0", self.C0, "static load rating must be > 0 [N]")
+
+    # ---- derived geometry -------------------------------------------------
+    @property
+    def total_curvature(self) -> float:
+        """B = fi + fo − 1 [-] (Harris 2001 eq 2.8)."""
+        return self.fi + self.fo - 1.0
+
+    @property
+    def A(self) -> float:
+        """Distance between the groove curvature centres, unloaded: A = (fi + fo − 1) D [m] (seed 004 eq 2)."""
+        return self.total_curvature * self.D
+
+    @property
+    def alpha_nominal(self) -> float:
+        """Nominal contact angle [rad]: 0 for deep groove, alpha0 otherwise.
+
+        The load–deflection constant is evaluated here by default (ISO/TS 16281
+        practice; the reference cases in tests/test_loads.py use it)."""
+        return 0.0 if self.kind == "deep_groove" else self.alpha0
+
+    @property
+    def free_end_play(self) -> float:
+        """Pe = 2 A sin α0 [m] (Harris 2001 eq 2.16)."""
+        return 2.0 * self.A * np.sin(self.alpha0)
+
+    @property
+    def E_prime(self) -> float:
+        """Reduced modulus of the ball–ring pair [Pa]."""
+        return reduced_modulus(self.ball_material, self.ring_material)
+
+    @property
+    def Ry_i(self) -> float:
+        """Reduced transverse radius, inner contact: fi D/(2 fi − 1) [m] (seed 004 eq 5)."""
+        return self.fi * self.D / (2.0 * self.fi - 1.0)
+
+    @property
+    def Ry_o(self) -> float:
+        """Reduced transverse radius, outer contact: fo D/(2 fo − 1) [m] (seed 004 eq 5)."""
+        return self.fo * self.D / (2.0 * self.fo - 1.0)
+
+    @property
+    def R_inner_locus(self) -> float:
+        """Radius of the locus of inner groove curvature centres [m]: dm/2 + (fi − ½) D cos α0 (Harris 2001 §7.4)."""
+        return 0.5 * self.dm + (self.fi - 0.5) * self.D * np.cos(self.alpha0)
+
+    @property
+    def ball_mass(self) -> float:
+        """Mass of one ball [kg]."""
+        return self.ball_material.rho * np.pi * self.D**3 / 6.0
+
+    def gamma(self, alpha):
+        """γ = D cos α / dm [-] (seed 004 eq 3); α [rad], scalar or array."""
+        return self.D * np.cos(alpha) / self.dm
+
+    def Rx_i(self, alpha):
+        """Reduced rolling-direction radius, inner contact: D(1 − γ)/2 [m] (seed 004 eq 4)."""
+        return 0.5 * self.D * (1.0 - self.gamma(alpha))
+
+    def Rx_o(self, alpha):
+        """Reduced rolling-direction radius, outer contact: D(1 + γ)/2 [m] (seed 004 eq 4).
+
+        For a thrust bearing (α = 90°) both are D/2: the race is flat in the rolling direction."""
+        return 0.5 * self.D * (1.0 + self.gamma(alpha))
+
+    def K_i(self, alpha, method: str = "exact"):
+        """Load–deflection constant of the inner contact, Q = K δ^1.5 [N/m^1.5]."""
+        return contact_stiffness(self.Rx_i(alpha), self.Ry_i, self.E_prime, method)
+
+    def K_o(self, alpha, method: str = "exact"):
+        """Load–deflection constant of the outer contact [N/m^1.5]."""
+        return contact_stiffness(self.Rx_o(alpha), self.Ry_o, self.E_prime, method)
+
+    def Kn(self, alpha=None, method: str = "exact"):
+        r"""Ball load–deflection constant, both contacts in series [N/m^1.5].
+
+        K_n = [K_i^(−2/3) + K_o^(−2/3)]^(−3/2) (Harris 2001 eq 7.3), at the contact
+        angle α [rad] (default: the nominal angle).
+
+        >>> from thermobear import Material
+        >>> s = Material(E=2.1e11, nu=0.3)
+        >>> b = BallBearing(D=11.5e-3, dm=43.5e-3, Z=7, fi=0.52, fo=0.53, ball_material=s, ring_material=s)
+        >>> round(float(b.Kn()) * 10**-4.5)   # N/mm^1.5 (ISO/TS 16281 reference bearing)
+        333592
+        """
+        if alpha is None:
+            if method == "exact":
+                return self._Kn_nominal
+            alpha = self.alpha_nominal
+        return series_stiffness(self.K_i(alpha, method), self.K_o(alpha, method))
+
+    @cached_property
+    def _Kn_nominal(self) -> float:
+        """K_n at the nominal angle, exact Hertz (cached: the bearing is immutable)."""
+        return float(series_stiffness(self.K_i(self.alpha_nominal), self.K_o(self.alpha_nominal)))
+
+    def with_(self, **changes) -> "BallBearing":
+        """Copy with some fields changed (validated again).
+
+        Derived clearance data follow the change: a new ``Pd`` re-derives ``alpha0`` of a
+        deep groove bearing, a new ``alpha0`` re-derives ``Pd``."""
+        kind = changes.get("kind", self.kind)
+        if kind == "deep_groove":
+            if "alpha0" in changes and "Pd" not in changes:
+                changes["Pd"] = None          # re-derive Pd from the new alpha0
+            elif "alpha0" not in changes:
+                changes["alpha0"] = None      # re-derive alpha0 from Pd (kept or changed)
+        elif "Pd" not in changes:
+            changes["Pd"] = None              # re-derive Pd from alpha0
+        return replace(self, **changes)
+
+
+# ---- catalog ----------------------------------------------------------------
+_MM_KEYS = {"D_mm": "D", "dm_mm": "dm", "Pd_mm": "Pd", "bore_mm": "bore",
+            "outer_diameter_mm": "outer_diameter", "width_mm": "width"}
+
+
+def _catalog() -> dict:
+    return read_toml(str(data_dir("materials") / "bearings.toml"))
+
+
+def bearing_names() -> list[str]:
+    """Names in the bearing catalog."""
+    return sorted(_catalog())
+
+
+def bearing_from_dict(d: dict, name: str = "custom", where: str = "bearing") -> BallBearing:
+    """Build a BallBearing from a catalog/scene table with unit-suffixed keys (mm, deg, kN).
+
+    Unknown keys raise InputError naming them; so do missing required keys.
+    """
+    known = set(_MM_KEYS) | {"kind", "Z", "fi", "fo", "alpha0_deg", "ball_material", "ring_material",
+                             "series", "C0_kN", "estimated", "source", "description", "name", "C_kN"}
+    for k in d:
+        if k not in known:
+            raise InputError(f"{where}.{k}", d[k], f"unknown key; accepted: {', '.join(sorted(known))}")
+    for req in ("D_mm", "dm_mm", "Z", "fi", "fo"):
+        if req not in d:
+            raise InputError(f"{where}.{req}", None, "missing required field")
+
+    def num(k):
+        v = d[k]
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not np.isfinite(v):
+            raise InputError(f"{where}.{k}", v, "must be a finite number")
+        return float(v)
+
+    def text(k, default=None):
+        v = d.get(k, default)
+        if v is not None and not isinstance(v, str):
+            raise InputError(f"{where}.{k}", v, "must be a text string")
+        return v
+
+    kw = {_MM_KEYS[k]: num(k) * 1e-3 for k in d if k in _MM_KEYS}
+    if "alpha0_deg" in d:
+        kw["alpha0"] = float(np.deg2rad(num("alpha0_deg")))
+    for mk in ("ball_material", "ring_material"):
+        if mk in d:
+            kw[mk] = material(text(mk))
+    Z = d["Z"]
+    if isinstance(Z, bool) or not isinstance(Z, (int, float)):
+        raise InputError(f"{where}.Z", Z, "number of balls must be an integer >= 3")
+    est = d.get("estimated", ())
+    if not isinstance(est, (list, tuple)) or not all(isinstance(e, str) for e in est):
+        raise InputError(f"{where}.estimated", est, "must be a list of field names")
+    return BallBearing(Z=Z, fi=num("fi"), fo=num("fo"), kind=text("kind", "deep_groove"),
+                       name=text("name", name), series=text("series"),
+                       C0=num("C0_kN") * 1e3 if "C0_kN" in d else None, estimated=tuple(est), **kw)
+
+
+def bearing(name: str) -> BallBearing:
+    """Catalog look-up by designation (see ``bearing_names()``).
+
+    >>> b = bearing("7210")
+    >>> b.Z, round(float(np.rad2deg(b.alpha0)), 1), b.kind
+    (15, 40.0, 'angular_contact')
+    """
+    cat = _catalog()
+    if name not in cat:
+        raise InputError("bearing", name, f"unknown catalog name; known: {', '.join(sorted(cat))}")
+    return bearing_from_dict(cat[name], name=name, where=f"bearings.toml[{name}]")

@@ -1,0 +1,114 @@
+"""Solid materials of rings and balls, and the reduced (contact) modulus.
+
+Data live in ``materials/solids/*.toml`` (one file per material, each value
+with its unit in the key and its source in a comment).
+"""
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+
+from thermobear.files import data_dir, lookup, names_in
+from thermobear.errors import InputError
+
+__all__ = ["Material", "material", "material_names", "reduced_modulus"]
+
+
+@dataclass(frozen=True)
+class Material:
+    """An isotropic elastic solid.
+
+    Parameters
+    ----------
+    E : float       Young's modulus [Pa]
+    nu : float      Poisson's ratio [-]
+    rho : float     density [kg/m^3]
+    k : float       thermal conductivity [W/(m K)] (optional; needed by thermal networks)
+    cp : float      specific heat [J/(kg K)] (optional; needed by transients)
+    name : str      label
+
+    >>> steel = Material(E=2.1e11, nu=0.3, rho=7850.0)
+    >>> round(reduced_modulus(steel, steel) / 1e9, 1)
+    230.8
+    """
+
+    E: float
+    nu: float
+    rho: float = 7830.0
+    k: float | None = None
+    cp: float | None = None
+    name: str = "custom"
+
+    def __post_init__(self):
+        if not (np.isfinite(self.E) and self.E > 0):
+            raise InputError(f"material[{self.name}].E", self.E, "Young's modulus must be > 0 [Pa]")
+        if not (-1.0 < self.nu < 0.5):
+            raise InputError(f"material[{self.name}].nu", self.nu, "Poisson's ratio must lie in (-1, 0.5)")
+        if not (np.isfinite(self.rho) and self.rho > 0):
+            raise InputError(f"material[{self.name}].rho", self.rho, "density must be > 0 [kg/m^3]")
+        for fld in ("k", "cp"):
+            v = getattr(self, fld)
+            if v is not None and not (np.isfinite(v) and v > 0):
+                raise InputError(f"material[{self.name}].{fld}", v, "must be > 0")
+
+
+@lru_cache(maxsize=8)
+def _names(folder: str, mtime_ns: int) -> tuple:
+    return tuple(names_in(Path(folder)))
+
+
+def material_names() -> list[str]:
+    """Names of the bundled materials (the folder is listed again only when it changed: a thermal
+    network resolves a material name per element, for every operating point).
+
+    >>> "aisi-52100" in material_names()
+    True
+    """
+    folder = _solids_dir()
+    return list(_names(folder, os.stat(folder).st_mtime_ns))
+
+
+@lru_cache(maxsize=1)
+def _solids_dir() -> str:
+    return str(data_dir("materials") / "solids")
+
+
+_MATERIALS: dict = {}      # name → (the file's table as read_toml gave it, the Material built from it)
+
+
+def material(name: str) -> Material:
+    """Bundled material by name (``aisi-52100``, ``m50``, ``si3n4``); built again only when its file
+    changed (read through :func:`thermobear.files.read_toml`, which re-reads a changed file;
+    :class:`Material` is immutable, so until then the same object is returned).
+
+    >>> material("aisi-52100").E
+    210000000000.0
+    """
+    if isinstance(name, Material):
+        return name
+    name = str(name)
+    d = lookup("materials", "solids", name, "material")
+    hit = _MATERIALS.get(name)
+    if hit is None or hit[0] is not d:
+        hit = _MATERIALS[name] = (d, Material(E=float(d["E_Pa"]), nu=float(d["nu"]), rho=float(d["rho_kg_m3"]),
+                                              k=d.get("k_W_mK"), cp=d.get("cp_J_kgK"), name=d.get("name", name)))
+    return hit[1]
+
+
+def reduced_modulus(m1: Material, m2: Material) -> float:
+    r"""Reduced (contact) modulus E' of two bodies [Pa].
+
+    Notes
+    -----
+    2/E' = (1-ν1²)/E1 + (1-ν2²)/E2  (Hamrock & Dowson 1981; seed 004 nomenclature;
+    the seeds' E* in 000/001 is this E').  Steel on steel (210 GPa, 0.3): 230.8 GPa.
+
+    >>> s = Material(E=210e9, nu=0.3)
+    >>> round(reduced_modulus(s, s) / 1e9, 3)
+    230.769
+    """
+    return 2.0 / ((1.0 - m1.nu**2) / m1.E + (1.0 - m2.nu**2) / m2.E)

@@ -1,0 +1,1 @@
+"""Losses coupled with the thermal network: fixed point, steady state, transient."""

@@ -1,0 +1,296 @@
+r"""Drag loss of the balls moving through the oil–air mixture (Pouly et al. 2010).
+
+Seed 004 (Darul et al. 2024, eq 21) uses Pouly's form
+
+    P_drag = ρ_mix c_d Z (A_c / 2) (ω_c dm / 2)^3                         [W]
+
+i.e. each of the Z balls, cross-section A_c, moves at the cage pitch-line speed
+v = ω_c dm/2 through a homogeneous mixture of density ρ_mix and feels the sphere
+drag ½ ρ_mix c_d A_c v²; the power is Z F v.
+
+What is and is not confirmed (PHYSICS.md §7.1; searches of the public corpus for
+Pouly 2010's own definitions found nothing beyond seed 004's wording):
+
+* A_c: seed 004 calls it "the cross-sectional area"; taken as the ball's frontal
+  area πD²/4 (no cage-shielding correction).  Unconfirmed; override with ``A_c``.
+* ρ_mix = X ρ_oil + (1 − X) ρ_air and μ_mix = X μ_oil + (1 − X) μ_air (linear
+  rules, unconfirmed – textbook).
+* X from Parker (1984, NASA TP-2275, as quoted by Harris), X = 1e5 W^0.37 / (n dm^1.7)
+  with W in cm³/min, n in r/min, dm in mm.  The number is used as the volume
+  *fraction* (default ``convention="fraction"``), not as a percent: this is what
+  seed 004 §6 implies — "multiplying the oil flow rate by 1.5 leads to an increase
+  of drag losses equal to 16 %" — since 1.5^0.37 = 1.162 only if ρ_mix is dominated
+  by the oil term (X ≈ 7e-2 for the 7210 at 8070 r/min); read as a percent
+  (X ≈ 7e-4) the mixture is mostly air and ×1.5 flow gives ≈ +5 %.  It also gives
+  the typical 0.5–10 % of jet-lubricated bearings.  ``convention="percent"`` is
+  kept to show the alternative.
+* c_d: smooth-sphere correlation of Clift & Gauvin (1970) from ChEDL ``fluids``
+  (``fluids.drag.Clift_Gauvin``; valid Re ≤ 2e5, reduces to Stokes' 24/Re as Re → 0).
+  Pouly used "a sphere C_d(Re) curve" (recalled, unconfirmed).
+* Air density and viscosity from CoolProp (``PropsSI('D'|'V', 'T', T, 'P', p, 'Air')``).
+"""
+from __future__ import annotations
+
+import warnings
+from dataclasses import dataclass
+
+import numpy as np
+
+from thermobear.errors import ExtrapolationWarning, InputError
+
+__all__ = ["oil_volume_fraction_parker", "mixture_density", "mixture_viscosity", "air_properties",
+           "drag_coefficient_sphere", "drag_power_pouly", "drag_loss", "DragLoss"]
+
+_P_ATM = 101325.0
+
+
+def _pos(name, x, allow_zero=False):
+    a = np.asarray(x, dtype=float)
+    bad = ~np.isfinite(a) | ((a < 0) if allow_zero else (a <= 0))
+    if np.any(bad):
+        raise InputError(name, x, "must be finite and " + (">= 0" if allow_zero else "> 0"))
+    return a
+
+
+def _out(x):
+    x = np.asarray(x, dtype=float)
+    return float(x) if x.ndim == 0 else x
+
+
+def oil_volume_fraction_parker(W_oil_cm3_min, n_rpm, dm_mm, convention="fraction"):
+    r"""Oil volume fraction X of the bearing cavity, Parker (1984) [-].
+
+    Parameters
+    ----------
+    W_oil_cm3_min : array_like  oil flow rate through the bearing [cm³/min] (1 L/h = 16.67 cm³/min)
+    n_rpm : array_like          shaft speed [r/min], > 0
+    dm_mm : float               pitch diameter [mm]
+    convention : str            "fraction" (default): the formula's number is the fraction;
+                                "percent": it is a percentage (divided by 100 here)
+
+    Returns
+    -------
+    ndarray  X in [0, 1].  Values above 1 (very low speed) are clipped to 1 with an
+             ExtrapolationWarning: the correlation is outside its range there.
+
+    Notes
+    -----
+    X = 1e5 W^0.37 / (n dm^1.7)   (Parker 1984, NASA TP-2275, as quoted by Harris;
+    PHYSICS.md §7.1, unconfirmed – recalled).  See the module notes for the evidence
+    (seed 004 §6) behind the fraction convention.
+
+    Examples
+    --------
+    Seed 004: 7210, dm 70 mm, 10 L/h, 6500 r/min:
+
+    >>> round(float(oil_volume_fraction_parker(10 * 1000 / 60, 6500, 70.0)), 4)
+    0.0746
+    """
+    W = _pos("W_oil_cm3_min", W_oil_cm3_min, allow_zero=True)
+    n = _pos("n_rpm", n_rpm)
+    dm = _pos("dm_mm", dm_mm)
+    if convention not in ("fraction", "percent"):
+        raise InputError("convention", convention, "must be 'fraction' or 'percent'")
+    X = 1e5 * W ** 0.37 / (n * dm ** 1.7)
+    if convention == "percent":
+        X = X / 100.0
+    if np.any(X > 1.0):
+        warnings.warn(f"Parker's oil fraction exceeds 1 (max {np.max(X):.3g}); clipped to 1 — "
+                      "speed too low for the correlation", ExtrapolationWarning, stacklevel=2)
+        X = np.minimum(X, 1.0)
+    return _out(X)
+
+
+def mixture_density(X, rho_oil, rho_air):
+    r"""Density of the homogeneous oil–air mixture ρ_mix = X ρ_oil + (1 − X) ρ_air [kg/m³].
+
+    Parameters
+    ----------
+    X : array_like        oil volume fraction [-], 0..1
+    rho_oil, rho_air : array_like  densities [kg/m³]
+
+    Examples
+    --------
+    >>> mixture_density(0.0, 860.0, 1.2), mixture_density(1.0, 860.0, 1.2)
+    (1.2, 860.0)
+    """
+    X = np.asarray(X, dtype=float)
+    if np.any((X < 0) | (X > 1)):
+        raise InputError("X", X, "oil volume fraction must lie in [0, 1]")
+    return _out(X * np.asarray(rho_oil, dtype=float) + (1.0 - X) * np.asarray(rho_air, dtype=float))
+
+
+def mixture_viscosity(X, mu_oil, mu_air):
+    r"""Dynamic viscosity of the mixture μ_mix = X μ_oil + (1 − X) μ_air [Pa s] (linear rule, unconfirmed).
+
+    Examples
+    --------
+    >>> mixture_viscosity(0.5, 0.04, 2e-5)
+    0.02001
+    """
+    X = np.asarray(X, dtype=float)
+    if np.any((X < 0) | (X > 1)):
+        raise InputError("X", X, "oil volume fraction must lie in [0, 1]")
+    return _out(X * np.asarray(mu_oil, dtype=float) + (1.0 - X) * np.asarray(mu_air, dtype=float))
+
+
+def air_properties(T_K, p_Pa=_P_ATM):
+    r"""Density [kg/m³] and dynamic viscosity [Pa s] of dry air from CoolProp (tabulated, :mod:`thermobear.lubrication.air`).
+
+    Parameters
+    ----------
+    T_K : array_like   temperature [K]
+    p_Pa : float       pressure [Pa]
+
+    Examples
+    --------
+    >>> rho, mu = air_properties(303.15)
+    >>> round(rho, 3), round(mu * 1e6, 2)
+    (1.165, 18.69)
+    """
+    from thermobear.lubrication.air import air_properties as _air
+    p = _air(_pos("T_K", T_K), _pos("p_Pa", p_Pa))
+    return _out(p["rho"]), _out(p["mu"])
+
+
+def drag_coefficient_sphere(Re, method="Clift_Gauvin"):
+    r"""Drag coefficient of a smooth sphere C_d(Re) from ChEDL ``fluids`` [-].
+
+    Parameters
+    ----------
+    Re : array_like   sphere Reynolds number ρ v D / μ [-], > 0
+    method : str      a key of ``fluids.drag.drag_sphere_correlations``; default
+                      "Clift_Gauvin" (Clift & Gauvin 1970):
+                      C_d = 24/Re (1 + 0.152 Re^0.677) + 0.417 / (1 + 5070 Re^−0.94),
+                      valid Re ≤ 2e5.  "Stokes" gives 24/Re.
+
+    Notes
+    -----
+    Beyond a correlation's documented range an ExtrapolationWarning is issued and
+    the value is still computed.  Correlations that ``fluids`` writes for scalars
+    only are evaluated point by point (slower).
+
+    Examples
+    --------
+    >>> round(float(drag_coefficient_sphere(200.0)), 4)
+    0.7905
+    >>> float(drag_coefficient_sphere(0.01, "Stokes"))
+    2400.0
+    """
+    from fluids.drag import drag_sphere, drag_sphere_correlations
+    Re_ = _pos("Re", Re)
+    if method not in drag_sphere_correlations:
+        raise InputError("method", method, f"must be one of {', '.join(drag_sphere_correlations)}")
+    func, _, Re_max = drag_sphere_correlations[method]
+    if Re_max is not None and np.any(Re_ > Re_max):
+        warnings.warn(f"sphere Reynolds number up to {np.max(Re_):.3g} exceeds the {method} range "
+                      f"(Re <= {Re_max:.3g})", ExtrapolationWarning, stacklevel=2)
+    try:
+        cd = func(Re_)
+    except (TypeError, ValueError):
+        cd = np.vectorize(lambda r: drag_sphere(r, Method=method), otypes=[float])(Re_)
+    return _out(cd)
+
+
+def drag_power_pouly(rho_mix, c_d, Z, D, omega_c, dm, A_c=None):
+    r"""Drag power of the balls of one bearing, Pouly et al. (2010) [W].
+
+    Parameters
+    ----------
+    rho_mix : array_like  mixture density [kg/m³]
+    c_d : array_like      drag coefficient of a ball [-]
+    Z : int               number of balls
+    D : float             ball diameter [m]
+    omega_c : array_like  cage angular speed [rad/s]
+    dm : float            pitch diameter [m]
+    A_c : float           cross-sectional area of a ball [m²]; default πD²/4 (unconfirmed)
+
+    Notes
+    -----
+    P_drag = ρ_mix c_d Z (A_c/2) (ω_c dm/2)^3   (seed 004 eq 21, after Pouly et al. 2010,
+    Tribol. Trans. 53:957–967).
+
+    Examples
+    --------
+    >>> round(float(drag_power_pouly(60.0, 0.45, 15, 12.7e-3, 300.0, 70e-3)), 2)
+    29.7
+    """
+    A = np.pi * D ** 2 / 4.0 if A_c is None else A_c
+    v = np.asarray(omega_c, dtype=float) * dm / 2.0
+    return _out(np.asarray(rho_mix, dtype=float) * np.asarray(c_d, dtype=float) * Z * (A / 2.0) * np.abs(v) ** 3)
+
+
+@dataclass(frozen=True)
+class DragLoss:
+    """Drag loss and the quantities behind it (arrays broadcast over operating points).
+
+    P_W [W], v [m/s] ball pitch-line speed, X [-] oil fraction, rho_mix [kg/m³],
+    mu_mix [Pa s], Re [-], c_d [-], rho_air [kg/m³], mu_air [Pa s].
+    """
+
+    P_W: np.ndarray
+    v: np.ndarray
+    X: np.ndarray
+    rho_mix: np.ndarray
+    mu_mix: np.ndarray
+    Re: np.ndarray
+    c_d: np.ndarray
+    rho_air: np.ndarray
+    mu_air: np.ndarray
+
+
+def drag_loss(Z, D, dm, omega_c, X, rho_oil, mu_oil, T_K, p_Pa=_P_ATM, cd_method="Clift_Gauvin", A_c=None):
+    r"""Drag loss of the balls through the oil–air mixture (Pouly 2010; seed 004 eq 21) [W].
+
+    Parameters
+    ----------
+    Z : int               number of balls
+    D : float             ball diameter [m]
+    dm : float            pitch diameter [m]
+    omega_c : array_like  cage angular speed [rad/s], > 0
+    X : array_like        oil volume fraction [-] (see :func:`oil_volume_fraction_parker`)
+    rho_oil : array_like  oil density at the mixture temperature [kg/m³]
+    mu_oil : array_like   oil dynamic viscosity at the mixture temperature [Pa s]
+    T_K : array_like      mixture temperature [K] (air properties from CoolProp)
+    p_Pa : float          cavity pressure [Pa]
+    cd_method : str       sphere-drag correlation of ``fluids`` (default Clift–Gauvin)
+    A_c : float           ball cross-section [m²]; default πD²/4
+
+    Returns
+    -------
+    DragLoss   P_W and the intermediate quantities
+
+    Notes
+    -----
+    v = ω_c dm/2, ρ_mix = X ρ_oil + (1 − X) ρ_air, μ_mix = X μ_oil + (1 − X) μ_air,
+    Re = ρ_mix v D / μ_mix, c_d = C_d(Re), P = ρ_mix c_d Z (A_c/2) v³.
+
+    Examples
+    --------
+    Seed 004, 7210 (Z 15, D 12.7 mm estimated, dm 70 mm, 40°) at 6500 r/min, 10 L/h, 30 °C
+    (ρ_oil 857 kg/m³, μ_oil 0.0494 Pa s from the seed 004 oil):
+
+    >>> import numpy as np
+    >>> wc = 6500 * np.pi / 30 * (1 - 12.7 / 70 * np.cos(np.radians(40))) / 2
+    >>> X = oil_volume_fraction_parker(10 * 1000 / 60, 6500, 70.0)
+    >>> r = drag_loss(15, 12.7e-3, 70e-3, wc, X, 857.0, 0.0494, 303.15)
+    >>> round(r.P_W, 1), round(r.Re), round(r.c_d, 3)
+    (26.8, 2287, 0.403)
+    """
+    if int(Z) != Z or Z < 1:
+        raise InputError("Z", Z, "number of balls must be an integer >= 1")
+    _pos("D", D)
+    _pos("dm", dm)
+    wc = _pos("omega_c", omega_c)
+    _pos("rho_oil", rho_oil)
+    _pos("mu_oil", mu_oil)
+    rho_air, mu_air = air_properties(T_K, p_Pa)
+    rho_mix = mixture_density(X, rho_oil, rho_air)
+    mu_mix = mixture_viscosity(X, mu_oil, mu_air)
+    v = wc * dm / 2.0
+    Re = np.asarray(rho_mix) * v * D / np.asarray(mu_mix)
+    c_d = drag_coefficient_sphere(Re, cd_method)
+    P = drag_power_pouly(rho_mix, c_d, Z, D, wc, dm, A_c)
+    Xb = np.broadcast_to(np.asarray(X, dtype=float), np.shape(P))
+    return DragLoss(P_W=P, v=_out(v), X=_out(Xb), rho_mix=rho_mix, mu_mix=mu_mix, Re=_out(Re), c_d=c_d,
+                    rho_air=rho_air, mu_air=mu_air)

@@ -1,0 +1,1 @@
+"""Lubricant properties, air properties, film thickness and lubrication regime."""

@@ -1,0 +1,131 @@
+r"""Dry-air properties from CoolProp, tabulated for speed.
+
+CoolProp's ``PropsSI`` (Lemmon et al. 2000 pseudo-pure air; Lemmon & Jacobsen
+2004 transport) costs about a millisecond per call, and importing CoolProp
+about 1.7 s per process.  At the cavity pressure (1 atm) this module reads
+density, viscosity, conductivity and c_p on 200–600 K at 1 K steps from
+``materials/air_1atm.toml`` — a table written from ``PropsSI`` by
+:func:`write_table` (its header names the CoolProp version) — and interpolates
+with cubic splines (relative error < 1e-6 against ``PropsSI``; tests/test_air.py
+checks the shipped table against the installed CoolProp).  Other pressures go
+to ``PropsSI`` directly.
+"""
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+from scipy.interpolate import CubicSpline
+
+from thermobear.errors import InputError
+
+__all__ = ["air_properties", "P_ATM", "T_RANGE_K"]
+
+P_ATM = 101325.0          #: cavity pressure used for the table [Pa]
+T_RANGE_K = (200.0, 600.0)
+_KEYS = ("rho", "mu", "k", "cp")
+
+
+def _propssi(T, p):
+    from CoolProp.CoolProp import PropsSI
+    return {"rho": PropsSI("D", "T", T, "P", p, "Air"), "mu": PropsSI("V", "T", T, "P", p, "Air"),
+            "k": PropsSI("L", "T", T, "P", p, "Air"), "cp": PropsSI("C", "T", T, "P", p, "Air")}
+
+
+_TABLE_KEYS = {"rho": "rho_kg_m3", "mu": "mu_Pa_s", "k": "k_W_mK", "cp": "cp_J_kgK"}
+
+
+def _grid_K() -> np.ndarray:
+    return np.arange(T_RANGE_K[0], T_RANGE_K[1] + 0.5, 1.0)
+
+
+@lru_cache(maxsize=1)
+def _table():
+    from thermobear.files import data_dir, read_toml
+    d = read_toml(str(data_dir("materials") / "air_1atm.toml"))
+    where, fix = "materials/air_1atm.toml", " (regenerate it with thermobear.lubrication.air.write_table)"
+    cols = []
+    try:
+        T = np.asarray(d["T_K"], float)
+        for k in _KEYS:
+            cols.append(np.asarray(d[_TABLE_KEYS[k]], float))
+    except (KeyError, TypeError, ValueError) as exc:
+        raise InputError(where, str(exc), "columns T_K, " + ", ".join(_TABLE_KEYS.values()) + " of numbers" + fix) from None
+    if not np.array_equal(T, _grid_K()) or d.get("p_Pa") != P_ATM:
+        raise InputError(where, d.get("p_Pa"), f"a 1 K grid on {T_RANGE_K} K at {P_ATM} Pa" + fix)
+    if any(c.shape != T.shape or not np.all(np.isfinite(c) & (c > 0)) for c in cols):
+        raise InputError(where, None, f"{T.size} finite, positive values per column" + fix)
+    return CubicSpline(T, np.column_stack(cols))   # one spline, 4 columns
+
+
+def write_table(path) -> None:
+    """Write the 1 atm air table (``materials/air_1atm.toml``) from CoolProp's ``PropsSI``.
+
+    Run it when CoolProp's air model changes: ``python -c "import thermobear.lubrication.air as a;
+    a.write_table('materials/air_1atm.toml')"``; tests/test_air.py compares the shipped table with the
+    installed CoolProp."""
+    import CoolProp
+    T = _grid_K()
+    props = _propssi(T, P_ATM)
+    lines = ["# Dry air at 1 atm, 200-600 K in 1 K steps: thermobear.lubrication.air interpolates it with cubic splines.",
+             f"# Source: CoolProp {CoolProp.__version__} PropsSI(\"D\"|\"V\"|\"L\"|\"C\", \"T\", T, \"P\", 101325, \"Air\")",
+             "# (Lemmon et al. 2000 pseudo-pure air; Lemmon & Jacobsen 2004 viscosity and conductivity).",
+             "# Written by thermobear.lubrication.air.write_table; checked against the installed CoolProp by tests/test_air.py.",
+             'name = "air_1atm"', f"p_Pa = {P_ATM!r}",
+             "T_K = [" + ", ".join(f"{t:.1f}" for t in T) + "]"]
+    for k in _KEYS:
+        lines.append(f"{_TABLE_KEYS[k]} = [" + ", ".join(repr(float(v)) for v in np.asarray(props[k], float)) + "]")
+    with open(path, "w", encoding="utf-8") as fh:
+        fh.write("\n".join(lines) + "\n")
+
+
+@lru_cache(maxsize=1)
+def _scalar_table():
+    """The spline's polynomial pieces as Python floats, per 1 K interval: (c0, c1, c2, c3) per
+    property, v = c3 + c2 s + c1 s² + c0 s³ with s = T − T_i (the order in which scipy's PPoly sums)."""
+    sp = _table()
+    c = sp.c                                   # (4, n_intervals, 4 properties)
+    return [tuple(tuple(float(c[m, i, q]) for m in range(4)) for q in range(4)) for i in range(c.shape[1])]
+
+
+def _air_scalar(T):
+    """Air properties at one temperature [K] inside the table (rho, mu, k, cp), evaluated as
+    :func:`_table`'s spline does, without the array machinery."""
+    tab = _scalar_table()
+    i = min(int(T - T_RANGE_K[0]), len(tab) - 1)
+    s = T - (T_RANGE_K[0] + i)
+    s2 = s * s
+    s3 = s2 * s
+    return tuple(c3 + c2 * s + c1 * s2 + c0 * s3 for c0, c1, c2, c3 in tab[i])
+
+
+def air_properties(T_K, p_Pa=P_ATM):
+    r"""Dry-air properties [SI] at temperature ``T_K`` [K] and pressure ``p_Pa`` [Pa].
+
+    Returns
+    -------
+    dict  rho [kg/m³], mu [Pa s], k [W/(m K)], cp [J/(kg K)], nu = mu/rho [m²/s],
+          Pr = mu cp / k [-]; floats for scalar input, arrays otherwise
+
+    Examples
+    --------
+    >>> p = air_properties(300.0)
+    >>> round(p["rho"], 3), round(p["k"], 4), round(p["Pr"], 3)
+    (1.177, 0.0264, 0.707)
+    """
+    if isinstance(T_K, (float, np.floating)) and p_Pa == P_ATM and T_RANGE_K[0] <= T_K <= T_RANGE_K[1]:
+        rho, mu, k, cp = _air_scalar(float(T_K))        # one temperature (thermal elements): no arrays
+        return {"rho": rho, "mu": mu, "k": k, "cp": cp, "nu": mu / rho, "Pr": mu * cp / k}
+    T = np.asarray(T_K, dtype=float)
+    if np.any(~np.isfinite(T)) or np.any(T < T_RANGE_K[0]) or np.any(T > T_RANGE_K[1]):
+        raise InputError("T_K", T_K, f"air properties are provided for {T_RANGE_K[0]:g}..{T_RANGE_K[1]:g} K")
+    if not (np.isfinite(p_Pa) and p_Pa > 0):
+        raise InputError("p_Pa", p_Pa, "pressure must be > 0 [Pa]")
+    if abs(p_Pa - P_ATM) < 1e-9 * P_ATM:
+        v = _table()(T)
+        out = {k: v[..., i] for i, k in enumerate(_KEYS)}
+    else:
+        out = {k: np.asarray(v, float) for k, v in _propssi(T, float(p_Pa)).items()}
+    out["nu"] = out["mu"] / out["rho"]
+    out["Pr"] = out["mu"] * out["cp"] / out["k"]
+    return {k: (float(v) if np.ndim(v) == 0 else np.asarray(v)) for k, v in out.items()}

@@ -1,0 +1,684 @@
+r"""EHL film thickness, Moes parameters, lubrication regime and specific film thickness.
+
+Conventions (PHYSICS.md §5, §12): x is the rolling direction; ``Rx``, ``Ry`` the
+reduced radii in the rolling / transverse direction (Ry ≥ Rx for ball–race
+contacts); ``u`` is the MEAN entrainment speed u = (u1 + u2)/2 [m/s] (Hamrock
+convention) at every public function — the Moes / NVM groups use the sum speed
+2u internally; ``eta`` the inlet dynamic viscosity [Pa s]; ``alpha_p`` the
+pressure–viscosity coefficient [1/Pa]; ``E_prime`` the reduced modulus
+2/E' = (1−ν1²)/E1 + (1−ν2²)/E2 [Pa].  All functions broadcast numpy arrays.
+
+Limits, defined so that no NaN and no floating-point warning is produced:
+
+* zero speed (u = 0): every film is 0; the Moes regime is the u → 0 limit
+  (iso-viscous elastic, "IVE", for a loaded contact);
+* zero load (Q = 0): there is no contact, and the film is reported as 0 **by
+  convention** (the rigid-isoviscous film grows without bound, h ∝ Q^-2, as
+  Q → 0); the regime is "IVR".
+
+Regimes (PHYSICS.md §5.3; seed 004 §3): "IVR" iso-viscous rigid, "IVE"
+iso-viscous elastic, "PVR" piezo-viscous rigid, "EHL" piezo-viscous elastic.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from thermobear.arrays import finite_range
+
+from thermobear.errors import InputError
+
+__all__ = [
+    "hamrock_dowson_groups", "film_thickness", "moes_parameters", "moes_N",
+    "nvm_asymptotes", "nvm_H", "film_thickness_nvm", "composite_roughness",
+    "specific_film_thickness", "Regime", "moes_regime", "lubrication_regime",
+    "MoesMapBoundaries", "moes_map_boundaries", "REGIMES",
+]
+
+REGIMES = ("IVR", "IVE", "PVR", "EHL")
+
+_TINY = 1e-300     # floor inside logarithms (zero load / zero speed limits)
+_EXP_MAX = 700.0   # clip of exponents so ratios stay finite (e^700 ≈ 1e304)
+
+
+# ---------------------------------------------------------------------------
+# input checks
+# ---------------------------------------------------------------------------
+def _arr(name, v, *, positive=False, nonneg=False):
+    a = np.asarray(v, dtype=float)
+    if not a.size:
+        return a
+    r = finite_range(a)
+    if r is None:
+        raise InputError(name, v, "must be finite")
+    if positive and r[0] <= 0:
+        raise InputError(name, v, "must be > 0")
+    if nonneg and r[0] < 0:
+        raise InputError(name, v, "must be >= 0")
+    return a
+
+
+def _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, alpha_positive):
+    Q = _arr("Q", Q, nonneg=True)
+    Rx = _arr("Rx", Rx, positive=True)
+    Ry = _arr("Ry", Ry, positive=True)
+    if np.any(Ry < Rx * (1.0 - 1e-12)):
+        raise InputError("Ry/Rx", Ry / Rx, "must be >= 1 (Ry transverse, Rx rolling direction; "
+                         "these formulas were fitted for Ry >= Rx)")
+    u = _arr("u", u, nonneg=True)
+    eta = _arr("eta", eta, positive=True)
+    alpha_p = _arr("alpha_p", alpha_p, positive=alpha_positive, nonneg=True)
+    E_prime = _arr("E_prime", E_prime, positive=True)
+    return np.broadcast_arrays(Q, Rx, Ry, u, eta, alpha_p, E_prime)
+
+
+def _out(x, *inputs):
+    x = np.asarray(x, dtype=float)
+    return float(x) if all(np.ndim(i) == 0 for i in inputs) else x
+
+
+# ---------------------------------------------------------------------------
+# Hamrock–Dowson
+# ---------------------------------------------------------------------------
+def hamrock_dowson_groups(Q, Rx, Ry, u, eta, alpha_p, E_prime):
+    r"""Dimensionless groups of Hamrock & Dowson (mean-velocity convention).
+
+    Parameters
+    ----------
+    Q : array_like        normal load [N]
+    Rx, Ry : array_like   reduced radii, rolling / transverse direction [m]
+    u : array_like        mean entrainment speed (u1+u2)/2 [m/s]
+    eta : array_like      inlet dynamic viscosity [Pa s]
+    alpha_p : array_like  pressure–viscosity coefficient [1/Pa]
+    E_prime : array_like  reduced modulus E' [Pa]
+
+    Returns
+    -------
+    (U, G, W, kappa)  U = η u/(E' Rx), G = α_p E', W = Q/(E' Rx²),
+                      κ = 1.0339 (Ry/Rx)^0.636 (Hamrock & Brewe 1983 ellipticity)
+
+    Notes
+    -----
+    Hamrock & Dowson, J. Lubr. Technol. 99 (1977) 264; PHYSICS.md §5.1; seed 000
+    eq 16 and seed 004 eq 10 (U*, G*, W*).
+
+    Examples
+    --------
+    >>> U, G, W, k = hamrock_dowson_groups(4527., 5.109e-3, 165.1e-3, 6.25, 0.04, 2.3e-8, 228e9)
+    >>> f"{U:.3g} {G:.4g} {W:.3g} {k:.3g}"
+    '2.15e-10 5244 0.000761 9.43'
+    """
+    Q, Rx, Ry, u, eta, alpha_p, E_prime = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
+    U = eta * u / (E_prime * Rx)
+    G = alpha_p * E_prime
+    W = Q / (E_prime * Rx**2)
+    kappa = 1.0339 * (Ry / Rx) ** 0.636
+    return tuple(_out(x, Q) for x in (U, G, W, kappa))
+
+
+def film_thickness(Q, Rx, Ry, u, eta, alpha_p, E_prime, kind="min", method="hamrock_dowson"):
+    r"""EHL film thickness of a point contact [m].
+
+    Parameters
+    ----------
+    Q : array_like        normal load [N], >= 0
+    Rx, Ry : array_like   reduced radii, rolling / transverse direction [m], Ry >= Rx
+    u : array_like        mean entrainment speed (u1+u2)/2 [m/s], >= 0
+    eta : array_like      inlet dynamic viscosity [Pa s]
+    alpha_p : array_like  pressure–viscosity coefficient [1/Pa]
+    E_prime : array_like  reduced modulus E' [Pa]
+    kind : {"min", "central"}
+    method : {"hamrock_dowson", "nvm", "seed000_eq15"}
+        "hamrock_dowson" (default) — Hamrock & Dowson (1977):
+            h_c   = Rx 2.69 U^0.67 G^0.53 W^-0.067 (1 − 0.61 e^(−0.73 κ))
+            h_min = Rx 3.63 U^0.68 G^0.49 W^-0.073 (1 − e^(−0.68 κ))
+        "nvm" (central only) — Nijenbanning, Venner & Moes (1994), see
+            :func:`film_thickness_nvm`.
+        "seed000_eq15" (min only) — the form PRINTED in seed 000 eq 15
+            (Ianuș et al.): 3.63 Rx U^0.68 G^0.49 W^-0.073 (1 − 0.61 e^(−0.68 k)),
+            k = Ry/Rx.  Its ellipticity factor differs from Hamrock–Dowson's
+            (1 − e^(−0.68 κ)); for seed 000's k ≈ 17.7 both are 1 within 1.3 %.
+            Offered only to reproduce that paper.
+
+    Returns
+    -------
+    ndarray  film thickness [m]; 0 where u = 0 and, by convention, where Q = 0
+
+    Notes
+    -----
+    Groups as in :func:`hamrock_dowson_groups`.  Fitted for κ ≈ 1–8,
+    isothermal, Newtonian, fully flooded, smooth surfaces (PHYSICS.md §5.1).
+    Requires alpha_p > 0 (G = 0 would give a zero film, which is not the
+    iso-viscous answer — use method="nvm").
+
+    Examples
+    --------
+    >>> h = film_thickness(4527., 5.109e-3, 165.1e-3, 6.25, 0.04, 2.3e-8, 228e9, kind="central")
+    >>> round(h * 1e6, 2)
+    0.69
+    """
+    if kind not in ("min", "central"):
+        raise InputError("film_thickness kind", kind, 'must be "min" or "central"')
+    if method == "nvm":
+        if kind != "central":
+            raise InputError("film_thickness method", method, 'NVM gives the central film only: use kind="central"')
+        return film_thickness_nvm(Q, Rx, Ry, u, eta, alpha_p, E_prime)
+    if method not in ("hamrock_dowson", "seed000_eq15"):
+        raise InputError("film_thickness method", method, 'must be "hamrock_dowson", "nvm" or "seed000_eq15"')
+    if method == "seed000_eq15" and kind != "min":
+        raise InputError("film_thickness method", method, 'seed 000 eq 15 is a minimum film: use kind="min"')
+    args = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, True)
+    Qa, Rxa, Rya, ua, etaa, alphaa, Ea = args
+    loaded = Qa > 0
+    U = etaa * ua / (Ea * Rxa)
+    G = alphaa * Ea
+    W = np.where(loaded, Qa, 1.0) / (Ea * Rxa**2)
+    ratio = Rya / Rxa
+    kappa = 1.0339 * ratio**0.636
+    if kind == "central":
+        H = 2.69 * U**0.67 * G**0.53 * W**-0.067 * (1.0 - 0.61 * np.exp(-0.73 * kappa))
+    elif method == "seed000_eq15":
+        H = 3.63 * U**0.68 * G**0.49 * W**-0.073 * (1.0 - 0.61 * np.exp(-0.68 * ratio))
+    else:
+        H = 3.63 * U**0.68 * G**0.49 * W**-0.073 * (1.0 - np.exp(-0.68 * kappa))
+    return _out(np.where(loaded, H * Rxa, 0.0), Q, Rx, Ry, u, eta, alpha_p, E_prime)
+
+
+# ---------------------------------------------------------------------------
+# Moes parameters and NVM
+# ---------------------------------------------------------------------------
+def moes_parameters(Q, Rx, Ry, u, eta, alpha_p, E_prime):
+    r"""Moes dimensionless parameters M, L and the radius ratio D.
+
+    Parameters
+    ----------
+    Q, Rx, Ry, u, eta, alpha_p, E_prime : array_like
+        as in :func:`film_thickness` (u is the MEAN entrainment speed [m/s])
+
+    Returns
+    -------
+    (M, L, D)  M = W (2U)^(-3/4), L = G (2U)^(1/4), D = Rx/Ry ≤ 1 [-]
+
+    Notes
+    -----
+    Moes (1992); Nijenbanning, Venner & Moes, Wear 176 (1994) 217; seed 004
+    eq 9 (with 2U*); PHYSICS.md §5.2.  U, G, W are the Hamrock groups of
+    :func:`hamrock_dowson_groups`, so 2U is the sum-velocity group.  M = inf
+    where u = 0, M = 0 where Q = 0.
+
+    Examples
+    --------
+    >>> M, L, D = moes_parameters(4527., 5.109e-3, 165.1e-3, 6.25, 0.04, 2.3e-8, 228e9)
+    >>> round(M), round(L, 1), round(D, 4)
+    (8066, 23.9, 0.0309)
+    """
+    Qa, Rxa, Rya, ua, etaa, alphaa, Ea = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
+    U2 = 2.0 * etaa * ua / (Ea * Rxa)
+    W = Qa / (Ea * Rxa**2)
+    moving = U2 > 0
+    M = np.where(moving, W * np.where(moving, U2, 1.0) ** -0.75, np.where(Qa > 0, np.inf, 0.0))
+    L = alphaa * Ea * U2**0.25
+    D = Rxa / Rya
+    return tuple(_out(x, Q, Rx, Ry, u, eta, alpha_p, E_prime) for x in (M, L, D))
+
+
+def moes_N(M, D):
+    r"""Seed 004's load parameter N = M D^(1/2) = W (2U)^(-3/4) λ^(1/2), λ = Rx/Ry.
+
+    Parameters
+    ----------
+    M : array_like  Moes load parameter [-]
+    D : array_like  Rx/Ry (seed 004's λ) [-]
+
+    Returns
+    -------
+    ndarray  N [-]
+
+    Notes
+    -----
+    Seed 004 eq 9 prints N = W* (2U*)^(3/4) λ^(1/2); the exponent of 2U* must
+    be −3/4 (a minus sign lost in the text): N is used as a load parameter in
+    the Biboulet PVR transition N/6.6 (seed 004 eq 19), which seed 000 eq 23
+    writes M = 0.5549 k^-0.6029 W U^-0.75 — load over a power of speed.  With
+    +3/4 N would grow with speed.
+
+    Examples
+    --------
+    >>> round(moes_N(8064.0, 0.0309), 1)
+    1417.5
+    """
+    return _out(np.asarray(M, dtype=float) * np.sqrt(np.asarray(D, dtype=float)), M, D)
+
+
+def _ln_asymptote_consts(D):
+    """The D-dependent parts of the logs of the NVM asymptotes (PHYSICS.md §5.2):
+    (c_RI, c_EI, c_RP, c_EP, ln h00) with ln H_RI = c_RI − 2 ln M, ln H_EI = c_EI − (2/15) ln M,
+    ln H_RP = c_RP + (2/3) ln L, ln H_EP = c_EP − ln M/12 + (3/4) ln L.  Split off so that a caller
+    evaluating many temperatures at one geometry (:func:`thermobear.losses.evaluate_losses`)
+    computes them once; :func:`_ln_asymptotes` adds the M, L terms in the same order (same bits)."""
+    lnD = np.log(D)
+    e = np.log1p(0.006 * lnD + 0.63 * D ** (4.0 / 7.0))
+    c_RI = np.log(145.0) - (15.0 / 7.0) * np.log1p(0.796 * D ** (14.0 / 15.0)) - lnD
+    c_EI = np.log(3.18) - (14.0 / 25.0) * e - lnD / 15.0
+    c_RP = np.log(1.29) - (2.0 / 3.0) * np.log1p(0.691 * D)
+    c_EP = np.log(1.48) - (7.0 / 20.0) * e - lnD / 24.0
+    ln_h00 = np.log(1.8) - lnD
+    return c_RI, c_EI, c_RP, c_EP, ln_h00
+
+
+def _ln_asymptotes_from(consts, lnM, lnL):
+    """Logs of the four NVM asymptotes and of h00 from :func:`_ln_asymptote_consts` and ln M, ln L."""
+    c_RI, c_EI, c_RP, c_EP, ln_h00 = consts
+    return (c_RI - 2.0 * lnM, c_EI - (2.0 / 15.0) * lnM, c_RP + (2.0 / 3.0) * lnL,
+            c_EP - lnM / 12.0 + 0.75 * lnL, ln_h00)
+
+
+def _ln_asymptotes(lnM, lnL, D):
+    """Natural logs of the four NVM asymptotes and of the h00 cap (PHYSICS.md §5.2)."""
+    return _ln_asymptotes_from(_ln_asymptote_consts(D), lnM, lnL)
+
+
+def _ln_blend_ratios(ln_RI, ln_EI, ln_RP, ln_EP, ln_h00):
+    """(ln iso − ln piezo, ln H_RI − ln H_EI, ln H_EP − ln H_RP): the dominance ratios of the NVM
+    blend whose signs decide the regime (see :func:`moes_regime`), in logs."""
+    ln_EIc = -0.25 * np.logaddexp(-4.0 * ln_EI, -4.0 * ln_h00)
+    ln_iso = (2.0 / 3.0) * np.logaddexp(1.5 * ln_RI, 1.5 * ln_EIc)
+    ln_piezo = -0.125 * np.logaddexp(-8.0 * ln_RP, -8.0 * ln_EP)
+    return ln_iso - ln_piezo, ln_RI - ln_EI, ln_EP - ln_RP
+
+
+def _ln_branches(lnM, lnL, D):
+    ln_RI, ln_EI, ln_RP, ln_EP, ln_h00 = _ln_asymptotes(lnM, lnL, D)
+    ln_EIc = -0.25 * np.logaddexp(-4.0 * ln_EI, -4.0 * ln_h00)          # (H_EI^-4 + h00^-4)^(-1/4)
+    ln_iso = (2.0 / 3.0) * np.logaddexp(1.5 * ln_RI, 1.5 * ln_EIc)      # (H_RI^1.5 + H_EI'^1.5)^(2/3)
+    ln_piezo = -0.125 * np.logaddexp(-8.0 * ln_RP, -8.0 * ln_EP)        # (H_RP^-8 + H_EP^-8)^(-1/8)
+    s = 1.5 * (1.0 + np.exp(-1.2 * np.exp(np.clip(ln_EI - ln_RI, -_EXP_MAX, _EXP_MAX))))
+    ln_H = np.logaddexp(s * ln_iso, s * ln_piezo) / s
+    return ln_H, ln_iso, ln_piezo, ln_RI, ln_EI, ln_RP, ln_EP
+
+
+def _lnML(M, L):
+    M = np.asarray(M, dtype=float)
+    L = np.asarray(L, dtype=float)
+    lnM = np.log(np.clip(M, _TINY, 1.0 / _TINY))
+    lnL = np.log(np.clip(L, _TINY, 1.0 / _TINY))
+    return lnM, lnL
+
+
+def _check_MLD(M, L, D):
+    M = _arr("M", np.where(np.isposinf(np.asarray(M, dtype=float)), 1.0 / _TINY, M), nonneg=True)
+    L = _arr("L", L, nonneg=True)
+    D = _arr("D", D, positive=True)
+    if np.any(D > 1.0 + 1e-12):
+        raise InputError("D = Rx/Ry", D, "must lie in (0, 1]")
+    return M, L, D
+
+
+@dataclass(frozen=True)
+class _Asym:
+    H_RI: np.ndarray
+    H_EI: np.ndarray
+    H_RP: np.ndarray
+    H_EP: np.ndarray
+
+
+def nvm_asymptotes(M, L, D):
+    r"""The four asymptotic central films of Nijenbanning, Venner & Moes (1994).
+
+    Parameters
+    ----------
+    M, L : array_like  Moes load and lubricant parameters [-]
+    D : array_like     Rx/Ry [-]
+
+    Returns
+    -------
+    object with H_RI, H_EI, H_RP, H_EP [-]  (H = (h/Rx)(2U)^(-1/2)):
+        H_RI = 145 (1 + 0.796 D^(14/15))^(-15/7) D^-1 M^-2
+        H_EI = 3.18 (1 + 0.006 ln D + 0.63 D^(4/7))^(-14/25) D^(-1/15) M^(-2/15)
+        H_RP = 1.29 (1 + 0.691 D)^(-2/3) L^(2/3)
+        H_EP = 1.48 (1 + 0.006 ln D + 0.63 D^(4/7))^(-7/20) D^(-1/24) M^(-1/12) L^(3/4)
+
+    Notes
+    -----
+    Nijenbanning, Venner & Moes, Wear 176 (1994) 217–229, coefficients as in
+    PHYSICS.md §5.2 (confirmed there against a public implementation).
+
+    Examples
+    --------
+    >>> a = nvm_asymptotes(8064.0, 23.9, 0.0309)
+    >>> round(float(a.H_EP), 2)
+    8.55
+    """
+    M, L, D = _check_MLD(M, L, D)
+    lnM, lnL = _lnML(M, L)
+    ln = _ln_asymptotes(lnM, lnL, D)[:4]
+    vals = [np.exp(np.clip(x, -_EXP_MAX, _EXP_MAX)) for x in ln]
+    return _Asym(*[_out(v, M, L, D) for v in vals])
+
+
+def nvm_H(M, L, D):
+    r"""Dimensionless central film H = (h_c/Rx)(2U)^(-1/2) of Nijenbanning, Venner & Moes.
+
+    Parameters
+    ----------
+    M, L : array_like  Moes load and lubricant parameters [-] (see :func:`moes_parameters`)
+    D : array_like     Rx/Ry, 0 < D ≤ 1 [-]
+
+    Returns
+    -------
+    ndarray  H [-]
+
+    Notes
+    -----
+    H = { [H_RI^(3/2) + (H_EI^-4 + h00^-4)^(-3/8)]^(2s/3) + (H_RP^-8 + H_EP^-8)^(-s/8) }^(1/s),
+    s = 1.5 (1 + exp(−1.2 H_EI/H_RI)),  h00 = 1.8 D^-1
+    (Nijenbanning, Venner & Moes 1994; asymptotes in :func:`nvm_asymptotes`).
+
+    Form implemented: the dimensionally consistent one of PHYSICS.md §5.2, in
+    which both branches enter as H^s (the point-contact analogue of Moes'
+    line-contact blend (iso^s + piezo^s)^(1/s)).  A public implementation
+    raises the iso branch to 2/(3s) instead of 2s/3, which adds H to H^s; it
+    cannot be right at both ends (at low M it does not tend to H_RI).  The two
+    agree where the piezo branch dominates (209 inner contact: 8.65 vs 8.63).
+    The original paper could not be consulted here.  Computed in logarithms
+    so that M → 0 or ∞ gives no overflow.
+
+    Examples
+    --------
+    >>> round(float(nvm_H(8064.0, 23.9, 0.0309)), 2)
+    8.65
+    """
+    M, L, D = _check_MLD(M, L, D)
+    lnM, lnL = _lnML(M, L)
+    ln_H = _ln_branches(lnM, lnL, D)[0]
+    return _out(np.exp(np.clip(ln_H, -_EXP_MAX, _EXP_MAX)), M, L, D)
+
+
+def film_thickness_nvm(Q, Rx, Ry, u, eta, alpha_p, E_prime):
+    r"""Central film thickness by Nijenbanning, Venner & Moes (1994) [m].
+
+    Parameters
+    ----------
+    Q, Rx, Ry, u, eta, alpha_p, E_prime : array_like
+        as in :func:`film_thickness` (u is the MEAN entrainment speed [m/s];
+        alpha_p >= 0 — NVM covers the iso-viscous regimes)
+
+    Returns
+    -------
+    ndarray  h_c = H Rx (2U)^(1/2) [m]; 0 where u = 0 and (by convention) where Q = 0
+
+    Notes
+    -----
+    Valid over all four regimes (IVR, IVE, PVR, EHL), unlike Hamrock–Dowson.
+    For narrow ellipses (D ≈ 0.03) NVM gives 20–30 % more than Hamrock–Dowson
+    (PHYSICS.md §5.2: 209 inner contact 0.92 vs 0.69 µm).
+
+    Examples
+    --------
+    >>> h = film_thickness_nvm(4527., 5.109e-3, 165.1e-3, 6.25, 0.04, 2.3e-8, 228e9)
+    >>> round(h * 1e6, 2)
+    0.92
+    """
+    Qa, Rxa, Rya, ua, etaa, alphaa, Ea = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
+    U2 = 2.0 * etaa * ua / (Ea * Rxa)
+    W = Qa / (Ea * Rxa**2)
+    ok = (U2 > 0) & (Qa > 0)
+    lnU2 = np.log(np.where(ok, U2, 1.0))
+    lnM = np.log(np.where(ok, W, 1.0)) - 0.75 * lnU2
+    lnL = np.log(np.clip(alphaa * Ea, _TINY, None)) + 0.25 * lnU2
+    D = Rxa / Rya
+    ln_H = _ln_branches(lnM, lnL, D)[0]
+    ln_h = np.where(ok, ln_H + np.log(Rxa) + 0.5 * lnU2, 0.0)
+    return _out(np.where(ok, np.exp(np.clip(ln_h, -_EXP_MAX, _EXP_MAX)), 0.0),
+                Q, Rx, Ry, u, eta, alpha_p, E_prime)
+
+
+# ---------------------------------------------------------------------------
+# Specific film thickness
+# ---------------------------------------------------------------------------
+def composite_roughness(Rq1, Rq2):
+    r"""Composite RMS roughness σ = √(Rq1² + Rq2²) [m].
+
+    Examples
+    --------
+    >>> round(composite_roughness(0.06e-6, 0.03e-6) * 1e6, 5)
+    0.06708
+    """
+    a = _arr("Rq1", Rq1, nonneg=True)
+    b = _arr("Rq2", Rq2, nonneg=True)
+    return _out(np.hypot(a, b), Rq1, Rq2)
+
+
+def specific_film_thickness(h, Rq1, Rq2):
+    r"""Specific film thickness Λ = h / √(Rq1² + Rq2²) [-].
+
+    Parameters
+    ----------
+    h : array_like         film thickness, usually h_min [m]
+    Rq1, Rq2 : array_like  RMS roughness of the two surfaces [m] (Rq, not Ra)
+
+    Returns
+    -------
+    ndarray  Λ [-]; rough guide: < 1 boundary, 1–3 mixed, > 3 full film
+
+    Notes
+    -----
+    Seed 000 eq 19; PHYSICS.md §5.4.  Both roughnesses zero raises InputError
+    (Λ undefined for ideally smooth surfaces).
+
+    Examples
+    --------
+    >>> round(specific_film_thickness(0.0953e-6, 0.06e-6, 0.03e-6), 2)
+    1.42
+    """
+    h = _arr("h", h, nonneg=True)
+    sigma = np.asarray(composite_roughness(Rq1, Rq2), dtype=float)
+    if np.any(sigma <= 0):
+        raise InputError("Rq1, Rq2", (Rq1, Rq2), "composite roughness must be > 0 [m] (Lambda undefined for smooth surfaces)")
+    return _out(h / sigma, h, Rq1, Rq2)
+
+
+# ---------------------------------------------------------------------------
+# Regime
+# ---------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Regime:
+    """Lubrication regime per contact (arrays broadcast from the inputs).
+
+    Attributes
+    ----------
+    code : ndarray of str    "IVR" | "IVE" | "PVR" | "EHL"
+    iso_over_piezo : ndarray iso branch / piezo branch of the NVM blend [-];
+                             > 1 → iso-viscous (IVR or IVE), < 1 → piezo-viscous
+    RI_over_EI : ndarray     H_RI / H_EI (iso asymptotes) [-]; > 1 → rigid (IVR)
+    EP_over_RP : ndarray     H_EP / H_RP (piezo branch) [-]; > 1 → rigid (PVR)
+    M, L, D : ndarray        Moes parameters used [-]
+    H : ndarray              NVM dimensionless central film [-]
+
+    A ratio near 1 means the contact sits near that boundary of the Moes map;
+    |log10(ratio)| is the distance in decades.  An unloaded contact (Q = 0)
+    has code "IVR" and M = 0; its ratios and H are finite but floored values
+    (1e±304 at most) with no physical meaning.
+    """
+
+    code: np.ndarray
+    iso_over_piezo: np.ndarray
+    RI_over_EI: np.ndarray
+    EP_over_RP: np.ndarray
+    M: np.ndarray
+    L: np.ndarray
+    D: np.ndarray
+    H: np.ndarray
+
+
+def _regime_from_ln(lnM, lnL, D, unloaded, scalar):
+    ln_H, ln_iso, ln_piezo, ln_RI, ln_EI, ln_RP, ln_EP = _ln_branches(lnM, lnL, D)
+    iso = ln_iso >= ln_piezo
+    rigid_iso = ln_RI >= ln_EI
+    rigid_piezo = ln_RP <= ln_EP
+    code = np.where(iso, np.where(rigid_iso, "IVR", "IVE"), np.where(rigid_piezo, "PVR", "EHL"))
+    code = np.where(unloaded, "IVR", code)
+
+    def ex(x):
+        return np.exp(np.clip(x, -_EXP_MAX, _EXP_MAX))
+
+    fields = (ex(ln_iso - ln_piezo), ex(ln_RI - ln_EI), ex(ln_EP - ln_RP),
+              np.where(unloaded, 0.0, ex(lnM)), ex(lnL),
+              np.asarray(D, dtype=float), ex(ln_H))
+    if scalar:
+        return Regime(str(code), *[float(f) for f in fields])
+    return Regime(np.asarray(code, dtype="<U3"), *[np.asarray(f, dtype=float) for f in fields])
+
+
+def moes_regime(M, L, D):
+    r"""Lubrication regime on the Moes map from M, L and D = Rx/Ry.
+
+    Parameters
+    ----------
+    M, L : array_like  Moes load and lubricant parameters [-] (M = inf allowed: u → 0)
+    D : array_like     Rx/Ry, 0 < D ≤ 1 [-]
+
+    Returns
+    -------
+    Regime  codes and the dominant-term ratios
+
+    Notes
+    -----
+    Dominant term of the NVM blend (PHYSICS.md §5.3; seed 004 §3.2, which
+    rebuilds the Moes map from the asymptotes "as explained in [27]"):
+    iso-viscous if the iso branch (H_RI^1.5 + H_EI'^1.5)^(2/3) exceeds the
+    piezo branch (H_RP^-8 + H_EP^-8)^(-1/8) (H_EI' = (H_EI^-4 + h00^-4)^(-1/4));
+    within the iso branch rigid if H_RI > H_EI (where the two asymptotes
+    cross, as a Moes map draws them; the blending cap h00 is not used here);
+    within the piezo branch rigid if H_RP < H_EP.  These cut-offs are
+    derived, not published.
+
+    Examples
+    --------
+    >>> moes_regime(8064.0, 23.9, 0.0309).code
+    'EHL'
+    >>> moes_regime([1.0, 1e4], [0.5, 20.0], 0.05).code.tolist()
+    ['IVR', 'EHL']
+    """
+    scalar = all(np.ndim(x) == 0 for x in (M, L, D))
+    M, L, D = _check_MLD(M, L, D)
+    lnM, lnL = _lnML(M, L)
+    return _regime_from_ln(lnM, lnL, D, M <= 0, scalar)
+
+
+def lubrication_regime(Q, Rx, Ry, u, eta, alpha_p, E_prime):
+    r"""Lubrication regime of each contact ("IVR" | "IVE" | "PVR" | "EHL").
+
+    Parameters
+    ----------
+    Q, Rx, Ry, u, eta, alpha_p, E_prime : array_like
+        as in :func:`film_thickness` (u is the MEAN entrainment speed [m/s])
+
+    Returns
+    -------
+    Regime  codes (str array, or str for scalar input), dominant-term ratios,
+            M, L, D and H (see :class:`Regime`, :func:`moes_regime`)
+
+    Notes
+    -----
+    Q = 0 → "IVR" (no load: rigid, iso-viscous); u = 0 with Q > 0 → the u → 0
+    limit ("IVE": iso ∝ U^0.1 beats piezo ∝ U^0.25).
+
+    Examples
+    --------
+    >>> lubrication_regime([4527., 1e-3], 5.109e-3, 165.1e-3, 6.25, 0.04, 2.3e-8, 228e9).code.tolist()
+    ['EHL', 'IVR']
+    """
+    Qa, Rxa, Rya, ua, etaa, alphaa, Ea = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
+    lnU2 = np.log(np.clip(2.0 * etaa * ua / (Ea * Rxa), _TINY, None))
+    lnM = np.log(np.clip(Qa / (Ea * Rxa**2), _TINY, None)) - 0.75 * lnU2
+    lnL = np.log(np.clip(alphaa * Ea, _TINY, None)) + 0.25 * lnU2
+    scalar = all(np.ndim(x) == 0 for x in (Q, Rx, Ry, u, eta, alpha_p, E_prime))
+    return _regime_from_ln(lnM, lnL, Rxa / Rya, Qa <= 0, scalar)
+
+
+# ---------------------------------------------------------------------------
+# Moes map boundaries
+# ---------------------------------------------------------------------------
+@dataclass(frozen=True)
+class MoesMapBoundaries:
+    """Regime boundaries on the (M, L) Moes map for one D = Rx/Ry.
+
+    Attributes
+    ----------
+    D : float                     Rx/Ry [-]
+    M : ndarray                   grid of M [-]
+    L_iso_piezo : ndarray         L where iso branch = piezo branch, at each M
+                                  (below: iso-viscous, above: piezo-viscous)
+    M_rigid_elastic_iso : float   M where H_RI = H_EI (left: IVR, right: IVE);
+                                  meaningful below L_iso_piezo
+    L_rigid_elastic_piezo : ndarray  L where H_RP = H_EP, at each M
+                                  (L = M (C_RP/C_EP)^12; above: PVR, below: EHL);
+                                  meaningful above L_iso_piezo
+    """
+
+    D: float
+    M: np.ndarray
+    L_iso_piezo: np.ndarray
+    M_rigid_elastic_iso: float
+    L_rigid_elastic_piezo: np.ndarray
+
+
+def moes_map_boundaries(D, M=None):
+    r"""Boundary curves of the Moes regime map for plotting.
+
+    Parameters
+    ----------
+    D : float          Rx/Ry, 0 < D ≤ 1 [-]
+    M : array_like     values of M at which to give the curves [-]
+                       (default: 200 points log-spaced over 1e-1 … 1e5)
+
+    Returns
+    -------
+    MoesMapBoundaries
+
+    Notes
+    -----
+    Same criteria as :func:`moes_regime`.  H_RP = H_EP is explicit:
+    ln L = 12 (ln C_RP − ln C_EP) + ln M.  H_RI = H_EI is a root in M found by
+    bisection on ln M; iso = piezo is found for all M at once by a vectorised
+    bisection on ln L (the piezo branch increases monotonically with L).
+    Computed here: D = 1 → M ≈ 4.6 and M ≈ 45 L; D = 0.1 → 23 and 15 L
+    (PHYSICS.md §5.3).
+
+    Examples
+    --------
+    >>> b = moes_map_boundaries(1.0, M=[100.0])
+    >>> round(b.M_rigid_elastic_iso, 1), round(float(100.0 / b.L_rigid_elastic_piezo[0]), 1)
+    (4.6, 44.7)
+    """
+    D = float(D)
+    if not (np.isfinite(D) and 0.0 < D <= 1.0):
+        raise InputError("D = Rx/Ry", D, "must lie in (0, 1]")
+    M = np.logspace(-1, 5, 200) if M is None else _arr("M", M, positive=True)
+    lnM = np.log(M)
+    lnCRP = np.log(1.29) - (2.0 / 3.0) * np.log1p(0.691 * D)
+    lnCEP = np.log(1.48) - (7.0 / 20.0) * np.log1p(0.006 * np.log(D) + 0.63 * D ** (4.0 / 7.0)) - np.log(D) / 24.0
+    L_re_piezo = np.exp(12.0 * (lnCRP - lnCEP) + lnM)
+
+    # H_RI = H_EI : g(lnM) = ln_RI - ln_EI, strictly decreasing in lnM
+    lo, hi = np.array(-60.0), np.array(60.0)
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        ln = _ln_branches(mid, np.array(0.0), D)
+        g = ln[3] - ln[4]
+        lo, hi = np.where(g > 0, mid, lo), np.where(g > 0, hi, mid)
+    M_re_iso = float(np.exp(0.5 * (lo + hi)))
+
+    # iso = piezo : for each M, bisection on lnL of ln_piezo - ln_iso (increasing in lnL)
+    lo = np.full_like(lnM, -60.0)
+    hi = np.full_like(lnM, 60.0)
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        ln = _ln_branches(lnM, mid, D)
+        f = ln[2] - ln[1]
+        lo, hi = np.where(f < 0, mid, lo), np.where(f < 0, hi, mid)
+    L_iso_piezo = np.exp(0.5 * (lo + hi))
+    return MoesMapBoundaries(D=D, M=M, L_iso_piezo=L_iso_piezo, M_rigid_elastic_iso=M_re_iso,
+                             L_rigid_elastic_piezo=L_re_piezo)

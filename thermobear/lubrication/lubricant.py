@@ -1,0 +1,623 @@
+r"""Lubricants: viscosity–temperature (ASTM D341), density, pressure–viscosity, thermal properties.
+
+A :class:`Lubricant` is an oil, or a grease described by its base oil (every
+film, rolling-force and SKF formula uses the base-oil properties: seed 000 §3,
+seed 002 §4.3, PHYSICS.md §6).  Temperatures at the interface are in °C
+(names end in ``_C``); everything else is SI except the kinematic viscosity,
+returned in cSt (= mm²/s) because every correlation that uses it (Walther,
+Gold, SKF) is written in cSt.
+
+Models (one function each, all vectorised):
+
+* kinematic viscosity  — ASTM D341 (Walther) with the exp correction term,
+  fitted through ν40 and ν100 or through one point and a slope;
+* density              — API MPMS 11.1 / ASTM D1250 thermal expansion of
+  lubricating oils, ρ(T) = ρ15 exp[−a ΔT (1 + 0.8 a ΔT)], a = K1/ρ15;
+* pressure–viscosity   — constant α_p, or Gold et al. (2001) α = s ν^t;
+* thermal conductivity and specific heat — Cragoe (1929) petroleum-oil
+  correlations, or constants from the data file.
+
+Data: ``materials/lubricants/<name>.toml`` (see :func:`lubricant_names`).
+
+>>> oil = lubricant("seed004-mineral")
+>>> round(oil.nu(40.0), 6), round(oil.nu(100.0), 6)
+(36.6, 7.8)
+>>> round(oil.eta(60.0), 4)
+0.0163
+"""
+from __future__ import annotations
+
+import math
+import warnings
+
+import numpy as np
+
+from thermobear.arrays import finite_range
+
+from thermobear.files import data_dir, lookup, names_in
+from thermobear.errors import ExtrapolationWarning, InputError, OutsideValidity
+from thermobear.units import ZERO_C_K
+
+__all__ = [
+    "Lubricant", "lubricant", "lubricant_names",
+    "walther_Z", "walther_nu_from_Z", "walther_fit", "walther_nu",
+    "density_api", "gold_alpha_p", "cragoe_k_th", "cragoe_cp",
+    "T_WARN_C", "T_VALID_C",
+]
+
+#: Temperatures [°C] outside which a lubricant property is an extrapolation
+#: (ExtrapolationWarning).  ASTM D341 is a two-point fit at 40/100 °C; the
+#: standard's charts span about -20...150 °C for mineral oils and the Cragoe /
+#: API correlations were fitted over a similar band.
+T_WARN_C = (-20.0, 150.0)
+#: Temperatures [°C] outside which thermobear refuses (OutsideValidity): below
+#: -60 °C mineral oils are near or past their pour point (wax, glass) and above
+#: 250 °C past the flash point of typical bearing oils; Walther's law has no
+#: meaning there.
+T_VALID_C = (-60.0, 250.0)
+
+_T40_K = 40.0 + ZERO_C_K
+_T100_K = 100.0 + ZERO_C_K
+_RHO_WATER_15_KG_M3 = 999.0   # water at 60 °F (15.56 °C), for the specific gravity d in Cragoe's forms
+_K1_API_LUBE = 0.34878 * 1.8  # kg/(m^3 K): API MPMS 11.1 lubricating-oil K1 = 0.34878 (per °F), x 1.8 per K
+
+
+# ---------------------------------------------------------------------------
+# ASTM D341 (Walther)
+# ---------------------------------------------------------------------------
+def walther_Z(nu_cSt):
+    r"""ASTM D341 Z of a kinematic viscosity.
+
+    Parameters
+    ----------
+    nu_cSt : array_like  kinematic viscosity [cSt = mm²/s], > 0
+
+    Returns
+    -------
+    ndarray  Z = ν + 0.7 + exp(−1.47 − 1.84 ν − 0.51 ν²) [cSt]
+
+    Notes
+    -----
+    ASTM D341-09 eq (2) (PHYSICS.md §6).  The exponential correction matters
+    only below about 2 cSt.
+
+    Examples
+    --------
+    >>> round(float(walther_Z(10.0)), 12)
+    10.7
+    """
+    nu = np.asarray(nu_cSt, dtype=float)
+    return nu + 0.7 + np.exp(-1.47 - 1.84 * nu - 0.51 * nu**2)
+
+
+def walther_nu_from_Z(Z):
+    r"""Inverse of :func:`walther_Z` (ASTM D341-09 eq (4)).
+
+    Parameters
+    ----------
+    Z : array_like  D341 Z [cSt], > 0.7
+
+    Returns
+    -------
+    ndarray  ν = (Z − 0.7) − exp(−0.7487 − 3.295 (Z−0.7) + 0.6119 (Z−0.7)² − 0.3193 (Z−0.7)³) [cSt]
+
+    Examples
+    --------
+    >>> round(float(walther_nu_from_Z(walther_Z(1.5))), 3)
+    1.5
+    """
+    x = np.asarray(Z, dtype=float) - 0.7
+    return x - np.exp(-0.7487 - 3.295 * x + 0.6119 * x**2 - 0.3193 * x**3)
+
+
+def walther_fit(nu1_cSt, T1_K, nu2_cSt, T2_K):
+    r"""Walther constants A, B through two points (T1 < T2, ν1 > ν2).
+
+    Parameters
+    ----------
+    nu1_cSt, nu2_cSt : float  kinematic viscosities [cSt] at T1_K, T2_K
+    T1_K, T2_K : float        absolute temperatures [K]
+
+    Returns
+    -------
+    (A, B)  constants of log10 log10 Z = A − B log10 T  (T in K) [-]
+
+    Notes
+    -----
+    B = [log log Z1 − log log Z2] / [log T2 − log T1],  A = log log Z1 + B log T1
+    (ASTM D341; PHYSICS.md §6).  Typical B ≈ 3–4 for mineral oils.
+
+    Examples
+    --------
+    >>> A, B = walther_fit(36.6, 313.15, 7.8, 373.15)
+    >>> round(B, 4)
+    2.9969
+    """
+    ll1 = np.log10(np.log10(walther_Z(nu1_cSt)))
+    ll2 = np.log10(np.log10(walther_Z(nu2_cSt)))
+    B = (ll1 - ll2) / (np.log10(T2_K) - np.log10(T1_K))
+    A = ll1 + B * np.log10(T1_K)
+    return float(A), float(B)
+
+
+def walther_nu(A, B, T_K):
+    r"""Kinematic viscosity from Walther constants (ASTM D341).
+
+    Parameters
+    ----------
+    A, B : float       Walther constants (see :func:`walther_fit`) [-]
+    T_K : array_like   absolute temperature [K]
+
+    Returns
+    -------
+    ndarray  ν [cSt] with Z = 10^(10^(A − B log10 T)), ν = :func:`walther_nu_from_Z` (Z)
+
+    Examples
+    --------
+    >>> A, B = walther_fit(36.6, 313.15, 7.8, 373.15)
+    >>> round(float(walther_nu(A, B, 333.15)), 2)
+    19.51
+    """
+    Z = 10.0 ** (10.0 ** (A - B * np.log10(np.asarray(T_K, dtype=float))))
+    return walther_nu_from_Z(Z)
+
+
+# ---------------------------------------------------------------------------
+# Density, pressure-viscosity, thermal properties
+# ---------------------------------------------------------------------------
+def density_api(rho15, T_C, K1=_K1_API_LUBE):
+    r"""Density of a lubricating oil at temperature, API MPMS 11.1 (ASTM D1250) form.
+
+    Parameters
+    ----------
+    rho15 : array_like  density at 15 °C [kg/m³]
+    T_C : array_like    temperature [°C]
+    K1 : float          expansion constant [kg/(m³ K)]; 0.627804 for the
+                        lubricating-oil group (API MPMS 11.1: K0 = 0,
+                        K1 = 0.34878 with ΔT in °F, ×1.8 for °C)
+
+    Returns
+    -------
+    ndarray  ρ = ρ15 exp[−a ΔT (1 + 0.8 a ΔT)],  a = K1/ρ15,  ΔT = T − 15 °C  [kg/m³]
+
+    Notes
+    -----
+    API MPMS ch. 11.1 (2004) / ASTM D1250-04, lubricating-oil commodity group;
+    the standard's base is 60 °F = 15.56 °C, taken here as 15 °C (0.04 %
+    density difference).  a ≈ 7.3e-4 1/K at 865 kg/m³, inside PHYSICS.md §6's
+    6.5–7.5e-4 1/K for mineral oils.  Used also for synthetic base oils
+    (estimated; esters and PAO have similar volumetric expansion).
+
+    Examples
+    --------
+    >>> round(float(density_api(864.6, 40.0)), 1)
+    848.8
+    """
+    rho15 = np.asarray(rho15, dtype=float)
+    a = K1 / rho15
+    dT = np.asarray(T_C, dtype=float) - 15.0
+    return rho15 * np.exp(-a * dT * (1.0 + 0.8 * a * dT))
+
+
+def gold_alpha_p(nu_cSt, s, t):
+    r"""Pressure–viscosity coefficient of Gold et al. (2001) [1/Pa].
+
+    Parameters
+    ----------
+    nu_cSt : array_like  kinematic viscosity at the operating temperature [cSt]
+    s : float            coefficient [1/GPa] (seed 002 Table 1: 9.90 mineral, 7.38 PAO, 6.61 ester)
+    t : float            exponent [-] (seed 002 Table 1: 0.13–0.14)
+
+    Returns
+    -------
+    ndarray  α_p = s ν^t × 1e-9 [1/Pa]
+
+    Notes
+    -----
+    Gold, Schmidt, Dicke, Loos & Assmann, J. Synthetic Lubrication 18 (2001) 51;
+    quoted by seed 002 Table 1 as α(0.2 GPa) = s ν^t with α in 1/GPa and ν in
+    mm²/s.  Seed 002's own α at 40 °C are reproduced within 2 % (MG1: 9.90·230^0.14
+    = 21.2 vs 21.09 printed).
+
+    Examples
+    --------
+    >>> round(float(gold_alpha_p(230.0, 9.90, 0.14)) * 1e9, 2)
+    21.2
+    """
+    return s * np.asarray(nu_cSt, dtype=float) ** t * 1e-9
+
+
+def cragoe_k_th(rho15, T_C):
+    r"""Thermal conductivity of a petroleum oil, Cragoe (1929) [W/(m K)].
+
+    Parameters
+    ----------
+    rho15 : array_like  density at 15 °C [kg/m³]
+    T_C : array_like    temperature [°C]
+
+    Returns
+    -------
+    ndarray  k = 0.11726/d · (1 − 0.00054 T_C),  d = ρ15/999 kg/m³ [W/(m K)]
+
+    Notes
+    -----
+    Cragoe, Thermal properties of petroleum products, US Bureau of Standards
+    Misc. Publ. 97 (1929): k = 0.813/d [1 − 0.0003 (t − 32)] Btu·in/(h ft² °F),
+    t in °F, converted to SI (1 Btu·in/(h ft² °F) = 0.144228 W/(m K)).
+    Stated accuracy ≈ ±10 %.  [unconfirmed – recalled; SI conversion done here]
+
+    Examples
+    --------
+    >>> round(float(cragoe_k_th(864.6, 40.0)), 4)
+    0.1325
+    """
+    d = np.asarray(rho15, dtype=float) / _RHO_WATER_15_KG_M3
+    return 0.117257 / d * (1.0 - 0.00054 * np.asarray(T_C, dtype=float))
+
+
+def cragoe_cp(rho15, T_C):
+    r"""Specific heat of a petroleum oil, Cragoe (1929) [J/(kg K)].
+
+    Parameters
+    ----------
+    rho15 : array_like  density at 15 °C [kg/m³]
+    T_C : array_like    temperature [°C]
+
+    Returns
+    -------
+    ndarray  cp = (1684.8 + 3.391 T_C)/√d,  d = ρ15/999 kg/m³ [J/(kg K)]
+
+    Notes
+    -----
+    Cragoe (1929, US Bureau of Standards Misc. Publ. 97):
+    c = (0.388 + 0.00045 t)/√d Btu/(lb °F), t in °F, converted to SI.  The
+    Btu form is quoted in public engineering forums; PHYSICS.md §8 gives
+    1.9–2.1 kJ/(kg K) for mineral oils, which this reproduces at 20–90 °C.
+
+    Examples
+    --------
+    >>> round(float(cragoe_cp(864.6, 40.0)))
+    1957
+    """
+    d = np.asarray(rho15, dtype=float) / _RHO_WATER_15_KG_M3
+    return (1684.8 + 3.391 * np.asarray(T_C, dtype=float)) / np.sqrt(d)
+
+
+# ---------------------------------------------------------------------------
+# Lubricant
+# ---------------------------------------------------------------------------
+def _out(x, like):
+    """Return a float for scalar input, else an ndarray."""
+    return float(x) if np.ndim(like) == 0 else np.asarray(x, dtype=float)
+
+
+def _plain(T_C) -> bool:
+    """True for one temperature [°C] as a Python or numpy float inside T_WARN_C (no check, warning or
+    error to give: the scalar fast path of :class:`Lubricant` applies)."""
+    return type(T_C) in (float, np.float64) and T_WARN_C[0] <= T_C <= T_WARN_C[1]
+
+
+def _positive(field, v):
+    if v is None or not np.isfinite(v) or v <= 0:
+        raise InputError(field, v, "must be finite and > 0")
+    return float(v)
+
+
+class Lubricant:
+    r"""An oil, or a grease through its base oil.
+
+    Parameters
+    ----------
+    nu40_cSt, nu100_cSt : float  kinematic viscosity at 40 / 100 °C [cSt]; ν100 < ν40
+    rho15 : float                density at 15 °C [kg/m³]
+    alpha_p : float, optional    constant pressure–viscosity coefficient [1/Pa]
+    gold_s, gold_t : float, optional
+                                 Gold et al. α_p = s ν^t (s in 1/GPa); used instead of
+                                 alpha_p when given (temperature dependent)
+    k_th, cp : float, optional   constant thermal conductivity [W/(m K)] and specific
+                                 heat [J/(kg K)]; default: Cragoe (1929) correlations
+    name, kind, base_oil, thickener, description : str
+                                 labels; kind is "oil" or "grease"
+
+    Methods (T_C scalar or array [°C]; scalar in → float out)
+    -------
+    nu(T_C) [cSt], eta(T_C) [Pa s], rho(T_C) [kg/m³], alpha_p_at(T_C) [1/Pa],
+    k_th(T_C) [W/(m K)], cp(T_C) [J/(kg K)]
+
+    Notes
+    -----
+    Temperatures outside T_WARN_C = (-20, 150) °C give an ExtrapolationWarning,
+    outside T_VALID_C = (-60, 250) °C an OutsideValidity error.
+
+    Examples
+    --------
+    >>> oil = Lubricant(nu40_cSt=36.6, nu100_cSt=7.8, rho15=864.6, alpha_p=20e-9)
+    >>> round(oil.nu(40.0), 6), round(oil.alpha_p_at(80.0) * 1e9, 3)
+    (36.6, 20.0)
+    """
+
+    def __init__(self, nu40_cSt, nu100_cSt, rho15, alpha_p=None, *, gold_s=None, gold_t=None,
+                 k_th=None, cp=None, name="custom", kind="oil", base_oil="mineral",
+                 thickener=None, description="", estimated=()):
+        nu40 = _positive(f"lubricant[{name}].nu40_cSt", nu40_cSt)
+        nu100 = _positive(f"lubricant[{name}].nu100_cSt", nu100_cSt)
+        if not nu100 < nu40:
+            raise InputError(f"lubricant[{name}].nu100_cSt", nu100_cSt,
+                             f"must be < nu40_cSt = {nu40_cSt} (viscosity falls with temperature)")
+        A, B = walther_fit(nu40, _T40_K, nu100, _T100_K)
+        self._setup(A, B, rho15, alpha_p, gold_s, gold_t, k_th, cp, name, kind, base_oil,
+                    thickener, description, estimated)
+
+    # shared by __init__ and from_single_point
+    def _setup(self, A, B, rho15, alpha_p, gold_s, gold_t, k_th, cp, name, kind, base_oil,
+               thickener, description, estimated):
+        self.name, self.description = str(name), str(description)
+        if kind not in ("oil", "grease"):
+            raise InputError(f"lubricant[{name}].kind", kind, 'must be "oil" or "grease"')
+        self.kind, self.base_oil, self.thickener = kind, base_oil, thickener
+        self.walther_A, self.walther_B = float(A), float(B)
+        self.rho15 = _positive(f"lubricant[{name}].rho15", rho15)
+        if not 500.0 < self.rho15 < 2500.0:
+            raise InputError(f"lubricant[{name}].rho15", rho15, "density at 15 °C must lie in 500-2500 kg/m^3")
+        self.alpha_p = None if alpha_p is None else _positive(f"lubricant[{name}].alpha_p", alpha_p)
+        if (gold_s is None) != (gold_t is None):
+            raise InputError(f"lubricant[{name}].gold_s/gold_t", (gold_s, gold_t),
+                             "give both Gold coefficients s [1/GPa] and t [-], or neither")
+        self.gold_s = None if gold_s is None else _positive(f"lubricant[{name}].gold_s", gold_s)
+        self.gold_t = None if gold_t is None else _positive(f"lubricant[{name}].gold_t", gold_t)
+        self._k_th = None if k_th is None else _positive(f"lubricant[{name}].k_th", k_th)
+        self._cp = None if cp is None else _positive(f"lubricant[{name}].cp", cp)
+        self.estimated = tuple(estimated)
+
+    @classmethod
+    def from_single_point(cls, eta_Pa_s, T_C, rho15, walther_B=3.7, alpha_p=None, **kw):
+        r"""Oil known by one dynamic viscosity at one temperature.
+
+        Parameters
+        ----------
+        eta_Pa_s : float   dynamic viscosity at T_C [Pa s]
+        T_C : float        temperature of that measurement [°C]
+        rho15 : float      density at 15 °C [kg/m³] (estimated if unknown: 870 for mineral oil)
+        walther_B : float  ASTM D341 slope B [-] (T in K).  Default 3.7 is an
+                           ESTIMATE: the slope of VI = 100 mineral oils of
+                           30–50 cSt at 40 °C (ASTM D2270; 3.70–3.77 for the
+                           seed 001 oils).  walther_B = 0 gives a viscosity
+                           constant in temperature (kinematic; η then follows
+                           the density only, −0.07 %/K).
+        alpha_p : float    pressure–viscosity coefficient [1/Pa], optional
+        **kw               as for :class:`Lubricant` (name, k_th, cp, gold_s, ...)
+
+        Notes
+        -----
+        The D341 line through (T, ν = η/ρ(T)) with slope B:
+        A = log10 log10 Z(ν) + B log10 T_K.
+
+        Examples
+        --------
+        >>> oil = Lubricant.from_single_point(eta_Pa_s=0.05, T_C=26.5, rho15=870.0, alpha_p=2.5e-8)
+        >>> round(oil.eta(26.5), 6)
+        0.05
+        >>> oil.nu(40.0) < oil.nu(26.5)
+        True
+        """
+        name = kw.get("name", "custom")
+        eta = _positive(f"lubricant[{name}].eta_Pa_s", eta_Pa_s)
+        if not np.isfinite(T_C) or not T_VALID_C[0] <= T_C <= T_VALID_C[1]:
+            raise OutsideValidity(f"lubricant[{name}].T_C", T_C,
+                                  f"reference temperature must lie in {T_VALID_C[0]}...{T_VALID_C[1]} °C")
+        if walther_B is None or not np.isfinite(walther_B) or not 0.0 <= walther_B <= 10.0:
+            raise InputError(f"lubricant[{name}].walther_B", walther_B,
+                             "D341 slope must lie in 0...10 (typical mineral oils 3-4)")
+        rho15 = _positive(f"lubricant[{name}].rho15", rho15)
+        nu_ref = eta / (float(density_api(rho15, T_C)) * 1e-6)
+        A = float(np.log10(np.log10(walther_Z(nu_ref)))) + walther_B * np.log10(T_C + ZERO_C_K)
+        obj = cls.__new__(cls)
+        obj._setup(A, walther_B, rho15, alpha_p, kw.get("gold_s"), kw.get("gold_t"), kw.get("k_th"),
+                   kw.get("cp"), name, kw.get("kind", "oil"), kw.get("base_oil", "mineral"),
+                   kw.get("thickener"), kw.get("description", ""), kw.get("estimated", ()))
+        return obj
+
+    @classmethod
+    def from_dict(cls, d: dict, where: str = "lubricant") -> "Lubricant":
+        """Lubricant from a mapping with the data-file keys (scene files, inline definitions).
+
+        Keys: nu40_cSt, nu100_cSt, rho15_kg_m3, alpha_p_1_Pa or gold_s_1_GPa + gold_t,
+        k_W_mK, cp_J_kgK, or one point eta_ref_Pa_s (alias eta_Pa_s) at T_ref_C
+        (alias T_C) with walther_B (default 3.7, estimated); labels name, kind, ...
+        Errors name ``where`` (e.g. the scene section).
+
+        >>> Lubricant.from_dict({"nu40_cSt": 36.6, "nu100_cSt": 7.8, "rho15_kg_m3": 864.6,
+        ...                      "alpha_p_1_Pa": 20e-9}).nu(40.0)
+        36.6
+        """
+        return _from_mapping(d, where)
+
+    # -- derived reference values ------------------------------------------
+    @property
+    def nu40_cSt(self) -> float:
+        """Kinematic viscosity at 40 °C [cSt] (input, or derived from a single point)."""
+        return float(walther_nu(self.walther_A, self.walther_B, _T40_K))
+
+    @property
+    def nu100_cSt(self) -> float:
+        """Kinematic viscosity at 100 °C [cSt]."""
+        return float(walther_nu(self.walther_A, self.walther_B, _T100_K))
+
+    def __repr__(self):
+        return (f"Lubricant(name={self.name!r}, kind={self.kind!r}, nu40_cSt={self.nu40_cSt:.4g}, "
+                f"nu100_cSt={self.nu100_cSt:.4g}, rho15={self.rho15:.5g})")
+
+    # -- temperature checks --------------------------------------------------
+    def _T(self, T_C, what):
+        T = np.asarray(T_C, dtype=float)
+        if not T.size:
+            return T
+        r = finite_range(T)
+        if r is None:
+            raise InputError(f"{self.name}.{what}(T_C)", T_C, "temperature must be finite [°C]")
+        lo, hi = T_VALID_C
+        if r[0] < lo or r[1] > hi:
+            raise OutsideValidity(f"{self.name}.{what}(T_C)", T_C,
+                                  f"lubricant properties are valid only in {lo}...{hi} °C")
+        wlo, whi = T_WARN_C
+        if r[0] < wlo or r[1] > whi:
+            warnings.warn(f"{self.name}.{what}: T_C outside {wlo}...{whi} °C is an extrapolation "
+                          "of the ASTM D341 / density / thermal correlations", ExtrapolationWarning,
+                          stacklevel=3)
+        return T
+
+    # -- scalar fast path -----------------------------------------------------
+    # The thermal elements ask for one temperature at a time, many times per coupled solve: a
+    # Python float inside T_WARN_C is evaluated with ``math`` (the formulas of walther_nu and
+    # density_api; equal to the array path to rounding), anything else takes the array path
+    # (its checks, warnings and errors).
+    def _nu_s(self, T):
+        Z = 10.0 ** (10.0 ** (self.walther_A - self.walther_B * math.log10(T + ZERO_C_K)))
+        x = Z - 0.7
+        return x - math.exp(-0.7487 - 3.295 * x + 0.6119 * (x * x) - 0.3193 * (x * x * x))
+
+    def _rho_s(self, T):
+        a = _K1_API_LUBE / self.rho15
+        dT = T - 15.0
+        return self.rho15 * math.exp(-a * dT * (1.0 + 0.8 * a * dT))
+
+    # -- properties -----------------------------------------------------------
+    def nu(self, T_C):
+        """Kinematic viscosity [cSt] at T_C [°C], ASTM D341 (see :func:`walther_nu`)."""
+        if _plain(T_C):
+            return self._nu_s(float(T_C))
+        T = self._T(T_C, "nu")
+        return _out(walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K), T_C)
+
+    def rho(self, T_C):
+        """Density [kg/m³] at T_C [°C] (see :func:`density_api`)."""
+        if _plain(T_C):
+            return self._rho_s(float(T_C))
+        T = self._T(T_C, "rho")
+        return _out(density_api(self.rho15, T), T_C)
+
+    def eta(self, T_C):
+        """Dynamic viscosity [Pa s] at T_C [°C]: η = ν [cSt] × 1e-6 × ρ [kg/m³] (PHYSICS.md §12.2)."""
+        if _plain(T_C):
+            T = float(T_C)
+            return self._nu_s(T) * 1e-6 * self._rho_s(T)
+        T = self._T(T_C, "eta")
+        nu = walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K)
+        return _out(nu * 1e-6 * density_api(self.rho15, T), T_C)
+
+    def _eta_alpha_rho(self, T_C):
+        """(η [Pa s], α_p [1/Pa], ρ [kg/m³]) at the temperatures ``T_C`` [°C] (arrays): :meth:`eta`,
+        :meth:`alpha_p_at` and :meth:`rho` with one temperature check and the viscosity and density
+        computed once (the loss kernels' look-up; same values)."""
+        T = self._T(T_C, "eta")
+        nu = walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K)
+        rho = density_api(self.rho15, T)
+        if self.gold_s is not None:
+            alpha = gold_alpha_p(nu, self.gold_s, self.gold_t)
+        elif self.alpha_p is None:
+            raise InputError(f"lubricant[{self.name}].alpha_p", None,
+                             "unknown: give alpha_p [1/Pa] or Gold coefficients gold_s, gold_t")
+        else:
+            alpha = np.full(np.shape(T), self.alpha_p)
+        return nu * 1e-6 * rho, alpha, rho
+
+    def alpha_p_at(self, T_C):
+        """Pressure–viscosity coefficient [1/Pa] at T_C [°C].
+
+        Gold et al. s ν(T)^t when s, t are given (see :func:`gold_alpha_p`), else
+        the constant alpha_p.  Raises InputError when neither is known.
+        """
+        T = self._T(T_C, "alpha_p_at")
+        if self.gold_s is not None:
+            nu = walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K)
+            return _out(gold_alpha_p(nu, self.gold_s, self.gold_t), T_C)
+        if self.alpha_p is None:
+            raise InputError(f"lubricant[{self.name}].alpha_p", None,
+                             "unknown: give alpha_p [1/Pa] or Gold coefficients gold_s, gold_t")
+        return _out(np.full(np.shape(T), self.alpha_p), T_C)
+
+    def k_th(self, T_C):
+        """Thermal conductivity [W/(m K)] at T_C [°C]: constant, or Cragoe (1929) (:func:`cragoe_k_th`)."""
+        if _plain(T_C):
+            T = float(T_C)
+            if self._k_th is not None:
+                return self._k_th
+            return 0.117257 / (self.rho15 / _RHO_WATER_15_KG_M3) * (1.0 - 0.00054 * T)
+        T = self._T(T_C, "k_th")
+        if self._k_th is not None:
+            return _out(np.full(np.shape(T), self._k_th), T_C)
+        return _out(cragoe_k_th(self.rho15, T), T_C)
+
+    def cp(self, T_C):
+        """Specific heat [J/(kg K)] at T_C [°C]: constant, or Cragoe (1929) (:func:`cragoe_cp`)."""
+        if _plain(T_C):
+            T = float(T_C)
+            if self._cp is not None:
+                return self._cp
+            return (1684.8 + 3.391 * T) / math.sqrt(self.rho15 / _RHO_WATER_15_KG_M3)
+        T = self._T(T_C, "cp")
+        if self._cp is not None:
+            return _out(np.full(np.shape(T), self._cp), T_C)
+        return _out(cragoe_cp(self.rho15, T), T_C)
+
+
+# ---------------------------------------------------------------------------
+# Data files
+# ---------------------------------------------------------------------------
+def lubricant_names() -> list[str]:
+    """Names of the bundled lubricants (``materials/lubricants/*.toml``).
+
+    >>> "seed004-mineral" in lubricant_names()
+    True
+    """
+    return names_in(data_dir("materials") / "lubricants")
+
+
+_KNOWN_KEYS = {"name", "kind", "description", "base_oil", "thickener", "nu40_cSt", "nu100_cSt",
+               "rho15_kg_m3", "alpha_p_1_Pa", "gold_s_1_GPa", "gold_t", "alpha40_1_GPa", "thermal",
+               "k_W_mK", "cp_J_kgK", "eta_ref_Pa_s", "T_ref_C", "walther_B", "estimated",
+               "grease_T_min_C", "grease_T_max_C"}
+
+
+def _from_mapping(d: dict, where: str) -> Lubricant:
+    """Build a Lubricant from data-file keys (units in the key names), naming ``where`` in errors."""
+    d = dict(d)
+    for alias, key in (("eta_Pa_s", "eta_ref_Pa_s"), ("T_C", "T_ref_C")):
+        if alias in d:
+            d.setdefault(key, d.pop(alias))
+    unknown = set(d) - _KNOWN_KEYS
+    if unknown:
+        raise InputError(where, sorted(unknown), f"unknown keys; known: {', '.join(sorted(_KNOWN_KEYS))}")
+    if d.get("thermal", "cragoe") != "cragoe" and ("k_W_mK" not in d or "cp_J_kgK" not in d):
+        raise InputError(f"{where}.thermal", d.get("thermal"), '"cragoe", or give k_W_mK and cp_J_kgK')
+    common = dict(alpha_p=d.get("alpha_p_1_Pa"), gold_s=d.get("gold_s_1_GPa"), gold_t=d.get("gold_t"),
+                  k_th=d.get("k_W_mK"), cp=d.get("cp_J_kgK"), name=d.get("name", "custom"),
+                  kind=d.get("kind", "oil"), base_oil=d.get("base_oil", "mineral"),
+                  thickener=d.get("thickener"), description=d.get("description", ""),
+                  estimated=d.get("estimated", ()))
+    if "eta_ref_Pa_s" in d:
+        for key in ("T_ref_C", "rho15_kg_m3"):
+            if key not in d:
+                raise InputError(f"{where}.{key}", None, "missing (needed with eta_ref_Pa_s)")
+        return Lubricant.from_single_point(eta_Pa_s=d["eta_ref_Pa_s"], T_C=d["T_ref_C"],
+                                           rho15=d["rho15_kg_m3"], walther_B=d.get("walther_B", 3.7),
+                                           **common)
+    for key in ("nu40_cSt", "nu100_cSt", "rho15_kg_m3"):
+        if key not in d:
+            raise InputError(f"{where}.{key}", None, "missing required field")
+    return Lubricant(d["nu40_cSt"], d["nu100_cSt"], d["rho15_kg_m3"], **common)
+
+
+def lubricant(name) -> Lubricant:
+    """Bundled lubricant by name (a :class:`Lubricant` is returned unchanged).
+
+    Files give either ``nu40_cSt`` and ``nu100_cSt``, or one point
+    ``eta_ref_Pa_s`` at ``T_ref_C`` with an (estimated) ``walther_B``.
+
+    >>> lubricant("mol-liton-00").kind
+    'grease'
+    """
+    if isinstance(name, Lubricant):
+        return name
+    d = lookup("materials", "lubricants", str(name), "lubricant")
+    return _from_mapping({"name": str(name), **d}, f"lubricants/{name}.toml")
