@@ -8,7 +8,7 @@ BIN := $(VENV)/bin
 $(BIN)/thermobear: pyproject.toml
 	$(PY) -m venv $(VENV)
 	$(BIN)/pip install --upgrade pip
-	$(BIN)/pip install -e ".[test,fast]"
+	$(BIN)/pip install -e ".[test]"
 	touch $@
 
 .PHONY: example test validate clean

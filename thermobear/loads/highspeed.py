@@ -94,11 +94,8 @@ vanishing linear "tension" stiffness ε K √A (ε = 1e-12) so that its position
 defined at n = 0; its contact force is reported as 0 (the force it could carry,
 < 1e-9 of the applied load, is below every tolerance).
 
-Cost: with numba installed (the ``fast`` extra) the per-ball state, the Newton step and the per-ball
-start of dry cases run as compiled loops (:mod:`thermobear.loads._kernels`, the same equations; a
-seed 004 case ≈ 1 ms instead of ≈ 4 ms); without it, and for the film law or per-ball
-stiffness (whose per-ball start is still compiled), the numpy methods here run (a load case is then a few hundred numpy calls on
-Z-element arrays).
+Cost: a load case is a few hundred numpy calls on Z-element arrays (the call overhead, not the
+arithmetic, sets it); a batch of cases costs little more than one.
 
 Film contact law (optional, ``film=dict(eta=..., alpha_p=...)``; prototype, as
 :mod:`thermobear.loads.film` is for the low-speed form).  The dry law opens a contact whose
@@ -144,7 +141,6 @@ import numpy as np
 
 from thermobear.errors import InputError, NoConvergence, NoEquilibrium
 from thermobear.contact.geometry import BallBearing
-from thermobear.loads.static import _kernels
 from thermobear.loads.static import STIFFNESS_MODES, LoadDistribution, load_distribution
 from thermobear.loads.film import _carry, _FilmAt, _NVMFixed, _invert
 
@@ -311,36 +307,6 @@ class _State:
             v[m] = other.__dict__[k]
 
 
-class _BlkState(_State):
-    """A Newton iterate from the compiled kernel: four arrays — per-ball fields (nb, fields, Z), per-case
-    Σ Q_i, ω_cage, F_c (nb, 3), r_b, r_g — and every field of :class:`_State` as a view into them, made
-    on access (:meth:`take` and :meth:`put` move the four arrays)."""
-
-    _CASE = {"qs": 0, "W": 1, "Fc": 2}
-
-    def __getattr__(self, name):                # called only for names not in __dict__
-        d = self.__dict__
-        if "_blk" in d:
-            k = _ball_index().get(name)
-            if k is not None:
-                return d["_blk"][:, k]
-            k = self._CASE.get(name)
-            if k is not None:
-                return d["_cblk"][:, k:k + 1]
-        raise AttributeError(name)
-
-    def take(self, m):
-        new = _BlkState.__new__(_BlkState)
-        new.__dict__ = {k: v[m] for k, v in self.__dict__.items()}
-        return new
-
-
-@lru_cache(maxsize=1)
-def _ball_index():
-    """Per-ball field name → index in the compiled state block (thermobear.loads._kernels.BALL_FIELDS)."""
-    return {name: k for k, name in enumerate(_kernels().BALL_FIELDS)}
-
-
 class _Problem:
     """Fixed data of one batch: bearing constants, loads, weights.  Arrays have shape (nb, Z[, ...]).
 
@@ -416,12 +382,7 @@ class _Problem:
         (:func:`thermobear.contact.kinematics.common_cage_speed`); ball spin the load-weighted least-squares
         ω_R = −[Q_o E_o R_o ω_cage + Q_i E_i R_i (ω − ω_cage)] / (Q_o E_o² + Q_i E_i²)
         (:func:`thermobear.contact.kinematics.caged_ball_kinematics`; own no-slip −ω R_o R_i / det when
-        both contacts are open); F_c = ½ m dm ω_cage², M_g = J ω_R ω_cage sin β.
-
-        Dry contacts with one stiffness per race run the compiled kernel
-        :func:`thermobear.loads._kernels.state_kernel` when numba is installed (same equations)."""
-        if self._compiled():
-            return self._state_compiled(x, g)
+        both contacts are open); F_c = ½ m dm ω_cage², M_g = J ω_R ω_cage sin β."""
         st = _State.__new__(_State)
         A = self.A
         A1, A2 = self.centres(g)
@@ -510,27 +471,6 @@ class _Problem:
             st.__dict__.update(fl)
         return st
 
-    def _compiled(self) -> bool:
-        """Whether the compiled kernels serve this problem (numba installed; dry contacts; one stiffness
-        per race)."""
-        return self.film is None and self.stiffness != "per_ball" and _kernels() is not None
-
-    def _state_compiled(self, x, g):
-        """:meth:`state` by :func:`thermobear.loads._kernels.state_kernel`: the per-ball fields are views
-        into one block (nb, fields, Z), the per-case ones (Σ Q_i, ω_cage, F_c) into another (nb, 3)."""
-        _hk = _kernels()
-        nb, Z = x.shape[0], self.Z
-        blk, cblk = np.empty((nb, _hk.N_BALL_FIELDS, Z)), np.empty((nb, 3))
-        r_b, r_g = np.empty((nb, Z, 2)), np.empty((nb, 3))
-        _hk.state_kernel(np.ascontiguousarray(x, dtype=float), np.ascontiguousarray(g, dtype=float),
-                         self.c[0], self.omega, self.scale, self.F_app, self.A, self.A2_0, self.ci0, self.co0,
-                         self.Ki0, self.Ko0, self.k_eps, self.gp, self.dm, self.D, self.m, self.J,
-                         float(self.lam_i), float(self.lam_o), self.fi, self.R, self.kin_control == "outer",
-                         blk, cblk, r_b, r_g)
-        st = _BlkState.__new__(_BlkState)
-        st.__dict__.update(_blk=blk, _cblk=cblk, r_b=r_b, r_g=r_g)
-        return st
-
     def _film_force(self, p, q, X1, X2, dl_i, dl_o, Ki, Ko):
         r"""Contact loads and dQ/dδ of both contacts under the film law (:class:`_FilmLaw`).
 
@@ -602,18 +542,7 @@ class _Problem:
         Newton step of the augmented system is that of the reduced one.  The per-ball 2×2 blocks
         are eliminated in closed form (Schur complement; a 4×4 system per case).  All kinematic
         derivatives (of β, the contact radii, ω_c,j, ω_R, F_c and M_g with respect to α_i, α_o, Q_i,
-        Q_o and ω_cage) are analytic; dα_i/d(A − X) = e_i/d_i, dα_o/dX = e_o/d_o.
-
-        A state from the compiled kernel gets its step from :func:`thermobear.loads._kernels.step_kernel`
-        (the same elimination written ball by ball)."""
-        if "_blk" in st.__dict__:
-            _hk = _kernels()
-            nb = st._blk.shape[0]
-            dx, dg = np.empty((nb, self.Z, 2)), np.empty((nb, 3))
-            _hk.step_kernel(st._blk, st._cblk, st.r_b, st.r_g, self.c[0], self.omega, self.w_ref, self.scale,
-                            self.act, self.A, self.gp, self.dm, self.D, self.m, self.J, float(self.lam_i),
-                            float(self.lam_o), self.fi, self.R, self.kin_control == "outer", dx, dg)
-            return dx, dg
+        Q_o and ω_cage) are analytic; dα_i/d(A − X) = e_i/d_i, dα_o/dX = e_o/d_o."""
         A, D, J = self.A, self.D, self.J
         gp, hdm, hD = self.gp, 0.5 * self.dm, 0.5 * self.D
         w = self.omega[:, None]
@@ -1369,17 +1298,8 @@ def _start(pb, x_static, g):
 def _place(x1, x2, a1, a2, f1, f2, Ki, Ko, mu, tol, ci0, co0, cap):
     """Newton minimisation of each ball's potential energy (see :func:`_start`) on flat arrays of
     balls; a ball leaves the active set when its force residual is below ``tol`` or its line
-    search fails (a start needs no more).  Returns the ball centres X1, X2 [m].  With numba, ball by
-    ball in :func:`thermobear.loads._kernels.place_kernel` (the same iteration)."""
+    search fails (a start needs no more).  Returns the ball centres X1, X2 [m]."""
     x1, x2 = x1.copy(), x2.copy()
-    _hk = _kernels()
-    if _hk is not None:
-        n = x1.size
-        # fresh writeable float arrays: numba compiles (and caches) one version per argument type, and a
-        # read-only view (broadcast_to, a cached solution's arrays) is another type
-        fl = [np.array(np.broadcast_to(v, (n,)), dtype=float) for v in (a1, a2, f1, f2, Ki, Ko, mu, tol)]
-        _hk.place_kernel(x1, x2, *fl, float(ci0), float(co0), float(cap), _BALL_MAXIT, _BALL_HALVINGS)
-        return x1, x2
     act = np.arange(x1.size)
     fabs = np.hypot(f1, f2)
 

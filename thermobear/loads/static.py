@@ -44,24 +44,6 @@ _TOL = 1e-12          # relative equilibrium residual at which Newton stops
 _MAXIT = 60
 _HALVINGS = 30        # line-search halvings per Newton step
 
-_KERNELS = []
-
-
-def _kernels():
-    """The compiled kernels (:mod:`thermobear.loads._kernels`) when numba is installed and not turned off by
-    ``THERMOBEAR_NUMBA=0``, else None; imported on first use (numba's import costs ≈ 0.3 s)."""
-    if not _KERNELS:
-        try:
-            from thermobear.loads import _kernels as k
-        except Exception as exc:        # numba installed but broken (e.g. a version clash): numpy path
-            import warnings
-            warnings.warn(f"thermobear: compiled kernels unavailable ({type(exc).__name__}: {exc}); "
-                          "using the numpy path", RuntimeWarning, stacklevel=2)
-            k = None
-        _KERNELS.append(k if k is not None and k.ENABLED else None)
-    return _KERNELS[0]
-
-
 @dataclass(frozen=True)
 class LoadDistribution:
     """Result of the quasi-static load distribution.
@@ -143,13 +125,6 @@ def axial_contact_angle(brg: BallBearing, Fa, Kn=None, tol: float = 1e-14):
     if brg.kind == "thrust" and a0 >= np.pi / 2 - 1e-12:
         # α stays 90°: the approach is Fa/(Z Kn) ^ (2/3) along the axis
         return np.full_like(Fa, np.pi / 2)
-
-    kern = _kernels()
-    if kern is not None:            # the same iteration, compiled, element by element (thermobear.loads._kernels)
-        tg = np.ascontiguousarray(target, dtype=float).ravel()
-        al = np.empty(tg.size)
-        kern.axial_angle_kernel(tg, float(a0), float(c0), float(tol), 100, al)
-        return np.where(Fa > 0, al.reshape(np.shape(target)), a0)
 
     def g(al):
         t = np.maximum(c0 / np.cos(al) - 1.0, 0.0)
@@ -400,13 +375,7 @@ def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, st
         return res, J
 
     it = 0
-    kern = _kernels() if stiffness == "nominal" else None
-    if kern is not None:            # the same iteration, compiled, case by case (thermobear.loads._kernels)
-        norm, its = np.empty(nb), np.empty(nb, np.int64)
-        kern.static_kernel(y, F_app, scale, zero, na, c_psi[0], A, np.sin(brg.alpha0), np.cos(brg.alpha0),
-                           float(Kn0), float(tol), int(maxiter), _HALVINGS, norm, its)
-        it = int(its.max()) if nb else 0
-    else:
+    if True:
         res, J = residual_and_jac(y)
         norm = np.max(np.abs(res[:, active]), axis=1)
         norm[zero] = 0.0
