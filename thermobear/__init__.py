@@ -8,7 +8,7 @@ from thermobear.contact.materials import Material, material, material_names, red
 from thermobear.contact.hertz import hertz, HertzContact
 from thermobear.files import example_path
 from thermobear.contact.geometry import BallBearing, bearing, bearing_names
-from thermobear.loads.static import load_distribution, LoadDistribution, needs_high_speed
+from thermobear.loads import load_distribution, LoadDistribution, needs_high_speed
 from thermobear.loads.highspeed import load_distribution_high_speed, FilmInputs
 from thermobear.loads.film import film_load_distribution, FilmLoadDistribution
 from thermobear.contact.kinematics import ball_kinematics

@@ -304,7 +304,7 @@ def _prime_dry_loads(scenes) -> int:
         M = None if no_M else np.array([k[3] for k in keys])
         try:
             if low:     # no continuation in a priming batch: a case that needs it is left to its own solve
-                ld = load_distribution(brg, Fa=Fa, Fr=Fr, M=M, stiffness=stiff, _cont=False)
+                ld = load_distribution(brg, Fa=Fa, Fr=Fr, M=M, stiffness=stiff, continuation=False)
             else:
                 from thermobear.loads.highspeed import load_distribution_high_speed
                 ld = load_distribution_high_speed(brg, Fa=Fa, Fr=Fr, M=M, n_rpm=np.array([k[5] for k in keys]),

@@ -1,3 +1,8 @@
-"""Quasi-static load distribution: low-speed (static), high-speed, and with films in the contact law."""
-from thermobear.loads.static import (LoadDistribution, load_distribution, needs_high_speed,  # noqa: F401
-                                     axial_contact_angle, STIFFNESS_MODES)
+"""Quasi-static load distribution of ball bearings with rigid rings: low-speed (static), high-speed, and
+with the lubricant film in the contact law; one entry point, :func:`load_distribution`."""
+from thermobear.loads.rings import LoadDistribution, STIFFNESS_MODES  # noqa: F401
+from thermobear.loads.static import load_distribution_static, axial_contact_angle, needs_high_speed  # noqa: F401
+from thermobear.loads.highspeed import (load_distribution_high_speed, load_distribution_high_speed_full,  # noqa: F401
+                                        HighSpeedExtras, FilmInputs, HS_CONTROLS)
+from thermobear.loads.film import film_load_distribution, film_contact_law, FilmLoadDistribution  # noqa: F401
+from thermobear.loads.api import load_distribution, high_speed_cases, FORMS  # noqa: F401

@@ -33,13 +33,16 @@ __all__ = [
     "hamrock_dowson_groups", "film_thickness", "moes_parameters", "moes_N",
     "nvm_asymptotes", "nvm_H", "film_thickness_nvm", "composite_roughness",
     "specific_film_thickness", "Regime", "moes_regime", "lubrication_regime",
-    "MoesMapBoundaries", "moes_map_boundaries", "REGIMES",
+    "MoesMapBoundaries", "moes_map_boundaries", "REGIMES", "NVM_TINY", "NVM_EXP_MAX", "nvm_ln_asymptote_consts",
 ]
 
 REGIMES = ("IVR", "IVE", "PVR", "EHL")
 
 _TINY = 1e-300     # floor inside logarithms (zero load / zero speed limits)
 _EXP_MAX = 700.0   # clip of exponents so ratios stay finite (e^700 ≈ 1e304)
+#: floor inside the logarithms and clip of the exponents of the NVM film functions (public: the film
+#: contact law of thermobear.loads.filmlaw evaluates the same blend with its derivatives, to the same bits)
+NVM_TINY, NVM_EXP_MAX = _TINY, _EXP_MAX
 
 
 # ---------------------------------------------------------------------------
@@ -251,8 +254,8 @@ def moes_N(M, D):
     return _out(np.asarray(M, dtype=float) * np.sqrt(np.asarray(D, dtype=float)), M, D)
 
 
-def _ln_asymptote_consts(D):
-    """The D-dependent parts of the logs of the NVM asymptotes (PHYSICS.md §5.2):
+def nvm_ln_asymptote_consts(D):
+    """The D-dependent parts of the logs of the NVM asymptotes (Nijenbanning, Venner & Moes 1994):
     (c_RI, c_EI, c_RP, c_EP, ln h00) with ln H_RI = c_RI − 2 ln M, ln H_EI = c_EI − (2/15) ln M,
     ln H_RP = c_RP + (2/3) ln L, ln H_EP = c_EP − ln M/12 + (3/4) ln L.  Split off so that a caller
     evaluating many temperatures at one geometry (:func:`thermobear.losses.evaluate_losses`)
@@ -265,6 +268,9 @@ def _ln_asymptote_consts(D):
     c_EP = np.log(1.48) - (7.0 / 20.0) * e - lnD / 24.0
     ln_h00 = np.log(1.8) - lnD
     return c_RI, c_EI, c_RP, c_EP, ln_h00
+
+
+_ln_asymptote_consts = nvm_ln_asymptote_consts      # former private name (thermobear.losses.local imports it)
 
 
 def _ln_asymptotes_from(consts, lnM, lnL):

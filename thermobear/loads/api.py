@@ -1,0 +1,205 @@
+r"""One entry point to the quasi-static load distribution: :func:`load_distribution` chooses the form.
+
+* ``"static"`` — :func:`thermobear.loads.static.load_distribution_static`: low speed, equal inner and
+  outer contact angles (Jones 1960; Harris 2001 ch. 7; seed 004 eqs 6–8; ISO/TS 16281 rigid rings);
+* ``"high_speed"`` — :func:`thermobear.loads.highspeed.load_distribution_high_speed`: centrifugal force,
+  gyroscopic moment and one cage (Jones 1960; Harris 2001 ch. 8), inner ring rotating;
+* with ``film=...`` the lubricant film enters each contact law (:mod:`thermobear.loads.film` in the static
+  form, ``film=`` of the high-speed form).
+"""
+from __future__ import annotations
+
+from dataclasses import fields
+
+import numpy as np
+
+from thermobear.contact.geometry import BallBearing
+from thermobear.contact.kinematics import entrainment_speed
+from thermobear.errors import InputError
+from thermobear.loads.film import film_load_distribution
+from thermobear.loads.highspeed import FilmInputs, load_distribution_high_speed
+from thermobear.loads.rings import LoadDistribution
+from thermobear.loads.static import load_distribution_static, needs_high_speed
+
+__all__ = ["load_distribution", "FORMS", "high_speed_cases"]
+
+FORMS = ("auto", "static", "high_speed")
+
+
+def high_speed_cases(brg: BallBearing, Fa, Fr, n_rpm, rotating: str = "inner", threshold: float = 0.05):
+    """Which load cases the ``"auto"`` form solves in the high-speed form (boolean, broadcast shape).
+
+    High speed where :func:`thermobear.loads.needs_high_speed` says so — the ball centrifugal force above
+    ``threshold`` of the typical ball load Q = max(F_a / (Z sin α0), 5 F_r / Z) (the axial share, or
+    Stribeck's most loaded ball) — and the form applies: a radial or angular contact bearing with its
+    inner ring rotating.  A thrust bearing's centrifugal force acts across its grooves (not modelled).
+
+    >>> from thermobear.contact.geometry import bearing
+    >>> high_speed_cases(bearing("7210"), 450.0, 325.0, [0.0, 1000.0, 3200.0]).tolist()
+    [False, False, True]
+    """
+    Fa, Fr, n = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (Fa, Fr, n_rpm)))
+    if brg.kind == "thrust" or rotating != "inner":
+        return np.zeros(Fa.shape, bool)
+    Qtyp = np.maximum(np.maximum(Fa / (brg.Z * max(np.sin(brg.alpha0), 1e-3)), Fr * 5.0 / brg.Z), 1e-9)
+    return needs_high_speed(brg, n, Qtyp, threshold=threshold, rotating=rotating)[0] & (n > 0)
+
+
+def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, form: str = "auto", film=None,
+                      stiffness: str = "nominal", control: str = "outer", tol=None, maxiter=None, start=None,
+                      continuation: bool = True) -> LoadDistribution:
+    r"""Quasi-static load distribution of a ball bearing with rigid rings, in the form the case needs.
+
+    Parameters
+    ----------
+    brg : BallBearing
+    Fa : array_like     axial load on the inner ring [N], ≥ 0
+    Fr : array_like     radial load on the inner ring [N], ≥ 0, acting towards ψ = 0
+    M : array_like      tilting moment [N m]; ``None`` holds the tilt at θ = 0
+    n_rpm : array_like  inner-ring speed [rpm], ≥ 0 (outer ring fixed); broadcast with the loads
+    form : str          ``"auto"`` (default), ``"static"`` or ``"high_speed"``.  ``"auto"`` takes the
+                        high-speed form for the cases :func:`high_speed_cases` selects (F_c above 5 % of the
+                        typical ball load, radial or angular contact bearing) and the static form for the
+                        others (n_rpm = 0 is always static); a batch mixing both is solved form by form
+                        and returned as one :class:`~thermobear.loads.LoadDistribution`.
+    film : dict, optional
+                        the lubricant film in each contact law: ``dict(eta=..., alpha_p=...)`` [Pa s, 1/Pa]
+                        (scalars or one per load case).  The static form also takes the mean entrainment
+                        speeds ``u_i``, ``u_o`` [m/s] (per ball or case); without them it uses
+                        :func:`thermobear.contact.kinematics.entrainment_speed` at the nominal contact angle,
+                        inner ring at n_rpm (then n_rpm > 0).  The high-speed form computes its own
+                        (caged kinematics).  ``None``: dry Hertz contacts.
+    stiffness : str     ``"nominal"`` or ``"per_ball"`` (K_n at each ball's contact angle)
+    control : str       raceway control of the high-speed form (``"outer"``, ``"inner"``, ``"both"``)
+    tol, maxiter        Newton tolerance and iterations (default: the form's)
+    start : LoadDistribution or array_like, optional
+                        static form: ring displacements to start from (a nearby solution)
+    continuation : bool static form: solve a case that fails from the closed-form start again by
+                        continuation in the load magnitude (default True)
+
+    Returns
+    -------
+    LoadDistribution    (:class:`thermobear.loads.film.FilmLoadDistribution` for the static film law);
+                        the per-ball details of the high-speed form are in
+                        :func:`thermobear.loads.highspeed.load_distribution_high_speed_full`
+
+    Raises
+    ------
+    InputError, NoEquilibrium, NoConvergence   as the form's function
+
+    Examples
+    --------
+    Seed 004 7210 under Fa 450 N, Fr 325 N: static at rest, high speed at 3200 rpm (F_c/Q ≈ 0.13), where
+    the outer contacts carry the centrifugal force.
+
+    >>> from thermobear.contact.geometry import bearing
+    >>> b = bearing("7210")
+    >>> rest, run = load_distribution(b, 450.0, 325.0), load_distribution(b, 450.0, 325.0, n_rpm=3200.0)
+    >>> bool(np.allclose(rest.Q_i, rest.Q_o)), bool(np.all(run.Q_o > run.Q_i))
+    (True, True)
+    """
+    if form not in FORMS:
+        raise InputError("form", form, f"must be one of {', '.join(FORMS)}")
+    n = np.asarray(n_rpm, dtype=float)
+    if np.any(~np.isfinite(n)) or np.any(n < 0):
+        raise InputError("n_rpm", n_rpm, "inner-ring speed must be finite and >= 0 [rpm] (outer ring fixed)")
+    if isinstance(film, FilmInputs):
+        film = {"eta": film.eta, "alpha_p": film.alpha_p}
+    if film is not None and not hasattr(film, "keys"):
+        raise InputError("film", film, "None or a dict with 'eta' [Pa s], 'alpha_p' [1/Pa] (static form: also "
+                         "'u_i', 'u_o' [m/s])")
+    opts = {k: v for k, v in (("tol", tol), ("maxiter", maxiter)) if v is not None}
+    if form == "auto":
+        hs = high_speed_cases(brg, Fa, Fr, n)
+        if np.all(hs) and hs.size:
+            form = "high_speed"
+        elif not np.any(hs):
+            form = "static"
+        else:
+            return _mixed(brg, Fa, Fr, M, n, hs, film, stiffness, control, opts, start, continuation)
+    if form == "high_speed":
+        hs_film = None
+        if film is not None:
+            extra = set(film.keys()) - {"eta", "alpha_p"}
+            if extra:
+                raise InputError("film", film, f"the high-speed form computes the entrainment speeds itself; drop "
+                                 f"{', '.join(sorted(extra))}")
+            hs_film = dict(film)
+        return load_distribution_high_speed(brg, Fa, Fr, M, n, control=control, stiffness=stiffness,
+                                            film=hs_film, **opts)
+    if film is None:
+        return load_distribution_static(brg, Fa, Fr, M, stiffness=stiffness, start=start,
+                                        continuation=continuation, **opts)
+    return _static_film(brg, Fa, Fr, M, n, film, stiffness, opts)
+
+
+def _static_film(brg, Fa, Fr, M, n, film, stiffness, opts):
+    """The static form with the film law; entrainment speeds from the film dict or from n_rpm."""
+    keys = set(film.keys())
+    if not {"eta", "alpha_p"} <= keys or not keys <= {"eta", "alpha_p", "u_i", "u_o"}:
+        raise InputError("film", film, "a dict with 'eta' [Pa s], 'alpha_p' [1/Pa] and optionally 'u_i', 'u_o' [m/s]")
+    if "u_i" in film or "u_o" in film:
+        if not {"u_i", "u_o"} <= keys:
+            raise InputError("film", film, "give both 'u_i' and 'u_o' [m/s], or neither (then from n_rpm)")
+        u_i, u_o = film["u_i"], film["u_o"]
+    else:
+        if np.any(n <= 0):
+            raise InputError("n_rpm", n, "must be > 0 for the film law without entrainment speeds 'u_i', 'u_o'")
+        w = n * np.pi / 30.0
+        u = np.asarray(entrainment_speed(w, 0.0 * w, brg.D, brg.dm, brg.alpha0), dtype=float)
+        shape = np.broadcast_shapes(np.shape(Fa), np.shape(Fr), np.shape(M) if M is not None else (), n.shape)
+        u_i = u_o = np.broadcast_to(u, shape)[..., None]
+    return film_load_distribution(brg, Fa, Fr, M, u_i=u_i, u_o=u_o, eta=film["eta"], alpha_p=film["alpha_p"],
+                                  stiffness=stiffness, **opts)
+
+
+def _mixed(brg, Fa, Fr, M, n, hs, film, stiffness, control, opts, start, continuation):
+    """A batch whose cases need different forms: each form on its cases, merged into one LoadDistribution."""
+    shape = hs.shape
+    Fa_b, Fr_b, n_b = (np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for v in (Fa, Fr, n))
+    M_b = None if M is None else np.broadcast_to(np.asarray(M, dtype=float), shape).ravel()
+    flat = hs.ravel()
+    parts = []
+    for form, sel in (("high_speed", flat), ("static", ~flat)):
+        idx = np.flatnonzero(sel)
+        f = None if film is None else {k: _rows(v, shape, brg.Z, idx) for k, v in film.items()}
+        st = None if start is None or form == "high_speed" else _rows_of_start(start, shape, idx)
+        ld = load_distribution(brg, Fa_b[idx], Fr_b[idx], None if M_b is None else M_b[idx], n_b[idx], form=form,
+                               film=f, stiffness=stiffness, control=control, start=st, continuation=continuation,
+                               **opts)
+        parts.append((idx, ld))
+    nb, Z = flat.size, brg.Z
+    out = {}
+    for fld in fields(LoadDistribution):
+        k = fld.name
+        if k in ("psi", "residual", "iterations", "Fa", "Fr", "M"):
+            continue
+        v = np.empty((nb, Z) if np.ndim(getattr(parts[0][1], k)) == 2 else nb)
+        for idx, ld in parts:
+            v[idx] = getattr(ld, k)
+        out[k] = v.reshape(shape + v.shape[1:])
+    Mv = np.zeros(shape) if M is None else np.broadcast_to(np.asarray(M, dtype=float), shape).copy()
+    return LoadDistribution(psi=parts[0][1].psi, residual=max(ld.residual for _, ld in parts),
+                            iterations=max(ld.iterations for _, ld in parts), Fa=np.asarray(Fa, dtype=float),
+                            Fr=np.asarray(Fr, dtype=float), M=Mv, **out)
+
+
+def _rows(v, shape, Z, idx):
+    """The cases ``idx`` of a film input given per case (batch shape) or per case and ball (+ (Z,))."""
+    a = np.asarray(v, dtype=float)
+    if a.ndim == 0:
+        return a
+    try:
+        return np.broadcast_to(a, shape).ravel()[idx]
+    except ValueError:
+        return np.broadcast_to(a, shape + (Z,)).reshape(-1, Z)[idx]
+
+
+def _rows_of_start(start, shape, idx):
+    """The rows ``idx`` of a start given for the whole batch."""
+    if isinstance(start, LoadDistribution):
+        v = np.stack(np.broadcast_arrays(*(np.asarray(getattr(start, k), float)
+                                           for k in ("delta_a", "delta_r", "theta"))), axis=-1)
+    else:
+        v = np.asarray(start, dtype=float)
+    return np.broadcast_to(v, shape + (3,)).reshape(-1, 3)[idx]
