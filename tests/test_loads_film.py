@@ -219,17 +219,19 @@ def test_law_alpha_derivative_matches_central_difference(stiffness):
     Gq = [law.parts(Q * f, al) for f in (np.exp(1e-5), np.exp(-1e-5))]
     fdq = ((Gq[0][0] - Gq[0][1] - Gq[0][2]) - (Gq[1][0] - Gq[1][1] - Gq[1][2])) / 2e-5
     assert np.allclose(GQ, fdq, rtol=1e-6)
-    # high-speed form: one film per contact, both contacts on a last axis
-    K = np.array([B7210.K_i(B7210.alpha0), B7210.K_o(B7210.alpha0)])
-    v = np.array([[[180.0, 150.0]]])                 # orbital speed factors |ω − ω_c|, ω_c [rad/s]
-    hs = _FilmLaw(B7210, np.array([[[0.0221]]]), np.array([[[2e-8]]])).bind(K, v)
-    a2 = np.stack([al, al - 0.05], axis=-1)
-    Q2 = np.stack([Q, 1.2 * Q], axis=-1)
-    gp, sg = B7210.D / B7210.dm, np.array([-1.0, 1.0])
+    # high-speed form: one film per contact, the two contacts of a ball side by side, (nb, 2Z) [inner | outer]
+    Z = B7210.Z
+    al15, Q15 = np.linspace(0.3, 0.9, Z)[None, :], np.geomspace(0.01, 3000.0, Z)[None, :]
+    K = np.repeat([B7210.K_i(B7210.alpha0), B7210.K_o(B7210.alpha0)], Z)
+    v = np.repeat([[180.0, 150.0]], Z, axis=1)       # orbital speed factors |ω − ω_c|, ω_c [rad/s]
+    hs = _FilmLaw(B7210, np.array([[0.0221]]), np.array([[2e-8]])).bind(K, v)
+    a2 = np.concatenate([al15, al15 - 0.05], axis=1)
+    Q2 = np.concatenate([Q15, 1.2 * Q15], axis=1)
+    gp, sg = B7210.D / B7210.dm, np.repeat([-1.0, 1.0], Z)
 
     def G_hs(a):
         fac = 1.0 + sg * gp * np.cos(a)
-        h = film_thickness_nvm(Q2, 0.5 * B7210.D * fac, np.array([B7210.Ry_i, B7210.Ry_o]),
+        h = film_thickness_nvm(Q2, 0.5 * B7210.D * fac, np.repeat([B7210.Ry_i, B7210.Ry_o], Z),
                                v * 0.5 * B7210.dm * fac, 0.0221, 2e-8, B7210.E_prime)
         return (Q2 / K) ** (2 / 3) - h
 

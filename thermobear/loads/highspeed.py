@@ -240,7 +240,7 @@ class FilmInputs:
 
 
 def _film_inputs(film, shape):
-    """Validated η [Pa s] and α_p [1/Pa] of ``film`` (mapping or :class:`FilmInputs`), shape (nb, 1, 1)."""
+    """Validated η [Pa s] and α_p [1/Pa] of ``film`` (mapping or :class:`FilmInputs`), shape (nb, 1)."""
     if isinstance(film, FilmInputs):
         film = {"eta": film.eta, "alpha_p": film.alpha_p}
     if not hasattr(film, "keys") or set(film.keys()) != {"eta", "alpha_p"}:
@@ -256,7 +256,7 @@ def _film_inputs(film, shape):
             a = np.broadcast_to(a, shape)
         except ValueError:
             raise InputError(f"film.{key}", film[key], f"must broadcast to the load batch {shape}") from None
-        out.append(a.reshape(-1, 1, 1).copy())
+        out.append(a.reshape(-1, 1).copy())
     return out
 
 
@@ -364,7 +364,7 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
     if lam_i != 0.0:
         # a converged point where the gyroscopic friction alone carries F_a has every inner contact
         # open (friction without a normal load): the degenerate end of the branch, no equilibrium
-        gyro = (lam_i * st.Mg / brg.D * st.n[..., 0, 1]).sum(1)
+        gyro = (lam_i * st.Mg / brg.D * st.n[:, 2 * brg.Z:3 * brg.Z]).sum(1)
         bad = (n_b > 0) & (Fa_b > 0) & (gyro >= Fa_b * (1.0 - 1e-6))
         if np.any(bad):
             k = int(np.argmax(bad))
@@ -473,7 +473,7 @@ def _film_stage(pb, z, st0, its, eta, ap, opt, Fa_b, Fr_b, Mv, n_b):
     inversion's bracket expands from there), the frozen cage speed the dry one.  Cases that fail are
     re-solved from the dry solution by continuation in viscosity, η·(1e-6, 1e-4, 1e-2, 0.1, 1): at
     η·1e-6 the films are ~1e-4 of the final ones (h ∝ η^0.6–0.7 in the EHL regimes, ∝ η in IVR)."""
-    Q0 = np.maximum(st0.Q, 1e-9 * pb.scale[:, None, None])
+    Q0 = np.maximum(st0.Q, 1e-9 * pb.scale[:, None])
     pb.film = _FilmLaw(pb.brg, eta, ap)
     pb.fz = {"W": st0.W.copy(), "Q": Q0}
     z0, W0 = z.copy(), st0.W.copy()
@@ -524,10 +524,11 @@ def _diagnose(pb, z, done, Fa_b, Fr_b, n_b, its, norm, z_start=None):
     were driven over the low shoulder of an angular contact bearing (α_i ≤ 0)."""
     st = pb.evaluate(z)
     if pb.lam_i != 0.0:
-        gyro = (pb.lam_i * st.Mg / pb.brg.D * st.n[..., 0, 1]).sum(1)
+        Z = pb.Z
+        gyro = (pb.lam_i * st.Mg / pb.brg.D * st.n[:, 2 * Z:3 * Z]).sum(1)
         if z_start is not None:
             s0 = pb.evaluate(z_start)
-            gyro = np.fmax(gyro, (pb.lam_i * s0.Mg / pb.brg.D * s0.n[..., 0, 1]).sum(1))
+            gyro = np.fmax(gyro, (pb.lam_i * s0.Mg / pb.brg.D * s0.n[:, 2 * Z:3 * Z]).sum(1))
         bad = ~done & (gyro >= np.maximum(Fa_b, 0.0)) & (n_b > 0)
         if np.any(bad):
             k = int(np.argmax(bad))
@@ -537,7 +538,8 @@ def _diagnose(pb, z, done, Fa_b, Fr_b, n_b, its, norm, z_start=None):
                 f"axially with {gyro[k]:.4g} N >= Fa; no positive contact loads balance it. Use control = 'outer' "
                 "or a larger axial load", iterations=int(its[k]), residual=float(norm[k]))
     if pb.brg.kind == "angular_contact":
-        bad = ~done & np.any((st.dl[..., 0] > 0) & (np.arctan2(st.V[..., 0, 0], st.V[..., 0, 1]) <= 0), axis=1)
+        Z = pb.Z
+        bad = ~done & np.any((st.dl[:, :Z] > 0) & (np.arctan2(st.V[:, :Z], st.V[:, 2 * Z:3 * Z]) <= 0), axis=1)
         if np.any(bad):
             k = int(np.argmax(bad))
             raise NoEquilibrium(
@@ -552,13 +554,14 @@ def _results(pb, z, st, norm, its, shape, loads, control, with_film):
     Fa, Fr, Fa_b, Fr_b, Mv, n_b = loads
     brg, A, R, Z = pb.brg, pb.A, pb.R, pb.Z
     zero = np.max(np.abs(pb.F_app), axis=1) == 0.0
+    Z2 = 2 * Z
     if with_film:
-        Qi, Qo = st.Q[..., 0], st.Q[..., 1]
+        Qi, Qo = st.Q[:, :Z], st.Q[:, Z:]
     else:
-        Qi = np.where(st.dl[..., 0] > 0, st.Q[..., 0], 0.0)
-        Qo = np.where(st.dl[..., 1] > 0, st.Q[..., 1], 0.0)
-    al = np.arctan2(st.V[..., 0], st.V[..., 1])
-    a_i, a_o = al[..., 0], al[..., 1]
+        Q = np.where(st.dl > 0, st.Q, 0.0)
+        Qi, Qo = Q[:, :Z], Q[:, Z:]
+    al = np.arctan2(st.V[:, :Z2], st.V[:, Z2:])
+    a_i, a_o = al[:, :Z], al[:, Z:]
     if brg.kind == "angular_contact" and np.any((Qi > 0) & (a_i <= 0)):
         k = int(np.argmax(np.any((Qi > 0) & (a_i <= 0), axis=1)))
         raise NoEquilibrium(
@@ -570,7 +573,8 @@ def _results(pb, z, st, norm, its, shape, loads, control, with_film):
         a_i, a_o = np.where(free, brg.alpha0, a_i), np.where(free, brg.alpha0, a_o)
     else:
         a_i, a_o = np.where(zero[:, None] & free, 0.0, a_i), np.where(zero[:, None] & free, 0.0, a_o)
-    dn = np.maximum(st.dl, 0.0).sum(-1) if not with_film else st.d_el.sum(-1)
+    dl = st.d_el if with_film else np.maximum(st.dl, 0.0)
+    dn = dl[:, :Z] + dl[:, Z:]
     g = z[:, :3]
     ones = np.ones((z.shape[0], Z))
 
@@ -588,12 +592,14 @@ def _results(pb, z, st, norm, its, shape, loads, control, with_film):
         M=sh(Mv))
     ex = HighSpeedExtras(
         Fc=shz(st.Fc * ones), Mg=shz(st.Mg), omega_c=shz(st.W * ones), omega_R=shz(st.wR),
-        beta=shz(np.arctan2(st.sb, st.cb)), X1=shz(st.X1), X2=shz(st.X2), delta_i=shz(st.dl[..., 0]),
-        delta_o=shz(st.dl[..., 1]), lambda_i=pb.lam_i, lambda_o=pb.lam_o, control=control, n_rpm=sh(n_b))
+        beta=shz(np.arctan2(st.sb, st.cb)), X1=shz(st.X1.copy()), X2=shz(st.X2.copy()),
+        delta_i=shz(st.dl[:, :Z].copy()), delta_o=shz(st.dl[:, Z:].copy()), lambda_i=pb.lam_i, lambda_o=pb.lam_o,
+        control=control, n_rpm=sh(n_b))
     if with_film:
-        u = st.f_v * (0.5 * brg.dm) * (1.0 + np.array([-1.0, 1.0]) * (brg.D / brg.dm) * np.cos(st.f_al))
-        ex = replace(ex, h_i=shz(st.h[..., 0]), h_o=shz(st.h[..., 1]), delta_el_i=shz(st.d_el[..., 0]),
-                     delta_el_o=shz(st.d_el[..., 1]), u_i=shz(u[..., 0]), u_o=shz(u[..., 1]),
+        u = st.f_v * (0.5 * brg.dm) * (1.0 + np.repeat([-1.0, 1.0], Z) * (brg.D / brg.dm) * np.cos(st.f_al))
+        ex = replace(ex, h_i=shz(st.h[:, :Z].copy()), h_o=shz(st.h[:, Z:].copy()),
+                     delta_el_i=shz(st.d_el[:, :Z].copy()), delta_el_o=shz(st.d_el[:, Z:].copy()),
+                     u_i=shz(u[:, :Z]), u_o=shz(u[:, Z:]),
                      film_law_residual=float(st.f_rel.max()),
                      film_cage_lag=float(np.max(np.abs(st.W - st.fz_W)[:, 0] / pb.omega)))
     return ld, ex

@@ -3,16 +3,18 @@ r"""The high-speed ball equilibrium as a problem of the shared Newton: residual,
 Equations and conventions: :mod:`thermobear.loads.highspeed` (Jones 1960 [1]; Harris 2001 [2] ch. 8;
 Harris & Kotzalas 2007 [3] ch. 3).  Unknowns of a load case, one row of z (nb, 3 + 2Z):
 
-    z = (δa/A, δr/A, θℜ_i/A,  X1_0/A, X2_0/A,  X1_1/A, X2_1/A, …)
+    z = (δa/A, δr/A, θℜ_i/A,  X1_0/A … X1_{Z−1}/A,  X2_0/A … X2_{Z−1}/A)
 
-the ring unknowns g first (the lever map of :mod:`thermobear.loads.rings`), then the centre of each
-ball from its outer groove curvature centre (axial, radial).  Residual rows in the same order: the
-inner ring's (F_a, F_r, M/ℜ_i) balance, then each ball's (axial, radial) force balance, all divided
-by the case's force scale.
+the ring unknowns g first (the lever map of :mod:`thermobear.loads.rings`), then the ball centres from
+their outer groove curvature centres, axial components of every ball, then radial ones.  Residual rows
+in the same order: the inner ring's (F_a, F_r, M/ℜ_i) balance, then each ball's axial and radial force
+balance, all divided by the case's force scale.
 
-Arrays are ball-major with the two contacts stacked: (nb, Z, 2 contacts [inner, outer], 2 components
-[axial, radial]); both contacts go through one numpy call wherever their formulas agree (a load case
-is a few hundred tiny arrays: the number of calls, not the arithmetic, sets the cost).
+Layout.  A load case is a few hundred numpy operations on Z-element rows: their call overhead, not the
+arithmetic, sets the cost.  So every per-ball quantity is a flat row, the two contacts of a ball side by
+side — (nb, 2Z) arrays [inner | outer] — and one call serves both contacts wherever their formulas
+agree; the contact vectors are (nb, 4Z) [axial inner | axial outer | radial inner | radial outer];
+sums over the balls are products with constant matrices.
 
 References
 ----------
@@ -33,10 +35,7 @@ from thermobear.loads.highspeed_start import relax as _relax
 from thermobear.loads.rings import azimuths, lever_matrix
 
 _EPS_TENSION = 1e-12    # linear stiffness of an open contact, relative to K √A (numerical regularisation)
-_SGN_E = np.array([1.0, -1.0])                  # (sin α, cos α) reversed -> e = (cos α, −sin α)
-_SGN_2 = np.array([[1.0, -1.0], [-1.0, 1.0]])   # cofactor signs of a 2×2 inverse
-_PM = np.array([1.0, -1.0])                     # inner (+), outer (−) contact on the ball residual
-LAG_SKIP = 0.05       # film refresh: keep the iterate when the cage-speed lag is below this fraction of its residual
+LAG_SKIP = 0.05         # film refresh: keep the iterate when the cage-speed lag is below this fraction of its residual
 
 
 @lru_cache(maxsize=32)
@@ -47,8 +46,32 @@ def _stiffness_constants(brg):
     return float(brg.K_i(an)), float(brg.K_o(an)), _EPS_TENSION * float(brg.Kn()) * np.sqrt(brg.A)
 
 
+@lru_cache(maxsize=32)
+def _constants(brg):
+    """Fixed arrays of a bearing (read-only): cos ψ (Z,), the lever matrix (3, 2Z) [m], the ring sums of the
+    ball forces (4Z, 3), and the sums of the Jacobian's per-ball terms (14 Z, 16) (see :meth:`_HSProblem._blocks`)."""
+    Z = brg.Z
+    c = np.cos(azimuths(Z))
+    L = lever_matrix(brg)
+    Sg = np.zeros((4 * Z, 3))                 # (f_i,a | f_o,a | f_i,r | f_o,r) -> (F_a, F_r, M/ℜ_i)
+    Sg[:Z, 0], Sg[2 * Z:3 * Z, 1], Sg[:Z, 2] = 1.0, c, c
+    # per-ball rows (L_aa, L_ar, L_ra, L_rr, L_ta, L_tr, b_a, b_r, m0..m5 unused) -> S entries:
+    # (L W_t)[m, k] with L the ring rows (a, r, t = tilt) of d r_g/dp and W_t = [[1, 0, c], [0, c, 0]]
+    one, c2 = np.ones(Z), c * c
+    M = np.zeros((8, Z, 12))
+    for row, col, w in ((0, 0, one), (1, 1, c), (0, 2, c),            # row a of r_g: d/dg0, dg1, dg2
+                        (2, 3, one), (3, 4, c), (2, 5, c),            # row r
+                        (4, 6, one), (5, 7, c), (4, 8, c),            # row t
+                        (6, 9, one), (7, 10, c), (6, 11, c)):         # cage: Σ b W_t
+        M[row, :, col] = w
+    out = (c, L, Sg, M.reshape(8 * Z, 12))
+    for a in out:
+        a.setflags(write=False)
+    return out
+
+
 class _FilmLaw:
-    r"""Film contact law of both contacts of every ball, stacked on a last axis (inner, outer).
+    r"""Film contact law of both contacts of every ball, on the (nb, 2Z) [inner | outer] layout.
 
     δ_c = (Q_c/K_c)^(2/3) − h_c(Q_c, α_c)   with h_c the NVM central film
     (:func:`thermobear.lubrication.film.film_thickness_nvm`) at R_x,c = (D/2)(1 ∓ γ'cos α_c), R_y,c, the mean
@@ -58,21 +81,23 @@ class _FilmLaw:
 
     def __init__(self, brg, eta, alpha_p, K=None, v=None):
         self.brg, self.eta, self.ap, self.K, self.v = brg, eta, alpha_p, K, v
+        Z = brg.Z
         self.Ep = brg.E_prime
         self.gp = brg.D / brg.dm
-        self.sgn = np.array([-1.0, 1.0])
-        self.Ry = np.array([brg.Ry_i, brg.Ry_o])
+        self.sgn = np.repeat([-1.0, 1.0], Z)
+        self.Ry = np.repeat([brg.Ry_i, brg.Ry_o], Z)
 
     def take(self, m):
-        """The per-case data of a subset of the batch (eta, alpha_p have shape (nb, 1, 1))."""
+        """The per-case data of a subset of the batch (eta, alpha_p have shape (nb, 1))."""
         return _FilmLaw(self.brg, self.eta[m], self.ap[m])
 
     def bind(self, K, v):
-        """The law with the contact constants K [N/m^1.5] and orbital speed factors v [rad/s] set."""
+        """The law with the contact constants K [N/m^1.5] and orbital speed factors v [rad/s] set
+        (broadcast to (nb, 2Z))."""
         return _FilmLaw(self.brg, self.eta, self.ap, K, v)
 
     def at(self, alpha):
-        r"""The law at contact angles α [rad], shape (nb, Z, 2) (:class:`thermobear.loads.filmlaw._FilmAt`):
+        r"""The law at contact angles α [rad], shape (nb, 2Z) (:class:`thermobear.loads.filmlaw._FilmAt`):
         R_x and u both ∝ 1 ∓ γ'cos α, ∂ln R_x/∂α = ∂ln u/∂α = ±γ' sin α / (1 ∓ γ'cos α); K held."""
         gc = self.sgn * (self.gp * np.cos(alpha))
         fac = 1.0 + gc
@@ -100,69 +125,59 @@ class _HSState:
             elif v is not None:
                 v[idx] = other.__dict__[k]
 
-    # per-ball views used by the start and the results
+    # per-ball views (nb, Z)
     @property
     def Qi(self):
-        return self.Q[..., 0]
-
-    @property
-    def Qo(self):
-        return self.Q[..., 1]
+        return self.Q[:, :self.Q.shape[1] // 2]
 
     @property
     def X1(self):
-        return self.V[..., 1, 0]
+        Z = self.d.shape[1] // 2
+        return self.V[:, Z:2 * Z]
 
     @property
     def X2(self):
-        return self.V[..., 1, 1]
+        Z = self.d.shape[1] // 2
+        return self.V[:, 3 * Z:]
 
 
 class _HSProblem:
     """Fixed data of one batch of high-speed load cases (bearing constants, loads, speeds, control).
 
     ``film``: the :class:`_FilmLaw` of the film contact law (None: dry Hertz contacts); ``fz`` the data it
-    freezes per Newton step (cage speed "W" (nb, 1), warm-start loads "Q" (nb, Z, 2) and the derivatives
+    freezes per Newton step (cage speed "W" (nb, 1), warm-start loads "Q" (nb, 2Z) and the derivatives
     of the iterate they were taken at, :meth:`refresh`)."""
 
     def __init__(self, brg, F_app, scale, omega, free_g, stiffness, lam_i, lam_o, kin_control):
         self.brg = brg
         self.Z, self.A, self.R = brg.Z, brg.A, brg.R_inner_locus
         Z, A = brg.Z, brg.A
-        self.c = np.cos(azimuths(Z))
-        self.c0 = np.array([(brg.fi - 0.5) * brg.D, (brg.fo - 0.5) * brg.D])   # |O_i − C|, |C − O_o| unloaded [m]
-        self.A2_0 = A * np.cos(brg.alpha0)
-        L = lever_matrix(brg)
-        self.Lb = L.reshape(3, 2, Z).transpose(0, 2, 1).reshape(3, 2 * Z)     # ball-major (A1_j, A2_j) [m]
-        self.Sg = self.Lb.T / A                                               # ring sums of (f_a, f_r) per ball
-        self.off = np.array([0.0, self.A2_0])
-        self.Wt = np.zeros((Z, 2, 3))                 # dA_c/dg / A per ball: [[1, 0, c], [0, c, 0]]
-        self.Wt[:, 0, 0], self.Wt[:, 0, 2], self.Wt[:, 1, 1] = 1.0, self.c, self.c
-        self.WtT = np.ascontiguousarray(self.Wt.swapaxes(-1, -2))
+        self.c, self.L, self.Sg, self.Msum = _constants(brg)
+        self.off = np.concatenate([np.zeros(Z), np.full(Z, A * np.cos(brg.alpha0))])
+        self.c0 = np.repeat([(brg.fi - 0.5) * brg.D, (brg.fo - 0.5) * brg.D], Z)   # |O_i − C|, |C − O_o| [m]
         self.stiffness, self.per_ball = stiffness, stiffness == "per_ball"
-        self.lam = np.array([lam_i, lam_o], dtype=float)
         self.lam_i, self.lam_o, self.kin_control = lam_i, lam_o, kin_control
-        self.has_lam = bool(lam_i or lam_o)
         Ki, Ko, self.k_eps = _stiffness_constants(brg)
         self.Ki0, self.Ko0 = Ki, Ko
-        self.K0 = np.array([Ki, Ko])
+        self.K0 = np.repeat([Ki, Ko], Z)
         self.K15 = 1.5 * self.K0
         self.D, self.dm, self.fi = brg.D, brg.dm, brg.fi
         gp = brg.D / brg.dm
         self.gp = gp
-        self.k = 1 if kin_control == "outer" else 0      # the contact whose zero spin sets β
-        sg = 1.0 if kin_control == "outer" else -1.0
-        self.rb2_0, self.rb2_1, self.cb_0 = 1.0 + gp * gp, 2.0 * sg * gp, sg * gp
+        outer = kin_control == "outer"
+        self.k = slice(Z, 2 * Z) if outer else slice(0, Z)      # the contact whose zero spin sets β
+        self.kn = slice(0, Z) if outer else slice(Z, 2 * Z)     # the other one
+        sg = 1.0 if outer else -1.0
+        self.rb2_0, self.rb2_1, self.cb_0, self.sgp = 1.0 + gp * gp, 2.0 * sg * gp, sg * gp, sg * gp
         self.hdm, self.hD = 0.5 * brg.dm, 0.5 * brg.D
-        self.Rsg = np.array([-0.5 * brg.dm * gp, 0.5 * brg.dm * gp])          # R_c = dm/2 + Rsg_c cos α_c
-        self.ek = np.zeros((2, 2))
-        self.ek[:, self.k] = 1.0                       # dβ/dα_m ≠ 0 only for m = k
+        self.Rsg = np.repeat([-0.5 * brg.dm * gp, 0.5 * brg.dm * gp], Z)     # R_c = dm/2 + Rsg_c cos α_c
         self.m = brg.ball_mass
         self.J = self.m * brg.D**2 / 10.0
         self.mdm2 = 0.5 * self.m * brg.dm
-        self.lamD = self.lam / brg.D
-        self.vsg = self.lamD * _PM                     # ∂r_b/∂M_g = Σ_c vsg_c e_c
-        self.mom = lam_i * brg.fi / self.R * self.c    # moment of the inner gyroscopic friction per M_g
+        self.lamD = np.repeat([lam_i / brg.D, lam_o / brg.D], Z)
+        self.has_lam = bool(lam_i or lam_o)
+        self.mom = lam_i * brg.fi / self.R * self.c     # moment of the inner gyroscopic friction per M_g
+        self.pm = np.repeat([1.0, -1.0], Z)             # the inner contact pushes the ball, the outer holds it
         self.film = None
         self.fz = None
         self.set_cases(F_app, scale, omega, free_g)
@@ -170,14 +185,14 @@ class _HSProblem:
     def set_cases(self, F_app, scale, omega, free_g):
         """Per-case data (call again after changing any of them)."""
         self.F_app, self.scale, self.omega, self.free_g = F_app, scale, omega, free_g
-        nb = scale.size
+        nb, Z = scale.size, self.Z
         self.w = omega[:, None]
         self.w_ref = np.maximum(omega, 1.0)
         self.inv_s = (1.0 / scale)[:, None]
-        self.As = (self.A / scale)[:, None, None, None]
-        self.wrs = (self.w_ref / scale)[:, None, None]
-        self.Aw = (self.A / self.w_ref)[:, None, None]
-        self.mask = np.ones((nb, 3 + 2 * self.Z))
+        self.As = (self.A / scale)[:, None]
+        self.wrs = (self.w_ref / scale)[:, None]
+        self.Aw = (self.A / self.w_ref)[:, None]
+        self.mask = np.ones((nb, 3 + 2 * Z))
         self.mask[:, :3] = free_g
         act = np.ones((nb, 4))
         act[:, :3] = free_g
@@ -194,8 +209,8 @@ class _HSProblem:
         return new
 
     def centres(self, g):
-        """Inner groove-centre offsets (A1, A2) per ball (nb, Z, 2) [m] at the ring unknowns g (nb, 3)."""
-        return (g @ self.Lb).reshape(-1, self.Z, 2) + self.off
+        """Inner groove-centre offsets (A1 | A2) per ball (nb, 2Z) [m] at the ring unknowns g (nb, 3)."""
+        return g @ self.L + self.off
 
     # ------------------------------------------------------------------ residual
     def evaluate(self, z):
@@ -212,18 +227,19 @@ class _HSProblem:
         (:func:`thermobear.contact.kinematics.caged_ball_kinematics`; own no-slip −ω R_o R_i / det when
         both contacts are open); F_c = ½ m dm ω_cage², M_g = J ω_R ω_cage sin β."""
         nb, Z, A = z.shape[0], self.Z, self.A
+        Z2 = 2 * Z
         st = _HSState.__new__(_HSState)
-        V = np.empty((nb, Z, 2, 2))
-        x = z[:, 3:].reshape(nb, Z, 2)
-        np.multiply(x, A, out=V[:, :, 1])                                     # C − O_o
-        np.subtract(self.centres(z[:, :3]), V[:, :, 1], out=V[:, :, 0])       # O_i − C
+        V = np.empty((nb, 4 * Z))                          # [p | X1 | q | X2]: O_i − C and C − O_o
+        V4 = V.reshape(nb, 2, 2, Z)
+        np.multiply(z[:, 3:].reshape(nb, 2, Z), A, out=V4[:, :, 1])
+        np.subtract(self.centres(z[:, :3]).reshape(nb, 2, Z), V4[:, :, 1], out=V4[:, :, 0])
         sq = V * V
-        d = np.sqrt(sq[..., 0] + sq[..., 1])
-        n = V / d[..., None]
+        d = np.sqrt(sq[:, :Z2] + sq[:, Z2:])               # [d_i | d_o]
+        n = V / np.concatenate((d, d), axis=1)             # [sin α_i | sin α_o | cos α_i | cos α_o]
         dl = d - self.c0
         if self.per_ball:
-            al = np.arctan2(V[..., 0], V[..., 1])
-            K = np.stack([self.brg.K_i(al[..., 0]), self.brg.K_o(al[..., 1])], axis=-1)
+            al = np.arctan2(V[:, :Z2], V[:, Z2:])
+            K = np.concatenate((self.brg.K_i(al[:, :Z]), self.brg.K_o(al[:, Z:])), axis=1)
         else:
             K = self.K0
         st.fz_W = st.h = st.d_el = st.f_Ga = st.f_GQ = st.f_hu = st.f_v = st.f_al = st.f_rel = st.codes = None
@@ -241,16 +257,18 @@ class _HSProblem:
             Q, dQ = self._film_force(st, V, dl, K)
             st.allpos = True
         self._kinematics(st, n, Q)
-        # forces on the ball: the inner ring's Q_i n_i + T_i e_i, the outer ring's −(Q_o n_o + T_o e_o)
-        F = Q[..., None] * n
+        # forces on the ball: the inner ring's Q_i n_i + T_i e_i, the outer ring's −(Q_o n_o + T_o e_o),
+        # e = (cos α, −sin α), T_c = λ_c M_g/D
+        F = np.concatenate((Q, Q), axis=1) * n             # [Q sin α | Q cos α] of both contacts
         if self.has_lam:
-            e = n[..., ::-1] * _SGN_E
-            F += (st.Mg[..., None] * self.lamD)[..., None] * e
-        res = np.empty((nb, 3 + 2 * Z))
-        r_b = res[:, 3:].reshape(nb, Z, 2)
-        np.subtract(F[:, :, 0], F[:, :, 1], out=r_b)
-        r_b[..., 1] += st.Fc
-        r_g = F[:, :, 0].reshape(nb, 2 * Z) @ self.Sg
+            T = np.concatenate((st.Mg, st.Mg), axis=1) * self.lamD
+            F[:, :Z2] += T * n[:, Z2:]
+            F[:, Z2:] -= T * n[:, :Z2]
+        res = np.empty((nb, 3 + Z2))
+        np.subtract(F[:, :Z], F[:, Z:Z2], out=res[:, 3:3 + Z])
+        np.subtract(F[:, Z2:3 * Z], F[:, 3 * Z:], out=res[:, 3 + Z:])
+        res[:, 3 + Z:] += st.Fc
+        r_g = F @ self.Sg
         if self.lam_i:
             r_g[:, 2] -= st.Mg @ self.mom
         np.subtract(r_g, self.F_app, out=res[:, :3])
@@ -259,38 +277,36 @@ class _HSProblem:
         if not np.isfinite(norm).all():              # an overflow: a residual too large to accept (continue)
             norm = np.where(np.isfinite(norm), norm, np.inf)
         if st.codes is not None:                     # the film law could not be inverted: the case stops
-            norm = np.where(st.codes.any(axis=(1, 2)), np.nan, norm)
+            norm = np.where(st.codes.any(axis=1), np.nan, norm)
         st.z, st.V, st.d, st.n, st.dl, st.Q, st.dQ, st.res, st.norm = z, V, d, n, dl, Q, dQ, res, norm
         return st
 
     def _kinematics(self, st, n, Q):
         """β, contact radii, lever arms, own orbital speeds, cage speed, ω_R, F_c, M_g into ``st``."""
-        w = self.w
-        sk, ck = n[:, :, self.k, 0], n[:, :, self.k, 1]
-        rb2 = self.rb2_0 + self.rb2_1 * ck
+        Z, w = self.Z, self.w
+        Z2 = 2 * Z
+        sn, cs = n[:, :Z2], n[:, Z2:]
+        rb2 = self.rb2_0 + self.rb2_1 * cs[:, self.k]
         irb = 1.0 / np.sqrt(rb2)
-        cb, sb = (ck + self.cb_0) * irb, -sk * irb
-        cab = n[..., 1] * cb[..., None] - n[..., 0] * sb[..., None]        # cos(α_c + β)
-        R = self.hdm + self.Rsg * n[..., 1]
-        E = self.hD * cab
-        Ri, Ro, Ei, Eo = R[..., 0], R[..., 1], E[..., 0], E[..., 1]
+        cb, sb = (cs[:, self.k] + self.cb_0) * irb, sn[:, self.k] * -irb
+        cb2, sb2 = np.concatenate((cb, cb), axis=1), np.concatenate((sb, sb), axis=1)
+        R = self.hdm + self.Rsg * cs
+        E = self.hD * (cs * cb2 - sn * sb2)                 # (D/2) cos(α_c + β)
+        Ri, Ro, Ei, Eo = R[:, :Z], R[:, Z:], E[:, :Z], E[:, Z:]
         det = Ro * Ei + Ri * Eo
         w_own = w * Ri * Eo / det
         q = Q if st.allpos else np.maximum(Q, 0.0)
-        qs = q[..., 0].sum(1, keepdims=True)
+        qs = q[:, :Z].sum(1, keepdims=True)
         if (qs > 0).all():
-            wgt = q[..., 0] / qs
+            wgt = q[:, :Z] / qs
         else:
             has = qs > 0
-            wgt = np.where(has, q[..., 0] / np.where(has, qs, 1.0), 1.0 / self.Z)
+            wgt = np.where(has, q[:, :Z] / np.where(has, qs, 1.0), 1.0 / Z)
         W = (wgt * w_own).sum(1, keepdims=True)
-        v = np.empty((W.shape[0], 1, 2))
-        np.subtract(w, W, out=v[:, :, 0])
-        v[:, :, 1] = W
         qE = q * E
         qER = qE * R
-        den = (qE * E).sum(-1)
-        num = -(qER * v).sum(-1)
+        den = qE[:, :Z] * Ei + qE[:, Z:] * Eo
+        num = -(qER[:, :Z] * (w - W) + qER[:, Z:] * W)
         pos = den > 0
         st.wpos = bool(pos.all())
         if st.wpos:
@@ -298,10 +314,10 @@ class _HSProblem:
         else:
             wR = np.where(pos, num / np.where(pos, den, 1.0), -w * Ro * Ri / det)
         st.Fc = self.mdm2 * W * W
-        st.Mg = self.J * wR * W * sb
-        st.q, st.qs, st.wgt, st.W, st.v, st.qE, st.qER, st.den = q, qs, wgt, W, v, qE, qER, den
-        st.rb2, st.cb, st.sb, st.cab, st.R, st.E, st.det, st.w_own, st.wR = (
-            rb2, cb, sb, cab, R, E, det, w_own, wR)
+        st.Mg = (self.J * W) * (wR * sb)
+        st.q, st.qs, st.wgt, st.W, st.qE, st.qER, st.den = q, qs, wgt, W, qE, qER, den
+        st.rb2, st.cb, st.sb, st.cb2, st.sb2, st.R, st.E, st.det, st.w_own, st.wR = (
+            rb2, cb, sb, cb2, sb2, R, E, det, w_own, wR)
 
     def _film_force(self, st, V, dl, K):
         r"""Contact loads and dQ/dδ of both contacts under the film law (:class:`_FilmLaw`).
@@ -312,15 +328,14 @@ class _HSProblem:
         (:meth:`refresh`); dQ/dδ = 1/(dδ_el/dQ − dh/dQ) > 0.  Warm start: the loads of the frozen iterate
         carried to first order, Δln Q = (Δδ − ∂G/∂α Δα + h ∂ln h/∂ln u Δln v) / (∂G/∂ln Q) (only a
         starting value: the inversion is converged from it)."""
-        fz = self.fz
-        al = np.arctan2(V[..., 0], V[..., 1])
-        Kc = np.broadcast_to(K, al.shape) if np.ndim(K) > 1 else K
+        fz, Z2 = self.fz, 2 * self.Z
+        al = np.arctan2(V[:, :Z2], V[:, Z2:])
         W = fz["W"]
-        v = np.stack([np.abs(self.w - W), W], axis=-1)                    # (nb, 1, 2)
+        v = np.repeat(np.concatenate((np.abs(self.w - W), W), axis=1), self.Z, axis=1)     # (nb, 2Z)
         Q0 = fz["Q"]
         if "GQ" in fz:
             Q0 = _carry(Q0, fz["GQ"], (dl - fz["dl"]) - fz["Ga"] * (al - fz["al"]) + fz["hu"] * np.log(v / fz["v"]))
-        Q, d_el, h, GQ, Ga, h_u, nit, rel, fail = _invert(self.film.bind(Kc, v).at(al), dl, al, Q0)
+        Q, d_el, h, GQ, Ga, h_u, nit, rel, fail = _invert(self.film.bind(K, v).at(al), dl, al, Q0)
         st.f_al, st.f_Ga, st.f_GQ, st.f_hu, st.f_v, st.h, st.d_el = al, Ga, GQ, h_u, v, h, d_el
         st.f_rel, st.fz_W, st.codes = np.full(Q.shape[0], rel), W.copy(), fail
         return Q, Q / GQ
@@ -352,19 +367,21 @@ class _HSProblem:
         eliminated in closed form (Schur complement; a 4×4 system per case).  All kinematic
         derivatives (of β, the contact radii, ω_c,j, ω_R, F_c and M_g with respect to α_i, α_o, Q_i,
         Q_o and ω_cage) are analytic; dα_i/d(A − X) = e_i/d_i, dα_o/dX = e_o/d_o."""
-        Jbb, Jbg, Jgb, S = self._blocks(st)
-        nb, Z = st.Q.shape[:2]
-        # per-ball 2×2 inverse [[d, −b], [−c, a]] / det
-        det2 = Jbb[..., 0, 0] * Jbb[..., 1, 1] - Jbb[..., 0, 1] * Jbb[..., 1, 0]
-        big = np.abs(Jbb).max(axis=(-1, -2))
+        B, C, Rr, S = self._blocks(st)
+        nb, Z = st.res.shape[0], self.Z
+        # per-ball 2×2 inverse [[d, −b], [−c, a]] / det of B = [[B0, B1], [B2, B3]] (each (nb, Z))
+        det2 = B[0] * B[3] - B[1] * B[2]
+        big = np.maximum(np.maximum(np.abs(B[0]), np.abs(B[1])), np.maximum(np.abs(B[2]), np.abs(B[3])))
         if (np.abs(det2) < (1e-14 * big) ** 2).any():      # ball exactly at the edge of contact
             tiny = 1e-14 * np.maximum(big, 1e-300)
-            bad = np.abs(det2) < tiny ** 2
-            Jbb = Jbb - (bad * tiny)[..., None, None] * np.eye(2)
-            det2 = Jbb[..., 0, 0] * Jbb[..., 1, 1] - Jbb[..., 0, 1] * Jbb[..., 1, 0]
-        Binv = Jbb[..., ::-1, ::-1].swapaxes(-1, -2) * _SGN_2 / det2[..., None, None]
-        YB = Binv @ Jbg                                     # (nb, Z, 2, 5): B⁻¹ J_bg and B⁻¹ r_b
-        T = (Jgb @ YB).sum(1)                               # (nb, 4, 5)
+            bad = (np.abs(det2) < tiny ** 2) * tiny
+            B = (B[0] - bad, B[1], B[2], B[3] - bad)
+            det2 = B[0] * B[3] - B[1] * B[2]
+        idet = 1.0 / det2
+        # Y = B⁻¹ [∂r_b/∂(g, ω_cage) | r_b]: rows (nb, 5, Z) of its two components
+        Y0 = (B[3] * idet)[:, None] * C[:, 0] - (B[1] * idet)[:, None] * C[:, 1]
+        Y1 = (B[0] * idet)[:, None] * C[:, 1] - (B[2] * idet)[:, None] * C[:, 0]
+        T = Rr[:, 0] @ Y0.transpose(0, 2, 1) + Rr[:, 1] @ Y1.transpose(0, 2, 1)       # (nb, 4, 5)
         S -= T[..., :4]
         rhs = T[..., 4]
         rhs[:, :3] -= st.res[:, :3]
@@ -377,112 +394,170 @@ class _HSProblem:
             sd = np.abs(np.linalg.det(S))
             S = np.where((sd < 1e-300)[:, None, None], S + 1e-6 * np.eye(4)[None], S)
             dG = np.linalg.solve(S, rhs[..., None])
-        ext = np.empty((nb, 1, 5, 1))
-        ext[:, 0, :4] = dG
+        ext = np.empty((nb, 1, 5))
+        ext[:, 0, :4] = dG[:, :, 0]
         ext[:, 0, 4] = 1.0
         dz = np.empty((nb, 3 + 2 * Z))
         dz[:, :3] = dG[:, :3, 0]
-        np.negative((YB @ ext)[..., 0], out=dz[:, 3:].reshape(nb, Z, 2))
+        np.negative((ext @ Y0)[:, 0], out=dz[:, 3:3 + Z])
+        np.negative((ext @ Y1)[:, 0], out=dz[:, 3 + Z:])
         return dz
 
-    def _blocks(self, st):
-        """The blocks of the augmented Jacobian (scaled): per ball ∂r_b/∂X (nb, Z, 2, 2), [∂r_b/∂g,
-        ∂r_b/∂ω_cage, r_b] (nb, Z, 2, 5), the balls' part of ∂(r_g, r_W)/∂X (nb, Z, 4, 2), and the
-        global block ∂(r_g, r_W)/∂(g, ω_cage) before the elimination (nb, 4, 4)."""
-        n, d, Q, dQ = st.n, st.d, st.Q, st.dQ
-        W, wR, sb, R, E, den, v = st.W, st.wR, st.sb, st.R, st.E, st.den, st.v
-        J, hD = self.J, self.hD
-        w = self.w
-        Ri, Ro, Ei, Eo = R[..., 0], R[..., 1], E[..., 0], E[..., 1]
-        # --- derivatives of the kinematics with respect to α_m (last axis m = inner, outer)
-        b = -(1.0 + self.rb2_1 * 0.5 * n[:, :, self.k, 1]) / st.rb2          # dβ/dα_k
-        sab = n[..., 0] * st.cb[..., None] + n[..., 1] * sb[..., None]          # sin(α_c + β)
-        Ed = (-hD * sab)[..., :, None] * (np.eye(2) + b[..., None, None] * self.ek)   # dE_c/dα_m
-        Rd = -self.Rsg * n[..., 0]                                             # dR_c/dα_c
-        RdE = Rd * E[..., ::-1]                                                # (Rd_i E_o, Rd_o E_i)
-        det_m = Ro[..., None] * Ed[..., 0, :] + Ri[..., None] * Ed[..., 1, :] + RdE
-        RdE[..., 1] = 0.0
-        wo_m = (w[..., None] * (Ri[..., None] * Ed[..., 1, :] + RdE) - st.w_own[..., None] * det_m) / st.det[..., None]
-        qEv = st.qE * v
+    def _kinematic_derivatives(self, st):
+        """∂M_g and ∂ω_cage-related derivatives of every ball: (Mg_m, Mg_Q, W_m) (nb, 2Z) with respect to
+        the contact angle / load of each contact, Mg_W (nb, Z) and W_Q (nb, Z) (inner loads)."""
+        Z, w, k, kn = self.Z, self.w, self.k, self.kn
+        Z2 = 2 * Z
+        n, W, wR, sb, cb, R, E, den = st.n, st.W, st.wR, st.sb, st.cb, st.R, st.E, st.den
+        sn, cs = n[:, :Z2], n[:, Z2:]
+        Ri, Ro, Ei, Eo = R[:, :Z], R[:, Z:], E[:, :Z], E[:, Z:]
+        b = (-1.0 - self.sgp * cs[:, k]) / st.rb2                               # dβ/dα_k
+        hsab = -self.hD * (sn * st.cb2 + cs * st.sb2)                           # −(D/2) sin(α_c + β)
+        Eown = hsab.copy()                                                      # dE_c/dα_c
+        Eown[:, k] *= 1.0 + b
+        Ex = hsab[:, kn] * b                                                    # dE_other/dα_k
+        Rd = -self.Rsg * sn                                                     # dR_c/dα_c
+        Rsw = np.concatenate((Ro, Ri), axis=1)
+        Esw = np.concatenate((Eo, Ei), axis=1)
+        det_m = Rsw * Eown + Rd * Esw                                           # d det/dα_m
+        det_m[:, k] += Ex * (Ro if k.start else Ri)
+        N = np.concatenate((Rd[:, :Z] * Eo, Ri * Eown[:, Z:]), axis=1)          # d(R_i E_o)/dα_m
+        if k.start == 0:                                                        # inner control: E_o moves with α_i
+            N[:, :Z] += Ri * Ex
+        idet = 1.0 / st.det
+        wo_m = (w * N - np.concatenate((st.w_own, st.w_own), axis=1) * det_m) * np.concatenate((idet, idet), axis=1)
+        vv = np.repeat(np.concatenate((w - W, W), axis=1), Z, axis=1)            # (ω − ω_cage | ω_cage)
         wpos = st.wpos
-        den1 = den if wpos else np.where(den > 0, den, 1.0)
-        coef = (st.q * R) * v + (2.0 * wR)[..., None] * st.qE
-        wR_m = -((coef[..., :, None] * Ed).sum(-2) + qEv * Rd) / den1[..., None]
-        wR_Q = -E * (R * v + wR[..., None] * E) / den1[..., None] * (Q > 0)
-        wR_W = (st.qER[..., 0] - st.qER[..., 1]) / den1
+        iden = 1.0 / (den if wpos else np.where(den > 0, den, 1.0))
+        iden2 = np.concatenate((iden, iden), axis=1)
+        wR2 = np.concatenate((wR, wR), axis=1)
+        Rv = R * vv
+        a = st.q * (Rv + 2.0 * wR2 * E)                                         # coefficient of dE_c/dα_m
+        Am = a * Eown
+        Am[:, k] += a[:, kn] * Ex
+        wR_m = -(Am + st.qE * vv * Rd) * iden2
+        wR_Q = -E * (Rv + wR2 * E) * iden2 * (st.Q > 0)
+        wR_W = (st.qER[:, :Z] - st.qER[:, Z:]) * iden
         if not wpos:
-            pos = (den > 0)[..., None]
-            own = (-w[..., None] * np.stack([Ro * Rd[..., 0], Rd[..., 1] * Ri], axis=-1)
-                   + (w * Ro * Ri / st.det)[..., None] * det_m) / st.det[..., None]
-            wR_m = np.where(pos, wR_m, own)
-            wR_Q = np.where(pos, wR_Q, 0.0)
-            wR_W = np.where(pos[..., 0], wR_W, 0.0)
-        JW = J * W
-        Mg_m = (JW * sb)[..., None] * wR_m
-        Mg_m[..., self.k] += JW * wR * st.cb * b
-        Mg_Q = (JW * sb)[..., None] * wR_Q
-        Mg_W = J * sb * (wR + W * wR_W)
-        Fc_W = 2.0 * self.mdm2 * W
-        # cage speed: ∂ω_cage/∂Q_i, ∂α_m of each ball
+            pos = den > 0
+            own = (np.concatenate((Ro * Rd[:, :Z], Rd[:, Z:] * Ri), axis=1) * -w
+                   + np.concatenate((w * Ro * Ri * idet,) * 2, axis=1) * det_m) * np.concatenate((idet, idet), axis=1)
+            pos2 = np.concatenate((pos, pos), axis=1)
+            wR_m = np.where(pos2, wR_m, own)
+            wR_Q = np.where(pos2, wR_Q, 0.0)
+            wR_W = np.where(pos, wR_W, 0.0)
+        JW = self.J * W
+        JWsb2 = np.concatenate((JW * sb,) * 2, axis=1)
+        Mg_m = JWsb2 * wR_m
+        Mg_m[:, k] += JW * wR * cb * b
+        Mg_Q = JWsb2 * wR_Q
+        Mg_W = self.J * sb * (wR + W * wR_W)
         if (st.qs > 0).all():
-            W_Q = ((st.w_own - W) / st.qs) * (Q[..., 0] > 0)
+            W_Q = ((st.w_own - W) / st.qs) * (st.Q[:, :Z] > 0)
         else:
             has = st.qs > 0
-            W_Q = np.where(has & (Q[..., 0] > 0), (st.w_own - W) / np.where(has, st.qs, 1.0), 0.0)
-        W_m = st.wgt[..., None] * wo_m
-        e = n[..., ::-1] * _SGN_E                                              # (cos α, −sin α)
+            W_Q = np.where(has & (st.Q[:, :Z] > 0), (st.w_own - W) / np.where(has, st.qs, 1.0), 0.0)
+        W_m = np.concatenate((st.wgt, st.wgt), axis=1) * wo_m
+        return Mg_m, Mg_Q, Mg_W, W_m, W_Q
+
+    def _blocks(self, st):
+        """The scaled blocks of the augmented Jacobian: per ball B = ∂r_b/∂X (four (nb, Z) entries),
+        C = [∂r_b/∂g, ∂r_b/∂ω_cage, r_b] (nb, 2, 5, Z), R = the balls' part of ∂(r_g, r_W)/∂X
+        (nb, 2, 4, Z) (by component of X), and the global block ∂(r_g, r_W)/∂(g, ω_cage) before the
+        elimination (nb, 4, 4)."""
+        Mg_m, Mg_Q, Mg_W, W_m, W_Q = self._kinematic_derivatives(st)
+        nb, Z = st.res.shape[0], self.Z
+        Z2 = 2 * Z
+        n, d, Q, dQ = st.n, st.d, st.Q, st.dQ
+        sn, cs = n[:, :Z2], n[:, Z2:]
         if self.film is not None:
             # film law: Q_c(δ_c, α_c), ∂Q/∂α = −(∂G/∂α) dQ/dδ, so dQ/dp = dQ/dδ n + ∂Q/∂α e/d
             Qa = -st.f_Ga * dQ
             Mg_m = Mg_m + Mg_Q * Qa
-            W_m[..., 0] += W_Q * Qa[..., 0]
-        ed = e / d[..., None]
-        mC = Mg_m[..., None] * ed + (Mg_Q * dQ)[..., None] * n                  # dM_g/dp_c
-        bC = W_m[..., None] * ed                                               # dω_cage/dp_c
-        bC[..., 0, :] += (W_Q * dQ[..., 0])[..., None] * n[..., 0, :]
-        # contact stiffness matrices d(Q n + T e)/dp = dQ n nᵀ + (Q e − T n) eᵀ / d (+ film: n (∂Q/∂α) eᵀ/d)
-        t = Q[..., None] * e
+            W_m[:, :Z] += W_Q * Qa[:, :Z]
+        idd = 1.0 / d
+        ea, er = cs * idd, -sn * idd                                  # e/d, e = (cos α, −sin α)
+        MgQ = Mg_Q * dQ
+        mA, mR = Mg_m * ea + MgQ * sn, Mg_m * er + MgQ * cs          # dM_g/dp_c (axial, radial)
+        bA, bR = W_m * ea, W_m * er                                   # dω_cage/dp_c
+        WQ = W_Q * dQ[:, :Z]
+        bA[:, :Z] += WQ * sn[:, :Z]
+        bR[:, :Z] += WQ * cs[:, :Z]
+        # contact stiffness d(Q n + T e)/dp = dQ n nᵀ + (Q e − T n) eᵀ / d (+ film: n (∂Q/∂α) eᵀ / d),
+        # as seen by the ball (inner +, outer −)
+        ta, tr = Q * cs, Q * -sn
         if self.has_lam:
-            t -= (st.Mg[..., None] * self.lamD)[..., None] * n
+            T = np.concatenate((st.Mg, st.Mg), axis=1) * self.lamD
+            ta -= T * sn
+            tr -= T * cs
         if self.film is not None:
-            t += Qa[..., None] * n
-        G = dQ[..., None, None] * (n[..., :, None] * n[..., None, :]) + (t / d[..., None])[..., :, None] * e[..., None, :]
-        As = self.As
-        nb, Z = Q.shape[:2]
+            ta += Qa * sn
+            tr += Qa * cs
+        dQs, dQc = dQ * sn, dQ * cs
+        Gaa, Gar = dQs * sn + ta * ea, dQs * cs + ta * er
+        Gra, Grr = dQc * sn + tr * ea, dQc * cs + tr * er
         if self.has_lam:
-            vM = (self.vsg[:, None] * e).sum(-2)                              # ∂r_b/∂M_g
-            H = G * _PM[:, None, None] + vM[..., None, :, None] * mC[..., :, None, :]   # d r_b/dp_c
-            a_b = vM * Mg_W[..., None]
+            # ∂r_b/∂M_g = (λ_i e_i − λ_o e_o)/D, and the friction's share of d r_b/dp_c
+            lp = self.lamD * self.pm
+            vA = lp * cs
+            vR = lp * -sn
+            vA = vA[:, :Z] + vA[:, Z:]
+            vR = vR[:, :Z] + vR[:, Z:]
+            vA2, vR2 = np.concatenate((vA, vA), axis=1), np.concatenate((vR, vR), axis=1)
+            Haa, Har = Gaa * self.pm + vA2 * mA, Gar * self.pm + vA2 * mR
+            Hra, Hrr = Gra * self.pm + vR2 * mA, Grr * self.pm + vR2 * mR
         else:
-            H = G * _PM[:, None, None]
-            a_b = np.zeros((nb, Z, 2))
-        Hi = H[:, :, 0]
-        Jbb = As * (H[:, :, 1] - Hi)
-        Jbg = np.empty((nb, Z, 2, 5))
-        np.multiply(As, Hi @ self.Wt, out=Jbg[..., :3])
-        a_b[..., 1] += Fc_W
-        np.multiply(a_b, self.wrs, out=Jbg[..., 3])
-        Jbg[..., 4] = st.res[:, 3:].reshape(nb, Z, 2)
-        Jgb = np.empty((nb, Z, 4, 2))
-        WGi = self.WtT @ G[:, :, 0]
+            vA = vR = 0.0
+            Haa, Har, Hra, Hrr = Gaa * self.pm, Gar * self.pm, Gra * self.pm, Grr * self.pm
+        As, c = self.As, self.c
+        Bm = ((Haa[:, Z:] - Haa[:, :Z]) * As, (Har[:, Z:] - Har[:, :Z]) * As,
+              (Hra[:, Z:] - Hra[:, :Z]) * As, (Hrr[:, Z:] - Hrr[:, :Z]) * As)
+        C = np.empty((nb, 2, 5, Z))
+        for row, (Hx, Hy) in enumerate(((Haa, Har), (Hra, Hrr))):    # d r_b/dg = H_i W_t (A/scale)
+            hx, hy = Hx[:, :Z] * As, Hy[:, :Z] * As
+            C[:, row, 0] = hx
+            np.multiply(hy, c, out=C[:, row, 1])
+            np.multiply(hx, c, out=C[:, row, 2])
+        Fc_W = 2.0 * self.mdm2 * st.W
+        np.multiply(vA * Mg_W, self.wrs, out=C[:, 0, 3]) if self.has_lam else C[:, 0, 3].fill(0.0)
+        np.multiply((vR * Mg_W if self.has_lam else 0.0) + Fc_W, self.wrs, out=C[:, 1, 3])
+        C[:, 0, 4] = st.res[:, 3:3 + Z]
+        C[:, 1, 4] = st.res[:, 3 + Z:]
+        # ring rows: d r_g/dp_i = L = W_tᵀ G_i + u m_iᵀ per ball, u = W_tᵀ (λ_i/D) e_i − (λ_i f_i/ℜ_i) c (tilt
+        # row), W_tᵀ = [[1, 0], [0, c], [c, 0]]; by X (p_i = A_c − X, p_o = X through M_g): u m_oᵀ − L
+        P = np.empty((nb, 8, Z))                      # L rows (F_a, F_r, M/ℜ_i) × (axial, radial), b_i
+        Gi = (Gaa[:, :Z], Gar[:, :Z], Gra[:, :Z], Grr[:, :Z])
+        P[:, 0], P[:, 1] = Gi[0], Gi[1]
+        np.multiply(Gi[2], c, out=P[:, 2])
+        np.multiply(Gi[3], c, out=P[:, 3])
+        np.multiply(Gi[0], c, out=P[:, 4])
+        np.multiply(Gi[1], c, out=P[:, 5])
+        P[:, 6], P[:, 7] = bA[:, :Z], bR[:, :Z]
+        Rr = np.empty((nb, 2, 4, Z))
         if self.lam_i:
-            u = self.WtT @ (self.lamD[0] * e[:, :, 0])[..., None]            # (nb, Z, 3, 1)
-            u[..., 2, 0] -= self.mom
-            Li = WGi + u * mC[:, :, 0, None, :]
-            Jgb[..., :3, :] = As * (u * mC[:, :, 1, None, :] - Li)
-            Jgg_b = Li @ self.Wt
-            S_W = (u[..., 0] * Mg_W[..., None]).sum(1) * (self.w_ref / self.scale)[:, None]
+            li = self.lamD[0]
+            u = (li * cs[:, :Z], li * -sn[:, :Z] * c, li * cs[:, :Z] * c - self.mom)
+            for m in range(3):
+                P[:, 2 * m] += u[m] * mA[:, :Z]
+                P[:, 2 * m + 1] += u[m] * mR[:, :Z]
+                np.multiply(u[m] * mA[:, Z:] - P[:, 2 * m], As, out=Rr[:, 0, m])
+                np.multiply(u[m] * mR[:, Z:] - P[:, 2 * m + 1], As, out=Rr[:, 1, m])
+            S_W = np.stack([(um * Mg_W).sum(1) for um in u], axis=1) * (self.w_ref / self.scale)[:, None]
         else:
-            np.multiply(-As, WGi, out=Jgb[..., :3, :])
-            Jgg_b = WGi @ self.Wt
+            np.multiply(P[:, 0:6:2], -As[:, :, None], out=Rr[:, 0, :3])
+            np.multiply(P[:, 1:6:2], -As[:, :, None], out=Rr[:, 1, :3])
             S_W = 0.0
-        np.multiply(self.Aw, bC[:, :, 0] - bC[:, :, 1], out=Jgb[..., 3, :])
+        Aw = self.Aw
+        np.multiply(bA[:, :Z] - bA[:, Z:], Aw, out=Rr[:, 0, 3])
+        np.multiply(bR[:, :Z] - bR[:, Z:], Aw, out=Rr[:, 1, 3])
+        # global block: Σ_j L W_t, and the cage row −Σ b_i W_t A/ω_ref
+        sums = P.reshape(nb, 8 * Z) @ self.Msum                  # (nb, 12)
         S = np.empty((nb, 4, 4))
-        np.multiply(As[..., 0], Jgg_b.sum(1), out=S[:, :3, :3])
+        np.multiply(sums[:, :9].reshape(nb, 3, 3), As[:, :, None], out=S[:, :3, :3])
         S[:, :3, 3] = S_W
-        S[:, 3, :3] = -self.Aw[..., 0] * (bC[:, :, 0, None, :] @ self.Wt)[..., 0, :].sum(1)
+        np.multiply(sums[:, 9:], -Aw, out=S[:, 3, :3])
         S[:, 3, 3] = 1.0
-        return Jbb, Jbg, Jgb, S
+        return Bm, C, Rr, S
 
     # ------------------------------------------------------------------ safeguards and path
     def limit(self, st, dz):
@@ -494,31 +569,38 @@ class _HSProblem:
         shortened so that the predicted approach of an open contact, δ + n·(ΔA − ΔX) (inner) or δ + n·ΔX
         (outer), reaches at most δ_η = (F/K)^(2/3), the approach that carries the ball's force scale
         F = max(F_c, |r_b|) — the next step then sees the contact."""
-        if not (st.dl < 0).any():
+        if st.allpos:
             return dz
         nb, Z, A = dz.shape[0], self.Z, self.A
-        dX = A * dz[:, 3:].reshape(nb, Z, 2)
-        dV = np.stack([self.centres(dz[:, :3]) - self.off - dX, dX], axis=2)
-        dd = (st.n * dV).sum(-1)                                              # predicted change of δ_c
-        rb = st.res[:, 3:].reshape(nb, Z, 2)
-        F = np.maximum(st.Fc, np.abs(rb).max(axis=-1) * self.scale[:, None])
-        d_eta = (F[..., None] / self.K0) ** (2.0 / 3.0)
+        Z2 = 2 * Z
+        dX = A * dz[:, 3:]
+        dAc = dz[:, :3] @ self.L
+        dV = np.empty((nb, 4 * Z))
+        V4 = dV.reshape(nb, 2, 2, Z)
+        V4[:, :, 1] = dX.reshape(nb, 2, Z)
+        np.subtract(dAc.reshape(nb, 2, Z), V4[:, :, 1], out=V4[:, :, 0])
+        nd = st.n * dV
+        dd = nd[:, :Z2] + nd[:, Z2:]                                         # predicted change of δ_c
+        rb = np.abs(st.res[:, 3:])
+        F = np.maximum(st.Fc, np.maximum(rb[:, :Z], rb[:, Z:]) * self.scale[:, None])
+        d_eta = (np.concatenate((F, F), axis=1) / self.K0) ** (2.0 / 3.0)
         over = (st.dl < 0) & (st.dl + dd > d_eta)
         if not over.any():
             return dz
-        kap = np.where(over, (d_eta - st.dl) / np.where(over, dd, 1.0), 1.0).min(axis=-1)
+        kap = np.where(over, (d_eta - st.dl) / np.where(over, dd, 1.0), 1.0)
+        kap = np.minimum(kap[:, :Z], kap[:, Z:])
         dz = dz.copy()
-        dz[:, 3:] *= np.repeat(kap, 2, axis=1)
+        dz[:, 3:] *= np.concatenate((kap, kap), axis=1)
         return dz
 
     def path(self, z, dz):
         """A step in polar form about the outer groove centre for each ball: radius ρ, angle α_o,
         dρ = n_o·dx, dα = e_o·dx/ρ (n_o = (sin α_o, cos α_o), e_o = (cos α_o, −sin α_o)); the rings linear."""
-        nb, Z = z.shape[0], self.Z
-        x, dx = z[:, 3:].reshape(nb, Z, 2), dz[:, 3:].reshape(nb, Z, 2)
-        x1, x2, d1, d2 = x[..., 0], x[..., 1], dx[..., 0], dx[..., 1]
-        rho = np.sqrt(x1 * x1 + x2 * x2)
-        return z, dz, rho, np.arctan2(x1, x2), (x1 * d1 + x2 * d2) / rho, (x2 * d1 - x1 * d2) / (rho * rho)
+        Z = self.Z
+        x1, x2, d1, d2 = z[:, 3:3 + Z], z[:, 3 + Z:], dz[:, 3:3 + Z], dz[:, 3 + Z:]
+        r2 = x1 * x1 + x2 * x2
+        rho = np.sqrt(r2)
+        return z, dz, rho, np.arctan2(x1, x2), (x1 * d1 + x2 * d2) / rho, (x2 * d1 - x1 * d2) / r2
 
     def move(self, path, lam):
         """The point at the fraction lam (nb,) of the step along the path: the ball centres at
@@ -527,18 +609,17 @@ class _HSProblem:
         into the race by ≈ step²/2ρ, far more than the δ_o of a lightly loaded ball).  ``lam=None``: the
         full step."""
         z, dz, rho, a, drho, da = path
-        nb, Z = z.shape[0], self.Z
+        Z = self.Z
         out = np.empty(z.shape)
         if lam is None:
             np.add(z[:, :3], dz[:, :3], out=out[:, :3])
             r, t = rho + drho, a + da
         else:
-            np.add(z[:, :3], lam[:, None] * dz[:, :3], out=out[:, :3])
             lc = lam[:, None]
+            np.add(z[:, :3], lc * dz[:, :3], out=out[:, :3])
             r, t = rho + lc * drho, a + lc * da
-        xo = out[:, 3:].reshape(nb, Z, 2)
-        np.multiply(r, np.sin(t), out=xo[..., 0])
-        np.multiply(r, np.cos(t), out=xo[..., 1])
+        np.multiply(r, np.sin(t), out=out[:, 3:3 + Z])
+        np.multiply(r, np.cos(t), out=out[:, 3 + Z:])
         return out
 
     def relax(self, z, st, todo):
@@ -546,4 +627,3 @@ class _HSProblem:
         if self.per_ball or self.film is not None:
             return z, st
         return _relax(self, z, st, todo)
-

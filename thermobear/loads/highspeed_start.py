@@ -34,27 +34,29 @@ def static_start(pb, g):
     (equal split for an open contact, where the regularising stiffness is the same on both sides)."""
     nb, Z = g.shape[0], pb.Z
     Ac = pb.centres(g)
-    Aj = np.sqrt((Ac * Ac).sum(-1))
+    A1, A2 = Ac[:, :Z], Ac[:, Z:]
+    Aj = np.sqrt(A1 * A1 + A2 * A2)
     s = Aj - pb.A
     Ki, Ko = pb.Ki0, pb.Ko0
     if pb.per_ball:
-        al = np.arctan2(Ac[..., 0], Ac[..., 1])
+        al = np.arctan2(A1, A2)
         Ki, Ko = pb.brg.K_i(al), pb.brg.K_o(al)
     share_o = np.where(s > 0, Ki ** (2.0 / 3.0) / (Ki ** (2.0 / 3.0) + Ko ** (2.0 / 3.0)), 0.5)
-    r_o = pb.c0[1] + share_o * s
+    r = (pb.c0[Z] + share_o * s) / Aj / pb.A
     z = np.empty((nb, 3 + 2 * Z))
     z[:, :3] = g
-    z[:, 3:] = (Ac * (r_o / Aj / pb.A)[..., None]).reshape(nb, 2 * Z)
+    np.multiply(A1, r, out=z[:, 3:3 + Z])
+    np.multiply(A2, r, out=z[:, 3 + Z:])
     return z
 
 
 def _external(pb, st):
     """The force on each ball besides its contact loads (centrifugal force and gyroscopic friction) at the
-    state ``st``, (nb, Z, 2) [N]: r_b·scale − (Q_i n_i − Q_o n_o)."""
-    nb, Z = st.Q.shape[:2]
-    rb = st.res[:, 3:].reshape(nb, Z, 2) * pb.scale[:, None, None]
-    Qn = st.Q[..., None] * st.n
-    return rb - (Qn[:, :, 0] - Qn[:, :, 1])
+    state ``st``: (f1, f2) axial, radial (nb, Z) [N], r_b·scale − (Q_i n_i − Q_o n_o)."""
+    Z = pb.Z
+    rb = st.res[:, 3:] * pb.scale[:, None]
+    F = np.concatenate((st.Q, st.Q), axis=1) * st.n                 # [Q sin α | Q cos α] of both contacts
+    return rb[:, :Z] - (F[:, :Z] - F[:, Z:2 * Z]), rb[:, Z:] - (F[:, 2 * Z:3 * Z] - F[:, 3 * Z:])
 
 
 def start(pb, z):
@@ -81,17 +83,18 @@ def start(pb, z):
     Only a start: the shared Newton then solves the coupled problem.  Returns the unknowns z."""
     st = pb.evaluate(z)
     nb, Z, A = z.shape[0], pb.Z, pb.A
-    f = _external(pb, st)
-    fn = np.sqrt((f * f).sum(-1))
+    f1, f2 = _external(pb, st)
+    fn = np.hypot(f1, f2)
     Ki, Ko = pb.Ki0, pb.Ko0
     if pb.per_ball:
-        al = np.arctan2(st.V[..., 0], st.V[..., 1])
-        Ki, Ko = pb.brg.K_i(al[..., 0]), pb.brg.K_o(al[..., 1])
+        Z2 = 2 * Z
+        al = np.arctan2(st.V[:, :Z2], st.V[:, Z2:])
+        Ki, Ko = pb.brg.K_i(al[:, :Z]), pb.brg.K_o(al[:, Z:])
     # loaded balls: pushed out
-    Qs = np.maximum(st.Q[..., 0], 0.0)
-    g1, g2 = Qs * st.n[..., 0, 0], Qs * st.n[..., 0, 1] + st.Fc
+    Qs = np.maximum(st.Qi, 0.0)
+    g1, g2 = Qs * st.n[:, :Z], Qs * st.n[:, 2 * Z:3 * Z] + st.Fc
     Qo = np.hypot(g1, g2)
-    r_o = (pb.c0[1] + (Qo / Ko) ** (2.0 / 3.0)) / np.where(Qo > 0, Qo, 1.0)
+    r_o = (pb.c0[Z] + (Qo / Ko) ** (2.0 / 3.0)) / np.where(Qo > 0, Qo, 1.0)
     X1 = np.where(st.Fc > 0, r_o * g1, st.X1)
     X2 = np.where(st.Fc > 0, r_o * g2, st.X2)
     # light and unloaded balls: placed (flattened over the batch)
@@ -102,13 +105,12 @@ def start(pb, z):
         ki = Ki if np.ndim(Ki) == 0 else Ki.ravel()[k]
         ko = Ko if np.ndim(Ko) == 0 else Ko.ravel()[k]
         mu = (1e-9 / A) * np.repeat(pb.scale, Z)[k]                 # keeps a free ball's Hessian invertible
-        X1[k], X2[k] = place(st.X1.ravel()[k], st.X2.ravel()[k], Ac[..., 0].ravel()[k], Ac[..., 1].ravel()[k],
-                             f[..., 0].ravel()[k], f[..., 1].ravel()[k], ki, ko, mu, _BALL_TOL * fn.ravel()[k],
-                             pb.c0[0], pb.c0[1], _BALL_CAP * A)
+        X1[k], X2[k] = place(st.X1.ravel()[k], st.X2.ravel()[k], Ac[:, :Z].ravel()[k], Ac[:, Z:].ravel()[k],
+                             f1.ravel()[k], f2.ravel()[k], ki, ko, mu, _BALL_TOL * fn.ravel()[k],
+                             pb.c0[0], pb.c0[Z], _BALL_CAP * A)
     out = z.copy()
-    x = out[:, 3:].reshape(nb, Z, 2)
-    x[..., 0] = X1.reshape(nb, Z) / A
-    x[..., 1] = X2.reshape(nb, Z) / A
+    out[:, 3:3 + Z] = X1.reshape(nb, Z) / A
+    out[:, 3 + Z:] = X2.reshape(nb, Z) / A
     return out
 
 
@@ -201,22 +203,22 @@ def relax(pb, z, st, todo):
     qualifies, so the quadratic convergence of Newton is untouched.  Returns (z, st)."""
     nb, Z, A = z.shape[0], pb.Z, pb.A
     s = pb.scale[:, None]
-    rb = np.abs(st.res[:, 3:].reshape(nb, Z, 2)).max(axis=-1)
-    f = _external(pb, st)
-    fn = np.sqrt((f * f).sum(-1))
-    light = ((np.maximum(st.Q[..., 0], 0.0) <= fn) & (rb * s > _RELAX * fn) & (rb >= 0.1 * st.norm[:, None])
+    ar = np.abs(st.res[:, 3:])
+    rb = np.maximum(ar[:, :Z], ar[:, Z:])
+    f1, f2 = _external(pb, st)
+    fn = np.hypot(f1, f2)
+    light = ((np.maximum(st.Qi, 0.0) <= fn) & (rb * s > _RELAX * fn) & (rb >= 0.1 * st.norm[:, None])
              & (fn > 0) & todo[:, None])
     if not light.any():
         return z, st
     k = np.flatnonzero(light)
     Ac = pb.centres(z[:, :3])
-    X1, X2 = place(st.X1.ravel()[k], st.X2.ravel()[k], Ac[..., 0].ravel()[k], Ac[..., 1].ravel()[k],
-                   f[..., 0].ravel()[k], f[..., 1].ravel()[k], pb.Ki0, pb.Ko0, (1e-9 / A) * np.repeat(pb.scale, Z)[k],
-                   _BALL_TOL * fn.ravel()[k], pb.c0[0], pb.c0[1], _BALL_CAP * A)
+    X1, X2 = place(st.X1.ravel()[k], st.X2.ravel()[k], Ac[:, :Z].ravel()[k], Ac[:, Z:].ravel()[k],
+                   f1.ravel()[k], f2.ravel()[k], pb.Ki0, pb.Ko0, (1e-9 / A) * np.repeat(pb.scale, Z)[k],
+                   _BALL_TOL * fn.ravel()[k], pb.c0[0], pb.c0[Z], _BALL_CAP * A)
     zn = z.copy()
-    xn = zn[:, 3:].reshape(nb, Z, 2)            # (a view: only the last axis is split)
     i, j = np.divmod(k, Z)
-    xn[i, j, 0], xn[i, j, 1] = X1 / A, X2 / A
+    zn[i, 3 + j], zn[i, 3 + Z + j] = X1 / A, X2 / A
     cases = np.flatnonzero(light.any(axis=1))
     st2 = pb.rows(cases).evaluate(zn[cases])
     better = st2.norm < st.norm[cases]

@@ -146,13 +146,15 @@ def newton(problem, z, opt: NewtonOptions, state=None) -> NewtonResult:
     norm = st.norm
     nb = norm.size
     floor = np.zeros(nb, bool)
+    floored = False                 # any case at its floor (then ``todo`` excludes it)
     its = np.zeros(nb, int)
     npol = np.zeros(nb, int)
     hist = np.repeat(norm[:, None], opt.window, axis=1) if opt.window > 1 else None
     refresh = getattr(problem, "refresh", None)
     relax = getattr(problem, "relax", None)
     has_limit, curved = hasattr(problem, "limit"), hasattr(problem, "path")
-    tol, target = opt.tol, opt.tol * opt.polish_factor
+    tol, target, accept = opt.tol, opt.tol * opt.polish_factor, 1.0 - opt.armijo
+    capped = opt.step_cap < np.inf
     for it in range(1, opt.maxiter + 1):
         if refresh is not None:
             st = refresh(z, st)
@@ -160,29 +162,34 @@ def newton(problem, z, opt: NewtonOptions, state=None) -> NewtonResult:
         todo = norm > tol
         if opt.polish:
             todo |= (norm > target) & (npol < opt.polish)
-        todo &= ~floor
-        every = bool(todo.all())
+        if floored:
+            todo &= ~floor
+        n_todo = np.count_nonzero(todo)
+        every = n_todo == nb
         if every:
             sub, st_t, z_t = problem, st, z
+        elif n_todo == 0:
+            break
         else:
             idx = np.flatnonzero(todo)
-            if not idx.size:
-                break
             sub, st_t, z_t = problem.rows(idx), st.take(idx), z[idx]
         dz = sub.direction(st_t)
         if has_limit:
             dz = sub.limit(st_t, dz)
-        if opt.step_cap < np.inf:
+        if capped:
             big = np.abs(dz).max(axis=1)
-            dz *= np.minimum(1.0, opt.step_cap / np.maximum(big, 1e-300))[:, None]
-        n_t = st_t.norm
-        ref = n_t if hist is None else hist[todo].max(axis=1) if not every else hist.max(axis=1)
+            if np.fmax.reduce(big) > opt.step_cap:
+                dz *= np.minimum(1.0, opt.step_cap / big)[:, None]
+        if hist is None:
+            ref = st_t.norm
+        else:
+            ref = hist.max(axis=1) if every else hist[idx].max(axis=1)
         path = sub.path(z_t, dz) if curved else (z_t, dz)
         move = sub.move if curved else _linear_move
         z_new = move(path, None)
         st_new = sub.evaluate(z_new)
         damped = None
-        if not np.all(st_new.norm < (1.0 - opt.armijo) * ref):
+        if not (st_new.norm < accept * ref).all():
             z_new, st_new, lam = _line_search(sub, z_new, dz, st_new, ref, path, move, opt)
             damped = lam < 1.0
         prev = norm if every else norm.copy()     # (st.put writes into st.norm)
@@ -199,10 +206,13 @@ def newton(problem, z, opt: NewtonOptions, state=None) -> NewtonResult:
                 damped = d
             z, st = relax(z, st, damped)      # the cases that took a damped step
         norm = st.norm
-        floor |= todo & (norm <= opt.floor) & (norm > 0.5 * prev)
+        if np.fmin.reduce(norm) <= opt.floor:     # (fmin: a NaN case does not hide the others)
+            floor |= todo & (norm <= opt.floor) & (norm > 0.5 * prev)
+            floored = bool(floor.any())
         if hist is not None:
             hist[:, it % opt.window] = norm
-        npol += todo & (prev <= tol)
+        if opt.polish and np.fmin.reduce(prev) <= tol:
+            npol += todo & (prev <= tol)
         its += todo
     conv = (norm <= tol) | (floor & (norm <= opt.floor))
     return NewtonResult(z, st, norm, its, conv)

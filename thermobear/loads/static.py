@@ -41,6 +41,8 @@ References
 """
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numpy as np
 
 from thermobear.contact.geometry import BallBearing
@@ -54,7 +56,6 @@ __all__ = ["load_distribution_static", "axial_contact_angle", "needs_high_speed"
 _TOL = 1e-12          # relative equilibrium residual at which Newton stops
 _MAXIT = 60
 _HALVINGS = 30        # line-search halvings per Newton step
-_JAC = np.array([0, 1, 2, 1, 3, 4, 2, 4, 5])   # symmetric 3×3 Jacobian from its six distinct sums
 
 
 def axial_contact_angle(brg: BallBearing, Fa, Kn=None, tol: float = 1e-14):
@@ -151,17 +152,26 @@ def needs_high_speed(brg: BallBearing, n_rpm, Q_typical, threshold: float = 0.05
     return ratio > threshold, ratio
 
 
-def _sum_matrix(c):
-    """(5 Z, 12) matrix turning per-ball rows (g11, g12, g22, Q sin α, Q cos α) [each Z long] into the
-    sums Σ g11, Σ g12 c, Σ g11 c, Σ g22 c², Σ g12 c², Σ g11 c² (Jacobian) and Σ Q sin α, Σ Q cos α c,
-    Σ Q sin α c (ring forces); c = cos ψ (the lever arms of :func:`thermobear.loads.rings.lever_matrix`)."""
-    Z = c.size
+@lru_cache(maxsize=32)
+def _constants(brg):
+    """Fixed arrays of a bearing (read-only): the lever matrix L (3, 2Z) [m], the groove-centre offsets at
+    first touch (A sin α0 | A cos α0) (2Z,) and twice them, K_n at the nominal angle [N/m^1.5], and the sum
+    matrix (5 Z, 12) turning per-ball rows (g11, g12, g22, Q sin α, Q cos α) into the Jacobian's nine entries
+    Σ g11, Σ g12 c, Σ g11 c / Σ g12 c, Σ g22 c², Σ g12 c² / Σ g11 c, Σ g12 c², Σ g11 c² and the ring forces
+    Σ Q sin α, Σ Q cos α c, Σ Q sin α c (c = cos ψ: the lever arms of L)."""
+    Z, A = brg.Z, brg.A
+    c = np.cos(azimuths(Z))
     M = np.zeros((5, Z, 12))
     one, c2 = np.ones(Z), c * c
-    for row, col, w in ((0, 0, one), (1, 1, c), (0, 2, c), (2, 3, c2), (1, 4, c2), (0, 5, c2),
-                        (3, 9, one), (4, 10, c), (3, 11, c)):
-        M[row, :, col] = w
-    return M.reshape(5 * Z, 12)
+    for row, cols, w in ((0, (0,), one), (1, (1, 3), c), (0, (2, 6), c), (2, (4,), c2), (1, (5, 7), c2),
+                         (0, (8,), c2), (3, (9,), one), (4, (10,), c), (3, (11,), c)):
+        for col in cols:
+            M[row, :, col] = w
+    A0 = np.concatenate([np.full(Z, A * np.sin(brg.alpha0)), np.full(Z, A * np.cos(brg.alpha0))])
+    out = (lever_matrix(brg), A0, 2.0 * A0, M.reshape(5 * Z, 12))
+    for v in out:
+        v.setflags(write=False)
+    return out + (float(brg.Kn()),)
 
 
 class _StaticState:
@@ -190,14 +200,10 @@ class _StaticProblem:
         self.inv_scale = 1.0 / scale[:, None]
         self.J_scale = (brg.A / scale)[:, None, None]
         self.zero = np.max(np.abs(F_app), axis=1) == 0.0
+        self.any_zero = bool(self.zero.any())
         self.tilt_free, self.per_ball = tilt_free, stiffness == "per_ball"
         self.Z, self.A = brg.Z, brg.A
-        self.L = lever_matrix(brg) / brg.A                       # (3, 2Z): (d1 | d2) = A y·L
-        Z, A = brg.Z, brg.A
-        self.A0 = np.concatenate([np.full(Z, A * np.sin(brg.alpha0)), np.full(Z, A * np.cos(brg.alpha0))])
-        self.A0x2 = 2.0 * self.A0
-        self.Kn0 = brg.Kn()
-        self.sums = _sum_matrix(np.cos(azimuths(Z)))
+        self.L, self.A0, self.A0x2, self.sums, self.Kn0 = _constants(brg)
         self.free = np.array([1.0, 1.0, 1.0 if tilt_free else 0.0])
 
     def rows(self, idx):
@@ -205,13 +211,14 @@ class _StaticProblem:
         new.__dict__.update(self.__dict__)
         new.F_app, new.scale, new.zero = self.F_app[idx], self.scale[idx], self.zero[idx]
         new.inv_scale, new.J_scale = self.inv_scale[idx], self.J_scale[idx]
+        new.any_zero = bool(new.zero.any())
         return new
 
     def geometry(self, y):
         """Groove-centre offsets (A1 | A2) (nb, 2Z), their distance A_j and the signed approach s = A_j − A
         (nb, Z) [m] (negative: a gap), formed without cancellation."""
         Z = self.Z
-        d = (self.A * y) @ self.L
+        d = y @ self.L
         AA = d + self.A0
         sq = AA * AA
         Aj = np.sqrt(sq[:, :Z] + sq[:, Z:])
@@ -220,35 +227,39 @@ class _StaticProblem:
         return AA, Aj, s
 
     def evaluate(self, y):
-        Z = self.Z
+        Z, nb = self.Z, y.shape[0]
         AA, Aj, s = self.geometry(y)
         sp = np.maximum(s, 0.0)
         if self.per_ball:
             Kn = self.brg.Kn(np.arctan2(AA[:, :Z], AA[:, Z:]))
+            dQ = 1.5 * Kn * np.sqrt(sp)
         else:
             Kn = self.Kn0
-        r = np.sqrt(sp)
-        Q = Kn * sp * r
-        dQ = 1.5 * Kn * r
-        n = AA / np.concatenate([Aj, Aj], axis=1)                # (sin α | cos α)
-        Qa = np.divide(Q, Aj, out=np.zeros_like(Q), where=Aj > 0)
+            dQ = np.sqrt(sp)
+            dQ *= 1.5 * Kn
+        Q = sp * dQ
+        Q *= 1.0 / 1.5                                            # K_n s^1.5
+        n = AA.reshape(nb, 2, Z) / Aj[:, None, :]                 # (sin α, cos α)
+        if Aj.min() > 0:
+            Qa = Q / Aj
+        else:                                                     # groove centres on one point (unloaded thrust)
+            Qa = np.divide(Q, Aj, out=np.zeros_like(Q), where=Aj > 0)
         nn = n * n
-        sa, ca, sa2, ca2 = n[:, :Z], n[:, Z:], nn[:, :Z], nn[:, Z:]
-        nb = y.shape[0]
+        sa, ca = n[:, 0], n[:, 1]
         P = np.empty((nb, 5, Z))
         # per-ball stiffness g = dQ n nᵀ + (Q/A_j) e eᵀ and forces Q n, summed over the balls by one
-        # product with the lever arms (see _sum_matrix)
-        np.add(dQ * sa2, Qa * ca2, out=P[:, 0])
+        # product with the lever arms (see _constants)
+        np.add(dQ * nn[:, 0], Qa * nn[:, 1], out=P[:, 0])
         np.multiply((dQ - Qa) * sa, ca, out=P[:, 1])
-        np.add(dQ * ca2, Qa * sa2, out=P[:, 2])
-        np.multiply(Q[:, None, :], n.reshape(nb, 2, Z), out=P[:, 3:])
+        np.add(dQ * nn[:, 1], Qa * nn[:, 0], out=P[:, 2])
+        np.multiply(Q[:, None, :], n, out=P[:, 3:])
         out = P.reshape(nb, 5 * Z) @ self.sums
         st = _StaticState.__new__(_StaticState)
         st.y, st.AA, st.Aj, st.s = y, AA, Aj, s
         st.res = (out[:, 9:] - self.F_app) * self.inv_scale
-        st.J = out[:, _JAC].reshape(nb, 3, 3) * self.J_scale
-        norm = np.abs(st.res * self.free).max(axis=1)
-        st.norm = np.where(self.zero, 0.0, norm) if self.zero.any() else norm
+        st.J = out[:, :9].reshape(nb, 3, 3) * self.J_scale
+        norm = np.abs(st.res if self.tilt_free else st.res[:, :2]).max(axis=1)
+        st.norm = np.where(self.zero, 0.0, norm) if self.any_zero else norm
         return st
 
     def direction(self, st):
