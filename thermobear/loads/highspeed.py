@@ -353,7 +353,7 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
         if np.any(n_b <= 0):
             raise InputError("n_rpm", n_rpm, "must be > 0 with the film contact law (a film needs entrainment; "
                              "at n = 0 the contacts are dry: film=None)")
-    # low-speed solution: NoEquilibrium cases, starting values
+    # low-speed solution: NoEquilibrium cases, and the start
     ls = load_distribution_static(brg, Fa_b, Fr_b, M_b, stiffness=stiffness)
     pb, z0 = _problem(brg, ls, Fa_b, Fr_b, M_b, Mv, n_b, stiffness, control)
     opt = NewtonOptions(tol=tol, maxiter=maxiter, step_cap=_STEP_CAP, window=_NONMONOTONE, polish=_POLISH)
@@ -592,7 +592,7 @@ def _results(pb, z, st, norm, its, shape, loads, control, with_film):
         M=sh(Mv))
     ex = HighSpeedExtras(
         Fc=shz(st.Fc * ones), Mg=shz(st.Mg), omega_c=shz(st.W * ones), omega_R=shz(st.wR),
-        beta=shz(np.arctan2(st.sb, st.cb)), X1=shz(st.X1.copy()), X2=shz(st.X2.copy()),
+        beta=shz(np.arctan2(-st.msb, st.cb)), X1=shz(st.X1.copy()), X2=shz(st.X2.copy()),
         delta_i=shz(st.dl[:, :Z].copy()), delta_o=shz(st.dl[:, Z:].copy()), lambda_i=pb.lam_i, lambda_o=pb.lam_o,
         control=control, n_rpm=sh(n_b))
     if with_film:

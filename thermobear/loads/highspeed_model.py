@@ -146,38 +146,48 @@ class _HSProblem:
 
     ``film``: the :class:`_FilmLaw` of the film contact law (None: dry Hertz contacts); ``fz`` the data it
     freezes per Newton step (cage speed "W" (nb, 1), warm-start loads "Q" (nb, 2Z) and the derivatives
-    of the iterate they were taken at, :meth:`refresh`)."""
+    of the iterate they were taken at, :meth:`refresh`).
+
+    Constants are held as (1, n) rows: numpy's fast path for operands of one shape then serves a single
+    load case, and a batch broadcasts them."""
 
     def __init__(self, brg, F_app, scale, omega, free_g, stiffness, lam_i, lam_o, kin_control):
         self.brg = brg
         self.Z, self.A, self.R = brg.Z, brg.A, brg.R_inner_locus
         Z, A = brg.Z, brg.A
         self.c, self.L, self.Sg, self.Msum = _constants(brg)
-        self.off = np.concatenate([np.zeros(Z), np.full(Z, A * np.cos(brg.alpha0))])
-        self.c0 = np.repeat([(brg.fi - 0.5) * brg.D, (brg.fo - 0.5) * brg.D], Z)   # |O_i − C|, |C − O_o| [m]
+        self.cr = self.c[None, :]
+
+        def row(*vals):                       # (1, len(vals) · Z): each value repeated Z times
+            return np.repeat(np.array(vals, dtype=float), Z)[None, :]
+
+        self.off = row(0.0, A * np.cos(brg.alpha0))
+        self.c0 = row((brg.fi - 0.5) * brg.D, (brg.fo - 0.5) * brg.D)   # |O_i − C|, |C − O_o| unloaded [m]
         self.stiffness, self.per_ball = stiffness, stiffness == "per_ball"
         self.lam_i, self.lam_o, self.kin_control = lam_i, lam_o, kin_control
         Ki, Ko, self.k_eps = _stiffness_constants(brg)
         self.Ki0, self.Ko0 = Ki, Ko
-        self.K0 = np.repeat([Ki, Ko], Z)
-        self.K15 = 1.5 * self.K0
+        self.K0, self.K15 = row(Ki, Ko), row(1.5 * Ki, 1.5 * Ko)
         self.D, self.dm, self.fi = brg.D, brg.dm, brg.fi
         gp = brg.D / brg.dm
         self.gp = gp
-        outer = kin_control == "outer"
-        self.k = slice(Z, 2 * Z) if outer else slice(0, Z)      # the contact whose zero spin sets β
-        self.kn = slice(0, Z) if outer else slice(Z, 2 * Z)     # the other one
-        sg = 1.0 if outer else -1.0
-        self.rb2_0, self.rb2_1, self.cb_0, self.sgp = 1.0 + gp * gp, 2.0 * sg * gp, sg * gp, sg * gp
-        self.hdm, self.hD = 0.5 * brg.dm, 0.5 * brg.D
-        self.Rsg = np.repeat([-0.5 * brg.dm * gp, 0.5 * brg.dm * gp], Z)     # R_c = dm/2 + Rsg_c cos α_c
+        self.outer = kin_control == "outer"     # the contact whose zero spin sets β
+        sg = 1.0 if self.outer else -1.0
+        self.RB0, self.RB1, self.CB0, self.SGP = row(1.0 + gp * gp), row(2.0 * sg * gp), row(sg * gp), row(sg * gp)
+        self.ONE, self.ONE2 = row(1.0), row(1.0, 1.0)
+        self.HDM = row(0.5 * brg.dm, 0.5 * brg.dm)
+        self.RSG = row(-0.5 * brg.dm * gp, 0.5 * brg.dm * gp)            # R_c = dm/2 + RSG_c cos α_c
+        self.NRSG = -self.RSG
+        self.HD2, self.NHD2, self.HD = row(0.5 * brg.D, 0.5 * brg.D), row(-0.5 * brg.D, -0.5 * brg.D), row(0.5 * brg.D)
         self.m = brg.ball_mass
         self.J = self.m * brg.D**2 / 10.0
         self.mdm2 = 0.5 * self.m * brg.dm
-        self.lamD = np.repeat([lam_i / brg.D, lam_o / brg.D], Z)
         self.has_lam = bool(lam_i or lam_o)
-        self.mom = lam_i * brg.fi / self.R * self.c     # moment of the inner gyroscopic friction per M_g
-        self.pm = np.repeat([1.0, -1.0], Z)             # the inner contact pushes the ball, the outer holds it
+        self.LAMD = row(lam_i / brg.D, lam_o / brg.D)
+        self.LP = row(lam_i / brg.D, -lam_o / brg.D)   # ∂r_b/∂M_g = Σ_c LP_c e_c
+        self.mom = lam_i * brg.fi / self.R * self.c    # moment of the inner gyroscopic friction per M_g
+        self.PM = row(1.0, -1.0)                       # the inner contact pushes the ball, the outer holds it
+        self.onesZ = np.ones((Z, 1))
         self.film = None
         self.fz = None
         self.set_cases(F_app, scale, omega, free_g)
@@ -187,11 +197,15 @@ class _HSProblem:
         self.F_app, self.scale, self.omega, self.free_g = F_app, scale, omega, free_g
         nb, Z = scale.size, self.Z
         self.w = omega[:, None]
+        self.wZ = np.repeat(self.w, Z, axis=1)
+        self.w2Z = np.repeat(self.w, 2 * Z, axis=1)
         self.w_ref = np.maximum(omega, 1.0)
         self.inv_s = (1.0 / scale)[:, None]
         self.As = (self.A / scale)[:, None]
-        self.wrs = (self.w_ref / scale)[:, None]
+        self.AsZ = np.repeat(self.As, Z, axis=1)
+        self.wrsZ = np.repeat((self.w_ref / scale)[:, None], Z, axis=1)
         self.Aw = (self.A / self.w_ref)[:, None]
+        self.AwZ = np.repeat(self.Aw, Z, axis=1)
         self.mask = np.ones((nb, 3 + 2 * Z))
         self.mask[:, :3] = free_g
         act = np.ones((nb, 4))
@@ -227,15 +241,19 @@ class _HSProblem:
         (:func:`thermobear.contact.kinematics.caged_ball_kinematics`; own no-slip −ω R_o R_i / det when
         both contacts are open); F_c = ½ m dm ω_cage², M_g = J ω_R ω_cage sin β."""
         nb, Z, A = z.shape[0], self.Z, self.A
-        Z2 = 2 * Z
+        Z2, Z3 = 2 * Z, 3 * Z
         st = _HSState.__new__(_HSState)
         V = np.empty((nb, 4 * Z))                          # [p | X1 | q | X2]: O_i − C and C − O_o
-        V4 = V.reshape(nb, 2, 2, Z)
-        np.multiply(z[:, 3:].reshape(nb, 2, Z), A, out=V4[:, :, 1])
-        np.subtract(self.centres(z[:, :3]).reshape(nb, 2, Z), V4[:, :, 1], out=V4[:, :, 0])
+        np.multiply(z[:, 3:3 + Z], A, out=V[:, Z:Z2])
+        np.multiply(z[:, 3 + Z:], A, out=V[:, Z3:])
+        Ac = self.centres(z[:, :3])
+        np.subtract(Ac[:, :Z], V[:, Z:Z2], out=V[:, :Z])
+        np.subtract(Ac[:, Z:], V[:, Z3:], out=V[:, Z2:Z3])
         sq = V * V
         d = np.sqrt(sq[:, :Z2] + sq[:, Z2:])               # [d_i | d_o]
-        n = V / np.concatenate((d, d), axis=1)             # [sin α_i | sin α_o | cos α_i | cos α_o]
+        n = np.empty((nb, 4 * Z))                          # [sin α_i | sin α_o | cos α_i | cos α_o]
+        np.divide(V[:, :Z2], d, out=n[:, :Z2])
+        np.divide(V[:, Z2:], d, out=n[:, Z2:])
         dl = d - self.c0
         if self.per_ball:
             al = np.arctan2(V[:, :Z2], V[:, Z2:])
@@ -243,30 +261,33 @@ class _HSProblem:
         else:
             K = self.K0
         st.fz_W = st.h = st.d_el = st.f_Ga = st.f_GQ = st.f_hu = st.f_v = st.f_al = st.f_rel = st.codes = None
-        if self.film is None:
-            pos = dl > 0
-            st.allpos = bool(pos.all())
-            if st.allpos:
-                r = np.sqrt(dl)
-                Q, dQ = K * dl * r, (self.K15 if not self.per_ball else 1.5 * K) * r
-            else:
-                r = np.sqrt(np.where(pos, dl, 0.0))
-                Q = np.where(pos, K * dl * r, self.k_eps * dl)
-                dQ = np.where(pos, 1.5 * K * r, self.k_eps)
-        else:
+        if self.film is not None:
             Q, dQ = self._film_force(st, V, dl, K)
             st.allpos = True
+        elif dl.min() > 0:
+            st.allpos = True
+            r = np.sqrt(dl)
+            dQ = (self.K15 if not self.per_ball else 1.5 * K) * r
+            Q = K * dl * r
+        else:
+            st.allpos = False
+            pos = dl > 0
+            r = np.sqrt(np.where(pos, dl, 0.0))
+            Q = np.where(pos, K * dl * r, self.k_eps * dl)
+            dQ = np.where(pos, 1.5 * K * r, self.k_eps)
         self._kinematics(st, n, Q)
         # forces on the ball: the inner ring's Q_i n_i + T_i e_i, the outer ring's −(Q_o n_o + T_o e_o),
         # e = (cos α, −sin α), T_c = λ_c M_g/D
-        F = np.concatenate((Q, Q), axis=1) * n             # [Q sin α | Q cos α] of both contacts
+        F = np.empty((nb, 4 * Z))                          # [Q sin α | Q cos α] of both contacts
+        np.multiply(Q, n[:, :Z2], out=F[:, :Z2])
+        np.multiply(Q, n[:, Z2:], out=F[:, Z2:])
         if self.has_lam:
-            T = np.concatenate((st.Mg, st.Mg), axis=1) * self.lamD
+            T = np.concatenate((st.Mg, st.Mg), axis=1) * self.LAMD
             F[:, :Z2] += T * n[:, Z2:]
             F[:, Z2:] -= T * n[:, :Z2]
         res = np.empty((nb, 3 + Z2))
         np.subtract(F[:, :Z], F[:, Z:Z2], out=res[:, 3:3 + Z])
-        np.subtract(F[:, Z2:3 * Z], F[:, 3 * Z:], out=res[:, 3 + Z:])
+        np.subtract(F[:, Z2:Z3], F[:, Z3:], out=res[:, 3 + Z:])
         res[:, 3 + Z:] += st.Fc
         r_g = F @ self.Sg
         if self.lam_i:
@@ -274,7 +295,7 @@ class _HSProblem:
         np.subtract(r_g, self.F_app, out=res[:, :3])
         res *= self.inv_s
         norm = np.abs(res * self.mask).max(axis=1)
-        if not np.isfinite(norm).all():              # an overflow: a residual too large to accept (continue)
+        if not norm.max() < np.inf:                  # an overflow: a residual too large to accept (continue)
             norm = np.where(np.isfinite(norm), norm, np.inf)
         if st.codes is not None:                     # the film law could not be inverted: the case stops
             norm = np.where(st.codes.any(axis=1), np.nan, norm)
@@ -283,41 +304,61 @@ class _HSProblem:
 
     def _kinematics(self, st, n, Q):
         """β, contact radii, lever arms, own orbital speeds, cage speed, ω_R, F_c, M_g into ``st``."""
-        Z, w = self.Z, self.w
+        Z = self.Z
         Z2 = 2 * Z
+        nb = Q.shape[0]
         sn, cs = n[:, :Z2], n[:, Z2:]
-        rb2 = self.rb2_0 + self.rb2_1 * cs[:, self.k]
-        irb = 1.0 / np.sqrt(rb2)
-        cb, sb = (cs[:, self.k] + self.cb_0) * irb, sn[:, self.k] * -irb
-        cb2, sb2 = np.concatenate((cb, cb), axis=1), np.concatenate((sb, sb), axis=1)
-        R = self.hdm + self.Rsg * cs
-        E = self.hD * (cs * cb2 - sn * sb2)                 # (D/2) cos(α_c + β)
+        ck, sk = (cs[:, Z:], sn[:, Z:]) if self.outer else (cs[:, :Z], sn[:, :Z])
+        rb2 = ck * self.RB1
+        rb2 += self.RB0
+        irb = self.ONE / np.sqrt(rb2)
+        cb = (ck + self.CB0) * irb
+        msb = sk * irb                                         # −sin β
+        cbsb = np.empty((nb, 2 * Z2))                          # [−sin β | −sin β | cos β | cos β]
+        cbsb[:, :Z], cbsb[:, Z:Z2], cbsb[:, Z2:3 * Z], cbsb[:, 3 * Z:] = msb, msb, cb, cb
+        tt = n * cbsb
+        E = tt[:, :Z2] + tt[:, Z2:]
+        E *= self.HD2                                          # (D/2) cos(α_c + β)
+        R = cs * self.RSG
+        R += self.HDM
         Ri, Ro, Ei, Eo = R[:, :Z], R[:, Z:], E[:, :Z], E[:, Z:]
-        det = Ro * Ei + Ri * Eo
-        w_own = w * Ri * Eo / det
+        det = Ro * Ei
+        det += Ri * Eo
+        w_own = self.wZ * Ri
+        w_own *= Eo
+        w_own /= det
         q = Q if st.allpos else np.maximum(Q, 0.0)
-        qs = q[:, :Z].sum(1, keepdims=True)
-        if (qs > 0).all():
-            wgt = q[:, :Z] / qs
+        qi = q[:, :Z]
+        qs = np.dot(qi, self.onesZ)
+        if qs.min() > 0:
+            wgt = qi / qs
         else:
             has = qs > 0
-            wgt = np.where(has, q[:, :Z] / np.where(has, qs, 1.0), 1.0 / Z)
-        W = (wgt * w_own).sum(1, keepdims=True)
+            wgt = np.where(has, qi / np.where(has, qs, 1.0), 1.0 / Z)
+        W = np.dot(wgt * w_own, self.onesZ)
+        WZ = np.repeat(W, Z, axis=1)
+        wmW = self.wZ - WZ
         qE = q * E
         qER = qE * R
-        den = qE[:, :Z] * Ei + qE[:, Z:] * Eo
-        num = -(qER[:, :Z] * (w - W) + qER[:, Z:] * W)
-        pos = den > 0
-        st.wpos = bool(pos.all())
+        den = qE[:, :Z] * Ei
+        den += qE[:, Z:] * Eo
+        num = qER[:, :Z] * wmW
+        num += qER[:, Z:] * WZ
+        st.wpos = den.min() > 0
         if st.wpos:
             wR = num / den
+            np.negative(wR, out=wR)
         else:
-            wR = np.where(pos, num / np.where(pos, den, 1.0), -w * Ro * Ri / det)
+            pos = den > 0
+            wR = np.where(pos, -num / np.where(pos, den, 1.0), -self.wZ * Ro * Ri / det)
         st.Fc = self.mdm2 * W * W
-        st.Mg = (self.J * W) * (wR * sb)
-        st.q, st.qs, st.wgt, st.W, st.qE, st.qER, st.den = q, qs, wgt, W, qE, qER, den
-        st.rb2, st.cb, st.sb, st.cb2, st.sb2, st.R, st.E, st.det, st.w_own, st.wR = (
-            rb2, cb, sb, cb2, sb2, R, E, det, w_own, wR)
+        JWZ = self.J * WZ
+        st.Mg = JWZ * wR
+        st.Mg *= msb
+        np.negative(st.Mg, out=st.Mg)
+        st.q, st.qs, st.wgt, st.W, st.WZ, st.wmW, st.qE, st.qER, st.den = q, qs, wgt, W, WZ, wmW, qE, qER, den
+        st.rb2, st.cb, st.msb, st.cbsb, st.R, st.E, st.det, st.w_own, st.wR, st.JWZ = (
+            rb2, cb, msb, cbsb, R, E, det, w_own, wR, JWZ)
 
     def _film_force(self, st, V, dl, K):
         r"""Contact loads and dQ/dδ of both contacts under the film law (:class:`_FilmLaw`).
@@ -369,18 +410,19 @@ class _HSProblem:
         Q_o and ω_cage) are analytic; dα_i/d(A − X) = e_i/d_i, dα_o/dX = e_o/d_o."""
         B, C, Rr, S = self._blocks(st)
         nb, Z = st.res.shape[0], self.Z
-        # per-ball 2×2 inverse [[d, −b], [−c, a]] / det of B = [[B0, B1], [B2, B3]] (each (nb, Z))
-        det2 = B[0] * B[3] - B[1] * B[2]
-        big = np.maximum(np.maximum(np.abs(B[0]), np.abs(B[1])), np.maximum(np.abs(B[2]), np.abs(B[3])))
+        # per-ball 2×2 inverse [[d, −b], [−c, a]] / det of B = [[B00, B01], [B10, B11]] (rows of B (nb, 4, Z))
+        B00, B01, B10, B11 = B[:, 0], B[:, 1], B[:, 2], B[:, 3]
+        det2 = B00 * B11 - B01 * B10
+        big = np.abs(B).max(axis=1)
         if (np.abs(det2) < (1e-14 * big) ** 2).any():      # ball exactly at the edge of contact
             tiny = 1e-14 * np.maximum(big, 1e-300)
             bad = (np.abs(det2) < tiny ** 2) * tiny
-            B = (B[0] - bad, B[1], B[2], B[3] - bad)
-            det2 = B[0] * B[3] - B[1] * B[2]
+            B00, B11 = B00 - bad, B11 - bad
+            det2 = B00 * B11 - B01 * B10
         idet = 1.0 / det2
         # Y = B⁻¹ [∂r_b/∂(g, ω_cage) | r_b]: rows (nb, 5, Z) of its two components
-        Y0 = (B[3] * idet)[:, None] * C[:, 0] - (B[1] * idet)[:, None] * C[:, 1]
-        Y1 = (B[0] * idet)[:, None] * C[:, 1] - (B[2] * idet)[:, None] * C[:, 0]
+        Y0 = (B11 * idet)[:, None] * C[:, 0] - (B01 * idet)[:, None] * C[:, 1]
+        Y1 = (B00 * idet)[:, None] * C[:, 1] - (B10 * idet)[:, None] * C[:, 0]
         T = Rr[:, 0] @ Y0.transpose(0, 2, 1) + Rr[:, 1] @ Y1.transpose(0, 2, 1)       # (nb, 4, 5)
         S -= T[..., :4]
         rhs = T[..., 4]
@@ -403,139 +445,181 @@ class _HSProblem:
         np.negative((ext @ Y1)[:, 0], out=dz[:, 3 + Z:])
         return dz
 
+    def _pair(self, a, b):
+        """[a | b] (nb, 2Z) from two (nb, Z) rows."""
+        out = np.empty((a.shape[0], 2 * self.Z))
+        out[:, :self.Z], out[:, self.Z:] = a, b
+        return out
+
     def _kinematic_derivatives(self, st):
-        """∂M_g and ∂ω_cage-related derivatives of every ball: (Mg_m, Mg_Q, W_m) (nb, 2Z) with respect to
-        the contact angle / load of each contact, Mg_W (nb, Z) and W_Q (nb, Z) (inner loads)."""
-        Z, w, k, kn = self.Z, self.w, self.k, self.kn
+        """Derivatives of the gyroscopic moment and the cage speed: (Mg_m, Mg_Q, W_m) (nb, 2Z) with respect
+        to the contact angle / load of each contact (of M_g; of Σ Q_i ω_c,j / Σ Q_i through ball j),
+        Mg_W = ∂M_g/∂ω_cage and W_Q = ∂ω_cage/∂Q_i (nb, Z)."""
+        Z = self.Z
         Z2 = 2 * Z
-        n, W, wR, sb, cb, R, E, den = st.n, st.W, st.wR, st.sb, st.cb, st.R, st.E, st.den
+        K, KN = (slice(Z, Z2), slice(0, Z)) if self.outer else (slice(0, Z), slice(Z, Z2))
+        n, R, E, pair = st.n, st.R, st.E, self._pair
         sn, cs = n[:, :Z2], n[:, Z2:]
         Ri, Ro, Ei, Eo = R[:, :Z], R[:, Z:], E[:, :Z], E[:, Z:]
-        b = (-1.0 - self.sgp * cs[:, k]) / st.rb2                               # dβ/dα_k
-        hsab = -self.hD * (sn * st.cb2 + cs * st.sb2)                           # −(D/2) sin(α_c + β)
-        Eown = hsab.copy()                                                      # dE_c/dα_c
-        Eown[:, k] *= 1.0 + b
-        Ex = hsab[:, kn] * b                                                    # dE_other/dα_k
-        Rd = -self.Rsg * sn                                                     # dR_c/dα_c
-        Rsw = np.concatenate((Ro, Ri), axis=1)
-        Esw = np.concatenate((Eo, Ei), axis=1)
-        det_m = Rsw * Eown + Rd * Esw                                           # d det/dα_m
-        det_m[:, k] += Ex * (Ro if k.start else Ri)
-        N = np.concatenate((Rd[:, :Z] * Eo, Ri * Eown[:, Z:]), axis=1)          # d(R_i E_o)/dα_m
-        if k.start == 0:                                                        # inner control: E_o moves with α_i
+        mb = (cs[:, K] * self.SGP + self.ONE) / st.rb2                         # −dβ/dα_k
+        cb, msb = st.cb, st.msb
+        sab = n * np.concatenate((cb, cb, msb, msb), axis=1)
+        hsab = (sab[:, :Z2] - sab[:, Z2:]) * self.NHD2                         # −(D/2) sin(α_c + β)
+        Ed = hsab.copy()                                                       # dE_c/dα_c
+        Ed[:, K] *= self.ONE - mb
+        Ex = hsab[:, KN] * mb
+        np.negative(Ex, out=Ex)                                                # dE_other/dα_k
+        Rd = sn * self.NRSG                                                    # dR_c/dα_c
+        det_m = pair(Ro, Ri) * Ed + Rd * pair(Eo, Ei)                          # d det/dα_m
+        det_m[:, K] += R[:, K] * Ex
+        N = pair(Rd[:, :Z] * Eo, Ri * Ed[:, Z:])                               # d(R_i E_o)/dα_m
+        if not self.outer:                                                     # inner control: E_o moves with α_i
             N[:, :Z] += Ri * Ex
-        idet = 1.0 / st.det
-        wo_m = (w * N - np.concatenate((st.w_own, st.w_own), axis=1) * det_m) * np.concatenate((idet, idet), axis=1)
-        vv = np.repeat(np.concatenate((w - W, W), axis=1), Z, axis=1)            # (ω − ω_cage | ω_cage)
+        det2 = pair(st.det, st.det)
+        wo_m = (self.w2Z * N - pair(st.w_own, st.w_own) * det_m) / det2
+        vv = pair(st.wmW, st.WZ)                                               # (ω − ω_cage | ω_cage)
+        den = st.den
         wpos = st.wpos
-        iden = 1.0 / (den if wpos else np.where(den > 0, den, 1.0))
-        iden2 = np.concatenate((iden, iden), axis=1)
-        wR2 = np.concatenate((wR, wR), axis=1)
+        iden = self.ONE / (den if wpos else np.where(den > 0, den, 1.0))
+        iden2 = pair(iden, iden)
         Rv = R * vv
-        a = st.q * (Rv + 2.0 * wR2 * E)                                         # coefficient of dE_c/dα_m
-        Am = a * Eown
-        Am[:, k] += a[:, kn] * Ex
-        wR_m = -(Am + st.qE * vv * Rd) * iden2
-        wR_Q = -E * (Rv + wR2 * E) * iden2 * (st.Q > 0)
+        wE = pair(st.wR, st.wR) * E
+        a = wE + wE
+        a += Rv
+        a *= st.q                                                              # coefficient of dE_c/dα_m
+        Am = a * Ed
+        Am[:, K] += a[:, KN] * Ex
+        wR_m = st.qE * vv
+        wR_m *= Rd
+        wR_m += Am
+        wR_m *= iden2
+        np.negative(wR_m, out=wR_m)
+        wR_Q = Rv + wE
+        wR_Q *= E
+        wR_Q *= iden2
+        np.negative(wR_Q, out=wR_Q)
         wR_W = (st.qER[:, :Z] - st.qER[:, Z:]) * iden
+        if not st.allpos:
+            wR_Q *= st.Q > 0
         if not wpos:
             pos = den > 0
-            own = (np.concatenate((Ro * Rd[:, :Z], Rd[:, Z:] * Ri), axis=1) * -w
-                   + np.concatenate((w * Ro * Ri * idet,) * 2, axis=1) * det_m) * np.concatenate((idet, idet), axis=1)
-            pos2 = np.concatenate((pos, pos), axis=1)
+            pos2 = pair(pos, pos).astype(bool)
+            own = (-self.w2Z * (pair(Ro, Ri) * Rd) + pair(self.wZ * Ro * Ri / st.det, self.wZ * Ro * Ri / st.det)
+                   * det_m) / det2
             wR_m = np.where(pos2, wR_m, own)
             wR_Q = np.where(pos2, wR_Q, 0.0)
             wR_W = np.where(pos, wR_W, 0.0)
-        JW = self.J * W
-        JWsb2 = np.concatenate((JW * sb,) * 2, axis=1)
-        Mg_m = JWsb2 * wR_m
-        Mg_m[:, k] += JW * wR * cb * b
-        Mg_Q = JWsb2 * wR_Q
-        Mg_W = self.J * sb * (wR + W * wR_W)
-        if (st.qs > 0).all():
-            W_Q = ((st.w_own - W) / st.qs) * (st.Q[:, :Z] > 0)
-        else:
+        JWmsb = st.JWZ * msb
+        JWmsb2 = pair(JWmsb, JWmsb)
+        Mg_m = JWmsb2 * wR_m                                                   # M_g = −J ω_cage ω_R (−sin β)
+        Mg_m[:, K] += (st.JWZ * st.wR) * (cb * mb)
+        np.negative(Mg_m, out=Mg_m)
+        Mg_Q = JWmsb2 * wR_Q
+        np.negative(Mg_Q, out=Mg_Q)
+        Mg_W = st.WZ * wR_W
+        Mg_W += st.wR
+        Mg_W *= msb
+        Mg_W *= -self.J
+        W_Q = (st.w_own - st.WZ) / st.qs
+        if not st.allpos or st.qs.min() <= 0:
             has = st.qs > 0
-            W_Q = np.where(has & (st.Q[:, :Z] > 0), (st.w_own - W) / np.where(has, st.qs, 1.0), 0.0)
-        W_m = np.concatenate((st.wgt, st.wgt), axis=1) * wo_m
+            W_Q = np.where(has & (st.Q[:, :Z] > 0), (st.w_own - st.WZ) / np.where(has, st.qs, 1.0), 0.0)
+        W_m = pair(st.wgt, st.wgt) * wo_m
         return Mg_m, Mg_Q, Mg_W, W_m, W_Q
 
     def _blocks(self, st):
-        """The scaled blocks of the augmented Jacobian: per ball B = ∂r_b/∂X (four (nb, Z) entries),
-        C = [∂r_b/∂g, ∂r_b/∂ω_cage, r_b] (nb, 2, 5, Z), R = the balls' part of ∂(r_g, r_W)/∂X
-        (nb, 2, 4, Z) (by component of X), and the global block ∂(r_g, r_W)/∂(g, ω_cage) before the
-        elimination (nb, 4, 4)."""
+        """The scaled blocks of the augmented Jacobian: per ball B = ∂r_b/∂X (nb, 4, Z) (entries aa, ar, ra, rr:
+        r_b axial, radial × X axial, radial), C = [∂r_b/∂g, ∂r_b/∂ω_cage, r_b] (nb, 2, 5, Z), R = the balls'
+        part of ∂(r_g, r_W)/∂X (nb, 2, 4, Z) (by component of X), and the global block
+        ∂(r_g, r_W)/∂(g, ω_cage) before the elimination (nb, 4, 4)."""
         Mg_m, Mg_Q, Mg_W, W_m, W_Q = self._kinematic_derivatives(st)
         nb, Z = st.res.shape[0], self.Z
         Z2 = 2 * Z
-        n, d, Q, dQ = st.n, st.d, st.Q, st.dQ
+        n, d, Q, dQ, c = st.n, st.d, st.Q, st.dQ, self.cr
         sn, cs = n[:, :Z2], n[:, Z2:]
         if self.film is not None:
             # film law: Q_c(δ_c, α_c), ∂Q/∂α = −(∂G/∂α) dQ/dδ, so dQ/dp = dQ/dδ n + ∂Q/∂α e/d
             Qa = -st.f_Ga * dQ
             Mg_m = Mg_m + Mg_Q * Qa
             W_m[:, :Z] += W_Q * Qa[:, :Z]
-        idd = 1.0 / d
-        ea, er = cs * idd, -sn * idd                                  # e/d, e = (cos α, −sin α)
+        idd = self.ONE2 / d
+        ea, ner = cs * idd, sn * idd                                 # e/d = (ea, −ner), e = (cos α, −sin α)
         MgQ = Mg_Q * dQ
-        mA, mR = Mg_m * ea + MgQ * sn, Mg_m * er + MgQ * cs          # dM_g/dp_c (axial, radial)
-        bA, bR = W_m * ea, W_m * er                                   # dω_cage/dp_c
+        mA = Mg_m * ea
+        mA += MgQ * sn                                               # dM_g/dp_c (axial)
+        mR = MgQ * cs
+        mR -= Mg_m * ner                                             # (radial)
+        bA = W_m * ea                                                # dω_cage/dp_c
+        bR = W_m * ner
+        np.negative(bR, out=bR)
         WQ = W_Q * dQ[:, :Z]
         bA[:, :Z] += WQ * sn[:, :Z]
         bR[:, :Z] += WQ * cs[:, :Z]
-        # contact stiffness d(Q n + T e)/dp = dQ n nᵀ + (Q e − T n) eᵀ / d (+ film: n (∂Q/∂α) eᵀ / d),
-        # as seen by the ball (inner +, outer −)
-        ta, tr = Q * cs, Q * -sn
+        # contact stiffness d(Q n + T e)/dp = dQ n nᵀ + (Q e − T n) eᵀ / d (+ film: n (∂Q/∂α) eᵀ / d)
+        ta = Q * cs
+        tr = Q * sn
+        np.negative(tr, out=tr)
         if self.has_lam:
-            T = np.concatenate((st.Mg, st.Mg), axis=1) * self.lamD
+            T = self._pair(st.Mg, st.Mg) * self.LAMD
             ta -= T * sn
             tr -= T * cs
         if self.film is not None:
             ta += Qa * sn
             tr += Qa * cs
         dQs, dQc = dQ * sn, dQ * cs
-        Gaa, Gar = dQs * sn + ta * ea, dQs * cs + ta * er
-        Gra, Grr = dQc * sn + tr * ea, dQc * cs + tr * er
+        Gaa = dQs * sn
+        Gaa += ta * ea
+        Gar = dQs * cs
+        Gar -= ta * ner
+        Gra = dQc * sn
+        Gra += tr * ea
+        Grr = dQc * cs
+        Grr -= tr * ner
+        # as seen by the ball (inner +, outer −), with the friction's share ∂r_b/∂M_g dM_g/dp_c
+        H = [Gaa * self.PM, Gar * self.PM, Gra * self.PM, Grr * self.PM]
         if self.has_lam:
-            # ∂r_b/∂M_g = (λ_i e_i − λ_o e_o)/D, and the friction's share of d r_b/dp_c
-            lp = self.lamD * self.pm
-            vA = lp * cs
-            vR = lp * -sn
-            vA = vA[:, :Z] + vA[:, Z:]
-            vR = vR[:, :Z] + vR[:, Z:]
-            vA2, vR2 = np.concatenate((vA, vA), axis=1), np.concatenate((vR, vR), axis=1)
-            Haa, Har = Gaa * self.pm + vA2 * mA, Gar * self.pm + vA2 * mR
-            Hra, Hrr = Gra * self.pm + vR2 * mA, Grr * self.pm + vR2 * mR
-        else:
-            vA = vR = 0.0
-            Haa, Har, Hra, Hrr = Gaa * self.pm, Gar * self.pm, Gra * self.pm, Grr * self.pm
-        As, c = self.As, self.c
-        Bm = ((Haa[:, Z:] - Haa[:, :Z]) * As, (Har[:, Z:] - Har[:, :Z]) * As,
-              (Hra[:, Z:] - Hra[:, :Z]) * As, (Hrr[:, Z:] - Hrr[:, :Z]) * As)
+            LPcs, LPsn = self.LP * cs, self.LP * sn
+            vA = LPcs[:, :Z] + LPcs[:, Z:]
+            vR = LPsn[:, :Z] + LPsn[:, Z:]
+            np.negative(vR, out=vR)
+            vA2, vR2 = self._pair(vA, vA), self._pair(vR, vR)
+            H[0] += vA2 * mA
+            H[1] += vA2 * mR
+            H[2] += vR2 * mA
+            H[3] += vR2 * mR
+        As = self.AsZ
+        B = np.empty((nb, 4, Z))
+        for e in range(4):
+            np.subtract(H[e][:, Z:], H[e][:, :Z], out=B[:, e])
+        B *= As[:, None]
         C = np.empty((nb, 2, 5, Z))
-        for row, (Hx, Hy) in enumerate(((Haa, Har), (Hra, Hrr))):    # d r_b/dg = H_i W_t (A/scale)
-            hx, hy = Hx[:, :Z] * As, Hy[:, :Z] * As
+        for row in range(2):
+            hx, hy = H[2 * row][:, :Z] * As, H[2 * row + 1][:, :Z] * As
             C[:, row, 0] = hx
             np.multiply(hy, c, out=C[:, row, 1])
             np.multiply(hx, c, out=C[:, row, 2])
-        Fc_W = 2.0 * self.mdm2 * st.W
-        np.multiply(vA * Mg_W, self.wrs, out=C[:, 0, 3]) if self.has_lam else C[:, 0, 3].fill(0.0)
-        np.multiply((vR * Mg_W if self.has_lam else 0.0) + Fc_W, self.wrs, out=C[:, 1, 3])
+        wrs = self.wrsZ
+        FcW = st.WZ * (2.0 * self.mdm2)
+        if self.has_lam:
+            np.multiply(vA * Mg_W, wrs, out=C[:, 0, 3])
+            np.multiply(vR * Mg_W + FcW, wrs, out=C[:, 1, 3])
+        else:
+            C[:, 0, 3] = 0.0
+            np.multiply(FcW, wrs, out=C[:, 1, 3])
         C[:, 0, 4] = st.res[:, 3:3 + Z]
         C[:, 1, 4] = st.res[:, 3 + Z:]
         # ring rows: d r_g/dp_i = L = W_tᵀ G_i + u m_iᵀ per ball, u = W_tᵀ (λ_i/D) e_i − (λ_i f_i/ℜ_i) c (tilt
         # row), W_tᵀ = [[1, 0], [0, c], [c, 0]]; by X (p_i = A_c − X, p_o = X through M_g): u m_oᵀ − L
         P = np.empty((nb, 8, Z))                      # L rows (F_a, F_r, M/ℜ_i) × (axial, radial), b_i
-        Gi = (Gaa[:, :Z], Gar[:, :Z], Gra[:, :Z], Grr[:, :Z])
-        P[:, 0], P[:, 1] = Gi[0], Gi[1]
-        np.multiply(Gi[2], c, out=P[:, 2])
-        np.multiply(Gi[3], c, out=P[:, 3])
-        np.multiply(Gi[0], c, out=P[:, 4])
-        np.multiply(Gi[1], c, out=P[:, 5])
+        P[:, 0], P[:, 1] = Gaa[:, :Z], Gar[:, :Z]
+        np.multiply(Gra[:, :Z], c, out=P[:, 2])
+        np.multiply(Grr[:, :Z], c, out=P[:, 3])
+        np.multiply(Gaa[:, :Z], c, out=P[:, 4])
+        np.multiply(Gar[:, :Z], c, out=P[:, 5])
         P[:, 6], P[:, 7] = bA[:, :Z], bR[:, :Z]
         Rr = np.empty((nb, 2, 4, Z))
         if self.lam_i:
-            li = self.lamD[0]
+            li = self.LAMD[0, 0]
             u = (li * cs[:, :Z], li * -sn[:, :Z] * c, li * cs[:, :Z] * c - self.mom)
             for m in range(3):
                 P[:, 2 * m] += u[m] * mA[:, :Z]
@@ -544,20 +628,18 @@ class _HSProblem:
                 np.multiply(u[m] * mR[:, Z:] - P[:, 2 * m + 1], As, out=Rr[:, 1, m])
             S_W = np.stack([(um * Mg_W).sum(1) for um in u], axis=1) * (self.w_ref / self.scale)[:, None]
         else:
-            np.multiply(P[:, 0:6:2], -As[:, :, None], out=Rr[:, 0, :3])
-            np.multiply(P[:, 1:6:2], -As[:, :, None], out=Rr[:, 1, :3])
+            np.multiply(P[:, :6].reshape(nb, 3, 2, Z).transpose(0, 2, 1, 3), -As[:, None, None], out=Rr[:, :, :3])
             S_W = 0.0
-        Aw = self.Aw
-        np.multiply(bA[:, :Z] - bA[:, Z:], Aw, out=Rr[:, 0, 3])
-        np.multiply(bR[:, :Z] - bR[:, Z:], Aw, out=Rr[:, 1, 3])
+        np.multiply(bA[:, :Z] - bA[:, Z:], self.AwZ, out=Rr[:, 0, 3])
+        np.multiply(bR[:, :Z] - bR[:, Z:], self.AwZ, out=Rr[:, 1, 3])
         # global block: Σ_j L W_t, and the cage row −Σ b_i W_t A/ω_ref
         sums = P.reshape(nb, 8 * Z) @ self.Msum                  # (nb, 12)
         S = np.empty((nb, 4, 4))
-        np.multiply(sums[:, :9].reshape(nb, 3, 3), As[:, :, None], out=S[:, :3, :3])
+        np.multiply(sums[:, :9].reshape(nb, 3, 3), self.As[:, :, None], out=S[:, :3, :3])
         S[:, :3, 3] = S_W
-        np.multiply(sums[:, 9:], -Aw, out=S[:, 3, :3])
+        np.multiply(sums[:, 9:], -self.Aw, out=S[:, 3, :3])
         S[:, 3, 3] = 1.0
-        return Bm, C, Rr, S
+        return B, C, Rr, S
 
     # ------------------------------------------------------------------ safeguards and path
     def limit(self, st, dz):
@@ -572,25 +654,26 @@ class _HSProblem:
         if st.allpos:
             return dz
         nb, Z, A = dz.shape[0], self.Z, self.A
-        Z2 = 2 * Z
-        dX = A * dz[:, 3:]
-        dAc = dz[:, :3] @ self.L
+        Z2, Z3 = 2 * Z, 3 * Z
         dV = np.empty((nb, 4 * Z))
-        V4 = dV.reshape(nb, 2, 2, Z)
-        V4[:, :, 1] = dX.reshape(nb, 2, Z)
-        np.subtract(dAc.reshape(nb, 2, Z), V4[:, :, 1], out=V4[:, :, 0])
+        np.multiply(dz[:, 3:3 + Z], A, out=dV[:, Z:Z2])
+        np.multiply(dz[:, 3 + Z:], A, out=dV[:, Z3:])
+        dAc = dz[:, :3] @ self.L
+        np.subtract(dAc[:, :Z], dV[:, Z:Z2], out=dV[:, :Z])
+        np.subtract(dAc[:, Z:], dV[:, Z3:], out=dV[:, Z2:Z3])
         nd = st.n * dV
         dd = nd[:, :Z2] + nd[:, Z2:]                                         # predicted change of δ_c
         rb = np.abs(st.res[:, 3:])
         F = np.maximum(st.Fc, np.maximum(rb[:, :Z], rb[:, Z:]) * self.scale[:, None])
-        d_eta = (np.concatenate((F, F), axis=1) / self.K0) ** (2.0 / 3.0)
+        d_eta = (self._pair(F, F) / self.K0) ** (2.0 / 3.0)
         over = (st.dl < 0) & (st.dl + dd > d_eta)
         if not over.any():
             return dz
         kap = np.where(over, (d_eta - st.dl) / np.where(over, dd, 1.0), 1.0)
         kap = np.minimum(kap[:, :Z], kap[:, Z:])
         dz = dz.copy()
-        dz[:, 3:] *= np.concatenate((kap, kap), axis=1)
+        dz[:, 3:3 + Z] *= kap
+        dz[:, 3 + Z:] *= kap
         return dz
 
     def path(self, z, dz):
@@ -598,9 +681,16 @@ class _HSProblem:
         dρ = n_o·dx, dα = e_o·dx/ρ (n_o = (sin α_o, cos α_o), e_o = (cos α_o, −sin α_o)); the rings linear."""
         Z = self.Z
         x1, x2, d1, d2 = z[:, 3:3 + Z], z[:, 3 + Z:], dz[:, 3:3 + Z], dz[:, 3 + Z:]
-        r2 = x1 * x1 + x2 * x2
+        r2 = x1 * x1
+        r2 += x2 * x2
         rho = np.sqrt(r2)
-        return z, dz, rho, np.arctan2(x1, x2), (x1 * d1 + x2 * d2) / rho, (x2 * d1 - x1 * d2) / r2
+        drho = x1 * d1
+        drho += x2 * d2
+        drho /= rho
+        da = x2 * d1
+        da -= x1 * d2
+        da /= r2
+        return z, dz, rho, np.arctan2(x1, x2), drho, da
 
     def move(self, path, lam):
         """The point at the fraction lam (nb,) of the step along the path: the ball centres at

@@ -25,7 +25,8 @@ _BALL_CAP = 0.05        # largest move of a ball centre per step of the per-ball
 _BALL_MAXIT = 40        # Newton steps of the per-ball start
 _BALL_HALVINGS = 12     # line-search halvings of the per-ball start
 _RELAX = 1e-2           # a light ball is re-placed when its residual exceeds this share of its F_c + friction
-_BALL_TOL = 1e-4        # per-ball start: force residual relative to the ball's external force
+_BALL_TOL = 1e-4        # re-placing a stalled ball: force residual relative to the ball's external force
+_START_TOL = 1e-2       # the start places a ball to this share of its external force (Newton does the rest)
 
 
 def static_start(pb, g):
@@ -42,7 +43,7 @@ def static_start(pb, g):
         al = np.arctan2(A1, A2)
         Ki, Ko = pb.brg.K_i(al), pb.brg.K_o(al)
     share_o = np.where(s > 0, Ki ** (2.0 / 3.0) / (Ki ** (2.0 / 3.0) + Ko ** (2.0 / 3.0)), 0.5)
-    r = (pb.c0[Z] + share_o * s) / Aj / pb.A
+    r = (pb.c0[0, Z] + share_o * s) / Aj / pb.A
     z = np.empty((nb, 3 + 2 * Z))
     z[:, :3] = g
     np.multiply(A1, r, out=z[:, 3:3 + Z])
@@ -94,7 +95,7 @@ def start(pb, z):
     Qs = np.maximum(st.Qi, 0.0)
     g1, g2 = Qs * st.n[:, :Z], Qs * st.n[:, 2 * Z:3 * Z] + st.Fc
     Qo = np.hypot(g1, g2)
-    r_o = (pb.c0[Z] + (Qo / Ko) ** (2.0 / 3.0)) / np.where(Qo > 0, Qo, 1.0)
+    r_o = (pb.c0[0, Z] + (Qo / Ko) ** (2.0 / 3.0)) / np.where(Qo > 0, Qo, 1.0)
     X1 = np.where(st.Fc > 0, r_o * g1, st.X1)
     X2 = np.where(st.Fc > 0, r_o * g2, st.X2)
     # light and unloaded balls: placed (flattened over the batch)
@@ -106,8 +107,8 @@ def start(pb, z):
         ko = Ko if np.ndim(Ko) == 0 else Ko.ravel()[k]
         mu = (1e-9 / A) * np.repeat(pb.scale, Z)[k]                 # keeps a free ball's Hessian invertible
         X1[k], X2[k] = place(st.X1.ravel()[k], st.X2.ravel()[k], Ac[:, :Z].ravel()[k], Ac[:, Z:].ravel()[k],
-                             f1.ravel()[k], f2.ravel()[k], ki, ko, mu, _BALL_TOL * fn.ravel()[k],
-                             pb.c0[0], pb.c0[Z], _BALL_CAP * A)
+                             f1.ravel()[k], f2.ravel()[k], ki, ko, mu, _START_TOL * fn.ravel()[k],
+                             pb.c0[0, 0], pb.c0[0, Z], _BALL_CAP * A)
     out = z.copy()
     out[:, 3:3 + Z] = X1.reshape(nb, Z) / A
     out[:, 3 + Z:] = X2.reshape(nb, Z) / A
@@ -215,7 +216,7 @@ def relax(pb, z, st, todo):
     Ac = pb.centres(z[:, :3])
     X1, X2 = place(st.X1.ravel()[k], st.X2.ravel()[k], Ac[:, :Z].ravel()[k], Ac[:, Z:].ravel()[k],
                    f1.ravel()[k], f2.ravel()[k], pb.Ki0, pb.Ko0, (1e-9 / A) * np.repeat(pb.scale, Z)[k],
-                   _BALL_TOL * fn.ravel()[k], pb.c0[0], pb.c0[Z], _BALL_CAP * A)
+                   _BALL_TOL * fn.ravel()[k], pb.c0[0, 0], pb.c0[0, Z], _BALL_CAP * A)
     zn = z.copy()
     i, j = np.divmod(k, Z)
     zn[i, 3 + j], zn[i, 3 + Z + j] = X1 / A, X2 / A
