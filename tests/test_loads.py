@@ -6,7 +6,7 @@ import pytest
 import thermobear as tb
 from thermobear.errors import InputError, NoEquilibrium
 from thermobear.contact.geometry import BallBearing, bearing
-from thermobear.loads.static import axial_contact_angle, load_distribution
+from thermobear.loads import axial_contact_angle, load_distribution
 
 STEEL = tb.Material(E=2.1e11, nu=0.3, rho=7850.0)
 
@@ -69,7 +69,7 @@ def test_stribeck_sum_zero_clearance():
 
 
 def test_stribeck_radial_1d_solution_with_clearance():
-    # pure radial, α ≈ 0: Q = Kn (δr cos ψ − Pd/2)^1.5, Fr = Σ Q cos ψ  (PHYSICS.md §3.1 simplification)
+    # pure radial, α ≈ 0: Q = Kn (δr cos ψ − Pd/2)^1.5, Fr = Σ Q cos ψ  (Harris 2001 §7.4: deep-groove simplification)
     b = iso(0.01e-3)
     ld = load_distribution(b, Fr=1000.0)
     dpsi = ld.delta_r * np.cos(ld.psi) - b.Pd / 2

@@ -6,7 +6,7 @@ from thermobear.errors import InputError, NoEquilibrium
 from thermobear.lubrication.film import film_thickness_nvm
 from thermobear.contact.geometry import bearing
 from thermobear.contact.kinematics import entrainment_speed
-from thermobear.loads.static import axial_contact_angle, load_distribution
+from thermobear.loads import axial_contact_angle, load_distribution
 from thermobear.loads.film import film_contact_law, film_load_distribution
 
 B7210 = bearing("7210")
@@ -198,8 +198,7 @@ def test_law_alpha_derivative_matches_central_difference(stiffness):
     """∂G/∂α at fixed Q of the low-speed law (films through R_x(α); K_n(α) with per_ball) and of the
     high-speed law (R_x and u through 1 ∓ γ'cos α), against central differences of the public functions."""
     from thermobear.loads.film import _Film
-    from thermobear.loads.filmlaw import _invert
-    from thermobear.loads.highspeed_model import _FilmLaw
+    from thermobear.loads.filmlaw import _FilmLaw, _invert
     al = np.linspace(0.3, 0.9, 7)[None, :]
     Q = np.array([[0.01, 0.3, 2.0, 15.0, 120.0, 800.0, 3000.0]])
     law = _Film(B7210, np.full((1, 7), U), np.full((1, 7), 1.3 * U), np.array([[0.0221]]), np.array([[2e-8]]),

@@ -1,6 +1,6 @@
 """High-speed Jones–Harris load distribution (issue 2, item 5): the n = 0 limit, symmetry,
-ball and ring equilibrium, an independent solution of PHYSICS.md §3.3 written with Harris's
-sign convention, speed trends, batching, and named failures."""
+ball and ring equilibrium, an independent solution of Jones's (1960) ball equations written with
+Harris's (2001, §8.2) sign convention, speed trends, batching, and named failures."""
 import numpy as np
 import pytest
 from scipy.optimize import fsolve
@@ -8,7 +8,7 @@ from scipy.optimize import fsolve
 import thermobear as tb
 from thermobear.errors import InputError, NoEquilibrium
 from thermobear.contact.geometry import BallBearing, bearing
-from thermobear.loads.static import load_distribution
+from thermobear.loads import load_distribution
 from thermobear.loads.highspeed import load_distribution_high_speed, load_distribution_high_speed_full
 
 from _highspeed_checks import assert_ball_centres
@@ -18,7 +18,8 @@ STEEL = tb.Material(E=2.075e11, nu=0.3, rho=7850.0)
 
 
 def b218():
-    """Harris's 218 angular contact example (PHYSICS.md §3.2 inputs)."""
+    """Harris's 218 angular contact example (Harris 2001 worked example; inputs as recalled, not confirmed
+    against the book)."""
     return BallBearing(D=22.23e-3, dm=125.3e-3, Z=16, fi=0.5232, fo=0.5232, alpha0=np.deg2rad(40.0),
                        kind="angular_contact", ball_material=STEEL, ring_material=STEEL, name="218")
 
@@ -65,7 +66,7 @@ def test_pure_axial_load_gives_identical_balls():
 
 
 def _pure_axial_reference(brg, Fa, n_rpm):
-    """PHYSICS.md §3.3 for identical balls, written as printed there (Harris's β and M_g signs,
+    """Jones (1960) / Harris (2001) §8.2 ball and ring equations for identical balls (Harris's β and M_g signs,
     squared distances, cos/sin from X and δ) with Harris's kinematic formulas of §4, solved by
     scipy's fsolve: an independent route to the same answer (outer-raceway control)."""
     D, dm, Z, A = brg.D, brg.dm, brg.Z, brg.A

@@ -31,7 +31,7 @@ from _common import median_time
 
 import thermobear as tb
 from thermobear.errors import ExtrapolationWarning
-from thermobear.loads.static import load_distribution
+from thermobear.loads import load_distribution
 from thermobear.losses.local import bearing_losses
 from thermobear.coupled.solver import steady_state, transient
 from thermobear.app.sweep import run_sweep
@@ -151,11 +151,11 @@ def run(full: bool = False, profile: bool = True) -> str:
           "point, n = 3200 (1 + k 1e-4) rpm: what the solver caches per operating point — the dry loads — is "
           "cold; what depends only on the bearing — the network's volumes, areas, lengths and materials, the "
           "stiffness constants — is warm, as in any sweep) measured 3.7–4.4 ms on a quiet machine (7.1–9.9 ms "
-          "before the compiled kernels and the thermal trims of this work). Split (200 points, mean): the dry "
+          "before the numba kernels, since removed, and the thermal trims of this work). Split (200 points, mean): the dry "
           "high-speed ball equilibrium ≈ 0.9 ms — the static Jones start ≈ 0.2 ms, the per-ball start ≈ 0.1 ms, "
-          "7 Newton steps ≈ 0.45 ms, their state and exact step compiled (numba, the `fast` extra; "
-          "thermobear/_kernels.py, the same equations as the numpy reference, which takes ≈ 4 ms here and runs "
-          "without numba); the contact set ≈ 0.45 ms (Hertz ellipticity iteration, kinematics); the network "
+          "7 Newton steps ≈ 0.45 ms (those with numba-compiled kernels, since removed: the loads now run on numpy, "
+          "one shared damped Newton, thermobear/loads/newton.py, timed by validation/bench_loads.py"
+          "); the contact set ≈ 0.45 ms (Hertz ellipticity iteration, kinematics); the network "
           "build ≈ 0.3 ms (the bearing-only values shared between points); Newton on the free node "
           "temperatures ≈ 1.3 ms for 5 iterations (one fused loss pass at two temperature states per iteration — "
           "the loss slopes are diagonal —, conductances and their slopes, LAPACK solves); the final losses and "
@@ -165,10 +165,10 @@ def run(full: bool = False, profile: bool = True) -> str:
           "calls first, so a dry point costs its thermal coupling, ≈ 3.0 ms, point by point; the points below "
           "≈ 3200 rpm (17 %), where the low-speed form applies and lifts two balls, run the film load model "
           "(a dry steady state for the start, then film load distributions — batched over those points, each "
-          "round of their fixed points one call, in numpy: the film law is not compiled — each followed by a "
+          "round of their fixed points one call — each followed by a "
           "steady state), ≈ 8 ms per point. Rows equal single solves to 1e-12. The levers left: a thermal "
-          "network batched over operating points (the elements are written for scalars), and the film law "
-          "compiled. The prescribed-temperature sweep solves each load group in one batched call (dry "
+          "network batched over operating points (the elements are written for scalars), and fewer numpy calls "
+          "per load-distribution step. The prescribed-temperature sweep solves each load group in one batched call (dry "
           "high-speed or film). The transient is ≈ 100 loss evaluations of the BDF right-hand side with the "
           "output losses in one vectorised call. Timings vary by ±30–50 % between runs on the 2-core CI "
           "machine."]

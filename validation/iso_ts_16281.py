@@ -18,7 +18,7 @@ from _common import write_report
 
 import thermobear as tb
 from thermobear.contact.geometry import BallBearing
-from thermobear.loads.static import axial_contact_angle, load_distribution
+from thermobear.loads import axial_contact_angle, load_distribution
 
 STEEL = tb.Material(E=2.1e11, nu=0.3, rho=7850.0, name="steel-iso")
 OUT = Path(__file__).resolve().parent / "report" / "iso_ts_16281.md"

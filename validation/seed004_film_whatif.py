@@ -41,7 +41,7 @@ from _common import write_report
 
 import thermobear as tb
 from thermobear.contact.kinematics import entrainment_speed
-from thermobear.loads.static import load_distribution
+from thermobear.loads import load_distribution
 from thermobear.loads.film import film_load_distribution
 from thermobear.loads.highspeed import load_distribution_high_speed_full
 from thermobear.coupled.solver import choose_models, scene_losses, steady_state

@@ -36,7 +36,7 @@ import numpy as np
 import thermobear as tb
 from thermobear.errors import ExtrapolationWarning, InputError, NoConvergence, NoEquilibrium, SolverError
 from thermobear.losses.skf import mu_EHL_from_torque, skf_constants, skf_friction
-from thermobear.loads.static import load_distribution
+from thermobear.loads import load_distribution
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))

@@ -18,7 +18,8 @@ as thick as the gap (a flooded inlet is assumed).
 This module holds the pieces the low-speed (:mod:`thermobear.loads.film`) and the high-speed
 (:mod:`thermobear.loads.highspeed`, ``film=``) forms share: the NVM film at fixed geometry with its
 logarithmic derivatives (:class:`_NVMFixed`), the law at fixed contact angles (:class:`_FilmAt`) and
-its per-contact inversion for Q (:func:`_invert`), vectorised over every contact of a batch.
+its per-contact inversion for Q (:func:`_invert`), vectorised over every contact of a batch, and the
+high-speed form's law of both contacts of every ball with caged entrainment speeds (:class:`_FilmLaw`).
 
 References
 ----------
@@ -296,3 +297,40 @@ def invert_error(fail, s, alpha, iterations):
         msg = (f"film contact law: per-ball inversion did not converge (ball {k[1]}, s = {s[k]:.4g} m) "
                f"after {iterations} iterations")
     return NoConvergence(msg, iterations=int(iterations), residual=float("nan"))
+
+
+class _FilmLaw:
+    r"""Film contact law of both contacts of every ball, on the (nb, 2Z) [inner | outer] layout.
+
+    δ_c = (Q_c/K_c)^(2/3) − h_c(Q_c, α_c)   with h_c the NVM central film
+    (:func:`thermobear.lubrication.film.film_thickness_nvm`) at R_x,c = (D/2)(1 ∓ γ'cos α_c), R_y,c, the mean
+    entrainment speed u_c = v_c (d_m/2)(1 ∓ γ'cos α_c), v = (|ω − ω_cage|, ω_cage) (caged kinematics,
+    :func:`thermobear.contact.kinematics.caged_ball_kinematics`, outer ring fixed), one η and α_p per case.
+    :meth:`at` gives the law at fixed angles that :func:`thermobear.loads.filmlaw._invert` inverts."""
+
+    def __init__(self, brg, eta, alpha_p, K=None, v=None):
+        self.brg, self.eta, self.ap, self.K, self.v = brg, eta, alpha_p, K, v
+        Z = brg.Z
+        self.Ep = brg.E_prime
+        self.gp = brg.D / brg.dm
+        self.sgn = np.repeat([-1.0, 1.0], Z)
+        self.Ry = np.repeat([brg.Ry_i, brg.Ry_o], Z)
+
+    def take(self, m):
+        """The per-case data of a subset of the batch (eta, alpha_p have shape (nb, 1))."""
+        return _FilmLaw(self.brg, self.eta[m], self.ap[m])
+
+    def bind(self, K, v):
+        """The law with the contact constants K [N/m^1.5] and orbital speed factors v [rad/s] set
+        (broadcast to (nb, 2Z))."""
+        return _FilmLaw(self.brg, self.eta, self.ap, K, v)
+
+    def at(self, alpha):
+        r"""The law at contact angles α [rad], shape (nb, 2Z) (:class:`thermobear.loads.filmlaw._FilmAt`):
+        R_x and u both ∝ 1 ∓ γ'cos α, ∂ln R_x/∂α = ∂ln u/∂α = ±γ' sin α / (1 ∓ γ'cos α); K held."""
+        gc = self.sgn * (self.gp * np.cos(alpha))
+        fac = 1.0 + gc
+        dln = -self.sgn * (self.gp * np.sin(alpha)) / fac
+        nvm = _NVMFixed(0.5 * self.brg.D * fac, self.Ry, self.v * (0.5 * self.brg.dm) * fac, self.eta, self.ap,
+                        self.Ep)
+        return _FilmAt(self.K, nvm, False, dln, dln)

@@ -153,7 +153,8 @@ import numpy as np
 
 from thermobear.contact.geometry import BallBearing
 from thermobear.errors import InputError, NoConvergence, NoEquilibrium
-from thermobear.loads.highspeed_model import _FilmLaw, _HSProblem
+from thermobear.loads.filmlaw import _FilmLaw
+from thermobear.loads.highspeed_model import _HSProblem
 from thermobear.loads.highspeed_start import start as _start
 from thermobear.loads.highspeed_start import static_start
 from thermobear.loads.newton import NewtonOptions, continuation, newton

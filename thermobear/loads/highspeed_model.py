@@ -30,7 +30,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from thermobear.loads.filmlaw import _FilmAt, _NVMFixed, _carry, _invert
+from thermobear.loads.filmlaw import _carry, _invert
 from thermobear.loads.highspeed_start import relax as _relax
 from thermobear.loads.rings import azimuths, lever_matrix
 
@@ -68,43 +68,6 @@ def _constants(brg):
     for a in out:
         a.setflags(write=False)
     return out
-
-
-class _FilmLaw:
-    r"""Film contact law of both contacts of every ball, on the (nb, 2Z) [inner | outer] layout.
-
-    δ_c = (Q_c/K_c)^(2/3) − h_c(Q_c, α_c)   with h_c the NVM central film
-    (:func:`thermobear.lubrication.film.film_thickness_nvm`) at R_x,c = (D/2)(1 ∓ γ'cos α_c), R_y,c, the mean
-    entrainment speed u_c = v_c (d_m/2)(1 ∓ γ'cos α_c), v = (|ω − ω_cage|, ω_cage) (caged kinematics,
-    :func:`thermobear.contact.kinematics.caged_ball_kinematics`, outer ring fixed), one η and α_p per case.
-    :meth:`at` gives the law at fixed angles that :func:`thermobear.loads.filmlaw._invert` inverts."""
-
-    def __init__(self, brg, eta, alpha_p, K=None, v=None):
-        self.brg, self.eta, self.ap, self.K, self.v = brg, eta, alpha_p, K, v
-        Z = brg.Z
-        self.Ep = brg.E_prime
-        self.gp = brg.D / brg.dm
-        self.sgn = np.repeat([-1.0, 1.0], Z)
-        self.Ry = np.repeat([brg.Ry_i, brg.Ry_o], Z)
-
-    def take(self, m):
-        """The per-case data of a subset of the batch (eta, alpha_p have shape (nb, 1))."""
-        return _FilmLaw(self.brg, self.eta[m], self.ap[m])
-
-    def bind(self, K, v):
-        """The law with the contact constants K [N/m^1.5] and orbital speed factors v [rad/s] set
-        (broadcast to (nb, 2Z))."""
-        return _FilmLaw(self.brg, self.eta, self.ap, K, v)
-
-    def at(self, alpha):
-        r"""The law at contact angles α [rad], shape (nb, 2Z) (:class:`thermobear.loads.filmlaw._FilmAt`):
-        R_x and u both ∝ 1 ∓ γ'cos α, ∂ln R_x/∂α = ∂ln u/∂α = ±γ' sin α / (1 ∓ γ'cos α); K held."""
-        gc = self.sgn * (self.gp * np.cos(alpha))
-        fac = 1.0 + gc
-        dln = -self.sgn * (self.gp * np.sin(alpha)) / fac
-        nvm = _NVMFixed(0.5 * self.brg.D * fac, self.Ry, self.v * (0.5 * self.brg.dm) * fac, self.eta, self.ap,
-                        self.Ep)
-        return _FilmAt(self.K, nvm, False, dln, dln)
 
 
 class _HSState:
@@ -520,8 +483,9 @@ class _HSProblem:
         Mg_W += st.wR
         Mg_W *= msb
         Mg_W *= -self.J
-        W_Q = (st.w_own - st.WZ) / st.qs
-        if not st.allpos or st.qs.min() <= 0:
+        if st.allpos and st.qs.min() > 0:
+            W_Q = (st.w_own - st.WZ) / st.qs
+        else:
             has = st.qs > 0
             W_Q = np.where(has & (st.Q[:, :Z] > 0), (st.w_own - st.WZ) / np.where(has, st.qs, 1.0), 0.0)
         W_m = pair(st.wgt, st.wgt) * wo_m

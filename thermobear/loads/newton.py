@@ -141,23 +141,29 @@ def newton(problem, z, opt: NewtonOptions, state=None) -> NewtonResult:
 
     ``state``: the problem's state at ``z`` when the caller has it.  Returns a :class:`NewtonResult`;
     a case that does not converge is reported, never raised (the form decides: continuation, or
-    NoConvergence / NoEquilibrium with the residual and the iterations)."""
-    st = problem.evaluate(z) if state is None else state
-    norm = st.norm
-    nb = norm.size
-    floor = np.zeros(nb, bool)
-    floored = False                 # any case at its floor (then ``todo`` excludes it)
+    NoConvergence / NoEquilibrium with the residual and the iterations).
+
+    The iteration runs on the active cases only: a case that has stopped (converged, at its floor or
+    failed) is written to the result once and dropped from the arrays the next steps work on."""
+    st_all = problem.evaluate(z) if state is None else state
+    nb = st_all.norm.size
+    z_all = np.array(z, dtype=float)
     its = np.zeros(nb, int)
+    floor_all = np.zeros(nb, bool)
+    act = np.arange(nb)                      # the active cases (indices into the batch)
+    sub, st, zz = problem, st_all, z_all     # the problem, state and unknowns of the active cases
+    norm = st.norm
+    floor = np.zeros(nb, bool)
+    floored = False                          # any active case at its floor (then ``todo`` excludes it)
     npol = np.zeros(nb, int)
     hist = np.repeat(norm[:, None], opt.window, axis=1) if opt.window > 1 else None
-    refresh = getattr(problem, "refresh", None)
-    relax = getattr(problem, "relax", None)
+    has_refresh, has_relax = hasattr(problem, "refresh"), hasattr(problem, "relax")
     has_limit, curved = hasattr(problem, "limit"), hasattr(problem, "path")
     tol, target, accept = opt.tol, opt.tol * opt.polish_factor, 1.0 - opt.armijo
     capped = opt.step_cap < np.inf
     for it in range(1, opt.maxiter + 1):
-        if refresh is not None:
-            st = refresh(z, st)
+        if has_refresh:
+            st = sub.refresh(zz, st)
             norm = st.norm
         todo = norm > tol
         if opt.polish:
@@ -165,57 +171,63 @@ def newton(problem, z, opt: NewtonOptions, state=None) -> NewtonResult:
         if floored:
             todo &= ~floor
         n_todo = np.count_nonzero(todo)
-        every = n_todo == nb
-        if every:
-            sub, st_t, z_t = problem, st, z
-        elif n_todo == 0:
-            break
-        else:
-            idx = np.flatnonzero(todo)
-            sub, st_t, z_t = problem.rows(idx), st.take(idx), z[idx]
-        dz = sub.direction(st_t)
+        if n_todo < todo.size:                # retire the cases that have stopped
+            if act.size == nb:                # the first retirement: the batch results are the current arrays
+                z_all, st_all = zz.copy(), st
+            _retire(act, ~todo, zz, st, floor, z_all, st_all, floor_all)
+            if n_todo == 0:
+                act = act[:0]
+                break
+            keep = np.flatnonzero(todo)
+            act, zz, st, norm = act[keep], zz[keep], st.take(keep), norm[keep]
+            sub = sub.rows(keep)
+            floor, npol = floor[keep], npol[keep]
+            hist = None if hist is None else hist[keep]
+            floored = bool(floor.any())
+        dz = sub.direction(st)
         if has_limit:
-            dz = sub.limit(st_t, dz)
+            dz = sub.limit(st, dz)
         if capped:
             big = np.abs(dz).max(axis=1)
             if np.fmax.reduce(big) > opt.step_cap:
                 dz *= np.minimum(1.0, opt.step_cap / big)[:, None]
-        if hist is None:
-            ref = st_t.norm
-        else:
-            ref = hist.max(axis=1) if every else hist[idx].max(axis=1)
-        path = sub.path(z_t, dz) if curved else (z_t, dz)
+        ref = norm if hist is None else hist.max(axis=1)
+        path = sub.path(zz, dz) if curved else (zz, dz)
         move = sub.move if curved else _linear_move
         z_new = move(path, None)
         st_new = sub.evaluate(z_new)
-        damped = None
-        if not (st_new.norm < accept * ref).all():
-            z_new, st_new, lam = _line_search(sub, z_new, dz, st_new, ref, path, move, opt)
+        prev = norm
+        zz, st = z_new, st_new
+        if not (st.norm < accept * ref).all():
+            zz, st, lam = _line_search(sub, zz, dz, st, ref, path, move, opt)
             damped = lam < 1.0
-        prev = norm if every else norm.copy()     # (st.put writes into st.norm)
-        if every:
-            z, st = z_new, st_new
-        else:
-            z = z.copy()
-            z[idx] = z_new
-            st.put(idx, st_new)
-        if damped is not None and relax is not None and damped.any():
-            if not every:
-                d = np.zeros(nb, bool)
-                d[idx] = damped
-                damped = d
-            z, st = relax(z, st, damped)      # the cases that took a damped step
+            if has_relax and damped.any():
+                zz, st = sub.relax(zz, st, damped)      # the cases that took a damped step
         norm = st.norm
         if np.fmin.reduce(norm) <= opt.floor:     # (fmin: a NaN case does not hide the others)
-            floor |= todo & (norm <= opt.floor) & (norm > 0.5 * prev)
+            floor |= (norm <= opt.floor) & (norm > 0.5 * prev)
             floored = bool(floor.any())
         if hist is not None:
             hist[:, it % opt.window] = norm
         if opt.polish and np.fmin.reduce(prev) <= tol:
-            npol += todo & (prev <= tol)
-        its += todo
-    conv = (norm <= tol) | (floor & (norm <= opt.floor))
-    return NewtonResult(z, st, norm, its, conv)
+            npol += prev <= tol
+        its[act] += 1
+    if act.size == nb:                        # no case retired: the active arrays are the batch
+        z_all, st_all, floor_all = zz, st, floor
+    elif act.size:
+        _retire(act, np.ones(act.size, bool), zz, st, floor, z_all, st_all, floor_all)
+    norm = st_all.norm
+    conv = (norm <= tol) | (floor_all & (norm <= opt.floor))
+    return NewtonResult(z_all, st_all, norm, its, conv)
+
+
+def _retire(act, mask, zz, st, floor, z_all, st_all, floor_all):
+    """Write the active cases ``mask`` (their unknowns, state and floor flag) into the batch results."""
+    loc = np.flatnonzero(mask)
+    g = act[loc]
+    z_all[g] = zz[loc]
+    st_all.put(g, st.take(loc))
+    floor_all[g] = floor[loc]
 
 
 @dataclass
