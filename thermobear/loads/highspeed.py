@@ -147,7 +147,7 @@ References
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, fields, replace
 
 import numpy as np
 
@@ -173,6 +173,7 @@ _POLISH = 2             # Newton steps allowed after the tolerance is met, towar
 _NONMONOTONE = 5        # line search: sufficient decrease against the largest of the last 5 norms
 _SPEED_STEPS = np.linspace(0.0, 1.0, 11)[1:]   # continuation in speed (fractions of n)
 _ETA_STEPS = (1e-6, 1e-4, 1e-2, 1e-1, 1.0)    # continuation in viscosity of the film stage (fractions of η)
+_CHUNK = 512            # cases solved together (a larger batch goes a chunk at a time: its results are the same)
 
 
 @dataclass(frozen=True)
@@ -354,12 +355,28 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
         if np.any(n_b <= 0):
             raise InputError("n_rpm", n_rpm, "must be > 0 with the film contact law (a film needs entrainment; "
                              "at n = 0 the contacts are dry: film=None)")
+    if film is None:
+        f_eta = f_ap = None
+    nb = Fa_b.size
+    if nb <= _CHUNK:
+        ld, ex = _solve(brg, Fa_b, Fr_b, M_b, Mv, n_b, f_eta, f_ap, stiffness, control, tol, maxiter)
+    else:       # independent cases: solved a chunk at a time (numpy's temporaries stay small and in the cache)
+        parts = [_solve(brg, Fa_b[k:k + _CHUNK], Fr_b[k:k + _CHUNK], None if M_b is None else M_b[k:k + _CHUNK],
+                        Mv[k:k + _CHUNK], n_b[k:k + _CHUNK], None if film is None else f_eta[k:k + _CHUNK],
+                        None if film is None else f_ap[k:k + _CHUNK], stiffness, control, tol, maxiter)
+                 for k in range(0, nb, _CHUNK)]
+        ld, ex = (_merge([p[j] for p in parts]) for j in (0, 1))
+    return _reshape(ld, shape, Fa, Fr), _reshape(ex, shape)
+
+
+def _solve(brg, Fa_b, Fr_b, M_b, Mv, n_b, f_eta, f_ap, stiffness, control, tol, maxiter):
+    """The solution of a flat batch of cases: (LoadDistribution, HighSpeedExtras) with a leading axis."""
     # low-speed solution: NoEquilibrium cases, and the start
     ls = load_distribution_static(brg, Fa_b, Fr_b, M_b, stiffness=stiffness)
     pb, z0 = _problem(brg, ls, Fa_b, Fr_b, M_b, Mv, n_b, stiffness, control)
     opt = NewtonOptions(tol=tol, maxiter=maxiter, step_cap=_STEP_CAP, window=_NONMONOTONE, polish=_POLISH)
     z, st, norm, its = _solve_dry(pb, z0, opt, Fa_b, Fr_b, Mv, n_b, control)
-    if film is not None:
+    if f_eta is not None:
         z, st, norm, its = _film_stage(pb, z, st, its, f_eta, f_ap, opt, Fa_b, Fr_b, Mv, n_b)
     lam_i = pb.lam_i
     if lam_i != 0.0:
@@ -374,7 +391,35 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
                 f"friction the inner raceway must supply pushes the inner ring axially with {gyro[k]:.4g} N >= Fa; "
                 "no positive contact loads balance it. Use control = 'outer' or a larger axial load",
                 iterations=int(its[k]), residual=float(norm[k]))
-    return _results(pb, z, st, norm, its, shape, (Fa, Fr, Fa_b, Fr_b, Mv, n_b), control, film is not None)
+    return _results(pb, z, st, norm, its, (Fa_b, Fr_b, Mv, n_b), control, f_eta is not None)
+
+
+def _merge(parts):
+    """One result (LoadDistribution or HighSpeedExtras) of a flat batch from the results of its chunks."""
+    first, out = parts[0], {}
+    for f in fields(first):
+        v = getattr(first, f.name)
+        if f.name in ("psi", "lambda_i", "lambda_o", "control", "Fa", "Fr") or v is None:
+            out[f.name] = v
+        elif f.name in ("residual", "film_law_residual", "film_cage_lag"):
+            out[f.name] = max(getattr(p, f.name) for p in parts)
+        elif f.name == "iterations":
+            out[f.name] = max(p.iterations for p in parts)
+        else:
+            out[f.name] = np.concatenate([getattr(p, f.name) for p in parts])
+    return replace(first, **out)
+
+
+def _reshape(res, shape, Fa=None, Fr=None):
+    """A flat result (leading axis nb) in the loads' shape (floats / (Z,) arrays for scalar loads)."""
+    out = {}
+    for f in fields(res):
+        v = getattr(res, f.name)
+        if isinstance(v, np.ndarray) and f.name not in ("psi", "Fa", "Fr"):
+            out[f.name] = unbatch(shape, v, v.ndim == 2)
+    if Fa is not None:
+        out["Fa"], out["Fr"] = np.asarray(Fa, dtype=float), np.asarray(Fr, dtype=float)
+    return replace(res, **out)
 
 
 def _problem(brg, ls, Fa_b, Fr_b, M_b, Mv, n_b, stiffness, control):
@@ -549,10 +594,10 @@ def _diagnose(pb, z, done, Fa_b, Fr_b, n_b, its, norm, z_start=None):
                 "raise the axial load or preload", iterations=int(its[k]), residual=float(norm[k]))
 
 
-def _results(pb, z, st, norm, its, shape, loads, control, with_film):
-    """LoadDistribution and HighSpeedExtras at the solution (``loads``: Fa, Fr as given, and the flat
-    Fa, Fr, M, n of the batch)."""
-    Fa, Fr, Fa_b, Fr_b, Mv, n_b = loads
+def _results(pb, z, st, norm, its, loads, control, with_film):
+    """LoadDistribution and HighSpeedExtras at the solution, flat (leading axis: the cases; ``loads``: the
+    flat Fa, Fr, M, n of the batch)."""
+    Fa_b, Fr_b, Mv, n_b = loads
     brg, A, R, Z = pb.brg, pb.A, pb.R, pb.Z
     zero = np.max(np.abs(pb.F_app), axis=1) == 0.0
     Z2 = 2 * Z
@@ -580,26 +625,23 @@ def _results(pb, z, st, norm, its, shape, loads, control, with_film):
     ones = np.ones((z.shape[0], Z))
 
     def sh(v):
-        return unbatch(shape, v)
+        return np.array(v, dtype=float)
 
-    def shz(v):
-        return unbatch(shape, v, True)
-
+    shz = sh
     ld = LoadDistribution(
         delta_a=sh(np.where(zero, 0.0, g[:, 0] * A)), delta_r=sh(np.where(zero, 0.0, g[:, 1] * A)),
         theta=sh(np.where(zero, 0.0, g[:, 2] * A / R)), Q_i=shz(Qi), Q_o=shz(Qo), alpha_i=shz(a_i),
         alpha_o=shz(a_o), psi=azimuths(Z), delta_n=shz(dn), residual=float(norm.max()) if norm.size else 0.0,
-        iterations=int(its.max()) if its.size else 0, Fa=np.asarray(Fa, dtype=float), Fr=np.asarray(Fr, dtype=float),
-        M=sh(Mv))
+        iterations=int(its.max()) if its.size else 0, Fa=Fa_b, Fr=Fr_b, M=sh(Mv))
     ex = HighSpeedExtras(
         Fc=shz(st.Fc * ones), Mg=shz(st.Mg), omega_c=shz(st.W * ones), omega_R=shz(st.wR),
-        beta=shz(np.arctan2(-st.msb, st.cb)), X1=shz(st.X1.copy()), X2=shz(st.X2.copy()),
-        delta_i=shz(st.dl[:, :Z].copy()), delta_o=shz(st.dl[:, Z:].copy()), lambda_i=pb.lam_i, lambda_o=pb.lam_o,
+        beta=shz(np.arctan2(-st.msb, st.cb)), X1=shz(st.X1), X2=shz(st.X2),
+        delta_i=shz(st.dl[:, :Z]), delta_o=shz(st.dl[:, Z:]), lambda_i=pb.lam_i, lambda_o=pb.lam_o,
         control=control, n_rpm=sh(n_b))
     if with_film:
         u = st.f_v * (0.5 * brg.dm) * (1.0 + np.repeat([-1.0, 1.0], Z) * (brg.D / brg.dm) * np.cos(st.f_al))
-        ex = replace(ex, h_i=shz(st.h[:, :Z].copy()), h_o=shz(st.h[:, Z:].copy()),
-                     delta_el_i=shz(st.d_el[:, :Z].copy()), delta_el_o=shz(st.d_el[:, Z:].copy()),
+        ex = replace(ex, h_i=shz(st.h[:, :Z]), h_o=shz(st.h[:, Z:]),
+                     delta_el_i=shz(st.d_el[:, :Z]), delta_el_o=shz(st.d_el[:, Z:]),
                      u_i=shz(u[:, :Z]), u_o=shz(u[:, Z:]),
                      film_law_residual=float(st.f_rel.max()),
                      film_cage_lag=float(np.max(np.abs(st.W - st.fz_W)[:, 0] / pb.omega)))

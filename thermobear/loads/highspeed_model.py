@@ -70,6 +70,43 @@ def _constants(brg):
     return out
 
 
+@lru_cache(maxsize=64)
+def _fixed(brg, lam_i, lam_o, kin_control):
+    """The fixed attributes of a :class:`_HSProblem` (cached per bearing and raceway control; arrays read-only)."""
+    Z, A = brg.Z, brg.A
+    c, L, Sg, Msum = _constants(brg)
+    Ki, Ko, k_eps = _stiffness_constants(brg)
+    gp = brg.D / brg.dm
+    outer = kin_control == "outer"          # the contact whose zero spin sets β
+    sg = 1.0 if outer else -1.0
+
+    def row(*vals):                         # (1, len(vals) · Z): each value repeated Z times
+        return np.repeat(np.array(vals, dtype=float), Z)[None, :]
+
+    m = brg.ball_mass
+    f = dict(
+        brg=brg, Z=Z, A=A, R=brg.R_inner_locus, c=c, L=L, Sg=Sg, Msum=Msum, cr=c[None, :],
+        off=row(0.0, A * np.cos(brg.alpha0)),
+        c0=row((brg.fi - 0.5) * brg.D, (brg.fo - 0.5) * brg.D),      # |O_i − C|, |C − O_o| unloaded [m]
+        lam_i=lam_i, lam_o=lam_o, kin_control=kin_control, Ki0=Ki, Ko0=Ko, k_eps=k_eps,
+        K0=row(Ki, Ko), K15=row(1.5 * Ki, 1.5 * Ko), D=brg.D, dm=brg.dm, fi=brg.fi, gp=gp, outer=outer,
+        RB0=row(1.0 + gp * gp), RB1=row(2.0 * sg * gp), CB0=row(sg * gp), SGP=row(sg * gp),
+        ONE=row(1.0), ONE2=row(1.0, 1.0), HDM=row(0.5 * brg.dm, 0.5 * brg.dm),
+        RSG=row(-0.5 * brg.dm * gp, 0.5 * brg.dm * gp),                # R_c = dm/2 + RSG_c cos α_c
+        NRSG=row(0.5 * brg.dm * gp, -0.5 * brg.dm * gp),
+        HD2=row(0.5 * brg.D, 0.5 * brg.D), NHD2=row(-0.5 * brg.D, -0.5 * brg.D), HD=row(0.5 * brg.D),
+        m=m, J=m * brg.D**2 / 10.0, mdm2=0.5 * m * brg.dm, has_lam=bool(lam_i or lam_o),
+        LAMD=row(lam_i / brg.D, lam_o / brg.D),
+        LP=row(lam_i / brg.D, -lam_o / brg.D),                          # ∂r_b/∂M_g = Σ_c LP_c e_c
+        mom=lam_i * brg.fi / brg.R_inner_locus * c,                     # moment of the inner friction per M_g
+        PM=row(1.0, -1.0),                      # the inner contact pushes the ball, the outer holds it
+        onesZ=np.ones((Z, 1)))
+    for v in f.values():
+        if isinstance(v, np.ndarray):
+            v.setflags(write=False)
+    return f
+
+
 class _HSState:
     """Arrays of one Newton iterate, every one with the load cases as leading axis (set by
     :meth:`_HSProblem.evaluate`; None where a field does not apply)."""
@@ -115,42 +152,8 @@ class _HSProblem:
     load case, and a batch broadcasts them."""
 
     def __init__(self, brg, F_app, scale, omega, free_g, stiffness, lam_i, lam_o, kin_control):
-        self.brg = brg
-        self.Z, self.A, self.R = brg.Z, brg.A, brg.R_inner_locus
-        Z, A = brg.Z, brg.A
-        self.c, self.L, self.Sg, self.Msum = _constants(brg)
-        self.cr = self.c[None, :]
-
-        def row(*vals):                       # (1, len(vals) · Z): each value repeated Z times
-            return np.repeat(np.array(vals, dtype=float), Z)[None, :]
-
-        self.off = row(0.0, A * np.cos(brg.alpha0))
-        self.c0 = row((brg.fi - 0.5) * brg.D, (brg.fo - 0.5) * brg.D)   # |O_i − C|, |C − O_o| unloaded [m]
+        self.__dict__.update(_fixed(brg, lam_i, lam_o, kin_control))
         self.stiffness, self.per_ball = stiffness, stiffness == "per_ball"
-        self.lam_i, self.lam_o, self.kin_control = lam_i, lam_o, kin_control
-        Ki, Ko, self.k_eps = _stiffness_constants(brg)
-        self.Ki0, self.Ko0 = Ki, Ko
-        self.K0, self.K15 = row(Ki, Ko), row(1.5 * Ki, 1.5 * Ko)
-        self.D, self.dm, self.fi = brg.D, brg.dm, brg.fi
-        gp = brg.D / brg.dm
-        self.gp = gp
-        self.outer = kin_control == "outer"     # the contact whose zero spin sets β
-        sg = 1.0 if self.outer else -1.0
-        self.RB0, self.RB1, self.CB0, self.SGP = row(1.0 + gp * gp), row(2.0 * sg * gp), row(sg * gp), row(sg * gp)
-        self.ONE, self.ONE2 = row(1.0), row(1.0, 1.0)
-        self.HDM = row(0.5 * brg.dm, 0.5 * brg.dm)
-        self.RSG = row(-0.5 * brg.dm * gp, 0.5 * brg.dm * gp)            # R_c = dm/2 + RSG_c cos α_c
-        self.NRSG = -self.RSG
-        self.HD2, self.NHD2, self.HD = row(0.5 * brg.D, 0.5 * brg.D), row(-0.5 * brg.D, -0.5 * brg.D), row(0.5 * brg.D)
-        self.m = brg.ball_mass
-        self.J = self.m * brg.D**2 / 10.0
-        self.mdm2 = 0.5 * self.m * brg.dm
-        self.has_lam = bool(lam_i or lam_o)
-        self.LAMD = row(lam_i / brg.D, lam_o / brg.D)
-        self.LP = row(lam_i / brg.D, -lam_o / brg.D)   # ∂r_b/∂M_g = Σ_c LP_c e_c
-        self.mom = lam_i * brg.fi / self.R * self.c    # moment of the inner gyroscopic friction per M_g
-        self.PM = row(1.0, -1.0)                       # the inner contact pushes the ball, the outer holds it
-        self.onesZ = np.ones((Z, 1))
         self.film = None
         self.fz = None
         self.set_cases(F_app, scale, omega, free_g)

@@ -26,7 +26,7 @@ _BALL_MAXIT = 40        # Newton steps of the per-ball start
 _BALL_HALVINGS = 12     # line-search halvings of the per-ball start
 _RELAX = 1e-2           # a light ball is re-placed when its residual exceeds this share of its F_c + friction
 _BALL_TOL = 1e-4        # re-placing a stalled ball: force residual relative to the ball's external force
-_START_TOL = 1e-2       # the start places a ball to this share of its external force (Newton does the rest)
+_START_TOL = 0.3        # the start places a ball to this share of its external force (Newton does the rest)
 
 
 def static_start(pb, g):
