@@ -385,17 +385,3 @@ def test_element_fast_paths_equal_the_public_functions():
         shell_conductance(42.7, 0.02, 0.03, 0.025)
     with pytest.raises(tb.errors.InputError):
         oil_air_properties(1.5, 860.0, 20.0, 0.13, 1950.0, 330.0)
-
-
-def test_ellipticity_start_table_gives_the_root_of_the_plain_iteration():
-    import sys
-    H = sys.modules["thermobear.contact.hertz"]
-    r = np.concatenate([np.exp(np.linspace(0.0, np.log(1e5), 400)), [1.0, 1.00005, 1.0002, 5.0, 32.3]])
-    k = H.ellipticity(r)
-    k_hb = H._ellipticity_newton(r, 1.0339 * r**0.6360, 1e-13, 50)        # started at Hamrock–Brewe
-    inside = (r > 1.01) & (r < 300.0)          # near 1 and beyond 300 F(κ) is flat: the root is known to ~1e-12
-    np.testing.assert_allclose(k[inside], k_hb[inside], rtol=1e-13)
-    np.testing.assert_allclose(k, k_hb, rtol=2e-12)
-    kk = np.where(r < 1.0001, 2.0, k)                                      # the residual of the defining equation
-    res = np.where(r < 1.0001, 0.0, H._f_rho(kk) - (r - 1.0) / (r + 1.0))
-    assert np.max(np.abs(res)) <= 1e-10
