@@ -222,20 +222,6 @@ def test_contact_powers_and_repeated_contacts_equal_the_full_path():
     assert np.ptp(P[2]) > 1e-3 * P[2].max()                          # the mixture temperature enters the drag
 
 
-# --------------------------------------------------------------------------- cached look-ups, fast paths
-def test_air_scalar_path_equals_the_spline():
-    from thermobear.lubrication.air import _table, air_properties
-    T = np.concatenate([np.random.default_rng(5).uniform(200.0, 600.0, 300), [200.0, 273.15, 599.5, 600.0]])
-    tab = _table()(T)
-    for k, t in enumerate(T):
-        p = air_properties(float(t))
-        assert (p["rho"], p["mu"], p["k"], p["cp"]) == tuple(tab[k])      # same bits
-    arr = air_properties(T)
-    assert air_properties(np.float64(T[0]))["Pr"] == arr["Pr"][0]
-    with pytest.raises(tb.errors.InputError, match="T_K"):
-        air_properties(650.0)
-
-
 def test_material_cache_returns_the_same_values_and_errors():
     from thermobear.contact.materials import material, material_names
     m = material("aisi-52100")
@@ -321,30 +307,6 @@ def test_fused_kernel_smooth_surfaces_and_sums():
         P = _contact_powers(cs, oil, Ti, To, 45.0, oil_flow_m3_s=s.oil_flow, Rq_ball=rq, Rq_ring=2 * rq)
         np.testing.assert_allclose(P[0], 2.0 * r.heat_W["inner_ring"], rtol=1e-12, atol=1e-300)
         np.testing.assert_allclose(P[1], 2.0 * r.heat_W["outer_ring"], rtol=1e-12, atol=1e-300)
-
-
-def test_lubricant_scalar_path_equals_the_array_path():
-    from thermobear.errors import OutsideValidity
-    from thermobear.lubrication.lubricant import lubricant
-    T = [-20.0, -3.7, 0.0, 23.5, 40.0, 77.7, 100.0, 149.9, 150.0]
-    for name in ("seed004-mineral", "seed002-mg1", "seed002-pg2", "mol-liton-00"):
-        oil = lubricant(name)
-        for prop in ("nu", "rho", "eta", "k_th", "cp"):
-            f = getattr(oil, prop)
-            arr = f(np.array(T))
-            got = np.array([f(t) for t in T])
-            np.testing.assert_allclose(got, arr, rtol=1e-14, atol=0.0, err_msg=f"{name} {prop}")
-            assert f(np.float64(50.0)) == f(50.0)
-        eta, alpha, rho = oil._eta_alpha_rho(np.array(T))             # the kernels' combined look-up
-        assert np.array_equal(eta, oil.eta(np.array(T))) and np.array_equal(rho, oil.rho(np.array(T)))
-        assert np.array_equal(alpha, oil.alpha_p_at(np.array(T)))
-    oil = lubricant("seed004-mineral")
-    with pytest.warns(ExtrapolationWarning):                          # outside T_WARN_C: the array path's warning
-        oil.eta(180.0)
-    with pytest.raises(OutsideValidity):
-        oil.rho(300.0)
-    with pytest.raises(tb.errors.InputError):
-        oil.nu(float("nan"))
 
 
 def test_element_fast_paths_equal_the_public_functions():

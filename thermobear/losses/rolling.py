@@ -4,7 +4,7 @@ The pressure field of a lubricated rolling contact is not symmetric (the
 outlet cavitates), so the Poiseuille shear pulls each surface against the
 rolling direction with a force F_R [N], and the pressure pushes the ball centre
 with FP = 2 F_R (seed 000 §2.3; seed 001 §2).  The power dissipated by one
-contact is 2 u F_R, u the *mean* entrainment speed (PHYSICS.md §0, §12.10).
+contact is 2 u F_R, u the *mean* entrainment speed (seed 000 eq 34, seed 004 eq 20).
 
 Models (one function each, pure and vectorised; scalars or broadcastable arrays):
 
@@ -16,9 +16,10 @@ Models (one function each, pure and vectorised; scalars or broadcastable arrays)
 ``houpert_ehl``        Houpert EHL (seed 004 eq 18; B&H 2010 eq 29)
 ``biboulet_pvr``       Biboulet's full IVR→EHL fit (seed 004 eq 19; B&H 2010 eqs 32, 36)
 ``auto``               per contact by lubrication regime (seed 004 §4.3)
+``auto_smooth``        the same choice, weighted smoothly across the regime boundaries
 =====================  =========================================================
 
-Conventions (PHYSICS.md §0, §12.4–12.5).  Two dimensionless speeds occur:
+Conventions (those that reproduce the seeds' own numbers).  Two dimensionless speeds occur:
 
 * seeds 000/001 write U = η u/(E' Rx) with the *mean* speed u, W = Q/(E' Rx²),
   k = Ry/Rx (radius ratio, ≥ 1 for ball–race contacts);
@@ -49,11 +50,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from thermobear.arrays import checked as _num, out as _out
 from scipy.special import ellipe
 
-from thermobear.errors import InputError
+from thermobear.arrays import checked as _num, out as _out
 from thermobear.contact.hertz import hertz
+from thermobear.errors import InputError
+from thermobear.lubrication.film import Regime, lubrication_regime
 
 __all__ = [
     "MODELS", "REGIME_MODEL",
@@ -62,11 +64,11 @@ __all__ = [
     "rolling_force_biboulet_transition",
     "biboulet_parameters", "truncation_coefficient",
     "rolling_force_houpert_ivr", "rolling_force_houpert_ehl", "rolling_force_biboulet_pvr",
-    "rolling_force", "pressure_force", "rolling_power",
+    "rolling_force_regime_weighted", "rolling_force", "pressure_force", "rolling_power",
 ]
 
 MODELS = ("biboulet_ivr", "biboulet_ehl", "biboulet_transition", "houpert_ivr",
-          "houpert_ehl", "biboulet_pvr", "auto")
+          "houpert_ehl", "biboulet_pvr", "auto", "auto_smooth")
 
 #: Model used per lubrication regime by ``model="auto"`` (seed 004 §4.3).  IVE
 #: (iso-viscous elastic) has no dedicated formula in the seeds; it goes to the
@@ -78,6 +80,8 @@ REGIME_MODEL = {"IVR": "houpert_ivr", "PVR": "biboulet_pvr", "IVE": "biboulet_pv
                 "EHL": "houpert_ehl"}
 
 _M_SPLIT = 6.6        # B&H 2010 eq 32 / seed 000 eq 20: transition at M = 6.6
+#: ln-ratio width of the smooth regime switch of :func:`rolling_force_regime_weighted` (±5 %)
+SWITCH_WIDTH = 0.05
 
 
 # ----------------------------------------------------------------------------- helpers
@@ -239,6 +243,33 @@ def rolling_force_biboulet_transition(Q, Rx, Ry, u, eta, E_prime):
 
 
 # ----------------------------------------------------------------------------- B&H 2010 / seed 004
+def _checked_bib(Q, Rx, Ry, u, eta, E_prime, a, b):
+    """Checked inputs of the B&H forms and their groups: (Rx, E_prime, p) with p as
+    :func:`biboulet_parameters` returns it (arrays, not yet converted to floats)."""
+    Q, Rx, Ry, u, eta, E_prime = _inputs(Q, Rx, Ry, u, eta, E_prime)
+    if (a is None) != (b is None):
+        raise InputError("a, b", (a, b), "give both Hertz semi-axes or neither")
+    if a is None:
+        geo = hertz(1.0, Rx, Ry, E_prime)           # κ does not depend on load
+        kappa = geo.b / geo.a
+        a = geo.a * np.cbrt(Q)                      # a ∝ Q^(1/3)
+        b = geo.b * np.cbrt(Q)
+    else:
+        a = _num("a", a, strict=False, what=" (Hertz semi-axis across rolling) [m]")
+        b = _num("b", b, strict=False, what=" (Hertz semi-axis along rolling) [m]")
+        with np.errstate(invalid="ignore", divide="ignore"):
+            kappa = np.where(a > 0, b / np.where(a > 0, a, 1.0), 1.0)
+        if np.max(kappa) > 1.0 + 1e-12:
+            raise InputError("b/a", kappa, "must be <= 1 (b along rolling is the short semi-axis; "
+                             "formulas fitted for Ry >= Rx)")
+    beta = (4.0 / np.pi) * ellipe(1.0 - kappa**2) / (1.0 + Rx / Ry)
+    U2 = 2.0 * eta * u / (E_prime * Rx)
+    W = Q / (E_prime * Rx**2)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        M = np.where(W > 0, beta**0.25 * kappa * W / U2**0.75, 0.0)
+    return Rx, Ry, E_prime, {"U2": U2, "W": W, "kappa": kappa, "beta": beta, "M": M, "a": a, "b": b}
+
+
 def biboulet_parameters(Q, Rx, Ry, u, eta, E_prime, a=None, b=None):
     r"""Dimensionless groups of Biboulet & Houpert 2010 (their eqs 13–14, 41).
 
@@ -260,9 +291,19 @@ def biboulet_parameters(Q, Rx, Ry, u, eta, E_prime, a=None, b=None):
 
     Notes
     -----
-    Seed 004 writes N = W (2U*)^(-3/4) (Rx/Ry)^(1/2) (its eq 9) in the
-    transition of eq 19 and M in c_Bib; both are B&H's M here (B&H 2010 eq 14,
+    .. math::
+
+        U = \frac{2 \eta u}{E' R_x},\quad W = \frac{Q}{E' R_x^2},\quad \kappa = \frac{b}{a},\quad
+        \beta = \frac{4}{\pi} \frac{\mathcal{E}(1 - \kappa^2)}{1 + R_x/R_y},\quad
+        M = \beta^{1/4} \kappa W U^{-3/4}
+
+    (Biboulet & Houpert 2010 [1]_ eqs 13–14, 41).  Seed 004 writes N = W (2U*)^(-3/4) (Rx/Ry)^(1/2)
+    (its eq 9) in the transition of eq 19 and M in c_Bib; both are B&H's M here (B&H 2010 eq 14,
     the source of eq 19).  (Rx/Ry)^(1/2) vs β^(1/4)κ differ by ~30 % at k ≈ 18.
+
+    References
+    ----------
+    .. [1] Biboulet N., Houpert L. (2010) Proc. IMechE J 224, 777–787.
 
     Examples
     --------
@@ -270,29 +311,14 @@ def biboulet_parameters(Q, Rx, Ry, u, eta, E_prime, a=None, b=None):
     >>> round(p["kappa"], 3), round(p["beta"], 3), round(p["M"], 2)
     (0.156, 1.245, 7.27)
     """
-    Q, Rx, Ry, u, eta, E_prime = _inputs(Q, Rx, Ry, u, eta, E_prime)
-    if (a is None) != (b is None):
-        raise InputError("a, b", (a, b), "give both Hertz semi-axes or neither")
-    if a is None:
-        geo = hertz(1.0, Rx, Ry, E_prime)           # κ does not depend on load
-        kappa = geo.b / geo.a
-        a = geo.a * np.cbrt(Q)                      # a ∝ Q^(1/3)
-        b = geo.b * np.cbrt(Q)
-    else:
-        a = _num("a", a, strict=False, what=" (Hertz semi-axis across rolling) [m]")
-        b = _num("b", b, strict=False, what=" (Hertz semi-axis along rolling) [m]")
-        with np.errstate(invalid="ignore", divide="ignore"):
-            kappa = np.where(a > 0, b / np.where(a > 0, a, 1.0), 1.0)
-        if np.any(kappa > 1.0 + 1e-12):
-            raise InputError("b/a", kappa, "must be <= 1 (b along rolling is the short semi-axis; "
-                             "formulas fitted for Ry >= Rx)")
-    beta = (4.0 / np.pi) * ellipe(1.0 - kappa**2) / (1.0 + Rx / Ry)
-    U2 = 2.0 * eta * u / (E_prime * Rx)
-    W = Q / (E_prime * Rx**2)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        M = np.where(W > 0, beta**0.25 * kappa * W / U2**0.75, 0.0)
-    return {"U2": _out(U2), "W": _out(W), "kappa": _out(kappa), "beta": _out(beta),
-            "M": _out(M), "a": _out(a), "b": _out(b)}
+    p = _checked_bib(Q, Rx, Ry, u, eta, E_prime, a, b)[3]
+    return {k: _out(v) for k, v in p.items()}
+
+
+def _c_bib(M, kappa):
+    """c of B&H 2010 eq 36 (seed 004's c_Bib): the truncation coefficient at 2a/L = 1."""
+    with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
+        return np.where(M > 0, 0.85 / (1.0 + 4.72 * M**-0.39 * kappa ** (0.484 * M**0.165)), 0.0)
 
 
 def truncation_coefficient(M, kappa, ratio_2a_L=1.0):
@@ -311,10 +337,17 @@ def truncation_coefficient(M, kappa, ratio_2a_L=1.0):
 
     Notes
     -----
-    C = 1/(1 + (1/c - 1)(2a/L)^((2 - κ)(0.0018 M + 1.33))),
-    c = 0.85/(1 + 4.72 M^-0.39 κ^(0.484 M^0.165))  (B&H 2010 eqs 35–36).
-    c (value at 2a/L = 1) is seed 004's c_Bib of eq 19.  B&H fitted it on EHL
-    runs only (0.2 ≤ M ≤ 800); c → 0 as M → 0.
+    .. math::
+
+        C = \frac{1}{1 + (1/c - 1)\,(2a/L)^{(2 - \kappa)(0.0018 M + 1.33)}},\qquad
+        c = \frac{0.85}{1 + 4.72\, M^{-0.39} \kappa^{0.484 M^{0.165}}}
+
+    (Biboulet & Houpert 2010 [1]_ eqs 35–36).  c (value at 2a/L = 1) is seed 004's c_Bib of
+    eq 19.  B&H fitted it on EHL runs only (0.2 ≤ M ≤ 800); c → 0 as M → 0.
+
+    References
+    ----------
+    .. [1] Biboulet N., Houpert L. (2010) Proc. IMechE J 224, 777–787.
 
     Examples
     --------
@@ -326,11 +359,16 @@ def truncation_coefficient(M, kappa, ratio_2a_L=1.0):
         raise InputError("M", M, "must be >= 0 (inf allowed: zero speed)")
     kappa = _num("kappa", kappa, what=" (b/a)")
     r = np.minimum(_num("2a/L", ratio_2a_L, strict=False), 1.0)
+    c = _c_bib(M, kappa)
     with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
-        c = np.where(M > 0, 0.85 / (1.0 + 4.72 * M**-0.39 * kappa ** (0.484 * M**0.165)), 0.0)
         inv_c = np.where(c > 0, 1.0 / np.where(c > 0, c, 1.0) - 1.0, np.inf)
         C = np.where(r > 0, 1.0 / (1.0 + inv_c * r ** ((2.0 - kappa) * (0.0018 * M + 1.33))), 1.0)
     return _out(C)
+
+
+def _houpert_ivr(W, U2, Rx, Ry, E_prime):
+    """Houpert's IVR force from the groups (formula of :func:`rolling_force_houpert_ivr`) [N]."""
+    return 0.835 * (Rx / Ry) ** -0.358 * W**0.364 * U2**0.636 * E_prime * Rx**2
 
 
 def rolling_force_houpert_ivr(Q, Rx, Ry, u, eta, E_prime):
@@ -340,9 +378,17 @@ def rolling_force_houpert_ivr(Q, Rx, Ry, u, eta, E_prime):
 
     Notes
     -----
-    F = 0.835 λ^-0.358 W^0.364 (2U*)^0.636 E' Rx², λ = Rx/Ry,
-    U* = η u/(E' Rx), W = Q/(E' Rx²)  (seed 004 eq 17; B&H 2010 eq 28, a
-    re-fit of Houpert 1987).  B&H 2010 report it ≈ 0.6 × their fully-flooded IVR.
+    .. math::
+
+        F = 0.835\, \lambda^{-0.358} W^{0.364} (2U^*)^{0.636} E' R_x^2,\qquad
+        \lambda = R_x/R_y,\ U^* = \frac{\eta u}{E' R_x},\ W = \frac{Q}{E' R_x^2}
+
+    (seed 004 eq 17; Biboulet & Houpert 2010 [1]_ eq 28, a re-fit of Houpert 1987).  B&H 2010
+    report it ≈ 0.6 × their fully-flooded IVR.
+
+    References
+    ----------
+    .. [1] Biboulet N., Houpert L. (2010) Proc. IMechE J 224, 777–787.
 
     Examples
     --------
@@ -350,9 +396,14 @@ def rolling_force_houpert_ivr(Q, Rx, Ry, u, eta, E_prime):
     0.00585
     """
     Q, Rx, Ry, u, eta, E_prime = _inputs(Q, Rx, Ry, u, eta, E_prime)
-    W = Q / (E_prime * Rx**2)
-    U2 = 2.0 * eta * u / (E_prime * Rx)
-    return _out(0.835 * (Rx / Ry) ** -0.358 * W**0.364 * U2**0.636 * E_prime * Rx**2)
+    return _out(_houpert_ivr(Q / (E_prime * Rx**2), 2.0 * eta * u / (E_prime * Rx), Rx, Ry, E_prime))
+
+
+def _houpert_ehl(p, G, Rx, E_prime, g_exponent=0.022):
+    """Houpert's EHL force from the B&H groups ``p`` (formula of :func:`rolling_force_houpert_ehl`) [N]."""
+    kap = p["kappa"]
+    return (0.674 * kap**-0.043 * (2.0 * p["a"] / Rx) * G**g_exponent
+            * (kap * p["W"]) ** 0.133 * p["U2"] ** 0.656 * E_prime * Rx**2)
 
 
 def rolling_force_houpert_ehl(Q, Rx, Ry, u, eta, E_prime, alpha_p, a=None, b=None, *,
@@ -368,11 +419,18 @@ def rolling_force_houpert_ehl(Q, Rx, Ry, u, eta, E_prime, alpha_p, a=None, b=Non
 
     Notes
     -----
-    F = 0.674 κ^-0.043 (2a/Rx) G^0.022 (κ W)^0.133 (2U*)^0.656 E' Rx²,
-    κ = b/a, G = α_p E'  (B&H 2010 eq 29; seed 004 eq 18).  Seed 004 prints
-    G*^0.22; B&H 2010 (its source) gives 0.022 in both forms of eq 29 and in the
-    text ("piezoviscosity has almost no influence with a power 0.022").  At
-    G ≈ 4600 the misprint would multiply F by 5.3.  We use 0.022.
+    .. math::
+
+        F = 0.674\, \kappa^{-0.043} \frac{2a}{R_x} G^{0.022} (\kappa W)^{0.133} (2U^*)^{0.656} E' R_x^2,
+        \qquad \kappa = b/a,\ G = \alpha_p E'
+
+    (Biboulet & Houpert 2010 [1]_ eq 29; seed 004 eq 18).  Seed 004 prints G*^0.22; B&H 2010 (its
+    source) gives 0.022 in both forms of eq 29 and in the text ("piezoviscosity has almost no
+    influence with a power 0.022").  At G ≈ 4600 the misprint would multiply F by 5.3.  We use 0.022.
+
+    References
+    ----------
+    .. [1] Biboulet N., Houpert L. (2010) Proc. IMechE J 224, 777–787.
 
     Examples
     --------
@@ -382,13 +440,31 @@ def rolling_force_houpert_ehl(Q, Rx, Ry, u, eta, E_prime, alpha_p, a=None, b=Non
     if alpha_p is None:
         raise InputError("alpha_p", None, "pressure-viscosity coefficient [1/Pa] is required by houpert_ehl")
     alpha_p = _num("alpha_p", alpha_p, what=" [1/Pa]")
-    p = biboulet_parameters(Q, Rx, Ry, u, eta, E_prime, a, b)
-    Rx, E_prime = np.asarray(Rx, float), np.asarray(E_prime, float)
-    kap = np.asarray(p["kappa"])
-    G = alpha_p * E_prime
-    f = (0.674 * kap**-0.043 * (2.0 * np.asarray(p["a"]) / Rx) * G**g_exponent
-         * (kap * np.asarray(p["W"])) ** 0.133 * np.asarray(p["U2"]) ** 0.656 * E_prime * Rx**2)
-    return _out(f)
+    Rx, _, E_prime, p = _checked_bib(Q, Rx, Ry, u, eta, E_prime, a, b)
+    return _out(_houpert_ehl(p, alpha_p * E_prime, Rx, E_prime, g_exponent))
+
+
+def _biboulet_pvr(p, Rx, E_prime, truncation="seed004"):
+    """Biboulet's PVR force from the B&H groups ``p`` (formula of :func:`rolling_force_biboulet_pvr`) [N]."""
+    U2, W, kap, beta, M, a_ = (p[k] for k in ("U2", "W", "kappa", "beta", "M", "a"))
+    f_ivr = 0.77 * beta ** (-1.0 / 3.0) * kap**0.12 * np.cbrt(U2) ** 2     # ×(2a/Rx) E'Rx²
+    f_ehl = 1.8 * beta**-0.25 * U2**0.75
+    den = beta**0.25 * kap * W
+    r = np.full(np.broadcast(U2, den).shape, np.inf)                      # r = 6.6/M
+    np.divide(_M_SPLIT * U2**0.75, den, out=r, where=np.broadcast_to(den > 0, r.shape))
+    with np.errstate(invalid="ignore"):
+        shape = np.where(np.isinf(r), f_ivr, (f_ivr * r + f_ehl) / (1.0 + r))
+    f = E_prime * Rx * 2.0 * a_ * shape
+    if truncation is None:
+        c = 1.0
+    elif isinstance(truncation, str):
+        if truncation != "seed004":
+            raise InputError("truncation", truncation, "must be 'seed004', None or a width L [m]")
+        c = _c_bib(M, kap)
+    else:
+        L = _num("truncation", truncation, what=" (width L for 2a/L) [m]")
+        c = truncation_coefficient(M, kap, 2.0 * a_ / L)
+    return np.where((W > 0) & (U2 > 0), f * c, 0.0)
 
 
 def rolling_force_biboulet_pvr(Q, Rx, Ry, u, eta, E_prime, a=None, b=None, *,
@@ -406,11 +482,13 @@ def rolling_force_biboulet_pvr(Q, Rx, Ry, u, eta, E_prime, a=None, b=None, *,
 
     Notes
     -----
-    F = c E' Rx (2a) [ (0.77 β^(-1/3) κ^0.12 U^(-1/12) - 1.8 β^(-1/4)) / (1 + M/6.6)
-        + 1.8 β^(-1/4) ] U^(3/4)
+    .. math::
+
+        F = c\, E' R_x (2a) \left[\frac{0.77 \beta^{-1/3} \kappa^{0.12} U^{-1/12} - 1.8 \beta^{-1/4}}
+        {1 + M/6.6} + 1.8 \beta^{-1/4}\right] U^{3/4}
 
     with U = 2 η u/(E' Rx), κ = b/a, β, M from :func:`biboulet_parameters`
-    (B&H 2010 eq 32; seed 004 eq 19).  Seed 004 prints "E' Rx² 2a", which is
+    (Biboulet & Houpert 2010 [1]_ eq 32; seed 004 eq 19).  Seed 004 prints "E' Rx² 2a", which is
     not a force; B&H write E' Rx² (2a/Rx).  Limits of the untruncated form:
     M → 0 gives B&H's IVR asymptote 0.77 β^(-1/3) κ^0.12 (2a/Rx) U^(2/3) E' Rx²,
     M → ∞ the EHL asymptote 1.8 β^(-1/4) (2a/Rx) U^(3/4) E' Rx² — the forms that
@@ -420,6 +498,10 @@ def rolling_force_biboulet_pvr(Q, Rx, Ry, u, eta, E_prime, a=None, b=None, *,
     truncation coefficient at 2a/L = 1 (ellipse as wide as the race), fitted
     on EHL runs only.
 
+    References
+    ----------
+    .. [1] Biboulet N., Houpert L. (2010) Proc. IMechE J 224, 777–787.
+
     Examples
     --------
     >>> args = (1.42, 3.969e-3, 70.12e-3, 0.0942, 0.089, 2.3e11)
@@ -428,36 +510,82 @@ def rolling_force_biboulet_pvr(Q, Rx, Ry, u, eta, E_prime, a=None, b=None, *,
     >>> round(rolling_force_biboulet_pvr(*args), 5)
     0.00317
     """
-    p = biboulet_parameters(Q, Rx, Ry, u, eta, E_prime, a, b)
-    Rx, E_prime = np.asarray(Rx, float), np.asarray(E_prime, float)
-    U2, W, kap, beta, M, a_ = (np.asarray(p[k]) for k in ("U2", "W", "kappa", "beta", "M", "a"))
-    f_ivr = 0.77 * beta ** (-1.0 / 3.0) * kap**0.12 * np.cbrt(U2) ** 2     # ×(2a/Rx) E'Rx²
-    f_ehl = 1.8 * beta**-0.25 * U2**0.75
-    den = beta**0.25 * kap * W
-    r = np.full(np.broadcast(U2, den).shape, np.inf)                      # r = 6.6/M
-    np.divide(_M_SPLIT * U2**0.75, den, out=r, where=np.broadcast_to(den > 0, r.shape))
-    with np.errstate(invalid="ignore"):
-        shape = np.where(np.isinf(r), f_ivr, (f_ivr * r + f_ehl) / (1.0 + r))
-    f = E_prime * Rx * 2.0 * a_ * shape
-    if truncation is None:
-        c = 1.0
-    elif isinstance(truncation, str):
-        if truncation != "seed004":
-            raise InputError("truncation", truncation, "must be 'seed004', None or a width L [m]")
-        c = truncation_coefficient(M, kap, 1.0)
-    else:
-        L = _num("truncation", truncation, what=" (width L for 2a/L) [m]")
-        c = truncation_coefficient(M, kap, 2.0 * a_ / L)
-    return _out(np.where((np.asarray(W) > 0) & (U2 > 0), f * c, 0.0))
+    Rx, _, E_prime, p = _checked_bib(Q, Rx, Ry, u, eta, E_prime, a, b)
+    return _out(_biboulet_pvr(p, Rx, E_prime, truncation))
 
 
-# ----------------------------------------------------------------------------- dispatcher
-def _classify(Q, Rx, Ry, u, eta, E_prime, alpha_p):
-    """Regime code per contact from :func:`thermobear.lubrication.film.lubrication_regime` (lazy import)."""
+# ----------------------------------------------------------------------------- regime selection
+def _sigmoid(x):
+    """Logistic function 1/(1 + e^(−x)) = ½ (1 + tanh(x/2))."""
+    return 0.5 + 0.5 * np.tanh(0.5 * x)
+
+
+def rolling_force_regime_weighted(Q, Rx, Ry, u, eta, E_prime, alpha_p, a=None, b=None, regime=None):
+    r"""Regime-selected hydrodynamic rolling force, switched smoothly across the Moes boundaries [N].
+
+    Parameters
+    ----------
+    Q, Rx, Ry, u, eta, E_prime : as :func:`rolling_force_biboulet_ivr`
+    alpha_p : array_like           pressure–viscosity coefficient [1/Pa]
+    a, b : array_like, optional    Hertz semi-axes across / along rolling [m] (exact Hertz if omitted)
+    regime : Regime, optional      the contacts' regime (:func:`thermobear.lubrication.film.lubrication_regime`
+                                   of the same inputs; computed if omitted)
+
+    Returns
+    -------
+    ndarray  force opposing rolling on each surface [N]
+
+    Notes
+    -----
+    Seed 004 §4.3 picks Houpert IVR, Biboulet PVR or Houpert EHL by regime (IVE → Biboulet PVR,
+    :data:`REGIME_MODEL`).  The formulas do not meet at the boundaries (jumps of ×0.5–0.9,
+    tests/test_rolling.py), and a force that jumps with temperature stalls implicit time
+    integration.  Here each choice is weighted by logistic functions of the dominance ratios of
+    the Nijenbanning–Venner–Moes blend (:class:`~thermobear.lubrication.film.Regime`),
+
+    .. math::
+
+        F = (1 - s_p) [s_{ri} F_{IVR} + (1 - s_{ri}) F_{PVR}] + s_p [s_{rp} F_{PVR} + (1 - s_{rp}) F_{EHL}],
+
+        s(r) = \frac{1}{1 + r^{-1/w}},\quad s_p = s(1/r_{iso/piezo}),\ s_{ri} = s(r_{RI/EI}),\
+        s_{rp} = s(r_{EP/RP}),\quad w = 0.05
+
+    1 % of the way from a boundary in ln r the selection is 60/40, 15 % away it is 95/5; away
+    from the boundaries the result equals the sharp selection (``rolling_force(model="auto")``).
+    The weighting is this library's (not published); the three forces are seed 004 eqs 17–19
+    (Biboulet & Houpert 2010 [1]_).
+
+    References
+    ----------
+    .. [1] Biboulet N., Houpert L. (2010) Proc. IMechE J 224, 777–787.
+
+    Examples
+    --------
+    Seed 000 contact geometry (thrust race, 100 rpm) at 0.1 N, deep in the IVR regime
+    (Houpert's IVR force), and at 1.42 N, PVR near the EHL boundary (ln H_EP/H_RP = 0.14: 94 % PVR):
+
+    >>> args = (3.969e-3, 70.12e-3, 0.0942, 0.089, 2.3e11)
+    >>> round(float(rolling_force_regime_weighted(0.1, *args, 2.5e-8)), 6), round(rolling_force_houpert_ivr(0.1, *args), 6)
+    (0.002227, 0.002227)
+    >>> round(float(rolling_force_regime_weighted(1.42, *args, 2.5e-8)), 5), round(rolling_force_biboulet_pvr(1.42, *args), 5)
+    (0.0031, 0.00317)
+    """
     if alpha_p is None:
-        raise InputError("alpha_p", None, "model='auto' without a regime array needs alpha_p [1/Pa]")
-    from thermobear.lubrication import film  # imported here: film sits beside friction in the data flow
-    return film.lubrication_regime(Q, Rx, Ry, u, eta, alpha_p, E_prime).code
+        raise InputError("alpha_p", None, "pressure-viscosity coefficient [1/Pa] is required by auto_smooth")
+    alpha_p = _num("alpha_p", alpha_p, what=" [1/Pa]")
+    Rx, Ry, E_prime, p = _checked_bib(Q, Rx, Ry, u, eta, E_prime, a, b)
+    if regime is None:
+        regime = lubrication_regime(Q, Rx, Ry, u, eta, alpha_p, E_prime)
+    F_ivr = _houpert_ivr(p["W"], p["U2"], Rx, Ry, E_prime)
+    F_pvr = _biboulet_pvr(p, Rx, E_prime)
+    F_ehl = _houpert_ehl(p, alpha_p * E_prime, Rx, E_prime)
+    k = 1.0 / SWITCH_WIDTH
+    s_piezo = _sigmoid(-k * regime.ln_iso_over_piezo)
+    s_rigid_iso = _sigmoid(k * regime.ln_RI_over_EI)
+    s_rigid_piezo = _sigmoid(k * regime.ln_EP_over_RP)
+    iso = F_pvr + s_rigid_iso * (F_ivr - F_pvr)
+    piezo = F_ehl + s_rigid_piezo * (F_pvr - F_ehl)
+    return _out(iso + s_piezo * (piezo - iso))
 
 
 def rolling_force(Q, Rx, Ry, u, eta, E_prime, model="biboulet_transition", alpha_p=None,
@@ -472,11 +600,12 @@ def rolling_force(Q, Rx, Ry, u, eta, E_prime, model="biboulet_transition", alpha
     eta : array_like      inlet dynamic viscosity [Pa s]
     E_prime : array_like  reduced modulus [Pa]
     model : str           one of :data:`MODELS`
-    alpha_p : array_like  pressure–viscosity coefficient [1/Pa] (houpert_ehl, auto)
+    alpha_p : array_like  pressure–viscosity coefficient [1/Pa] (houpert_ehl, auto, auto_smooth)
     a, b : array_like     Hertz semi-axes across / along rolling [m] (optional)
-    regime : array_like of str, optional
-        for ``model="auto"``: "IVR", "PVR", "IVE" or "EHL" per contact;
-        computed with :mod:`thermobear.lubrication.film` if omitted.
+    regime : Regime or array_like of str, optional
+        for ``model="auto"``: "IVR", "PVR", "IVE" or "EHL" per contact (or a
+        :class:`~thermobear.lubrication.film.Regime`); for ``"auto_smooth"`` a Regime;
+        computed with :func:`thermobear.lubrication.film.lubrication_regime` if omitted.
         Mapping :data:`REGIME_MODEL` (seed 004 §4.3; IVE → biboulet_pvr, see there).
 
     Returns
@@ -488,7 +617,8 @@ def rolling_force(Q, Rx, Ry, u, eta, E_prime, model="biboulet_transition", alpha
     -----
     ``auto`` switches formulas at regime boundaries and so is discontinuous
     there; the jumps are quantified in tests/test_rolling.py and in
-    validation/report/seed001_spin_down.md.
+    validation/report/seed001_spin_down.md.  ``auto_smooth`` is
+    :func:`rolling_force_regime_weighted`.
 
     Examples
     --------
@@ -512,10 +642,14 @@ def rolling_force(Q, Rx, Ry, u, eta, E_prime, model="biboulet_transition", alpha
         return rolling_force_houpert_ehl(Q, Rx, Ry, u, eta, E_prime, alpha_p, a, b)
     if model == "biboulet_pvr":
         return rolling_force_biboulet_pvr(Q, Rx, Ry, u, eta, E_prime, a, b)
+    if model == "auto_smooth":
+        return rolling_force_regime_weighted(Q, Rx, Ry, u, eta, E_prime, alpha_p, a, b, regime)
     # auto
     if regime is None:
-        regime = _classify(Q, Rx, Ry, u, eta, E_prime, alpha_p)
-    regime = np.asarray(regime)
+        if alpha_p is None:
+            raise InputError("alpha_p", None, "model='auto' without a regime array needs alpha_p [1/Pa]")
+        regime = lubrication_regime(Q, Rx, Ry, u, eta, alpha_p, E_prime)
+    regime = np.asarray(regime.code if isinstance(regime, Regime) else regime)
     unknown = set(np.unique(regime).tolist()) - set(REGIME_MODEL)
     if unknown:
         raise InputError("regime", sorted(unknown), f"must be one of {', '.join(REGIME_MODEL)}")
@@ -549,10 +683,17 @@ def rolling_power(u, F_R):
     u : array_like    mean entrainment speed [m/s]
     F_R : array_like  hydrodynamic rolling force [N]
 
+    Returns
+    -------
+    float or ndarray  power [W]
+
     Notes
     -----
-    Sum velocity times force: seed 000 eq 34 (F_R d_b ω_b, d_b ω_b = 2u),
-    seed 004 eq 20, PHYSICS.md §0 and §12.10.
+    .. math::
+
+        P = 2 u F_R
+
+    Sum velocity times force: seed 000 eq 34 (F_R d_b ω_b, d_b ω_b = 2u) and seed 004 eq 20.
 
     >>> round(rolling_power(0.37699, 0.01896), 6)
     0.014295

@@ -1,12 +1,13 @@
 r"""EHL film thickness, Moes parameters, lubrication regime and specific film thickness.
 
-Conventions (PHYSICS.md §5, §12): x is the rolling direction; ``Rx``, ``Ry`` the
+Conventions (Hamrock & Dowson 1977; Moes 1992): x is the rolling direction; ``Rx``, ``Ry`` the
 reduced radii in the rolling / transverse direction (Ry ≥ Rx for ball–race
 contacts); ``u`` is the MEAN entrainment speed u = (u1 + u2)/2 [m/s] (Hamrock
 convention) at every public function — the Moes / NVM groups use the sum speed
 2u internally; ``eta`` the inlet dynamic viscosity [Pa s]; ``alpha_p`` the
 pressure–viscosity coefficient [1/Pa]; ``E_prime`` the reduced modulus
-2/E' = (1−ν1²)/E1 + (1−ν2²)/E2 [Pa].  All functions broadcast numpy arrays.
+2/E' = (1−ν1²)/E1 + (1−ν2²)/E2 [Pa].  All functions broadcast numpy arrays
+(e.g. a leading batch axis of temperature states against the contacts).
 
 Limits, defined so that no NaN and no floating-point warning is produced:
 
@@ -16,8 +17,15 @@ Limits, defined so that no NaN and no floating-point warning is produced:
   convention** (the rigid-isoviscous film grows without bound, h ∝ Q^-2, as
   Q → 0); the regime is "IVR".
 
-Regimes (PHYSICS.md §5.3; seed 004 §3): "IVR" iso-viscous rigid, "IVE"
+Regimes (Nijenbanning, Venner & Moes 1994; seed 004 §3): "IVR" iso-viscous rigid, "IVE"
 iso-viscous elastic, "PVR" piezo-viscous rigid, "EHL" piezo-viscous elastic.
+
+References
+----------
+Hamrock B. J., Dowson D. (1977) Isothermal elastohydrodynamic lubrication of point contacts,
+Part III — fully flooded results. J. Lubr. Technol. 99, 264–276.
+Nijenbanning G., Venner C. H., Moes H. (1994) Film thickness in elastohydrodynamically lubricated
+elliptic contacts. Wear 176, 217–229.
 """
 from __future__ import annotations
 
@@ -33,19 +41,29 @@ __all__ = [
     "hamrock_dowson_groups", "film_thickness", "moes_parameters", "moes_N",
     "nvm_asymptotes", "nvm_H", "film_thickness_nvm", "composite_roughness",
     "specific_film_thickness", "Regime", "moes_regime", "lubrication_regime",
-    "MoesMapBoundaries", "moes_map_boundaries", "REGIMES",
+    "MoesMapBoundaries", "moes_map_boundaries", "REGIMES", "ln_asymptote_consts", "TINY", "EXP_MAX",
 ]
 
 REGIMES = ("IVR", "IVE", "PVR", "EHL")
+_REGIME_CODES = np.array(REGIMES, dtype="<U3")
 
-_TINY = 1e-300     # floor inside logarithms (zero load / zero speed limits)
-_EXP_MAX = 700.0   # clip of exponents so ratios stay finite (e^700 ≈ 1e304)
+#: Floor inside the logarithms of the Moes groups (zero load / zero speed limits) [-].
+TINY = 1e-300
+#: Clip of exponents so that ratios stay finite (e^700 ≈ 1e304) [-].
+EXP_MAX = 700.0
+_TINY, _EXP_MAX = TINY, EXP_MAX          # former private names (thermobear.loads.film imports them)
 
 
 # ---------------------------------------------------------------------------
-# input checks
+# input checks: one pass over each array (min and max; NaN fails both comparisons)
 # ---------------------------------------------------------------------------
 def _arr(name, v, *, positive=False, nonneg=False):
+    if type(v) is float:                  # one number: plain comparisons, no array
+        if not (-np.inf < v < np.inf):
+            raise InputError(name, v, "must be finite")
+        if (positive and v <= 0) or (nonneg and v < 0):
+            raise InputError(name, v, "must be > 0" if positive else "must be >= 0")
+        return v
     a = np.asarray(v, dtype=float)
     if not a.size:
         return a
@@ -60,17 +78,20 @@ def _arr(name, v, *, positive=False, nonneg=False):
 
 
 def _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, alpha_positive):
+    """Checked contact inputs (Q, Rx, Ry/Rx, u, eta, alpha_p, E_prime), not broadcast: each array is
+    checked once; Ry > 0 follows from Rx > 0 and Ry/Rx ≥ 1."""
     Q = _arr("Q", Q, nonneg=True)
     Rx = _arr("Rx", Rx, positive=True)
-    Ry = _arr("Ry", Ry, positive=True)
-    if np.any(Ry < Rx * (1.0 - 1e-12)):
-        raise InputError("Ry/Rx", Ry / Rx, "must be >= 1 (Ry transverse, Rx rolling direction; "
+    ratio = np.asarray(Ry, dtype=float) / Rx
+    r = finite_range(ratio) if np.ndim(ratio) else (ratio, ratio)
+    if r is None or not r[0] >= 1.0 - 1e-12 or not r[1] < np.inf:
+        raise InputError("Ry/Rx", ratio, "must be finite and >= 1 (Ry transverse, Rx rolling direction; "
                          "these formulas were fitted for Ry >= Rx)")
     u = _arr("u", u, nonneg=True)
     eta = _arr("eta", eta, positive=True)
     alpha_p = _arr("alpha_p", alpha_p, positive=alpha_positive, nonneg=True)
     E_prime = _arr("E_prime", E_prime, positive=True)
-    return np.broadcast_arrays(Q, Rx, Ry, u, eta, alpha_p, E_prime)
+    return Q, Rx, ratio, u, eta, alpha_p, E_prime
 
 
 def _out(x, *inputs):
@@ -95,13 +116,23 @@ def hamrock_dowson_groups(Q, Rx, Ry, u, eta, alpha_p, E_prime):
 
     Returns
     -------
-    (U, G, W, kappa)  U = η u/(E' Rx), G = α_p E', W = Q/(E' Rx²),
-                      κ = 1.0339 (Ry/Rx)^0.636 (Hamrock & Brewe 1983 ellipticity)
+    (U, G, W, kappa) : tuple of float or ndarray
+        the speed, material, load parameters and the ellipticity [-]
 
     Notes
     -----
-    Hamrock & Dowson, J. Lubr. Technol. 99 (1977) 264; PHYSICS.md §5.1; seed 000
-    eq 16 and seed 004 eq 10 (U*, G*, W*).
+    .. math::
+
+        U = \frac{\eta u}{E' R_x},\quad G = \alpha_p E',\quad W = \frac{Q}{E' R_x^2},\quad
+        \kappa = 1.0339 \left(\frac{R_y}{R_x}\right)^{0.636}
+
+    (Hamrock & Dowson 1977 [1]_; κ of Hamrock & Brewe 1983 [2]_; seed 000 eq 16 and seed 004
+    eq 10 write the same U*, G*, W*).
+
+    References
+    ----------
+    .. [1] Hamrock B. J., Dowson D. (1977) J. Lubr. Technol. 99, 264–276.
+    .. [2] Hamrock B. J., Brewe D. E. (1983) J. Lubr. Technol. 105, 171–177.
 
     Examples
     --------
@@ -109,12 +140,16 @@ def hamrock_dowson_groups(Q, Rx, Ry, u, eta, alpha_p, E_prime):
     >>> f"{U:.3g} {G:.4g} {W:.3g} {k:.3g}"
     '2.15e-10 5244 0.000761 9.43'
     """
-    Q, Rx, Ry, u, eta, alpha_p, E_prime = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
-    U = eta * u / (E_prime * Rx)
-    G = alpha_p * E_prime
-    W = Q / (E_prime * Rx**2)
-    kappa = 1.0339 * (Ry / Rx) ** 0.636
-    return tuple(_out(x, Q) for x in (U, G, W, kappa))
+    Qa, Rxa, ratio, ua, etaa, alphaa, Ea = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
+    U = etaa * ua / (Ea * Rxa)
+    G = alphaa * Ea
+    W = Qa / (Ea * Rxa**2)
+    kappa = 1.0339 * ratio**0.636
+    shape = np.broadcast_shapes(*(np.shape(v) for v in (Qa, Rxa, ratio, ua, etaa, alphaa, Ea)))
+    return tuple(_out(np.broadcast_to(x, shape), Q) for x in (U, G, W, kappa))
+
+
+_FILM_KINDS = ("min", "central")
 
 
 def film_thickness(Q, Rx, Ry, u, eta, alpha_p, E_prime, kind="min", method="hamrock_dowson"):
@@ -128,61 +163,79 @@ def film_thickness(Q, Rx, Ry, u, eta, alpha_p, E_prime, kind="min", method="hamr
     eta : array_like      inlet dynamic viscosity [Pa s]
     alpha_p : array_like  pressure–viscosity coefficient [1/Pa]
     E_prime : array_like  reduced modulus E' [Pa]
-    kind : {"min", "central"}
+    kind : {"min", "central"} or a tuple of them
+        a tuple gives a tuple of films, in that order, from one pass over the inputs
     method : {"hamrock_dowson", "nvm", "seed000_eq15"}
-        "hamrock_dowson" (default) — Hamrock & Dowson (1977):
-            h_c   = Rx 2.69 U^0.67 G^0.53 W^-0.067 (1 − 0.61 e^(−0.73 κ))
-            h_min = Rx 3.63 U^0.68 G^0.49 W^-0.073 (1 − e^(−0.68 κ))
-        "nvm" (central only) — Nijenbanning, Venner & Moes (1994), see
-            :func:`film_thickness_nvm`.
-        "seed000_eq15" (min only) — the form PRINTED in seed 000 eq 15
-            (Ianuș et al.): 3.63 Rx U^0.68 G^0.49 W^-0.073 (1 − 0.61 e^(−0.68 k)),
-            k = Ry/Rx.  Its ellipticity factor differs from Hamrock–Dowson's
-            (1 − e^(−0.68 κ)); for seed 000's k ≈ 17.7 both are 1 within 1.3 %.
-            Offered only to reproduce that paper.
+        "hamrock_dowson" (default) — Hamrock & Dowson (1977) [1]_, see Notes;
+        "nvm" (central only) — Nijenbanning, Venner & Moes (1994), see :func:`film_thickness_nvm`;
+        "seed000_eq15" (min only) — the form PRINTED in seed 000 eq 15 (Ianuș et al.):
+        3.63 Rx U^0.68 G^0.49 W^-0.073 (1 − 0.61 e^(−0.68 k)), k = Ry/Rx.  Its ellipticity
+        factor differs from Hamrock–Dowson's (1 − e^(−0.68 κ)); for seed 000's k ≈ 17.7
+        both are 1 within 1.3 %.  Offered only to reproduce that paper.
 
     Returns
     -------
-    ndarray  film thickness [m]; 0 where u = 0 and, by convention, where Q = 0
+    float or ndarray  film thickness [m]; 0 where u = 0 and, by convention, where Q = 0
 
     Notes
     -----
-    Groups as in :func:`hamrock_dowson_groups`.  Fitted for κ ≈ 1–8,
-    isothermal, Newtonian, fully flooded, smooth surfaces (PHYSICS.md §5.1).
+    With the groups U, G, W, κ of :func:`hamrock_dowson_groups` (Hamrock & Dowson 1977 [1]_, their
+    central and minimum film formulas):
+
+    .. math::
+
+        h_c = 2.69\, R_x U^{0.67} G^{0.53} W^{-0.067} (1 - 0.61 e^{-0.73\kappa}),\qquad
+        h_{min} = 3.63\, R_x U^{0.68} G^{0.49} W^{-0.073} (1 - e^{-0.68\kappa})
+
+    Fitted for κ ≈ 1–8, isothermal, Newtonian, fully flooded, smooth surfaces [1]_.
     Requires alpha_p > 0 (G = 0 would give a zero film, which is not the
     iso-viscous answer — use method="nvm").
 
+    References
+    ----------
+    .. [1] Hamrock B. J., Dowson D. (1977) Isothermal elastohydrodynamic lubrication of point
+           contacts, Part III. J. Lubr. Technol. 99, 264–276.
+
     Examples
     --------
+    Inner contact of a 209 bearing (Hamrock & Dowson's example inputs, 400 rad/s):
+
     >>> h = film_thickness(4527., 5.109e-3, 165.1e-3, 6.25, 0.04, 2.3e-8, 228e9, kind="central")
     >>> round(h * 1e6, 2)
     0.69
+    >>> [round(v * 1e6, 2) for v in film_thickness(4527., 5.109e-3, 165.1e-3, 6.25, 0.04, 2.3e-8, 228e9,
+    ...                                            kind=("min", "central"))]
+    [0.55, 0.69]
     """
-    if kind not in ("min", "central"):
-        raise InputError("film_thickness kind", kind, 'must be "min" or "central"')
+    kinds = kind if isinstance(kind, tuple) else (kind,)
+    if not kinds or any(k not in _FILM_KINDS for k in kinds):
+        raise InputError("film_thickness kind", kind, 'must be "min" or "central" (or a tuple of them)')
     if method == "nvm":
-        if kind != "central":
+        if kinds != ("central",):
             raise InputError("film_thickness method", method, 'NVM gives the central film only: use kind="central"')
         return film_thickness_nvm(Q, Rx, Ry, u, eta, alpha_p, E_prime)
     if method not in ("hamrock_dowson", "seed000_eq15"):
         raise InputError("film_thickness method", method, 'must be "hamrock_dowson", "nvm" or "seed000_eq15"')
-    if method == "seed000_eq15" and kind != "min":
+    if method == "seed000_eq15" and kinds != ("min",):
         raise InputError("film_thickness method", method, 'seed 000 eq 15 is a minimum film: use kind="min"')
-    args = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, True)
-    Qa, Rxa, Rya, ua, etaa, alphaa, Ea = args
+    Qa, Rxa, ratio, ua, etaa, alphaa, Ea = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, True)
     loaded = Qa > 0
     U = etaa * ua / (Ea * Rxa)
     G = alphaa * Ea
     W = np.where(loaded, Qa, 1.0) / (Ea * Rxa**2)
-    ratio = Rya / Rxa
-    kappa = 1.0339 * ratio**0.636
-    if kind == "central":
-        H = 2.69 * U**0.67 * G**0.53 * W**-0.067 * (1.0 - 0.61 * np.exp(-0.73 * kappa))
-    elif method == "seed000_eq15":
-        H = 3.63 * U**0.68 * G**0.49 * W**-0.073 * (1.0 - 0.61 * np.exp(-0.68 * ratio))
-    else:
-        H = 3.63 * U**0.68 * G**0.49 * W**-0.073 * (1.0 - np.exp(-0.68 * kappa))
-    return _out(np.where(loaded, H * Rxa, 0.0), Q, Rx, Ry, u, eta, alpha_p, E_prime)
+    kappa = 1.0339 * ratio**0.636 if method == "hamrock_dowson" else None
+    scalar = all(np.ndim(v) == 0 for v in (Q, Rx, Ry, u, eta, alpha_p, E_prime))
+    out = []
+    for k in kinds:
+        if k == "central":
+            H = 2.69 * U**0.67 * G**0.53 * W**-0.067 * (1.0 - 0.61 * np.exp(-0.73 * kappa))
+        elif method == "seed000_eq15":
+            H = 3.63 * U**0.68 * G**0.49 * W**-0.073 * (1.0 - 0.61 * np.exp(-0.68 * ratio))
+        else:
+            H = 3.63 * U**0.68 * G**0.49 * W**-0.073 * (1.0 - np.exp(-0.68 * kappa))
+        h = np.where(loaded, H * Rxa, 0.0)
+        out.append(float(h) if scalar else h)
+    return tuple(out) if isinstance(kind, tuple) else out[0]
 
 
 # ---------------------------------------------------------------------------
@@ -213,13 +266,14 @@ def moes_parameters(Q, Rx, Ry, u, eta, alpha_p, E_prime):
     >>> round(M), round(L, 1), round(D, 4)
     (8066, 23.9, 0.0309)
     """
-    Qa, Rxa, Rya, ua, etaa, alphaa, Ea = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
+    Qa, Rxa, ratio, ua, etaa, alphaa, Ea = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
+    Qa, Rxa, ratio, ua, etaa, alphaa, Ea = np.broadcast_arrays(Qa, Rxa, ratio, ua, etaa, alphaa, Ea)
     U2 = 2.0 * etaa * ua / (Ea * Rxa)
     W = Qa / (Ea * Rxa**2)
     moving = U2 > 0
     M = np.where(moving, W * np.where(moving, U2, 1.0) ** -0.75, np.where(Qa > 0, np.inf, 0.0))
     L = alphaa * Ea * U2**0.25
-    D = Rxa / Rya
+    D = 1.0 / ratio
     return tuple(_out(x, Q, Rx, Ry, u, eta, alpha_p, E_prime) for x in (M, L, D))
 
 
@@ -251,12 +305,40 @@ def moes_N(M, D):
     return _out(np.asarray(M, dtype=float) * np.sqrt(np.asarray(D, dtype=float)), M, D)
 
 
-def _ln_asymptote_consts(D):
-    """The D-dependent parts of the logs of the NVM asymptotes (PHYSICS.md §5.2):
-    (c_RI, c_EI, c_RP, c_EP, ln h00) with ln H_RI = c_RI − 2 ln M, ln H_EI = c_EI − (2/15) ln M,
-    ln H_RP = c_RP + (2/3) ln L, ln H_EP = c_EP − ln M/12 + (3/4) ln L.  Split off so that a caller
-    evaluating many temperatures at one geometry (:func:`thermobear.losses.evaluate_losses`)
-    computes them once; :func:`_ln_asymptotes` adds the M, L terms in the same order (same bits)."""
+def ln_asymptote_consts(D):
+    r"""The D-dependent parts of the logarithms of the four NVM asymptotes and of the h00 cap.
+
+    Parameters
+    ----------
+    D : array_like  Rx/Ry, 0 < D ≤ 1 [-]
+
+    Returns
+    -------
+    (c_RI, c_EI, c_RP, c_EP, ln_h00) : tuple of ndarray  [-]
+
+    Notes
+    -----
+    With these constants the asymptotes of :func:`nvm_asymptotes` are
+
+    .. math::
+
+        \ln H_{RI} = c_{RI} - 2 \ln M,\quad \ln H_{EI} = c_{EI} - \tfrac{2}{15} \ln M,\quad
+        \ln H_{RP} = c_{RP} + \tfrac{2}{3} \ln L,\quad
+        \ln H_{EP} = c_{EP} - \tfrac{1}{12} \ln M + \tfrac{3}{4} \ln L
+
+    and h00 = 1.8 D^-1 (Nijenbanning, Venner & Moes 1994 [1]_).  A caller evaluating many loads or
+    temperatures at one geometry (e.g. the film load model, :mod:`thermobear.loads.film`) computes
+    them once.
+
+    References
+    ----------
+    .. [1] Nijenbanning G., Venner C. H., Moes H. (1994) Wear 176, 217–229.
+
+    Examples
+    --------
+    >>> [round(float(c), 3) for c in ln_asymptote_consts(1.0)]
+    [3.722, 0.883, -0.096, 0.221, 0.588]
+    """
     lnD = np.log(D)
     e = np.log1p(0.006 * lnD + 0.63 * D ** (4.0 / 7.0))
     c_RI = np.log(145.0) - (15.0 / 7.0) * np.log1p(0.796 * D ** (14.0 / 15.0)) - lnD
@@ -267,33 +349,35 @@ def _ln_asymptote_consts(D):
     return c_RI, c_EI, c_RP, c_EP, ln_h00
 
 
+_ln_asymptote_consts = ln_asymptote_consts      # former private name (thermobear.loads.film imports it)
+
+
 def _ln_asymptotes_from(consts, lnM, lnL):
-    """Logs of the four NVM asymptotes and of h00 from :func:`_ln_asymptote_consts` and ln M, ln L."""
+    """Logs of the four NVM asymptotes and of h00 from :func:`ln_asymptote_consts` and ln M, ln L."""
     c_RI, c_EI, c_RP, c_EP, ln_h00 = consts
     return (c_RI - 2.0 * lnM, c_EI - (2.0 / 15.0) * lnM, c_RP + (2.0 / 3.0) * lnL,
             c_EP - lnM / 12.0 + 0.75 * lnL, ln_h00)
 
 
 def _ln_asymptotes(lnM, lnL, D):
-    """Natural logs of the four NVM asymptotes and of the h00 cap (PHYSICS.md §5.2)."""
-    return _ln_asymptotes_from(_ln_asymptote_consts(D), lnM, lnL)
+    """Natural logs of the four NVM asymptotes and of the h00 cap (Nijenbanning, Venner & Moes 1994)."""
+    return _ln_asymptotes_from(ln_asymptote_consts(D), lnM, lnL)
 
 
-def _ln_blend_ratios(ln_RI, ln_EI, ln_RP, ln_EP, ln_h00):
-    """(ln iso − ln piezo, ln H_RI − ln H_EI, ln H_EP − ln H_RP): the dominance ratios of the NVM
-    blend whose signs decide the regime (see :func:`moes_regime`), in logs."""
-    ln_EIc = -0.25 * np.logaddexp(-4.0 * ln_EI, -4.0 * ln_h00)
-    ln_iso = (2.0 / 3.0) * np.logaddexp(1.5 * ln_RI, 1.5 * ln_EIc)
-    ln_piezo = -0.125 * np.logaddexp(-8.0 * ln_RP, -8.0 * ln_EP)
-    return ln_iso - ln_piezo, ln_RI - ln_EI, ln_EP - ln_RP
+def _clip(x, lo, hi):
+    """``np.clip`` without its overhead (same values)."""
+    return np.minimum(np.maximum(x, lo), hi)
 
 
-def _ln_branches(lnM, lnL, D):
+def _ln_branches(lnM, lnL, D, with_H=True):
+    """ln H (with ``with_H``), ln iso, ln piezo and the logs of the four asymptotes of the NVM blend."""
     ln_RI, ln_EI, ln_RP, ln_EP, ln_h00 = _ln_asymptotes(lnM, lnL, D)
     ln_EIc = -0.25 * np.logaddexp(-4.0 * ln_EI, -4.0 * ln_h00)          # (H_EI^-4 + h00^-4)^(-1/4)
     ln_iso = (2.0 / 3.0) * np.logaddexp(1.5 * ln_RI, 1.5 * ln_EIc)      # (H_RI^1.5 + H_EI'^1.5)^(2/3)
     ln_piezo = -0.125 * np.logaddexp(-8.0 * ln_RP, -8.0 * ln_EP)        # (H_RP^-8 + H_EP^-8)^(-1/8)
-    s = 1.5 * (1.0 + np.exp(-1.2 * np.exp(np.clip(ln_EI - ln_RI, -_EXP_MAX, _EXP_MAX))))
+    if not with_H:
+        return ln_iso, ln_piezo, ln_RI, ln_EI, ln_RP, ln_EP
+    s = 1.5 * (1.0 + np.exp(-1.2 * np.exp(_clip(ln_EI - ln_RI, -EXP_MAX, EXP_MAX))))
     ln_H = np.logaddexp(s * ln_iso, s * ln_piezo) / s
     return ln_H, ln_iso, ln_piezo, ln_RI, ln_EI, ln_RP, ln_EP
 
@@ -301,13 +385,11 @@ def _ln_branches(lnM, lnL, D):
 def _lnML(M, L):
     M = np.asarray(M, dtype=float)
     L = np.asarray(L, dtype=float)
-    lnM = np.log(np.clip(M, _TINY, 1.0 / _TINY))
-    lnL = np.log(np.clip(L, _TINY, 1.0 / _TINY))
-    return lnM, lnL
+    return np.log(_clip(M, TINY, 1.0 / TINY)), np.log(_clip(L, TINY, 1.0 / TINY))
 
 
 def _check_MLD(M, L, D):
-    M = _arr("M", np.where(np.isposinf(np.asarray(M, dtype=float)), 1.0 / _TINY, M), nonneg=True)
+    M = _arr("M", np.where(np.isposinf(np.asarray(M, dtype=float)), 1.0 / TINY, M), nonneg=True)
     L = _arr("L", L, nonneg=True)
     D = _arr("D", D, positive=True)
     if np.any(D > 1.0 + 1e-12):
@@ -353,7 +435,7 @@ def nvm_asymptotes(M, L, D):
     M, L, D = _check_MLD(M, L, D)
     lnM, lnL = _lnML(M, L)
     ln = _ln_asymptotes(lnM, lnL, D)[:4]
-    vals = [np.exp(np.clip(x, -_EXP_MAX, _EXP_MAX)) for x in ln]
+    vals = [np.exp(_clip(x, -EXP_MAX, EXP_MAX)) for x in ln]
     return _Asym(*[_out(v, M, L, D) for v in vals])
 
 
@@ -392,7 +474,7 @@ def nvm_H(M, L, D):
     M, L, D = _check_MLD(M, L, D)
     lnM, lnL = _lnML(M, L)
     ln_H = _ln_branches(lnM, lnL, D)[0]
-    return _out(np.exp(np.clip(ln_H, -_EXP_MAX, _EXP_MAX)), M, L, D)
+    return _out(np.exp(_clip(ln_H, -EXP_MAX, EXP_MAX)), M, L, D)
 
 
 def film_thickness_nvm(Q, Rx, Ry, u, eta, alpha_p, E_prime):
@@ -420,17 +502,16 @@ def film_thickness_nvm(Q, Rx, Ry, u, eta, alpha_p, E_prime):
     >>> round(h * 1e6, 2)
     0.92
     """
-    Qa, Rxa, Rya, ua, etaa, alphaa, Ea = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
+    Qa, Rxa, ratio, ua, etaa, alphaa, Ea = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
     U2 = 2.0 * etaa * ua / (Ea * Rxa)
     W = Qa / (Ea * Rxa**2)
     ok = (U2 > 0) & (Qa > 0)
     lnU2 = np.log(np.where(ok, U2, 1.0))
     lnM = np.log(np.where(ok, W, 1.0)) - 0.75 * lnU2
-    lnL = np.log(np.clip(alphaa * Ea, _TINY, None)) + 0.25 * lnU2
-    D = Rxa / Rya
-    ln_H = _ln_branches(lnM, lnL, D)[0]
+    lnL = np.log(np.maximum(alphaa * Ea, TINY)) + 0.25 * lnU2
+    ln_H = _ln_branches(lnM, lnL, 1.0 / ratio)[0]
     ln_h = np.where(ok, ln_H + np.log(Rxa) + 0.5 * lnU2, 0.0)
-    return _out(np.where(ok, np.exp(np.clip(ln_h, -_EXP_MAX, _EXP_MAX)), 0.0),
+    return _out(np.where(ok, np.exp(_clip(ln_h, -EXP_MAX, EXP_MAX)), 0.0),
                 Q, Rx, Ry, u, eta, alpha_p, E_prime)
 
 
@@ -488,13 +569,15 @@ class Regime:
 
     Attributes
     ----------
-    code : ndarray of str    "IVR" | "IVE" | "PVR" | "EHL"
-    iso_over_piezo : ndarray iso branch / piezo branch of the NVM blend [-];
-                             > 1 → iso-viscous (IVR or IVE), < 1 → piezo-viscous
-    RI_over_EI : ndarray     H_RI / H_EI (iso asymptotes) [-]; > 1 → rigid (IVR)
-    EP_over_RP : ndarray     H_EP / H_RP (piezo branch) [-]; > 1 → rigid (PVR)
-    M, L, D : ndarray        Moes parameters used [-]
-    H : ndarray              NVM dimensionless central film [-]
+    code : ndarray of str       "IVR" | "IVE" | "PVR" | "EHL"
+    ln_iso_over_piezo : ndarray ln(iso branch / piezo branch) of the NVM blend [-];
+                                > 0 → iso-viscous (IVR or IVE), < 0 → piezo-viscous
+    ln_RI_over_EI : ndarray     ln(H_RI / H_EI) (iso asymptotes) [-]; > 0 → rigid (IVR)
+    ln_EP_over_RP : ndarray     ln(H_EP / H_RP) (piezo branch) [-]; > 0 → rigid (PVR)
+    M, L, D : ndarray           Moes parameters used [-]
+
+    Properties ``iso_over_piezo``, ``RI_over_EI``, ``EP_over_RP`` give the ratios themselves
+    (e^±700 at most) and ``H`` the NVM dimensionless central film (:func:`nvm_H` of M, L, D).
 
     A ratio near 1 means the contact sits near that boundary of the Moes map;
     |log10(ratio)| is the distance in decades.  An unloaded contact (Q = 0)
@@ -503,32 +586,51 @@ class Regime:
     """
 
     code: np.ndarray
-    iso_over_piezo: np.ndarray
-    RI_over_EI: np.ndarray
-    EP_over_RP: np.ndarray
+    ln_iso_over_piezo: np.ndarray
+    ln_RI_over_EI: np.ndarray
+    ln_EP_over_RP: np.ndarray
     M: np.ndarray
     L: np.ndarray
     D: np.ndarray
-    H: np.ndarray
+
+    @property
+    def iso_over_piezo(self):
+        """Iso branch / piezo branch of the NVM blend [-]."""
+        return _exp_out(self.ln_iso_over_piezo)
+
+    @property
+    def RI_over_EI(self):
+        """H_RI / H_EI [-]."""
+        return _exp_out(self.ln_RI_over_EI)
+
+    @property
+    def EP_over_RP(self):
+        """H_EP / H_RP [-]."""
+        return _exp_out(self.ln_EP_over_RP)
+
+    @property
+    def H(self):
+        """NVM dimensionless central film H = (h_c/Rx)(2U)^(-1/2) [-] (:func:`nvm_H`)."""
+        return nvm_H(self.M, self.L, self.D)
 
 
-def _regime_from_ln(lnM, lnL, D, unloaded, scalar):
-    ln_H, ln_iso, ln_piezo, ln_RI, ln_EI, ln_RP, ln_EP = _ln_branches(lnM, lnL, D)
-    iso = ln_iso >= ln_piezo
-    rigid_iso = ln_RI >= ln_EI
-    rigid_piezo = ln_RP <= ln_EP
-    code = np.where(iso, np.where(rigid_iso, "IVR", "IVE"), np.where(rigid_piezo, "PVR", "EHL"))
-    code = np.where(unloaded, "IVR", code)
+def _exp_out(x):
+    v = np.exp(_clip(x, -EXP_MAX, EXP_MAX))
+    return float(v) if np.ndim(v) == 0 else v
 
-    def ex(x):
-        return np.exp(np.clip(x, -_EXP_MAX, _EXP_MAX))
 
-    fields = (ex(ln_iso - ln_piezo), ex(ln_RI - ln_EI), ex(ln_EP - ln_RP),
-              np.where(unloaded, 0.0, ex(lnM)), ex(lnL),
-              np.asarray(D, dtype=float), ex(ln_H))
+def _regime_from_ln(lnM, lnL, D, loaded, scalar):
+    ln_iso, ln_piezo, ln_RI, ln_EI, ln_RP, ln_EP = _ln_branches(lnM, lnL, D, with_H=False)
+    d_ip, d_re, d_ep = ln_iso - ln_piezo, ln_RI - ln_EI, ln_EP - ln_RP
+    # iso branch dominant: IVR (0) if H_RI ≥ H_EI else IVE (1); piezo: PVR (2) if H_RP ≤ H_EP else EHL (3)
+    idx = np.where(d_ip >= 0, d_re < 0, 2 + (d_ep < 0)) * loaded                 # unloaded: IVR
+    code = _REGIME_CODES[idx]
+    M = np.where(loaded, np.exp(_clip(lnM, -EXP_MAX, EXP_MAX)), 0.0)
+    L = np.exp(_clip(lnL, -EXP_MAX, EXP_MAX))
+    fields = (d_ip, d_re, d_ep, M, L, D)
     if scalar:
         return Regime(str(code), *[float(f) for f in fields])
-    return Regime(np.asarray(code, dtype="<U3"), *[np.asarray(f, dtype=float) for f in fields])
+    return Regime(code, *[np.asarray(f, dtype=float) for f in fields])
 
 
 def moes_regime(M, L, D):
@@ -564,7 +666,7 @@ def moes_regime(M, L, D):
     scalar = all(np.ndim(x) == 0 for x in (M, L, D))
     M, L, D = _check_MLD(M, L, D)
     lnM, lnL = _lnML(M, L)
-    return _regime_from_ln(lnM, lnL, D, M <= 0, scalar)
+    return _regime_from_ln(lnM, lnL, D, M > 0, scalar)
 
 
 def lubrication_regime(Q, Rx, Ry, u, eta, alpha_p, E_prime):
@@ -590,12 +692,12 @@ def lubrication_regime(Q, Rx, Ry, u, eta, alpha_p, E_prime):
     >>> lubrication_regime([4527., 1e-3], 5.109e-3, 165.1e-3, 6.25, 0.04, 2.3e-8, 228e9).code.tolist()
     ['EHL', 'IVR']
     """
-    Qa, Rxa, Rya, ua, etaa, alphaa, Ea = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
-    lnU2 = np.log(np.clip(2.0 * etaa * ua / (Ea * Rxa), _TINY, None))
-    lnM = np.log(np.clip(Qa / (Ea * Rxa**2), _TINY, None)) - 0.75 * lnU2
-    lnL = np.log(np.clip(alphaa * Ea, _TINY, None)) + 0.25 * lnU2
+    Qa, Rxa, ratio, ua, etaa, alphaa, Ea = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
+    lnU2 = np.log(np.maximum(2.0 * etaa * ua / (Ea * Rxa), TINY))
+    lnM = np.log(np.maximum(Qa / (Ea * Rxa**2), TINY)) - 0.75 * lnU2
+    lnL = np.log(np.maximum(alphaa * Ea, TINY)) + 0.25 * lnU2
     scalar = all(np.ndim(x) == 0 for x in (Q, Rx, Ry, u, eta, alpha_p, E_prime))
-    return _regime_from_ln(lnM, lnL, Rxa / Rya, Qa <= 0, scalar)
+    return _regime_from_ln(lnM, lnL, 1.0 / ratio, Qa > 0, scalar)
 
 
 # ---------------------------------------------------------------------------

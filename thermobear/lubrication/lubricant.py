@@ -2,7 +2,7 @@ r"""Lubricants: viscosity–temperature (ASTM D341), density, pressure–viscosi
 
 A :class:`Lubricant` is an oil, or a grease described by its base oil (every
 film, rolling-force and SKF formula uses the base-oil properties: seed 000 §3,
-seed 002 §4.3, PHYSICS.md §6).  Temperatures at the interface are in °C
+seed 002 §4.3; SKF 2004).  Temperatures at the interface are in °C
 (names end in ``_C``); everything else is SI except the kinematic viscosity,
 returned in cSt (= mm²/s) because every correlation that uses it (Walther,
 Gold, SKF) is written in cSt.
@@ -62,6 +62,17 @@ _RHO_WATER_15_KG_M3 = 999.0   # water at 60 °F (15.56 °C), for the specific gr
 _K1_API_LUBE = 0.34878 * 1.8  # kg/(m^3 K): API MPMS 11.1 lubricating-oil K1 = 0.34878 (per °F), x 1.8 per K
 
 
+def _xp(x):
+    """The module whose exp/log10 the formulas below use: ``math`` for one Python float (the thermal
+    elements ask for one temperature at a time), numpy otherwise — one formula for both."""
+    return math if type(x) is float else np
+
+
+def _num(x):
+    """``x`` unchanged if a Python float, else as a float array."""
+    return x if type(x) is float else np.asarray(x, dtype=float)
+
+
 # ---------------------------------------------------------------------------
 # ASTM D341 (Walther)
 # ---------------------------------------------------------------------------
@@ -78,16 +89,15 @@ def walther_Z(nu_cSt):
 
     Notes
     -----
-    ASTM D341-09 eq (2) (PHYSICS.md §6).  The exponential correction matters
-    only below about 2 cSt.
+    ASTM D341-09 eq (2).  The exponential correction matters only below about 2 cSt.
 
     Examples
     --------
     >>> round(float(walther_Z(10.0)), 12)
     10.7
     """
-    nu = np.asarray(nu_cSt, dtype=float)
-    return nu + 0.7 + np.exp(-1.47 - 1.84 * nu - 0.51 * nu**2)
+    nu = _num(nu_cSt)
+    return nu + 0.7 + _xp(nu).exp(-1.47 - 1.84 * nu - 0.51 * nu**2)
 
 
 def walther_nu_from_Z(Z):
@@ -106,8 +116,8 @@ def walther_nu_from_Z(Z):
     >>> round(float(walther_nu_from_Z(walther_Z(1.5))), 3)
     1.5
     """
-    x = np.asarray(Z, dtype=float) - 0.7
-    return x - np.exp(-0.7487 - 3.295 * x + 0.6119 * x**2 - 0.3193 * x**3)
+    x = _num(Z) - 0.7
+    return x - _xp(x).exp(-0.7487 - 3.295 * x + 0.6119 * x**2 - 0.3193 * x**3)
 
 
 def walther_fit(nu1_cSt, T1_K, nu2_cSt, T2_K):
@@ -125,7 +135,7 @@ def walther_fit(nu1_cSt, T1_K, nu2_cSt, T2_K):
     Notes
     -----
     B = [log log Z1 − log log Z2] / [log T2 − log T1],  A = log log Z1 + B log T1
-    (ASTM D341; PHYSICS.md §6).  Typical B ≈ 3–4 for mineral oils.
+    (ASTM D341-09).  Typical B ≈ 3–4 for mineral oils.
 
     Examples
     --------
@@ -158,7 +168,8 @@ def walther_nu(A, B, T_K):
     >>> round(float(walther_nu(A, B, 333.15)), 2)
     19.51
     """
-    Z = 10.0 ** (10.0 ** (A - B * np.log10(np.asarray(T_K, dtype=float))))
+    T = _num(T_K)
+    Z = 10.0 ** (10.0 ** (A - B * _xp(T).log10(T)))
     return walther_nu_from_Z(Z)
 
 
@@ -184,8 +195,8 @@ def density_api(rho15, T_C, K1=_K1_API_LUBE):
     -----
     API MPMS ch. 11.1 (2004) / ASTM D1250-04, lubricating-oil commodity group;
     the standard's base is 60 °F = 15.56 °C, taken here as 15 °C (0.04 %
-    density difference).  a ≈ 7.3e-4 1/K at 865 kg/m³, inside PHYSICS.md §6's
-    6.5–7.5e-4 1/K for mineral oils.  Used also for synthetic base oils
+    density difference).  a ≈ 7.3e-4 1/K at 865 kg/m³, inside the 6.5–7.5e-4 1/K typical of
+    mineral oils.  Used also for synthetic base oils
     (estimated; esters and PAO have similar volumetric expansion).
 
     Examples
@@ -193,10 +204,10 @@ def density_api(rho15, T_C, K1=_K1_API_LUBE):
     >>> round(float(density_api(864.6, 40.0)), 1)
     848.8
     """
-    rho15 = np.asarray(rho15, dtype=float)
+    rho15 = _num(rho15)
     a = K1 / rho15
-    dT = np.asarray(T_C, dtype=float) - 15.0
-    return rho15 * np.exp(-a * dT * (1.0 + 0.8 * a * dT))
+    dT = _num(T_C) - 15.0
+    return rho15 * _xp(dT).exp(-a * dT * (1.0 + 0.8 * a * dT))
 
 
 def gold_alpha_p(nu_cSt, s, t):
@@ -224,7 +235,7 @@ def gold_alpha_p(nu_cSt, s, t):
     >>> round(float(gold_alpha_p(230.0, 9.90, 0.14)) * 1e9, 2)
     21.2
     """
-    return s * np.asarray(nu_cSt, dtype=float) ** t * 1e-9
+    return s * _num(nu_cSt) ** t * 1e-9
 
 
 def cragoe_k_th(rho15, T_C):
@@ -251,8 +262,8 @@ def cragoe_k_th(rho15, T_C):
     >>> round(float(cragoe_k_th(864.6, 40.0)), 4)
     0.1325
     """
-    d = np.asarray(rho15, dtype=float) / _RHO_WATER_15_KG_M3
-    return 0.117257 / d * (1.0 - 0.00054 * np.asarray(T_C, dtype=float))
+    d = _num(rho15) / _RHO_WATER_15_KG_M3
+    return 0.117257 / d * (1.0 - 0.00054 * _num(T_C))
 
 
 def cragoe_cp(rho15, T_C):
@@ -271,16 +282,16 @@ def cragoe_cp(rho15, T_C):
     -----
     Cragoe (1929, US Bureau of Standards Misc. Publ. 97):
     c = (0.388 + 0.00045 t)/√d Btu/(lb °F), t in °F, converted to SI.  The
-    Btu form is quoted in public engineering forums; PHYSICS.md §8 gives
-    1.9–2.1 kJ/(kg K) for mineral oils, which this reproduces at 20–90 °C.
+    Btu form is quoted in public engineering forums; it gives the 1.9–2.1 kJ/(kg K) typical of
+    mineral oils at 20–90 °C.
 
     Examples
     --------
     >>> round(float(cragoe_cp(864.6, 40.0)))
     1957
     """
-    d = np.asarray(rho15, dtype=float) / _RHO_WATER_15_KG_M3
-    return (1684.8 + 3.391 * np.asarray(T_C, dtype=float)) / np.sqrt(d)
+    d = _num(rho15) / _RHO_WATER_15_KG_M3
+    return (1684.8 + 3.391 * _num(T_C)) / _xp(d).sqrt(d)
 
 
 # ---------------------------------------------------------------------------
@@ -293,7 +304,7 @@ def _out(x, like):
 
 def _plain(T_C) -> bool:
     """True for one temperature [°C] as a Python or numpy float inside T_WARN_C (no check, warning or
-    error to give: the scalar fast path of :class:`Lubricant` applies)."""
+    error to give: :class:`Lubricant` evaluates its formulas on the Python float)."""
     return type(T_C) in (float, np.float64) and T_WARN_C[0] <= T_C <= T_WARN_C[1]
 
 
@@ -466,60 +477,35 @@ class Lubricant:
                           stacklevel=3)
         return T
 
-    # -- scalar fast path -----------------------------------------------------
-    # The thermal elements ask for one temperature at a time, many times per coupled solve: a
-    # Python float inside T_WARN_C is evaluated with ``math`` (the formulas of walther_nu and
-    # density_api; equal to the array path to rounding), anything else takes the array path
-    # (its checks, warnings and errors).
-    def _nu_s(self, T):
-        Z = 10.0 ** (10.0 ** (self.walther_A - self.walther_B * math.log10(T + ZERO_C_K)))
-        x = Z - 0.7
-        return x - math.exp(-0.7487 - 3.295 * x + 0.6119 * (x * x) - 0.3193 * (x * x * x))
-
-    def _rho_s(self, T):
-        a = _K1_API_LUBE / self.rho15
-        dT = T - 15.0
-        return self.rho15 * math.exp(-a * dT * (1.0 + 0.8 * a * dT))
-
     # -- properties -----------------------------------------------------------
+    # One temperature as a Python float inside T_WARN_C (the thermal elements ask for one at a time)
+    # needs no check: the formulas run on the float (with ``math``); anything else is checked first.
     def nu(self, T_C):
         """Kinematic viscosity [cSt] at T_C [°C], ASTM D341 (see :func:`walther_nu`)."""
         if _plain(T_C):
-            return self._nu_s(float(T_C))
+            return walther_nu(self.walther_A, self.walther_B, float(T_C) + ZERO_C_K)
         T = self._T(T_C, "nu")
         return _out(walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K), T_C)
 
     def rho(self, T_C):
         """Density [kg/m³] at T_C [°C] (see :func:`density_api`)."""
         if _plain(T_C):
-            return self._rho_s(float(T_C))
+            return density_api(self.rho15, float(T_C))
         T = self._T(T_C, "rho")
         return _out(density_api(self.rho15, T), T_C)
 
     def eta(self, T_C):
-        """Dynamic viscosity [Pa s] at T_C [°C]: η = ν [cSt] × 1e-6 × ρ [kg/m³] (PHYSICS.md §12.2)."""
+        """Dynamic viscosity [Pa s] at T_C [°C]: η = ν [cSt] × 1e-6 × ρ [kg/m³]."""
         if _plain(T_C):
             T = float(T_C)
-            return self._nu_s(T) * 1e-6 * self._rho_s(T)
-        T = self._T(T_C, "eta")
+        else:
+            T = self._T(T_C, "eta")
         nu = walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K)
         return _out(nu * 1e-6 * density_api(self.rho15, T), T_C)
 
-    def _eta_alpha_rho(self, T_C):
-        """(η [Pa s], α_p [1/Pa], ρ [kg/m³]) at the temperatures ``T_C`` [°C] (arrays): :meth:`eta`,
-        :meth:`alpha_p_at` and :meth:`rho` with one temperature check and the viscosity and density
-        computed once (the loss kernels' look-up; same values)."""
-        T = self._T(T_C, "eta")
-        nu = walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K)
-        rho = density_api(self.rho15, T)
-        if self.gold_s is not None:
-            alpha = gold_alpha_p(nu, self.gold_s, self.gold_t)
-        elif self.alpha_p is None:
-            raise InputError(f"lubricant[{self.name}].alpha_p", None,
-                             "unknown: give alpha_p [1/Pa] or Gold coefficients gold_s, gold_t")
-        else:
-            alpha = np.full(np.shape(T), self.alpha_p)
-        return nu * 1e-6 * rho, alpha, rho
+    def _const(self, v, T, T_C):
+        """A constant property ``v`` shaped like the temperatures."""
+        return v if type(T) is float else _out(np.full(np.shape(T), v), T_C)
 
     def alpha_p_at(self, T_C):
         """Pressure–viscosity coefficient [1/Pa] at T_C [°C].
@@ -527,37 +513,27 @@ class Lubricant:
         Gold et al. s ν(T)^t when s, t are given (see :func:`gold_alpha_p`), else
         the constant alpha_p.  Raises InputError when neither is known.
         """
-        T = self._T(T_C, "alpha_p_at")
+        T = float(T_C) if _plain(T_C) else self._T(T_C, "alpha_p_at")
         if self.gold_s is not None:
             nu = walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K)
             return _out(gold_alpha_p(nu, self.gold_s, self.gold_t), T_C)
         if self.alpha_p is None:
             raise InputError(f"lubricant[{self.name}].alpha_p", None,
                              "unknown: give alpha_p [1/Pa] or Gold coefficients gold_s, gold_t")
-        return _out(np.full(np.shape(T), self.alpha_p), T_C)
+        return self._const(self.alpha_p, T, T_C)
 
     def k_th(self, T_C):
         """Thermal conductivity [W/(m K)] at T_C [°C]: constant, or Cragoe (1929) (:func:`cragoe_k_th`)."""
-        if _plain(T_C):
-            T = float(T_C)
-            if self._k_th is not None:
-                return self._k_th
-            return 0.117257 / (self.rho15 / _RHO_WATER_15_KG_M3) * (1.0 - 0.00054 * T)
-        T = self._T(T_C, "k_th")
+        T = float(T_C) if _plain(T_C) else self._T(T_C, "k_th")
         if self._k_th is not None:
-            return _out(np.full(np.shape(T), self._k_th), T_C)
+            return self._const(self._k_th, T, T_C)
         return _out(cragoe_k_th(self.rho15, T), T_C)
 
     def cp(self, T_C):
         """Specific heat [J/(kg K)] at T_C [°C]: constant, or Cragoe (1929) (:func:`cragoe_cp`)."""
-        if _plain(T_C):
-            T = float(T_C)
-            if self._cp is not None:
-                return self._cp
-            return (1684.8 + 3.391 * T) / math.sqrt(self.rho15 / _RHO_WATER_15_KG_M3)
-        T = self._T(T_C, "cp")
+        T = float(T_C) if _plain(T_C) else self._T(T_C, "cp")
         if self._cp is not None:
-            return _out(np.full(np.shape(T), self._cp), T_C)
+            return self._const(self._cp, T, T_C)
         return _out(cragoe_cp(self.rho15, T), T_C)
 
 
