@@ -103,8 +103,9 @@ def air_properties(T_K, p_Pa=P_ATM):
     (1.177, 0.0264, 0.707)
     """
     if isinstance(T_K, float) and p_Pa == P_ATM and T_RANGE_K[0] <= T_K <= T_RANGE_K[1]:
-        i = min(int(T_K - T_RANGE_K[0]), len(_table()[1]) - 1)      # one temperature: Python floats
-        s = T_K - (T_RANGE_K[0] + i)
+        T = float(T_K)                                              # one temperature: Python floats
+        i = min(int(T - T_RANGE_K[0]), len(_table()[1]) - 1)
+        s = T - (T_RANGE_K[0] + i)
         rho, mu, k, cp = (_cubic(*cq, s) for cq in _table()[1][i])
         return {"rho": rho, "mu": mu, "k": k, "cp": cp, "nu": mu / rho, "Pr": mu * cp / k}
     T = np.asarray(T_K, dtype=float)
