@@ -37,7 +37,7 @@ def test_with_rejects_unknown_and_bad_values():
         s.with_(speed=100)
     with pytest.raises(InputError, match="n_rpm"):
         s.with_(n_rpm=-1)
-    with pytest.raises(InputError, match="operation.T_C"):
+    with pytest.raises(InputError, match=r"T_C = 400 — must be in \[-40, 250\]"):
         s.with_(T_C=400)
 
 

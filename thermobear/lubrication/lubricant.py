@@ -35,7 +35,9 @@ import numpy as np
 from thermobear.arrays import finite_range
 
 from thermobear.files import data_dir, lookup, names_in
-from thermobear.errors import ExtrapolationWarning, InputError, OutsideValidity
+from thermobear.errors import ExtrapolationWarning, InputError
+from thermobear.schema import Field, check_table
+from thermobear.validity import T_LUBRICANT_REFUSE_C, T_LUBRICANT_WARN_C, check as check_limit
 from thermobear.units import ZERO_C_K
 
 __all__ = [
@@ -45,16 +47,10 @@ __all__ = [
     "T_WARN_C", "T_VALID_C",
 ]
 
-#: Temperatures [°C] outside which a lubricant property is an extrapolation
-#: (ExtrapolationWarning).  ASTM D341 is a two-point fit at 40/100 °C; the
-#: standard's charts span about -20...150 °C for mineral oils and the Cragoe /
-#: API correlations were fitted over a similar band.
-T_WARN_C = (-20.0, 150.0)
-#: Temperatures [°C] outside which thermobear refuses (OutsideValidity): below
-#: -60 °C mineral oils are near or past their pour point (wax, glass) and above
-#: 250 °C past the flash point of typical bearing oils; Walther's law has no
-#: meaning there.
-T_VALID_C = (-60.0, 250.0)
+#: Temperatures [°C] outside which a lubricant property is an extrapolation (ExtrapolationWarning)
+#: and outside which thermobear refuses (InputError): :data:`thermobear.validity.LIMITS` ["lubricant_T"].
+T_WARN_C = T_LUBRICANT_WARN_C
+T_VALID_C = T_LUBRICANT_REFUSE_C
 
 _T40_K = 40.0 + ZERO_C_K
 _T100_K = 100.0 + ZERO_C_K
@@ -338,7 +334,7 @@ class Lubricant:
     Notes
     -----
     Temperatures outside T_WARN_C = (-20, 150) °C give an ExtrapolationWarning,
-    outside T_VALID_C = (-60, 250) °C an OutsideValidity error.
+    outside T_VALID_C = (-40, 250) °C an InputError.
 
     Examples
     --------
@@ -414,7 +410,7 @@ class Lubricant:
         name = kw.get("name", "custom")
         eta = _positive(f"lubricant[{name}].eta_Pa_s", eta_Pa_s)
         if not np.isfinite(T_C) or not T_VALID_C[0] <= T_C <= T_VALID_C[1]:
-            raise OutsideValidity(f"lubricant[{name}].T_C", T_C,
+            raise InputError(f"lubricant[{name}].T_C", T_C,
                                   f"reference temperature must lie in {T_VALID_C[0]}...{T_VALID_C[1]} °C")
         if walther_B is None or not np.isfinite(walther_B) or not 0.0 <= walther_B <= 10.0:
             raise InputError(f"lubricant[{name}].walther_B", walther_B,
@@ -463,18 +459,7 @@ class Lubricant:
         T = np.asarray(T_C, dtype=float)
         if not T.size:
             return T
-        r = finite_range(T)
-        if r is None:
-            raise InputError(f"{self.name}.{what}(T_C)", T_C, "temperature must be finite [°C]")
-        lo, hi = T_VALID_C
-        if r[0] < lo or r[1] > hi:
-            raise OutsideValidity(f"{self.name}.{what}(T_C)", T_C,
-                                  f"lubricant properties are valid only in {lo}...{hi} °C")
-        wlo, whi = T_WARN_C
-        if r[0] < wlo or r[1] > whi:
-            warnings.warn(f"{self.name}.{what}: T_C outside {wlo}...{whi} °C is an extrapolation "
-                          "of the ASTM D341 / density / thermal correlations", ExtrapolationWarning,
-                          stacklevel=3)
+        check_limit("lubricant_T", T, f"{self.name}.{what}(T_C)", category=ExtrapolationWarning)
         return T
 
     # -- properties -----------------------------------------------------------
@@ -549,21 +534,38 @@ def lubricant_names() -> list[str]:
     return names_in(data_dir("materials") / "lubricants")
 
 
-_KNOWN_KEYS = {"name", "kind", "description", "base_oil", "thickener", "nu40_cSt", "nu100_cSt",
-               "rho15_kg_m3", "alpha_p_1_Pa", "gold_s_1_GPa", "gold_t", "alpha40_1_GPa", "thermal",
-               "k_W_mK", "cp_J_kgK", "eta_ref_Pa_s", "T_ref_C", "walther_B", "estimated",
-               "grease_T_min_C", "grease_T_max_C"}
+#: The keys of a lubricant table (data files, inline scene tables), with their kinds and units.
+FIELDS = {
+    "name": Field.text("label"),
+    "kind": Field.choice("oil", "grease", doc="oil, or grease (the models use its base oil)"),
+    "description": Field.text(),
+    "base_oil": Field.choice("mineral", "PAO", "ester", "ester+vegetal", "glycol", "silicone",
+                             doc="base oil family"),
+    "thickener": Field.text("grease thickener"),
+    "nu40_cSt": Field.number("cSt", 0.0, None, lo_open=True, doc="kinematic viscosity at 40 °C"),
+    "nu100_cSt": Field.number("cSt", 0.0, None, lo_open=True, doc="kinematic viscosity at 100 °C"),
+    "rho15_kg_m3": Field.number("kg/m^3", 500.0, 2500.0, doc="density at 15 °C"),
+    "alpha_p_1_Pa": Field.number("1/Pa", 0.0, 1e-7, lo_open=True, doc="pressure-viscosity coefficient"),
+    "gold_s_1_GPa": Field.number("1/GPa", 0.0, None, lo_open=True, doc="Gold et al. 2001 alpha = s nu^t"),
+    "gold_t": Field.number("-", 0.0, 1.0, doc="Gold et al. 2001 exponent"),
+    "alpha40_1_GPa": Field.number("1/GPa", 0.0, None, lo_open=True, doc="reference only"),
+    "thermal": Field.choice("cragoe", "given", doc="thermal properties: Cragoe 1929, or k_W_mK and cp_J_kgK"),
+    "k_W_mK": Field.number("W/(m K)", 0.0, 10.0, lo_open=True, doc="thermal conductivity"),
+    "cp_J_kgK": Field.number("J/(kg K)", 0.0, 1e4, lo_open=True, doc="specific heat"),
+    "eta_ref_Pa_s": Field.number("Pa s", 0.0, None, lo_open=True, doc="one viscosity point (with T_ref_C)"),
+    "T_ref_C": Field.number("°C", -60.0, 250.0, doc="temperature of eta_ref_Pa_s"),
+    "walther_B": Field.number("-", 0.0, 10.0, lo_open=True, doc="ASTM D341 slope (one-point lubricants)"),
+    "estimated": Field.names("keys whose values are estimates"),
+    "grease_T_min_C": Field.number("°C", -100.0, 300.0, doc="grease operating range (maker)"),
+    "grease_T_max_C": Field.number("°C", -100.0, 300.0, doc="grease operating range (maker)"),
+}
+_ALIASES = {"eta_Pa_s": "eta_ref_Pa_s", "T_C": "T_ref_C"}
 
 
 def _from_mapping(d: dict, where: str) -> Lubricant:
     """Build a Lubricant from data-file keys (units in the key names), naming ``where`` in errors."""
-    d = dict(d)
-    for alias, key in (("eta_Pa_s", "eta_ref_Pa_s"), ("T_C", "T_ref_C")):
-        if alias in d:
-            d.setdefault(key, d.pop(alias))
-    unknown = set(d) - _KNOWN_KEYS
-    if unknown:
-        raise InputError(where, sorted(unknown), f"unknown keys; known: {', '.join(sorted(_KNOWN_KEYS))}")
+    d = {_ALIASES.get(k, k): v for k, v in d.items()}
+    d = check_table(d, FIELDS, where)
     if d.get("thermal", "cragoe") != "cragoe" and ("k_W_mK" not in d or "cp_J_kgK" not in d):
         raise InputError(f"{where}.thermal", d.get("thermal"), '"cragoe", or give k_W_mK and cp_J_kgK')
     common = dict(alpha_p=d.get("alpha_p_1_Pa"), gold_s=d.get("gold_s_1_GPa"), gold_t=d.get("gold_t"),

@@ -53,7 +53,15 @@ from thermobear.contact.materials import Material, material, material_names
 from thermobear.thermal.elements import (CORRELATION_KEYS, ELEMENT_TYPES, HARRIS_COEFFICIENTS, MATERIAL_KEYS,
                        STRING_KEYS, Element)
 
-__all__ = ["ThermalNetwork", "load_network", "network_names", "evaluate"]
+__all__ = ["ThermalNetwork", "load_network", "network_names", "evaluate", "ROLES"]
+
+#: Nodes that receive the losses, by role, each with its candidate node names in order of
+#: preference: each contact's loss ½ to the ball and ½ to the race (Pouly et al. 2010), drag to the
+#: oil–air mixture (seed 004 §4.5); the contact temperature is the mean of ball and race nodes.
+ROLES = {"inner": ("inner_race", "shaft_washer", "inner_ring", "bearing"),
+         "outer": ("outer_race", "housing_washer", "outer_ring", "bearing"),
+         "ball": ("balls", "bearing"),
+         "oil": ("oil_air", "balls", "bearing")}
 
 _FUNCS = {"sqrt": np.sqrt, "log": np.log, "log10": np.log10, "exp": np.exp, "sin": np.sin,
           "cos": np.cos, "tan": np.tan, "radians": np.radians, "abs": abs, "min": min, "max": max}
