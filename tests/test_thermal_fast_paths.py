@@ -17,7 +17,7 @@ import pytest
 
 import thermobear as tb
 from thermobear.errors import ExtrapolationWarning, InputError
-from thermobear.losses.local import _contact_powers, _repeat_contacts
+from thermobear.losses.local import evaluate_losses
 from thermobear.coupled.solver import (_losses_and_slopes, _network_spec_shared, _setup_thermal, choose_models,
                                network_context)
 from thermobear.thermal.network import evaluate, load_network
@@ -137,11 +137,13 @@ def test_loss_slopes_from_two_states_equal_one_temperature_at_a_time(kw):
     cs = _setup_thermal(s, models)[1]
     x = np.array([330.0, 321.5, 309.25])
     h = 0.05
-    P, dP = _losses_and_slopes(s, models, _repeat_contacts(cs, 2), x, h)
+    P, dP = _losses_and_slopes(s, models, cs, x, h)
     X = x[:, None] + h * np.eye(3)[:, [0, 0, 1, 2]] * np.array([0, 1, 1, 1])     # x, then x + h e_k
-    P4 = _contact_powers(_repeat_contacts(cs, 4), s.lubricant, *(X - 273.15), oil_flow_m3_s=s.oil_flow,
+    Ti, To, Toil = X - 273.15                                                   # 4 states of the one point
+    r4 = evaluate_losses(cs, s.lubricant, Toil, T_inner_C=Ti, T_outer_C=To, T_oil_C=Toil, oil_flow_m3_s=s.oil_flow,
                          Rq_ball=s.Rq_ball, Rq_ring=s.Rq_ring, mu_boundary=s.mu_boundary,
                          mu_full_film=s.mu_full_film)
+    P4 = np.vstack([r4.contact_W["inner"], r4.contact_W["outer"], r4.breakdown_W["drag"]])
     np.testing.assert_allclose(P, P4[:, 0], rtol=1e-13)
     np.testing.assert_allclose(dP, (P4[:, 1:] - P4[:, [0]]) / h, rtol=1e-9, atol=1e-12)
     assert np.all(np.diag(dP) < 0)              # hotter: thinner oil, less loss

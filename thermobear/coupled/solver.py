@@ -42,7 +42,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from thermobear.errors import InputError, ThermalRunaway
-from thermobear.losses.local import ContactSet, LossResult, _contact_powers, _repeat_contacts, evaluate_losses, prepare_contacts
+from thermobear.losses.local import ContactSet, LossResult, evaluate_losses, prepare_contacts
 from thermobear.loads.static import LoadDistribution, axial_contact_angle, load_distribution, needs_high_speed
 from thermobear.scene.scene import Scene
 
@@ -752,11 +752,8 @@ def _sources_batch(scene, models, cs, roles):
         Ti = np.clip(0.5 * (Tb + (np.asarray(T_K[roles["inner"]], float) - 273.15)), lo, hi)
         To = np.clip(0.5 * (Tb + (np.asarray(T_K[roles["outer"]], float) - 273.15)), lo, hi)
         Toil = np.clip(np.asarray(T_K[roles["oil"]], float) - 273.15, lo, hi)
-        csn = prepare_contacts(scene.bearing, scene.Fa, scene.Fr, np.full(Tb.size, scene.n_rpm), M=scene.M,
-                               rotating=scene.rotating, hertz_method=models["hertz"][0],
-                               centrifugal=models["high_speed"][0] != "yes", load=cs.load,
-                               control=models["kinematics"][0])
-        r = scene_losses(scene, T_inner_C=Ti, T_outer_C=To, T_oil_C=Toil, T_C=Toil, models=models, contacts=csn)
+        # the states as leading temperature axes of the one operating point
+        r = scene_losses(scene, T_inner_C=Ti, T_outer_C=To, T_oil_C=Toil, T_C=Toil, models=models, contacts=cs)
         ci, co = r.contacts["inner"], r.contacts["outer"]
         Pi = ci["P_rolling"] + ci["P_sliding"] + ci["P_pivoting"] + ci["P_hysteresis"]
         Po = co["P_rolling"] + co["P_sliding"] + co["P_pivoting"] + co["P_hysteresis"]
@@ -804,27 +801,18 @@ def _losses_and_slopes(scene, models, cs2, x_K, h=0.05):
     ∂P/∂x [W/K] (forward differences, step h [K]).  Each part depends on its own temperature only
     (the inner contacts on x_inner, the outer contacts on x_outer, drag on x_oil), so ∂P/∂x is
     diagonal and one vectorised evaluation at two temperature triplets, x and x + h (all three
-    stepped at once; ``cs2``: the contacts with a batch of 2), gives all of it
-    (:func:`thermobear.losses.evaluate_losses` reads T_inner for the inner contacts, T_outer for the
-    outer ones and T_oil for drag only; a loss model that couples them needs the differences one
-    temperature at a time again — tests/test_thermal_fast_paths.py checks the two agree).
+    stepped at once: temperatures of shape (2,) in front of the contacts' operating point ``cs2``),
+    gives all of it (:func:`thermobear.losses.evaluate_losses` reads T_inner for the inner contacts,
+    T_outer for the outer ones and T_oil for drag only; a loss model that couples them needs the
+    differences one temperature at a time again — tests/test_thermal_fast_paths.py checks the two agree).
     Temperatures are held in the lubricant's validity range, as :func:`_sources_c` does."""
     from thermobear.lubrication.lubricant import T_VALID_C
     lo, hi = T_VALID_C[0] + 273.15, T_VALID_C[1] + 273.15
     x = np.asarray(x_K, float)
     X = np.clip(np.column_stack((x, x + h)), lo, hi) - 273.15          # 3 × 2 [°C]
-    if models["rolling"][0] == "auto":         # the sums only, from the fused kernel (same numbers)
-        Pm = _contact_powers(cs2, scene.lubricant, X[0], X[1], X[2], supply=scene.supply,
-                             oil_flow_m3_s=scene.oil_flow, Rq_ball=scene.Rq_ball, Rq_ring=scene.Rq_ring,
-                             mu_boundary=scene.mu_boundary, mu_full_film=scene.mu_full_film,
-                             drag=bool(models["drag"][0]))
-    else:
-        r = scene_losses(scene, T_C=X[2], T_inner_C=X[0], T_outer_C=X[1], T_oil_C=X[2], models=models,
-                         contacts=cs2)
-        ci, co = r.contacts["inner"], r.contacts["outer"]
-        Pm = np.vstack([(ci["P_rolling"] + ci["P_sliding"] + ci["P_pivoting"] + ci["P_hysteresis"]).sum(-1),
-                        (co["P_rolling"] + co["P_sliding"] + co["P_pivoting"] + co["P_hysteresis"]).sum(-1),
-                        np.broadcast_to(r.breakdown_W["drag"], (2,))])                 # 3 × 2 [W]
+    r = scene_losses(scene, T_C=X[2], T_inner_C=X[0], T_outer_C=X[1], T_oil_C=X[2], models=models, contacts=cs2)
+    Pm = np.vstack([r.contact_W["inner"], r.contact_W["outer"],
+                    np.broadcast_to(r.breakdown_W["drag"], (2,))])                     # 3 × 2 [W]
     return Pm[:, 0], np.diag((Pm[:, 1] - Pm[:, 0]) / h)
 
 
@@ -839,7 +827,7 @@ def _newton_coupled(scene, models, net, roles, cs2, tol_K, T_limit_K, maxiter=30
     with x the three coupled temperatures (inner contact, outer contact — each the mean of ball and
     race — and oil), P = (inner contacts, outer contacts, drag) [W] and S their split onto the nodes
     (½ ball, ½ race; drag to the oil).  P and its diagonal ∂P/∂x come from one vectorised loss
-    evaluation at x and x + h (:func:`_losses_and_slopes`; ``cs2`` holds the contacts twice);
+    evaluation at x and x + h (:func:`_losses_and_slopes`; ``cs2``: the contacts of the operating point);
     ∂A/∂T·T from forward differences
     of the temperature-dependent conductances (convection with fluid properties, radiation),
     re-evaluated while the steps exceed 1 K and then kept (a small, slowly varying part of the
@@ -1018,8 +1006,7 @@ def steady_state(scene: Scene, *, tol_K: float = 1e-6, contacts: ContactSet | No
         warnings.simplefilter("ignore", ExtrapolationWarning)
         nw = None
         if method == "newton" and models["losses"][0] == "local" and cs.batch == ():
-            cs2 = _repeat_contacts(cs, 2)          # the contacts twice (x and x + h: _losses_and_slopes)
-            nw = _newton_coupled(scene, models, net, roles, cs2, tol_K, kw["T_limit_K"], T0_K=T0_K)
+            nw = _newton_coupled(scene, models, net, roles, cs, tol_K, kw["T_limit_K"], T0_K=T0_K)
         if nw is not None:
             x, state["T"], its, resid, gain, hist = nw
             res = CoupledResult(T_K=x, P_W=hist[-1]["P_W"], iterations=its, evaluations=its * 2,

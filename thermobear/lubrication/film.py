@@ -575,6 +575,7 @@ class Regime:
     ln_RI_over_EI : ndarray     ln(H_RI / H_EI) (iso asymptotes) [-]; > 0 → rigid (IVR)
     ln_EP_over_RP : ndarray     ln(H_EP / H_RP) (piezo branch) [-]; > 0 → rigid (PVR)
     M, L, D : ndarray           Moes parameters used [-]
+    index : ndarray of int      the code as a position in :data:`REGIMES`
 
     Properties ``iso_over_piezo``, ``RI_over_EI``, ``EP_over_RP`` give the ratios themselves
     (e^±700 at most) and ``H`` the NVM dimensionless central film (:func:`nvm_H` of M, L, D).
@@ -592,6 +593,7 @@ class Regime:
     M: np.ndarray
     L: np.ndarray
     D: np.ndarray
+    index: np.ndarray
 
     @property
     def iso_over_piezo(self):
@@ -629,8 +631,8 @@ def _regime_from_ln(lnM, lnL, D, loaded, scalar):
     L = np.exp(_clip(lnL, -EXP_MAX, EXP_MAX))
     fields = (d_ip, d_re, d_ep, M, L, D)
     if scalar:
-        return Regime(str(code), *[float(f) for f in fields])
-    return Regime(code, *[np.asarray(f, dtype=float) for f in fields])
+        return Regime(str(code), *[float(f) for f in fields], int(idx))
+    return Regime(code, *[np.asarray(f, dtype=float) for f in fields], idx)
 
 
 def moes_regime(M, L, D):

@@ -457,9 +457,8 @@ class Lubricant:
     # -- temperature checks --------------------------------------------------
     def _T(self, T_C, what):
         T = np.asarray(T_C, dtype=float)
-        if not T.size:
-            return T
-        check_limit("lubricant_T", T, f"{self.name}.{what}(T_C)", category=ExtrapolationWarning)
+        if T.size and not (T_WARN_C[0] <= T.min() and T.max() <= T_WARN_C[1]):    # NaN fails too
+            check_limit("lubricant_T", T, f"{self.name}.{what}(T_C)", category=ExtrapolationWarning)
         return T
 
     # -- properties -----------------------------------------------------------
