@@ -47,14 +47,21 @@ _P_ATM = 101325.0
 
 
 def _pos(name, x, allow_zero=False):
-    """``x`` as a float array, finite and > 0 (>= 0): one min and one max (NaN fails both)."""
-    a = np.asarray(x, dtype=float)
-    if a.size and not ((a.min() >= 0 if allow_zero else a.min() > 0) and a.max() < np.inf):
+    """``x`` (a Python float, or as a float array) checked > 0 (>= 0) by its minimum, which NaN
+    fails too (an infinite value passes: the formulas take it as their limit)."""
+    if isinstance(x, float):
+        lo, a = x, x
+    else:
+        a = np.asarray(x, dtype=float)
+        lo = a.min() if a.size else 1.0
+    if not (lo >= 0 if allow_zero else lo > 0):
         raise InputError(name, x, "must be finite and " + (">= 0" if allow_zero else "> 0"))
     return a
 
 
 def _out(x):
+    if type(x) is float:
+        return x
     x = np.asarray(x, dtype=float)
     return float(x) if x.ndim == 0 else x
 
@@ -100,7 +107,7 @@ def oil_volume_fraction_parker(W_oil_cm3_min, n_rpm, dm_mm, convention="fraction
     X = 1e5 * W ** 0.37 / (n * dm ** 1.7)
     if convention == "percent":
         X = X / 100.0
-    if np.any(X > 1.0):
+    if (X if isinstance(X, float) else np.max(X)) > 1.0:
         warnings.warn(f"Parker's oil fraction exceeds 1 (max {np.max(X):.3g}); clipped to 1 — "
                       "speed too low for the correlation", ExtrapolationWarning, stacklevel=2)
         X = np.minimum(X, 1.0)
@@ -108,8 +115,12 @@ def oil_volume_fraction_parker(W_oil_cm3_min, n_rpm, dm_mm, convention="fraction
 
 
 def _fraction(X):
-    X = np.asarray(X, dtype=float)
-    if X.size and not (X.min() >= 0 and X.max() <= 1):              # NaN fails too
+    if isinstance(X, float):
+        lo = hi = X
+    else:
+        X = np.asarray(X, dtype=float)
+        lo, hi = (X.min(), X.max()) if X.size else (0.0, 0.0)
+    if not (lo >= 0 and hi <= 1):                                   # NaN fails too
         raise InputError("X", X, "oil volume fraction must lie in [0, 1]")
     return X
 
@@ -196,7 +207,7 @@ def _cd(Re, method):
     if method not in drag_sphere_correlations:
         raise InputError("method", method, f"must be one of {', '.join(drag_sphere_correlations)}")
     func, _, Re_max = drag_sphere_correlations[method]
-    if Re_max is not None and np.max(Re) > Re_max:
+    if Re_max is not None and (Re if isinstance(Re, float) else np.max(Re)) > Re_max:
         warnings.warn(f"sphere Reynolds number up to {np.max(Re):.3g} exceeds the {method} range "
                       f"(Re <= {Re_max:.3g})", ExtrapolationWarning, stacklevel=3)
     try:
@@ -235,7 +246,7 @@ def drag_power_pouly(rho_mix, c_d, Z, D, omega_c, dm, A_c=None):
 def _pouly(rho_mix, c_d, Z, D, v, A_c=None):
     """Pouly's drag power at the pitch-line speed v [m/s] (formula of :func:`drag_power_pouly`) [W]."""
     A = np.pi * D ** 2 / 4.0 if A_c is None else A_c
-    return rho_mix * c_d * Z * (A / 2.0) * np.abs(v) ** 3
+    return rho_mix * c_d * Z * (A / 2.0) * abs(v) ** 3
 
 
 @dataclass(frozen=True)
@@ -302,7 +313,7 @@ def drag_loss(Z, D, dm, omega_c, X, rho_oil, mu_oil, T_K, p_Pa=_P_ATM, cd_method
     wc = _pos("omega_c", omega_c)
     X = _fraction(X)
     rho_oil, mu_oil = _pos("rho_oil", rho_oil), _pos("mu_oil", mu_oil)
-    air = _air(_pos("T_K", T_K), _pos("p_Pa", p_Pa))
+    air = _air(T_K, _pos("p_Pa", p_Pa))                   # checks the temperature range
     rho_air, mu_air = air["rho"], air["mu"]
     rho_mix = _mix(X, rho_oil, rho_air)
     mu_mix = _mix(X, mu_oil, mu_air)
@@ -310,6 +321,6 @@ def drag_loss(Z, D, dm, omega_c, X, rho_oil, mu_oil, T_K, p_Pa=_P_ATM, cd_method
     Re = rho_mix * v * D / mu_mix
     c_d = _cd(Re, cd_method)
     P = _pouly(rho_mix, c_d, Z, D, v, A_c)
-    Xb = np.broadcast_to(X, np.shape(P))
+    Xb = X if isinstance(P, float) else X + np.zeros_like(P)      # the fraction of each operating point
     return DragLoss(P_W=_out(P), v=_out(v), X=_out(Xb), rho_mix=_out(rho_mix), mu_mix=_out(mu_mix), Re=_out(Re),
                     c_d=_out(c_d), rho_air=_out(rho_air), mu_air=_out(mu_air))

@@ -43,17 +43,16 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from thermobear.arrays import out as _as
 from thermobear.contact.geometry import BallBearing
 from thermobear.contact.hertz import hertz
 from thermobear.contact.kinematics import ball_kinematics, caged_ball_kinematics, common_cage_speed
 from thermobear.errors import InputError
 from thermobear.loads.static import LoadDistribution, load_distribution
 from thermobear.losses.drag import drag_loss, oil_volume_fraction_parker
-from thermobear.losses.rolling import rolling_force, rolling_power
+from thermobear.losses.rolling import RollingContacts, rolling_contacts, rolling_power
 from thermobear.losses.sliding import (deformed_radius, hysteresis_moment, mixed_friction_ianus, pivoting_moment,
                                        sliding_power_heathcote)
-from thermobear.lubrication.film import REGIMES, film_thickness, lubrication_regime, specific_film_thickness
+from thermobear.lubrication.film import REGIMES, EHLContacts, ehl_contacts, specific_film_thickness
 
 __all__ = ["LossResult", "ContactSet", "bearing_losses", "prepare_contacts", "evaluate_losses",
            "BREAKDOWN_KEYS", "ROLLING_MODELS"]
@@ -115,6 +114,7 @@ class ContactSet:
     batch : tuple                 batch shape of the operating points
     n_rpm : ndarray               speed [rpm] (batch)
     omega : ndarray               rotating-ring speed [rad/s] (batch)
+    inv_omega : ndarray           1/ω where the ring turns, else 0 [s/rad] (torque = power × inv_omega)
     load : LoadDistribution
     omega_c : ndarray             cage speed per ball [rad/s] (batch + (Z,)); all balls at the one cage speed
     omega_cage : ndarray          cage speed [rad/s] (batch)
@@ -128,6 +128,10 @@ class ContactSet:
     P_sliding_mu : ndarray        Heathcote sliding power per unit friction coefficient [W]
     P_pivoting_mu : ndarray       pivoting power per unit friction coefficient [W]
     P_hysteresis : ndarray        hysteresis power [W]
+    ehl : EHLContacts             the contacts prepared for the film and regime formulas
+                                  (:func:`thermobear.lubrication.film.ehl_contacts`)
+    rolling : RollingContacts     the contacts prepared for the rolling-force formulas
+                                  (:func:`thermobear.losses.rolling.rolling_contacts`)
 
     ``sides`` gives the per-raceway views (``cs.sides["inner"]["a"]``).
     """
@@ -136,6 +140,7 @@ class ContactSet:
     batch: tuple
     n_rpm: np.ndarray
     omega: np.ndarray
+    inv_omega: np.ndarray
     load: LoadDistribution
     omega_c: np.ndarray
     omega_cage: np.ndarray
@@ -152,6 +157,8 @@ class ContactSet:
     P_sliding_mu: np.ndarray
     P_pivoting_mu: np.ndarray
     P_hysteresis: np.ndarray
+    ehl: EHLContacts
+    rolling: RollingContacts
 
     @property
     def sides(self) -> dict:
@@ -235,10 +242,13 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
                         "balls outside the load zone ride on the outer race"),
     }
     f = _frozen
-    return ContactSet(brg=brg, batch=batch, n_rpm=f(nb), omega=f(omega), load=load, omega_c=f(omega_c),
+    Q2, Rx2, Ry2, u2, a2, b2 = (f(v) for v in (Q2, Rx2, Ry2, u2, a2, b2))
+    inv_omega = np.where(omega > 0, 1.0 / np.where(omega > 0, omega, 1.0), 0.0)
+    return ContactSet(brg=brg, batch=batch, n_rpm=f(nb), omega=f(omega), inv_omega=f(inv_omega), load=load, omega_c=f(omega_c),
                       omega_cage=f(w_cage), models_used=models, Q=f(Q2), alpha=f(al2), Rx=f(Rx2), Ry=f(Ry2),
                       a=f(a2), b=f(b2), u=f(u2), spin=f(spin2), omega_roll=f(omega_roll2), P_sliding_mu=f(P_sl),
-                      P_pivoting_mu=f(P_piv), P_hysteresis=f(P_hys))
+                      P_pivoting_mu=f(P_piv), P_hysteresis=f(P_hys), ehl=ehl_contacts(Q2, Rx2, Ry2, u2, brg.E_prime),
+                      rolling=rolling_contacts(Q2, Rx2, Ry2, u2, brg.E_prime, a2, b2))
 
 
 # --------------------------------------------------------------------------- temperatures
@@ -261,14 +271,20 @@ def _temperatures(cs, T_C, T_inner_C, T_outer_C, T_oil_C, dragged):
     stacked on one axis after the leading ones: (*lead, 2 or 3, *batch, Z or 1) [°C]; the leading
     shape; and whether a raceway's temperature is per ball."""
     batch, Z = cs.batch, cs.brg.Z
-    T = np.asarray(T_C, float)
-    Ts = [T if v is None else np.asarray(v, float) for v in (T_inner_C, T_outer_C, T_oil_C)]
+    Ts = [T_C if v is None else v for v in (T_inner_C, T_outer_C, T_oil_C)]
+    if all(isinstance(v, (float, int)) for v in Ts):     # one temperature each: no shapes to work out
+        Tall = np.empty((3 if dragged else 2,) + batch + (1,))
+        for k in range(Tall.shape[0]):
+            Tall[k] = Ts[k]
+        return Tall, (), False
+    Ts = [np.asarray(v, float) for v in Ts]
     names = [n if v is not None else "T_C" for n, v in zip(("T_inner_C", "T_outer_C", "T_oil_C"),
                                                           (T_inner_C, T_outer_C, T_oil_C))]
     shapes = [_lead(v, n, batch, Z) for v, n in zip(Ts, names)]
     if shapes[2][1]:
         raise InputError(names[2], Ts[2], f"the oil temperature is one per operating point {batch}, not per ball")
-    lead = np.broadcast_shapes(*(s[0] for s in shapes))
+    leads = [s[0] for s in shapes]
+    lead = leads[0] if leads[0] == leads[1] == leads[2] else np.broadcast_shapes(*leads)
     per_ball = shapes[0][1] or shapes[1][1]
     nb = len(batch)
     Tall = np.empty(lead + (3 if dragged else 2,) + batch + (Z if per_ball else 1,))
@@ -278,21 +294,39 @@ def _temperatures(cs, T_C, T_inner_C, T_outer_C, T_oil_C, dragged):
 
 
 # --------------------------------------------------------------------------- evaluation
+_FEW = 8        # up to this many temperatures, properties are asked one Python float at a time
+
+
+def _at(prop, T):
+    """``prop(T)`` on a temperature array [°C]: one Python float at a time when there are a few
+    (the lubricant's and drag's formulas on floats: no array overhead), else one array call."""
+    if T.size > _FEW:
+        return prop(T)
+    return np.array([prop(t) for t in T.ravel().tolist()]).reshape(T.shape)
+
+
 def _drag_power(cs, oil, T_oil, eta_oil, supply, oil_flow_m3_s):
     """Drag power of the balls [W] at oil–air mixture temperatures ``T_oil`` [°C] (*lead, *batch),
     where the oil's viscosity is ``eta_oil`` [Pa s]:
     :func:`~thermobear.losses.drag.drag_loss` with Parker's oil fraction (oil jet), 1 % (oil–air)
     or air alone (grease); 0 where the bearing stands still."""
     brg, batch = cs.brg, cs.batch
+    if not batch and T_oil.size <= _FEW:            # one operating point (turning: dragged), a few states
+        n, wc = float(cs.n_rpm), float(cs.omega_cage)
+        X = (oil_volume_fraction_parker(float(oil_flow_m3_s) * 1e6 * 60.0, n, brg.dm * 1e3) if supply == "oil_jet"
+             else 0.01 if supply == "oil_air" else 0.0)
+        P = [drag_loss(brg.Z, brg.D, brg.dm, wc, X, oil.rho(t), e, t + 273.15).P_W
+             for t, e in zip(T_oil.ravel().tolist(), eta_oil.ravel().tolist())]
+        return np.array(P).reshape(T_oil.shape)
     run = cs.n_rpm > 0
     all_run = bool(run.all())
     if supply == "oil_jet":
-        W = np.broadcast_to(np.asarray(oil_flow_m3_s, float) * 1e6 * 60.0, batch)    # [cm³/min]
+        W = np.asarray(oil_flow_m3_s, float) * 1e6 * 60.0                             # [cm³/min]
         if all_run:
             X = oil_volume_fraction_parker(W, cs.n_rpm, brg.dm * 1e3)
         else:
             X = np.zeros(batch)
-            X[run] = oil_volume_fraction_parker(W[run], cs.n_rpm[run], brg.dm * 1e3)
+            X[run] = oil_volume_fraction_parker(np.broadcast_to(W, batch)[run], cs.n_rpm[run], brg.dm * 1e3)
     else:
         X = 0.01 if supply == "oil_air" else 0.0
     wc = cs.omega_cage if all_run else np.where(run, cs.omega_cage, 1.0)
@@ -361,14 +395,11 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     nb = len(cs.batch)
     contacts = (Ellipsis, slice(0, 2)) + (slice(None),) * (nb + 1)
     T2 = Tall[contacts]
-    eta_all = oil.eta(Tall)                         # contacts and (drag) the oil–air mixture in one call
-    eta2, alpha2 = eta_all[contacts], oil.alpha_p_at(T2)
-    Ep = cs.brg.E_prime
-    args = (cs.Q, cs.Rx, cs.Ry, cs.u)
-    h_min, h_c = film_thickness(*args, eta2, alpha2, Ep, kind=("min", "central"))
-    reg = lubrication_regime(*args, eta2, alpha2, Ep)
-    F_R = rolling_force(*args, eta2, Ep, model=_ROLLING_FORCE_MODEL.get(rolling_model, rolling_model),
-                        alpha_p=alpha2, a=cs.a, b=cs.b, regime=reg)
+    eta_all = _at(oil.eta, Tall)                    # contacts and (drag) the oil–air mixture in one call
+    eta2, alpha2 = eta_all[contacts], _at(oil.alpha_p_at, T2)
+    h_min, h_c = cs.ehl.film_thickness(eta2, alpha2, kind=("min", "central"))
+    reg = cs.ehl.regime(eta2, alpha2)
+    F_R = cs.rolling.force(eta2, _ROLLING_FORCE_MODEL.get(rolling_model, rolling_model), alpha_p=alpha2, regime=reg)
     if Rq_ball or Rq_ring:
         Lam = specific_film_thickness(h_min, Rq_ball, Rq_ring)
     else:                                           # smooth surfaces: Λ = ∞, full-film friction
@@ -399,6 +430,11 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     return _result(cs, P, P_drag, per_contact, len(lead), models)
 
 
+def _as(x):
+    """A 0-d array as a Python float, any other array unchanged."""
+    return x if x.ndim else float(x)
+
+
 def _result(cs, P, P_drag, per_contact, n_lead, models):
     """The LossResult of the per-contact powers ``P`` (4, *lead, 2, *batch, Z) and the drag (*lead, *batch)."""
     nb = len(cs.batch)
@@ -406,18 +442,22 @@ def _result(cs, P, P_drag, per_contact, n_lead, models):
     S = P.sum(-1)                                   # (4, *lead, 2, *batch): summed over the balls
     per_side = S.sum(0)                             # contact power of each raceway
     fam = S.sum(axis=1 + n_lead)                    # each family summed over both raceways
-    side = [(Ellipsis, k) + (slice(None),) * nb for k in range(2)]
+    side = [(Ellipsis, k) + (slice(None),) * nb if n_lead else k for k in range(2)]
+    for key in ("T_C", "eta"):                      # one per operating point: shown per contact
+        src = per_contact[key]
+        if src.shape != full:
+            per_contact[key] = np.empty(full)
+            per_contact[key][...] = src
     out_c = {}
     for k, name in enumerate(_SIDES):
-        ix = side[k] + (slice(None),)
-        d = {key: (np.broadcast_to(v, full) if key in ("T_C", "eta") else v)[ix] for key, v in per_contact.items()}
+        ix = side[k] + (slice(None),) if n_lead else k
+        d = {key: v[ix] for key, v in per_contact.items()}
         d.update(Q=cs.Q[k], alpha=cs.alpha[k], a=cs.a[k], b=cs.b[k], u=cs.u[k], spin=cs.spin[k])
         out_c[name] = d
     breakdown = {"sliding": _as(fam[1]), "rolling": _as(fam[0]), "pivoting": _as(fam[2]),
                  "hysteresis": _as(fam[3]), "drag": _as(P_drag)}
     total = fam[1] + fam[0] + fam[2] + fam[3] + P_drag
-    omega = cs.omega
-    torque = np.where(omega > 0, total / np.where(omega > 0, omega, 1.0), 0.0)
+    torque = total * cs.inv_omega
     P_in, P_out = per_side[side[0]], per_side[side[1]]
     heat = {"inner_ring": _as(0.5 * P_in), "outer_ring": _as(0.5 * P_out), "balls": _as(0.5 * (P_in + P_out)),
             "oil": _as(P_drag)}

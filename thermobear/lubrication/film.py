@@ -33,70 +33,169 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from thermobear.arrays import finite_range
-
 from thermobear.errors import InputError
+from thermobear.lubrication.nvm import (EXP_MAX, REGIMES, TINY, MoesMapBoundaries, Regime, _arr, _clip,
+                                        _ln_branches, _out, _regime_from_ln, ln_asymptote_consts,
+                                        moes_map_boundaries, moes_N, moes_regime, nvm_asymptotes, nvm_H)
 
 __all__ = [
     "hamrock_dowson_groups", "film_thickness", "moes_parameters", "moes_N",
     "nvm_asymptotes", "nvm_H", "film_thickness_nvm", "composite_roughness",
     "specific_film_thickness", "Regime", "moes_regime", "lubrication_regime",
     "MoesMapBoundaries", "moes_map_boundaries", "REGIMES", "ln_asymptote_consts", "TINY", "EXP_MAX",
+    "EHLContacts", "ehl_contacts",
 ]
 
-REGIMES = ("IVR", "IVE", "PVR", "EHL")
-_REGIME_CODES = np.array(REGIMES, dtype="<U3")
-
-#: Floor inside the logarithms of the Moes groups (zero load / zero speed limits) [-].
-TINY = 1e-300
-#: Clip of exponents so that ratios stay finite (e^700 ≈ 1e304) [-].
-EXP_MAX = 700.0
 _TINY, _EXP_MAX = TINY, EXP_MAX          # former private names (thermobear.loads.film imports them)
+_ln_asymptote_consts = ln_asymptote_consts
 
 
 # ---------------------------------------------------------------------------
-# input checks: one pass over each array (min and max; NaN fails both comparisons)
+# input checks
 # ---------------------------------------------------------------------------
-def _arr(name, v, *, positive=False, nonneg=False):
-    if type(v) is float:                  # one number: plain comparisons, no array
-        if not (-np.inf < v < np.inf):
-            raise InputError(name, v, "must be finite")
-        if (positive and v <= 0) or (nonneg and v < 0):
-            raise InputError(name, v, "must be > 0" if positive else "must be >= 0")
-        return v
-    a = np.asarray(v, dtype=float)
-    if not a.size:
-        return a
-    r = finite_range(a)
-    if r is None:
-        raise InputError(name, v, "must be finite")
-    if positive and r[0] <= 0:
-        raise InputError(name, v, "must be > 0")
-    if nonneg and r[0] < 0:
-        raise InputError(name, v, "must be >= 0")
-    return a
+def _geometry(Q, Rx, Ry, u, E_prime):
+    """Checked contact geometry (Q, Rx, Ry/Rx, u, E_prime), each array checked once (not broadcast);
+    Ry > 0 follows from Rx > 0 and Ry/Rx ≥ 1."""
+    Q = _arr("Q", Q, nonneg=True)
+    Rx = _arr("Rx", Rx, positive=True)
+    ratio = Ry / Rx if type(Ry) is float else np.asarray(Ry, dtype=float) / Rx
+    if not (ratio if type(ratio) is float else ratio.min()) >= 1.0 - 1e-12:     # NaN fails too
+        raise InputError("Ry/Rx", ratio, "must be >= 1 (Ry transverse, Rx rolling direction; "
+                         "these formulas were fitted for Ry >= Rx)")
+    return Q, Rx, ratio, _arr("u", u, nonneg=True), _arr("E_prime", E_prime, positive=True)
 
 
 def _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, alpha_positive):
-    """Checked contact inputs (Q, Rx, Ry/Rx, u, eta, alpha_p, E_prime), not broadcast: each array is
-    checked once; Ry > 0 follows from Rx > 0 and Ry/Rx ≥ 1."""
-    Q = _arr("Q", Q, nonneg=True)
-    Rx = _arr("Rx", Rx, positive=True)
-    ratio = np.asarray(Ry, dtype=float) / Rx
-    r = finite_range(ratio) if np.ndim(ratio) else (ratio, ratio)
-    if r is None or not r[0] >= 1.0 - 1e-12 or not r[1] < np.inf:
-        raise InputError("Ry/Rx", ratio, "must be finite and >= 1 (Ry transverse, Rx rolling direction; "
-                         "these formulas were fitted for Ry >= Rx)")
-    u = _arr("u", u, nonneg=True)
+    """Checked contact inputs (Q, Rx, Ry/Rx, u, eta, alpha_p, E_prime), not broadcast."""
+    Q, Rx, ratio, u, E_prime = _geometry(Q, Rx, Ry, u, E_prime)
     eta = _arr("eta", eta, positive=True)
     alpha_p = _arr("alpha_p", alpha_p, positive=alpha_positive, nonneg=True)
-    E_prime = _arr("E_prime", E_prime, positive=True)
     return Q, Rx, ratio, u, eta, alpha_p, E_prime
 
 
-def _out(x, *inputs):
-    x = np.asarray(x, dtype=float)
-    return float(x) if all(np.ndim(i) == 0 for i in inputs) else x
+def _scalar(*inputs):
+    return all(np.ndim(v) == 0 for v in inputs)
+
+
+_FILM_KINDS = ("min", "central")
+
+
+# ---------------------------------------------------------------------------
+# Contacts prepared for the film and regime formulas
+# ---------------------------------------------------------------------------
+@dataclass(frozen=True)
+class EHLContacts:
+    r"""Point contacts prepared for the film and regime formulas (inputs checked once).
+
+    The temperature-independent factors of :func:`film_thickness` (Hamrock & Dowson 1977) and
+    :func:`lubrication_regime` (Nijenbanning, Venner & Moes 1994) for contacts of given load,
+    radii, entrainment speed and modulus; :meth:`film_thickness` and :meth:`regime` evaluate them
+    at the lubricant's η and α_p, which broadcast against the contacts (leading axes: temperature
+    states).  Built by :func:`ehl_contacts`; the module functions are these two steps.
+
+    Attributes
+    ----------
+    Rx, ratio : ndarray   rolling-direction radius [m] and Ry/Rx [-]
+    W : ndarray           load parameter Q/(E' Rx²) [-]
+    U_eta : ndarray       speed parameter per unit viscosity, U/η = u/(E' Rx) [1/(Pa s)]
+    E_prime : ndarray     reduced modulus [Pa]
+    loaded : ndarray      Q > 0
+    C_min, C_c : ndarray  h_min, h_c at U = G = 1 (Notes of :func:`film_thickness`) [m]; 0 where Q = 0
+    lnW : ndarray         ln W, floored at ln 1e-300 [-]
+    D : ndarray           Rx/Ry [-]
+    consts : tuple        :func:`~thermobear.lubrication.nvm.ln_asymptote_consts` of D
+    """
+
+    Rx: np.ndarray
+    ratio: np.ndarray
+    W: np.ndarray
+    U_eta: np.ndarray
+    E_prime: np.ndarray
+    loaded: np.ndarray
+    C_min: np.ndarray
+    C_c: np.ndarray
+    lnW: np.ndarray
+    D: np.ndarray
+    consts: tuple
+
+    def film_thickness(self, eta, alpha_p, kind="min", method="hamrock_dowson"):
+        """Film thickness [m] at viscosity ``eta`` [Pa s] and pressure–viscosity coefficient
+        ``alpha_p`` [1/Pa] (arrays; see :func:`film_thickness` for ``kind`` and ``method``)."""
+        kinds = kind if isinstance(kind, tuple) else (kind,)
+        if not kinds or any(k not in _FILM_KINDS for k in kinds):
+            raise InputError("film_thickness kind", kind, 'must be "min" or "central" (or a tuple of them)')
+        if method not in ("hamrock_dowson", "seed000_eq15") or (method == "seed000_eq15" and kinds != ("min",)):
+            raise InputError("film_thickness method", method, '"hamrock_dowson", or "seed000_eq15" (kind="min")')
+        eta = _arr("eta", eta, positive=True)
+        alpha_p = _arr("alpha_p", alpha_p, positive=True)
+        U, G = eta * self.U_eta, alpha_p * self.E_prime
+        out = []
+        for k in kinds:
+            if method == "seed000_eq15":
+                C = np.where(self.loaded, 3.63 * self.W**-0.073 * (1.0 - 0.61 * np.exp(-0.68 * self.ratio))
+                             * self.Rx, 0.0)
+                out.append(C * U**0.68 * G**0.49)
+            elif k == "central":
+                out.append(self.C_c * U**0.67 * G**0.53)
+            else:
+                out.append(self.C_min * U**0.68 * G**0.49)
+        return tuple(out) if isinstance(kind, tuple) else out[0]
+
+    def regime(self, eta, alpha_p) -> Regime:
+        """:class:`Regime` of the contacts at ``eta`` [Pa s] and ``alpha_p`` [1/Pa] (≥ 0)."""
+        eta = _arr("eta", eta, positive=True)
+        alpha_p = _arr("alpha_p", alpha_p, nonneg=True)
+        lnU2 = np.log(np.maximum(2.0 * eta * self.U_eta, TINY))
+        lnM = self.lnW - 0.75 * lnU2
+        lnL = np.log(np.maximum(alpha_p * self.E_prime, TINY)) + 0.25 * lnU2
+        return _regime_from_ln(lnM, lnL, self.D, self.loaded, False, self.consts)
+
+
+def ehl_contacts(Q, Rx, Ry, u, E_prime) -> EHLContacts:
+    r"""Point contacts prepared for :func:`film_thickness` and :func:`lubrication_regime`.
+
+    Parameters
+    ----------
+    Q : array_like        normal load [N], >= 0
+    Rx, Ry : array_like   reduced radii, rolling / transverse direction [m], Ry >= Rx
+    u : array_like        mean entrainment speed (u1+u2)/2 [m/s], >= 0
+    E_prime : array_like  reduced modulus E' [Pa]
+
+    Returns
+    -------
+    EHLContacts  evaluate with ``.film_thickness(eta, alpha_p, kind)`` and ``.regime(eta, alpha_p)``
+
+    Notes
+    -----
+    For contacts evaluated at many temperatures (coupled and transient solvers): the
+    temperature-independent factors are computed once, e.g.
+
+    .. math::
+
+        h_{min} = C_{min}\, U^{0.68} G^{0.49},\qquad
+        C_{min} = 3.63\, R_x W^{-0.073} (1 - e^{-0.68\kappa})
+
+    (Hamrock & Dowson 1977), and ln W and the D-terms of the NVM asymptotes (Nijenbanning, Venner
+    & Moes 1994) for the regime.
+
+    Examples
+    --------
+    >>> c = ehl_contacts([4527.0, 0.0], 5.109e-3, 165.1e-3, 6.25, 228e9)
+    >>> h = c.film_thickness(0.04, 2.3e-8, kind="central")
+    >>> [round(float(v) * 1e6, 2) for v in h], c.regime(0.04, 2.3e-8).code.tolist()
+    ([0.69, 0.0], ['EHL', 'IVR'])
+    """
+    Q, Rx, ratio, u, E_prime = _geometry(Q, Rx, Ry, u, E_prime)
+    loaded = Q > 0
+    ERx = E_prime * Rx
+    W = Q / (E_prime * Rx**2)
+    Ws = np.where(loaded, W, 1.0)
+    kappa = 1.0339 * ratio**0.636
+    C_min = np.where(loaded, 3.63 * Ws**-0.073 * (1.0 - np.exp(-0.68 * kappa)) * Rx, 0.0)
+    C_c = np.where(loaded, 2.69 * Ws**-0.067 * (1.0 - 0.61 * np.exp(-0.73 * kappa)) * Rx, 0.0)
+    D = 1.0 / ratio
+    return EHLContacts(Rx=Rx, ratio=ratio, W=W, U_eta=u / ERx, E_prime=E_prime, loaded=loaded, C_min=C_min,
+                       C_c=C_c, lnW=np.log(np.maximum(W, TINY)), D=D, consts=ln_asymptote_consts(D))
 
 
 # ---------------------------------------------------------------------------
@@ -147,9 +246,6 @@ def hamrock_dowson_groups(Q, Rx, Ry, u, eta, alpha_p, E_prime):
     kappa = 1.0339 * ratio**0.636
     shape = np.broadcast_shapes(*(np.shape(v) for v in (Qa, Rxa, ratio, ua, etaa, alphaa, Ea)))
     return tuple(_out(np.broadcast_to(x, shape), Q) for x in (U, G, W, kappa))
-
-
-_FILM_KINDS = ("min", "central")
 
 
 def film_thickness(Q, Rx, Ry, u, eta, alpha_p, E_prime, kind="min", method="hamrock_dowson"):
@@ -218,24 +314,10 @@ def film_thickness(Q, Rx, Ry, u, eta, alpha_p, E_prime, kind="min", method="hamr
         raise InputError("film_thickness method", method, 'must be "hamrock_dowson", "nvm" or "seed000_eq15"')
     if method == "seed000_eq15" and kinds != ("min",):
         raise InputError("film_thickness method", method, 'seed 000 eq 15 is a minimum film: use kind="min"')
-    Qa, Rxa, ratio, ua, etaa, alphaa, Ea = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, True)
-    loaded = Qa > 0
-    U = etaa * ua / (Ea * Rxa)
-    G = alphaa * Ea
-    W = np.where(loaded, Qa, 1.0) / (Ea * Rxa**2)
-    kappa = 1.0339 * ratio**0.636 if method == "hamrock_dowson" else None
-    scalar = all(np.ndim(v) == 0 for v in (Q, Rx, Ry, u, eta, alpha_p, E_prime))
-    out = []
-    for k in kinds:
-        if k == "central":
-            H = 2.69 * U**0.67 * G**0.53 * W**-0.067 * (1.0 - 0.61 * np.exp(-0.73 * kappa))
-        elif method == "seed000_eq15":
-            H = 3.63 * U**0.68 * G**0.49 * W**-0.073 * (1.0 - 0.61 * np.exp(-0.68 * ratio))
-        else:
-            H = 3.63 * U**0.68 * G**0.49 * W**-0.073 * (1.0 - np.exp(-0.68 * kappa))
-        h = np.where(loaded, H * Rxa, 0.0)
-        out.append(float(h) if scalar else h)
-    return tuple(out) if isinstance(kind, tuple) else out[0]
+    h = ehl_contacts(Q, Rx, Ry, u, E_prime).film_thickness(eta, alpha_p, kind, method)
+    if not _scalar(Q, Rx, Ry, u, eta, alpha_p, E_prime):
+        return h
+    return tuple(float(v) for v in h) if isinstance(kind, tuple) else float(h)
 
 
 # ---------------------------------------------------------------------------
@@ -275,206 +357,6 @@ def moes_parameters(Q, Rx, Ry, u, eta, alpha_p, E_prime):
     L = alphaa * Ea * U2**0.25
     D = 1.0 / ratio
     return tuple(_out(x, Q, Rx, Ry, u, eta, alpha_p, E_prime) for x in (M, L, D))
-
-
-def moes_N(M, D):
-    r"""Seed 004's load parameter N = M D^(1/2) = W (2U)^(-3/4) λ^(1/2), λ = Rx/Ry.
-
-    Parameters
-    ----------
-    M : array_like  Moes load parameter [-]
-    D : array_like  Rx/Ry (seed 004's λ) [-]
-
-    Returns
-    -------
-    ndarray  N [-]
-
-    Notes
-    -----
-    Seed 004 eq 9 prints N = W* (2U*)^(3/4) λ^(1/2); the exponent of 2U* must
-    be −3/4 (a minus sign lost in the text): N is used as a load parameter in
-    the Biboulet PVR transition N/6.6 (seed 004 eq 19), which seed 000 eq 23
-    writes M = 0.5549 k^-0.6029 W U^-0.75 — load over a power of speed.  With
-    +3/4 N would grow with speed.
-
-    Examples
-    --------
-    >>> round(moes_N(8064.0, 0.0309), 1)
-    1417.5
-    """
-    return _out(np.asarray(M, dtype=float) * np.sqrt(np.asarray(D, dtype=float)), M, D)
-
-
-def ln_asymptote_consts(D):
-    r"""The D-dependent parts of the logarithms of the four NVM asymptotes and of the h00 cap.
-
-    Parameters
-    ----------
-    D : array_like  Rx/Ry, 0 < D ≤ 1 [-]
-
-    Returns
-    -------
-    (c_RI, c_EI, c_RP, c_EP, ln_h00) : tuple of ndarray  [-]
-
-    Notes
-    -----
-    With these constants the asymptotes of :func:`nvm_asymptotes` are
-
-    .. math::
-
-        \ln H_{RI} = c_{RI} - 2 \ln M,\quad \ln H_{EI} = c_{EI} - \tfrac{2}{15} \ln M,\quad
-        \ln H_{RP} = c_{RP} + \tfrac{2}{3} \ln L,\quad
-        \ln H_{EP} = c_{EP} - \tfrac{1}{12} \ln M + \tfrac{3}{4} \ln L
-
-    and h00 = 1.8 D^-1 (Nijenbanning, Venner & Moes 1994 [1]_).  A caller evaluating many loads or
-    temperatures at one geometry (e.g. the film load model, :mod:`thermobear.loads.film`) computes
-    them once.
-
-    References
-    ----------
-    .. [1] Nijenbanning G., Venner C. H., Moes H. (1994) Wear 176, 217–229.
-
-    Examples
-    --------
-    >>> [round(float(c), 3) for c in ln_asymptote_consts(1.0)]
-    [3.722, 0.883, -0.096, 0.221, 0.588]
-    """
-    lnD = np.log(D)
-    e = np.log1p(0.006 * lnD + 0.63 * D ** (4.0 / 7.0))
-    c_RI = np.log(145.0) - (15.0 / 7.0) * np.log1p(0.796 * D ** (14.0 / 15.0)) - lnD
-    c_EI = np.log(3.18) - (14.0 / 25.0) * e - lnD / 15.0
-    c_RP = np.log(1.29) - (2.0 / 3.0) * np.log1p(0.691 * D)
-    c_EP = np.log(1.48) - (7.0 / 20.0) * e - lnD / 24.0
-    ln_h00 = np.log(1.8) - lnD
-    return c_RI, c_EI, c_RP, c_EP, ln_h00
-
-
-_ln_asymptote_consts = ln_asymptote_consts      # former private name (thermobear.loads.film imports it)
-
-
-def _ln_asymptotes_from(consts, lnM, lnL):
-    """Logs of the four NVM asymptotes and of h00 from :func:`ln_asymptote_consts` and ln M, ln L."""
-    c_RI, c_EI, c_RP, c_EP, ln_h00 = consts
-    return (c_RI - 2.0 * lnM, c_EI - (2.0 / 15.0) * lnM, c_RP + (2.0 / 3.0) * lnL,
-            c_EP - lnM / 12.0 + 0.75 * lnL, ln_h00)
-
-
-def _ln_asymptotes(lnM, lnL, D):
-    """Natural logs of the four NVM asymptotes and of the h00 cap (Nijenbanning, Venner & Moes 1994)."""
-    return _ln_asymptotes_from(ln_asymptote_consts(D), lnM, lnL)
-
-
-def _clip(x, lo, hi):
-    """``np.clip`` without its overhead (same values)."""
-    return np.minimum(np.maximum(x, lo), hi)
-
-
-def _ln_branches(lnM, lnL, D, with_H=True):
-    """ln H (with ``with_H``), ln iso, ln piezo and the logs of the four asymptotes of the NVM blend."""
-    ln_RI, ln_EI, ln_RP, ln_EP, ln_h00 = _ln_asymptotes(lnM, lnL, D)
-    ln_EIc = -0.25 * np.logaddexp(-4.0 * ln_EI, -4.0 * ln_h00)          # (H_EI^-4 + h00^-4)^(-1/4)
-    ln_iso = (2.0 / 3.0) * np.logaddexp(1.5 * ln_RI, 1.5 * ln_EIc)      # (H_RI^1.5 + H_EI'^1.5)^(2/3)
-    ln_piezo = -0.125 * np.logaddexp(-8.0 * ln_RP, -8.0 * ln_EP)        # (H_RP^-8 + H_EP^-8)^(-1/8)
-    if not with_H:
-        return ln_iso, ln_piezo, ln_RI, ln_EI, ln_RP, ln_EP
-    s = 1.5 * (1.0 + np.exp(-1.2 * np.exp(_clip(ln_EI - ln_RI, -EXP_MAX, EXP_MAX))))
-    ln_H = np.logaddexp(s * ln_iso, s * ln_piezo) / s
-    return ln_H, ln_iso, ln_piezo, ln_RI, ln_EI, ln_RP, ln_EP
-
-
-def _lnML(M, L):
-    M = np.asarray(M, dtype=float)
-    L = np.asarray(L, dtype=float)
-    return np.log(_clip(M, TINY, 1.0 / TINY)), np.log(_clip(L, TINY, 1.0 / TINY))
-
-
-def _check_MLD(M, L, D):
-    M = _arr("M", np.where(np.isposinf(np.asarray(M, dtype=float)), 1.0 / TINY, M), nonneg=True)
-    L = _arr("L", L, nonneg=True)
-    D = _arr("D", D, positive=True)
-    if np.any(D > 1.0 + 1e-12):
-        raise InputError("D = Rx/Ry", D, "must lie in (0, 1]")
-    return M, L, D
-
-
-@dataclass(frozen=True)
-class _Asym:
-    H_RI: np.ndarray
-    H_EI: np.ndarray
-    H_RP: np.ndarray
-    H_EP: np.ndarray
-
-
-def nvm_asymptotes(M, L, D):
-    r"""The four asymptotic central films of Nijenbanning, Venner & Moes (1994).
-
-    Parameters
-    ----------
-    M, L : array_like  Moes load and lubricant parameters [-]
-    D : array_like     Rx/Ry [-]
-
-    Returns
-    -------
-    object with H_RI, H_EI, H_RP, H_EP [-]  (H = (h/Rx)(2U)^(-1/2)):
-        H_RI = 145 (1 + 0.796 D^(14/15))^(-15/7) D^-1 M^-2
-        H_EI = 3.18 (1 + 0.006 ln D + 0.63 D^(4/7))^(-14/25) D^(-1/15) M^(-2/15)
-        H_RP = 1.29 (1 + 0.691 D)^(-2/3) L^(2/3)
-        H_EP = 1.48 (1 + 0.006 ln D + 0.63 D^(4/7))^(-7/20) D^(-1/24) M^(-1/12) L^(3/4)
-
-    Notes
-    -----
-    Nijenbanning, Venner & Moes, Wear 176 (1994) 217–229, coefficients as in
-    PHYSICS.md §5.2 (confirmed there against a public implementation).
-
-    Examples
-    --------
-    >>> a = nvm_asymptotes(8064.0, 23.9, 0.0309)
-    >>> round(float(a.H_EP), 2)
-    8.55
-    """
-    M, L, D = _check_MLD(M, L, D)
-    lnM, lnL = _lnML(M, L)
-    ln = _ln_asymptotes(lnM, lnL, D)[:4]
-    vals = [np.exp(_clip(x, -EXP_MAX, EXP_MAX)) for x in ln]
-    return _Asym(*[_out(v, M, L, D) for v in vals])
-
-
-def nvm_H(M, L, D):
-    r"""Dimensionless central film H = (h_c/Rx)(2U)^(-1/2) of Nijenbanning, Venner & Moes.
-
-    Parameters
-    ----------
-    M, L : array_like  Moes load and lubricant parameters [-] (see :func:`moes_parameters`)
-    D : array_like     Rx/Ry, 0 < D ≤ 1 [-]
-
-    Returns
-    -------
-    ndarray  H [-]
-
-    Notes
-    -----
-    H = { [H_RI^(3/2) + (H_EI^-4 + h00^-4)^(-3/8)]^(2s/3) + (H_RP^-8 + H_EP^-8)^(-s/8) }^(1/s),
-    s = 1.5 (1 + exp(−1.2 H_EI/H_RI)),  h00 = 1.8 D^-1
-    (Nijenbanning, Venner & Moes 1994; asymptotes in :func:`nvm_asymptotes`).
-
-    Form implemented: the dimensionally consistent one of PHYSICS.md §5.2, in
-    which both branches enter as H^s (the point-contact analogue of Moes'
-    line-contact blend (iso^s + piezo^s)^(1/s)).  A public implementation
-    raises the iso branch to 2/(3s) instead of 2s/3, which adds H to H^s; it
-    cannot be right at both ends (at low M it does not tend to H_RI).  The two
-    agree where the piezo branch dominates (209 inner contact: 8.65 vs 8.63).
-    The original paper could not be consulted here.  Computed in logarithms
-    so that M → 0 or ∞ gives no overflow.
-
-    Examples
-    --------
-    >>> round(float(nvm_H(8064.0, 23.9, 0.0309)), 2)
-    8.65
-    """
-    M, L, D = _check_MLD(M, L, D)
-    lnM, lnL = _lnML(M, L)
-    ln_H = _ln_branches(lnM, lnL, D)[0]
-    return _out(np.exp(_clip(ln_H, -EXP_MAX, EXP_MAX)), M, L, D)
 
 
 def film_thickness_nvm(Q, Rx, Ry, u, eta, alpha_p, E_prime):
@@ -554,123 +436,15 @@ def specific_film_thickness(h, Rq1, Rq2):
     1.42
     """
     h = _arr("h", h, nonneg=True)
-    sigma = np.asarray(composite_roughness(Rq1, Rq2), dtype=float)
-    if np.any(sigma <= 0):
+    sigma = composite_roughness(Rq1, Rq2)
+    if not (np.min(sigma) if np.ndim(sigma) else sigma) > 0:
         raise InputError("Rq1, Rq2", (Rq1, Rq2), "composite roughness must be > 0 [m] (Lambda undefined for smooth surfaces)")
-    return _out(h / sigma, h, Rq1, Rq2)
+    return h / sigma if np.ndim(h) else _out(h / sigma, Rq1, Rq2)
 
 
 # ---------------------------------------------------------------------------
 # Regime
 # ---------------------------------------------------------------------------
-@dataclass(frozen=True)
-class Regime:
-    """Lubrication regime per contact (arrays broadcast from the inputs).
-
-    Attributes
-    ----------
-    code : ndarray of str       "IVR" | "IVE" | "PVR" | "EHL"
-    ln_iso_over_piezo : ndarray ln(iso branch / piezo branch) of the NVM blend [-];
-                                > 0 → iso-viscous (IVR or IVE), < 0 → piezo-viscous
-    ln_RI_over_EI : ndarray     ln(H_RI / H_EI) (iso asymptotes) [-]; > 0 → rigid (IVR)
-    ln_EP_over_RP : ndarray     ln(H_EP / H_RP) (piezo branch) [-]; > 0 → rigid (PVR)
-    M, L, D : ndarray           Moes parameters used [-]
-    index : ndarray of int      the code as a position in :data:`REGIMES`
-
-    Properties ``iso_over_piezo``, ``RI_over_EI``, ``EP_over_RP`` give the ratios themselves
-    (e^±700 at most) and ``H`` the NVM dimensionless central film (:func:`nvm_H` of M, L, D).
-
-    A ratio near 1 means the contact sits near that boundary of the Moes map;
-    |log10(ratio)| is the distance in decades.  An unloaded contact (Q = 0)
-    has code "IVR" and M = 0; its ratios and H are finite but floored values
-    (1e±304 at most) with no physical meaning.
-    """
-
-    code: np.ndarray
-    ln_iso_over_piezo: np.ndarray
-    ln_RI_over_EI: np.ndarray
-    ln_EP_over_RP: np.ndarray
-    M: np.ndarray
-    L: np.ndarray
-    D: np.ndarray
-    index: np.ndarray
-
-    @property
-    def iso_over_piezo(self):
-        """Iso branch / piezo branch of the NVM blend [-]."""
-        return _exp_out(self.ln_iso_over_piezo)
-
-    @property
-    def RI_over_EI(self):
-        """H_RI / H_EI [-]."""
-        return _exp_out(self.ln_RI_over_EI)
-
-    @property
-    def EP_over_RP(self):
-        """H_EP / H_RP [-]."""
-        return _exp_out(self.ln_EP_over_RP)
-
-    @property
-    def H(self):
-        """NVM dimensionless central film H = (h_c/Rx)(2U)^(-1/2) [-] (:func:`nvm_H`)."""
-        return nvm_H(self.M, self.L, self.D)
-
-
-def _exp_out(x):
-    v = np.exp(_clip(x, -EXP_MAX, EXP_MAX))
-    return float(v) if np.ndim(v) == 0 else v
-
-
-def _regime_from_ln(lnM, lnL, D, loaded, scalar):
-    ln_iso, ln_piezo, ln_RI, ln_EI, ln_RP, ln_EP = _ln_branches(lnM, lnL, D, with_H=False)
-    d_ip, d_re, d_ep = ln_iso - ln_piezo, ln_RI - ln_EI, ln_EP - ln_RP
-    # iso branch dominant: IVR (0) if H_RI ≥ H_EI else IVE (1); piezo: PVR (2) if H_RP ≤ H_EP else EHL (3)
-    idx = np.where(d_ip >= 0, d_re < 0, 2 + (d_ep < 0)) * loaded                 # unloaded: IVR
-    code = _REGIME_CODES[idx]
-    M = np.where(loaded, np.exp(_clip(lnM, -EXP_MAX, EXP_MAX)), 0.0)
-    L = np.exp(_clip(lnL, -EXP_MAX, EXP_MAX))
-    fields = (d_ip, d_re, d_ep, M, L, D)
-    if scalar:
-        return Regime(str(code), *[float(f) for f in fields], int(idx))
-    return Regime(code, *[np.asarray(f, dtype=float) for f in fields], idx)
-
-
-def moes_regime(M, L, D):
-    r"""Lubrication regime on the Moes map from M, L and D = Rx/Ry.
-
-    Parameters
-    ----------
-    M, L : array_like  Moes load and lubricant parameters [-] (M = inf allowed: u → 0)
-    D : array_like     Rx/Ry, 0 < D ≤ 1 [-]
-
-    Returns
-    -------
-    Regime  codes and the dominant-term ratios
-
-    Notes
-    -----
-    Dominant term of the NVM blend (PHYSICS.md §5.3; seed 004 §3.2, which
-    rebuilds the Moes map from the asymptotes "as explained in [27]"):
-    iso-viscous if the iso branch (H_RI^1.5 + H_EI'^1.5)^(2/3) exceeds the
-    piezo branch (H_RP^-8 + H_EP^-8)^(-1/8) (H_EI' = (H_EI^-4 + h00^-4)^(-1/4));
-    within the iso branch rigid if H_RI > H_EI (where the two asymptotes
-    cross, as a Moes map draws them; the blending cap h00 is not used here);
-    within the piezo branch rigid if H_RP < H_EP.  These cut-offs are
-    derived, not published.
-
-    Examples
-    --------
-    >>> moes_regime(8064.0, 23.9, 0.0309).code
-    'EHL'
-    >>> moes_regime([1.0, 1e4], [0.5, 20.0], 0.05).code.tolist()
-    ['IVR', 'EHL']
-    """
-    scalar = all(np.ndim(x) == 0 for x in (M, L, D))
-    M, L, D = _check_MLD(M, L, D)
-    lnM, lnL = _lnML(M, L)
-    return _regime_from_ln(lnM, lnL, D, M > 0, scalar)
-
-
 def lubrication_regime(Q, Rx, Ry, u, eta, alpha_p, E_prime):
     r"""Lubrication regime of each contact ("IVR" | "IVE" | "PVR" | "EHL").
 
@@ -694,95 +468,8 @@ def lubrication_regime(Q, Rx, Ry, u, eta, alpha_p, E_prime):
     >>> lubrication_regime([4527., 1e-3], 5.109e-3, 165.1e-3, 6.25, 0.04, 2.3e-8, 228e9).code.tolist()
     ['EHL', 'IVR']
     """
-    Qa, Rxa, ratio, ua, etaa, alphaa, Ea = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
-    lnU2 = np.log(np.maximum(2.0 * etaa * ua / (Ea * Rxa), TINY))
-    lnM = np.log(np.maximum(Qa / (Ea * Rxa**2), TINY)) - 0.75 * lnU2
-    lnL = np.log(np.maximum(alphaa * Ea, TINY)) + 0.25 * lnU2
-    scalar = all(np.ndim(x) == 0 for x in (Q, Rx, Ry, u, eta, alpha_p, E_prime))
-    return _regime_from_ln(lnM, lnL, 1.0 / ratio, Qa > 0, scalar)
-
-
-# ---------------------------------------------------------------------------
-# Moes map boundaries
-# ---------------------------------------------------------------------------
-@dataclass(frozen=True)
-class MoesMapBoundaries:
-    """Regime boundaries on the (M, L) Moes map for one D = Rx/Ry.
-
-    Attributes
-    ----------
-    D : float                     Rx/Ry [-]
-    M : ndarray                   grid of M [-]
-    L_iso_piezo : ndarray         L where iso branch = piezo branch, at each M
-                                  (below: iso-viscous, above: piezo-viscous)
-    M_rigid_elastic_iso : float   M where H_RI = H_EI (left: IVR, right: IVE);
-                                  meaningful below L_iso_piezo
-    L_rigid_elastic_piezo : ndarray  L where H_RP = H_EP, at each M
-                                  (L = M (C_RP/C_EP)^12; above: PVR, below: EHL);
-                                  meaningful above L_iso_piezo
-    """
-
-    D: float
-    M: np.ndarray
-    L_iso_piezo: np.ndarray
-    M_rigid_elastic_iso: float
-    L_rigid_elastic_piezo: np.ndarray
-
-
-def moes_map_boundaries(D, M=None):
-    r"""Boundary curves of the Moes regime map for plotting.
-
-    Parameters
-    ----------
-    D : float          Rx/Ry, 0 < D ≤ 1 [-]
-    M : array_like     values of M at which to give the curves [-]
-                       (default: 200 points log-spaced over 1e-1 … 1e5)
-
-    Returns
-    -------
-    MoesMapBoundaries
-
-    Notes
-    -----
-    Same criteria as :func:`moes_regime`.  H_RP = H_EP is explicit:
-    ln L = 12 (ln C_RP − ln C_EP) + ln M.  H_RI = H_EI is a root in M found by
-    bisection on ln M; iso = piezo is found for all M at once by a vectorised
-    bisection on ln L (the piezo branch increases monotonically with L).
-    Computed here: D = 1 → M ≈ 4.6 and M ≈ 45 L; D = 0.1 → 23 and 15 L
-    (PHYSICS.md §5.3).
-
-    Examples
-    --------
-    >>> b = moes_map_boundaries(1.0, M=[100.0])
-    >>> round(b.M_rigid_elastic_iso, 1), round(float(100.0 / b.L_rigid_elastic_piezo[0]), 1)
-    (4.6, 44.7)
-    """
-    D = float(D)
-    if not (np.isfinite(D) and 0.0 < D <= 1.0):
-        raise InputError("D = Rx/Ry", D, "must lie in (0, 1]")
-    M = np.logspace(-1, 5, 200) if M is None else _arr("M", M, positive=True)
-    lnM = np.log(M)
-    lnCRP = np.log(1.29) - (2.0 / 3.0) * np.log1p(0.691 * D)
-    lnCEP = np.log(1.48) - (7.0 / 20.0) * np.log1p(0.006 * np.log(D) + 0.63 * D ** (4.0 / 7.0)) - np.log(D) / 24.0
-    L_re_piezo = np.exp(12.0 * (lnCRP - lnCEP) + lnM)
-
-    # H_RI = H_EI : g(lnM) = ln_RI - ln_EI, strictly decreasing in lnM
-    lo, hi = np.array(-60.0), np.array(60.0)
-    for _ in range(100):
-        mid = 0.5 * (lo + hi)
-        ln = _ln_branches(mid, np.array(0.0), D)
-        g = ln[3] - ln[4]
-        lo, hi = np.where(g > 0, mid, lo), np.where(g > 0, hi, mid)
-    M_re_iso = float(np.exp(0.5 * (lo + hi)))
-
-    # iso = piezo : for each M, bisection on lnL of ln_piezo - ln_iso (increasing in lnL)
-    lo = np.full_like(lnM, -60.0)
-    hi = np.full_like(lnM, 60.0)
-    for _ in range(100):
-        mid = 0.5 * (lo + hi)
-        ln = _ln_branches(lnM, mid, D)
-        f = ln[2] - ln[1]
-        lo, hi = np.where(f < 0, mid, lo), np.where(f < 0, hi, mid)
-    L_iso_piezo = np.exp(0.5 * (lo + hi))
-    return MoesMapBoundaries(D=D, M=M, L_iso_piezo=L_iso_piezo, M_rigid_elastic_iso=M_re_iso,
-                             L_rigid_elastic_piezo=L_re_piezo)
+    r = ehl_contacts(Q, Rx, Ry, u, E_prime).regime(eta, alpha_p)
+    if not _scalar(Q, Rx, Ry, u, eta, alpha_p, E_prime):
+        return r
+    return Regime(str(r.code), *(float(getattr(r, f)) for f in ("ln_iso_over_piezo", "ln_RI_over_EI",
+                                                                "ln_EP_over_RP", "M", "L", "D")), int(r.index))

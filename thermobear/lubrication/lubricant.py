@@ -295,6 +295,8 @@ def cragoe_cp(rho15, T_C):
 # ---------------------------------------------------------------------------
 def _out(x, like):
     """Return a float for scalar input, else an ndarray."""
+    if type(x) is float:
+        return x
     return float(x) if np.ndim(like) == 0 else np.asarray(x, dtype=float)
 
 
