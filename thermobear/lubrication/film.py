@@ -338,7 +338,7 @@ def moes_parameters(Q, Rx, Ry, u, eta, alpha_p, E_prime):
     Notes
     -----
     Moes (1992); Nijenbanning, Venner & Moes, Wear 176 (1994) 217; seed 004
-    eq 9 (with 2U*); PHYSICS.md §5.2.  U, G, W are the Hamrock groups of
+    eq 9 (with 2U*).  U, G, W are the Hamrock groups of
     :func:`hamrock_dowson_groups`, so 2U is the sum-velocity group.  M = inf
     where u = 0, M = 0 where Q = 0.
 
@@ -376,7 +376,7 @@ def film_thickness_nvm(Q, Rx, Ry, u, eta, alpha_p, E_prime):
     -----
     Valid over all four regimes (IVR, IVE, PVR, EHL), unlike Hamrock–Dowson.
     For narrow ellipses (D ≈ 0.03) NVM gives 20–30 % more than Hamrock–Dowson
-    (PHYSICS.md §5.2: 209 inner contact 0.92 vs 0.69 µm).
+    (209 inner contact, Hamrock & Dowson's example inputs: 0.92 vs 0.69 µm).
 
     Examples
     --------
@@ -427,7 +427,7 @@ def specific_film_thickness(h, Rq1, Rq2):
 
     Notes
     -----
-    Seed 000 eq 19; PHYSICS.md §5.4.  Both roughnesses zero raises InputError
+    Seed 000 eq 19 (Λ with the RMS roughness Rq, not Ra).  Both roughnesses zero raises InputError
     (Λ undefined for ideally smooth surfaces).
 
     Examples

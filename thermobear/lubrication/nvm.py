@@ -212,8 +212,8 @@ def nvm_asymptotes(M, L, D):
 
     Notes
     -----
-    Nijenbanning, Venner & Moes, Wear 176 (1994) 217–229, coefficients as in
-    PHYSICS.md §5.2 (confirmed there against a public implementation).
+    Nijenbanning, Venner & Moes, Wear 176 (1994) 217–229; the coefficients agree with a public
+    implementation that cites the paper (the paper itself could not be consulted here).
 
     Examples
     --------
@@ -246,7 +246,7 @@ def nvm_H(M, L, D):
     s = 1.5 (1 + exp(−1.2 H_EI/H_RI)),  h00 = 1.8 D^-1
     (Nijenbanning, Venner & Moes 1994; asymptotes in :func:`nvm_asymptotes`).
 
-    Form implemented: the dimensionally consistent one of PHYSICS.md §5.2, in
+    Form implemented: the dimensionally consistent one, in
     which both branches enter as H^s (the point-contact analogue of Moes'
     line-contact blend (iso^s + piezo^s)^(1/s)).  A public implementation
     raises the iso branch to 2/(3s) instead of 2s/3, which adds H to H^s; it
@@ -356,7 +356,7 @@ def moes_regime(M, L, D):
 
     Notes
     -----
-    Dominant term of the NVM blend (PHYSICS.md §5.3; seed 004 §3.2, which
+    Dominant term of the NVM blend (Nijenbanning, Venner & Moes 1994; seed 004 §3.2, which
     rebuilds the Moes map from the asymptotes "as explained in [27]"):
     iso-viscous if the iso branch (H_RI^1.5 + H_EI'^1.5)^(2/3) exceeds the
     piezo branch (H_RP^-8 + H_EP^-8)^(-1/8) (H_EI' = (H_EI^-4 + h00^-4)^(-1/4));
@@ -424,8 +424,8 @@ def moes_map_boundaries(D, M=None):
     ln L = 12 (ln C_RP − ln C_EP) + ln M.  H_RI = H_EI is a root in M found by
     bisection on ln M; iso = piezo is found for all M at once by a vectorised
     bisection on ln L (the piezo branch increases monotonically with L).
-    Computed here: D = 1 → M ≈ 4.6 and M ≈ 45 L; D = 0.1 → 23 and 15 L
-    (PHYSICS.md §5.3).
+    Computed here: D = 1 → M ≈ 4.6 and M ≈ 45 L; D = 0.1 → 23 and 15 L (derived boundaries,
+    not published cut-offs).
 
     Examples
     --------
