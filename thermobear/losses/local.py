@@ -176,12 +176,47 @@ def _frozen(a):
 def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rotating: str = "inner",
                      hertz_method: str = "exact", control: str | None = None, centrifugal: bool = True,
                      load: LoadDistribution | None = None) -> ContactSet:
-    """Load distribution, Hertz ellipses, kinematics and every temperature-independent loss
-    factor of each contact (see :func:`bearing_losses` for the parameters).
+    r"""Temperature-independent part of the local model: loads, Hertz ellipses, kinematics and the
+    loss factors of every contact, held in a frozen :class:`ContactSet`.
 
-    The operating points are the broadcast of ``Fa``, ``Fr``, ``n_rpm`` and the batch of ``load``
-    (a load distribution solved for array loads has a leading batch axis B; ``n_rpm`` of shape
-    (B,) then gives one speed per point)."""
+    Parameters
+    ----------
+    brg : BallBearing
+    Fa, Fr : array_like          axial / radial load [N]
+    n_rpm : array_like           speed of the rotating ring [rpm]
+    M : float, optional          tilting moment [N m] (tilt free); None holds the tilt
+    rotating : str               ``"inner"`` or ``"outer"``
+    hertz_method : str           ``"exact"`` or an approximation (``thermobear.contact.hertz.METHODS``)
+    control : str, optional      ball spin control; default ``"radial"`` (thrust), ``"outer"`` otherwise
+    centrifugal : bool           add F_c/cos α to the outer contact load
+    load : LoadDistribution, optional
+                                 a solved load distribution (must match Fa, Fr, M); with a leading
+                                 batch axis B when solved for array loads
+
+    Returns
+    -------
+    ContactSet   operating points ``batch`` = the broadcast of Fa, Fr, n_rpm and the load's batch
+                 (e.g. ``n_rpm`` of shape (B,) with a batched load: one speed per point)
+
+    Notes
+    -----
+    Per contact: Hertz (:func:`~thermobear.contact.hertz.hertz`), rolling without slip at the
+    contact centres with one rigid cage (:func:`~thermobear.contact.kinematics.caged_ball_kinematics`),
+    the outer load raised by the centrifugal force F_c = ½ m dm ω_c² / cos α (Harris 2001 eq 8.9),
+    and the μ-free losses: Heathcote sliding and pivoting powers at μ = 1
+    (:func:`~thermobear.losses.sliding.sliding_power_heathcote`,
+    :func:`~thermobear.losses.sliding.pivoting_moment` × |ω_s|) and the hysteresis power
+    :func:`~thermobear.losses.sliding.hysteresis_moment` × |ω_roll|; the contacts prepared for the film,
+    regime (:func:`~thermobear.lubrication.film.ehl_contacts`) and rolling-force formulas
+    (:func:`~thermobear.losses.rolling.rolling_contacts`).
+
+    Examples
+    --------
+    >>> from thermobear.contact.geometry import bearing
+    >>> cs = prepare_contacts(bearing("7210"), Fa=[300.0, 450.0], Fr=650.0, n_rpm=[3200.0, 4800.0])
+    >>> cs.batch, cs.Q.shape
+    ((2,), (2, 2, 15))
+    """
     if rotating not in ("inner", "outer"):
         raise InputError("rotating", rotating, "must be 'inner' or 'outer'")
     n = np.asarray(n_rpm, dtype=float)

@@ -410,7 +410,7 @@ def composite_roughness(Rq1, Rq2):
     """
     a = _arr("Rq1", Rq1, nonneg=True)
     b = _arr("Rq2", Rq2, nonneg=True)
-    return _out(np.hypot(a, b), Rq1, Rq2)
+    return np.hypot(a, b).item() if type(a) is float and type(b) is float else _out(np.hypot(a, b), Rq1, Rq2)
 
 
 def specific_film_thickness(h, Rq1, Rq2):
@@ -439,7 +439,7 @@ def specific_film_thickness(h, Rq1, Rq2):
     sigma = composite_roughness(Rq1, Rq2)
     if not (np.min(sigma) if np.ndim(sigma) else sigma) > 0:
         raise InputError("Rq1, Rq2", (Rq1, Rq2), "composite roughness must be > 0 [m] (Lambda undefined for smooth surfaces)")
-    return h / sigma if np.ndim(h) else _out(h / sigma, Rq1, Rq2)
+    return h / sigma if isinstance(h, np.ndarray) and h.ndim else _out(h / sigma, Rq1, Rq2)
 
 
 # ---------------------------------------------------------------------------
