@@ -11,6 +11,7 @@ from thermobear.contact.geometry import BallBearing, bearing, bearing_names
 from thermobear.loads.static import load_distribution, LoadDistribution, needs_high_speed
 from thermobear.loads.highspeed import load_distribution_high_speed, FilmInputs
 from thermobear.loads.film import film_load_distribution, FilmLoadDistribution
+from thermobear.rating import rating_life, RatingLife
 from thermobear.contact.kinematics import ball_kinematics
 from thermobear.lubrication.lubricant import Lubricant, lubricant, lubricant_names
 from thermobear.lubrication.film import film_thickness, lubrication_regime
