@@ -11,8 +11,8 @@ from thermobear.rating.iso281 import (CONTAMINATION_LEVELS, FC_GAMMA_RADIAL, FC_
 
 
 def _lp_shape(g, ratio=1.0):
-    """Lundberg–Palmgren γ-dependence of a raceway pair with equal groove radii (Harris & Kotzalas
-    2007 ch. 11): γ^0.3 (1-γ)^1.39 (1+γ)^(-1/3) [1 + (ratio ((1-γ)/(1+γ))^1.72)^(10/3)]^(-0.3); ratio is
+    """Lundberg–Palmgren γ-dependence of a raceway pair with equal groove radii (Harris 2001
+    ch. 18): γ^0.3 (1-γ)^1.39 (1+γ)^(-1/3) [1 + (ratio ((1-γ)/(1+γ))^1.72)^(10/3)]^(-0.3); ratio is
     the inner/outer rating ratio of the load-zone integrals, 1.04 radial (0.407/0.389), 1 thrust."""
     s = g**0.3 * (1 - g) ** 1.39 / (1 + g) ** (1 / 3)
     return s * (1 + (ratio * ((1 - g) / (1 + g)) ** 1.72) ** (10 / 3)) ** -0.3

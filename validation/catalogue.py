@@ -301,9 +301,9 @@ def report(cat: dict, n_written: int) -> list[str]:
     L += ["", "C(pub geometry) uses the published Z, D, dm with the estimate filling any value not published "
           "(marked –) and the method's osculations, so the columns isolate the geometry estimate.  Ball-count "
           f"errors: {', '.join(f'{x:+d}' for x in errs)}.", "",
-          "Deep groove bearings whose filling angle stays below the method's 180° minimum even with dm enlarged "
-          f"by 3 % (the method's limit; kept, one ball fewer than the maximum would need a larger dm): "
-          f"{', '.join(low) if low else 'none'}.", "",
+          "Deep groove bearings whose filling angle stays below the method's 180° minimum (one more ball would "
+          "need dm larger than the method's 1.03 P; kept with the smaller Z, which underestimates C by about "
+          f"(Z/(Z+1))^(2/3)): {', '.join(low) if low else 'none'}.", "",
           "## Computed ratings against makers' published ratings (sanity check, not adjusted)", "",
           "| bearing | C est [kN] | C maker [kN] | diff | C0 est [kN] | C0 maker [kN] | diff | maker, source |",
           "|---|---|---|---|---|---|---|---|"]

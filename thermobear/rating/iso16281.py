@@ -15,7 +15,7 @@ Equations as implemented in the public ISO/TS 16281 example code minzhun/ISO1628
 (``BallBearing.py``, whose comments number them eqs 19–29), which reproduces the
 standard's example set; see tests/test_rating_iso16281.py for the reference cases.
 The constants 0.407 and 0.389 are the Lundberg–Palmgren ratios F_r/(Z Q_e cos α) of a
-rotating and a stationary ring under a half-circle load zone (Harris & Kotzalas 2007 ch. 11),
+rotating and a stationary ring under a half-circle load zone (Harris 2001 ch. 18),
 so that L10r = 1 at F_r = C for a zero-clearance radial bearing.
 
 References
@@ -25,8 +25,8 @@ References
     rolling element loads, reference rating life).
 [2] minzhun/ISO16281 (GitHub), BallBearing.py and Test_BallBearing.py: an implementation of
     [1] with the 7-ball example bearing and its published reference results.
-[3] Harris, T. A., Kotzalas, M. N. (2007) Essential Concepts of Bearing Technology, 5th ed.,
-    ch. 11 (Lundberg–Palmgren raceway capacities, load-zone integrals).
+[3] Harris, T. A. (2001) Rolling Bearing Analysis, 4th ed., Wiley, ch. 18 (Lundberg–Palmgren raceway
+    capacities, load-zone integrals).
 """
 from __future__ import annotations
 

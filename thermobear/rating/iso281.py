@@ -8,8 +8,8 @@ r"""Dynamic load rating, equivalent load and rating life of ball bearings (ISO 2
   simplified table), fatigue load limit C_u (the standard's approximation from C0).
 
 Inputs are SI (m, N, m²/s; speeds in rpm as the name says); the standard's mm and mm²/s
-appear only inside.  Table and equation names follow ISO 281:2007 [1]; where a clause
-number is given it is the one of the 2007 edition as cited by the references below.
+appear only inside.  Tables are cited by number and content; the numbers are those we recall for
+ISO 281:2007 [1] (the standard itself was not at hand), the content names each table unambiguously.
 
 References
 ----------
@@ -19,8 +19,8 @@ References
     (a_ISO, κ, ν1, e_C, C_u).
 [2] ISO/TR 1281-1:2008 and ISO/TR 1281-2:2008, Explanatory notes on ISO 281 (the
     Lundberg–Palmgren form behind f_c; the a_ISO model).
-[3] Harris, T. A., Kotzalas, M. N. (2007) Essential Concepts of Bearing Technology, 5th ed.,
-    CRC Press, ch. 11 (load ratings and fatigue life, the ISO 281 life modification factor).
+[3] Harris, T. A. (2001) Rolling Bearing Analysis, 4th ed., Wiley, ch. 18 (fatigue life: basic theory
+    and rating standards; the Lundberg–Palmgren raceway capacities behind f_c).
 """
 from __future__ import annotations
 

@@ -20,8 +20,11 @@ Everything is SI at the interface (m, N, Pa, rad); the standard's mm appear only
 
 References
 ----------
-[1] ISO 76:2006, Rolling bearings — Static load ratings: §5 (radial ball bearings: C0r, P0r,
-    Table 1 X0/Y0, Table 2 f0), §7 (thrust ball bearings: C0a, P0a, Table 3 f0).
+[1] ISO 76:2006, Rolling bearings — Static load ratings: clauses "Radial ball bearings" (basic static
+    radial load rating C0r, static equivalent radial load P0r, tables of X0/Y0 and of f0) and "Thrust
+    ball bearings" (C0a, P0a, table of f0); guidance on the static safety factor s0.  Table numbers below
+    (Table 1 X0/Y0, Table 2 f0 radial, Table 3 f0 thrust) are those we recall for the 2006 edition; the
+    copy of the standard was not at hand, so each citation also names the table's content.
 [2] ISO/TR 10657:2021, Explanatory notes on ISO 76 (derivation of f0 from the Hertz contact).
 """
 from __future__ import annotations
@@ -37,7 +40,7 @@ __all__ = ["F0_GAMMA_RADIAL", "F0_RADIAL", "F0_GAMMA_THRUST", "F0_THRUST", "P0_R
            "static_safety_factor", "contact_pressures", "pressure_ratio"]
 
 #: Reference contact pressure of ISO 76 for ball bearings other than self-aligning [Pa]
-#: (ISO 76:2006 §5.1; SKF catalogue "Static load ratings" quotes the same 4 200 MPa).
+#: (ISO 76:2006, definition of C0; SKF catalogue "Static load ratings" quotes the same 4 200 MPa).
 P0_REFERENCE_BALL_PA = 4.2e9
 
 #: γ = D cos α / dm grid of ISO 76:2006 Table 2 (radial and angular contact groove ball bearings).
@@ -132,7 +135,7 @@ def _check_kind(kind):
 
 
 def static_load_rating(D, dm, Z, alpha, kind, i=1):
-    r"""Basic static load rating C0 of a ball bearing [N] (ISO 76:2006 §5.2, §7.2).
+    r"""Basic static load rating C0 of a ball bearing [N] (ISO 76:2006, basic static radial / axial load rating).
 
     Parameters
     ----------
@@ -176,7 +179,7 @@ def static_load_rating(D, dm, Z, alpha, kind, i=1):
 
 
 def static_equivalent_load(Fr, Fa, alpha, kind):
-    r"""Static equivalent load P0 of a single-row ball bearing [N] (ISO 76:2006 §5.3, §7.3).
+    r"""Static equivalent load P0 of a single-row ball bearing [N] (ISO 76:2006, static equivalent radial / axial load).
 
     Parameters
     ----------
@@ -209,7 +212,7 @@ def static_equivalent_load(Fr, Fa, alpha, kind):
         if abs(np.cos(alpha)) < 1e-9:
             if Fr.size and Fr.max() > 0:
                 raise InputError("Fr", Fr, "a thrust ball bearing with α = 90° carries no radial load "
-                                 "(ISO 76 §7.3); must be 0 [N]")
+                                 "(ISO 76, static equivalent axial load); must be 0 [N]")
             return out(Fa)
         return out(2.3 * Fr * np.tan(alpha) + Fa)
     if kind == "deep_groove":
@@ -222,7 +225,7 @@ def static_equivalent_load(Fr, Fa, alpha, kind):
 
 
 def static_safety_factor(C0, P0):
-    r"""Static safety factor s0 = C0 / P0 [-] (ISO 76:2006 Annex A).
+    r"""Static safety factor s0 = C0 / P0 [-] (ISO 76:2006, static safety factor guidance).
 
     Parameters
     ----------
@@ -284,7 +287,7 @@ def pressure_ratio(p_max):
     Returns
     -------
     float or ndarray  ratio [-]; > 1 means the load exceeds what defines C0 (permanent
-    deformation above about 1e-4 D, ISO 76:2006 §3)
+    deformation above about 1e-4 D, ISO 76:2006 definition of C0)
 
     Examples
     --------
