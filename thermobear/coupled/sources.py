@@ -32,7 +32,8 @@ from thermobear.thermal import ROLES, NetworkTemplate, ThermalNetwork, prepare_n
 from thermobear.validity import T_LUBRICANT_REFUSE_C
 
 __all__ = ["LocalSources", "SKFSources", "SKFLosses", "Coupling", "loss_sources", "network_template",
-           "family_network", "network_context", "scene_losses", "skf_losses"]
+           "family_network", "network_context", "scene_losses", "skf_losses", "Prepared", "prepare",
+           "prepared_for"]
 
 _SKF_MU_EHL = {"mineral": "mineral", "PAO": "synthetic", "ester": "synthetic", "ester+vegetal": "synthetic"}
 
@@ -294,3 +295,53 @@ def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oi
             "Jones–Harris high-speed (centrifugal, gyroscopic)" if hs == "yes" else
             "Jones–Harris low-speed, rigid rings", models["load_model"][1])
     return dataclasses.replace(r, models_used=used)
+
+
+@dataclass(frozen=True)
+class Prepared:
+    """What the thermal solution of a scene family computes once, prepared explicitly and reused for
+    any number of operating points (:func:`prepare`): the checked network template with its
+    bearing-level values, and the coupling of losses and nodes.
+
+    It serves the scenes that share its network file, parameter overrides, imposed node names and
+    bearing (:meth:`serves`); the solvers refuse it for another scene.
+    """
+
+    key: tuple
+    bearing: object
+    template: NetworkTemplate
+    coupling: "Coupling"
+
+    def serves(self, scene: Scene) -> bool:
+        """True when ``scene`` belongs to the family this was prepared for."""
+        return _prepared_key(scene) == self.key and scene.bearing == self.bearing
+
+
+def _prepared_key(scene: Scene) -> tuple:
+    return (scene.network, scene.path, tuple(sorted((k, v) for k, v in scene.network_parameters.items() if "." in k)),
+            tuple(sorted(scene.T_fixed_C)))
+
+
+def prepare(scene: Scene) -> Prepared:
+    """The network template and coupling of a scene's family, computed once (see :class:`Prepared`).
+
+    >>> import thermobear as tb
+    >>> s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
+    >>> p = prepare(s)
+    >>> p.serves(s.with_(n_rpm=6500.0)), p.serves(s.with_(bearing="6210"))
+    (True, False)
+    """
+    if scene.network is None:
+        raise InputError("thermal.network", None, "a scene with a thermal network (no network: nothing to prepare)")
+    template = network_template(scene, fixed_placeholders=True)
+    return Prepared(key=_prepared_key(scene), bearing=scene.bearing, template=template, coupling=Coupling.of(template))
+
+
+def prepared_for(scene: Scene, prepared=None) -> Prepared:
+    """``prepared`` when it serves ``scene`` (InputError when it does not), else :func:`prepare`."""
+    if prepared is None:
+        return prepare(scene)
+    if not isinstance(prepared, Prepared) or not prepared.serves(scene):
+        raise InputError("prepared", type(prepared).__name__, "the prepare(scene) of this scene's family (same network, "
+                         "overrides, imposed nodes and bearing)")
+    return prepared

@@ -40,11 +40,11 @@ from thermobear.coupled.fixedpoint import solve_coupled
 from thermobear.coupled.pipeline import (Family, families, family_contacts, family_loads, film_temperature_C,
                                         split_failures)
 from thermobear.coupled.limits import point_warnings
-from thermobear.coupled.sources import Coupling, family_network, loss_sources, network_template
+from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepared_for
 from thermobear.errors import ExtrapolationWarning, InputError, NoConvergence, SolverError, ThermalRunaway
 from thermobear.models import plan_many
 from thermobear.scene import Scene
-from thermobear.thermal.solve import batched_solve, solve_steady
+from thermobear.thermal.solve import batched_solve, solve_linear
 from thermobear.validity import T_LUBRICANT_REFUSE_C
 
 __all__ = ["SteadyState", "steady_state", "steady_states", "T_LIMIT_K"]
@@ -238,7 +238,7 @@ def _finish(fam: Family, net, src, cp: Coupling, template, nw: _Newton, tol_K) -
         warnings.simplefilter("ignore", ExtrapolationWarning)
         r = src.result(x_C)
     parts = src.parts(x_C)
-    st = solve_steady(net, _sources_matrix(net, cp, parts), T_guess_K=nw.T)
+    st = solve_linear(net, _sources_matrix(net, cp, parts), nw.T)
     gap = np.abs(st.T_K[:, free] @ cp.C.T - nw.x).max(axis=1)
     bal = np.atleast_1d(st.balance_W)
     flows = {k: np.atleast_1d(v) for k, v in st.flows_W.items()}
@@ -302,13 +302,13 @@ def _batched(load):
     return take(load, np.array([0]), 1) if np.ndim(load.delta_a) == 0 else load
 
 
-def _solve_family(fam: Family, tol_K, load=None) -> list:
+def _solve_family(fam: Family, tol_K, load=None, prepared=None) -> list:
     """Per point of a family: a SteadyState or the exception that stopped it."""
     try:
-        template = network_template(fam.scene, fixed_placeholders=True)
-        cp = Coupling.of(template)
+        pre = prepared_for(fam.scene, prepared if prepared is not None and prepared.serves(fam.scene) else None)
     except InputError as exc:
         return [exc] * fam.B
+    template, cp = pre.template, pre.coupling
     if load is not None:
         return _solve_loaded(fam, load, template, cp, tol_K)
     if fam.models["load_model"][0] == "film":
@@ -390,7 +390,7 @@ def _film_family(fam: Family, template, cp: Coupling, tol_K) -> list:
     return out
 
 
-def steady_states(scenes, *, tol_K: float = 1e-6, load=None) -> list:
+def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> list:
     """Coupled steady states of many operating points, solved together.
 
     Parameters
@@ -401,6 +401,8 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None) -> list:
     tol_K : float              Newton tolerance on the node temperatures [K]
     load : LoadDistribution    optional loads to use instead of the model's (one scene, or a batch
                                matching a single family)
+    prepared : Prepared        :func:`~thermobear.coupled.sources.prepare` of a family, reused for the
+                               points it serves (the others are prepared here)
 
     Returns
     -------
@@ -421,16 +423,17 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None) -> list:
     if load is not None and len(fams) != 1:
         raise InputError("load", "LoadDistribution", "injected loads need the scenes of one family")
     for fam in fams:
-        for i, r in zip(fam.index, _solve_family(fam, tol_K, None if load is None else _batched(load))):
+        for i, r in zip(fam.index, _solve_family(fam, tol_K, None if load is None else _batched(load), prepared)):
             out[i] = r
     return out
 
 
-def steady_state(scene: Scene, *, tol_K: float = 1e-6, load=None) -> SteadyState:
+def steady_state(scene: Scene, *, tol_K: float = 1e-6, load=None, prepared=None) -> SteadyState:
     """Coupled steady state of a scene: losses(T) ↔ thermal network, to a fixed point.
 
     See the module docstring for the method.  ``load`` uses the given load distribution instead of
-    the one the scene's models give.
+    the one the scene's models give; ``prepared`` the :func:`~thermobear.coupled.sources.prepare` of
+    its family, reused (many operating points of one machine).
 
     Raises
     ------
@@ -442,7 +445,9 @@ def steady_state(scene: Scene, *, tol_K: float = 1e-6, load=None) -> SteadyState
     >>> bool(abs(st.energy_balance_W) <= 1e-9 * st.P_W), bool(st.T_C["inner_ring"] > 30.0)
     (True, True)
     """
-    r = steady_states([scene], tol_K=tol_K, load=load)[0]
+    if prepared is not None:
+        prepared_for(scene, prepared)                    # refuse one prepared for another family
+    r = steady_states([scene], tol_K=tol_K, load=load, prepared=prepared)[0]
     if isinstance(r, Exception):
         raise r
     return r

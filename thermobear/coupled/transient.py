@@ -20,7 +20,7 @@ import numpy as np
 
 from thermobear.coupled.limits import point_warnings
 from thermobear.coupled.pipeline import Family, family_contacts, family_loads, film_temperature_C
-from thermobear.coupled.sources import Coupling, family_network, loss_sources, network_template
+from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepared_for
 from thermobear.coupled.steady import T_LIMIT_K, _batched
 from thermobear.errors import ExtrapolationWarning, InputError, ThermalRunaway
 from thermobear.models import plan
@@ -87,20 +87,24 @@ class PointModel:
     coupling: Coupling
 
 
-def point_model(scene: Scene, models: dict | None = None, *, T_film_C=None, load=None, template=None) -> PointModel:
+def point_model(scene: Scene, models: dict | None = None, *, T_film_C=None, load=None, template=None,
+                prepared=None) -> PointModel:
     """Loads, contacts, network and loss source of one operating point.
 
     ``models`` default :func:`~thermobear.models.choose_models`; ``T_film_C`` [°C] the film
     temperature of the film load model; ``load`` loads to use instead of the model's; ``template`` a
-    network template instead of the scene's (what-if studies)."""
+    network template instead of the scene's (what-if studies); ``prepared`` the :func:`prepare` of its family."""
     models = models if models is not None else plan(scene)[0]
     fam = Family(scenes=(scene,), index=(0,), models=models, dry=(None,))
     if load is None:
         load = family_loads(fam, None if T_film_C is None else [T_film_C])
     cs = family_contacts(fam, _batched(load))
-    template = template if template is not None else network_template(scene, fixed_placeholders=True)
-    return PointModel(family=fam, network=family_network(fam, template, cs), source=loss_sources(fam, cs),
-                      coupling=Coupling.of(template))
+    if template is not None:
+        cp = Coupling.of(template)
+    else:
+        pre = prepared_for(scene, prepared)
+        template, cp = pre.template, pre.coupling
+    return PointModel(family=fam, network=family_network(fam, template, cs), source=loss_sources(fam, cs), coupling=cp)
 
 
 def heat_sources(pm: PointModel):
@@ -148,7 +152,7 @@ def _pieces(scenes, t_end_s):
 
 
 def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=None, rtol: float = 1e-5,
-              atol: float = 1e-3, load=None, stop=None) -> TransientRun:
+              atol: float = 1e-3, load=None, stop=None, prepared=None) -> TransientRun:
     """Heat-up of a scene on its thermal network, losses re-evaluated as temperatures change.
 
     Parameters
@@ -164,6 +168,7 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
     load : LoadDistribution  loads to use instead of the model's (one operating point: no schedule)
     stop : callable          ``stop() -> bool``, checked during the integration: True ends the run
                              early, keeping what was integrated (``completed`` False)
+    prepared : Prepared      :func:`~thermobear.coupled.sources.prepare` of the scene's family, reused
 
     Returns
     -------
@@ -182,10 +187,11 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
         if t_eval.ndim != 1 or np.any(~np.isfinite(t_eval)) or np.any((t_eval < 0) | (t_eval > t_end_s)) \
                 or np.any(np.diff(t_eval) <= 0):
             raise InputError("t_eval", t_eval, f"output times must increase within [0, {t_end_s}] s")
-    return _run(_pieces(_segments(scene, schedule, t_end_s), t_end_s), scene, T0_C, t_eval, rtol, atol, load, stop)
+    pre = prepared_for(scene, prepared)
+    return _run(_pieces(_segments(scene, schedule, t_end_s), t_end_s), scene, T0_C, t_eval, rtol, atol, load, stop, pre)
 
 
-def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop) -> TransientRun:
+def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre) -> TransientRun:
     T_state = scene.T_ambient_C if T0_C is None else T0_C
     out_t, out_T, out_rep, first, seg_changes, seen = [], {}, {}, None, {}, set()
     film_dt, completed, i = None, True, -1
@@ -202,7 +208,7 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop) -> TransientRun:
                 if ts + film_dt < te - 1e-9 * te:
                     pieces.insert(i + 1, (ts + film_dt, te, sc, last_seg))
                     te, last_seg = ts + film_dt, False
-            pm = point_model(sc, models, T_film_C=T_film, load=load)
+            pm = point_model(sc, models, T_film_C=T_film, load=load, prepared=pre if pre.serves(sc) else None)
             net, cp = pm.network, pm.coupling
             first = first or (models, cp.roles, list(net.nodes))
             changed = {k: v for k, v in models.items() if first[0].get(k, (None,))[0] != v[0]}

@@ -59,12 +59,11 @@ def _num(f, node):
     if (isinstance(node, ast.Constant) and type(node.value) in (int, float)
             or isinstance(node, ast.Name) and node.id in _CONSTS):
         return f
-    text = ast.unparse(node)
 
     def num(ctx, fail):
         v = f(ctx, fail)
         if type(v) is not float and (isinstance(v, (bool, str)) or not isinstance(v, _NUM_TYPES)):
-            fail(f"'{text}' " + (_NONE_MSG if v is None else "is not a number"))
+            fail(f"'{ast.unparse(node)}' " + (_NONE_MSG if v is None else "is not a number"))
         return v
     return num
 
@@ -111,7 +110,7 @@ def _compile(node):
         if attr.startswith("_"):
             msg = f"private attribute '{attr}' is not allowed"
             return lambda ctx, fail: fail(msg)
-        fbase, text = _compile(node.value), ast.unparse(node)
+        fbase = _compile(node.value)
 
         def attr_(ctx, fail):
             base = fbase(ctx, fail)
@@ -119,7 +118,7 @@ def _compile(node):
                 fail(f"attribute '{attr}' of a number is not allowed")
             v = lookup(base, attr)
             if v is MISSING:
-                fail(f"unknown name '{text}' in the context")
+                fail(f"unknown name '{ast.unparse(node)}' in the context")
             return v
         return attr_
     if isinstance(node, ast.Call):

@@ -42,7 +42,6 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
-from functools import cached_property
 from pathlib import Path
 
 import networkx as nx
@@ -153,10 +152,11 @@ class NetworkTemplate:
         """Names of the fixed-temperature nodes."""
         return [n for n, f in zip(self.nodes, self.fixed) if f]
 
-    @cached_property
+    @property
     def graph(self) -> nx.MultiGraph:
-        """The topology as a networkx MultiGraph: nodes with ``fixed`` and ``C_J_K`` [J/K], one edge
-        per element (key = element name) with its type and static parameters (materials by name)."""
+        """The topology as a networkx MultiGraph (built at each access): nodes with ``fixed`` and
+        ``C_J_K`` [J/K], one edge per element (key = element name) with its type and static
+        parameters (materials by name)."""
         g = nx.MultiGraph(name=self.name)
         for i, n in enumerate(self.nodes):
             g.add_node(n, fixed=bool(self.fixed[i]), C_J_K=float(self.C_J_K[i]), **self.info.get(n, {}))
@@ -185,9 +185,8 @@ class NetworkTemplate:
             val = v if not hasattr(v, "value") else v.value(ctx, fld)
             T_fixed[:, k] = _check_value(fld, "T_C", np.broadcast_to(val, (B,))) + _C0
         elements = tuple(_instantiate(e, ctx, B, oil) for e in self.elements)
-        net = ThermalNetwork(template=self, B=B, T_fixed_K=T_fixed, elements=elements, oil=oil)
-        net.probe()
-        return net
+        return ThermalNetwork(template=self, B=B, T_fixed_K=T_fixed, elements=elements, oil=oil,
+                              structure=_Structure.of(self, elements, T_fixed, oil))
 
 
 def _batch_size(ctx) -> int:
@@ -521,6 +520,7 @@ class ThermalNetwork:
     T_fixed_K : ndarray       (B, n) fixed-node temperatures [K] (free entries 0)
     elements : tuple          the elements, parameters numbers or arrays over the B points
     oil : Lubricant or None   the lubricant (fluid properties of convection and advection)
+    structure : _Structure    matrix pattern, temperature dependence, the constant conductances
     """
 
     template: NetworkTemplate
@@ -528,6 +528,7 @@ class ThermalNetwork:
     T_fixed_K: np.ndarray
     elements: tuple
     oil: object = None
+    structure: "_Structure" = None
 
     # -- the template's structure -------------------------------------------------------------
     name = property(lambda self: self.template.name)
@@ -540,11 +541,6 @@ class ThermalNetwork:
     free_nodes = property(lambda self: self.template.free_nodes)
     fixed_nodes = property(lambda self: self.template.fixed_nodes)
 
-    @cached_property
-    def structure(self) -> "_Structure":
-        """Index structure of the conductance matrices and the elements' temperature dependence."""
-        return _Structure.of(self)
-
     @property
     def T_dependent(self) -> bool:
         """True when some element conductance depends on a free node's temperature."""
@@ -555,19 +551,6 @@ class ThermalNetwork:
         T = self.T_fixed_K.copy()
         T[:, ~self.fixed] = self.T_fixed_K[:, self.fixed].mean(axis=1, keepdims=True)
         return T
-
-    def probe(self):
-        """Evaluate every element once at a representative state (free nodes 10 K above the mean
-        fixed temperature), naming the element when its conductance is not finite and ≥ 0."""
-        T = self.initial_T_K() + np.where(self.fixed, 0.0, 10.0)
-        shared: dict = {}
-        for el in self.elements:
-            try:
-                G = np.asarray(el.conductance(T[:, el.i], T[:, el.j], self.oil, shared), float)
-            except InputError as exc:
-                raise InputError(f"{self.source}: elements[{el.name}].{exc.field}", exc.value, exc.expected) from None
-            if not (np.all(np.isfinite(G)) and np.all(G >= 0)):
-                raise InputError(f"{self.source}: elements[{el.name}]", G, "conductance must be finite and >= 0 [W/K]")
 
     def conductances(self, T_K) -> np.ndarray:
         """(B, n_elements) conductances [W/K] at node temperatures ``T_K`` (B, n) [K]."""
@@ -638,7 +621,7 @@ class ThermalNetwork:
             return v[idx] if isinstance(v, np.ndarray) and v.ndim >= 1 and v.shape[0] == self.B else v
         els = tuple(replace(e, p={k: sub(v) for k, v in e.p.items()}) for e in self.elements)
         return ThermalNetwork(template=self.template, B=idx.size, T_fixed_K=self.T_fixed_K[idx], elements=els,
-                              oil=self.oil)
+                              oil=self.oil, structure=replace(self.structure, G0=self.structure.G0[idx]))
 
     @property
     def graph(self) -> nx.MultiGraph:
@@ -661,10 +644,13 @@ class _Structure:
     G0: np.ndarray            # (B, n_el) conductances of the other elements (dep columns 0)
 
     @classmethod
-    def of(cls, net: ThermalNetwork) -> "_Structure":
-        n, els = len(net.template.nodes), net.elements
-        pattern = np.zeros((len(els), n * n))
-        for k, e in enumerate(els):
+    def of(cls, template: NetworkTemplate, elements, T_fixed_K, oil) -> "_Structure":
+        """The structure of a network at its operating points; every element is evaluated once at a
+        probe state (free nodes 10 K above the mean fixed temperature), naming the element when its
+        conductance is not finite and ≥ 0; the constant ones are kept."""
+        n, fixed = len(template.nodes), template.fixed
+        pattern = np.zeros((len(elements), n * n))
+        for k, e in enumerate(elements):
             i, j = e.i, e.j
             if e.advective:
                 pattern[k, j * n + j] += 1.0
@@ -672,23 +658,30 @@ class _Structure:
             else:
                 pattern[k, [i * n + i, j * n + j]] += 1.0
                 pattern[k, [i * n + j, j * n + i]] -= 1.0
-        free, fixed = np.flatnonzero(~net.fixed), np.flatnonzero(net.fixed)
+        free_i, fixed_i = np.flatnonzero(~fixed), np.flatnonzero(fixed)
         fpos = -np.ones(n, int)
-        fpos[free] = np.arange(free.size)
-        dep = tuple(k for k, e in enumerate(els) if any(not net.fixed[m] for m in e.depends_on()))
-        users = {}
+        fpos[free_i] = np.arange(free_i.size)
+        dep = tuple(k for k, e in enumerate(elements) if any(not fixed[m] for m in e.depends_on()))
+        users: dict = {}
         for k in dep:
-            for m in els[k].depends_on():
-                if not net.fixed[m]:
+            for m in elements[k].depends_on():
+                if not fixed[m]:
                     users.setdefault(m, []).append(k)
-        T0 = net.initial_T_K()
-        G0 = np.zeros((net.B, len(els)))
+        T = T_fixed_K.copy()
+        T[:, ~fixed] = T_fixed_K[:, fixed].mean(axis=1, keepdims=True) + 10.0
+        G0 = np.zeros((T.shape[0], len(elements)))
         shared: dict = {}
-        for k, e in enumerate(els):
+        for k, e in enumerate(elements):
+            try:
+                G = np.asarray(e.conductance(T[:, e.i], T[:, e.j], oil, shared), float)
+            except InputError as exc:
+                raise InputError(f"{template.source}: elements[{e.name}].{exc.field}", exc.value, exc.expected) from None
+            if not (np.all(np.isfinite(G)) and np.all(G >= 0)):
+                raise InputError(f"{template.source}: elements[{e.name}]", G, "conductance must be finite and >= 0 [W/K]")
             if k not in dep:
-                G0[:, k] = e.conductance(T0[:, e.i], T0[:, e.j], net.oil, shared)
-        return cls(pattern=pattern, ff=(free[:, None] * n + free[None, :]).ravel(),
-                   fb=(free[:, None] * n + fixed[None, :]).ravel(), nf=free.size, nb=fixed.size,
+                G0[:, k] = G
+        return cls(pattern=pattern, ff=(free_i[:, None] * n + free_i[None, :]).ravel(),
+                   fb=(free_i[:, None] * n + fixed_i[None, :]).ravel(), nf=free_i.size, nb=fixed_i.size,
                    fpos=tuple(fpos.tolist()), dep=dep, users=users, G0=G0)
 
 

@@ -40,7 +40,7 @@ from scipy.integrate import solve_ivp
 from thermobear.errors import InputError, NoConvergence
 from thermobear.thermal.network import ThermalNetwork
 
-__all__ = ["SteadyResult", "TransientResult", "solve_steady", "solve_transient", "split_losses",
+__all__ = ["SteadyResult", "TransientResult", "solve_steady", "solve_linear", "solve_transient", "split_losses",
            "sources_matrix", "batched_solve", "heat_out"]
 
 _C0 = 273.15
@@ -225,6 +225,22 @@ def solve_steady(net: ThermalNetwork, sources_W=None, *, T_guess_K=None, tol_K: 
         Aff, Afb = net.blocks(G)
         T[:, free] = batched_solve(Aff, P[:, free] - np.einsum("bij,bj->bi", Afb, T[:, fixed]))
     return _result(net, T, G, P, it, res)
+
+
+def solve_linear(net: ThermalNetwork, sources_W, T_K) -> SteadyResult:
+    """Temperatures of the free nodes for sources (B, n) [W] with the conductances at ``T_K`` (B, n)
+    [K] held (one linear solve): the last step of a coupled solution, whose flows and temperatures
+    then come from the same conductances (the energy balance closes to machine precision)."""
+    free, fixed = ~net.fixed, net.fixed
+    T = np.array(T_K, dtype=float)
+    T[:, fixed] = net.T_fixed_K[:, fixed]
+    G = net.conductances(T)
+    Aff, Afb = net.blocks(G)
+    P = np.asarray(sources_W, float)
+    T[:, free] = batched_solve(Aff, P[:, free] - np.einsum("bij,bj->bi", Afb, T[:, fixed]))
+    if not np.all(np.isfinite(T)):
+        raise NoConvergence("singular conductance matrix (a node without conductance?)", iterations=1)
+    return _result(net, T, G, P, 1, 0.0)
 
 
 @dataclass
