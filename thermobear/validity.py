@@ -211,11 +211,11 @@ def check(name: str, value, field: str, *, what: str = "", category=OutsideValid
 
 
 @contextlib.contextmanager
-def collect():
+def collect(replay: bool = True):
     """Collect the :class:`~thermobear.errors.OutsideValidity` warnings issued inside the block.
 
-    Yields a list that receives the unique warnings (by message) in order; they are also passed on
-    to the caller's warning filters.
+    Yields a list that receives the unique warnings (by message) in order; with ``replay`` they (and
+    every other warning of the block) are also passed on to the caller's warning filters.
 
     >>> import warnings
     >>> with warnings.catch_warnings():
@@ -236,8 +236,9 @@ def collect():
             if str(w) not in seen:
                 seen.add(str(w))
                 got.append(w)
-    for r in rec:                                  # pass everything on, once each
-        warnings.warn_explicit(r.message, r.category, r.filename, r.lineno)
+    if replay:
+        for r in rec:                              # pass everything on, once each
+            warnings.warn_explicit(r.message, r.category, r.filename, r.lineno)
 
 
 def warning_lines(ws) -> list:

@@ -26,6 +26,7 @@ import numpy as np
 
 from thermobear.files import data_dir, read_toml
 from thermobear.errors import InputError
+from thermobear.validity import check as check_limit
 from thermobear.contact.hertz import contact_stiffness, series_stiffness
 from thermobear.contact.materials import Material, material, reduced_modulus
 
@@ -114,8 +115,9 @@ class BallBearing:
                              f"dm = {self.dm * 1e3:.4g} mm (need D <= dm sin(pi/Z))")
         for fld in ("fi", "fo"):
             v = getattr(self, fld)
-            if isinstance(v, bool) or not isinstance(v, numbers.Real) or not (np.isfinite(v) and v > 0.5):
-                raise InputError(f"{p}.{fld}", v, "osculation must be > 0.5 (groove radius / ball diameter)")
+            if isinstance(v, bool) or not isinstance(v, numbers.Real):
+                raise InputError(f"{p}.{fld}", v, "osculation must be a number in (0.5, 0.6] (groove radius / ball diameter)")
+            check_limit("osculation", v, f"{p}.{fld}", warn=False)
         A = (self.fi + self.fo - 1.0) * self.D
         a0, Pd = self.alpha0, self.Pd
         if self.kind == "thrust":

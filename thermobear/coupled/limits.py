@@ -8,10 +8,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from thermobear.errors import ExtrapolationWarning
-from thermobear.validity import check, collect
+from thermobear.errors import ExtrapolationWarning, InputError
+from thermobear.validity import P_MAX_REFUSE_PA, check, collect
 
-__all__ = ["p_max_Pa", "contact_pressure", "point_warnings"]
+__all__ = ["p_max_Pa", "contact_pressure", "overloads", "point_warnings"]
 
 
 def p_max_Pa(Q, a, b):
@@ -40,10 +40,27 @@ def contact_pressure(contacts, field: str = "operation (Fa_N, Fr_N, M_Nm)", warn
     return out
 
 
+def overloads(scenes, contacts) -> dict:
+    """Points whose loads the contacts cannot carry: index → InputError naming the loads (the
+    maximum contact pressure beyond :data:`thermobear.validity.P_MAX_REFUSE_PA`, twice the ISO 76
+    static rating load), for a contact set over the points of ``scenes``."""
+    p = np.stack([np.asarray(p_max_Pa(contacts.sides[s]["Q"], contacts.sides[s]["a"], contacts.sides[s]["b"]), float)
+                  .reshape(len(scenes), -1).max(axis=1) for s in ("inner", "outer")])
+    out = {}
+    for b in np.flatnonzero(p.max(axis=0) > P_MAX_REFUSE_PA):
+        sc, side = scenes[b], ("inner", "outer")[int(np.argmax(p[:, b]))]
+        loads = f"Fa {sc.Fa:g} N, Fr {sc.Fr:g} N" + (f", M {sc.M:g} N m" if sc.M is not None else "")
+        out[int(b)] = InputError("operation (Fa_N, Fr_N, M_Nm)", loads,
+                                 f"more than the contacts can carry: maximum contact pressure {p[:, b].max() / 1e6:.4g} MPa "
+                                 f"at the {side} contacts > {P_MAX_REFUSE_PA / 1e6:.4g} MPa, twice the ISO 76 static "
+                                 f"rating load ({sc.bearing.name})")
+    return out
+
+
 def point_warnings(scene, losses, x_C) -> list:
     """The OutsideValidity warnings of one solved operating point: speed, contact pressure, contact
     and oil temperatures (the lubricant's validated range), the SKF model's Φ_bl."""
-    with collect() as got:
+    with collect(replay=False) as got:
         check("n_dm", scene.n_rpm * scene.bearing.dm * 1e3, "operation.n_rpm", warn=True)
         check("lubricant_T", np.asarray(x_C, float), "contact / oil temperature", category=ExtrapolationWarning)
         if getattr(losses, "contacts", None):

@@ -25,6 +25,7 @@ from thermobear.losses import ContactSet, LossResult, evaluate_losses
 from thermobear.losses.drag import oil_volume_fraction_parker
 from thermobear.losses.skf import skf_friction
 from thermobear.models import plan, refuse_unloaded_thrust
+from thermobear.coupled.limits import overloads
 from thermobear.coupled.pipeline import Family, scene_contacts
 from thermobear.scene import Scene
 from thermobear.scene.network import network_spec
@@ -280,6 +281,10 @@ def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oi
     else:
         injected = contacts is not None or load is not None
     cs = contacts if contacts is not None else scene_contacts(scene, models, load, n_rpm=n_rpm)
+    if np.ndim(cs.n_rpm) == 0:
+        over = overloads([scene], cs)
+        if over:
+            raise over[0]
     r = evaluate_losses(cs, scene.lubricant, T_C, T_inner_C=T_inner_C, T_outer_C=T_outer_C, T_oil_C=T_oil_C,
                         supply=scene.supply, oil_flow_m3_s=scene.oil_flow, Rq_ball=scene.Rq_ball,
                         Rq_ring=scene.Rq_ring, mu_boundary=scene.mu_boundary, mu_full_film=scene.mu_full_film,

@@ -39,9 +39,10 @@ from thermobear.arrays import take
 from thermobear.coupled.fixedpoint import solve_coupled
 from thermobear.coupled.pipeline import (Family, families, family_contacts, family_loads, film_temperature_C,
                                         split_failures)
-from thermobear.coupled.limits import point_warnings
+from thermobear.coupled.limits import overloads, point_warnings
 from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepared_for
-from thermobear.errors import ExtrapolationWarning, InputError, NoConvergence, SolverError, ThermalRunaway
+from thermobear.errors import (ExtrapolationWarning, InputError, NoConvergence, OutsideValidity, SolverError,
+                               ThermalRunaway)
 from thermobear.models import plan_many
 from thermobear.scene import Scene
 from thermobear.thermal.solve import batched_solve, solve_linear
@@ -277,6 +278,17 @@ def _solve_loaded(fam: Family, load, template, cp: Coupling, tol_K, T0=None) -> 
     """Steady states of a family with given (batched) loads: Newton for all points, the heating
     path for the points it cannot decide.  Per point a SteadyState or a SolverError."""
     contacts = family_contacts(fam, load)
+    over = overloads(fam.scenes, contacts)
+    if over:                        # refused points apart; the others solved as a family of their own
+        keep = [b for b in range(fam.B) if b not in over]
+        out = [over.get(b) for b in range(fam.B)]
+        if keep:
+            sub = Family(scenes=tuple(fam.scenes[b] for b in keep), index=tuple(fam.index[b] for b in keep),
+                         models=fam.models, dry=tuple(fam.dry[b] for b in keep))
+            T0k = None if T0 is None else np.asarray(T0)[keep]
+            for b, r in zip(keep, _solve_loaded(sub, take(load, np.array(keep), fam.B), template, cp, tol_K, T0k)):
+                out[b] = r
+        return out
     net = family_network(fam, template, contacts)
     src = loss_sources(fam, contacts)
     with warnings.catch_warnings():
@@ -422,9 +434,13 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> l
         out[i] = exc
     if load is not None and len(fams) != 1:
         raise InputError("load", "LoadDistribution", "injected loads need the scenes of one family")
-    for fam in fams:
-        for i, r in zip(fam.index, _solve_family(fam, tol_K, None if load is None else _batched(load), prepared)):
-            out[i] = r
+    with warnings.catch_warnings():
+        # property calls at intermediate iterates may lie beyond a correlation's data: only the answer
+        # counts, and its validity is checked on its own (SteadyState.warnings, limits.point_warnings)
+        warnings.simplefilter("ignore", OutsideValidity)
+        for fam in fams:
+            for i, r in zip(fam.index, _solve_family(fam, tol_K, None if load is None else _batched(load), prepared)):
+                out[i] = r
     return out
 
 
