@@ -81,10 +81,14 @@ def test_thrust_bearing_without_axial_load_exit_2(capsys, tmp_path):
     assert out == "" and not (tmp_path / "plots").exists()
 
 
-def test_run_bad_plot_dir_checked_before_computing(capsys, tmp_path):
-    code, out, err = run(capsys, "run", SEED000, "--plot", tmp_path / "no" / "such" / "dir")
+@pytest.mark.parametrize("where", ["under_a_file", "/proc/thermobear-test"])
+def test_run_plot_folder_that_cannot_be_made_is_refused_before_computing(capsys, tmp_path, where):
+    if where == "under_a_file":
+        (tmp_path / "file").write_text("x")
+        where = tmp_path / "file" / "plots"
+    code, out, err = run(capsys, "run", SEED000, "--plot", where)
     assert_bad_input(code, err, "--plot")
-    assert out == ""
+    assert out == "" and not Path(where).exists()
 
 
 def test_list_and_loads(capsys):
@@ -92,16 +96,16 @@ def test_list_and_loads(capsys):
     assert code == 0 and "7210" in json.loads(out)["bearings"]
     code, out, _ = run(capsys, "loads", str(EX / "seed004_oil_jet_7210.toml"), "--json")
     d = json.loads(out)
-    assert code == 0 and len(d["Q_N"]) == len(d["psi_deg"])
+    assert code == 0 and len(d["Q_inner_N"]) == len(d["psi_deg"]) and d["form"].startswith("high-speed")
 
 
 def test_solver_error_exit_3(capsys, monkeypatch):
-    import thermobear.coupled.solver as solver
+    import thermobear.app.verbs as verbs
     from thermobear.errors import ThermalRunaway
 
     def boom(scene):
         raise ThermalRunaway("losses grow faster than dissipation above 180 °C", iterations=7, residual=3.0)
-    monkeypatch.setattr(solver, "solve", boom)
+    monkeypatch.setattr(verbs, "solve", boom)
     code, _, err = run(capsys, "run", SEED000)
     assert code == 3 and err.strip() == "error: ThermalRunaway: losses grow faster than dissipation above 180 °C"
 
@@ -169,8 +173,9 @@ def test_sweep_csv(capsys, tmp_path):
     assert code == 0 and "6/6" in err                     # progress bar on stderr
     rows = [l.split(",") for l in out_csv.read_text().splitlines() if not l.startswith("#")]
     head = rows[0]
-    assert head[:2] == ["n_rpm", "T_C"] and len(rows) == 1 + 6
-    P = {(float(r[0]), float(r[1])): float(r[head.index("P_W")]) for r in rows[1:]}
+    assert head[:3] == ["index", "n_rpm", "T_C"] and len(rows) == 1 + 6
+    assert sorted(int(r[0]) for r in rows[1:]) == list(range(6))
+    P = {(float(r[1]), float(r[2])): float(r[head.index("P_W")]) for r in rows[1:]}
     assert P[(300.0, 23.5)] > P[(200.0, 23.5)] > P[(100.0, 23.5)]      # more speed, more loss
     assert P[(200.0, 40.0)] < P[(200.0, 23.5)]                          # thinner oil, less rolling loss
     code, out, _ = run(capsys, "run", SEED000, "--json", "--set", "n_rpm=200")

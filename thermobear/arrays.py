@@ -1,6 +1,8 @@
 """Small array helpers shared by the physics modules (input checks, scalar-or-array output)."""
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from thermobear.errors import InputError
@@ -39,3 +41,27 @@ def out(x):
     """
     x = np.asarray(x, dtype=float)
     return float(x) if x.ndim == 0 else x
+
+
+#: Fields that never carry the operating-point axis (per-ball azimuths: their length Z may equal B).
+UNBATCHED = frozenset({"psi"})
+
+
+def take(obj, index, B: int):
+    """The operating point(s) ``index`` of a batched result: every array whose leading axis has
+    length ``B`` is indexed along it, recursively through dataclasses, dicts, lists and tuples; the
+    rest (per-ball azimuths — fields named in :data:`UNBATCHED` —, scalars, objects) is kept.
+
+    >>> take({"P_W": np.array([1.0, 2.0]), "psi": np.zeros(3)}, 1, 2)["P_W"]
+    np.float64(2.0)
+    """
+    if isinstance(obj, np.ndarray):
+        return obj[index] if obj.ndim >= 1 and obj.shape[0] == B else obj
+    if isinstance(obj, dict):
+        return {k: v if k in UNBATCHED else take(v, index, B) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)) and not hasattr(obj, "_fields"):
+        return type(obj)(take(v, index, B) for v in obj)
+    if dataclasses.is_dataclass(obj) and not isinstance(obj, type):
+        return dataclasses.replace(obj, **{f.name: take(getattr(obj, f.name), index, B)
+                                           for f in dataclasses.fields(obj) if f.init and f.name not in UNBATCHED})
+    return obj

@@ -139,13 +139,21 @@ LIMITS = {
 
 
 def _minmax(value):
-    a = np.asarray(value, dtype=float)
-    if a.size == 0:
-        return None
-    lo, hi = float(np.min(a)), float(np.max(a))
+    if isinstance(value, (float, int)) and not isinstance(value, bool):
+        lo = hi = float(value)
+    else:
+        a = np.asarray(value, dtype=float)
+        if a.size == 0:
+            return None
+        lo, hi = (float(a), float(a)) if a.ndim == 0 else (float(a.min()), float(a.max()))
     if not (math.isfinite(lo) and math.isfinite(hi)):
         return "nan"
     return lo, hi
+
+
+def _inside(mm, bounds, lo_open) -> bool:
+    lo, hi = bounds
+    return ((lo is None or (mm[0] > lo if lo_open else mm[0] >= lo)) and (hi is None or mm[1] <= hi))
 
 
 def _show(value, scale):
@@ -176,6 +184,8 @@ def check(name: str, value, field: str, *, what: str = "", category=OutsideValid
     mm = _minmax(value)
     if mm is None:
         return []
+    if mm != "nan" and _inside(mm, lim.refuse, lim.lo_open) and (not warn or _inside(mm, lim.warn, False)):
+        return []                                      # the common case, without building messages
     shown = _show(value, lim.scale) if mm != "nan" else value
     ctx = f" ({what})" if what else ""
     if mm == "nan":
@@ -201,11 +211,11 @@ def check(name: str, value, field: str, *, what: str = "", category=OutsideValid
 
 
 @contextlib.contextmanager
-def collect():
+def collect(replay: bool = True):
     """Collect the :class:`~thermobear.errors.OutsideValidity` warnings issued inside the block.
 
-    Yields a list that receives the unique warnings (by message) in order; they are also passed on
-    to the caller's warning filters.
+    Yields a list that receives the unique warnings (by message) in order; with ``replay`` they (and
+    every other warning of the block) are also passed on to the caller's warning filters.
 
     >>> import warnings
     >>> with warnings.catch_warnings():
@@ -226,8 +236,9 @@ def collect():
             if str(w) not in seen:
                 seen.add(str(w))
                 got.append(w)
-    for r in rec:                                  # pass everything on, once each
-        warnings.warn_explicit(r.message, r.category, r.filename, r.lineno)
+    if replay:
+        for r in rec:                              # pass everything on, once each
+            warnings.warn_explicit(r.message, r.category, r.filename, r.lineno)
 
 
 def warning_lines(ws) -> list:

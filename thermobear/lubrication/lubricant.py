@@ -28,11 +28,9 @@ Data: ``materials/lubricants/<name>.toml`` (see :func:`lubricant_names`).
 from __future__ import annotations
 
 import math
-import warnings
 
 import numpy as np
 
-from thermobear.arrays import finite_range
 
 from thermobear.files import data_dir, lookup, names_in
 from thermobear.errors import ExtrapolationWarning, InputError

@@ -58,7 +58,7 @@ def _impose(spec: dict, fixed: dict, name: str) -> None:
                              "impose a ring/housing node instead (e.g. inner_ring, outer_ring), or set "
                              "operation.T_C to prescribe the contact temperature")
         kept = {k: v for k, v in nodes[node].items() if k in _KEEP_ON_IMPOSE}
-        kept["T_C"] = float(T)
+        kept["T_C"] = T if isinstance(T, str) else float(T)     # a number, or an expression of the context
         kept["source"] = "imposed by the scene (thermal.fixed_C)"
         nodes[node] = kept
 

@@ -28,8 +28,7 @@ from pathlib import Path
 import numpy as np
 
 from thermobear import validity
-from thermobear.contact.geometry import BallBearing, bearing, bearing_from_dict
-from thermobear.contact.geometry import _catalog
+from thermobear.contact.geometry import BallBearing, bearing, bearing_from_dict, bearing_table
 from thermobear.contact.hertz import METHODS as HERTZ_METHODS
 from thermobear.errors import InputError
 from thermobear.files import read_toml
@@ -285,7 +284,7 @@ def _bearing_of(sec: dict) -> BallBearing:
         over = {k: v for k, v in sec.items() if k != "catalog"}
         if not over:
             return base
-        return bearing_from_dict({**_catalog()[name], **over}, name=name, where="bearing")
+        return bearing_from_dict({**bearing_table(name), **over}, name=base.name, where="bearing")
     return bearing_from_dict(sec, name=sec.get("name", "custom"), where="bearing")
 
 
