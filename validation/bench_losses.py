@@ -1,7 +1,7 @@
 """Speed of the local loss model (thermobear.losses): evaluate_losses and bearing_losses.
 
 Cases, on the seed-004 scene (7210 ACBB, 15 balls, oil jet; contacts of
-``thermobear.coupled.solver.scene_contacts``):
+``thermobear.coupled.scene_contacts``):
 
 * ``point``        evaluate_losses, one operating point, full LossResult;
 * ``2 states``     the same point at two temperature states (x and x + h of the coupled Newton);
@@ -58,7 +58,11 @@ def _best(fn, repeat=7, min_time=0.2):
 def measure() -> dict:
     """Timings of this interpreter's ``thermobear`` [µs per call, or per point for the batches]."""
     import thermobear as tb
-    from thermobear.coupled.solver import choose_models, scene_contacts
+    try:                                                  # the coupled package before / after its pipeline
+        from thermobear.coupled.solver import choose_models, scene_contacts
+    except ImportError:
+        from thermobear.coupled import scene_contacts
+        from thermobear.models import choose_models
     from thermobear.losses import local
     from thermobear.losses.local import bearing_losses, evaluate_losses, prepare_contacts
     warnings.simplefilter("ignore")
