@@ -397,7 +397,8 @@ def sliding_power_heathcote(mu, Q, a, Ra, omega_roll):
     a2, Ra2 = a * a, Ra * Ra
     dB = np.sqrt(np.maximum(Ra2 - _HEATHCOTE_XI2.reshape(col) * a2, 0.0))
     dB -= np.sqrt(np.maximum(Ra2 - XI0_HEATHCOTE**2 * a2, 0.0))
-    integral = np.tensordot(_HEATHCOTE_W, np.abs(dB, out=dB), axes=1)      # Σ w 0.75 (1 − ξ²) |dB|
+    # Σ w 0.75 (1 − ξ²) |dB| (einsum: no BLAS threads, which spin against other work on a busy machine)
+    integral = np.einsum("k,k...->...", _HEATHCOTE_W, np.abs(dB, out=dB))
     return _out(mu * Q * np.abs(omega_roll) * integral)
 
 
