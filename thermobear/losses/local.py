@@ -38,7 +38,7 @@ then carries those axes in front.
 """
 from __future__ import annotations
 
-import warnings
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -54,7 +54,7 @@ from thermobear.losses.sliding import (deformed_radius, hysteresis_moment, mixed
                                        sliding_power_heathcote)
 from thermobear.lubrication.film import REGIMES, EHLContacts, ehl_contacts, specific_film_thickness
 
-__all__ = ["LossResult", "ContactSet", "bearing_losses", "prepare_contacts", "evaluate_losses",
+__all__ = ["LossResult", "ContactSet", "ContactArrays", "bearing_losses", "prepare_contacts", "evaluate_losses",
            "BREAKDOWN_KEYS", "ROLLING_MODELS"]
 
 BREAKDOWN_KEYS = ("sliding", "rolling", "pivoting", "hysteresis", "drag")
@@ -75,7 +75,7 @@ class LossResult:
     P_W : float or ndarray              total power loss [W]
     torque_Nm : float or ndarray        friction torque on the rotating ring, P/ω [N m]
     breakdown_W : dict                  sliding, rolling, pivoting, hysteresis, drag [W]
-    contacts : dict                     per contact arrays, keys ``"inner"``/``"outer"`` → dict of
+    contacts : ContactArrays            per contact arrays (a read-only mapping), ``"inner"``/``"outer"`` → dict of
                                         Q [N], alpha [rad], a, b [m], u [m/s], T_C, eta [Pa s],
                                         h_min, h_c [m], Lambda, regime (str), mu, F_R [N],
                                         P_rolling, P_sliding, P_pivoting, P_hysteresis [W], spin [rad/s],
@@ -94,7 +94,7 @@ class LossResult:
     P_W: np.ndarray
     torque_Nm: np.ndarray
     breakdown_W: dict
-    contacts: dict
+    contacts: Mapping
     heat_W: dict
     load: LoadDistribution
     omega_c: np.ndarray
@@ -470,35 +470,49 @@ def _as(x):
     return x if x.ndim else float(x)
 
 
+class ContactArrays(Mapping):
+    """Per-contact arrays of a :class:`LossResult`: ``["inner"]`` / ``["outer"]`` → dict of arrays
+    (*lead, *batch, Z) — views of the raceway-stacked arrays of the evaluation, built on access (a
+    solver that needs only the sums does not pay for them)."""
+
+    def __init__(self, cs: ContactSet, stacked: dict, n_lead: int):
+        self._cs, self._stacked, self._n_lead = cs, stacked, n_lead
+
+    def __getitem__(self, side: str) -> dict:
+        k = _SIDES.index(side) if side in _SIDES else None
+        if k is None:
+            raise KeyError(side)
+        st, cs = self._stacked, self._cs
+        ix = (Ellipsis, k) + (slice(None),) * (len(cs.batch) + 1) if self._n_lead else k
+        full = st["h_min"].shape
+        d = {key: (v if v.shape == full else np.broadcast_to(v, full))[ix] for key, v in st.items()}
+        d.update(Q=cs.Q[k], alpha=cs.alpha[k], a=cs.a[k], b=cs.b[k], u=cs.u[k], spin=cs.spin[k])
+        return d
+
+    def __iter__(self):
+        return iter(_SIDES)
+
+    def __len__(self) -> int:
+        return len(_SIDES)
+
+
 def _result(cs, P, P_drag, per_contact, n_lead, models):
     """The LossResult of the per-contact powers ``P`` (4, *lead, 2, *batch, Z) and the drag (*lead, *batch)."""
-    nb = len(cs.batch)
-    full = P.shape[1:]
     S = P.sum(-1)                                   # (4, *lead, 2, *batch): summed over the balls
     per_side = S.sum(0)                             # contact power of each raceway
     fam = S.sum(axis=1 + n_lead)                    # each family summed over both raceways
-    side = [(Ellipsis, k) + (slice(None),) * nb if n_lead else k for k in range(2)]
-    for key in ("T_C", "eta"):                      # one per operating point: shown per contact
-        src = per_contact[key]
-        if src.shape != full:
-            per_contact[key] = np.empty(full)
-            per_contact[key][...] = src
-    out_c = {}
-    for k, name in enumerate(_SIDES):
-        ix = side[k] + (slice(None),) if n_lead else k
-        d = {key: v[ix] for key, v in per_contact.items()}
-        d.update(Q=cs.Q[k], alpha=cs.alpha[k], a=cs.a[k], b=cs.b[k], u=cs.u[k], spin=cs.spin[k])
-        out_c[name] = d
+    if n_lead:
+        P_in, P_out = (per_side[(Ellipsis, k) + (slice(None),) * len(cs.batch)] for k in range(2))
+    else:
+        P_in, P_out = per_side[0], per_side[1]
     breakdown = {"sliding": _as(fam[1]), "rolling": _as(fam[0]), "pivoting": _as(fam[2]),
                  "hysteresis": _as(fam[3]), "drag": _as(P_drag)}
     total = fam[1] + fam[0] + fam[2] + fam[3] + P_drag
-    torque = total * cs.inv_omega
-    P_in, P_out = per_side[side[0]], per_side[side[1]]
     heat = {"inner_ring": _as(0.5 * P_in), "outer_ring": _as(0.5 * P_out), "balls": _as(0.5 * (P_in + P_out)),
             "oil": _as(P_drag)}
-    return LossResult(P_W=_as(total), torque_Nm=_as(torque), breakdown_W=breakdown, contacts=out_c, heat_W=heat,
-                      load=cs.load, omega_c=_as(cs.omega_cage), models_used=models,
-                      contact_W={"inner": _as(P_in), "outer": _as(P_out)})
+    return LossResult(P_W=_as(total), torque_Nm=_as(total * cs.inv_omega), breakdown_W=breakdown,
+                      contacts=ContactArrays(cs, per_contact, n_lead), heat_W=heat, load=cs.load,
+                      omega_c=_as(cs.omega_cage), models_used=models, contact_W={"inner": _as(P_in), "outer": _as(P_out)})
 
 
 def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *, M=None,

@@ -448,20 +448,20 @@ def rolling_force_houpert_ehl(Q, Rx, Ry, u, eta, E_prime, alpha_p, a=None, b=Non
 
 
 def _biboulet_pvr_coeffs(W, Rx, E_prime, a, kappa, beta, moving):
-    """Speed-free factors of Biboulet's PVR force (:func:`rolling_force_biboulet_pvr`): E' Rx 2a,
-    0.77 β^(-1/3) κ^0.12, 1.8 β^(-1/4), den = β^(1/4) κ W (M = den U2^(-3/4); 1 where masked), the
-    mask ``ok`` (W > 0 and ``moving``, u > 0), κ and 2a."""
+    """Speed-free factors of Biboulet's PVR force (:func:`rolling_force_biboulet_pvr`): E' Rx 2a
+    (0 where masked), 0.77 β^(-1/3) κ^0.12, 1.8 β^(-1/4), den = β^(1/4) κ W (M = den U2^(-3/4); 1 where
+    masked), 1 where masked (W = 0 or not ``moving``: u = 0) else 0, κ and 2a."""
     den = beta**0.25 * kappa * W
     ok = (den > 0) & moving
-    return (E_prime * Rx * 2.0 * a, 0.77 * beta ** (-1.0 / 3.0) * kappa**0.12, 1.8 * beta**-0.25,
-            np.where(ok, den, 1.0), ok, kappa, 2.0 * a)
+    return (E_prime * Rx * 2.0 * a * ok, 0.77 * beta ** (-1.0 / 3.0) * kappa**0.12, 1.8 * beta**-0.25,
+            np.where(ok, den, 1.0), 1.0 - ok, kappa, 2.0 * a)
 
 
 def _biboulet_pvr(coeffs, U2, truncation="seed004"):
     """Biboulet's PVR force from :func:`_biboulet_pvr_coeffs` and U2 [N]; 0 where W = 0 or U2 = 0."""
-    C, c_ivr, c_ehl, den, ok, kappa, two_a = coeffs
+    C, c_ivr, c_ehl, den, masked, kappa, two_a = coeffs
     q = U2**0.75
-    M = den / (q + ~ok)                                                   # masked contacts: any M > 0
+    M = den / (q + masked)                                                # masked contacts: any M > 0
     r = _M_SPLIT / M                                                      # r = 6.6/M
     shape = (c_ivr * np.cbrt(U2) ** 2 * r + c_ehl * q) / (1.0 + r)        # ×(2a/Rx) E'Rx²: C
     if truncation is None:
@@ -473,7 +473,7 @@ def _biboulet_pvr(coeffs, U2, truncation="seed004"):
     else:
         L = _num("truncation", truncation, what=" (width L for 2a/L) [m]")
         c = truncation_coefficient(M, kappa, two_a / L)
-    return C * shape * c * ok
+    return C * shape * c                                                  # C = 0 where masked
 
 
 def rolling_force_biboulet_pvr(Q, Rx, Ry, u, eta, E_prime, a=None, b=None, *,

@@ -145,7 +145,7 @@ class EHLContacts:
         """:class:`Regime` of the contacts at ``eta`` [Pa s] and ``alpha_p`` [1/Pa] (≥ 0)."""
         eta = _arr("eta", eta, positive=True)
         alpha_p = _arr("alpha_p", alpha_p, nonneg=True)
-        lnU2 = np.log(np.maximum(2.0 * eta * self.U_eta, TINY))
+        lnU2 = np.log(np.maximum(eta * (2.0 * self.U_eta), TINY))
         lnM = self.lnW - 0.75 * lnU2
         lnL = np.log(np.maximum(alpha_p * self.E_prime, TINY)) + 0.25 * lnU2
         return _regime_from_ln(lnM, lnL, self.D, self.loaded, False, self.consts)
