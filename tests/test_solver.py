@@ -121,7 +121,7 @@ def test_runaway_case_is_named():
                                     "lubricant": {"name": "seed002-mg1", "supply": "oil_jet", "flow_L_h": 10.0,
                                                   "T_in_C": 30.0},
                                     "operation": {"n_rpm": 20000.0, "Fa_N": 2000.0}})
-    with pytest.warns(tb.ExtrapolationWarning), pytest.raises(ThermalRunaway) as e:
+    with pytest.raises(ThermalRunaway) as e:          # iterates beyond the oil's data warn nothing: no answer
         steady_state(one)
     assert "no equilibrium below 250" in e.value.reason and e.value.history
 

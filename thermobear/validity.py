@@ -13,7 +13,7 @@ Two levels, for every quantity below:
 ========================  ==============  =====================  ====================  ==========
 quantity                  unit            refused beyond          warned beyond         source
 ========================  ==============  =====================  ====================  ==========
-osculation f_i, f_o       –               outside (0.5, 0.6]      –                     [1]
+osculation f_i, f_o       –               outside (0.5, 2]        outside [0.505, 1.4]  [1]
 speed n·d_m               mm/min          > 4.0e6                 > 1.0e6               [2], [3]
 max. contact pressure     MPa             > 5 290                 > 4 200               [4], [5]
 contact angle + ellipse   °               beyond 90°              –                     [1]
@@ -57,7 +57,7 @@ Examples
 ...     validity.check("osculation", 10.0, "bearing.fi")
 ... except Exception as e:
 ...     print(e)
-bearing.fi = 10.0 — osculation must lie in (0.5, 0.6] [-] (groove radius / ball diameter; Harris 2001 ch. 2)
+bearing.fi = 10.0 — osculation must lie in (0.5, 2] [-] (groove radius / ball diameter: > 0.5 or the ball does not fit its groove; beyond 2 the race is flatter than any ball bearing groove and its geometry (A = (f_i + f_o - 1) D) loses its meaning; validated from the catalogue range 0.505-0.57 (Harris 2001 ch. 2) to seed 001's modified races (0.655 and 1.387))
 """
 from __future__ import annotations
 
@@ -107,8 +107,11 @@ T_LUBRICANT_WARN_C = (-20.0, 150.0)             #: lubricant temperature validat
 #: Every limit, by name (values in SI; ``unit`` and ``scale`` for messages).
 LIMITS = {
     "osculation": Limit(
-        "osculation", "-", (0.5, 0.6), (None, None), lo_open=True,
-        source="groove radius / ball diameter; Harris 2001 ch. 2"),
+        "osculation", "-", (0.5, 2.0), (0.505, 1.4), lo_open=True,
+        source="groove radius / ball diameter: > 0.5 or the ball does not fit its groove; beyond 2 the race is "
+               "flatter than any ball bearing groove and its geometry (A = (f_i + f_o - 1) D) loses its meaning; "
+               "validated from the catalogue range 0.505-0.57 (Harris 2001 ch. 2) to seed 001's modified races "
+               "(0.655 and 1.387)"),
     "n_dm": Limit(
         "speed n·dm", "mm/min", (0.0, 4.0e6), (None, 1.0e6),
         source="refused beyond the fastest ball bearings run (3e6 DN, Bamberger et al. 1976); "
