@@ -218,13 +218,13 @@ def test_zero_entrainment_speed_no_rolling_loss_and_zero_load_no_contact_loss():
         warnings.simplefilter("ignore", ExtrapolationWarning)
         r = evaluate_losses(cs, OIL, 50.0, **KW)
     ci = r.contacts["inner"]
-    assert np.all(cs.u[:, 0] == 0) and np.all(ci["P_rolling"][0] == 0) and np.all(ci["h_min"][0] == 0)
+    assert np.all(cs.u[0] == 0) and np.all(ci["P_rolling"][0] == 0) and np.all(ci["h_min"][0] == 0)
     n = np.array([0.0, 1e-3, 1e-2, 1e-1, 1.0, 10.0])                   # one load, speeds down to 0
     slow = evaluate_losses(prepare_contacts(B7210, Fa=450.0, Fr=0.0, n_rpm=n), OIL, 50.0, drag=False, **KW)
     P_roll = slow.breakdown_W["rolling"]
     assert P_roll[0] == 0.0 and np.all(np.diff(P_roll) > 0) and P_roll[1] < 1e-6 * P_roll[-1]
     assert np.all(np.diff(slow.contacts["inner"]["F_R"][:, 0]) > 0)
-    unloaded = cs.Q[0] == 0
+    unloaded = cs.Q[..., 0, :] == 0
     assert unloaded.any()
     for key in ("P_rolling", "P_sliding", "P_pivoting", "P_hysteresis", "F_R", "h_min", "M"):
         assert np.all(ci[key][unloaded] == 0), key
@@ -243,12 +243,12 @@ def test_local_model_reports_the_public_films_regimes_and_rolling_forces(model):
     eta, ap = OIL.eta(70.0), OIL.alpha_p_at(70.0)
     for k, side in enumerate(("inner", "outer")):
         c = r.contacts[side]
-        args = (cs.Q[k], cs.Rx[k], cs.Ry[k], cs.u[k], eta)
+        args = (cs.Q[..., k, :], cs.Rx[..., k, :], cs.Ry[..., k, :], cs.u[..., k, :], eta)
         np.testing.assert_allclose(c["h_min"], film_thickness(*args, ap, B7210.E_prime), rtol=1e-13)
         reg = lubrication_regime(*args, ap, B7210.E_prime)
         np.testing.assert_array_equal(c["regime"], reg.code)
         public = {"auto": "auto_smooth", "auto_sharp": "auto"}.get(model, model)
-        F = rolling_force(*args, B7210.E_prime, model=public, alpha_p=ap, a=cs.a[k], b=cs.b[k])
+        F = rolling_force(*args, B7210.E_prime, model=public, alpha_p=ap, a=cs.a[..., k, :], b=cs.b[..., k, :])
         np.testing.assert_allclose(c["F_R"], F, rtol=1e-13, atol=0.0)
 
 
@@ -304,3 +304,14 @@ def test_temperature_shapes_are_checked():
         evaluate_losses(cs, OIL, 50.0, T_inner_C=np.ones(4), **KW)
     with pytest.raises(InputError, match="T_oil_C"):
         evaluate_losses(cs, OIL, 50.0, T_oil_C=np.ones((6, B7210.Z)), **KW)
+
+
+@pytest.mark.filterwarnings("ignore::thermobear.errors.ExtrapolationWarning")
+def test_operating_points_taken_from_a_contact_set_evaluate_as_the_batch():
+    from thermobear.arrays import take
+    cs = _spread()
+    sub = take(cs, np.array([2, 4]), 6)                    # the batch axis leads every per-point array
+    assert sub.batch == (2,) and sub.Q.shape == (2, 2, B7210.Z)
+    T = np.linspace(35.0, 85.0, 6)
+    np.testing.assert_allclose(evaluate_losses(sub, OIL, T[[2, 4]], **KW).P_W,
+                               evaluate_losses(cs, OIL, T, **KW).P_W[[2, 4]], rtol=1e-12)

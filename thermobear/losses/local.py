@@ -32,13 +32,12 @@ ball and ½ to the ring (the convention of Pouly et al. 2010), drag to the
 oil–air mixture.  The split conserves energy exactly (tested).
 
 Shapes: a :class:`ContactSet` holds ``batch`` operating points (per-contact arrays
-``(2, *batch, Z)``, inner then outer raceway); temperatures broadcast to the batch, or carry extra
+``(*batch, 2, Z)``, inner then outer raceway); temperatures broadcast to the batch, or carry extra
 leading axes (e.g. ``(2, *batch)``: two temperature states per operating point), and every result
 then carries those axes in front.
 """
 from __future__ import annotations
 
-from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -54,7 +53,7 @@ from thermobear.losses.sliding import (deformed_radius, hysteresis_moment, mixed
                                        sliding_power_heathcote)
 from thermobear.lubrication.film import REGIMES, EHLContacts, ehl_contacts, specific_film_thickness
 
-__all__ = ["LossResult", "ContactSet", "ContactArrays", "bearing_losses", "prepare_contacts", "evaluate_losses",
+__all__ = ["LossResult", "ContactSet", "bearing_losses", "prepare_contacts", "evaluate_losses",
            "BREAKDOWN_KEYS", "ROLLING_MODELS"]
 
 BREAKDOWN_KEYS = ("sliding", "rolling", "pivoting", "hysteresis", "drag")
@@ -75,7 +74,7 @@ class LossResult:
     P_W : float or ndarray              total power loss [W]
     torque_Nm : float or ndarray        friction torque on the rotating ring, P/ω [N m]
     breakdown_W : dict                  sliding, rolling, pivoting, hysteresis, drag [W]
-    contacts : ContactArrays            per contact arrays (a read-only mapping), ``"inner"``/``"outer"`` → dict of
+    contacts : dict                     per contact arrays, keys ``"inner"``/``"outer"`` → dict of
                                         Q [N], alpha [rad], a, b [m], u [m/s], T_C, eta [Pa s],
                                         h_min, h_c [m], Lambda, regime (str), mu, F_R [N],
                                         P_rolling, P_sliding, P_pivoting, P_hysteresis [W], spin [rad/s],
@@ -94,7 +93,7 @@ class LossResult:
     P_W: np.ndarray
     torque_Nm: np.ndarray
     breakdown_W: dict
-    contacts: Mapping
+    contacts: dict
     heat_W: dict
     load: LoadDistribution
     omega_c: np.ndarray
@@ -111,16 +110,16 @@ class ContactSet:
     Attributes
     ----------
     brg : BallBearing
-    batch : tuple                 batch shape of the operating points
-    n_rpm : ndarray               speed [rpm] (batch)
+    n_rpm : ndarray               speed [rpm] (batch); ``batch`` is its shape
+    batch : tuple                 shape of the operating points (property)
     omega : ndarray               rotating-ring speed [rad/s] (batch)
     inv_omega : ndarray           1/ω where the ring turns, else 0 [s/rad] (torque = power × inv_omega)
     load : LoadDistribution
     omega_c : ndarray             cage speed per ball [rad/s] (batch + (Z,)); all balls at the one cage speed
     omega_cage : ndarray          cage speed [rad/s] (batch)
     models_used : dict
-    Q, alpha : ndarray            contact load [N] and angle [rad], (2, *batch, Z): inner, outer raceway
-    Rx, Ry : ndarray              reduced radii, rolling / transverse direction [m] (broadcast to (2, *batch, Z))
+    Q, alpha : ndarray            contact load [N] and angle [rad], (*batch, 2, Z): inner, outer raceway
+    Rx, Ry : ndarray              reduced radii, rolling / transverse direction [m] (broadcast to (*batch, 2, Z))
     a, b : ndarray                Hertz semi-axes across / along rolling [m]
     u : ndarray                   mean entrainment speed [m/s]
     spin : ndarray                spin (pivoting) speed [rad/s], signed
@@ -137,7 +136,6 @@ class ContactSet:
     """
 
     brg: BallBearing
-    batch: tuple
     n_rpm: np.ndarray
     omega: np.ndarray
     inv_omega: np.ndarray
@@ -161,10 +159,15 @@ class ContactSet:
     rolling: RollingContacts
 
     @property
+    def batch(self) -> tuple:
+        """Shape of the operating points (that of ``n_rpm``)."""
+        return self.n_rpm.shape
+
+    @property
     def sides(self) -> dict:
         """``"inner"``/``"outer"`` → dict of that raceway's contact arrays (views, (*batch, Z))."""
         keys = ("Q", "alpha", "Rx", "Ry", "a", "b", "u", "spin", "omega_roll", "P_hysteresis")
-        return {side: {k: getattr(self, k)[i] for k in keys} for i, side in enumerate(_SIDES)}
+        return {side: {k: getattr(self, k)[..., i, :] for k in keys} for i, side in enumerate(_SIDES)}
 
 
 def _frozen(a):
@@ -251,17 +254,17 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
         ca = np.cos(ao)
         Qo = Qo + np.where(ca > np.cos(np.deg2rad(80.0)), Fc / np.maximum(ca, 1e-3), 0.0)
     kin = caged_ball_kinematics(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, omega_c, Qi, Qo, control=control)
-    # both raceways at once, stacked on a leading axis (inner, outer)
-    col = (2,) + (1,) * (len(batch) + 1)                        # per-raceway constants against (2, *sh)
-    Q2 = np.stack((Qi, Qo))
-    al2 = np.stack((ai, ao))
-    Rx2 = np.stack((np.broadcast_to(brg.Rx_i(ai), sh), np.broadcast_to(brg.Rx_o(ao), sh)))
+    # both raceways at once, stacked on an axis before the balls (inner, outer): (*batch, 2, Z)
+    col = (2, 1)                                                # per-raceway constants against (*batch, 2, Z)
+    Q2 = np.stack((Qi, Qo), axis=-2)
+    al2 = np.stack((ai, ao), axis=-2)
+    Rx2 = np.stack((np.broadcast_to(brg.Rx_i(ai), sh), np.broadcast_to(brg.Rx_o(ao), sh)), axis=-2)
     Ry2 = np.broadcast_to(np.array((brg.Ry_i, brg.Ry_o)).reshape(col), Q2.shape)
     c2 = hertz(Q2, Rx2, Ry2, brg.E_prime, method=hertz_method)
     a2, b2 = np.asarray(c2.a), np.asarray(c2.b)
-    u2 = np.stack(np.broadcast_arrays(kin.u_i, kin.u_o))
-    spin2 = np.stack(np.broadcast_arrays(kin.spin_i, kin.spin_o))
-    omega_roll2 = np.asarray(kin.omega_R) * np.cos(al2 + np.asarray(kin.beta))
+    u2 = np.stack(np.broadcast_arrays(kin.u_i, kin.u_o), axis=-2)
+    spin2 = np.stack(np.broadcast_arrays(kin.spin_i, kin.spin_o), axis=-2)
+    omega_roll2 = np.asarray(kin.omega_R)[..., None, :] * np.cos(al2 + np.asarray(kin.beta)[..., None, :])
     Ra2 = np.array((deformed_radius(brg.D, brg.fi), deformed_radius(brg.D, brg.fo))).reshape(col)
     # sliding and pivoting are linear in μ: their powers at μ = 1
     P_sl = sliding_power_heathcote(1.0, Q2, a2, Ra2, omega_roll2)
@@ -279,7 +282,7 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
     f = _frozen
     Q2, Rx2, Ry2, u2, a2, b2 = (f(v) for v in (Q2, Rx2, Ry2, u2, a2, b2))
     inv_omega = np.where(omega > 0, 1.0 / np.where(omega > 0, omega, 1.0), 0.0)
-    return ContactSet(brg=brg, batch=batch, n_rpm=f(nb), omega=f(omega), inv_omega=f(inv_omega), load=load, omega_c=f(omega_c),
+    return ContactSet(brg=brg, n_rpm=f(nb), omega=f(omega), inv_omega=f(inv_omega), load=load, omega_c=f(omega_c),
                       omega_cage=f(w_cage), models_used=models, Q=f(Q2), alpha=f(al2), Rx=f(Rx2), Ry=f(Ry2),
                       a=f(a2), b=f(b2), u=f(u2), spin=f(spin2), omega_roll=f(omega_roll2), P_sliding_mu=f(P_sl),
                       P_pivoting_mu=f(P_piv), P_hysteresis=f(P_hys), ehl=ehl_contacts(Q2, Rx2, Ry2, u2, brg.E_prime),
@@ -303,28 +306,28 @@ def _lead(T, name, batch, Z):
 
 def _temperatures(cs, T_C, T_inner_C, T_outer_C, T_oil_C, dragged):
     """The contact temperatures of both raceways and (when ``dragged``) the oil–air mixture,
-    stacked on one axis after the leading ones: (*lead, 2 or 3, *batch, Z or 1) [°C]; the leading
-    shape; and whether a raceway's temperature is per ball."""
+    stacked on one axis after the operating points: (*lead, *batch, 2 or 3, Z or 1) [°C]; the
+    leading shape; and whether a raceway's temperature is per ball."""
     batch, Z = cs.batch, cs.brg.Z
     Ts = [T_C if v is None else v for v in (T_inner_C, T_outer_C, T_oil_C)]
+    n = 3 if dragged else 2
     if all(isinstance(v, (float, int)) for v in Ts):     # one temperature each: no shapes to work out
-        Tall = np.empty((3 if dragged else 2,) + batch + (1,))
-        for k in range(Tall.shape[0]):
-            Tall[k] = Ts[k]
+        Tall = np.empty(batch + (n, 1))
+        for k in range(n):
+            Tall[..., k, :] = Ts[k]
         return Tall, (), False
     Ts = [np.asarray(v, float) for v in Ts]
     names = [n if v is not None else "T_C" for n, v in zip(("T_inner_C", "T_outer_C", "T_oil_C"),
                                                           (T_inner_C, T_outer_C, T_oil_C))]
-    shapes = [_lead(v, n, batch, Z) for v, n in zip(Ts, names)]
+    shapes = [_lead(v, nm, batch, Z) for v, nm in zip(Ts, names)]
     if shapes[2][1]:
         raise InputError(names[2], Ts[2], f"the oil temperature is one per operating point {batch}, not per ball")
-    leads = [s[0] for s in shapes]
+    leads = [sh[0] for sh in shapes]
     lead = leads[0] if leads[0] == leads[1] == leads[2] else np.broadcast_shapes(*leads)
     per_ball = shapes[0][1] or shapes[1][1]
-    nb = len(batch)
-    Tall = np.empty(lead + (3 if dragged else 2,) + batch + (Z if per_ball else 1,))
-    for k in range(3 if dragged else 2):
-        Tall[(Ellipsis, k) + (slice(None),) * (nb + 1)] = Ts[k] if shapes[k][1] else Ts[k][..., None]
+    Tall = np.empty(lead + batch + (n, Z if per_ball else 1))
+    for k in range(n):
+        Tall[..., k, :] = Ts[k] if shapes[k][1] else Ts[k][..., None]
     return Tall, lead, per_ball
 
 
@@ -427,11 +430,9 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
         raise InputError("supply", supply, "must be " + ", ".join(SUPPLIES[:-1]) + " or " + SUPPLIES[-1])
     dragged = drag and supply not in ("oil_bath", "dry_film") and bool(cs.n_rpm.any())
     Tall, lead, per_ball = _temperatures(cs, T_C, T_inner_C, T_outer_C, T_oil_C, dragged)
-    nb = len(cs.batch)
-    contacts = (Ellipsis, slice(0, 2)) + (slice(None),) * (nb + 1)
-    T2 = Tall[contacts]
+    T2 = Tall[..., :2, :]                           # the raceways' contact temperatures
     eta_all = _at(oil.eta, Tall)                    # contacts and (drag) the oil–air mixture in one call
-    eta2, alpha2 = eta_all[contacts], _at(oil.alpha_p_at, T2)
+    eta2, alpha2 = eta_all[..., :2, :], _at(oil.alpha_p_at, T2)
     h_min, h_c = cs.ehl.film_thickness(eta2, alpha2, kind=("min", "central"))
     reg = cs.ehl.regime(eta2, alpha2)
     F_R = cs.rolling.force(eta2, _ROLLING_FORCE_MODEL.get(rolling_model, rolling_model), alpha_p=alpha2, regime=reg)
@@ -446,8 +447,7 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     np.multiply(mu, cs.P_pivoting_mu, out=P[2])
     P[3] = cs.P_hysteresis
     if dragged:
-        mix = (Ellipsis, 2) + (slice(None),) * nb + (0,)
-        P_drag = _drag_power(cs, oil, Tall[mix], eta_all[mix], supply, oil_flow_m3_s)
+        P_drag = _drag_power(cs, oil, Tall[..., 2, 0], eta_all[..., 2, 0], supply, oil_flow_m3_s)
     else:
         P_drag = np.zeros(lead + cs.batch)
     per_contact = dict(T_C=T2, eta=eta2, h_min=h_min, h_c=h_c, Lambda=Lam, regime=reg.code, mu=mu, F_R=F_R,
@@ -462,7 +462,7 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
                  {"oil_jet": "Parker oil fraction", "oil_air": "oil fraction 1 %", "grease": "air only"}.get(
                      supply, "not modelled for this supply")),
     })
-    return _result(cs, P, P_drag, per_contact, len(lead), models)
+    return _result(cs, P, P_drag, per_contact, models)
 
 
 def _as(x):
@@ -470,48 +470,29 @@ def _as(x):
     return x if x.ndim else float(x)
 
 
-class ContactArrays(Mapping):
-    """Per-contact arrays of a :class:`LossResult`: ``["inner"]`` / ``["outer"]`` → dict of arrays
-    (*lead, *batch, Z) — views of the raceway-stacked arrays of the evaluation, built on access (a
-    solver that needs only the sums does not pay for them)."""
-
-    def __init__(self, cs: ContactSet, stacked: dict, n_lead: int):
-        self._cs, self._stacked, self._n_lead = cs, stacked, n_lead
-
-    def __getitem__(self, side: str) -> dict:
-        k = _SIDES.index(side) if side in _SIDES else None
-        if k is None:
-            raise KeyError(side)
-        st, cs = self._stacked, self._cs
-        ix = (Ellipsis, k) + (slice(None),) * (len(cs.batch) + 1) if self._n_lead else k
-        full = st["h_min"].shape
-        d = {key: (v if v.shape == full else np.broadcast_to(v, full))[ix] for key, v in st.items()}
-        d.update(Q=cs.Q[k], alpha=cs.alpha[k], a=cs.a[k], b=cs.b[k], u=cs.u[k], spin=cs.spin[k])
-        return d
-
-    def __iter__(self):
-        return iter(_SIDES)
-
-    def __len__(self) -> int:
-        return len(_SIDES)
-
-
-def _result(cs, P, P_drag, per_contact, n_lead, models):
-    """The LossResult of the per-contact powers ``P`` (4, *lead, 2, *batch, Z) and the drag (*lead, *batch)."""
-    S = P.sum(-1)                                   # (4, *lead, 2, *batch): summed over the balls
+def _result(cs, P, P_drag, per_contact, models):
+    """The LossResult of the per-contact powers ``P`` (4, *lead, *batch, 2, Z) and the drag (*lead, *batch)."""
+    S = P.sum(-1)                                   # (4, *lead, *batch, 2): summed over the balls
+    fam = S.sum(-1)                                 # each family summed over both raceways
     per_side = S.sum(0)                             # contact power of each raceway
-    fam = S.sum(axis=1 + n_lead)                    # each family summed over both raceways
-    if n_lead:
-        P_in, P_out = (per_side[(Ellipsis, k) + (slice(None),) * len(cs.batch)] for k in range(2))
-    else:
-        P_in, P_out = per_side[0], per_side[1]
+    P_in, P_out = per_side[..., 0], per_side[..., 1]
+    full = P.shape[1:]
+    for key in ("T_C", "eta"):                      # one per operating point: shown per contact
+        src = per_contact[key]
+        if src.shape != full:
+            per_contact[key] = np.empty(full)
+            per_contact[key][...] = src
+    contacts = {}                                   # per raceway: views (*lead, *batch, Z)
+    for k, name in enumerate(_SIDES):
+        d = contacts[name] = {key: v[..., k, :] for key, v in per_contact.items()}
+        d.update({key: getattr(cs, key)[..., k, :] for key in ("Q", "alpha", "a", "b", "u", "spin")})
     breakdown = {"sliding": _as(fam[1]), "rolling": _as(fam[0]), "pivoting": _as(fam[2]),
                  "hysteresis": _as(fam[3]), "drag": _as(P_drag)}
     total = fam[1] + fam[0] + fam[2] + fam[3] + P_drag
     heat = {"inner_ring": _as(0.5 * P_in), "outer_ring": _as(0.5 * P_out), "balls": _as(0.5 * (P_in + P_out)),
             "oil": _as(P_drag)}
     return LossResult(P_W=_as(total), torque_Nm=_as(total * cs.inv_omega), breakdown_W=breakdown,
-                      contacts=ContactArrays(cs, per_contact, n_lead), heat_W=heat, load=cs.load,
+                      contacts=contacts, heat_W=heat, load=cs.load,
                       omega_c=_as(cs.omega_cage), models_used=models, contact_W={"inner": _as(P_in), "outer": _as(P_out)})
 
 
