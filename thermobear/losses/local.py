@@ -38,6 +38,7 @@ then carries those axes in front.
 """
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -53,7 +54,7 @@ from thermobear.losses.sliding import (deformed_radius, hysteresis_moment, mixed
                                        sliding_power_heathcote)
 from thermobear.lubrication.film import REGIMES, EHLContacts, ehl_contacts, specific_film_thickness
 
-__all__ = ["LossResult", "ContactSet", "bearing_losses", "prepare_contacts", "evaluate_losses",
+__all__ = ["LossResult", "ContactSet", "ContactArrays", "bearing_losses", "prepare_contacts", "evaluate_losses",
            "BREAKDOWN_KEYS", "ROLLING_MODELS"]
 
 BREAKDOWN_KEYS = ("sliding", "rolling", "pivoting", "hysteresis", "drag")
@@ -74,7 +75,7 @@ class LossResult:
     P_W : float or ndarray              total power loss [W]
     torque_Nm : float or ndarray        friction torque on the rotating ring, P/ω [N m]
     breakdown_W : dict                  sliding, rolling, pivoting, hysteresis, drag [W]
-    contacts : dict                     per contact arrays, keys ``"inner"``/``"outer"`` → dict of
+    contacts : ContactArrays            per contact arrays (a mapping), ``"inner"``/``"outer"`` → dict of
                                         Q [N], alpha [rad], a, b [m], u [m/s], T_C, eta [Pa s],
                                         h_min, h_c [m], Lambda, regime (str), mu, F_R [N],
                                         P_rolling, P_sliding, P_pivoting, P_hysteresis [W], spin [rad/s],
@@ -93,7 +94,7 @@ class LossResult:
     P_W: np.ndarray
     torque_Nm: np.ndarray
     breakdown_W: dict
-    contacts: dict
+    contacts: Mapping
     heat_W: dict
     load: LoadDistribution
     omega_c: np.ndarray
@@ -470,29 +471,45 @@ def _as(x):
     return x if x.ndim else float(x)
 
 
+@dataclass(frozen=True, eq=False)
+class ContactArrays(Mapping):
+    """Per-contact arrays of a :class:`LossResult`, by raceway: ``["inner"]`` / ``["outer"]`` → dict of
+    arrays (*lead, *batch, Z).
+
+    Holds the arrays of both raceways stacked, (*lead, *batch, 2, Z) (``arrays``); a raceway's dict
+    of views is made on access, so a solver that reads only the sums does not pay for it.  A
+    dataclass: :func:`thermobear.arrays.take` picks operating points from it like from a dict."""
+
+    arrays: dict
+
+    def __getitem__(self, side: str) -> dict:
+        if side not in _SIDES:
+            raise KeyError(side)
+        k = _SIDES.index(side)
+        full = self.arrays["h_min"].shape           # T_C, eta: one per operating point, shown per contact
+        return {key: (v if v.shape == full else np.broadcast_to(v, full))[..., k, :] for key, v in self.arrays.items()}
+
+    def __iter__(self):
+        return iter(_SIDES)
+
+    def __len__(self) -> int:
+        return len(_SIDES)
+
+
 def _result(cs, P, P_drag, per_contact, models):
     """The LossResult of the per-contact powers ``P`` (4, *lead, *batch, 2, Z) and the drag (*lead, *batch)."""
     S = P.sum(-1)                                   # (4, *lead, *batch, 2): summed over the balls
     fam = S.sum(-1)                                 # each family summed over both raceways
     per_side = S.sum(0)                             # contact power of each raceway
     P_in, P_out = per_side[..., 0], per_side[..., 1]
-    full = P.shape[1:]
-    for key in ("T_C", "eta"):                      # one per operating point: shown per contact
-        src = per_contact[key]
-        if src.shape != full:
-            per_contact[key] = np.empty(full)
-            per_contact[key][...] = src
-    contacts = {}                                   # per raceway: views (*lead, *batch, Z)
-    for k, name in enumerate(_SIDES):
-        d = contacts[name] = {key: v[..., k, :] for key, v in per_contact.items()}
-        d.update({key: getattr(cs, key)[..., k, :] for key in ("Q", "alpha", "a", "b", "u", "spin")})
+    per_contact.update(Q=cs.Q, alpha=cs.alpha, a=cs.a, b=cs.b, u=cs.u, spin=cs.spin)
     breakdown = {"sliding": _as(fam[1]), "rolling": _as(fam[0]), "pivoting": _as(fam[2]),
                  "hysteresis": _as(fam[3]), "drag": _as(P_drag)}
     total = fam[1] + fam[0] + fam[2] + fam[3] + P_drag
     heat = {"inner_ring": _as(0.5 * P_in), "outer_ring": _as(0.5 * P_out), "balls": _as(0.5 * (P_in + P_out)),
             "oil": _as(P_drag)}
     return LossResult(P_W=_as(total), torque_Nm=_as(total * cs.inv_omega), breakdown_W=breakdown,
-                      contacts=contacts, heat_W=heat, load=cs.load,
+                      contacts=ContactArrays(per_contact), heat_W=heat, load=cs.load,
                       omega_c=_as(cs.omega_cage), models_used=models, contact_W={"inner": _as(P_in), "outer": _as(P_out)})
 
 
