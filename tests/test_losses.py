@@ -315,3 +315,18 @@ def test_operating_points_taken_from_a_contact_set_evaluate_as_the_batch():
     T = np.linspace(35.0, 85.0, 6)
     np.testing.assert_allclose(evaluate_losses(sub, OIL, T[[2, 4]], **KW).P_W,
                                evaluate_losses(cs, OIL, T, **KW).P_W[[2, 4]], rtol=1e-12)
+
+
+@pytest.mark.filterwarnings("ignore::thermobear.errors.ExtrapolationWarning")
+def test_oil_flow_per_operating_point_and_other_supplies():
+    cs = prepare_contacts(B7210, Fa=450.0, Fr=650.0, n_rpm=np.array([4800.0, 6500.0, 8070.0]))
+    flow = np.array([5e-3, 10e-3, 15e-3]) / 3600
+    r = evaluate_losses(cs, OIL, 50.0, oil_flow_m3_s=flow)
+    for k in range(3):
+        rk = evaluate_losses(prepare_contacts(B7210, Fa=450.0, Fr=650.0, n_rpm=cs.n_rpm[k]), OIL, 50.0,
+                             oil_flow_m3_s=flow[k])
+        assert r.breakdown_W["drag"][k] == pytest.approx(rk.breakdown_W["drag"], rel=1e-12)
+    air = evaluate_losses(cs, OIL, 50.0, supply="grease").breakdown_W["drag"]
+    mist = evaluate_losses(cs, OIL, 50.0, supply="oil_air").breakdown_W["drag"]
+    assert np.all(0 < air) and np.all(air < mist) and np.all(mist < r.breakdown_W["drag"])
+    assert np.all(evaluate_losses(cs, OIL, 50.0, supply="oil_bath").breakdown_W["drag"] == 0.0)

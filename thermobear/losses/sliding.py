@@ -267,16 +267,10 @@ def hertz_strip_load(x, Q, a):
     return _out(np.where(np.abs(x) <= a, 0.75 * Q / a * (1.0 - (x / a) ** 2), 0.0))
 
 
-_GL_CACHE: dict[int, tuple[np.ndarray, np.ndarray]] = {}
-
-
 def _gl_halves(n):
     """Gauss–Legendre nodes on [-1, 0] ∪ [0, 1] (n per half): the |v| kink sits at x ≈ 0."""
-    if n not in _GL_CACHE:
-        t, w = np.polynomial.legendre.leggauss(n)
-        xi = np.concatenate([(t - 1.0) / 2.0, (t + 1.0) / 2.0])
-        _GL_CACHE[n] = (xi, np.concatenate([w, w]) / 2.0)
-    return _GL_CACHE[n]
+    t, w = np.polynomial.legendre.leggauss(n)
+    return np.concatenate([(t - 1.0) / 2.0, (t + 1.0) / 2.0]), np.concatenate([w, w]) / 2.0
 
 
 def sliding_power(speed, mu, Q, a, *, n=24, profile="hertz"):
