@@ -47,7 +47,7 @@ from thermobear.scene import Scene
 __all__ = ["run_sweep", "sweep_points", "CHUNK"]
 
 _VECTOR_KEYS = ("n_rpm", "T_C")          # vectorised inside one scene_losses call
-CHUNK = 256                              #: coupled points solved together (rows stream out per chunk)
+CHUNK = 256                              #: most coupled points solved together (rows stream out per chunk)
 
 
 def sweep_points(grid: dict) -> list[dict]:
@@ -164,9 +164,10 @@ def _prescribed(scenes, points, idx, emit):
             emit(i, rows[i])
 
 
-def _ignore_sigint():
-    """Worker processes leave Ctrl-C to the parent, which terminates them."""
+def _worker_signals():
+    """Worker processes leave Ctrl-C to the parent, which terminates them (SIGTERM: end quietly)."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
 
 
 def _chunk_job(args):
@@ -175,7 +176,9 @@ def _chunk_job(args):
 
 
 def _chunks(idx, processes):
-    size = max(1, min(CHUNK, -(-len(idx) // max(1, 4 * processes)) if processes > 1 else CHUNK))
+    """Chunks of points solved together: large enough to batch well (≥ 16 points), at least 8 per
+    sweep (4 per process) so that rows stream out and an interrupted sweep keeps most of its work."""
+    size = max(16, min(CHUNK, -(-len(idx) // max(8, 4 * processes))))
     return [idx[k:k + size] for k in range(0, len(idx), size)]
 
 
@@ -186,7 +189,7 @@ def _coupled_local(scene, points, idx, processes, emit):
             for i, row in zip(part, _solve_chunk(scene, [points[i] for i in part])):
                 emit(i, row)
         return
-    pool = multiprocessing.get_context().Pool(min(processes, len(chunks)), initializer=_ignore_sigint)
+    pool = multiprocessing.get_context().Pool(min(processes, len(chunks)), initializer=_worker_signals)
     try:
         for part, rows in pool.imap_unordered(_chunk_job, [(scene, part, [points[i] for i in part]) for part in chunks]):
             for i, row in zip(part, rows):

@@ -234,7 +234,8 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre) -> TransientR
                 out_T.setdefault(n, []).append(np.asarray(v)[keep])
             for n, v in tr.report.items():
                 out_rep.setdefault(n, []).append(np.asarray(v, float)[keep])
-            T_state = {n: float(np.asarray(v)[-1]) for n, v in tr.T_C.items() if n in net.free_nodes}
+            if tr.t.size:
+                T_state = {n: float(np.asarray(v)[-1]) for n, v in tr.T_C.items() if n in net.free_nodes}
             if not tr.completed:
                 completed = False
                 break

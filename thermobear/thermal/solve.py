@@ -35,7 +35,7 @@ from typing import Callable
 
 import numpy as np
 import scipy.sparse as sp
-from scipy.integrate import solve_ivp
+from scipy.integrate import BDF, Radau
 
 from thermobear.errors import InputError, NoConvergence
 from thermobear.thermal.network import ThermalNetwork
@@ -397,21 +397,41 @@ def _segment(net, sources, C, Tb, a, b, y0, t_eval, nfev, rtol, atol, method, ma
         return Jb[0] if B == 1 else sp.block_diag(list(Jb), format="csc")
 
     te = None if t_eval is None else np.union1d(t_eval[(t_eval >= a) & (t_eval <= b)], [b])
-    events = None
-    if stop is not None:
-        def halt(t, yf):
-            return -1.0 if stop() else 1.0
-        halt.terminal = True
-        events = halt
-    sol = solve_ivp(rhs, (a, b), y0, method=method, jac=jac, rtol=rtol, atol=atol, t_eval=te, max_step=max_step,
-                    events=events)
-    if sol.status == 1:                   # stopped by the caller: keep what was integrated
-        return sol, False
-    if not sol.success:
-        t_fail = sol.t[-1] if sol.t.size else a
-        raise NoConvergence(f"transient integration failed at t = {t_fail:.6g} s (segment {a:g}–{b:g} s): "
-                            f"{sol.message}", iterations=sol.nfev, last=sol.y[:, -1] if sol.y.size else y0)
-    return sol, True
+    solver = _METHODS[method](rhs, a, y0, b, jac=jac, rtol=rtol, atol=atol, max_step=max_step)
+    ts, ys = [a], [np.asarray(y0, float).copy()]
+    k = 1 if te is not None and te.size and te[0] == a else 0      # the next requested time to report
+    while solver.status == "running":
+        if stop is not None and stop():           # stopped by the caller: keep what was integrated
+            return _Segment(np.array(ts), np.array(ys).T), False
+        t_old = solver.t
+        msg = solver.step()
+        if solver.status == "failed":
+            raise NoConvergence(f"transient integration failed at t = {solver.t:.6g} s (segment {a:g}–{b:g} s): "
+                                f"{msg}", iterations=solver.nfev, last=solver.y)
+        if te is None:
+            ts.append(solver.t)
+            ys.append(solver.y.copy())
+            continue
+        hi = np.searchsorted(te, solver.t, side="right")
+        if hi > k:                                # requested times inside the step: dense output
+            dense = solver.dense_output()
+            for t in te[k:hi]:
+                ts.append(float(t))
+                ys.append(solver.y.copy() if t == solver.t else dense(t))
+            k = hi
+        del t_old
+    return _Segment(np.array(ts), np.array(ys).T), True
+
+
+@dataclass
+class _Segment:
+    """Times and states (n_free·B, n_t) of one integrated segment."""
+
+    t: np.ndarray
+    y: np.ndarray
+
+
+_METHODS = {"BDF": BDF, "Radau": Radau}
 
 
 def _collect(pieces, net, t_eval, B, nf):
