@@ -55,7 +55,15 @@ class SolverError(ThermobearError, RuntimeError):
 
 
 class NoEquilibrium(SolverError):
-    """No static equilibrium exists for the applied loads (e.g. radial load on a thrust bearing)."""
+    """No static equilibrium exists for the applied loads (e.g. radial load on a thrust bearing).
+
+    ``field`` names the input that has no equilibrium (default: the scene's loads); the command line
+    reports it as bad input (exit code 2).
+    """
+
+    def __init__(self, reason: str, *, field: str = "operation (Fa_N, Fr_N, M_Nm)", **kw):
+        super().__init__(reason, **kw)
+        self.field = field
 
 
 class NoConvergence(SolverError):

@@ -76,7 +76,7 @@ def refuse_unloaded_thrust(Fa):
     """A thrust bearing without axial load has no contact: NoEquilibrium naming operation.Fa_N."""
     raise NoEquilibrium(f"a thrust ball bearing needs an axial load (operation.Fa_N = {Fa:g} N; accepted: > 0): "
                         "without it the balls leave the washers and no contact carries or loses anything "
-                        "(in service a minimum axial load keeps them rolling)")
+                        "(in service a minimum axial load keeps them rolling)", field="operation.Fa_N")
 
 
 def _dry_key(scene: Scene):

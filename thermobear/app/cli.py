@@ -170,7 +170,8 @@ def main(argv=None) -> int:
     except (InputError, NoEquilibrium) as e:   # bad input, incl. loads the bearing cannot carry
         if debug:
             raise
-        print(f"error: {_one_line(e)}", file=sys.stderr)
+        text = _one_line(e) if isinstance(e, InputError) else f"{e.field} — {_one_line(e)}"
+        print(f"error: {text}", file=sys.stderr)
         return EXIT_BAD_INPUT
     except SolverError as e:
         if debug:

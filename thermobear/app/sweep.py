@@ -86,7 +86,7 @@ def _row(point: dict, sc: Scene, st=None, exc=None) -> dict:
             models = {}
         row.update(P_W=None, torque_Nm=None, breakdown_W={}, temperatures_C={}, models=models,
                    status=type(exc).__name__, reason=" ".join(str(getattr(exc, "reason", exc)).split()),
-                   iterations=getattr(exc, "iterations", None), residual_K=getattr(exc, "residual", None),
+                   iterations=getattr(exc, "iterations", None), residual_K=_finite_or_none(getattr(exc, "residual", None)),
                    warnings=[])
         return row
     row.update(P_W=float(st.P_W), torque_Nm=float(st.losses.torque_Nm),
@@ -96,6 +96,10 @@ def _row(point: dict, sc: Scene, st=None, exc=None) -> dict:
                iterations=int(st.iterations), residual_K=float(st.residual_K),
                warnings=[str(w) for w in st.warnings])
     return row
+
+
+def _finite_or_none(v):
+    return float(v) if isinstance(v, (int, float, np.floating)) and np.isfinite(v) else None
 
 
 def _solve_chunk(scene: Scene, points: list) -> list:

@@ -31,7 +31,7 @@ from thermobear.lubrication.lubricant import lubricant_names
 from thermobear.models import plan
 from thermobear.scene import load_scene
 from thermobear.scene.network import network_nodes
-from thermobear.validity import T_LUBRICANT_REFUSE_C, warning_lines
+from thermobear.validity import T_LUBRICANT_REFUSE_C
 
 __all__ = ["cmd_run", "cmd_loads", "cmd_list", "cmd_transient", "cmd_sweep", "cmd_compare", "cmd_calibrate",
            "cmd_spin_down", "read_schedule", "EXIT_INTERRUPTED"]
@@ -117,16 +117,9 @@ def parse_values(text, field, *, allow_str=False):
 
 
 # --------------------------------------------------------------------------- run / loads / list
-def print_warnings(ws):
-    """The OutsideValidity warnings of a result, one line each on stderr."""
-    for line in warning_lines(ws or []):
-        print(line, file=sys.stderr)
-
-
 def cmd_run(args):
     out = check_out_dir(args.plot)
     res = solve(load_scene_with(args.scene, args.set))
-    print_warnings(res.warnings)
     if args.json:
         print_json(res.as_dict())
     else:
@@ -253,7 +246,6 @@ def cmd_transient(args):
     finally:
         for s, h in previous.items():
             signal.signal(s, h)
-    print_warnings(run.warnings)
     nodes = list(run.T_C)
     header = ["t_s"] + [f"T_{n}_C" for n in nodes] + ["P_W"] + [f"P_{k}_W" for k in run.breakdown_W]
     cols = [run.t_s] + [run.T_C[n] for n in nodes] + [run.P_W] + list(run.breakdown_W.values())

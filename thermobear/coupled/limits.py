@@ -6,12 +6,14 @@ lies outside the validated range becomes a warning of that point's result).
 """
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 
 from thermobear.errors import ExtrapolationWarning, InputError
 from thermobear.validity import P_MAX_REFUSE_PA, check, collect
 
-__all__ = ["p_max_Pa", "contact_pressure", "overloads", "point_warnings"]
+__all__ = ["p_max_Pa", "contact_pressure", "overloads", "point_warnings", "emit"]
 
 
 def p_max_Pa(Q, a, b):
@@ -69,3 +71,9 @@ def point_warnings(scene, losses, x_C) -> list:
         if skf is not None:
             check("skf_phi_bl", np.asarray(skf.phi_bl, float), "models.losses = skf")
     return list(got)
+
+
+def emit(ws, stacklevel: int = 3):
+    """Issue an answer's warnings to the caller (Python warnings; the command line prints each once)."""
+    for w in ws:
+        warnings.warn(w, stacklevel=stacklevel)

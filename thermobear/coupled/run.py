@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from thermobear.coupled.limits import point_warnings
+from thermobear.coupled.limits import emit, point_warnings
 from thermobear.coupled.sources import scene_losses
 from thermobear.coupled.steady import SteadyState, steady_state
 from thermobear.scene import Scene
@@ -94,10 +94,12 @@ def solve(scene: Scene) -> RunResult:
             warnings.simplefilter("ignore", OutsideValidity)
             r = scene_losses(scene)         # the model choice's dry loads are the loads (solved once)
         T = float(scene.T_C)
+        ws = point_warnings(scene, r, [T, T, T])
+        emit(ws)
         return RunResult(scene=scene, P_W=float(r.P_W), torque_Nm=float(r.torque_Nm),
                          breakdown_W={k: float(v) for k, v in r.breakdown_W.items()},
                          T_C={"contacts (prescribed)": T}, models_used=r.models_used, losses=r,
-                         warnings=point_warnings(scene, r, [T, T, T]))
+                         warnings=ws)
     st = steady_state(scene)
     return RunResult(scene=scene, P_W=st.P_W, torque_Nm=float(st.losses.torque_Nm),
                      breakdown_W={k: float(v) for k, v in st.losses.breakdown_W.items()}, T_C=st.T_C,

@@ -39,7 +39,7 @@ from thermobear.arrays import take
 from thermobear.coupled.fixedpoint import solve_coupled
 from thermobear.coupled.pipeline import (Family, families, family_contacts, family_loads, film_temperature_C,
                                         split_failures)
-from thermobear.coupled.limits import overloads, point_warnings
+from thermobear.coupled.limits import emit, overloads, point_warnings
 from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepared_for
 from thermobear.errors import (ExtrapolationWarning, InputError, NoConvergence, OutsideValidity, SolverError,
                                ThermalRunaway)
@@ -441,6 +441,8 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> l
         for fam in fams:
             for i, r in zip(fam.index, _solve_family(fam, tol_K, None if load is None else _batched(load), prepared)):
                 out[i] = r
+    seen: set = set()
+    emit([w for r in out if isinstance(r, SteadyState) for w in r.warnings if not (str(w) in seen or seen.add(str(w)))])
     return out
 
 

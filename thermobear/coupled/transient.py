@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from thermobear.coupled.limits import point_warnings
+from thermobear.coupled.limits import emit, point_warnings
 from thermobear.coupled.pipeline import Family, family_contacts, family_loads, film_temperature_C
 from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepared_for
 from thermobear.coupled.steady import T_LIMIT_K, _batched
@@ -250,6 +250,7 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre) -> TransientR
         x = [0.5 * (Tb + cat(out_T[ro["inner"]])), 0.5 * (Tb + cat(out_T[ro["outer"]])), cat(out_T[ro["oil"]])]
         for _, _, sc, _ in pieces[:i + 1]:
             got += [w for w in point_warnings(sc, None, np.concatenate(x)) if str(w) not in map(str, got)]
+    emit(got)
     return _assemble(out_t, out_T, out_rep, first, seg_changes, got, completed)
 
 
