@@ -274,3 +274,60 @@ def test_spin_down_needs_inertia(capsys, tmp_path):
     bare.write_text(text)
     code, _, err = run(capsys, "spin-down", str(bare), "--rpm", "120")
     assert_bad_input(code, err, "rig.J_kg_m2")
+
+
+# ------------------------------------------------------------------ bad input named by its field
+@pytest.mark.parametrize("T0", ["nan", "-300", "1000", "inf"])
+def test_transient_start_temperature_is_refused_by_its_own_name(capsys, tmp_path, T0):
+    """--T0-C nan ended in a scipy ValueError, -300 reported "T1_K = -26.85", 1000 exited with 3."""
+    out_csv = tmp_path / "t.csv"
+    code, _, err = run(capsys, "transient", SYNTH, "--t-end", 10, "--T0-C", T0, "--csv", out_csv)
+    assert_bad_input(code, err, "--T0-C")
+    assert not out_csv.exists()
+
+
+def test_a_sweep_with_failed_points_exits_3_after_writing_every_row_unless_allowed(capsys, tmp_path):
+    out_csv = tmp_path / "s.csv"
+    s004 = str(EX / "seed004_oil_jet_7210.toml")
+    code, _, err = run(capsys, "sweep", s004, "--Fa", "0,450", "--n-rpm", "3000", "--csv", out_csv, "--quiet")
+    lines = [r for r in out_csv.read_text().splitlines() if not r.startswith("#")]
+    assert code == 3 and len(lines) == 3 and "1 of 2 points failed (NoEquilibrium)" in err
+    code, _, _ = run(capsys, "sweep", s004, "--Fa", "0,450", "--n-rpm", "3000", "--csv", out_csv, "--quiet",
+                     "--allow-failures")
+    assert code == 0
+
+
+def test_transient_t90_is_interpolated_between_output_times():
+    from thermobear.app.verbs import t90_s
+    t = np.linspace(0.0, 100.0, 11)
+    T = 20.0 + 10.0 * (1.0 - np.exp(-t / 20.0))
+    exact = -20.0 * np.log(1.0 - 0.9 * (1.0 - np.exp(-5.0)))      # where T reaches 90 % of its rise to T(100)
+    assert t90_s(t, T) == pytest.approx(exact, rel=0.02) and t90_s(t, T) % 10.0 != 0.0
+    assert t90_s(t, np.full(11, 20.0)) is None
+
+
+def test_progress_on_a_pipe_is_a_line_every_few_seconds():
+    import io
+    from thermobear.app.output import Progress
+    buf = io.StringIO()
+    p = Progress(stream=buf, every_s=3600.0)
+    for k in range(1, 501):
+        p(k, 500)
+    assert "\r" not in buf.getvalue() and buf.getvalue().count("\n") <= 2 and "500/500" in buf.getvalue()
+
+
+def test_warnings_are_one_line_each_without_source_lines(capsys):
+    code, _, err = run(capsys, "run", str(EX / "seed004_oil_jet_7210.toml"), "--set", "n_rpm=16000")
+    lines = [line for line in err.splitlines() if line.strip()]
+    assert code == 0 and lines and all(line.startswith("warning: ") for line in lines)
+    assert len(lines) == len(set(lines)) and not any(".py" in line for line in lines)
+
+
+def test_every_models_key_can_be_forced_on_the_command_line(capsys):
+    s004 = str(EX / "seed004_oil_jet_7210.toml")
+    code, out, _ = run(capsys, "run", s004, "--json", "--set", "models.drag=false", "--set", "models.hertz=houpert",
+                       "--set", "T_C=50")
+    d = json.loads(out)
+    assert code == 0 and d["models_used"]["drag"]["choice"] is False and d["models_used"]["hertz"]["choice"] == "houpert"
+    code, _, err = run(capsys, "run", s004, "--set", 'models.drag="false"')
+    assert_bad_input(code, err, "models.drag")

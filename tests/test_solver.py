@@ -259,3 +259,10 @@ def test_relative_network_path_follows_the_working_directory(tmp_path, monkeypat
     p = tmp_path / "b" / "net.toml"
     p.write_text(text.replace('name = "one_node"', 'name = "variant-b2"'), encoding="utf-8")
     assert network_spec(sc.network, sc.path)["name"] == "variant-b2"
+
+
+def test_two_schedule_steps_at_one_time_are_refused_not_merged():
+    with pytest.raises(InputError, match=r"schedule\[1\]\.t_s = 100.0 — step times must increase"):
+        transient(S004, 300.0, schedule=[(100.0, {"n_rpm": 4000.0}), (100.0, {"n_rpm": 5000.0})])
+    with pytest.raises(InputError, match="step times must increase"):
+        transient(S004, 300.0, schedule=[(200.0, {"n_rpm": 4000.0}), (100.0, {"n_rpm": 5000.0})])

@@ -66,19 +66,12 @@ class LocalSources:
                                T_outer_C=x[..., 1], T_oil_C=x[..., 2], **self.kw)
 
     def parts(self, x_C) -> np.ndarray:
-        """(..., B, 3) inner contacts, outer contacts, drag [W] at coupled temperatures (..., B, 3) [°C]."""
-        x = np.asarray(x_C, float)
-        if x.ndim == 2:
-            return _parts(self.result(x))
-        return np.stack([self.parts(xk) for xk in x])
-
-
-def _parts(r) -> np.ndarray:
-    """(B, 3) from a loss result: its heat to the rings is ½ of each side's contact losses."""
-    B = np.shape(r.P_W)
-    return np.stack([np.broadcast_to(2.0 * np.asarray(r.heat_W["inner_ring"], float), B),
-                     np.broadcast_to(2.0 * np.asarray(r.heat_W["outer_ring"], float), B),
-                     np.broadcast_to(np.asarray(r.heat_W["oil"], float), B)], axis=-1)
+        """(..., B, 3) inner contacts, outer contacts, drag [W] at coupled temperatures (..., B, 3) [°C]
+        (every leading state in one evaluation)."""
+        r = self.result(x_C)
+        shape = np.shape(x_C)[:-1]
+        return np.stack([np.broadcast_to(r.contact_W["inner"], shape), np.broadcast_to(r.contact_W["outer"], shape),
+                         np.broadcast_to(r.breakdown_W["drag"], shape)], axis=-1)
 
 
 @dataclass

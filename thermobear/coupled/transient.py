@@ -126,14 +126,11 @@ def heat_sources(pm: PointModel):
 
 
 def _report(src, x):
-    """P_W and P_<loss family> [W] at coupled temperatures x (..., B, 3)."""
-    if x.ndim > 2:
-        parts = [_report(src, xk) for xk in x]
-        return {k: np.stack([p[k] for p in parts]) for k in parts[0]}
+    """P_W and P_<loss family> [W] at coupled temperatures x (..., B, 3) (one evaluation)."""
     r = src.result(x)
-    B = x.shape[0]
-    return {"P_W": np.broadcast_to(np.asarray(r.P_W, float), (B,)),
-            **{f"P_{n}": np.broadcast_to(np.asarray(v, float), (B,)) for n, v in r.breakdown_W.items()}}
+    shape = x.shape[:-1]
+    return {"P_W": np.broadcast_to(np.asarray(r.P_W, float), shape),
+            **{f"P_{n}": np.broadcast_to(np.asarray(v, float), shape) for n, v in r.breakdown_W.items()}}
 
 
 def _film_of(T_state, roles, scene) -> float:
