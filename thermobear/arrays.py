@@ -52,16 +52,23 @@ def take(obj, index, B: int):
     length ``B`` is indexed along it, recursively through dataclasses, dicts, lists and tuples; the
     rest (per-ball azimuths — fields named in :data:`UNBATCHED` —, scalars, objects) is kept.
 
+    A dataclass is rebuilt field by field without running its ``__init__`` (the slice of a checked
+    result is checked).
+
     >>> take({"P_W": np.array([1.0, 2.0]), "psi": np.zeros(3)}, 1, 2)["P_W"]
     np.float64(2.0)
     """
     if isinstance(obj, np.ndarray):
         return obj[index] if obj.ndim >= 1 and obj.shape[0] == B else obj
-    if isinstance(obj, dict):
+    t = type(obj)
+    if t is dict:
         return {k: v if k in UNBATCHED else take(v, index, B) for k, v in obj.items()}
-    if isinstance(obj, (list, tuple)) and not hasattr(obj, "_fields"):
-        return type(obj)(take(v, index, B) for v in obj)
-    if dataclasses.is_dataclass(obj) and not isinstance(obj, type):
-        return dataclasses.replace(obj, **{f.name: take(getattr(obj, f.name), index, B)
-                                           for f in dataclasses.fields(obj) if f.init and f.name not in UNBATCHED})
-    return obj
+    if t is list or t is tuple:
+        return t(take(v, index, B) for v in obj)
+    if not hasattr(t, "__dataclass_fields__") or isinstance(obj, type):
+        return obj
+    new = object.__new__(t)
+    for f in dataclasses.fields(obj):
+        v = getattr(obj, f.name)
+        object.__setattr__(new, f.name, v if f.name in UNBATCHED else take(v, index, B))
+    return new

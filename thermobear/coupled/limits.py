@@ -11,9 +11,10 @@ import warnings
 import numpy as np
 
 from thermobear.errors import ExtrapolationWarning, InputError
-from thermobear.validity import P_MAX_REFUSE_PA, check, collect
+from thermobear.arrays import take
+from thermobear.validity import LIMITS, P_MAX_REFUSE_PA, check, collect
 
-__all__ = ["p_max_Pa", "contact_pressure", "overloads", "point_warnings", "emit"]
+__all__ = ["p_max_Pa", "contact_pressure", "overloads", "point_warnings", "family_warnings", "emit"]
 
 
 def p_max_Pa(Q, a, b):
@@ -71,6 +72,36 @@ def point_warnings(scene, losses, x_C) -> list:
         if skf is not None:
             check("skf_phi_bl", np.asarray(skf.phi_bl, float), "models.losses = skf")
     return list(got)
+
+
+def _outside_warn(name, v) -> np.ndarray:
+    """Per point (rows of ``v``): anything outside the validated range of limit ``name``."""
+    lo, hi = LIMITS[name].warn
+    v = np.asarray(v, float).reshape(np.shape(v)[0], -1)
+    out = np.zeros(v.shape[0], bool)
+    if lo is not None:
+        out |= (v < lo).any(axis=1)
+    if hi is not None:
+        out |= (v > hi).any(axis=1)
+    return out
+
+
+def family_warnings(scenes, losses, x_C) -> list:
+    """:func:`point_warnings` of the B points of a family (batched ``losses``, ``x_C`` (B, 3)): the
+    ranges checked for all points at once, the messages made only for the points outside."""
+    B = len(scenes)
+    n_dm = np.array([s.n_rpm * s.bearing.dm * 1e3 for s in scenes])
+    flag = _outside_warn("n_dm", n_dm[:, None]) | _outside_warn("lubricant_T", x_C)
+    c = getattr(losses, "contacts", None)
+    if c:
+        p = np.concatenate([np.reshape(p_max_Pa(c[s]["Q"], c[s]["a"], c[s]["b"]), (B, -1)) for s in ("inner", "outer")], 1)
+        flag |= _outside_warn("p_max", p)
+    if getattr(losses, "skf", None) is not None:
+        flag |= _outside_warn("skf_phi_bl", np.reshape(np.asarray(losses.skf.phi_bl, float), (B, -1)))
+    out = [[] for _ in range(B)]
+    for b in np.flatnonzero(flag):
+        out[b] = point_warnings(scenes[b], take(losses, b, B), x_C[b])
+    return out
 
 
 def emit(ws, stacklevel: int = 3):

@@ -39,7 +39,7 @@ from thermobear.arrays import take
 from thermobear.coupled.fixedpoint import solve_coupled
 from thermobear.coupled.pipeline import (Family, families, family_contacts, family_loads, film_temperature_C,
                                         split_failures)
-from thermobear.coupled.limits import emit, overloads, point_warnings
+from thermobear.coupled.limits import emit, family_warnings, overloads
 from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepared_for
 from thermobear.errors import (ExtrapolationWarning, InputError, NoConvergence, OutsideValidity, SolverError,
                                ThermalRunaway)
@@ -243,6 +243,7 @@ def _finish(fam: Family, net, src, cp: Coupling, template, nw: _Newton, tol_K) -
     gap = np.abs(st.T_K[:, free] @ cp.C.T - nw.x).max(axis=1)
     bal = np.atleast_1d(st.balance_W)
     flows = {k: np.atleast_1d(v) for k, v in st.flows_W.items()}
+    warned = family_warnings(fam.scenes, r, x_C)
     out = []
     for b in range(fam.B):
         if not nw.done[b]:
@@ -270,7 +271,7 @@ def _finish(fam: Family, net, src, cp: Coupling, template, nw: _Newton, tol_K) -
             residual_K=max(float(nw.step[b]), float(gap[b])), energy_balance_W=float(bal[b]),
             heat_flows_W={k: float(v[b]) for k, v in flows.items()},
             models_used=_models_used(fam, rb, template, cp, nw, b), history=nw.history[b], roles=dict(cp.roles),
-            warnings=point_warnings(fam.scenes[b], rb, x_C[b])))
+            warnings=warned[b]))
     return out
 
 
