@@ -59,6 +59,22 @@ def test_a_broken_table_is_a_named_input_error(monkeypatch, broken):
         bad = {**good, "cp_J_kgK": [float("nan")] * len(good["cp_J_kgK"])}
     else:
         bad = broken
-    monkeypatch.setattr(data, "read_toml", lambda path: bad)
+    monkeypatch.setattr(air, "read_toml", lambda path: bad)
     with pytest.raises(InputError, match="air_1atm.toml"):
         air._table.__wrapped__()
+
+
+def test_one_temperature_equals_the_array_path():
+    """One Python float takes the table's cubic pieces without arrays: the same values."""
+    T = np.concatenate([np.random.default_rng(5).uniform(200.0, 600.0, 300), [200.0, 273.15, 599.5, 600.0]])
+    arr = air_properties(T)
+    for k, t in enumerate(T):
+        p = air_properties(float(t))
+        for key in ("rho", "mu", "k", "cp", "nu", "Pr"):
+            assert p[key] == pytest.approx(arr[key][k], rel=1e-14, abs=0.0)
+    assert air_properties(np.float64(T[0]))["Pr"] == pytest.approx(arr["Pr"][0], rel=1e-14)
+    assert isinstance(air_properties(np.array(300.0))["rho"], float)
+    with pytest.raises(InputError, match="T_K"):
+        air_properties(650.0)
+    with pytest.raises(InputError, match="T_K"):
+        air_properties(np.array([300.0, np.nan]))

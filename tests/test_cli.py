@@ -81,10 +81,14 @@ def test_thrust_bearing_without_axial_load_exit_2(capsys, tmp_path):
     assert out == "" and not (tmp_path / "plots").exists()
 
 
-def test_run_bad_plot_dir_checked_before_computing(capsys, tmp_path):
-    code, out, err = run(capsys, "run", SEED000, "--plot", tmp_path / "no" / "such" / "dir")
+@pytest.mark.parametrize("where", ["under_a_file", "/proc/thermobear-test"])
+def test_run_plot_folder_that_cannot_be_made_is_refused_before_computing(capsys, tmp_path, where):
+    if where == "under_a_file":
+        (tmp_path / "file").write_text("x")
+        where = tmp_path / "file" / "plots"
+    code, out, err = run(capsys, "run", SEED000, "--plot", where)
     assert_bad_input(code, err, "--plot")
-    assert out == ""
+    assert out == "" and not Path(where).exists()
 
 
 def test_list_and_loads(capsys):
@@ -92,16 +96,16 @@ def test_list_and_loads(capsys):
     assert code == 0 and "7210" in json.loads(out)["bearings"]
     code, out, _ = run(capsys, "loads", str(EX / "seed004_oil_jet_7210.toml"), "--json")
     d = json.loads(out)
-    assert code == 0 and len(d["Q_N"]) == len(d["psi_deg"])
+    assert code == 0 and len(d["Q_inner_N"]) == len(d["psi_deg"]) and d["form"].startswith("high-speed")
 
 
 def test_solver_error_exit_3(capsys, monkeypatch):
-    import thermobear.coupled.solver as solver
+    import thermobear.app.verbs as verbs
     from thermobear.errors import ThermalRunaway
 
     def boom(scene):
         raise ThermalRunaway("losses grow faster than dissipation above 180 °C", iterations=7, residual=3.0)
-    monkeypatch.setattr(solver, "solve", boom)
+    monkeypatch.setattr(verbs, "solve", boom)
     code, _, err = run(capsys, "run", SEED000)
     assert code == 3 and err.strip() == "error: ThermalRunaway: losses grow faster than dissipation above 180 °C"
 
@@ -169,8 +173,9 @@ def test_sweep_csv(capsys, tmp_path):
     assert code == 0 and "6/6" in err                     # progress bar on stderr
     rows = [l.split(",") for l in out_csv.read_text().splitlines() if not l.startswith("#")]
     head = rows[0]
-    assert head[:2] == ["n_rpm", "T_C"] and len(rows) == 1 + 6
-    P = {(float(r[0]), float(r[1])): float(r[head.index("P_W")]) for r in rows[1:]}
+    assert head[:3] == ["index", "n_rpm", "T_C"] and len(rows) == 1 + 6
+    assert sorted(int(r[0]) for r in rows[1:]) == list(range(6))
+    P = {(float(r[1]), float(r[2])): float(r[head.index("P_W")]) for r in rows[1:]}
     assert P[(300.0, 23.5)] > P[(200.0, 23.5)] > P[(100.0, 23.5)]      # more speed, more loss
     assert P[(200.0, 40.0)] < P[(200.0, 23.5)]                          # thinner oil, less rolling loss
     code, out, _ = run(capsys, "run", SEED000, "--json", "--set", "n_rpm=200")
@@ -269,3 +274,60 @@ def test_spin_down_needs_inertia(capsys, tmp_path):
     bare.write_text(text)
     code, _, err = run(capsys, "spin-down", str(bare), "--rpm", "120")
     assert_bad_input(code, err, "rig.J_kg_m2")
+
+
+# ------------------------------------------------------------------ bad input named by its field
+@pytest.mark.parametrize("T0", ["nan", "-300", "1000", "inf"])
+def test_transient_start_temperature_is_refused_by_its_own_name(capsys, tmp_path, T0):
+    """--T0-C nan ended in a scipy ValueError, -300 reported "T1_K = -26.85", 1000 exited with 3."""
+    out_csv = tmp_path / "t.csv"
+    code, _, err = run(capsys, "transient", SYNTH, "--t-end", 10, "--T0-C", T0, "--csv", out_csv)
+    assert_bad_input(code, err, "--T0-C")
+    assert not out_csv.exists()
+
+
+def test_a_sweep_with_failed_points_exits_3_after_writing_every_row_unless_allowed(capsys, tmp_path):
+    out_csv = tmp_path / "s.csv"
+    s004 = str(EX / "seed004_oil_jet_7210.toml")
+    code, _, err = run(capsys, "sweep", s004, "--Fa", "0,450", "--n-rpm", "3000", "--csv", out_csv, "--quiet")
+    lines = [r for r in out_csv.read_text().splitlines() if not r.startswith("#")]
+    assert code == 3 and len(lines) == 3 and "1 of 2 points failed (NoEquilibrium)" in err
+    code, _, _ = run(capsys, "sweep", s004, "--Fa", "0,450", "--n-rpm", "3000", "--csv", out_csv, "--quiet",
+                     "--allow-failures")
+    assert code == 0
+
+
+def test_transient_t90_is_interpolated_between_output_times():
+    from thermobear.app.verbs import t90_s
+    t = np.linspace(0.0, 100.0, 11)
+    T = 20.0 + 10.0 * (1.0 - np.exp(-t / 20.0))
+    exact = -20.0 * np.log(1.0 - 0.9 * (1.0 - np.exp(-5.0)))      # where T reaches 90 % of its rise to T(100)
+    assert t90_s(t, T) == pytest.approx(exact, rel=0.02) and t90_s(t, T) % 10.0 != 0.0
+    assert t90_s(t, np.full(11, 20.0)) is None
+
+
+def test_progress_on_a_pipe_is_a_line_every_few_seconds():
+    import io
+    from thermobear.app.output import Progress
+    buf = io.StringIO()
+    p = Progress(stream=buf, every_s=3600.0)
+    for k in range(1, 501):
+        p(k, 500)
+    assert "\r" not in buf.getvalue() and buf.getvalue().count("\n") <= 2 and "500/500" in buf.getvalue()
+
+
+def test_warnings_are_one_line_each_without_source_lines(capsys):
+    code, _, err = run(capsys, "run", str(EX / "seed004_oil_jet_7210.toml"), "--set", "n_rpm=16000")
+    lines = [line for line in err.splitlines() if line.strip()]
+    assert code == 0 and lines and all(line.startswith("warning: ") for line in lines)
+    assert len(lines) == len(set(lines)) and not any(".py" in line for line in lines)
+
+
+def test_every_models_key_can_be_forced_on_the_command_line(capsys):
+    s004 = str(EX / "seed004_oil_jet_7210.toml")
+    code, out, _ = run(capsys, "run", s004, "--json", "--set", "models.drag=false", "--set", "models.hertz=houpert",
+                       "--set", "T_C=50")
+    d = json.loads(out)
+    assert code == 0 and d["models_used"]["drag"]["choice"] is False and d["models_used"]["hertz"]["choice"] == "houpert"
+    code, _, err = run(capsys, "run", s004, "--set", 'models.drag="false"')
+    assert_bad_input(code, err, "models.drag")

@@ -11,11 +11,10 @@ from scipy.optimize import brentq
 from scipy.special import lambertw
 
 sys.path.insert(0, str(Path(__file__).parent))
-from test_thermal import StubOil, oil_jet_context  # noqa: E402
 
-from thermobear.coupled.fixedpoint import loop_gain, solve_coupled, solve_network_coupled  # noqa: E402
+from thermobear.coupled.fixedpoint import loop_gain, solve_coupled  # noqa: E402
 from thermobear.errors import InputError, NoConvergence, ThermalRunaway  # noqa: E402
-from thermobear.thermal import load_network, solve_steady, split_losses  # noqa: E402
+from thermobear.thermal import split_losses  # noqa: E402
 
 TA = 293.15      # ambient [K]
 G = 2.0          # one-node dissipation conductance [W/K]
@@ -119,37 +118,6 @@ def viscous_losses(oil, n_rpm=6500.0):
         src = split_losses(Pi, Po, drag)
         return src, {"P_inner_W": Pi.sum(), "P_outer_W": Po.sum(), "P_drag_W": drag}
     return losses
-
-
-def test_network_coupling_converges_and_conserves_energy():
-    ctx = oil_jet_context()
-    net = load_network("oil_jet_ball_bearing", ctx)
-    losses = viscous_losses(ctx["oil"])
-    r = solve_network_coupled(net, losses)
-    st = r.steady
-    assert abs(st.balance_rel) < 1e-9
-    total = r.report["P_inner_W"] + r.report["P_outer_W"] + r.report["P_drag_W"]
-    assert math.fsum(r.sources_W.values()) == pytest.approx(total, rel=1e-12)
-    # fixed point: the network's answer to the losses at T is T
-    free = ~net.fixed
-    assert np.max(np.abs(st.T_K[free] - r.T_K)) < 1e-6
-    assert r.loop_gain < 1 and r.energy_residual_rel < 1e-6
-    # same point as a slow, heavily damped Picard (independent path)
-    r_slow = solve_network_coupled(net, losses, method="picard", damping=0.5, max_iter=400)
-    assert np.max(np.abs(r_slow.T_K - r.T_K)) < 1e-4
-    assert r.iterations < r_slow.iterations
-
-
-def test_network_coupling_losses_drop_as_bearing_heats():
-    """Seed 004 §5.3.1: losses fall as the bearing warms (viscosity): the coupled loss is below the cold one."""
-    ctx = oil_jet_context()
-    net = load_network("oil_jet_ball_bearing", ctx)
-    losses = viscous_losses(StubOil())
-    r = solve_network_coupled(net, losses)
-    cold = losses({n: ctx["scene"]["T_ambient_C"] + 273.15 for n in net.nodes})[0]
-    assert math.fsum(r.sources_W.values()) < math.fsum(cold.values())
-    st_cold = solve_steady(net, cold)
-    assert r.steady.T_C["balls"] < st_cold.T_C["balls"]
 
 
 def test_picard_does_not_call_a_stable_non_normal_map_runaway():

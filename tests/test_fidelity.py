@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import thermobear as tb
-from thermobear.coupled.solver import solve
+from thermobear.coupled import solve
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "validation"))
 fidelity = pytest.importorskip("fidelity")

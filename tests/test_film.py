@@ -307,3 +307,25 @@ def test_bad_input():
         moes_map_boundaries(2.0)
     with pytest.raises(InputError, match="u"):
         lubrication_regime(100.0, RXI, RY209, -1.0, ETA209, ALPHA209, E209)
+
+
+# --------------------------------------------------------------- prepared contacts
+def test_prepared_contacts_at_leading_temperature_states_equal_the_module_functions():
+    from thermobear.lubrication.film import ehl_contacts
+    Q = np.array([0.0, 20.0, 437.0, 2000.0])
+    Rx, u = np.array([5.1e-3, 5.1e-3, 5.0e-3, 4.9e-3]), np.array([3.0, 0.0, 3.0, 6.0])
+    oil = lubricant("seed004-mineral")
+    T = np.array([[30.0], [60.0], [95.0]])                                   # 3 states in front
+    eta, alpha = oil.eta(T), oil.alpha_p_at(T)
+    c = ehl_contacts(Q, Rx, RY004, u, E004)
+    h_min, h_c = c.film_thickness(eta, alpha, kind=("min", "central"))
+    reg = c.regime(eta, alpha)
+    assert h_min.shape == h_c.shape == reg.code.shape == (3, 4)
+    for k in range(3):
+        args = (Q, Rx, RY004, u, float(eta[k, 0]), float(alpha[k, 0]), E004)
+        np.testing.assert_allclose(h_min[k], film_thickness(*args), rtol=1e-14)
+        np.testing.assert_allclose(h_c[k], film_thickness(*args, kind="central"), rtol=1e-14)
+        r = lubrication_regime(*args)
+        np.testing.assert_array_equal(reg.code[k], r.code)
+        np.testing.assert_allclose(reg.M[k], r.M, rtol=1e-14)
+    assert reg.code[0, 0] == "IVR" and np.all(h_min[:, :2] == 0)             # Q = 0 and u = 0

@@ -14,7 +14,8 @@ from thermobear.errors import InputError
 from thermobear.contact.kinematics import entrainment_speed
 from thermobear.loads.film import film_load_distribution
 from thermobear.loads.highspeed import load_distribution_high_speed
-from thermobear.coupled.solver import choose_models, scene_contacts, scene_losses, steady_state
+from thermobear.coupled import scene_contacts, scene_losses, steady_state
+from thermobear.models import choose_models
 
 ROOT = Path(__file__).resolve().parents[1]
 FILM = {"load_model": "film"}

@@ -12,7 +12,8 @@ import thermobear as tb
 from thermobear.app.cli import main
 from thermobear.errors import InputError
 from thermobear.scene.scene import scene_from_dict
-from thermobear.coupled.solver import choose_models, steady_state
+from thermobear.coupled import steady_state
+from thermobear.models import choose_models
 
 ROOT = Path(__file__).resolve().parents[1]
 SEED004 = ROOT / "examples" / "seed004_oil_jet_7210.toml"

@@ -42,6 +42,17 @@ def test_ellipticity_satisfies_curvature_difference():
     assert np.all(np.diff(k) > 0)
 
 
+def test_ellipticity_root_over_the_whole_range_from_near_circular_to_1e5():
+    from thermobear.contact.hertz import _f_rho
+    r = np.concatenate([np.exp(np.linspace(0.0, np.log(1e5), 400)), [1.0, 1.00005, 1.0002, 5.0, 32.3]])
+    k = ellipticity(r)
+    circ = r < 1.0001                  # leading-order root (Ry/Rx)^(2/3) where F(ρ) cancels 0/0
+    res = np.where(circ, 0.0, _f_rho(np.where(circ, 2.0, k)) - (r - 1.0) / (r + 1.0))
+    assert np.max(np.abs(res)) <= 1e-10
+    np.testing.assert_allclose(k[circ], r[circ] ** (2.0 / 3.0), rtol=1e-12)
+    assert np.all(k >= 1.0) and np.all(np.diff(k[:400]) > 0)
+
+
 def test_load_deflection_consistency():
     Q = np.array([1.0, 10.0, 1000.0])
     c = hertz(Q, 4e-3, 80e-3, 2.3e11)

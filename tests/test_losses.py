@@ -138,3 +138,195 @@ def test_oil_injection_temperature_barely_matters_at_equal_bearing_temperature()
     b = losses(n_rpm=6500.0, T_C=50.0, T_oil_C=55.0)
     assert abs(b.P_W / a.P_W - 1) < 0.02
     assert b.breakdown_W["rolling"] == a.breakdown_W["rolling"]
+
+
+# --------------------------------------------------------------------------- prepared contacts, batches
+import warnings                                                        # noqa: E402
+
+from thermobear.errors import ExtrapolationWarning                     # noqa: E402
+from thermobear.losses.drag import drag_loss, oil_volume_fraction_parker  # noqa: E402
+from thermobear.losses.local import evaluate_losses, prepare_contacts  # noqa: E402
+from thermobear.losses.rolling import rolling_force                    # noqa: E402
+from thermobear.lubrication.film import film_thickness, lubrication_regime  # noqa: E402
+
+KW = dict(oil_flow_m3_s=10e-3 / 3600, Rq_ball=0.05e-6, Rq_ring=0.1e-6)
+FA = np.array([450.0, 60.0, 450.0, 100.0, 900.0, 300.0])
+FR = np.array([325.0, 750.0, 0.0, 900.0, 25.0, 1500.0])
+N = np.array([0.0, 30.0, 400.0, 3200.0, 8070.0, 12000.0])
+
+
+def _spread():
+    """Contacts over loads (balls outside the load zone: Q_i = 0), speeds (down to 0)."""
+    return prepare_contacts(B7210, Fa=FA, Fr=FR, n_rpm=N)
+
+
+@pytest.mark.filterwarnings("ignore::thermobear.errors.ExtrapolationWarning")
+def test_two_temperature_states_equal_two_evaluations():
+    cs = _spread()
+    Ti = np.stack((np.linspace(30.0, 90.0, 6), np.linspace(31.0, 95.0, 6)))     # (2, B): x and x + h
+    To, Tm = Ti - 5.0, Ti - 15.0
+    r2 = evaluate_losses(cs, OIL, Tm, T_inner_C=Ti, T_outer_C=To, T_oil_C=Tm, **KW)
+    assert r2.P_W.shape == (2, 6) and r2.contacts["inner"]["P_rolling"].shape == (2, 6, B7210.Z)
+    for k in range(2):
+        rk = evaluate_losses(cs, OIL, Tm[k], T_inner_C=Ti[k], T_outer_C=To[k], T_oil_C=Tm[k], **KW)
+        np.testing.assert_allclose(r2.P_W[k], rk.P_W, rtol=1e-12)
+        np.testing.assert_allclose(r2.torque_Nm[k], rk.torque_Nm, rtol=1e-12)
+        for d in ("breakdown_W", "heat_W", "contact_W"):
+            for key, v in getattr(rk, d).items():
+                np.testing.assert_allclose(getattr(r2, d)[key][k], v, rtol=1e-12, atol=1e-300, err_msg=f"{d} {key}")
+        for side in ("inner", "outer"):
+            for key in ("h_min", "h_c", "mu", "F_R", "M", "L", "P_sliding", "T_C", "eta"):
+                np.testing.assert_allclose(r2.contacts[side][key][k], rk.contacts[side][key], rtol=1e-12)
+            np.testing.assert_array_equal(r2.contacts[side]["regime"][k], rk.contacts[side]["regime"])
+
+
+@pytest.mark.filterwarnings("ignore::thermobear.errors.ExtrapolationWarning")
+def test_a_batch_of_operating_points_equals_single_points():
+    cs = _spread()
+    T = np.linspace(35.0, 85.0, 6)
+    rb = evaluate_losses(cs, OIL, T, T_inner_C=T + 4.0, **KW)
+    for k in range(6):
+        cs1 = prepare_contacts(B7210, Fa=FA[k], Fr=FR[k], n_rpm=N[k])
+        assert cs1.batch == ()
+        r1 = evaluate_losses(cs1, OIL, T[k], T_inner_C=T[k] + 4.0, **KW)
+        assert r1.P_W == pytest.approx(rb.P_W[k], rel=1e-9)
+        for side in ("inner", "outer"):
+            np.testing.assert_allclose(r1.contacts[side]["P_rolling"], rb.contacts[side]["P_rolling"][k], rtol=1e-9)
+    # a batched load distribution (leading axis B) with one speed per point
+    from thermobear.loads.static import load_distribution
+    ld = load_distribution(B7210, Fa=FA[2:], Fr=FR[2:])
+    csl = prepare_contacts(B7210, FA[2:], FR[2:], N[2:], load=ld)
+    np.testing.assert_allclose(evaluate_losses(csl, OIL, T[2:], **KW).P_W,
+                               evaluate_losses(cs, OIL, T, **KW).P_W[2:], rtol=1e-9)
+
+
+@pytest.mark.filterwarnings("ignore::thermobear.errors.ExtrapolationWarning")
+def test_per_ball_temperatures_with_leading_states():
+    cs = prepare_contacts(B7210, Fa=450.0, Fr=650.0, n_rpm=4800.0)
+    Tb = np.linspace(45.0, 60.0, B7210.Z)
+    r = evaluate_losses(cs, OIL, 40.0, T_inner_C=np.stack((Tb, Tb + 1.0)), T_outer_C=50.0, **KW)
+    for k, dT in enumerate((0.0, 1.0)):
+        rk = evaluate_losses(cs, OIL, 40.0, T_inner_C=Tb + dT, T_outer_C=50.0, **KW)
+        assert r.P_W[k] == pytest.approx(rk.P_W, rel=1e-12)
+        np.testing.assert_allclose(r.contacts["inner"]["T_C"][k], Tb + dT)
+
+
+def test_zero_entrainment_speed_no_rolling_loss_and_zero_load_no_contact_loss():
+    # u → 0: the film and the hydrodynamic rolling force vanish continuously (no NaN); Q = 0: no contact loss
+    cs = _spread()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ExtrapolationWarning)
+        r = evaluate_losses(cs, OIL, 50.0, **KW)
+    ci = r.contacts["inner"]
+    assert np.all(cs.u[0] == 0) and np.all(ci["P_rolling"][0] == 0) and np.all(ci["h_min"][0] == 0)
+    n = np.array([0.0, 1e-3, 1e-2, 1e-1, 1.0, 10.0])                   # one load, speeds down to 0
+    slow = evaluate_losses(prepare_contacts(B7210, Fa=450.0, Fr=0.0, n_rpm=n), OIL, 50.0, drag=False, **KW)
+    P_roll = slow.breakdown_W["rolling"]
+    assert P_roll[0] == 0.0 and np.all(np.diff(P_roll) > 0) and P_roll[1] < 1e-6 * P_roll[-1]
+    assert np.all(np.diff(slow.contacts["inner"]["F_R"][:, 0]) > 0)
+    unloaded = cs.Q[..., 0, :] == 0
+    assert unloaded.any()
+    for key in ("P_rolling", "P_sliding", "P_pivoting", "P_hysteresis", "F_R", "h_min", "M"):
+        assert np.all(ci[key][unloaded] == 0), key
+    for side in ("inner", "outer"):
+        for key, v in r.contacts[side].items():
+            if np.asarray(v).dtype.kind == "f":
+                assert np.all(np.isfinite(v)), (side, key)
+
+
+@pytest.mark.filterwarnings("ignore::thermobear.errors.ExtrapolationWarning")
+@pytest.mark.parametrize("model", ["auto", "auto_sharp", "houpert_ivr", "biboulet_pvr", "houpert_ehl",
+                                   "biboulet_transition"])
+def test_local_model_reports_the_public_films_regimes_and_rolling_forces(model):
+    cs = _spread()
+    r = evaluate_losses(cs, OIL, 70.0, rolling_model=model, **KW)
+    eta, ap = OIL.eta(70.0), OIL.alpha_p_at(70.0)
+    for k, side in enumerate(("inner", "outer")):
+        c = r.contacts[side]
+        args = (cs.Q[..., k, :], cs.Rx[..., k, :], cs.Ry[..., k, :], cs.u[..., k, :], eta)
+        np.testing.assert_allclose(c["h_min"], film_thickness(*args, ap, B7210.E_prime), rtol=1e-13)
+        reg = lubrication_regime(*args, ap, B7210.E_prime)
+        np.testing.assert_array_equal(c["regime"], reg.code)
+        public = {"auto": "auto_smooth", "auto_sharp": "auto"}.get(model, model)
+        F = rolling_force(*args, B7210.E_prime, model=public, alpha_p=ap, a=cs.a[..., k, :], b=cs.b[..., k, :])
+        np.testing.assert_allclose(c["F_R"], F, rtol=1e-13, atol=0.0)
+
+
+@pytest.mark.filterwarnings("ignore::thermobear.errors.ExtrapolationWarning")
+def test_drag_is_pouly_with_parker_fraction_and_none_at_standstill():
+    cs = _spread()
+    T_oil = np.array([25.0, 40.0, 60.0, 80.0, 110.0, 140.0])
+    r = evaluate_losses(cs, OIL, 60.0, T_oil_C=T_oil, **KW)
+    run = cs.n_rpm > 0
+    X = oil_volume_fraction_parker(KW["oil_flow_m3_s"] * 6e7, cs.n_rpm[run], B7210.dm * 1e3)
+    ref = drag_loss(B7210.Z, B7210.D, B7210.dm, cs.omega_cage[run], X, OIL.rho(T_oil[run]), OIL.eta(T_oil[run]),
+                    T_oil[run] + 273.15)
+    np.testing.assert_allclose(r.breakdown_W["drag"][run], ref.P_W, rtol=1e-12)
+    assert np.all(r.breakdown_W["drag"][~run] == 0.0)
+    assert r.breakdown_W["rolling"][0] == 0.0 and r.P_W[0] == r.breakdown_W["hysteresis"][0] == 0.0
+
+
+def test_parker_fraction_warns_at_every_evaluation():
+    cs = _spread()                                   # 30 rpm: Parker's fraction > 1, clipped with a warning
+    for _ in range(2):
+        with pytest.warns(ExtrapolationWarning, match="Parker"):
+            evaluate_losses(cs, OIL, 50.0, **KW)
+
+
+@pytest.mark.filterwarnings("ignore::thermobear.errors.ExtrapolationWarning")
+def test_smooth_surfaces_full_film_friction_same_rolling():
+    cs = _spread()
+    rough = evaluate_losses(cs, OIL, 60.0, **KW)
+    smooth = evaluate_losses(cs, OIL, 60.0, **(KW | dict(Rq_ball=0.0, Rq_ring=0.0)))
+    for side in ("inner", "outer"):                  # Λ = ∞: full-film friction, the same rolling forces
+        assert np.all(smooth.contacts[side]["mu"] == 0.05) and np.all(np.isinf(smooth.contacts[side]["Lambda"]))
+        np.testing.assert_array_equal(smooth.contacts[side]["F_R"], rough.contacts[side]["F_R"])
+        assert np.all(rough.contacts[side]["mu"] >= 0.05)
+
+
+def test_contact_set_is_immutable_and_sums_are_per_side():
+    cs = prepare_contacts(B7210, Fa=450.0, Fr=650.0, n_rpm=4800.0)
+    with pytest.raises(ValueError):
+        cs.Q[0, 0] = 1.0
+    with pytest.raises(AttributeError):
+        cs.u = None
+    r = evaluate_losses(cs, OIL, 50.0, **KW)
+    for side in ("inner", "outer"):
+        c = r.contacts[side]
+        total = sum(c[k].sum() for k in ("P_rolling", "P_sliding", "P_pivoting", "P_hysteresis"))
+        assert r.contact_W[side] == pytest.approx(total, rel=1e-13)
+        assert r.heat_W[f"{side}_ring"] == pytest.approx(0.5 * total, rel=1e-13)
+
+
+def test_temperature_shapes_are_checked():
+    cs = _spread()
+    with pytest.raises(InputError, match="T_inner_C"):
+        evaluate_losses(cs, OIL, 50.0, T_inner_C=np.ones(4), **KW)
+    with pytest.raises(InputError, match="T_oil_C"):
+        evaluate_losses(cs, OIL, 50.0, T_oil_C=np.ones((6, B7210.Z)), **KW)
+
+
+@pytest.mark.filterwarnings("ignore::thermobear.errors.ExtrapolationWarning")
+def test_operating_points_taken_from_a_contact_set_evaluate_as_the_batch():
+    from thermobear.arrays import take
+    cs = _spread()
+    sub = take(cs, np.array([2, 4]), 6)                    # the batch axis leads every per-point array
+    assert sub.batch == (2,) and sub.Q.shape == (2, 2, B7210.Z)
+    T = np.linspace(35.0, 85.0, 6)
+    np.testing.assert_allclose(evaluate_losses(sub, OIL, T[[2, 4]], **KW).P_W,
+                               evaluate_losses(cs, OIL, T, **KW).P_W[[2, 4]], rtol=1e-12)
+
+
+@pytest.mark.filterwarnings("ignore::thermobear.errors.ExtrapolationWarning")
+def test_oil_flow_per_operating_point_and_other_supplies():
+    cs = prepare_contacts(B7210, Fa=450.0, Fr=650.0, n_rpm=np.array([4800.0, 6500.0, 8070.0]))
+    flow = np.array([5e-3, 10e-3, 15e-3]) / 3600
+    r = evaluate_losses(cs, OIL, 50.0, oil_flow_m3_s=flow)
+    for k in range(3):
+        rk = evaluate_losses(prepare_contacts(B7210, Fa=450.0, Fr=650.0, n_rpm=cs.n_rpm[k]), OIL, 50.0,
+                             oil_flow_m3_s=flow[k])
+        assert r.breakdown_W["drag"][k] == pytest.approx(rk.breakdown_W["drag"], rel=1e-12)
+    air = evaluate_losses(cs, OIL, 50.0, supply="grease").breakdown_W["drag"]
+    mist = evaluate_losses(cs, OIL, 50.0, supply="oil_air").breakdown_W["drag"]
+    assert np.all(0 < air) and np.all(air < mist) and np.all(mist < r.breakdown_W["drag"])
+    assert np.all(evaluate_losses(cs, OIL, 50.0, supply="oil_bath").breakdown_W["drag"] == 0.0)

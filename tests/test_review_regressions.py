@@ -8,7 +8,8 @@ import thermobear as tb
 from thermobear.errors import InputError
 from thermobear.contact.hertz import hertz
 from thermobear.contact.kinematics import ball_kinematics
-from thermobear.coupled.solver import choose_models, scene_losses
+from thermobear.coupled import scene_losses
+from thermobear.models import choose_models
 
 S004 = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
 

@@ -244,3 +244,31 @@ def test_pressure_force_and_power():
     omega_c = math.pi * 400 / 60
     omega_b = omega_c * DM / D
     assert 2 * R.rolling_power(u_mean(400), f) == pytest.approx(2 * f * D * omega_b, rel=1e-12)
+
+
+# ------------------------------------------------------------------ prepared contacts, smooth selection
+def test_prepared_contacts_at_several_viscosities_equal_the_module_functions():
+    q = np.array([0.0, 0.01, 1.42, 50.0])
+    u = np.array([0.0942, 0.0942, 0.0, 0.2])
+    c = R.rolling_contacts(q, RX, RY, u, E)
+    eta = np.array([[0.089], [0.03]])                                      # 2 states in front
+    for model in ("houpert_ivr", "biboulet_pvr", "houpert_ehl", "auto", "auto_smooth", "biboulet_transition"):
+        F = c.force(eta, model, alpha_p=2.5e-8)
+        assert np.shape(F) == (2, 4)
+        for k in range(2):
+            ref = R.rolling_force(q, RX, RY, u, float(eta[k, 0]), E, model=model, alpha_p=2.5e-8)
+            np.testing.assert_allclose(F[k], ref, rtol=1e-13, atol=0.0, err_msg=model)
+        assert np.all(F[:, 0] == 0) and np.all(F[:, 2] == 0)             # Q = 0, u = 0
+
+
+def test_smooth_selection_equals_the_sharp_one_away_from_boundaries_and_is_continuous():
+    film = pytest.importorskip("thermobear.lubrication.film")
+    q = np.logspace(-4, 4, 4001)
+    reg = film.lubrication_regime(q, RX, RY, 0.0942, ETA, 2.5e-8, E)
+    smooth = R.rolling_force(q, RX, RY, 0.0942, ETA, E, model="auto_smooth", alpha_p=2.5e-8, regime=reg)
+    sharp = R.rolling_force(q, RX, RY, 0.0942, ETA, E, model="auto", alpha_p=2.5e-8, regime=reg)
+    far = np.minimum.reduce([np.abs(reg.ln_iso_over_piezo), np.abs(reg.ln_RI_over_EI) + (reg.ln_iso_over_piezo < 0) * 9,
+                             np.abs(reg.ln_EP_over_RP) + (reg.ln_iso_over_piezo > 0) * 9]) > 0.5
+    np.testing.assert_allclose(smooth[far], sharp[far], rtol=1e-4)
+    step = np.max(np.abs(np.diff(np.log(smooth))))                          # Δ ln q = 0.0046 per step
+    assert step < 0.05 and np.max(np.abs(np.diff(np.log(sharp)))) > 0.3     # the sharp selection jumps

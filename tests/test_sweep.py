@@ -6,7 +6,8 @@ import pytest
 
 import thermobear as tb
 from thermobear.errors import InputError
-from thermobear.coupled.solver import solve, steady_state
+from thermobear.coupled import solve, steady_state
+from thermobear.models import dry_load, plan_many
 from thermobear.app.sweep import run_sweep, sweep_points
 
 
@@ -106,32 +107,27 @@ def test_dask_path_identical_to_local(seed002):
         assert a["iterations"] == b["iterations"]
 
 
-def test_primed_dry_loads_equal_single_solves(seed004):
-    """A sweep solves the dry loads of its points in batched calls (high-speed and low-speed forms
-    apart); every cached case equals its own single solve to round-off."""
-    from thermobear.coupled.solver import _dry_load_cached, _dry_load_solve, _dry_need, _prime_dry_loads
+def test_planned_dry_loads_equal_single_solves(seed004):
+    """The model choice of many points solves their dry loads in batched calls (high-speed and
+    low-speed forms apart); every point's dry solution equals its own single solve to round-off."""
     scenes = [seed004.with_(n_rpm=n, Fr=Fr) for n in (1500.0, 2500.0, 5000.0, 8000.0) for Fr in (100.0, 325.0)]
-    keys = [_dry_need(sc) for sc in scenes]
-    assert {k[5] is None for k in keys} == {True, False}            # both forms in the grid
-    _dry_load_cached.cache_clear()
-    assert _prime_dry_loads(scenes) == len(set(keys))
-    for k in keys:
-        assert k in _dry_load_cached
-        got, ref = _dry_load_cached(*k), _dry_load_solve(*k)
+    plans = plan_many(scenes)
+    forms = set()
+    for sc, (models, dry) in zip(scenes, plans):
+        hs = models["high_speed"][0] == "yes"
+        forms.add(hs)
+        ref = dry_load(sc, hs)
         for f in ("Q_i", "Q_o", "alpha_i", "alpha_o"):
-            assert np.allclose(getattr(got, f), getattr(ref, f), rtol=1e-11, atol=1e-12 * 450.0), f
-        assert got.residual >= ref.residual - 1e-15                  # the batch's residual bounds the case's
-    assert _prime_dry_loads(scenes) == 0                             # nothing left to solve
+            assert np.allclose(getattr(dry, f), getattr(ref, f), rtol=1e-11, atol=1e-12 * 450.0), f
+    assert forms == {True, False}                                   # both forms in the grid
 
 
 def test_a_failing_load_batch_leaves_each_point_to_its_own_solve(seed004):
-    """Fa = 0 under a radial load has no equilibrium in an angular contact bearing: that batch is not
-    cached (the batch is halved around it), and the sweep reports the failure on that point only."""
-    from thermobear.coupled.solver import _dry_load_cached, _prime_dry_loads
+    """Fa = 0 under a radial load has no equilibrium in an angular contact bearing: the batch is halved
+    around it, and the sweep reports the failure on that point only."""
     pts = [seed004.with_(Fa=Fa, n_rpm=n) for Fa in (0.0, 450.0) for n in (5000.0, 5500.0, 6000.0, 6500.0)]
-    _dry_load_cached.cache_clear()
-    assert _prime_dry_loads(pts) == 4
-    _dry_load_cached.cache_clear()
+    plans = plan_many(pts)
+    assert all(p[1] is not None for p in plans[4:])
     rows = run_sweep(seed004, {"Fa": [0.0, 450.0], "n_rpm": [5000.0, 6000.0]}, processes=1)
     assert [r["status"] for r in rows] == ["NoEquilibrium", "NoEquilibrium", "ok", "ok"]
     for r in rows[2:]:
@@ -165,24 +161,3 @@ def test_prescribed_sweep_records_a_point_without_equilibrium_on_its_row(seed002
         rows = run_sweep(sc, {"Fa": [0.0, 1000.0, 7000.0]})
         assert [r["status"] for r in rows] == ["NoEquilibrium", "ok", "ok"]
         assert rows[0]["P_W"] is None and rows[1]["P_W"] > 0
-
-
-def test_dry_load_cache_is_thread_safe(seed004):
-    """Dask workers run points in threads: concurrent hits, misses and evictions of the dry-load cache."""
-    from concurrent.futures import ThreadPoolExecutor
-
-    from thermobear.coupled.solver import _LoadCache, _dry_load_solve
-    cache = _LoadCache(_dry_load_solve, 8)
-    b = seed004.bearing
-    keys = [(b, 450.0, float(Fr), None, "nominal", None) for Fr in range(100, 124)]
-
-    def work(k):
-        out = []
-        for j in range(60):
-            key = keys[(k * 7 + j) % len(keys)]
-            out.append((key[2], float(cache(*key).Q_i[0])))
-        return out
-    with ThreadPoolExecutor(8) as ex:
-        results = [r for chunk in ex.map(work, range(8)) for r in chunk]
-    ref = {key[2]: float(_dry_load_solve(*key).Q_i[0]) for key in keys}
-    assert all(q == ref[Fr] for Fr, q in results)

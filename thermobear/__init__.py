@@ -1,27 +1,30 @@
-"""thermobear: power loss and temperatures of rolling bearings.
+"""thermobear: power loss and temperatures of rolling ball bearings.
 
-Public names only; see README.md for the map of modules.
+Public names only; the pipeline and the one place each concern lives: ARCHITECTURE.md.
 """
-from thermobear.errors import (ThermobearError, InputError, SolverError, NoEquilibrium, NoConvergence,
-                     ThermalRunaway, OutsideValidity, ExtrapolationWarning)
-from thermobear.contact.materials import Material, material, material_names, reduced_modulus
-from thermobear.contact.hertz import hertz, HertzContact
-from thermobear.files import example_path
-from thermobear.contact.geometry import BallBearing, bearing, bearing_names
-from thermobear.loads import load_distribution, LoadDistribution, needs_high_speed
-from thermobear.loads.highspeed import load_distribution_high_speed, FilmInputs
-from thermobear.loads.film import film_load_distribution, FilmLoadDistribution
-from thermobear.contact.kinematics import ball_kinematics
-from thermobear.lubrication.lubricant import Lubricant, lubricant, lubricant_names
-from thermobear.lubrication.film import film_thickness, lubrication_regime
-from thermobear.losses.rolling import rolling_force
-from thermobear.losses.skf import skf_friction
-from thermobear.losses.drag import drag_loss
-from thermobear.losses.local import bearing_losses, LossResult, prepare_contacts, evaluate_losses
-from thermobear.thermal import load_network, solve_steady, solve_transient
-from thermobear.scene.scene import Scene, load_scene
-from thermobear.coupled.solver import solve, steady_state, transient, choose_models, open_contacts
-from thermobear.app.sweep import run_sweep
-from thermobear.app.rig import read_log, compare, calibrate, RigLog
+from thermobear.errors import (ThermobearError, InputError, SolverError, NoEquilibrium, NoConvergence,  # noqa: F401
+                               ThermalRunaway, OutsideValidity, ExtrapolationWarning)
+from thermobear.files import example_path  # noqa: F401
+from thermobear.contact.materials import Material, material, material_names, reduced_modulus  # noqa: F401
+from thermobear.contact.hertz import hertz, HertzContact  # noqa: F401
+from thermobear.contact.geometry import BallBearing, bearing, bearing_names  # noqa: F401
+from thermobear.contact.kinematics import ball_kinematics  # noqa: F401
+from thermobear.lubrication.lubricant import Lubricant, lubricant, lubricant_names  # noqa: F401
+from thermobear.lubrication.film import film_thickness, lubrication_regime  # noqa: F401
+from thermobear.loads import load_distribution, LoadDistribution, needs_high_speed  # noqa: F401
+from thermobear.loads.highspeed import load_distribution_high_speed, FilmInputs  # noqa: F401
+from thermobear.loads.film import film_load_distribution, FilmLoadDistribution  # noqa: F401
+from thermobear.losses import bearing_losses, LossResult, prepare_contacts, evaluate_losses  # noqa: F401
+from thermobear.losses.rolling import rolling_force  # noqa: F401
+from thermobear.losses.skf import skf_friction  # noqa: F401
+from thermobear.losses.drag import drag_loss  # noqa: F401
+from thermobear.thermal import load_network, prepare_network, solve_steady, solve_transient  # noqa: F401
+from thermobear.scene import Scene, load_scene  # noqa: F401
+from thermobear.rating import rating_life, RatingLife  # noqa: F401
+from thermobear.models import choose_models, open_contacts  # noqa: F401
+from thermobear.coupled import (solve, steady_state, steady_states, transient, scene_losses, prepare,  # noqa: F401
+                                Prepared, RunResult, SteadyState, TransientRun)
+from thermobear.app.sweep import run_sweep  # noqa: F401
+from thermobear.app.rig import read_log, compare, calibrate, RigLog  # noqa: F401
 
 __version__ = "0.1.0"

@@ -1,6 +1,8 @@
 """Small array helpers shared by the physics modules (input checks, scalar-or-array output)."""
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from thermobear.errors import InputError
@@ -39,3 +41,34 @@ def out(x):
     """
     x = np.asarray(x, dtype=float)
     return float(x) if x.ndim == 0 else x
+
+
+#: Fields that never carry the operating-point axis (per-ball azimuths: their length Z may equal B).
+UNBATCHED = frozenset({"psi"})
+
+
+def take(obj, index, B: int):
+    """The operating point(s) ``index`` of a batched result: every array whose leading axis has
+    length ``B`` is indexed along it, recursively through dataclasses, dicts, lists and tuples; the
+    rest (per-ball azimuths — fields named in :data:`UNBATCHED` —, scalars, objects) is kept.
+
+    A dataclass is rebuilt field by field without running its ``__init__`` (the slice of a checked
+    result is checked).
+
+    >>> take({"P_W": np.array([1.0, 2.0]), "psi": np.zeros(3)}, 1, 2)["P_W"]
+    np.float64(2.0)
+    """
+    if isinstance(obj, np.ndarray):
+        return obj[index] if obj.ndim >= 1 and obj.shape[0] == B else obj
+    t = type(obj)
+    if t is dict:
+        return {k: v if k in UNBATCHED else take(v, index, B) for k, v in obj.items()}
+    if t is list or t is tuple:
+        return t(take(v, index, B) for v in obj)
+    if not hasattr(t, "__dataclass_fields__") or isinstance(obj, type):
+        return obj
+    new = object.__new__(t)
+    for f in dataclasses.fields(obj):
+        v = getattr(obj, f.name)
+        object.__setattr__(new, f.name, v if f.name in UNBATCHED else take(v, index, B))
+    return new

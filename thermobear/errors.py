@@ -33,8 +33,6 @@ class InputError(ThermobearError, ValueError):
         super().__init__(msg)
 
 
-class OutsideValidity(InputError):
-    """An input lies far outside the range where the model is valid."""
 
 
 class SolverError(ThermobearError, RuntimeError):
@@ -57,7 +55,15 @@ class SolverError(ThermobearError, RuntimeError):
 
 
 class NoEquilibrium(SolverError):
-    """No static equilibrium exists for the applied loads (e.g. radial load on a thrust bearing)."""
+    """No static equilibrium exists for the applied loads (e.g. radial load on a thrust bearing).
+
+    ``field`` names the input that has no equilibrium (default: the scene's loads); the command line
+    reports it as bad input (exit code 2).
+    """
+
+    def __init__(self, reason: str, *, field: str = "operation (Fa_N, Fr_N, M_Nm)", **kw):
+        super().__init__(reason, **kw)
+        self.field = field
 
 
 class NoConvergence(SolverError):
@@ -68,7 +74,31 @@ class ThermalRunaway(SolverError):
     """Heat generation grows faster with temperature than dissipation: no thermal equilibrium."""
 
 
-class ExtrapolationWarning(UserWarning):
+class OutsideValidity(UserWarning):
+    """Computable, but outside where a model was validated (see :mod:`thermobear.validity`).
+
+    Structured: ``quantity`` (what), ``value``, ``limit`` (the validated range, as text),
+    ``source`` (where the range comes from) and ``field`` (the input it concerns).  Solvers collect
+    these into their results (``warnings``); the command line prints one line each.
+
+    >>> w = OutsideValidity("n dm = 1.2e+06 mm/min beyond 1e+06", quantity="n_dm", value=1.2e6)
+    >>> str(w), w.quantity
+    ('n dm = 1.2e+06 mm/min beyond 1e+06', 'n_dm')
+    """
+
+    def __init__(self, message: str = "", *, quantity: str = "", value=None, limit: str = "",
+                 source: str = "", field: str = ""):
+        super().__init__(message)
+        self.message, self.quantity, self.value = message, quantity, value
+        self.limit, self.source, self.field = limit, source, field
+
+    def as_dict(self) -> dict:
+        """The warning as plain data (JSON output)."""
+        return {"category": type(self).__name__, "quantity": self.quantity, "field": self.field,
+                "value": self.value, "limit": self.limit, "source": self.source, "message": self.message}
+
+
+class ExtrapolationWarning(OutsideValidity):
     """An input lies beyond the data a correlation was fitted to (result still computed)."""
 
 

@@ -1,15 +1,16 @@
-"""Where the data files live, and reading them.
+"""Where the data files live, and reading them: the one module that reads TOML.
 
-Data (materials, lubricants, bearing catalog, thermal networks) are TOML files
+Bundled data (materials, lubricants, bearing catalogue, thermal networks) are TOML files
 in the repository's top-level ``materials/`` and ``networks/`` folders.  A wheel
 carries them as ``thermobear/_data/``; an editable install reads them from the
-repository.  The package never reads anything outside these two places.
+repository.  Users' scene, network and schedule files are read here too, so every
+way a file can be unreadable (missing, a folder, not UTF-8, not TOML) is one
+:class:`~thermobear.errors.InputError` naming the file.
 """
 from __future__ import annotations
 
-import os
+import hashlib
 import tomllib
-from functools import lru_cache
 from pathlib import Path
 
 from thermobear.errors import InputError
@@ -26,11 +27,11 @@ def data_dir(kind: str) -> Path:
 
 
 def read_toml(path: str) -> dict:
-    """Read a TOML file, turning a syntax error into an InputError naming the file.
+    """Read a TOML file, turning every way it can be unreadable into an InputError naming the file.
 
-    Cached per file and version: a file edited since its last read (another modification time or
-    size) is read again, so a scene, network or catalog file changed during a session is seen.  The
-    returned dict is shared between callers: copy it before changing it.
+    Cached on the file's content (a hash of its bytes): a file edited during a session is read
+    again, an unchanged one is parsed once.  The returned dict is shared between callers: copy it
+    before changing it.
 
     >>> import thermobear
     >>> read_toml(thermobear.example_path("seed004_oil_jet_7210.toml"))["operation"]["n_rpm"]
@@ -38,21 +39,36 @@ def read_toml(path: str) -> dict:
     """
     p = Path(path)
     try:
-        st = os.stat(p)
+        data = p.read_bytes()
     except (FileNotFoundError, NotADirectoryError):
         raise InputError(str(p), None, "file not found") from None
-    return _read_toml(str(p), st.st_mtime_ns, st.st_size)
+    except IsADirectoryError:
+        raise InputError(str(p), None, "is a folder, not a TOML file") from None
+    except OSError as exc:
+        raise InputError(str(p), None, f"cannot be read ({exc.strerror or exc})") from None
+    return _parse_toml(hashlib.blake2b(data, digest_size=16).digest(), data, str(p))
 
 
-@lru_cache(maxsize=256)
-def _read_toml(path: str, mtime_ns: int, size: int) -> dict:
-    try:
-        with open(path, "rb") as fh:
-            return tomllib.load(fh)
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(path, None, f"is not valid TOML: {exc}") from None
-    except FileNotFoundError:
-        raise InputError(path, None, "file not found") from None
+def _parse_toml(digest: bytes, data: bytes, path: str) -> dict:
+    hit = _PARSED.get(digest)
+    if hit is None:
+        try:
+            text = data.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            raise InputError(path, None, f"is not UTF-8 text (TOML files are UTF-8; byte {exc.start} is "
+                                         f"0x{data[exc.start]:02x})") from None
+        try:
+            hit = tomllib.loads(text)
+        except tomllib.TOMLDecodeError as exc:
+            raise InputError(path, None, f"is not valid TOML: {exc}") from None
+        if len(_PARSED) >= 256:
+            _PARSED.pop(next(iter(_PARSED)))
+        _PARSED[digest] = hit
+    return hit
+
+
+#: Parsed files by the hash of their content (the file catalogue's one cache).
+_PARSED: dict = {}
 
 
 def names_in(folder: Path) -> list[str]:

@@ -33,7 +33,7 @@ import thermobear as tb
 from thermobear.errors import ExtrapolationWarning
 from thermobear.loads import load_distribution
 from thermobear.losses.local import bearing_losses
-from thermobear.coupled.solver import steady_state, transient
+from thermobear.coupled import steady_state, transient
 from thermobear.app.sweep import run_sweep
 
 N_SWEEP = 200     # enough points for the batched loads of a sweep to count as they do in a real one

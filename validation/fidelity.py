@@ -13,8 +13,8 @@ Levels (each a function of a scene and operating points; importable):
   axial balance (clipped at 0), all at the free contact angle; Hamrock–Brewe Hertz approximations.
 * **L2** — Jones–Harris (low speed, F_c added on the outer contact) + local losses at a given
   temperature; Hamrock–Brewe Hertz.
-* **L3** — L2 + the scene's thermal network, fixed point (:func:`thermobear.coupled.solver.steady_state`)
-  or heat-up (:func:`thermobear.coupled.solver.transient`).
+* **L3** — L2 + the scene's thermal network, fixed point (:func:`thermobear.coupled.steady_state`)
+  or heat-up (:func:`thermobear.coupled.transient`).
 * **L4** — L3 with high-speed ball dynamics (:func:`thermobear.loads.highspeed.load_distribution_high_speed`,
   centrifugal force and gyroscopic moment inside the load distribution), exact Hertz and per-ball
   stiffness.  Thrust bearings: per-ball Jones–Harris (the high-speed model is radial/angular only).
@@ -56,9 +56,9 @@ import thermobear as tb
 from thermobear.errors import ExtrapolationWarning, InputError, SolverError
 from thermobear.losses.skf import MU_EHL, skf_constants, skf_friction
 from thermobear.loads import LoadDistribution, axial_contact_angle, load_distribution
-from thermobear.losses.local import prepare_contacts
 from thermobear.scene.scene import Scene, scene_from_dict
-from thermobear.coupled.solver import choose_models, scene_losses, steady_state, transient
+from thermobear.coupled import scene_losses, steady_state, transient
+from thermobear.models import choose_models
 
 HERE = Path(__file__).resolve().parent
 DATA = HERE / "data"
@@ -131,8 +131,7 @@ def _exact(scene: Scene) -> Scene:
 
 def _batch_losses(scene, n_rpm, T_C, load, models):
     """bearing_losses over arrays of speed and temperature with one load (thermobear.app.sweep's path)."""
-    from thermobear.app.sweep import _losses_batch   # same argument mapping as the sweep
-    return _losses_batch(scene, np.asarray(n_rpm, float), np.asarray(T_C, float), models, load=load)
+    return scene_losses(scene, T_C=np.asarray(T_C, float), models=models, n_rpm=np.asarray(n_rpm, float), load=load)
 
 
 def _out(r):
@@ -163,33 +162,17 @@ def level2(scene: Scene, n_rpm, T_C):
                               load_distribution(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, M=sc.M), models))
 
 
-def _hs_load(sc: Scene):
-    if sc.bearing.kind == "thrust":
-        return load_distribution(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, M=sc.M, stiffness="per_ball"), False
-    from thermobear.loads.highspeed import load_distribution_high_speed
-    return load_distribution_high_speed(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, M=sc.M, n_rpm=sc.n_rpm,
-                                        stiffness="per_ball"), True
-
-
-def _l4_setup(sc: Scene):
-    """L4 models and contacts: high-speed loads (F_c, M_g inside: not added again), exact Hertz."""
-    load, hs = _hs_load(sc)
-    models = choose_models(sc)
-    if hs:
-        models = {**models, "high_speed": ("Jones–Harris high speed", "F_c, M_g in the ball equilibrium"),
-                  "load_model": ("jones_harris_high_speed", "fidelity level L4")}
-    cs = prepare_contacts(sc.bearing, sc.Fa, sc.Fr, sc.n_rpm, M=sc.M, rotating=sc.rotating, hertz_method="exact",
-                          centrifugal=not hs, load=load)
-    return models, cs
+def _l4(sc: Scene) -> Scene:
+    """L4: the high-speed ball equilibrium (F_c, M_g inside; thrust bearings: low speed), exact Hertz,
+    per-ball stiffness, Jones–Harris loads."""
+    return sc.with_(models={"high_speed": sc.bearing.kind != "thrust"})
 
 
 def level4_prescribed(scene: Scene, n_rpm, T_C):
     """L4 loss model at T_C [°C]: high-speed loads per speed, exact Hertz (one call per speed)."""
     out = {"torque_Nm": [], "P_W": []}
     for n, T in np.broadcast(np.atleast_1d(n_rpm), np.atleast_1d(T_C)):
-        sc = _exact(scene).with_(n_rpm=float(n), T_C=float(T))
-        models, cs = _l4_setup(sc)
-        r = scene_losses(sc, models=models, contacts=cs)
+        r = scene_losses(_l4(_exact(scene).with_(n_rpm=float(n), T_C=float(T))))
         out["torque_Nm"].append(float(r.torque_Nm))
         out["P_W"].append(float(r.P_W))
     return {k: np.asarray(v) for k, v in out.items()}
@@ -209,13 +192,12 @@ def level3(scene: Scene, t_end_s: float | None = None, node: str | None = None):
 
 def level4(scene: Scene, t_end_s: float | None = None):
     """Thermal network + L4 losses (high-speed load, exact Hertz, per-ball stiffness)."""
-    sc = _exact(scene).with_(T_C=None)
-    models, cs = _l4_setup(sc)
+    sc = _l4(_exact(scene).with_(T_C=None))
     if t_end_s is None:
-        st = steady_state(sc, contacts=cs)
+        st = steady_state(sc)
         return {"torque_Nm": float(st.losses.torque_Nm), "P_W": float(st.P_W), "T_C": dict(st.T_C),
                 "iterations": st.iterations}
-    tr = transient(sc, float(t_end_s), contacts=cs, t_eval=[float(t_end_s)])
+    tr = transient(sc, float(t_end_s), t_eval=[float(t_end_s)])
     return {"P_W": float(tr.P_W[-1]), "T_C": {k: float(v[-1]) for k, v in tr.T_C.items()},
             "torque_Nm": float(tr.P_W[-1] / sc.omega)}
 
@@ -288,19 +270,9 @@ def calibrate_L0_seed002(case: Case):
 
 
 # ------------------------------------------------------------------------------------ scoring
-def _cold(fn):
-    """``fn`` with the solver's per-operating-point cache (the dry load distribution) cleared first:
-    every timed call computes its point from scratch."""
-    from thermobear.coupled.solver import _dry_load_cached
-
-    def f(*a):
-        _dry_load_cached.cache_clear()
-        return fn(*a)
-    return f
-
-
 def _median_time(fn, repeat):
-    return median_time(_cold(fn), repeat, warmup=False)
+    """Every timed call computes its point from scratch (the solvers keep no per-point cache)."""
+    return median_time(fn, repeat, warmup=False)
 
 
 @dataclass
@@ -374,7 +346,7 @@ def _coupled(level, fn, cases, quantities, warm=True):
             pass
     errs = {f: [] for f in quantities}
     failed, ts = [], []
-    run = _cold(fn)
+    run = fn
     for c in cases:
         t0 = time.perf_counter()
         try:

@@ -1,9 +1,9 @@
 """When does a scene need the film load model?  The evidence behind choose_models' criterion.
 
-``thermobear.coupled.solver.choose_models`` picks the film load model (the NVM central films of both contacts
+``thermobear.coupled.choose_models`` picks the film load model (the NVM central films of both contacts
 in each ball's contact law: thermobear.loads.film, thermobear.loads.highspeed with ``film=``) for a
 combined load in a flooded bearing (oil jet, oil bath) when the dry Jones–Harris solution leaves a
-contact open (``thermobear.coupled.solver.open_contacts``), and the dry law otherwise.  This script computes
+contact open (``thermobear.coupled.open_contacts``), and the dry law otherwise.  This script computes
 both models at every point of a grid, at a prescribed uniform temperature (so that only the load
 model differs), and reports the change of the power with the number of open contacts of the dry
 solution and the cost of each model:
@@ -28,7 +28,7 @@ import numpy as np
 from _common import write_report
 
 import thermobear as tb
-from thermobear.coupled.solver import choose_models, open_contacts
+from thermobear.models import choose_models, open_contacts
 
 
 def _power(sc, load_model):

@@ -167,7 +167,7 @@ def main(argv=()):
       f"{rms('L0', 'seed004 P ratio')}, L1 {rms('L1', 'seed004 P ratio')}, L2 {rms('L2', 'seed004 P ratio')}.  "
       f"IR temperature rise after 1000 s, L3: {ratio} (model vs measured).  L4: {l4txt}.")
     w("* Model no more than a scene needs: where a cheaper level gives the same error, "
-      "`thermobear.coupled.solver.choose_models` already picks it (closed form for symmetric loads, no network "
+      "`thermobear.coupled.choose_models` already picks it (closed form for symmetric loads, no network "
       "when T is prescribed).\n")
     w("## Stability: where methods fail\n")
     w("![stability map](stability_map.png)\n")

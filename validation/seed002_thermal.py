@@ -29,7 +29,7 @@ from _common import write_report
 from scipy.optimize import brentq
 
 import thermobear as tb
-from thermobear.coupled.solver import steady_state
+from thermobear.coupled import steady_state
 
 OUT = Path(__file__).resolve().parent / "report" / "seed002_thermal.md"
 BASE = tb.load_scene(tb.example_path("seed002_grease_thrust_51107.toml"))

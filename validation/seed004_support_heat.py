@@ -10,15 +10,13 @@ the rig bed, and a heat source = its DGBB (SKF 2004 model, thermobear.losses.skf
 a priori in three sets (low / central / high; reasoning next to
 ``ESTIMATES`` below); nothing is fitted to 55 / 90 °C.
 
-Only public pieces of thermobear are used (network_spec, network_context, load_network,
-solve_transient) plus the solver's own loss-source helpers (choose_models, scene_contacts, _roles,
-_sources), so the bearing losses are exactly those of ``thermobear.coupled.solver.transient``.
+Only public pieces of thermobear are used (network_spec, prepare_network, point_model, heat_sources,
+solve_transient), so the bearing losses are exactly those of ``thermobear.coupled.transient``.
 
 Run:  python validation/seed004_support_heat.py   (≈ 10 s)
 """
 from __future__ import annotations
 
-import copy
 import math
 import sys
 import warnings
@@ -33,8 +31,9 @@ from _common import write_report  # noqa: E402
 
 import thermobear as tb  # noqa: E402
 from thermobear.losses.skf import skf_friction  # noqa: E402
-from thermobear.coupled.solver import _roles, _sources, choose_models, network_context, network_spec, scene_contacts  # noqa: E402
-from thermobear.thermal import load_network, solve_transient  # noqa: E402
+from thermobear.coupled.transient import heat_sources, point_model  # noqa: E402
+from thermobear.scene.network import network_spec  # noqa: E402
+from thermobear.thermal import prepare_network, solve_transient  # noqa: E402
 
 SCENE = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
 OIL = SCENE.lubricant                        # seed 004 Table 3 mineral oil (ν40 36.6, ν100 7.8 cSt)
@@ -107,7 +106,7 @@ def support_source_W(n_rpm, T_C, est: Estimate) -> float:
 
 def _spec(scene, est: Estimate | None, T_fixed_C: float | None = None) -> dict:
     """The scene's network with the support block free (est) or fixed at T_fixed_C (None: as shipped)."""
-    spec = copy.deepcopy(network_spec(scene))
+    spec = network_spec(scene.network, scene.path, parameters=scene.network_parameters, fixed_C=scene.T_fixed_C)
     nodes = spec["nodes"]
     if T_fixed_C is not None:
         nodes["support_block"] = {"T_C": float(T_fixed_C), "source": "what-if: imposed"}
@@ -130,24 +129,20 @@ def _spec(scene, est: Estimate | None, T_fixed_C: float | None = None) -> dict:
 def heat_up(n_rpm: float, est: Estimate | None = None, T_fixed_C: float | None = None):
     """IR (and support-block) temperature at T_END_S [°C] and the mean support-block heat [W]."""
     sc = SCENE.with_(n_rpm=n_rpm)
-    models = choose_models(sc)
-    cs = scene_contacts(sc, models)
-    ab = {s: {"a_m": np.asarray(cs.sides[s]["a"], float), "b_m": np.asarray(cs.sides[s]["b"], float)}
-          for s in ("inner", "outer")}
-    net = load_network(_spec(sc, est, T_fixed_C), network_context(sc, ab))
-    roles = _roles(net)
+    pm = point_model(sc, template=prepare_network(_spec(sc, est, T_fixed_C), {"bearing": sc.bearing}))
+    net, bearing_sources = pm.network, heat_sources(pm)
     free = est is not None and T_fixed_C is None
+    k_sb = net.index["support_block"]
 
-    def sources(t, T_K):
-        T_C = {k: v - 273.15 for k, v in T_K.items()}
-        src, r = _sources(sc, models, cs, roles, T_C)
-        src = dict(src)
-        rep = {"P_W": float(r.P_W)}
+    def sources(t, T_K):      # the bearing's losses, plus the support block's own heat when it is free
+        P, rep = bearing_sources(t, T_K)
         if free:
-            q = support_source_W(n_rpm, T_C["support_block"], est)
-            src["support_block"] = src.get("support_block", 0.0) + q
-            rep["Q_support_W"] = q
-        return src, rep
+            q = np.vectorize(lambda T: support_source_W(n_rpm, T - 273.15, est))(T_K[..., k_sb])
+            P = P.copy()
+            P[..., k_sb] += q
+            if np.ndim(t):
+                rep = {**rep, "Q_support_W": q}
+        return P, rep
 
     tr = solve_transient(net, sources, T_END_S, t_eval=np.linspace(0.0, T_END_S, 11), rtol=1e-5, atol=1e-3)
     T_ir = float(np.asarray(tr.T_C["inner_ring"])[-1])

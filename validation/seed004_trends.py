@@ -23,7 +23,9 @@ from _common import write_report
 import thermobear as tb
 from thermobear.lubrication.film import film_thickness_nvm
 from thermobear.loads.highspeed import load_distribution_high_speed_full
-from thermobear.coupled.solver import choose_models, scene_losses, steady_state, transient
+from thermobear.coupled import scene_losses, steady_state, transient
+from thermobear.models import choose_models
+from thermobear.coupled.sources import network_template
 
 OUT = Path(__file__).resolve().parent / "report" / "seed004_trends.md"
 SCENE = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
@@ -154,9 +156,8 @@ def main() -> int:
         t = transient(SCENE.with_(n_rpm=n), 1000.0, t_eval=np.linspace(0.0, 1000.0, 101))
         heat[n] = (float(t.T_C["inner_ring"][-1]), ref)
         # energy budget: what the bearing and its shaft share could store at most (adiabatic)
-        from thermobear.coupled.solver import _setup_thermal
-        net = _setup_thermal(SCENE.with_(n_rpm=n), choose_models(SCENE.with_(n_rpm=n)))[0]
-        C = dict(zip(net.nodes, net.C_J_K))
+        tpl = network_template(SCENE.with_(n_rpm=n))
+        C = dict(zip(tpl.nodes, tpl.C_J_K))
         E = float(np.trapezoid(t.P_W, t.t_s))
         shaft = [k for k in C if k == "shaft" or k.startswith("shaft_")]
         Cs = sum(C[k] for k in shaft + ["inner_ring", "inner_race", "balls", "outer_race", "outer_ring"])

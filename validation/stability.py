@@ -9,7 +9,7 @@ A. Jones–Harris Newton (low speed, :func:`thermobear.loads.load_distribution`)
    NoConvergence / other error.
 B. Jones–Harris high speed (:func:`thermobear.loads.highspeed.load_distribution_high_speed`):
    7210, Fa = 450 N, speed × radial load.
-C. Coupled fixed point (:func:`thermobear.coupled.solver.steady_state` through
+C. Coupled fixed point (:func:`thermobear.coupled.steady_state` through
    :func:`thermobear.app.sweep.run_sweep`): the seed 004 7210 on the ``one_node`` network with a low
    conductance to ambient (``thermal.parameters`` override ``bearing_to_ambient.G_W_K``), speed ×
    oil viscosity × conductance → converged (Anderson) / damped (Picard fallback) / no equilibrium
@@ -37,6 +37,8 @@ import thermobear as tb
 from thermobear.errors import ExtrapolationWarning, InputError, NoConvergence, NoEquilibrium, SolverError
 from thermobear.losses.skf import mu_EHL_from_torque, skf_constants, skf_friction
 from thermobear.loads import load_distribution
+from thermobear.coupled.transient import point_model
+from thermobear.thermal import solve_transient
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
@@ -108,7 +110,7 @@ COUPLED_N = (1000.0, 2000.0, 4000.0, 6000.0, 8000.0, 12000.0, 16000.0)
 def coupled_map(processes=None):
     from thermobear.app.sweep import run_sweep
     s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
-    s = dataclasses.replace(s, network="one_node")
+    s = dataclasses.replace(s, network="one_node", rig_map={})
     grid = {"network_parameters": [{"bearing_to_ambient.G_W_K": g} for g in COUPLED_G],
             "lubricant": list(COUPLED_LUBS), "n_rpm": list(COUPLED_N)}
     t0 = time.perf_counter()
@@ -117,7 +119,7 @@ def coupled_map(processes=None):
     out = []
     for r in rows:
         if r["status"] == "ok":
-            res = "converged" if r["reason"].startswith("fixed point: anderson") else "damped"
+            res = "damped" if "picard-damped" in r["reason"] else "converged"     # newton, anderson or picard
         elif r["status"] == "ThermalRunaway":
             res = "no equilibrium"
         elif r["status"] == "NoConvergence":
@@ -158,19 +160,12 @@ def skf_negative_mu():
 
 # ------------------------------------------------------------------------------------------- E
 def explicit_vs_implicit(t_end_s=600.0):
-    from thermobear.coupled.solver import network_context, network_spec, scene_contacts, choose_models
-    from thermobear.thermal import load_network, solve_transient
-    from thermobear.thermal.solve import assemble
     s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
-    models = choose_models(s)
-    cs = scene_contacts(s, models)
-    ctx = network_context(s, {k: {"a_m": np.asarray(cs.sides[k]["a"]), "b_m": np.asarray(cs.sides[k]["b"])}
-                              for k in ("inner", "outer")})
-    net = load_network(network_spec(s), ctx)
+    net = point_model(s).network
     free = ~net.fixed
-    T0 = net.T_fixed_K.copy()
+    T0 = net.T_fixed_K[0].copy()
     T0[free] = s.T_ambient_C + 273.15
-    A = assemble(net, T0)[0].toarray()
+    A = net.matrix(net.conductances(T0[None]))[0]
     C = net.C_J_K[free]
     J = -(A[free][:, free]) / C[:, None]
     lam = np.linalg.eigvals(J)
@@ -186,7 +181,7 @@ def explicit_vs_implicit(t_end_s=600.0):
     ref = solve_transient(net, {"balls": 20.0, "inner_race": 5.0, "outer_race": 5.0}, t_end_s,
                           T0_C=s.T_ambient_C, t_eval=[t_end_s])
     t_bdf = time.perf_counter() - t0
-    T_ref = np.array([ref.T_K[net.index[nm], -1] for nm in net.free_nodes])
+    T_ref = np.array([ref.T_K[-1, 0, net.index[nm]] for nm in net.free_nodes])
     # the BDF run uses temperature-dependent conductances; the explicit runs the frozen matrix:
     # compare both with the exact solution of the frozen linear system as well
     Aff = A[free][:, free]

@@ -13,9 +13,8 @@ from pathlib import Path
 
 import numpy as np
 
-from thermobear.app.rig import resolve_scene_paths
 from thermobear.scene.scene import load_scene
-from thermobear.coupled.solver import transient
+from thermobear.coupled import transient
 
 HERE = Path(__file__).resolve().parent
 PARAM = "bearing_to_ambient.G_W_K"
@@ -25,7 +24,7 @@ SEED = 20240503
 
 
 def make(path=HERE / "synthetic_heatup_7210.csv"):
-    scene = resolve_scene_paths(load_scene(HERE / "synthetic_heatup_scene.toml"))
+    scene = load_scene(HERE / "synthetic_heatup_scene.toml")
     scene = scene.with_(network_parameters={PARAM: G_TRUE_W_K})
     t = np.arange(0.0, 1800.0 + 1e-9, 30.0)
     run = transient(scene, float(t[-1]), t_eval=t, rtol=1e-8, atol=1e-7)

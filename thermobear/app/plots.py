@@ -25,6 +25,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 __all__ = ["plot_result", "plot_ball_loads", "plot_regime_map", "plot_loss_breakdown", "plot_losses_vs_speed",
+           "plot_sweep", "plot_comparison",
            "plot_heatup", "plot_vs_speed", "plot_spin_down", "REGIME_COLORS"]
 
 REGIME_COLORS = {"IVR": "tab:blue", "IVE": "tab:cyan", "PVR": "tab:orange", "EHL": "tab:red",
@@ -259,3 +260,59 @@ def plot_result(res, outdir) -> list:
             plot_regime_map(res.losses, s.bearing, out / "regime_map.png"),
             plot_loss_breakdown(res.breakdown_W, out / "loss_breakdown.png",
                                 f"Loss breakdown — {tag} (total {res.P_W:.3g} W)")]
+
+
+def plot_sweep(rows: list, grid: dict, outdir, title: str = "") -> list:
+    """Plots of a sweep over speed: torque (or power) vs speed per combination of the other grid
+    values, and the loss breakdown vs speed of the first six combinations.  Returns the paths."""
+    d = Path(outdir)
+    d.mkdir(parents=True, exist_ok=True)
+    ok = [r for r in rows if r.get("status") == "ok"]
+    key = "torque_Nm" if any(r.get("torque_Nm") is not None for r in ok) else "P_W"
+    others = [k for k in grid if k != "n_rpm"]
+    groups: dict = {}
+    for r in ok:
+        groups.setdefault(", ".join(f"{k}={r.get(k)}" for k in others), []).append(r)
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    scale = 1e3 if key == "torque_Nm" else 1.0
+    for lab, rs in groups.items():
+        x = np.array([r["n_rpm"] for r in rs], float)
+        y = np.array([r[key] for r in rs], float) * scale
+        o = np.argsort(x)
+        ax.plot(x[o], y[o], "-o", ms=3, label=lab or key)
+    ax.set_xlabel("speed n [rpm]"), ax.set_ylabel("friction torque [N mm]" if key == "torque_Nm" else "P [W]")
+    ax.legend(fontsize=7), ax.grid(alpha=0.3), ax.set_title(f"Sweep — {title}")
+    paths = [_save(fig, d / f"sweep_{key}.png")]
+    for i, (lab, rs) in enumerate(list(groups.items())[:6]):
+        keys = list(rs[0]["breakdown_W"])
+        bd = {k: [r["breakdown_W"].get(k) for r in rs] for k in keys}
+        paths.append(plot_losses_vs_speed([r["n_rpm"] for r in rs], bd, d / f"sweep_losses_{i + 1}.png",
+                                          f"Loss breakdown vs speed — {title}" + (f" ({lab})" if lab else "")))
+    return paths
+
+
+def plot_comparison(comp, outdir, title, prefix="compare") -> list:
+    """Plots of a rig-log comparison (:class:`thermobear.app.rig.Comparison`): the heat-up with the
+    measured points (transient logs), torque and temperatures vs speed (steady logs)."""
+    d = Path(outdir)
+    d.mkdir(parents=True, exist_ok=True)
+    paths = []
+    temps = {k: v for k, v in comp.simulated.items() if k != "torque_Nm"}
+    if comp.kind == "transient":
+        if temps:
+            meas = {k: (comp.x, comp.measured[k]) for k in temps}
+            paths.append(plot_heatup(comp.x, temps, d / f"{prefix}_heatup.png", meas, title=title, mapping=comp.mapping))
+        if "torque_Nm" in comp.simulated:
+            paths.append(plot_vs_speed(comp.x, {"torque": comp.simulated["torque_Nm"]}, d / f"{prefix}_torque.png",
+                                       {"torque": comp.measured["torque_Nm"]}, "friction torque [N mm]", title, 1e3))
+        return paths
+    labels = comp.log.columns.get("lubricant")
+    if "torque_Nm" in comp.simulated:
+        paths.append(plot_vs_speed(comp.x, {"torque": comp.simulated["torque_Nm"]}, d / f"{prefix}_torque.png",
+                                   {"torque": comp.measured["torque_Nm"]}, "friction torque [N mm]",
+                                   f"Torque vs speed — {title}", 1e3, labels=labels))
+    if temps:
+        paths.append(plot_vs_speed(comp.x, temps, d / f"{prefix}_temperature.png",
+                                   {k: comp.measured[k] for k in temps}, "temperature [°C]",
+                                   f"Temperature vs speed — {title}", labels=labels))
+    return paths

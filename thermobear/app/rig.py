@@ -52,11 +52,17 @@ from pathlib import Path
 
 import numpy as np
 
+from scipy.optimize import least_squares
+
+from thermobear.coupled import solve, transient
 from thermobear.errors import InputError, NoConvergence
-from thermobear.scene.scene import Scene
+from thermobear.losses.skf import skf_constants
+from thermobear.scene import Scene
+from thermobear.scene.network import network_nodes as scene_network_nodes
+from thermobear.scene.network import network_spec
 
 __all__ = ["RigLog", "read_log", "channel_map", "metrics", "simulate_log", "compare", "Comparison",
-           "calibrate", "Calibration", "resolve_scene_paths", "network_nodes", "parameter_names",
+           "calibrate", "Calibration", "network_nodes", "parameter_names",
            "parse_map", "SPECIAL_TARGETS"]
 
 SPECIAL_TARGETS = ("input", "ignore")
@@ -197,31 +203,9 @@ def read_log(path) -> RigLog:
 
 
 # --------------------------------------------------------------------------- scene helpers
-def resolve_scene_paths(scene: Scene) -> Scene:
-    """Resolve a network given as a relative ``.toml`` path against the scene file's folder.
-
-    A scene may ship its own network next to it (``network = "my_rig.toml"``);
-    paths are taken relative to the scene file, as a user expects.
-    """
-    net = scene.network
-    if net and str(net).endswith(".toml") and scene.path and not Path(net).is_absolute():
-        cand = Path(scene.path).resolve().parent / net
-        if cand.is_file():
-            return dataclasses.replace(scene, network=str(cand))
-    return scene
-
-
 def network_nodes(scene: Scene) -> list:
     """Node names of the scene's thermal network (read from its file, nothing evaluated); [] without one."""
-    if not scene.network:
-        return []
-    from thermobear.files import data_dir, read_toml
-    p = Path(scene.network)
-    if p.suffix != ".toml":
-        p = data_dir("networks") / f"{scene.network}.toml"
-    if not p.is_file():
-        raise InputError("thermal.network", scene.network, "network file not found")
-    return list(read_toml(str(p.resolve())).get("nodes", {}))
+    return scene_network_nodes(scene.network, scene.path) if scene.network else []
 
 
 def parse_map(items) -> dict:
@@ -241,13 +225,7 @@ def channel_map(scene: Scene, log: RigLog, overrides: dict | None = None) -> dic
     Every temperature channel of the log must be mapped; every mapped channel
     must exist in the log; every node must exist in the scene's network.
     """
-    rig = scene.raw.get("rig", {}) if isinstance(scene.raw, dict) else {}
-    if not isinstance(rig, dict):
-        raise InputError("rig", rig, "must be a table")
-    base = rig.get("map", {})
-    if not isinstance(base, dict) or not all(isinstance(v, str) for v in base.values()):
-        raise InputError("rig.map", base, 'a table of channel = "node" strings')
-    m = {**base, **(overrides or {})}
+    m = {**scene.rig_map, **(overrides or {})}
     chans = log.temperature_channels
     for ch, node in m.items():
         if ch not in chans:
@@ -377,15 +355,14 @@ def _schedule_from_log(log: RigLog):
 def simulate_log(scene: Scene, log: RigLog, mapping: dict, *, rtol: float = 1e-6, T0_C=None) -> dict:
     """Simulate what the log measured: channel → simulated array (and ``torque_Nm``).
 
-    Transient logs run :func:`thermobear.coupled.solver.transient` at the log's times
+    Transient logs run :func:`thermobear.coupled.transient` at the log's times
     (speed steps in ``n_rpm`` become the schedule; start at ``T0_C``, default the
-    scene's ambient temperature); steady logs run :func:`thermobear.coupled.solver.solve`
+    scene's ambient temperature); steady logs run :func:`thermobear.coupled.solve`
     once per row (speed, loads, lubricant and input temperature of that row).  A transient
     log with ``"impose:<node>"`` channels is run row by row the same way, quasi-steadily: the
     imposed (measured) temperatures of the row are boundaries and the remaining nodes — balls,
     mixture, with time constants of seconds — are taken at equilibrium with them.
     """
-    from thermobear.coupled.solver import solve, transient
     out = {}
     if log.kind == "transient" and not any(n.startswith(IMPOSE) for n in mapping.values()):
         steps, n0 = _schedule_from_log(log)
@@ -487,8 +464,7 @@ def _network_numeric_parameters(scene: Scene) -> dict:
     """``"<element or node>.<parameter>"`` → numeric value, for every number in the scene's network."""
     if not scene.network:
         return {}
-    from thermobear.coupled.solver import network_spec
-    spec = network_spec(scene)
+    spec = network_spec(scene.network, scene.path, parameters=scene.network_parameters, fixed_C=scene.T_fixed_C)
     out = {}
     tables = [(e.get("name"), e) for e in spec.get("elements", [])] + list(spec.get("nodes", {}).items())
     for name, tbl in tables:
@@ -548,7 +524,6 @@ def _parse_param(scene: Scene, spec: str):
 
 
 def _skf_table(scene):
-    from thermobear.losses.skf import skf_constants
     b = scene.bearing
     return skf_constants(b.kind, b.series)
 
@@ -655,7 +630,6 @@ def calibrate(scene: Scene, log: RigLog, params: list, mapping: dict, *, T0_C=No
         raise InputError("--param", ", ".join(names), "each parameter once")
     x0 = np.array([v for _, v in specs])
     logsp = np.array([v > 0 and not n.endswith("_C") for n, v in specs])
-    from scipy.optimize import least_squares
 
     def values_of(x):
         return {n: float(np.exp(xi) if lg else xi) for n, xi, lg in zip(names, x, logsp)}

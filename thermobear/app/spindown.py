@@ -1,8 +1,7 @@
 r"""Spin-down (deceleration) tests: J dω/dt = -T(ω), its closed forms and the fits.
 
 A rotor of inertia J [kg m²] released at ω0 [rad/s] decelerates under the
-friction torque T(ω) [N m] of the bearing(s) it rides on (PHYSICS.md §11;
-seed 001 §3.2).  With T = K ω^n:
+friction torque T(ω) [N m] of the bearing(s) it rides on (seed 001 §3.2).  With T = K ω^n:
 
 * n ≠ 1:  ω(t)^(1-n) = ω0^(1-n) - (1 - n)(K/J) t; for n < 1 the rotor stops at
   t_stop = J ω0^(1-n)/((1 - n) K) after turning φ_max = J ω0^(2-n)/((2 - n) K);
@@ -21,11 +20,13 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import least_squares
 
+from thermobear.coupled import scene_losses
 from thermobear.errors import InputError, NoConvergence
+from thermobear.models import plan
 
 __all__ = ["torque_power_law", "omega_power_law", "angle_power_law", "stop_time",
            "total_angle", "SpinDown", "integrate_spin_down", "PowerLawFit",
-           "fit_from_stop", "dry_torque_from_stop", "fit_power_law"]
+           "fit_from_stop", "dry_torque_from_stop", "fit_power_law", "spin_down_runs"]
 
 
 def _pos(name, v, what=""):
@@ -79,7 +80,7 @@ def total_angle(omega0, K, n, J):
 
 
 def omega_power_law(t, omega0, K, n, J):
-    r"""Speed during a spin-down with T = K ω^n [rad/s] (seed 001 eq 20; PHYSICS.md §11).
+    r"""Speed during a spin-down with T = K ω^n [rad/s] (seed 001 eq 20).
 
     Parameters
     ----------
@@ -315,8 +316,8 @@ def fit_power_law(t, omega, J, *, omega0=None, n0=0.5, max_nfev=200, tol=1e-12):
     Notes
     -----
     Unknowns ln K and n (and ω0), 0 ≤ n ≤ 1.95, on
-    :func:`omega_power_law` (PHYSICS.md §11: better with noise than
-    differentiating ω).  Start: n0 and the K that matches the mean deceleration.
+    :func:`omega_power_law` (fitting the integrated speed is better with noise than
+    differentiating ω, the classic argument for coast-down tests).  Start: n0 and the K that matches the mean deceleration.
 
     Examples
     --------
@@ -366,3 +367,53 @@ def fit_power_law(t, omega, J, *, omega0=None, n0=0.5, max_nfev=200, tol=1e-12):
     cov = np.linalg.inv(JTJ) * (rms**2 * t.size / dof)
     return PowerLawFit(K=float(np.exp(res.x[0])), n=float(res.x[1]), residual=rms,
                        iterations=int(res.nfev), method="least_squares", cov=cov[:2, :2])
+
+
+def spin_down_runs(scene, J, rpms, *, n_table: int = 80) -> list:
+    r"""Coast-downs of a scene's rotor from each initial speed, fitted as seed 001 does.
+
+    The friction torque T(ω) of the scene (prescribed temperature) is tabulated on a log grid of
+    speeds (one vectorised loss evaluation), interpolated log-log (power law below the grid), and
+    J dω/dt = −T(ω) is integrated until the rotor stops (:func:`integrate_spin_down`).  From the
+    stop time t_max and the angle φ_max, K* and n follow as in seed 001 eqs 20–21
+    (:func:`fit_from_stop`).  K* and n do not depend on J (t_max ∝ J); J sets only the time scale.
+
+    Parameters
+    ----------
+    scene : Scene       with a prescribed temperature (operation.T_C)
+    J : float           rotating inertia [kg m²]
+    rpms : list         initial speeds [rpm]
+
+    Returns
+    -------
+    list of dict   per initial speed: n0_rpm, omega0_rad_s, T0_Nm, t_stop_s, phi_max_rad, K_star, n,
+                   T_fit_at_omega0_Nm and the integration (``_sd``)
+    """
+    out = []
+    for rpm in rpms:
+        sc = scene.with_(n_rpm=rpm)
+        models = plan(sc)[0]
+        w0 = rpm * np.pi / 30.0
+        wg = w0 * np.logspace(-5, 0, n_table)
+        Tg = np.asarray(scene_losses(sc, models=models, n_rpm=wg * 30.0 / np.pi).torque_Nm, float)
+        if np.any(~np.isfinite(Tg)) or np.any(Tg <= 0):
+            raise InputError("spin-down", rpm, "the model torque must be > 0 at every speed below the initial one")
+        lw, lT = np.log(wg), np.log(Tg)
+        n_low = (lT[1] - lT[0]) / (lw[1] - lw[0])
+
+        def torque(w, lw=lw, lT=lT, n_low=n_low, Tg=Tg, wg=wg):
+            if w <= 0:
+                return 0.0
+            if w < wg[0]:
+                return float(Tg[0] * (w / wg[0]) ** max(n_low, 0.0))
+            return float(np.exp(np.interp(np.log(w), lw, lT)))
+
+        t_guess = J * w0 / Tg[-1] * 50.0
+        sd = integrate_spin_down(J, torque, w0, t_guess, rtol=1e-9)
+        if not np.isfinite(sd.t_stop):
+            raise InputError("spin-down", rpm, f"the rotor does not stop within {t_guess:.3g} s (torque exponent >= 1)")
+        fit = fit_from_stop(w0, sd.t_stop, float(sd.phi[-1]), J)
+        out.append({"n0_rpm": rpm, "omega0_rad_s": w0, "T0_Nm": float(Tg[-1]), "t_stop_s": sd.t_stop,
+                    "phi_max_rad": float(sd.phi[-1]), "K_star": fit.K, "n": fit.n,
+                    "T_fit_at_omega0_Nm": fit.K * w0 ** fit.n, "_sd": sd})
+    return out

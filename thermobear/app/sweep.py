@@ -1,55 +1,53 @@
-r"""Sweeps: one scene over a grid of operating points, vectorised or in parallel.
+r"""Sweeps: one scene over a grid of operating points, solved in batches.
 
-:func:`run_sweep` takes a scene and a grid ``{override: [values, ...]}`` whose
-keys are :meth:`thermobear.scene.scene.Scene.with_` overrides (``n_rpm``, ``Fa``,
-``Fr``, ``M``, ``T_C``, ``T_oil_in_C``, ``T_ambient_C``, ``oil_flow_L_h``,
-``lubricant``, ...).  It runs the Cartesian product of the values (first key
-slowest) and returns one row per point, in grid order.
+:func:`run_sweep` takes a scene and a grid ``{override: [values, ...]}`` whose keys are
+:meth:`thermobear.scene.Scene.with_` overrides (``n_rpm``, ``Fa``, ``Fr``, ``M``, ``T_C``,
+``T_oil_in_C``, ``T_ambient_C``, ``oil_flow_L_h``, ``lubricant``, ...).  It runs the Cartesian
+product of the values (first key slowest) and returns one row per point, in grid order.
 
-Two kinds of points, as :func:`thermobear.coupled.solver.choose_models` decides:
+Two kinds of points:
 
-* **prescribed temperature** (the point has ``T_C``): no thermal network.  The
-  points that share everything but speed and temperature — same lubricant,
-  loads and model choices, a "group" — are computed in **one** vectorised
-  :func:`thermobear.coupled.solver.scene_losses` call with the group's single load
-  distribution (the loads do not depend on speed or temperature in the
-  low-speed model; the high-speed and the film load models solve the group's
-  loads in one batched call, one case per speed and temperature).  Scenes on the
-  SKF global model (``models.losses = "skf"``) are evaluated point by point.
-* **coupled** (no ``T_C``): the thermal fixed point
-  (:func:`thermobear.coupled.solver.steady_state`) per point, run in local processes
-  (:class:`concurrent.futures.ProcessPoolExecutor`, ``processes`` workers,
-  default ``os.cpu_count()``; ``processes=1`` runs in this process) or on an
-  existing Dask distributed cluster (``scheduler="tcp://host:port"``; needs the
-  optional dependency ``dask[distributed]``).
+* **prescribed temperature** (the point has ``T_C``): no thermal network; the points that share
+  everything but speed and temperature are computed in one vectorised loss evaluation
+  (:func:`thermobear.coupled.scene_losses`) with their loads solved in one batched call.
+* **coupled** (no ``T_C``): :func:`thermobear.coupled.steady_states` in chunks — each chunk's points
+  grouped into families and solved together (stacked Newton, batched loads, one network at all of
+  a family's points) — in this process, in local worker processes (``processes``), or on a Dask
+  cluster (``scheduler``).
 
-A point whose coupled solution fails (:class:`~thermobear.errors.ThermalRunaway`,
-:class:`~thermobear.errors.NoConvergence`, ...) does not stop the sweep: its
-row says so (``status`` = the error class, ``reason``, ``iterations``) and
-carries no power — never a silent or NaN result.  Bad overrides raise
-:class:`~thermobear.errors.InputError` before anything runs.
+Rows are handed to ``on_row(index, row)`` as their chunk finishes (the command line writes them
+then, flushed), so an interrupted sweep keeps every finished row.  A point whose solution fails
+(:class:`~thermobear.errors.ThermalRunaway`, :class:`~thermobear.errors.NoConvergence`, a load the
+contacts cannot carry, ...) does not stop the sweep: its row says so (``status`` = the error class,
+``reason``, ``iterations``) and carries no power — never a silent or NaN result.  Bad overrides
+raise :class:`~thermobear.errors.InputError` before anything runs.
 
-Each row holds the grid values and ``P_W`` [W], ``torque_Nm`` [N m],
-``breakdown_W`` (loss family → W), ``temperatures_C`` (node → °C; prescribed
-points: ``{"contacts (prescribed)": T}``), ``T_ball_C`` (coupled points), ``models`` (sub-model → choice),
-``status`` ("ok" or the error class), ``reason`` (how the fixed point converged, or why it
-failed), ``iterations`` and ``residual_K`` (coupled points).
+Each row holds the grid values and ``P_W`` [W], ``torque_Nm`` [N m], ``breakdown_W`` (loss family
+→ W), ``temperatures_C`` (node → °C; prescribed points: ``{"contacts (prescribed)": T}``),
+``T_ball_C`` (coupled points), ``models`` (sub-model → choice), ``status`` ("ok" or the error
+class), ``reason``, ``iterations``, ``residual_K`` and ``warnings`` (the OutsideValidity messages).
 """
 from __future__ import annotations
 
 import itertools
-import os
-from concurrent.futures import ProcessPoolExecutor, as_completed
+import multiprocessing
+import signal
 
 import numpy as np
 
+from thermobear.coupled import scene_losses, steady_states
+from thermobear.coupled.pipeline import scene_load
 from thermobear.errors import InputError, SolverError
-from thermobear.scene.scene import Scene
-from thermobear.coupled.solver import _load_case, _prime_dry_loads, choose_models, scene_load, scene_losses, solve, steady_state
+from thermobear.loads.highspeed import load_distribution_high_speed
+from thermobear.arrays import take
+from thermobear.coupled.pipeline import film_scene_load
+from thermobear.models import plan, plan_many
+from thermobear.scene import Scene
 
-__all__ = ["run_sweep", "sweep_points"]
+__all__ = ["run_sweep", "sweep_points", "CHUNK"]
 
 _VECTOR_KEYS = ("n_rpm", "T_C")          # vectorised inside one scene_losses call
+CHUNK = 256                              #: most coupled points solved together (rows stream out per chunk)
 
 
 def sweep_points(grid: dict) -> list[dict]:
@@ -78,186 +76,137 @@ def _base_row(point: dict) -> dict:
             for k, v in point.items()}
 
 
-def _solve_point(scene: Scene, point: dict) -> dict:
-    """Coupled steady state of one point (runs in a worker process or on a Dask worker)."""
-    sc = scene.with_(**point)
-    try:
-        st = steady_state(sc)
-    except (SolverError, InputError) as exc:   # inputs were validated up front: a model range left mid-solve
-        return _row(point, sc, exc=exc)
-    return _row(point, sc, st=st)
-
-
 def _row(point: dict, sc: Scene, st=None, exc=None) -> dict:
     """A coupled point's row from its steady state, or from the error that stopped it."""
     row = _base_row(point)
     if exc is not None:
-        row.update(P_W=None, torque_Nm=None, breakdown_W={}, temperatures_C={}, models=_choices(choose_models(sc)),
-                   status=type(exc).__name__, reason=str(exc.reason if hasattr(exc, "reason") else exc),
-                   iterations=getattr(exc, "iterations", None), residual_K=getattr(exc, "residual", None))
+        try:
+            models = _choices(plan(sc)[0])
+        except (InputError, SolverError):
+            models = {}
+        row.update(P_W=None, torque_Nm=None, breakdown_W={}, temperatures_C={}, models=models,
+                   status=type(exc).__name__, reason=" ".join(str(getattr(exc, "reason", exc)).split()),
+                   iterations=getattr(exc, "iterations", None), residual_K=_finite_or_none(getattr(exc, "residual", None)),
+                   warnings=[])
         return row
     row.update(P_W=float(st.P_W), torque_Nm=float(st.losses.torque_Nm),
                breakdown_W={k: float(v) for k, v in st.losses.breakdown_W.items()},
                temperatures_C={k: float(v) for k, v in st.T_C.items()}, T_ball_C=float(st.T_ball_C),
                models=_choices(st.models_used), status="ok", reason=str(st.models_used["thermal"][1]),
-               iterations=int(st.iterations),
-               residual_K=float(st.residual_K))
+               iterations=int(st.iterations), residual_K=float(st.residual_K),
+               warnings=[str(w) for w in st.warnings])
     return row
 
 
-def _film_points(scene: Scene, points: list, progress=None) -> list:
-    """Rows of coupled points on the film load model (worker side, or in this process).
+def _finite_or_none(v):
+    return float(v) if isinstance(v, (int, float, np.floating)) and np.isfinite(v) else None
 
-    Each point runs the film fixed point of :func:`thermobear.coupled.solver.steady_state`
-    (:func:`thermobear.coupled.solver._steady_film_steps`: a dry start, then film load updates, each followed by
-    a network solve).  The film load distributions the points ask for in the same round are solved in
-    one batched call per group of points that differ only in speed and film temperature
-    (:func:`thermobear.coupled.solver.film_scene_load`, each case equal to its single solve to round-off); a
-    batch that fails is solved point by point, so a failure stays with its point."""
-    from thermobear.coupled.solver import _steady_film_steps, film_scene_load
-    rows: list = [None] * len(points)
-    live = {}
-    for j, p in enumerate(points):
-        sc = scene.with_(**p)
-        models = choose_models(sc)
-        steps = _steady_film_steps(sc, models, tol_K=1e-6, method="newton")
-        try:
-            live[j] = (steps, sc, models, next(steps))
-        except (SolverError, InputError) as exc:
-            rows[j] = _row(p, sc, exc=exc)
-            if progress:
-                progress()
-    while live:
-        groups: dict = {}
-        for j, (_, sc, models, _) in live.items():
-            key = (sc.bearing, id(sc.lubricant), sc.Fa, sc.Fr, sc.M, sc.rotating, sc.models.get("stiffness"),
-                   models["high_speed"][0])
-            groups.setdefault(key, []).append(j)
-        nxt = {}
-        for members in groups.values():
-            loads = {}
-            if len(members) > 1:
-                sc0, models0 = live[members[0]][1], live[members[0]][2]
-                try:
-                    ld = film_scene_load(sc0, models0, np.array([live[j][3] for j in members]),
-                                         n_rpm=np.array([live[j][1].n_rpm for j in members]))
-                    loads = {j: _load_case(ld, k, len(members)) for k, j in enumerate(members)}
-                except (SolverError, InputError):       # each point on its own: a failure stays on its row
-                    loads = {}
-            for j in members:
-                steps, sc, models, T_film = live[j]
-                try:
-                    load = loads[j] if j in loads else film_scene_load(sc, models, T_film)
-                    nxt[j] = (steps, sc, models, steps.send(load))
-                except StopIteration as done:
-                    rows[j] = _row(points[j], sc, st=done.value)
-                except (SolverError, InputError) as exc:
-                    rows[j] = _row(points[j], sc, exc=exc)
-                if rows[j] is not None and progress:
-                    progress()
-        live = nxt
-    return rows
+
+def _solve_chunk(scene: Scene, points: list) -> list:
+    """Rows of a chunk of coupled points (runs in this process, a worker process or on Dask)."""
+    scenes = [scene.with_(**p) for p in points]
+    return [_row(p, sc, exc=r) if isinstance(r, Exception) else _row(p, sc, st=r)
+            for p, sc, r in zip(points, scenes, steady_states(scenes))]
 
 
 def _losses_batch(sc: Scene, n_rpm, T_C, models: dict, load=None):
-    """Local losses of one group, vectorised over speed and temperature [W].
-
-    Goes through :func:`thermobear.coupled.solver.scene_losses` (the same argument mapping as a single
-    solve) with the group's speed array; ``load``: a load distribution instead of the one the
-    solver picks."""
+    """Local losses of one group of prescribed points, vectorised over speed and temperature [W]."""
     return scene_losses(sc, T_C=np.asarray(T_C, float), models=models, n_rpm=np.asarray(n_rpm, float),
                         load=scene_load(sc, models) if load is None else load)
 
 
-def _prescribed(scenes, points, idx, rows):
-    groups: dict = {}
-    for i in idx:
-        models = choose_models(scenes[i])
-        key = (tuple((k, repr(v)) for k, v in points[i].items() if k not in _VECTOR_KEYS),
-               tuple(sorted((k, repr(v[0])) for k, v in models.items() if k != "thermal")))
-        groups.setdefault(key, (models, []))[1].append(i)
-    for models, members in groups.values():
-        try:
-            _prescribed_group(scenes, points, rows, models, members)
-        except SolverError:         # a point without equilibrium: each point alone, the failure on its own row
-            for i in members:
-                try:
-                    _prescribed_group(scenes, points, rows, models, [i])
-                except SolverError as exc:
-                    rows[i] = _row(points[i], scenes[i], exc=exc)
-
-
-def _prescribed_group(scenes, points, rows, models, members):
+def _prescribed_group(scenes, points, models, members):
     """Rows of one group of prescribed-temperature points (one vectorised loss evaluation)."""
     sc = scenes[members[0]]
     n = np.array([scenes[i].n_rpm for i in members], float)
     T = np.array([scenes[i].T_C for i in members], float)
-    if models.get("losses", ("local",))[0] != "local":         # SKF global model: per point
-        rs = [solve(scenes[i]) for i in members]
-        P = np.array([x.P_W for x in rs])
-        M = np.array([x.torque_Nm for x in rs])
-        bd = {k: np.array([x.breakdown_W[k] for x in rs]) for k in rs[0].breakdown_W}
+    if models["losses"][0] != "local":                    # SKF global model: vectorised over the points
+        r = scene_losses(sc, T_C=T, models=models, n_rpm=n)
     else:
         load = None
         if models["load_model"][0] == "film":   # loads depend on speed and film temperature: one batched solve
-            from thermobear.coupled.solver import film_scene_load
             load = film_scene_load(sc, models, T, n_rpm=n)
-        elif models["high_speed"][0] == "yes":   # high-speed ball loads depend on speed only: one batched
-            from thermobear.loads.highspeed import load_distribution_high_speed    # solve over the distinct speeds
+        elif models["high_speed"][0] == "yes":   # high-speed ball loads depend on speed: one batched solve
             n_u, back = np.unique(n, return_inverse=True)
-            load = _load_case(load_distribution_high_speed(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, M=sc.M, n_rpm=n_u,
-                                                           stiffness=sc.models.get("stiffness", "nominal")),
-                              back, n_u.size)
+            load = take(load_distribution_high_speed(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, M=sc.M, n_rpm=n_u,
+                                                     stiffness=sc.models.get("stiffness", "nominal")),
+                        back, n_u.size)
         r = _losses_batch(sc, n, T, models, load=load)
-        P, M = np.atleast_1d(r.P_W), np.atleast_1d(r.torque_Nm)
-        bd = {k: np.broadcast_to(np.atleast_1d(v), P.shape) for k, v in r.breakdown_W.items()}
+    P, M = np.atleast_1d(r.P_W), np.atleast_1d(r.torque_Nm)
+    bd = {k: np.broadcast_to(np.atleast_1d(v), P.shape) for k, v in r.breakdown_W.items()}
+    rows = {}
     for j, i in enumerate(members):
         row = _base_row(points[i])
         row.update(P_W=float(P[j]), torque_Nm=float(M[j]), breakdown_W={k: float(v[j]) for k, v in bd.items()},
                    temperatures_C={"contacts (prescribed)": float(T[j])}, models=_choices(models), status="ok",
-                   reason="", iterations=0, residual_K=0.0)
+                   reason="", iterations=0, residual_K=0.0, warnings=[])
         rows[i] = row
+    return rows
 
 
-def _film_chunk(scene, points):
-    return _film_points(scene, points)
+def _prescribed(scenes, points, idx, emit):
+    """Rows of the prescribed-temperature points, by groups of one vectorised evaluation."""
+    groups: dict = {}
+    for i, p in zip(idx, plan_many([scenes[i] for i in idx])):
+        if isinstance(p, Exception):
+            emit(i, _row(points[i], scenes[i], exc=p))
+            continue
+        key = (tuple((k, repr(v)) for k, v in points[i].items() if k not in _VECTOR_KEYS),
+               tuple(sorted((k, repr(v[0])) for k, v in p[0].items() if k != "thermal")))
+        groups.setdefault(key, (p[0], []))[1].append(i)
+    for models, members in groups.values():
+        try:
+            rows = _prescribed_group(scenes, points, models, members)
+        except (SolverError, InputError):     # each point alone: a failure stays on its own row
+            rows = {}
+            for i in members:
+                try:
+                    rows.update(_prescribed_group(scenes, points, models, [i]))
+                except (SolverError, InputError) as exc:
+                    rows[i] = _row(points[i], scenes[i], exc=exc)
+        for i in members:
+            emit(i, rows[i])
 
 
-def _coupled_local(scene, points, idx, rows, processes, progress, done, total, scenes=None):
-    # points on the film load model run together (their film load distributions batched per round)
-    film = [i for i in idx if scenes is not None and choose_models(scenes[i])["load_model"][0] == "film"]
-    in_film = set(film)
-    rest = [i for i in idx if i not in in_film]
-    count = [done]
-
-    def tick():
-        count[0] += 1
-        if progress:
-            progress(count[0], total)
-    if processes == 1 or len(idx) == 1:
-        if film:
-            for i, row in zip(film, _film_points(scene, [points[i] for i in film], progress=tick)):
-                rows[i] = row
-        for i in rest:
-            rows[i] = _solve_point(scene, points[i])
-            tick()
-        return count[0]
-    with ProcessPoolExecutor(max_workers=min(processes, len(idx))) as ex:
-        futs = {ex.submit(_solve_point, scene, points[i]): [i] for i in rest}
-        n_chunks = min(processes, len(film))
-        for c in range(n_chunks):                   # contiguous chunks: neighbouring speeds batch together
-            part = film[c * len(film) // n_chunks:(c + 1) * len(film) // n_chunks]
-            futs[ex.submit(_film_chunk, scene, [points[i] for i in part])] = part
-        for f in as_completed(futs):
-            part = futs[f]
-            out = f.result()
-            for i, row in zip(part, out if isinstance(out, list) else [out]):
-                rows[i] = row
-                tick()
-    return count[0]
+def _worker_signals():
+    """Worker processes leave Ctrl-C to the parent, which terminates them (SIGTERM: end quietly)."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
 
 
-def _coupled_dask(scene, points, idx, rows, scheduler, progress, done, total):
+def _chunk_job(args):
+    scene, idx, points = args
+    return idx, _solve_chunk(scene, points)
+
+
+def _chunks(idx, processes):
+    """Chunks of points solved together: large enough to batch well (≥ 16 points), at least 8 per
+    sweep (4 per process) so that rows stream out and an interrupted sweep keeps most of its work."""
+    size = max(16, min(CHUNK, -(-len(idx) // max(8, 4 * processes))))
+    return [idx[k:k + size] for k in range(0, len(idx), size)]
+
+
+def _coupled_local(scene, points, idx, processes, emit):
+    chunks = _chunks(idx, processes)
+    if processes == 1 or len(chunks) == 1:
+        for part in chunks:
+            for i, row in zip(part, _solve_chunk(scene, [points[i] for i in part])):
+                emit(i, row)
+        return
+    pool = multiprocessing.get_context().Pool(min(processes, len(chunks)), initializer=_worker_signals)
+    try:
+        for part, rows in pool.imap_unordered(_chunk_job, [(scene, part, [points[i] for i in part]) for part in chunks]):
+            for i, row in zip(part, rows):
+                emit(i, row)
+        pool.close()
+    except BaseException:                   # Ctrl-C, SIGTERM, an error: no worker outlives the sweep
+        pool.terminate()
+        raise
+    finally:
+        pool.join()
+
+
+def _coupled_dask(scene, points, idx, scheduler, emit):
     try:
         from dask.distributed import Client, as_completed as das_completed
     except ImportError:   # pragma: no cover - exercised only without dask
@@ -266,21 +215,19 @@ def _coupled_dask(scene, points, idx, rows, scheduler, progress, done, total):
     own = not isinstance(scheduler, Client)
     client = Client(scheduler) if own else scheduler
     try:
-        futs = client.map(_solve_point, [scene] * len(idx), [points[i] for i in idx], pure=False)
-        where = {f.key: i for f, i in zip(futs, idx)}
+        chunks = _chunks(idx, 8)
+        futs = client.map(_chunk_job, [(scene, part, [points[i] for i in part]) for part in chunks], pure=False)
         for f in das_completed(futs):
-            rows[where[f.key]] = f.result()
-            done += 1
-            if progress:
-                progress(done, total)
+            part, rows = f.result()
+            for i, row in zip(part, rows):
+                emit(i, row)
     finally:
         if own:
             client.close()
-    return done
 
 
-def run_sweep(scene: Scene, grid: dict, *, scheduler=None, processes: int | None = None,
-              progress=None) -> list[dict]:
+def run_sweep(scene: Scene, grid: dict, *, scheduler=None, processes: int | None = None, progress=None,
+              on_row=None) -> list[dict]:
     """Run a scene over a grid of operating points (see the module docstring).
 
     Parameters
@@ -290,9 +237,10 @@ def run_sweep(scene: Scene, grid: dict, *, scheduler=None, processes: int | None
                                 (n_rpm [rpm], Fa, Fr [N], T_C, T_oil_in_C [°C], lubricant, ...)
     scheduler : str or Client   Dask scheduler address ``"tcp://host:port"`` (or a
                                 ``dask.distributed.Client``) for the coupled points; None: local
-    processes : int             local worker processes for the coupled points (default
-                                ``os.cpu_count()``; 1 runs them in this process)
-    progress : callable         ``progress(done, total)`` after each point
+    processes : int             local worker processes for the coupled points (default 1: this
+                                process; each worker solves chunks of points together)
+    progress : callable         ``progress(done, total)`` as rows finish
+    on_row : callable           ``on_row(index, row)`` as each row finishes (index in grid order)
 
     Returns
     -------
@@ -309,26 +257,35 @@ def run_sweep(scene: Scene, grid: dict, *, scheduler=None, processes: int | None
     (['ok', 'ok', 'ok', 'ok'], True, True)
     """
     if not isinstance(scene, Scene):
-        raise InputError("scene", type(scene).__name__, "a thermobear.scene.scene.Scene")
-    if processes is not None and (not isinstance(processes, (int, np.integer)) or processes < 1):
+        raise InputError("scene", type(scene).__name__, "a thermobear.scene.Scene")
+    if processes is not None and (isinstance(processes, bool) or not isinstance(processes, (int, np.integer))
+                                  or processes < 1):
         raise InputError("processes", processes, "an integer >= 1")
     points = sweep_points(grid)
     scenes = [scene.with_(**p) for p in points]          # validates every override first
-    _prime_dry_loads(scenes)                             # the dry loads of all points in batched solves
-    for sc in scenes:
-        choose_models(sc)                                # InputError (e.g. no network) before running
     total = len(points)
     rows: list = [None] * total
+    done = [0]
+
+    def emit(i, row):
+        rows[i] = row
+        done[0] += 1
+        if on_row is not None:
+            on_row(i, row)
+        if progress is not None:
+            progress(done[0], total)
+
     fixed = [i for i, sc in enumerate(scenes) if sc.T_C is not None]
     coupled = [i for i, sc in enumerate(scenes) if sc.T_C is None]
-    _prescribed(scenes, points, fixed, rows)
-    done = len(fixed)
-    if progress and fixed:
-        progress(done, total)
+    for i in coupled:
+        if scenes[i].network is None:
+            raise InputError("thermal.network", None, "give a thermal network or prescribe operation.T_C")
+    _prescribed(scenes, points, fixed, emit)
     if coupled:
         if scheduler is not None:
-            _coupled_dask(scene, points, coupled, rows, scheduler, progress, done, total)
+            _coupled_dask(scene, points, coupled, scheduler, emit)
         else:
-            _coupled_local(scene, points, coupled, rows, processes or os.cpu_count() or 1, progress, done, total,
-                           scenes=scenes)
+            _coupled_local(scene, points, coupled, processes or 1, emit)
     return rows
+
+

@@ -3,16 +3,21 @@ r"""Ball bearing internal geometry and the bearing catalog.
 ``BallBearing`` holds the internal geometry in SI and derives what the
 mechanics needs: the distance between groove curvature centres A, the free
 contact angle, the reduced radii of each contact as functions of the contact
-angle, the contact stiffnesses.  The catalog of the seed papers' bearings is
-data: ``materials/bearings.toml``.
+angle, the contact stiffnesses.  The catalog is data: the seed papers'
+bearings in ``materials/bearings.toml`` and the common series (deep groove
+60, 62, 63, 618, 619, 160; angular contact 72 B, 73 B; spindle 70 C/E,
+719 C/E; thrust 511, 512, 513) in ``materials/bearings/<series>.toml``,
+written by ``validation/catalogue.py``.  Radial internal clearance groups
+(ISO 5753-1) are data too: ``materials/iso5753_clearance.toml``.
 
-Conventions (Harris 2001 ch. 2; PHYSICS.md §1; seed 004 eqs 1–5): x is the
+Conventions (Harris 2001 ch. 2; seed 004 eqs 1–5): x is the
 rolling direction, y the transverse one; osculations f = r/D; diametral
 clearance Pd = d_o − d_i − 2D; A = (fi + fo − 1) D; cos α0 = 1 − Pd/(2A);
 γ = D cos α / dm.
 """
 from __future__ import annotations
 
+import difflib
 import numbers
 from dataclasses import dataclass, field, replace
 from functools import cached_property
@@ -21,12 +26,16 @@ import numpy as np
 
 from thermobear.files import data_dir, read_toml
 from thermobear.errors import InputError
+from thermobear.validity import check as check_limit
 from thermobear.contact.hertz import contact_stiffness, series_stiffness
 from thermobear.contact.materials import Material, material, reduced_modulus
 
-__all__ = ["BallBearing", "bearing", "bearing_names", "KINDS"]
+__all__ = ["BallBearing", "bearing", "bearing_names", "bearing_series", "bearing_table", "bearing_from_dict",
+           "canonical_designation", "radial_clearance", "KINDS", "CLEARANCE_GROUPS"]
 
 KINDS = ("deep_groove", "angular_contact", "thrust")
+#: ISO 5753-1 radial internal clearance groups in the data file (normal, larger, larger still).
+CLEARANCE_GROUPS = ("CN", "C3", "C4")
 
 
 def _default_steel() -> Material:
@@ -51,8 +60,10 @@ class BallBearing:
     name : str            label
     bore, outer_diameter, width : float   boundary dimensions [m] (optional; the SKF
                           model and thermal networks need them)
-    series : str          SKF series key for the global model (e.g. "62", "72B", "511")
-    C0 : float            static load rating [N] (optional)
+    series : str          series key (e.g. "62", "72B", "511"; also the SKF global model's key)
+    C0, C : float         static / dynamic load rating [N] (optional; the catalogue stores the ISO 76 /
+                          ISO 281 values of the geometry, :mod:`thermobear.rating` computes them)
+    clearance_group : str ISO 5753-1 group ("CN", "C3", "C4") whose mid value gave Pd (deep groove), or None
     estimated : tuple     names of fields that are estimates, not published data
 
     Examples
@@ -84,6 +95,8 @@ class BallBearing:
     series: str | None = None
     C0: float | None = None
     estimated: tuple = ()
+    C: float | None = None
+    clearance_group: str | None = None
 
     def __post_init__(self):
         p = f"bearing[{self.name}]"
@@ -102,8 +115,9 @@ class BallBearing:
                              f"dm = {self.dm * 1e3:.4g} mm (need D <= dm sin(pi/Z))")
         for fld in ("fi", "fo"):
             v = getattr(self, fld)
-            if isinstance(v, bool) or not isinstance(v, numbers.Real) or not (np.isfinite(v) and v > 0.5):
-                raise InputError(f"{p}.{fld}", v, "osculation must be > 0.5 (groove radius / ball diameter)")
+            if isinstance(v, bool) or not isinstance(v, numbers.Real):
+                raise InputError(f"{p}.{fld}", v, "osculation must be a number in (0.5, 0.6] (groove radius / ball diameter)")
+            check_limit("osculation", v, f"{p}.{fld}", warn=False)
         A = (self.fi + self.fo - 1.0) * self.D
         a0, Pd = self.alpha0, self.Pd
         if self.kind == "thrust":
@@ -147,6 +161,11 @@ class BallBearing:
             raise InputError(f"{p}.width", self.width, "width must be > 0 [m]")
         if self.C0 is not None and not (self.C0 > 0):
             raise InputError(f"{p}.C0", self.C0, "static load rating must be > 0 [N]")
+        if self.C is not None and not (self.C > 0):
+            raise InputError(f"{p}.C", self.C, "dynamic load rating must be > 0 [N]")
+        if self.clearance_group is not None and self.clearance_group not in CLEARANCE_GROUPS:
+            raise InputError(f"{p}.clearance_group", self.clearance_group,
+                             f"must be one of {', '.join(CLEARANCE_GROUPS)} (ISO 5753-1)")
 
     # ---- derived geometry -------------------------------------------------
     @property
@@ -191,6 +210,15 @@ class BallBearing:
     def R_inner_locus(self) -> float:
         """Radius of the locus of inner groove curvature centres [m]: dm/2 + (fi − ½) D cos α0 (Harris 2001 §7.4)."""
         return 0.5 * self.dm + (self.fi - 0.5) * self.D * np.cos(self.alpha0)
+
+    @property
+    def clearance_range(self) -> tuple[float, float] | None:
+        """(min, max) radial internal clearance of the bearing's ISO 5753-1 group [m], or None.
+
+        Needs ``clearance_group`` and ``bore`` (see :func:`radial_clearance`); Pd is the mid value."""
+        if self.clearance_group is None or self.bore is None:
+            return None
+        return radial_clearance(self.bore, self.clearance_group)
 
     @property
     def ball_mass(self) -> float:
@@ -246,8 +274,11 @@ class BallBearing:
         """Copy with some fields changed (validated again).
 
         Derived clearance data follow the change: a new ``Pd`` re-derives ``alpha0`` of a
-        deep groove bearing, a new ``alpha0`` re-derives ``Pd``."""
+        deep groove bearing, a new ``alpha0`` re-derives ``Pd``; either drops ``clearance_group``
+        unless it is given too."""
         kind = changes.get("kind", self.kind)
+        if ("Pd" in changes or "alpha0" in changes) and "clearance_group" not in changes:
+            changes["clearance_group"] = None # the group no longer names where Pd came from
         if kind == "deep_groove":
             if "alpha0" in changes and "Pd" not in changes:
                 changes["Pd"] = None          # re-derive Pd from the new alpha0
@@ -261,27 +292,157 @@ class BallBearing:
 # ---- catalog ----------------------------------------------------------------
 _MM_KEYS = {"D_mm": "D", "dm_mm": "dm", "Pd_mm": "Pd", "bore_mm": "bore",
             "outer_diameter_mm": "outer_diameter", "width_mm": "width"}
+_KNOWN_KEYS = set(_MM_KEYS) | {"kind", "Z", "fi", "fo", "alpha0_deg", "ball_material", "ring_material", "series",
+                               "C0_kN", "C_kN", "estimated", "source", "description", "name", "clearance_group",
+                               "aliases"}
+
+
+def canonical_designation(name: str) -> str:
+    """Canonical form of a catalogue designation: spaces removed, letters upper case.
+
+    "7205 B", "7205b" -> "7205B"; "7014 c" -> "7014C"; "6208" unchanged.  Names with a hyphen or
+    lower-case words (the seed bearings "iso-dgbb", "51205-3ball") are returned as given.
+
+    >>> canonical_designation("7205 b"), canonical_designation("iso-dgbb")
+    ('7205B', 'iso-dgbb')
+    """
+    s = str(name).strip()
+    if "-" in s or not s[:1].isdigit():
+        return s
+    return s.replace(" ", "").upper()
 
 
 def _catalog() -> dict:
-    return read_toml(str(data_dir("materials") / "bearings.toml"))
+    """Every catalogue entry by name: the seed file, then materials/bearings/*.toml (one file per series).
+
+    A name defined twice is a data error (InputError naming both files); aliases of an entry
+    (``aliases = [...]``) are not keys here — see :func:`_resolve`."""
+    base = data_dir("materials")
+    out = dict(read_toml(str(base / "bearings.toml")))
+    folder = base / "bearings"
+    if folder.is_dir():
+        for path in sorted(folder.glob("*.toml")):
+            for name, entry in read_toml(str(path)).items():
+                if not isinstance(entry, dict):
+                    continue
+                if name in out:
+                    raise InputError(f"bearings/{path.name}[{name}]", name, "designation defined twice in the catalog")
+                out[name] = entry
+    return out
 
 
-def bearing_names() -> list[str]:
-    """Names in the bearing catalog."""
-    return sorted(_catalog())
+def _resolve(name, cat: dict) -> str | None:
+    """Catalogue key of a designation: exact, canonical, or an alias of an entry (all canonicalised)."""
+    if name in cat:
+        return name
+    c = canonical_designation(name)
+    if c in cat:
+        return c
+    for key, entry in cat.items():
+        if c in {canonical_designation(a) for a in entry.get("aliases", ())}:
+            return key
+    return None
+
+
+def _series_match(entry_series, query: str) -> bool:
+    """A series query matches the entry's series exactly (spaces and case ignored), or its letter-less
+    stem: "62" -> "62"; "72 b" -> "72B"; "70" -> "70C" and "70E"."""
+    if entry_series is None:
+        return False
+    e = str(entry_series).replace(" ", "").upper()
+    q = str(query).replace(" ", "").upper()
+    return e == q or (q.isdigit() and e.rstrip("ABCDEFGHIJKLMNOPQRSTUVWXYZ") == q)
+
+
+def bearing_names(series: str | None = None) -> list[str]:
+    """Names in the bearing catalog, all or those of one series (see :func:`bearing_series`).
+
+    >>> bearing_names(series="62")[:3]
+    ['6200', '6201', '6202']
+    >>> "7205B" in bearing_names(series="72 B")
+    True
+    """
+    cat = _catalog()
+    if series is None:
+        return sorted(cat, key=_name_key)
+    hits = sorted((n for n, e in cat.items() if _series_match(e.get("series"), series)), key=_name_key)
+    if not hits:
+        raise InputError("series", series, f"no bearing of this series; known series: {', '.join(bearing_series())}")
+    return hits
+
+
+def _name_key(name: str):
+    """Sort designations numerically where they are numbers ("6200" < "6201" < "62000")."""
+    digits = "".join(ch for ch in name if ch.isdigit())
+    return (len(digits) if digits else 99, name)
+
+
+def bearing_series() -> list[str]:
+    """Series present in the catalog (e.g. "60", "62", "72B", "70C", "511").
+
+    >>> {"62", "72B", "719E", "513"} <= set(bearing_series())
+    True
+    """
+    return sorted({str(e["series"]) for e in _catalog().values() if e.get("series")}, key=lambda s: (len(s), s))
+
+
+def bearing_table(name: str) -> dict:
+    """A copy of the catalogue entry of a designation (unit-suffixed keys, as in the data files).
+
+    Resolves canonical forms and aliases like :func:`bearing`; for merging scene overrides.
+
+    >>> bearing_table("7205 B")["series"]
+    '72B'
+    """
+    cat = _catalog()
+    key = _resolve(name, cat)
+    if key is None:
+        raise InputError("bearing", name, _unknown_message(name, cat))
+    return {"name": key, **cat[key]}
+
+
+def _unknown_message(name, cat) -> str:
+    close = difflib.get_close_matches(canonical_designation(name), list(cat), n=5, cutoff=0.6)
+    seeds = sorted(read_toml(str(data_dir("materials") / "bearings.toml")))
+    hint = f"close: {', '.join(close)}; " if close else ""
+    return (f"unknown catalog name; {hint}seed bearings: {', '.join(seeds)}; series: "
+            f"{', '.join(bearing_series())} (list them with bearing_names(series=...))")
+
+
+def radial_clearance(bore, group: str = "CN") -> tuple[float, float]:
+    """(min, max) radial internal clearance of a deep groove ball bearing [m] (ISO 5753-1:2009 Table 1).
+
+    Parameters
+    ----------
+    bore : float   bore diameter [m], over 6 mm up to 100 mm
+    group : str    "CN" (normal), "C3" or "C4"
+
+    >>> [round(x * 1e6) for x in radial_clearance(50e-3)]
+    [6, 23]
+    >>> [round(x * 1e6) for x in radial_clearance(50e-3, "C3")]
+    [18, 36]
+    """
+    if group not in CLEARANCE_GROUPS:
+        raise InputError("clearance_group", group, f"must be one of {', '.join(CLEARANCE_GROUPS)} (ISO 5753-1)")
+    tab = read_toml(str(data_dir("materials") / "iso5753_clearance.toml"))
+    d_mm = float(bore) * 1e3
+    for lo_mm, hi_mm, (cmin, cmax) in zip(tab["bore_over_mm"], tab["bore_incl_mm"], tab[f"{group}_um"]):
+        if lo_mm < d_mm <= hi_mm + 1e-9:
+            return cmin * 1e-6, cmax * 1e-6
+    raise InputError("bore", bore, f"ISO 5753-1 clearance table holds bores over {tab['bore_over_mm'][0]} "
+                     f"up to {tab['bore_incl_mm'][-1]} mm [m]")
 
 
 def bearing_from_dict(d: dict, name: str = "custom", where: str = "bearing") -> BallBearing:
     """Build a BallBearing from a catalog/scene table with unit-suffixed keys (mm, deg, kN).
 
-    Unknown keys raise InputError naming them; so do missing required keys.
+    A deep groove bearing without ``Pd_mm`` but with ``clearance_group`` and ``bore_mm`` takes Pd
+    as the mid value of that ISO 5753-1 group; an explicit ``Pd_mm`` wins, and the group is kept only
+    if Pd lies in its range.  Unknown keys raise InputError naming them; so do missing required keys.
     """
-    known = set(_MM_KEYS) | {"kind", "Z", "fi", "fo", "alpha0_deg", "ball_material", "ring_material",
-                             "series", "C0_kN", "estimated", "source", "description", "name", "C_kN"}
     for k in d:
-        if k not in known:
-            raise InputError(f"{where}.{k}", d[k], f"unknown key; accepted: {', '.join(sorted(known))}")
+        if k not in _KNOWN_KEYS:
+            raise InputError(f"{where}.{k}", d[k], f"unknown key; accepted: {', '.join(sorted(_KNOWN_KEYS))}")
     for req in ("D_mm", "dm_mm", "Z", "fi", "fo"):
         if req not in d:
             raise InputError(f"{where}.{req}", None, "missing required field")
@@ -310,19 +471,45 @@ def bearing_from_dict(d: dict, name: str = "custom", where: str = "bearing") -> 
     est = d.get("estimated", ())
     if not isinstance(est, (list, tuple)) or not all(isinstance(e, str) for e in est):
         raise InputError(f"{where}.estimated", est, "must be a list of field names")
-    return BallBearing(Z=Z, fi=num("fi"), fo=num("fo"), kind=text("kind", "deep_groove"),
-                       name=text("name", name), series=text("series"),
-                       C0=num("C0_kN") * 1e3 if "C0_kN" in d else None, estimated=tuple(est), **kw)
+    kind = text("kind", "deep_groove")
+    group = text("clearance_group")
+    if group is not None:
+        kw["clearance_group"] = _clearance(kw, group, kind, where)
+    return BallBearing(Z=Z, fi=num("fi"), fo=num("fo"), kind=kind, name=text("name", name), series=text("series"),
+                       C0=num("C0_kN") * 1e3 if "C0_kN" in d else None,
+                       C=num("C_kN") * 1e3 if "C_kN" in d else None, estimated=tuple(est), **kw)
+
+
+def _clearance(kw: dict, group: str, kind: str, where: str) -> str | None:
+    """Fill kw["Pd"] from an ISO 5753-1 group (deep groove, bore known); return the group label to keep."""
+    if group not in CLEARANCE_GROUPS:
+        raise InputError(f"{where}.clearance_group", group, f"must be one of {', '.join(CLEARANCE_GROUPS)}")
+    if kind != "deep_groove":
+        raise InputError(f"{where}.clearance_group", group, "a radial clearance group applies to deep groove "
+                         "bearings (angular contact and thrust bearings take alpha0_deg)")
+    if "bore" not in kw:
+        raise InputError(f"{where}.clearance_group", group, "needs bore_mm to look up the ISO 5753-1 range")
+    lo, hi = radial_clearance(kw["bore"], group)
+    if "Pd" not in kw:
+        kw["Pd"] = 0.5 * (lo + hi)
+        return group
+    return group if lo - 1e-12 <= kw["Pd"] <= hi + 1e-12 else None
 
 
 def bearing(name: str) -> BallBearing:
-    """Catalog look-up by designation (see ``bearing_names()``).
+    """Catalog look-up by designation (see :func:`bearing_names`).
+
+    Designations are accepted in canonical form ("7205B", "7014C") or with spaces and lower-case
+    suffixes ("7205 B"); the seed bearing "7210" is also "7210B".
 
     >>> b = bearing("7210")
     >>> b.Z, round(float(np.rad2deg(b.alpha0)), 1), b.kind
     (15, 40.0, 'angular_contact')
+    >>> bearing("7205 B").name, bearing("6208").clearance_group
+    ('7205B', 'CN')
     """
     cat = _catalog()
-    if name not in cat:
-        raise InputError("bearing", name, f"unknown catalog name; known: {', '.join(sorted(cat))}")
-    return bearing_from_dict(cat[name], name=name, where=f"bearings.toml[{name}]")
+    key = _resolve(name, cat)
+    if key is None:
+        raise InputError("bearing", name, _unknown_message(name, cat))
+    return bearing_from_dict(cat[key], name=key, where=f"bearings[{key}]")

@@ -1,6 +1,6 @@
 r"""Hertz point contact: exact solution with elliptic integrals and fast approximations.
 
-Conventions (PHYSICS.md §2): x is the rolling direction, y the transverse one;
+Conventions (Harris 2001, ch. 6): x is the rolling direction, y the transverse one;
 ``Rx``, ``Ry`` are the reduced radii of curvature in those directions
 (1/R = 1/r_ball + 1/r_race, concave race negative); ``a`` is the semi-axis
 along y (across the groove), ``b`` the semi-axis along x (rolling);
@@ -12,7 +12,6 @@ Every function takes scalars or numpy arrays (broadcast together).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
 
 import numpy as np
 
@@ -56,67 +55,75 @@ class HertzContact:
 
 
 def _f_rho(kappa):
-    """Curvature difference as a function of ellipticity κ ≥ 1 (Harris 2001 eq 6.27)."""
+    """Curvature difference F(ρ) as a function of ellipticity κ ≥ 1 (Hertz 1881; Harris 2001 ch. 6)."""
     m = 1.0 - 1.0 / kappa**2
     Ee, Ek = ellipe(m), ellipk(m)
     return ((kappa**2 + 1.0) * Ee - 2.0 * Ek) / ((kappa**2 - 1.0) * Ee)
 
 
-_START_LNR = (1e-4, np.log(1e4), 241)     # ln(Ry/Rx) grid of the start-value table
+def _f_rho_and_slope(kappa):
+    """F(ρ)(κ) and dF/d ln κ, from one evaluation of the complete elliptic integrals.
 
-
-@lru_cache(maxsize=1)
-def _start_table():
-    """ln κ(ln Ry/Rx) on a grid (cubic spline), from this module's exact iteration started at the
-    Hamrock–Brewe estimate: a start value within about 1e-9 of the root (two Newton steps instead of
-    four).  Built once per process."""
-    from scipy.interpolate import CubicSpline
-    lnr = np.linspace(*_START_LNR)
-    r = np.exp(lnr)
-    return CubicSpline(lnr, np.log(_ellipticity_newton(r, 1.0339 * r**0.6360, 1e-13, 50)))
+    With q = κ², m = 1 − 1/q (dm/d ln κ = 2/q), dE/dm = (E − K)/(2m) and
+    dK/dm = (E − (1 − m) K)/(2m(1 − m)) (Abramowitz & Stegun 1964, 17.3.10–11)."""
+    q = kappa * kappa
+    m = 1.0 - 1.0 / q
+    Ee, Ek = ellipe(m), ellipk(m)
+    dE = (Ee - Ek) / (m * q)                       # dE/d ln κ
+    dK = (Ee - Ek / q) / m                         # dK/d ln κ
+    num = (q + 1.0) * Ee - 2.0 * Ek
+    den = (q - 1.0) * Ee
+    dnum = 2.0 * q * Ee + (q + 1.0) * dE - 2.0 * dK
+    dden = 2.0 * q * Ee + (q - 1.0) * dE
+    return num / den, (dnum * den - num * dden) / (den * den)
 
 
 def ellipticity(ratio_RyRx, tol: float = 1e-13, maxiter: int = 50):
-    r"""Exact ellipticity κ = a/b of a Hertz point contact.
+    r"""Exact ellipticity κ = a/b of a Hertz point contact [-].
 
     Parameters
     ----------
     ratio_RyRx : array_like   Ry/Rx ≥ 1 (transverse over rolling radius) [-]
+    tol : float               convergence tolerance on ln κ [-]
+    maxiter : int             maximum number of Newton steps
 
     Returns
     -------
-    ndarray  κ ≥ 1 solving F(ρ) = (Ry-Rx)/(Ry+Rx) =
-             [(κ²+1) E(m) - 2 K(m)] / [(κ²-1) E(m)],  m = 1 - 1/κ²
-             (Hertz 1881; Harris 2001 eq 6.27), K, E complete elliptic
-             integrals with parameter m (scipy.special.ellipk/ellipe).
+    ndarray  κ ≥ 1 [-]
 
     Notes
     -----
-    Vectorised Newton iteration on ln κ from a tabulated start (:func:`_start_table`; the
-    Hamrock–Brewe estimate outside 1.0001 ≤ Ry/Rx ≤ 1e4),
-    with a bracketing safeguard; raises NoConvergence rather than return an
-    unconverged value.
+    κ solves the curvature-difference equation of Hertz (1881) [1]_ [2]_
+
+    .. math::
+
+        F(\rho) = \frac{R_y - R_x}{R_y + R_x} = \frac{(\kappa^2 + 1)\,\mathcal{E}(m) - 2\,\mathcal{K}(m)}
+        {(\kappa^2 - 1)\,\mathcal{E}(m)},\qquad m = 1 - 1/\kappa^2
+
+    with 𝒦, ℰ the complete elliptic integrals of parameter m (``scipy.special.ellipk``/``ellipe``).
+    Vectorised Newton iteration on ln κ, started at the Hamrock & Brewe (1983) [3]_ estimate
+    κ ≈ 1.0339 (Ry/Rx)^0.636, with the analytic slope of F and a bracketing safeguard; raises
+    NoConvergence rather than return an unconverged value.  Nearly circular contacts
+    (Ry/Rx − 1 < 1e-4, where F cancels 0/0 in floating point) take the leading-order root
+    κ = (Ry/Rx)^(2/3).
+
+    References
+    ----------
+    .. [1] Hertz H. (1881) Über die Berührung fester elastischer Körper. J. reine angew. Math. 92, 156–171.
+    .. [2] Harris T. A. (2001) Rolling Bearing Analysis, 4th ed., Wiley, ch. 6.
+    .. [3] Hamrock B. J., Brewe D. E. (1983) Simplified solution for stresses and deformations.
+           J. Lubr. Technol. 105, 171–177.
 
     Examples
     --------
     >>> round(float(ellipticity(1.0)), 12)
     1.0
-    >>> round(float(ellipticity(165.1 / 5.109)), 3)   # 209 inner contact, PHYSICS.md §2.3
+    >>> round(float(ellipticity(165.1 / 5.109)), 3)   # inner contact of a 209 bearing (f = 0.52)
     9.285
     """
     r = np.asarray(ratio_RyRx, dtype=float)
     if r.size and not (r.min() >= 1.0 - 1e-12 and r.max() < np.inf):       # NaN fails both
         raise InputError("Ry/Rx", r, "must be finite and >= 1 (swap axes for Ry < Rx)")
-    kappa = 1.0339 * np.maximum(r, 1.0) ** 0.6360                          # Hamrock–Brewe
-    lnr = np.log(np.maximum(r, 1.0))
-    inside = (lnr >= _START_LNR[0]) & (lnr <= _START_LNR[1])
-    if inside.any():
-        kappa = np.where(inside, np.exp(_start_table()(np.clip(lnr, _START_LNR[0], _START_LNR[1]))), kappa)
-    return _ellipticity_newton(r, kappa, tol, maxiter)
-
-
-def _ellipticity_newton(r, kappa, tol, maxiter):
-    """The Newton iteration of :func:`ellipticity` from the start values ``kappa``."""
     target = (r - 1.0) / (r + 1.0)
     # nearly circular (Ry/Rx − 1 < 1e-4): F(ρ) cancels 0/0 in floating point; κ = (Ry/Rx)^(2/3)
     # is the leading-order solution there (relative error O((r − 1)²) < 1e-8)
@@ -124,31 +131,26 @@ def _ellipticity_newton(r, kappa, tol, maxiter):
     any_circ = bool(circ.any())
     lo = np.ones_like(r)
     hi = np.maximum(2.0 * r, 2.0)          # κ < Ry/Rx for any ellipse with Ry/Rx > 1
-    t = np.log(np.clip(kappa, 1.0 + 1e-9, None))
-    h = 1e-7
-    eh = np.exp(h)
+    t = np.log(np.maximum(1.0339 * np.maximum(r, 1.0) ** 0.6360, 1.0 + 1e-9))    # Hamrock–Brewe start
     f = None
+    done = False
     for it in range(maxiter):
-        k = np.exp(t)
-        kh = k * eh
-        if any_circ:
-            k, kh = np.where(circ, 2.0, k), np.where(circ, 2.0, kh)
-        F2 = _f_rho(np.stack((k, kh)))                     # F at κ and at κ e^h (forward difference)
-        f = F2[0] - target
+        k = np.where(circ, 2.0, np.exp(t)) if any_circ else np.exp(t)
+        F, dFdt = _f_rho_and_slope(k)
+        f = F - target
         lo = np.where(f < 0, np.maximum(lo, k), lo)
         hi = np.where(f > 0, np.minimum(hi, k), hi)
-        dfdt = (F2[1] - (f + target)) / h
-        t_new = t - f / np.where(dfdt > 0, dfdt, 1.0)
+        t_new = t - f / np.where(dFdt > 0, dFdt, 1.0)
         k_new = np.exp(t_new)
         bad = (k_new <= lo) | (k_new >= hi) | ~np.isfinite(k_new)
         if bad.any():
             t_new = np.where(bad, np.log(0.5 * (lo + hi)), t_new)
-        done = np.all(np.abs(t_new - t) < tol) | (any_circ and np.all(circ))
+        done = bool(np.all(np.abs(t_new - t) < tol) or (any_circ and np.all(circ)))
         t = t_new
         if done:
             break
     kappa = np.where(circ, np.maximum(r, 1.0) ** (2.0 / 3.0), np.exp(t)) if any_circ else np.exp(t)
-    if done and np.all(np.abs(f) <= 1e-11):
+    if done and np.all(np.abs(np.where(circ, 0.0, f)) <= 1e-11):
         return kappa         # converged: the residual at the last evaluation, one step < tol away, is tiny
     res = np.where(circ, 0.0, _f_rho(np.where(circ, 2.0, kappa)) - target)
     if np.any(np.abs(res) > 1e-10):
@@ -184,7 +186,7 @@ def hertz(Q, Rx, Ry, E_prime, method: str = "exact") -> HertzContact:
 
     Notes
     -----
-    With R = 1/(1/Rx + 1/Ry), m = 1 - 1/κ² (Harris 2001 §6; PHYSICS.md §2.1):
+    With R = 1/(1/Rx + 1/Ry), m = 1 - 1/κ² (Hertz 1881; Harris 2001 ch. 6):
 
     a = (6 κ² E Q R / (π E'))^(1/3),  b = (6 E Q R / (π κ E'))^(1/3),
     δ = K(m) [ (9 / (2 E R)) (Q / (π κ E'))² ]^(1/3),  p_max = 3 Q / (2 π a b),
@@ -197,8 +199,8 @@ def hertz(Q, Rx, Ry, E_prime, method: str = "exact") -> HertzContact:
 
     Examples
     --------
-    209 inner contact, Q = 4527 N (PHYSICS.md §2.3, exact: a 2.545 mm, b 0.2742 mm,
-    δ 26.98 µm, p_max 3.097 GPa):
+    Inner contact of a 209 deep-groove bearing (D 12.7 mm, f 0.52, Harris 2001 ch. 6) at
+    Q = 4527 N (exact solution: a 2.545 mm, b 0.2742 mm, δ 26.98 µm, p_max 3.097 GPa):
 
     >>> c = hertz(4527.0, 5.109e-3, 165.1e-3, 228e9)
     >>> round(c.a * 1e3, 3), round(c.b * 1e3, 4), round(c.delta * 1e6, 2), round(c.p_max / 1e9, 3)
@@ -251,7 +253,7 @@ def contact_stiffness(Rx, Ry, E_prime, method: str = "exact"):
 
     Notes
     -----
-    K = π κ E' (2 E(m) R / (9 K(m)³))^(1/2) (Harris 2001 §6; PHYSICS.md §2.1).
+    K = π κ E' (2 E(m) R / (9 K(m)³))^(1/2) (Harris 2001 ch. 6, from δ of the exact Hertz solution).
 
     >>> round(float(contact_stiffness(5.109e-3, 165.1e-3, 228e9)) / 1e10, 3)
     3.231
@@ -265,7 +267,7 @@ def series_stiffness(K_i, K_o):
     Notes
     -----
     K_n = [K_i^(-2/3) + K_o^(-2/3)]^(-3/2), so that Q = K_n (δ_i + δ_o)^1.5
-    (Harris 2001 eq 7.3; PHYSICS.md §2.2).
+    (Harris 2001 eq 7.3).
 
     >>> round(series_stiffness(3.231e10, 3.416e10) / 1e10, 3)
     1.174

@@ -1,7 +1,7 @@
 r"""Ball kinematics: cage and ball speeds, entrainment (rolling) speed, spin.
 
 Rigid-body rolling without slip at the two contact centres (Jones 1959; Harris
-2001 ch. 8; PHYSICS.md §4).  Work in the cage frame: x̂ bearing axis, r̂ radial
+2001 ch. 8).  Work in the cage frame: x̂ bearing axis, r̂ radial
 through the ball centre, t̂ = x̂ × r̂.  Ring speeds ω_i, ω_o [rad/s] (any may
 rotate), contact angles α_i, α_o [rad] (equal in the low-speed form), ball
 spin axis ω_b = ω_R (cos β x̂ + sin β r̂) with pitch angle β.  No slip at the
@@ -16,7 +16,7 @@ each contact is the normal component of the relative angular velocity:
     ω_s,o = ω_R sin(α_o + β) − (ω_o − ω_c) sin α_o
     ω_s,i = ω_R sin(α_i + β) − (ω_i − ω_c) sin α_i
 
-β (here β = −β_Harris, PHYSICS.md §4 and pitfall 15): ``control="outer"`` (Jones
+β (here β = −β_Harris: Harris's sign convention reversed): ``control="outer"`` (Jones
 outer-raceway control, zero spin at the outer contact: tan(−β) = sin α_o / (cos α_o + γ')),
 ``"inner"`` (zero spin at the inner contact: tan(−β) = sin α_i / (cos α_i − γ')),
 or ``"radial"`` (β = −π/2, the ball axis radial: the symmetric choice
@@ -80,7 +80,7 @@ def cage_speed(omega_i, omega_o, gamma):
 def entrainment_speed(omega_i, omega_o, D, dm, alpha):
     r"""Entrainment (mean rolling) speed at equal contact angles [m/s].
 
-    u = (dm/4)(1 − γ²)|ω_i − ω_o|, γ = D cos α / dm (Harris 2001 ch. 8; PHYSICS.md §4).
+    u = (dm/4)(1 − γ²)|ω_i − ω_o|, γ = D cos α / dm (Harris 2001 ch. 8).
     It is the same at both contacts and equals seed 004 eq 11 with the
     contact radius dm/2 − (D/2) cos α in place of dm/2 − D/2 (identical at α = 0).
     Thrust bearing (α = 90°): u = ω dm / 4 = π n dm / 120 (seed 000 eq 17).
@@ -111,8 +111,8 @@ def ball_kinematics(omega_i, omega_o, alpha_i, alpha_o, D, dm, control: str = "o
     Notes
     -----
     Jones (1959); Harris (2001) eqs 8.30–8.40 rewritten as the cage-frame no-slip
-    conditions of the module docstring (re-derived in PHYSICS.md §4, whose β is the
-    negative of Harris's).  With α_i = α_o = β = α the results reduce exactly to
+    conditions of the module docstring (re-derived from the no-slip conditions; the β here is
+    the negative of Harris's).  With α_i = α_o = β = α the results reduce exactly to
     ω_c = ω_i (1 − γ)/2 and ω_R = −(dm/2D)(1 − γ²) ω_i.
 
     Examples

@@ -1,1 +1,8 @@
-"""Losses coupled with the thermal network: fixed point, steady state, transient."""
+"""Losses coupled with the thermal network: the pipeline of a family of operating points (pipeline),
+the losses as heat sources (sources), steady state (steady), heat-up (transient), the fixed point
+with runaway detection (fixedpoint), the validity of an answer (limits) and ``thermobear run`` (run)."""
+from thermobear.coupled.pipeline import scene_contacts, scene_load, film_scene_load  # noqa: F401
+from thermobear.coupled.run import RunResult, solve  # noqa: F401
+from thermobear.coupled.sources import Prepared, prepare, scene_losses  # noqa: F401
+from thermobear.coupled.steady import SteadyState, steady_state, steady_states  # noqa: F401
+from thermobear.coupled.transient import TransientRun, transient  # noqa: F401

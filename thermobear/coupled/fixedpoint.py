@@ -28,7 +28,6 @@ network → new temperatures (PHYSICS.md §8 "Solving").
   iterate and the history.  Divergence or oscillation that is not runaway
   raises :class:`~thermobear.errors.NoConvergence`.
 
-:func:`solve_network_coupled` plugs a thermal network and a loss function in.
 """
 from __future__ import annotations
 
@@ -40,7 +39,7 @@ import numpy as np
 
 from thermobear.errors import InputError, NoConvergence, ThermalRunaway
 
-__all__ = ["CoupledResult", "solve_coupled", "solve_network_coupled", "loop_gain"]
+__all__ = ["CoupledResult", "solve_coupled", "loop_gain"]
 
 
 @dataclass
@@ -346,64 +345,3 @@ def _physical_path(ev, x0, **opts):
             raise NoConvergence(f"accelerated and damped (β = {beta:.3g}) iterations failed: {exc2.reason}",
                                 iterations=exc2.iterations, residual=exc2.residual, last=exc2.last,
                                 history=exc2.history) from None
-
-
-def solve_network_coupled(net, losses: Callable, *, T0_C=None, steady_kw=None, **kw) -> CoupledResult:
-    r"""Coupled steady state of a thermal network and a temperature-dependent loss model.
-
-    Parameters
-    ----------
-    net : ThermalNetwork
-    losses : callable     ``losses(T_K) -> dict node → W`` or ``-> (dict, report)``, with
-                          ``T_K`` a dict node → K (all nodes); e.g. built with
-                          :func:`thermobear.thermal.split_losses`
-    T0_C : float or None  start temperature of the free nodes [°C] (default: mean fixed T)
-    steady_kw : dict      options of :func:`thermobear.thermal.solve_steady`
-    **kw                  options of :func:`solve_coupled`
-
-    Returns
-    -------
-    CoupledResult with ``steady`` (the network solution with the losses at the
-    returned temperatures; its energy balance closes to machine precision),
-    ``sources_W`` and ``report``.
-
-    Examples
-    --------
-    >>> from thermobear.thermal import load_network
-    >>> net = load_network({"nodes": {"b": {}, "amb": {"T_C": 20.0}},
-    ...     "elements": [{"type": "conductance", "between": ["b", "amb"], "G_W_K": 2.0}]})
-    >>> r = solve_network_coupled(net, lambda T: {"b": 200.0 * np.exp(-(T["b"] - 293.15) / 40.0)})
-    >>> round(r.steady.T_C["b"] - 20.0 - r.sources_W["b"] / 2.0, 6)
-    0.0
-    """
-    from thermobear.thermal.solve import solve_steady
-
-    free = ~net.fixed
-    steady_kw = steady_kw or {}
-
-    def full(Tf):
-        T = net.T_fixed_K.copy()
-        T[free] = Tf
-        return T
-
-    def run(Tf):
-        T = full(Tf)
-        out = losses({n: float(T[k]) for k, n in enumerate(net.nodes)})
-        src, rep = out if isinstance(out, tuple) else (out, {})
-        st = solve_steady(net, src, T_guess_K=T, **steady_kw)
-        return st, src, rep
-
-    def update(Tf):
-        # one linear network solve at the current conductances: the fixed point converges the
-        # temperature-dependent conductances together with the losses (no inner loop)
-        T = full(Tf)
-        out = losses({n: float(T[k]) for k, n in enumerate(net.nodes)})
-        src = out[0] if isinstance(out, tuple) else out
-        st = solve_steady(net, src, T_guess_K=T, linearized=True, **steady_kw)
-        return st.T_K[free], math.fsum(float(np.sum(v)) for v in src.values())
-
-    T0 = net.initial_T_K()[free] if T0_C is None else np.full(free.sum(), float(T0_C) + 273.15)
-    res = solve_coupled(update, T0, **kw)
-    res.steady, src, res.report = run(res.T_K)
-    res.sources_W = {k: float(np.sum(v)) for k, v in src.items()}
-    return res

@@ -33,9 +33,9 @@ from __future__ import annotations
 import numpy as np
 
 from thermobear.errors import NoConvergence
-from thermobear.lubrication.film import NVM_EXP_MAX as _NVM_EXP_MAX
-from thermobear.lubrication.film import NVM_TINY as _NVM_TINY
-from thermobear.lubrication.film import nvm_ln_asymptote_consts
+from thermobear.lubrication.nvm import EXP_MAX as _NVM_EXP_MAX
+from thermobear.lubrication.nvm import TINY as _NVM_TINY
+from thermobear.lubrication.nvm import ln_asymptote_consts
 
 __all__ = ["invert_error"]
 
@@ -50,7 +50,7 @@ class _NVMFixed:
     r"""NVM central film at fixed R_x, R_y, u, η, α_p, E' and variable load, with its logarithmic derivatives.
 
     The load-independent groups are formed once, U2 = 2ηu/(E'R_x), ln L = ln(α_p E') + ¼ ln U2, D = R_x/R_y
-    and the D-parts of the asymptotes (:func:`thermobear.lubrication.film.nvm_ln_asymptote_consts`); per load
+    and the D-parts of the asymptotes (:func:`thermobear.lubrication.nvm.ln_asymptote_consts`); per load
     ln M = ln(Q/(E'R_x²)) − ¾ ln U2 and ln h = ln H(M, L, D) + ln R_x + ½ ln U2, with the operations of
     :func:`thermobear.lubrication.film.film_thickness_nvm` (the same bits).  The NVM (1994) blend [3]
 
@@ -91,7 +91,7 @@ class _NVMFixed:
         self.lnU2 = np.log(U2)
         self.lnL = np.log(np.clip(alpha_p * Ep, _NVM_TINY, None)) + 0.25 * self.lnU2
         self.D = Rx / Ry
-        self.c = nvm_ln_asymptote_consts(self.D)
+        self.c = ln_asymptote_consts(self.D)
         self.ln_RP = self.c[2] + (2.0 / 3.0) * self.lnL                     # H_RP does not depend on Q
         self.lnRx = np.log(Rx)
 
@@ -133,7 +133,7 @@ class _NVMFixed:
 
 
 def _ln_asymptote_dconsts(D):
-    """d c_k / d ln D of the D-parts of the NVM asymptotes (:func:`thermobear.lubrication.film.nvm_ln_asymptote_consts`),
+    """d c_k / d ln D of the D-parts of the NVM asymptotes (:func:`thermobear.lubrication.nvm.ln_asymptote_consts`),
     (c'_RI, c'_EI, c'_RP, c'_EP):  c_RI = ln 145 − (15/7) ln(1 + 0.796 D^(14/15)) − ln D,
     c_EI = ln 3.18 − (14/25) e − (ln D)/15,  c_RP = ln 1.29 − ⅔ ln(1 + 0.691 D),  c_EP = ln 1.48 − (7/20) e −
     (ln D)/24,  e = ln(1 + 0.006 ln D + 0.63 D^(4/7))."""

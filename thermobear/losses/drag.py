@@ -8,8 +8,8 @@ i.e. each of the Z balls, cross-section A_c, moves at the cage pitch-line speed
 v = ω_c dm/2 through a homogeneous mixture of density ρ_mix and feels the sphere
 drag ½ ρ_mix c_d A_c v²; the power is Z F v.
 
-What is and is not confirmed (PHYSICS.md §7.1; searches of the public corpus for
-Pouly 2010's own definitions found nothing beyond seed 004's wording):
+What is and is not confirmed (searches of the public corpus for Pouly 2010's own
+definitions found nothing beyond seed 004's wording):
 
 * A_c: seed 004 calls it "the cross-sectional area"; taken as the ball's frontal
   area πD²/4 (no cage-shielding correction).  Unconfirmed; override with ``A_c``.
@@ -35,8 +35,10 @@ import warnings
 from dataclasses import dataclass
 
 import numpy as np
+from fluids.drag import drag_sphere, drag_sphere_correlations
 
 from thermobear.errors import ExtrapolationWarning, InputError
+from thermobear.lubrication.air import air_properties as _air
 
 __all__ = ["oil_volume_fraction_parker", "mixture_density", "mixture_viscosity", "air_properties",
            "drag_coefficient_sphere", "drag_power_pouly", "drag_loss", "DragLoss"]
@@ -45,14 +47,21 @@ _P_ATM = 101325.0
 
 
 def _pos(name, x, allow_zero=False):
-    a = np.asarray(x, dtype=float)
-    bad = ~np.isfinite(a) | ((a < 0) if allow_zero else (a <= 0))
-    if np.any(bad):
+    """``x`` (a Python float, or as a float array) checked > 0 (>= 0) by its minimum, which NaN
+    fails too (an infinite value passes: the formulas take it as their limit)."""
+    if isinstance(x, float):
+        lo, a = x, x
+    else:
+        a = np.asarray(x, dtype=float)
+        lo = a.min() if a.size else 1.0
+    if not (lo >= 0 if allow_zero else lo > 0):
         raise InputError(name, x, "must be finite and " + (">= 0" if allow_zero else "> 0"))
     return a
 
 
 def _out(x):
+    if type(x) is float:
+        return x
     x = np.asarray(x, dtype=float)
     return float(x) if x.ndim == 0 else x
 
@@ -75,9 +84,13 @@ def oil_volume_fraction_parker(W_oil_cm3_min, n_rpm, dm_mm, convention="fraction
 
     Notes
     -----
-    X = 1e5 W^0.37 / (n dm^1.7)   (Parker 1984, NASA TP-2275, as quoted by Harris;
-    PHYSICS.md §7.1, unconfirmed – recalled).  See the module notes for the evidence
-    (seed 004 §6) behind the fraction convention.
+    .. math::
+
+        X = \frac{10^5\, W^{0.37}}{n\, d_m^{1.7}}
+
+    (Parker 1984, NASA TP-2275, as quoted by Harris & Kotzalas 2007; the constant and the
+    convention are recalled, not checked against the report).  See the module notes for the
+    evidence (seed 004 §6) behind the fraction convention.
 
     Examples
     --------
@@ -94,11 +107,27 @@ def oil_volume_fraction_parker(W_oil_cm3_min, n_rpm, dm_mm, convention="fraction
     X = 1e5 * W ** 0.37 / (n * dm ** 1.7)
     if convention == "percent":
         X = X / 100.0
-    if np.any(X > 1.0):
+    if (X if isinstance(X, float) else np.max(X)) > 1.0:
         warnings.warn(f"Parker's oil fraction exceeds 1 (max {np.max(X):.3g}); clipped to 1 — "
                       "speed too low for the correlation", ExtrapolationWarning, stacklevel=2)
         X = np.minimum(X, 1.0)
     return _out(X)
+
+
+def _fraction(X):
+    if isinstance(X, float):
+        lo = hi = X
+    else:
+        X = np.asarray(X, dtype=float)
+        lo, hi = (X.min(), X.max()) if X.size else (0.0, 0.0)
+    if not (lo >= 0 and hi <= 1):                                   # NaN fails too
+        raise InputError("X", X, "oil volume fraction must lie in [0, 1]")
+    return X
+
+
+def _mix(X, v_oil, v_air):
+    """Linear mixing rule X v_oil + (1 − X) v_air (of :func:`mixture_density`, :func:`mixture_viscosity`)."""
+    return X * v_oil + (1.0 - X) * v_air
 
 
 def mixture_density(X, rho_oil, rho_air):
@@ -114,10 +143,7 @@ def mixture_density(X, rho_oil, rho_air):
     >>> mixture_density(0.0, 860.0, 1.2), mixture_density(1.0, 860.0, 1.2)
     (1.2, 860.0)
     """
-    X = np.asarray(X, dtype=float)
-    if np.any((X < 0) | (X > 1)):
-        raise InputError("X", X, "oil volume fraction must lie in [0, 1]")
-    return _out(X * np.asarray(rho_oil, dtype=float) + (1.0 - X) * np.asarray(rho_air, dtype=float))
+    return _out(_mix(_fraction(X), np.asarray(rho_oil, dtype=float), np.asarray(rho_air, dtype=float)))
 
 
 def mixture_viscosity(X, mu_oil, mu_air):
@@ -128,10 +154,7 @@ def mixture_viscosity(X, mu_oil, mu_air):
     >>> mixture_viscosity(0.5, 0.04, 2e-5)
     0.02001
     """
-    X = np.asarray(X, dtype=float)
-    if np.any((X < 0) | (X > 1)):
-        raise InputError("X", X, "oil volume fraction must lie in [0, 1]")
-    return _out(X * np.asarray(mu_oil, dtype=float) + (1.0 - X) * np.asarray(mu_air, dtype=float))
+    return _out(_mix(_fraction(X), np.asarray(mu_oil, dtype=float), np.asarray(mu_air, dtype=float)))
 
 
 def air_properties(T_K, p_Pa=_P_ATM):
@@ -148,7 +171,6 @@ def air_properties(T_K, p_Pa=_P_ATM):
     >>> round(rho, 3), round(mu * 1e6, 2)
     (1.165, 18.69)
     """
-    from thermobear.lubrication.air import air_properties as _air
     p = _air(_pos("T_K", T_K), _pos("p_Pa", p_Pa))
     return _out(p["rho"]), _out(p["mu"])
 
@@ -177,19 +199,21 @@ def drag_coefficient_sphere(Re, method="Clift_Gauvin"):
     >>> float(drag_coefficient_sphere(0.01, "Stokes"))
     2400.0
     """
-    from fluids.drag import drag_sphere, drag_sphere_correlations
-    Re_ = _pos("Re", Re)
+    return _out(_cd(_pos("Re", Re), method))
+
+
+def _cd(Re, method):
+    """C_d of :func:`drag_coefficient_sphere` on checked Reynolds numbers ``Re`` (> 0)."""
     if method not in drag_sphere_correlations:
         raise InputError("method", method, f"must be one of {', '.join(drag_sphere_correlations)}")
     func, _, Re_max = drag_sphere_correlations[method]
-    if Re_max is not None and np.any(Re_ > Re_max):
-        warnings.warn(f"sphere Reynolds number up to {np.max(Re_):.3g} exceeds the {method} range "
-                      f"(Re <= {Re_max:.3g})", ExtrapolationWarning, stacklevel=2)
+    if Re_max is not None and (Re if isinstance(Re, float) else np.max(Re)) > Re_max:
+        warnings.warn(f"sphere Reynolds number up to {np.max(Re):.3g} exceeds the {method} range "
+                      f"(Re <= {Re_max:.3g})", ExtrapolationWarning, stacklevel=3)
     try:
-        cd = func(Re_)
+        return func(Re)
     except (TypeError, ValueError):
-        cd = np.vectorize(lambda r: drag_sphere(r, Method=method), otypes=[float])(Re_)
-    return _out(cd)
+        return np.vectorize(lambda r: drag_sphere(r, Method=method), otypes=[float])(Re)
 
 
 def drag_power_pouly(rho_mix, c_d, Z, D, omega_c, dm, A_c=None):
@@ -215,9 +239,14 @@ def drag_power_pouly(rho_mix, c_d, Z, D, omega_c, dm, A_c=None):
     >>> round(float(drag_power_pouly(60.0, 0.45, 15, 12.7e-3, 300.0, 70e-3)), 2)
     29.7
     """
+    return _out(_pouly(np.asarray(rho_mix, dtype=float), np.asarray(c_d, dtype=float), Z, D,
+                       np.asarray(omega_c, dtype=float) * dm / 2.0, A_c))
+
+
+def _pouly(rho_mix, c_d, Z, D, v, A_c=None):
+    """Pouly's drag power at the pitch-line speed v [m/s] (formula of :func:`drag_power_pouly`) [W]."""
     A = np.pi * D ** 2 / 4.0 if A_c is None else A_c
-    v = np.asarray(omega_c, dtype=float) * dm / 2.0
-    return _out(np.asarray(rho_mix, dtype=float) * np.asarray(c_d, dtype=float) * Z * (A / 2.0) * np.abs(v) ** 3)
+    return rho_mix * c_d * Z * (A / 2.0) * abs(v) ** 3
 
 
 @dataclass(frozen=True)
@@ -282,15 +311,16 @@ def drag_loss(Z, D, dm, omega_c, X, rho_oil, mu_oil, T_K, p_Pa=_P_ATM, cd_method
     _pos("D", D)
     _pos("dm", dm)
     wc = _pos("omega_c", omega_c)
-    _pos("rho_oil", rho_oil)
-    _pos("mu_oil", mu_oil)
-    rho_air, mu_air = air_properties(T_K, p_Pa)
-    rho_mix = mixture_density(X, rho_oil, rho_air)
-    mu_mix = mixture_viscosity(X, mu_oil, mu_air)
+    X = _fraction(X)
+    rho_oil, mu_oil = _pos("rho_oil", rho_oil), _pos("mu_oil", mu_oil)
+    air = _air(T_K, _pos("p_Pa", p_Pa))                   # checks the temperature range
+    rho_air, mu_air = air["rho"], air["mu"]
+    rho_mix = _mix(X, rho_oil, rho_air)
+    mu_mix = _mix(X, mu_oil, mu_air)
     v = wc * dm / 2.0
-    Re = np.asarray(rho_mix) * v * D / np.asarray(mu_mix)
-    c_d = drag_coefficient_sphere(Re, cd_method)
-    P = drag_power_pouly(rho_mix, c_d, Z, D, wc, dm, A_c)
-    Xb = np.broadcast_to(np.asarray(X, dtype=float), np.shape(P))
-    return DragLoss(P_W=P, v=_out(v), X=_out(Xb), rho_mix=rho_mix, mu_mix=mu_mix, Re=_out(Re), c_d=c_d,
-                    rho_air=rho_air, mu_air=mu_air)
+    Re = rho_mix * v * D / mu_mix
+    c_d = _cd(Re, cd_method)
+    P = _pouly(rho_mix, c_d, Z, D, v, A_c)
+    Xb = X if isinstance(P, float) else X + np.zeros_like(P)      # the fraction of each operating point
+    return DragLoss(P_W=_out(P), v=_out(v), X=_out(Xb), rho_mix=_out(rho_mix), mu_mix=_out(mu_mix), Re=_out(Re),
+                    c_d=_out(c_d), rho_air=_out(rho_air), mu_air=_out(mu_air))

@@ -4,7 +4,7 @@ The pressure field of a lubricated rolling contact is not symmetric (the
 outlet cavitates), so the Poiseuille shear pulls each surface against the
 rolling direction with a force F_R [N], and the pressure pushes the ball centre
 with FP = 2 F_R (seed 000 §2.3; seed 001 §2).  The power dissipated by one
-contact is 2 u F_R, u the *mean* entrainment speed (PHYSICS.md §0, §12.10).
+contact is 2 u F_R, u the *mean* entrainment speed (seed 000 eq 34, seed 004 eq 20).
 
 Models (one function each, pure and vectorised; scalars or broadcastable arrays):
 
@@ -16,20 +16,13 @@ Models (one function each, pure and vectorised; scalars or broadcastable arrays)
 ``houpert_ehl``        Houpert EHL (seed 004 eq 18; B&H 2010 eq 29)
 ``biboulet_pvr``       Biboulet's full IVR→EHL fit (seed 004 eq 19; B&H 2010 eqs 32, 36)
 ``auto``               per contact by lubrication regime (seed 004 §4.3)
+``auto_smooth``        the same choice, weighted smoothly across the regime boundaries
 =====================  =========================================================
 
-Conventions (PHYSICS.md §0, §12.4–12.5).  Two dimensionless speeds occur:
-
-* seeds 000/001 write U = η u/(E' Rx) with the *mean* speed u, W = Q/(E' Rx²),
-  k = Ry/Rx (radius ratio, ≥ 1 for ball–race contacts);
-* Biboulet & Houpert 2010 and seed 004 write U_B = 2 η u/(E' Rx) (= 2U*), and
-  κ = b/a ≤ 1 (ellipse ratio, rolling-direction over transverse semi-axis),
-  β = (4/π) E(1-κ²)/(1 + Rx/Ry) ∈ [1, 4/π], Moes-type load parameter
-  M_B = β^(1/4) κ W U_B^(-3/4), G = α_p E'.
-
-The seed 000/001 transition parameter M = 0.5549 k^-0.6029 W U^-0.75 is B&H's
-M_B re-expressed with the mean-speed U and a curve fit of κ(k) (checked:
-0.1648 vs 0.168 at k = 17.7).
+The formulas themselves are in :mod:`thermobear.losses.rolling_forms` (re-exported here);
+this module adds the dispatcher :func:`rolling_force`, the regime selection and
+:class:`RollingContacts`: contacts prepared once (checked, speed-free coefficients) and evaluated
+at any number of viscosities (temperature states), as the local loss model does.
 
 Zero load.  Every formula here is *load controlled*: the gap follows from Q, so
 F_R → 0 as Q → 0 (W^(1/3) for Biboulet, W^0.364 for Houpert IVR, a ∝ Q^(1/3)
@@ -47,26 +40,32 @@ Seeds 000 (Ianuș et al.), 001 (Bălan et al. 2015), 004 (Darul et al. 2024).
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
-from thermobear.arrays import checked as _num, out as _out
-from scipy.special import ellipe
-
+from thermobear.arrays import out as _out
 from thermobear.errors import InputError
-from thermobear.contact.hertz import hertz
+from thermobear.losses.rolling_forms import (  # noqa: F401  (re-exported)
+    _M_SPLIT, _biboulet_pvr, _biboulet_pvr_coeffs, _checked_geometry, _houpert_ehl, _houpert_ehl_coeff,
+    _houpert_ivr, _houpert_ivr_coeff, _num, biboulet_parameters, ehl_partition, rolling_force_biboulet_ehl,
+    rolling_force_biboulet_ivr, rolling_force_biboulet_pvr, rolling_force_biboulet_transition,
+    rolling_force_houpert_ehl, rolling_force_houpert_ivr, transition_parameter, truncation_coefficient)
+from thermobear.lubrication.film import Regime, lubrication_regime
 
 __all__ = [
-    "MODELS", "REGIME_MODEL",
+    "MODELS", "REGIME_MODEL", "SWITCH_WIDTH",
     "transition_parameter", "ehl_partition",
     "rolling_force_biboulet_ivr", "rolling_force_biboulet_ehl",
     "rolling_force_biboulet_transition",
     "biboulet_parameters", "truncation_coefficient",
     "rolling_force_houpert_ivr", "rolling_force_houpert_ehl", "rolling_force_biboulet_pvr",
-    "rolling_force", "pressure_force", "rolling_power",
+    "RollingContacts", "rolling_contacts",
+    "rolling_force_regime_weighted", "rolling_force", "pressure_force", "rolling_power",
 ]
 
 MODELS = ("biboulet_ivr", "biboulet_ehl", "biboulet_transition", "houpert_ivr",
-          "houpert_ehl", "biboulet_pvr", "auto")
+          "houpert_ehl", "biboulet_pvr", "auto", "auto_smooth")
 
 #: Model used per lubrication regime by ``model="auto"`` (seed 004 §4.3).  IVE
 #: (iso-viscous elastic) has no dedicated formula in the seeds; it goes to the
@@ -77,387 +76,193 @@ MODELS = ("biboulet_ivr", "biboulet_ehl", "biboulet_transition", "houpert_ivr",
 REGIME_MODEL = {"IVR": "houpert_ivr", "PVR": "biboulet_pvr", "IVE": "biboulet_pvr",
                 "EHL": "houpert_ehl"}
 
-_M_SPLIT = 6.6        # B&H 2010 eq 32 / seed 000 eq 20: transition at M = 6.6
+#: ln-ratio width of the smooth regime switch of :func:`rolling_force_regime_weighted` (±5 %)
+SWITCH_WIDTH = 0.05
 
 
-# ----------------------------------------------------------------------------- helpers
-def _inputs(Q, Rx, Ry, u, eta, E_prime):
-    return (_num("Q", Q, strict=False, what=" [N]"), _num("Rx", Rx, what=" [m]"),
-            _num("Ry", Ry, what=" [m]"), _num("u", u, strict=False, what=" (mean entrainment speed) [m/s]"),
-            _num("eta", eta, what=" [Pa s]"), _num("E_prime", E_prime, what=" [Pa]"))
+
+# ----------------------------------------------------------------------------- prepared contacts
+@dataclass(frozen=True)
+class RollingContacts:
+    r"""Point contacts prepared for the rolling-force formulas (inputs checked once).
+
+    The speed-free coefficients of the Biboulet & Houpert / seed 004 forms for contacts of given
+    load, radii, entrainment speed, modulus and Hertz semi-axes; :meth:`force` evaluates a model at
+    the lubricant's η (and α_p), which broadcast against the contacts (leading axes: temperature
+    states).  Built by :func:`rolling_contacts`.
+
+    Attributes
+    ----------
+    Q, Rx, Ry, u, E_prime : ndarray   the checked inputs [N, m, m, m/s, Pa]
+    kappa : ndarray                   ellipse ratio b/a [-]
+    U2_eta : ndarray                  2u/(E' Rx): B&H's speed parameter per unit viscosity [1/(Pa s)]
+    C_ivr : ndarray                   Houpert's IVR force at U2 = 1 [N]
+    C_ehl : ndarray                   Houpert's EHL force at G = U2 = 1 [N]
+    pvr : tuple                       speed-free factors of Biboulet's PVR force
+    """
+
+    Q: np.ndarray
+    Rx: np.ndarray
+    Ry: np.ndarray
+    u: np.ndarray
+    E_prime: np.ndarray
+    kappa: np.ndarray
+    U2_eta: np.ndarray
+    C_ivr: np.ndarray
+    C_ehl: np.ndarray
+    pvr: tuple
+
+    def force(self, eta, model="auto_smooth", alpha_p=None, regime=None):
+        """Rolling force [N] of ``model`` (one of :data:`MODELS`) at the inlet viscosity ``eta``
+        [Pa s] and pressure–viscosity coefficient ``alpha_p`` [1/Pa] (houpert_ehl, auto, auto_smooth);
+        ``regime``: see :func:`rolling_force`."""
+        if model not in MODELS:
+            raise InputError("model", model, f"must be one of {', '.join(MODELS)}")
+        if model in ("biboulet_ivr", "biboulet_ehl", "biboulet_transition"):
+            return rolling_force(self.Q, self.Rx, self.Ry, self.u, eta, self.E_prime, model=model)
+        eta = _num("eta", eta, what=" [Pa s]")
+        U2 = eta * self.U2_eta
+        if model == "houpert_ivr":
+            return _houpert_ivr(self.C_ivr, U2)
+        if model == "biboulet_pvr":
+            return _biboulet_pvr(self.pvr, U2)
+        if model == "auto" and regime is not None:
+            return self._sharp(regime, U2, alpha_p)
+        if alpha_p is None:
+            raise InputError("alpha_p", None, f"pressure-viscosity coefficient [1/Pa] is required by {model}")
+        alpha_p = _num("alpha_p", alpha_p, what=" [1/Pa]")
+        if model == "houpert_ehl":
+            return _houpert_ehl(self.C_ehl, alpha_p * self.E_prime, U2)
+        if regime is None:
+            regime = lubrication_regime(self.Q, self.Rx, self.Ry, self.u, eta, alpha_p, self.E_prime)
+        if model == "auto":
+            return self._sharp(regime, U2, alpha_p)
+        F_ivr = _houpert_ivr(self.C_ivr, U2)
+        F_pvr = _biboulet_pvr(self.pvr, U2)
+        F_ehl = _houpert_ehl(self.C_ehl, alpha_p * self.E_prime, U2)
+        k = 0.5 / SWITCH_WIDTH                        # logistic 1/(1 + e^(−x/w)) = ½ + ½ tanh(x/2w)
+        s_piezo = 0.5 - 0.5 * np.tanh(k * regime.ln_iso_over_piezo)
+        s_rigid_iso = 0.5 + 0.5 * np.tanh(k * regime.ln_RI_over_EI)
+        s_rigid_piezo = 0.5 + 0.5 * np.tanh(k * regime.ln_EP_over_RP)
+        iso = F_pvr + s_rigid_iso * (F_ivr - F_pvr)
+        piezo = F_ehl + s_rigid_piezo * (F_pvr - F_ehl)
+        return iso + s_piezo * (piezo - iso)
+
+    def _sharp(self, regime, U2, alpha_p):
+        """Seed 004's sharp selection by regime code (:data:`REGIME_MODEL`)."""
+        code = np.asarray(regime.code if isinstance(regime, Regime) else regime)
+        unknown = set(np.unique(code).tolist()) - set(REGIME_MODEL)
+        if unknown:
+            raise InputError("regime", sorted(unknown), f"must be one of {', '.join(REGIME_MODEL)}")
+        def ehl():
+            if alpha_p is None:
+                raise InputError("alpha_p", None, "pressure-viscosity coefficient [1/Pa] is required by houpert_ehl")
+            return _houpert_ehl(self.C_ehl, _num("alpha_p", alpha_p, what=" [1/Pa]") * self.E_prime, U2)
+
+        forces = {"houpert_ivr": lambda: _houpert_ivr(self.C_ivr, U2),
+                  "biboulet_pvr": lambda: _biboulet_pvr(self.pvr, U2), "houpert_ehl": ehl}
+        shape = np.broadcast_shapes(np.shape(U2), np.shape(self.C_ivr), code.shape)
+        out = np.zeros(shape)
+        code = np.broadcast_to(code, shape)
+        for name in sorted(set(REGIME_MODEL[r] for r in np.unique(code).tolist())):
+            mask = np.isin(code, [r for r, m in REGIME_MODEL.items() if m == name])
+            out = np.where(mask, forces[name](), out)
+        return out
 
 
-def _seed_groups(Q, Rx, Ry, u, eta, E_prime):
-    """W, U (mean-speed convention), k = Ry/Rx of seeds 000/001."""
-    return Q / (E_prime * Rx**2), eta * u / (E_prime * Rx), Ry / Rx
-
-
-def _inv_M_seed(W, U, k):
-    """6.6/M with M of seed 000 eq 23, finite everywhere (∞ where W = 0)."""
-    num = _M_SPLIT * U**0.75
-    den = 0.5549 * k**-0.6029 * W
-    out = np.full(np.broadcast(num, den).shape, np.inf)
-    np.divide(num, den, out=out, where=np.broadcast_to(den > 0, out.shape))
-    return out
-
-
-# ----------------------------------------------------------------------------- Biboulet (seeds 000/001)
-def transition_parameter(Q, Rx, Ry, u, eta, E_prime):
-    r"""IVR→EHL transition parameter M of Biboulet & Houpert (seed 000 eq 23).
+def rolling_contacts(Q, Rx, Ry, u, E_prime, a=None, b=None) -> RollingContacts:
+    r"""Point contacts prepared for :meth:`RollingContacts.force` (the formulas of this module).
 
     Parameters
     ----------
     Q : array_like        normal load [N]
     Rx, Ry : array_like   reduced radii in / across the rolling direction [m]
     u : array_like        mean entrainment speed (u1 + u2)/2 [m/s]
-    eta : array_like      dynamic viscosity at the inlet [Pa s]
     E_prime : array_like  reduced modulus E' [Pa]
-
-    Returns
-    -------
-    M [-]; ∞ where u = 0 and W > 0, 0 where Q = 0.
-
-    Notes
-    -----
-    M = 0.5549 k^-0.6029 W U^-0.75, k = Ry/Rx, W = Q/(E' Rx²), U = η u/(E' Rx)
-    (seed 000 eq 23; seed 001 eq 4 lost its minus signs in OCR).
-
-    Examples
-    --------
-    Seed 001 §4.4, d = 6.35 mm, Q = 0.125 N, η = 0.05 Pa s, 60 rpm, r = 18 mm:
-
-    >>> Rx, Ry = 3.175e-3, 4.16e-3 * 3.175e-3 / (4.16e-3 - 3.175e-3)
-    >>> round(transition_parameter(0.125, Rx, Ry, 2 * 3.14159265 * 0.018 / 2, 0.05, 2.3e11), 2)
-    4.56
-    """
-    Q, Rx, Ry, u, eta, E_prime = _inputs(Q, Rx, Ry, u, eta, E_prime)
-    W, U, k = _seed_groups(Q, Rx, Ry, u, eta, E_prime)
-    inv = _inv_M_seed(W, U, k)
-    with np.errstate(divide="ignore"):
-        M = np.where(W > 0, _M_SPLIT / inv, 0.0)
-    return _out(M)
-
-
-def ehl_partition(Q, Rx, Ry, u, eta, E_prime):
-    r"""EHL share (M/6.6)/(1 + M/6.6) of the Biboulet transition (seed 000 eq 20) [-].
-
-    Parameters as :func:`transition_parameter`.  0 at Q = 0, 1 at u = 0 (Q > 0).
-
-    Examples
-    --------
-    Seed 001 §4.4 states 41 % at 60 rpm and 21 % at 210 rpm (d 6.35 mm, Q 0.125 N):
-
-    >>> Rx, Ry = 3.175e-3, 4.16e-3 * 3.175e-3 / (4.16e-3 - 3.175e-3)
-    >>> [round(ehl_partition(0.125, Rx, Ry, w * 0.018 / 2, 0.05, 2.3e11), 2) for w in (6.2832, 21.991)]
-    [0.41, 0.21]
-    """
-    Q, Rx, Ry, u, eta, E_prime = _inputs(Q, Rx, Ry, u, eta, E_prime)
-    W, U, k = _seed_groups(Q, Rx, Ry, u, eta, E_prime)
-    inv = _inv_M_seed(W, U, k)
-    return _out(np.where(np.isinf(inv), 0.0, 1.0 / (1.0 + inv)))
-
-
-def rolling_force_biboulet_ivr(Q, Rx, Ry, u, eta, E_prime):
-    r"""Hydrodynamic rolling force, iso-viscous rigid regime, fully flooded [N].
-
-    Parameters
-    ----------
-    Q : array_like        normal load [N]
-    Rx, Ry : array_like   reduced radii in / across the rolling direction [m]
-    u : array_like        mean entrainment speed [m/s]
-    eta : array_like      dynamic viscosity at the inlet [Pa s]
-    E_prime : array_like  reduced modulus E' [Pa]
-
-    Returns
-    -------
-    Force opposing rolling on each surface [N].
-
-    Notes
-    -----
-    F = 2.9766 E' Rx² k^0.3316 W^(1/3) U^(2/3), k = Ry/Rx, W = Q/(E' Rx²),
-    U = η u/(E' Rx)  (Biboulet & Houpert 2010 eq 31 re-fitted; seed 000 eq 21,
-    seed 001 eq 1).  Power of the contact: 2 u F.
-
-    Examples
-    --------
-    Seed 000 contact at 100 rpm (η 0.089 Pa s):
-
-    >>> round(rolling_force_biboulet_ivr(1.42, 3.969e-3, 70.1e-3, 0.0942, 0.089, 2.3e11), 5)
-    0.00897
-    """
-    Q, Rx, Ry, u, eta, E_prime = _inputs(Q, Rx, Ry, u, eta, E_prime)
-    W, U, k = _seed_groups(Q, Rx, Ry, u, eta, E_prime)
-    return _out(2.9766 * E_prime * Rx**2 * k**0.3316 * np.cbrt(W) * np.cbrt(U) ** 2)
-
-
-def rolling_force_biboulet_ehl(Q, Rx, Ry, u, eta, E_prime):
-    r"""Hydrodynamic rolling force, elastohydrodynamic regime, fully flooded [N].
-
-    Parameters as :func:`rolling_force_biboulet_ivr`.
-
-    Notes
-    -----
-    F = 7.5826 E' Rx² k^0.4055 W^(1/3) U^(3/4)  (B&H 2010 eq 31 EHL asymptote
-    re-fitted; seed 000 eq 22, seed 001 eq 2).
-
-    Examples
-    --------
-    >>> round(rolling_force_biboulet_ehl(1.42, 3.969e-3, 70.1e-3, 0.0942, 0.089, 2.3e11), 5)
-    0.0034
-    """
-    Q, Rx, Ry, u, eta, E_prime = _inputs(Q, Rx, Ry, u, eta, E_prime)
-    W, U, k = _seed_groups(Q, Rx, Ry, u, eta, E_prime)
-    return _out(7.5826 * E_prime * Rx**2 * k**0.4055 * np.cbrt(W) * U**0.75)
-
-
-def rolling_force_biboulet_transition(Q, Rx, Ry, u, eta, E_prime):
-    r"""Hydrodynamic rolling force with Biboulet's IVR→EHL transition [N].
-
-    Parameters as :func:`rolling_force_biboulet_ivr`.
-
-    Notes
-    -----
-    F = F_IVR/(1 + M/6.6) + (M/6.6)/(1 + M/6.6) F_EHL, with M from
-    :func:`transition_parameter` (seed 000 eqs 20–23; seed 001 eqs 3, 5).
-    Tends to F_IVR as M → 0 and to F_EHL as M → ∞.
-
-    Examples
-    --------
-    Seed 000 Table 1 prints F_R = 0.59e-2 N at 100 rpm:
-
-    >>> round(rolling_force_biboulet_transition(1.42, 3.969e-3, 70.12e-3, 0.094248, 0.089, 2.3e11), 5)
-    0.00605
-    """
-    Q, Rx, Ry, u, eta, E_prime = _inputs(Q, Rx, Ry, u, eta, E_prime)
-    W, U, k = _seed_groups(Q, Rx, Ry, u, eta, E_prime)
-    f_ivr = 2.9766 * E_prime * Rx**2 * k**0.3316 * np.cbrt(W) * np.cbrt(U) ** 2
-    f_ehl = 7.5826 * E_prime * Rx**2 * k**0.4055 * np.cbrt(W) * U**0.75
-    inv = _inv_M_seed(W, U, k)                      # 6.6/M
-    with np.errstate(invalid="ignore"):
-        f = np.where(np.isinf(inv), f_ivr, (f_ivr * inv + f_ehl) / (1.0 + inv))
-    return _out(f)
-
-
-# ----------------------------------------------------------------------------- B&H 2010 / seed 004
-def biboulet_parameters(Q, Rx, Ry, u, eta, E_prime, a=None, b=None):
-    r"""Dimensionless groups of Biboulet & Houpert 2010 (their eqs 13–14, 41).
-
-    Parameters
-    ----------
-    Q, Rx, Ry, u, eta, E_prime : as :func:`rolling_force_biboulet_ivr`
-    a, b : array_like, optional   Hertz semi-axes across / along rolling [m];
-                                  computed with :func:`thermobear.contact.hertz.hertz` (exact) if omitted
-
-    Returns
-    -------
-    dict with
-      ``U2``    2 η u/(E' Rx), B&H's U (= seed 004's 2U*) [-]
-      ``W``     Q/(E' Rx²) [-]
-      ``kappa`` b/a ≤ 1, ellipse ratio (B&H's κ, seed 004's k) [-]
-      ``beta``  (4/π) E(1-κ²)/(1 + Rx/Ry) ∈ [1, 4/π] [-]
-      ``M``     β^(1/4) κ W U2^(-3/4), Moes load parameter of B&H [-] (0 at Q = 0, ∞ at u = 0)
-      ``a``, ``b``  semi-axes [m]
-
-    Notes
-    -----
-    Seed 004 writes N = W (2U*)^(-3/4) (Rx/Ry)^(1/2) (its eq 9) in the
-    transition of eq 19 and M in c_Bib; both are B&H's M here (B&H 2010 eq 14,
-    the source of eq 19).  (Rx/Ry)^(1/2) vs β^(1/4)κ differ by ~30 % at k ≈ 18.
-
-    Examples
-    --------
-    >>> p = biboulet_parameters(1.42, 3.969e-3, 70.12e-3, 0.0942, 0.089, 2.3e11)
-    >>> round(p["kappa"], 3), round(p["beta"], 3), round(p["M"], 2)
-    (0.156, 1.245, 7.27)
-    """
-    Q, Rx, Ry, u, eta, E_prime = _inputs(Q, Rx, Ry, u, eta, E_prime)
-    if (a is None) != (b is None):
-        raise InputError("a, b", (a, b), "give both Hertz semi-axes or neither")
-    if a is None:
-        geo = hertz(1.0, Rx, Ry, E_prime)           # κ does not depend on load
-        kappa = geo.b / geo.a
-        a = geo.a * np.cbrt(Q)                      # a ∝ Q^(1/3)
-        b = geo.b * np.cbrt(Q)
-    else:
-        a = _num("a", a, strict=False, what=" (Hertz semi-axis across rolling) [m]")
-        b = _num("b", b, strict=False, what=" (Hertz semi-axis along rolling) [m]")
-        with np.errstate(invalid="ignore", divide="ignore"):
-            kappa = np.where(a > 0, b / np.where(a > 0, a, 1.0), 1.0)
-        if np.any(kappa > 1.0 + 1e-12):
-            raise InputError("b/a", kappa, "must be <= 1 (b along rolling is the short semi-axis; "
-                             "formulas fitted for Ry >= Rx)")
-    beta = (4.0 / np.pi) * ellipe(1.0 - kappa**2) / (1.0 + Rx / Ry)
-    U2 = 2.0 * eta * u / (E_prime * Rx)
-    W = Q / (E_prime * Rx**2)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        M = np.where(W > 0, beta**0.25 * kappa * W / U2**0.75, 0.0)
-    return {"U2": _out(U2), "W": _out(W), "kappa": _out(kappa), "beta": _out(beta),
-            "M": _out(M), "a": _out(a), "b": _out(b)}
-
-
-def truncation_coefficient(M, kappa, ratio_2a_L=1.0):
-    r"""Truncation coefficient C of the B&H point-contact rolling moment [-].
-
-    Parameters
-    ----------
-    M : array_like           B&H load parameter M_B [-] (∞ allowed)
-    kappa : array_like       ellipse ratio b/a ≤ 1 [-]
-    ratio_2a_L : array_like  contact length 2a over the width available to the
-                             film (race width or ball diameter) [-]; capped at 1
-
-    Returns
-    -------
-    C ∈ (0, 1] [-]
-
-    Notes
-    -----
-    C = 1/(1 + (1/c - 1)(2a/L)^((2 - κ)(0.0018 M + 1.33))),
-    c = 0.85/(1 + 4.72 M^-0.39 κ^(0.484 M^0.165))  (B&H 2010 eqs 35–36).
-    c (value at 2a/L = 1) is seed 004's c_Bib of eq 19.  B&H fitted it on EHL
-    runs only (0.2 ≤ M ≤ 800); c → 0 as M → 0.
-
-    Examples
-    --------
-    >>> round(truncation_coefficient(7.27, 0.156), 3), truncation_coefficient(7.27, 0.156, 0.0)
-    (0.523, 1.0)
-    """
-    M = np.asarray(M, dtype=float)
-    if np.any(np.isnan(M)) or np.any(M < 0):
-        raise InputError("M", M, "must be >= 0 (inf allowed: zero speed)")
-    kappa = _num("kappa", kappa, what=" (b/a)")
-    r = np.minimum(_num("2a/L", ratio_2a_L, strict=False), 1.0)
-    with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
-        c = np.where(M > 0, 0.85 / (1.0 + 4.72 * M**-0.39 * kappa ** (0.484 * M**0.165)), 0.0)
-        inv_c = np.where(c > 0, 1.0 / np.where(c > 0, c, 1.0) - 1.0, np.inf)
-        C = np.where(r > 0, 1.0 / (1.0 + inv_c * r ** ((2.0 - kappa) * (0.0018 * M + 1.33))), 1.0)
-    return _out(C)
-
-
-def rolling_force_houpert_ivr(Q, Rx, Ry, u, eta, E_prime):
-    r"""Houpert's IVR hydrodynamic rolling force (moderately starved) [N].
-
-    Parameters as :func:`rolling_force_biboulet_ivr` (u is the mean speed).
-
-    Notes
-    -----
-    F = 0.835 λ^-0.358 W^0.364 (2U*)^0.636 E' Rx², λ = Rx/Ry,
-    U* = η u/(E' Rx), W = Q/(E' Rx²)  (seed 004 eq 17; B&H 2010 eq 28, a
-    re-fit of Houpert 1987).  B&H 2010 report it ≈ 0.6 × their fully-flooded IVR.
-
-    Examples
-    --------
-    >>> round(rolling_force_houpert_ivr(1.42, 3.969e-3, 70.12e-3, 0.0942, 0.089, 2.3e11), 5)
-    0.00585
-    """
-    Q, Rx, Ry, u, eta, E_prime = _inputs(Q, Rx, Ry, u, eta, E_prime)
-    W = Q / (E_prime * Rx**2)
-    U2 = 2.0 * eta * u / (E_prime * Rx)
-    return _out(0.835 * (Rx / Ry) ** -0.358 * W**0.364 * U2**0.636 * E_prime * Rx**2)
-
-
-def rolling_force_houpert_ehl(Q, Rx, Ry, u, eta, E_prime, alpha_p, a=None, b=None, *,
-                              g_exponent=0.022):
-    r"""Houpert's EHL hydrodynamic rolling force [N].
-
-    Parameters
-    ----------
-    Q, Rx, Ry, u, eta, E_prime : as :func:`rolling_force_biboulet_ivr`
-    alpha_p : array_like   pressure–viscosity coefficient [1/Pa]
     a, b : array_like, optional   Hertz semi-axes across / along rolling [m] (exact Hertz if omitted)
-    g_exponent : float     exponent of G (see Notes)
+
+    Returns
+    -------
+    RollingContacts
 
     Notes
     -----
-    F = 0.674 κ^-0.043 (2a/Rx) G^0.022 (κ W)^0.133 (2U*)^0.656 E' Rx²,
-    κ = b/a, G = α_p E'  (B&H 2010 eq 29; seed 004 eq 18).  Seed 004 prints
-    G*^0.22; B&H 2010 (its source) gives 0.022 in both forms of eq 29 and in the
-    text ("piezoviscosity has almost no influence with a power 0.022").  At
-    G ≈ 4600 the misprint would multiply F by 5.3.  We use 0.022.
+    The speed-free coefficients are computed once, e.g. for Houpert's IVR force (seed 004 eq 17)
+
+    .. math::
+
+        F = C_{IVR}\, U^{0.636},\qquad C_{IVR} = 0.835\, \lambda^{-0.358} W^{0.364} E' R_x^2
+
+    with U = 2 η u/(E' Rx); each formula is written once (:mod:`thermobear.losses.rolling_forms`).
 
     Examples
     --------
-    >>> round(rolling_force_houpert_ehl(1.42, 3.969e-3, 70.12e-3, 0.0942, 0.089, 2.3e11, 2.5e-8), 5)
-    0.00198
+    >>> c = rolling_contacts(1.42, 3.969e-3, 70.12e-3, 0.0942, 2.3e11)
+    >>> round(float(c.force(0.089, "houpert_ivr")), 5), round(float(c.force([0.089, 0.178], "houpert_ivr")[1]), 5)
+    (0.00585, 0.00909)
+    """
+    Q, Rx, Ry, u, E_prime, a, kappa, beta = _checked_geometry(Q, Rx, Ry, u, E_prime, a, b)
+    W = Q / (E_prime * Rx**2)
+    return RollingContacts(Q=Q, Rx=Rx, Ry=Ry, u=u, E_prime=E_prime, kappa=kappa, U2_eta=2.0 * u / (E_prime * Rx),
+                           C_ivr=_houpert_ivr_coeff(W, Rx, Ry, E_prime),
+                           C_ehl=_houpert_ehl_coeff(W, Rx, E_prime, a, kappa),
+                           pvr=_biboulet_pvr_coeffs(W, Rx, E_prime, a, kappa, beta, u > 0))
+
+
+# ----------------------------------------------------------------------------- regime selection
+def rolling_force_regime_weighted(Q, Rx, Ry, u, eta, E_prime, alpha_p, a=None, b=None, regime=None):
+    r"""Regime-selected hydrodynamic rolling force, switched smoothly across the Moes boundaries [N].
+
+    Parameters
+    ----------
+    Q, Rx, Ry, u, eta, E_prime : as :func:`rolling_force_biboulet_ivr`
+    alpha_p : array_like           pressure–viscosity coefficient [1/Pa]
+    a, b : array_like, optional    Hertz semi-axes across / along rolling [m] (exact Hertz if omitted)
+    regime : Regime, optional      the contacts' regime (:func:`thermobear.lubrication.film.lubrication_regime`
+                                   of the same inputs; computed if omitted)
+
+    Returns
+    -------
+    ndarray  force opposing rolling on each surface [N]
+
+    Notes
+    -----
+    Seed 004 §4.3 picks Houpert IVR, Biboulet PVR or Houpert EHL by regime (IVE → Biboulet PVR,
+    :data:`REGIME_MODEL`).  The formulas do not meet at the boundaries (jumps of ×0.5–0.9,
+    tests/test_rolling.py), and a force that jumps with temperature stalls implicit time
+    integration.  Here each choice is weighted by logistic functions of the dominance ratios of
+    the Nijenbanning–Venner–Moes blend (:class:`~thermobear.lubrication.film.Regime`),
+
+    .. math::
+
+        F = (1 - s_p) [s_{ri} F_{IVR} + (1 - s_{ri}) F_{PVR}] + s_p [s_{rp} F_{PVR} + (1 - s_{rp}) F_{EHL}],
+
+        s(r) = \frac{1}{1 + r^{-1/w}},\quad s_p = s(1/r_{iso/piezo}),\ s_{ri} = s(r_{RI/EI}),\
+        s_{rp} = s(r_{EP/RP}),\quad w = 0.05
+
+    1 % of the way from a boundary in ln r the selection is 60/40, 15 % away it is 95/5; away
+    from the boundaries the result equals the sharp selection (``rolling_force(model="auto")``).
+    The weighting is this library's (not published); the three forces are seed 004 eqs 17–19
+    (Biboulet & Houpert 2010 [1]_).
+
+    References
+    ----------
+    .. [1] Biboulet N., Houpert L. (2010) Proc. IMechE J 224, 777–787.
+
+    Examples
+    --------
+    Seed 000 contact geometry (thrust race, 100 rpm) at 0.1 N, deep in the IVR regime
+    (Houpert's IVR force), and at 1.42 N, PVR near the EHL boundary (ln H_EP/H_RP = 0.14: 94 % PVR):
+
+    >>> args = (3.969e-3, 70.12e-3, 0.0942, 0.089, 2.3e11)
+    >>> round(float(rolling_force_regime_weighted(0.1, *args, 2.5e-8)), 6), round(rolling_force_houpert_ivr(0.1, *args), 6)
+    (0.002227, 0.002227)
+    >>> round(float(rolling_force_regime_weighted(1.42, *args, 2.5e-8)), 5), round(rolling_force_biboulet_pvr(1.42, *args), 5)
+    (0.0031, 0.00317)
     """
     if alpha_p is None:
-        raise InputError("alpha_p", None, "pressure-viscosity coefficient [1/Pa] is required by houpert_ehl")
-    alpha_p = _num("alpha_p", alpha_p, what=" [1/Pa]")
-    p = biboulet_parameters(Q, Rx, Ry, u, eta, E_prime, a, b)
-    Rx, E_prime = np.asarray(Rx, float), np.asarray(E_prime, float)
-    kap = np.asarray(p["kappa"])
-    G = alpha_p * E_prime
-    f = (0.674 * kap**-0.043 * (2.0 * np.asarray(p["a"]) / Rx) * G**g_exponent
-         * (kap * np.asarray(p["W"])) ** 0.133 * np.asarray(p["U2"]) ** 0.656 * E_prime * Rx**2)
-    return _out(f)
-
-
-def rolling_force_biboulet_pvr(Q, Rx, Ry, u, eta, E_prime, a=None, b=None, *,
-                               truncation="seed004"):
-    r"""Biboulet's single IVR→EHL (PVR) hydrodynamic rolling force [N].
-
-    Parameters
-    ----------
-    Q, Rx, Ry, u, eta, E_prime : as :func:`rolling_force_biboulet_ivr`
-    a, b : array_like, optional   Hertz semi-axes across / along rolling [m] (exact Hertz if omitted)
-    truncation : ``"seed004"``, ``None`` or float
-        ``"seed004"``: multiply by c_Bib (B&H eq 36, seed 004 eq 19);
-        ``None``: fully flooded, untruncated (B&H eq 32);
-        float L [m]: B&H eq 35 truncation with 2a/L (L race width or ball diameter).
-
-    Notes
-    -----
-    F = c E' Rx (2a) [ (0.77 β^(-1/3) κ^0.12 U^(-1/12) - 1.8 β^(-1/4)) / (1 + M/6.6)
-        + 1.8 β^(-1/4) ] U^(3/4)
-
-    with U = 2 η u/(E' Rx), κ = b/a, β, M from :func:`biboulet_parameters`
-    (B&H 2010 eq 32; seed 004 eq 19).  Seed 004 prints "E' Rx² 2a", which is
-    not a force; B&H write E' Rx² (2a/Rx).  Limits of the untruncated form:
-    M → 0 gives B&H's IVR asymptote 0.77 β^(-1/3) κ^0.12 (2a/Rx) U^(2/3) E' Rx²,
-    M → ∞ the EHL asymptote 1.8 β^(-1/4) (2a/Rx) U^(3/4) E' Rx² — the forms that
-    seed 000 eqs 21–22 re-fit in k = Ry/Rx (agreement within a few %).
-    With seed 004's c_Bib the force tends to 0.85 × EHL asymptote at large M and
-    to 0 as M → 0 (c ∝ M^0.39): it does *not* reach the IVR form; c_Bib is B&H's
-    truncation coefficient at 2a/L = 1 (ellipse as wide as the race), fitted
-    on EHL runs only.
-
-    Examples
-    --------
-    >>> args = (1.42, 3.969e-3, 70.12e-3, 0.0942, 0.089, 2.3e11)
-    >>> round(rolling_force_biboulet_pvr(*args, truncation=None), 5)
-    0.00607
-    >>> round(rolling_force_biboulet_pvr(*args), 5)
-    0.00317
-    """
-    p = biboulet_parameters(Q, Rx, Ry, u, eta, E_prime, a, b)
-    Rx, E_prime = np.asarray(Rx, float), np.asarray(E_prime, float)
-    U2, W, kap, beta, M, a_ = (np.asarray(p[k]) for k in ("U2", "W", "kappa", "beta", "M", "a"))
-    f_ivr = 0.77 * beta ** (-1.0 / 3.0) * kap**0.12 * np.cbrt(U2) ** 2     # ×(2a/Rx) E'Rx²
-    f_ehl = 1.8 * beta**-0.25 * U2**0.75
-    den = beta**0.25 * kap * W
-    r = np.full(np.broadcast(U2, den).shape, np.inf)                      # r = 6.6/M
-    np.divide(_M_SPLIT * U2**0.75, den, out=r, where=np.broadcast_to(den > 0, r.shape))
-    with np.errstate(invalid="ignore"):
-        shape = np.where(np.isinf(r), f_ivr, (f_ivr * r + f_ehl) / (1.0 + r))
-    f = E_prime * Rx * 2.0 * a_ * shape
-    if truncation is None:
-        c = 1.0
-    elif isinstance(truncation, str):
-        if truncation != "seed004":
-            raise InputError("truncation", truncation, "must be 'seed004', None or a width L [m]")
-        c = truncation_coefficient(M, kap, 1.0)
-    else:
-        L = _num("truncation", truncation, what=" (width L for 2a/L) [m]")
-        c = truncation_coefficient(M, kap, 2.0 * a_ / L)
-    return _out(np.where((np.asarray(W) > 0) & (U2 > 0), f * c, 0.0))
-
-
-# ----------------------------------------------------------------------------- dispatcher
-def _classify(Q, Rx, Ry, u, eta, E_prime, alpha_p):
-    """Regime code per contact from :func:`thermobear.lubrication.film.lubrication_regime` (lazy import)."""
-    if alpha_p is None:
-        raise InputError("alpha_p", None, "model='auto' without a regime array needs alpha_p [1/Pa]")
-    from thermobear.lubrication import film  # imported here: film sits beside friction in the data flow
-    return film.lubrication_regime(Q, Rx, Ry, u, eta, alpha_p, E_prime).code
+        raise InputError("alpha_p", None, "pressure-viscosity coefficient [1/Pa] is required by auto_smooth")
+    return _out(rolling_contacts(Q, Rx, Ry, u, E_prime, a, b).force(eta, "auto_smooth", alpha_p, regime))
 
 
 def rolling_force(Q, Rx, Ry, u, eta, E_prime, model="biboulet_transition", alpha_p=None,
@@ -472,11 +277,12 @@ def rolling_force(Q, Rx, Ry, u, eta, E_prime, model="biboulet_transition", alpha
     eta : array_like      inlet dynamic viscosity [Pa s]
     E_prime : array_like  reduced modulus [Pa]
     model : str           one of :data:`MODELS`
-    alpha_p : array_like  pressure–viscosity coefficient [1/Pa] (houpert_ehl, auto)
+    alpha_p : array_like  pressure–viscosity coefficient [1/Pa] (houpert_ehl, auto, auto_smooth)
     a, b : array_like     Hertz semi-axes across / along rolling [m] (optional)
-    regime : array_like of str, optional
-        for ``model="auto"``: "IVR", "PVR", "IVE" or "EHL" per contact;
-        computed with :mod:`thermobear.lubrication.film` if omitted.
+    regime : Regime or array_like of str, optional
+        for ``model="auto"``: "IVR", "PVR", "IVE" or "EHL" per contact (or a
+        :class:`~thermobear.lubrication.film.Regime`); for ``"auto_smooth"`` a Regime;
+        computed with :func:`thermobear.lubrication.film.lubrication_regime` if omitted.
         Mapping :data:`REGIME_MODEL` (seed 004 §4.3; IVE → biboulet_pvr, see there).
 
     Returns
@@ -488,7 +294,8 @@ def rolling_force(Q, Rx, Ry, u, eta, E_prime, model="biboulet_transition", alpha
     -----
     ``auto`` switches formulas at regime boundaries and so is discontinuous
     there; the jumps are quantified in tests/test_rolling.py and in
-    validation/report/seed001_spin_down.md.
+    validation/report/seed001_spin_down.md.  ``auto_smooth`` is
+    :func:`rolling_force_regime_weighted`.
 
     Examples
     --------
@@ -512,21 +319,12 @@ def rolling_force(Q, Rx, Ry, u, eta, E_prime, model="biboulet_transition", alpha
         return rolling_force_houpert_ehl(Q, Rx, Ry, u, eta, E_prime, alpha_p, a, b)
     if model == "biboulet_pvr":
         return rolling_force_biboulet_pvr(Q, Rx, Ry, u, eta, E_prime, a, b)
-    # auto
-    if regime is None:
-        regime = _classify(Q, Rx, Ry, u, eta, E_prime, alpha_p)
-    regime = np.asarray(regime)
-    unknown = set(np.unique(regime).tolist()) - set(REGIME_MODEL)
-    if unknown:
-        raise InputError("regime", sorted(unknown), f"must be one of {', '.join(REGIME_MODEL)}")
-    shape = np.broadcast_shapes(*(np.shape(v) for v in (Q, Rx, Ry, u, eta, E_prime, regime)))
-    out = np.zeros(shape)
-    regime = np.broadcast_to(regime, shape)
-    for name in sorted(set(REGIME_MODEL[r] for r in np.unique(regime).tolist())):
-        mask = np.isin(regime, [r for r, m in REGIME_MODEL.items() if m == name])
-        val = rolling_force(Q, Rx, Ry, u, eta, E_prime, model=name, alpha_p=alpha_p, a=a, b=b)
-        out = np.where(mask, np.broadcast_to(val, shape), out)
-    return _out(out)
+    if model == "auto_smooth":
+        return rolling_force_regime_weighted(Q, Rx, Ry, u, eta, E_prime, alpha_p, a, b, regime)
+    # auto: seed 004's sharp selection
+    if regime is None and alpha_p is None:
+        raise InputError("alpha_p", None, "model='auto' without a regime array needs alpha_p [1/Pa]")
+    return _out(rolling_contacts(Q, Rx, Ry, u, E_prime, a, b).force(eta, "auto", alpha_p, regime))
 
 
 def pressure_force(F_R):
@@ -549,10 +347,17 @@ def rolling_power(u, F_R):
     u : array_like    mean entrainment speed [m/s]
     F_R : array_like  hydrodynamic rolling force [N]
 
+    Returns
+    -------
+    float or ndarray  power [W]
+
     Notes
     -----
-    Sum velocity times force: seed 000 eq 34 (F_R d_b ω_b, d_b ω_b = 2u),
-    seed 004 eq 20, PHYSICS.md §0 and §12.10.
+    .. math::
+
+        P = 2 u F_R
+
+    Sum velocity times force: seed 000 eq 34 (F_R d_b ω_b, d_b ω_b = 2u) and seed 004 eq 20.
 
     >>> round(rolling_power(0.37699, 0.01896), 6)
     0.014295

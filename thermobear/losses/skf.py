@@ -24,12 +24,13 @@ negative μ_EHD for the 51107 at high speed.
 """
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
 from thermobear.files import data_dir, read_toml
-from thermobear.errors import InputError
+from thermobear.errors import ExtrapolationWarning, InputError
 from thermobear.units import NMM, MM
 
 __all__ = [
@@ -42,11 +43,11 @@ __all__ = [
 KINDS = ("deep_groove", "angular_contact", "thrust")
 
 #: Replenishment/starvation constant K_rs of Φ_rs [-] by lubrication method
-#: (SKF 6000 EN; seed 002 eq A.5 gives 6e-8 for grease). PHYSICS.md §10, confirmed.
+#: (SKF 2004, General Catalogue 6000 EN; seed 002 eq A.5 gives 6e-8 for grease).
 K_RS = {"grease": 6e-8, "oil_air": 6e-8, "oil_jet": 3e-8, "oil_bath": 3e-8}
 
 #: SKF's full-film friction coefficient μ_EHL by base-oil family [-]
-#: (SKF 6000 EN; PHYSICS.md §10, unconfirmed - recalled).
+#: (SKF 2004, General Catalogue 6000 EN; recalled, not checked against the catalogue).
 MU_EHL = {"mineral": 0.05, "synthetic": 0.04, "transmission": 0.1}
 
 
@@ -219,8 +220,8 @@ def G_rr_G_sl(kind, dm_mm, Fa, Fr, n_rpm=0.0, *, R1, S1, R2=None, R3=None, S2=No
                            G_sl = S1 dm^0.26 ((F_r + F_g)^(4/3) + S2 F_a^(4/3)), F_g = S3 dm^4 n^2.
     Thrust:                G_rr = R1 dm^1.83 F_a^0.54,  G_sl = S1 dm^0.05 F_a^(4/3)
                            (seed 002 eqs A.3, A.7).
-    SKF 6000 EN, table 2a.  The deep-groove combined form is used whenever F_a > 0
-    (PHYSICS.md §12 pitfall 14).
+    SKF 2004 (General Catalogue 6000 EN), table 2a.  The deep-groove combined form is used
+    whenever F_a > 0: adding F_a to F_r, as some public code does, misreads both terms.
 
     Examples
     --------
@@ -268,7 +269,8 @@ def drag_moment_skf_Nmm(V_M, K_z, d_mm, D_mm, n_rpm, i_rw=1):
     Notes
     -----
     M_drag = V_M K_ball dm^5 n^2,  K_ball = i_rw K_z (d + D)/(D − d) 1e-12
-    (SKF 6000 EN; seed 002 eq A.1).  Status: unconfirmed – recalled (PHYSICS.md §7.3).
+    (SKF 2004, General Catalogue 6000 EN; seed 002 eq A.1).  Status: recalled, not checked
+    against the catalogue.
 
     Examples
     --------
@@ -287,7 +289,7 @@ def seal_moment_Nmm(ds_mm, K_S1, K_S2, beta):
     ----------
     ds_mm : float   seal counterface diameter [mm]
     K_S1, K_S2, beta : float  SKF seal constants (e.g. DGBB contact seal, D <= 62 mm:
-                    K_S1 = 0.023, K_S2 = 2, beta = 2.25; public code, PHYSICS.md §10)
+                    K_S1 = 0.023, K_S2 = 2, beta = 2.25, as public code implements SKF 2004)
 
     Examples
     --------
@@ -542,8 +544,6 @@ def mu_EHL_from_torque(M_exp_Nm, d_mm, D_mm, kind, nu_cSt, n_rpm, Fa, Fr, *, mu_
     M_sl_Nmm = (np.asarray(M_exp_Nm, dtype=float) - r.M_rr - r.M_drag - r.M_seal) / NMM
     p_bl = np.asarray(r.phi_bl)
     if np.any(p_bl > 0.5):
-        import warnings
-        from thermobear.errors import ExtrapolationWarning
         warnings.warn("mu_EHL_from_torque: Φ_bl > 0.5 — the back-calculation divides by 1 − Φ_bl → 0 and its sign "
                       "is not meaningful there", ExtrapolationWarning, stacklevel=2)
     return _out((M_sl_Nmm / r.G_sl - p_bl * mu_bl) / (1.0 - p_bl))

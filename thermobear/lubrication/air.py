@@ -8,7 +8,7 @@ density, viscosity, conductivity and c_p on 200–600 K at 1 K steps from
 :func:`write_table` (its header names the CoolProp version) — and interpolates
 with cubic splines (relative error < 1e-6 against ``PropsSI``; tests/test_air.py
 checks the shipped table against the installed CoolProp).  Other pressures go
-to ``PropsSI`` directly.
+to ``PropsSI`` directly (CoolProp is imported only then: its import costs ~1.7 s).
 """
 from __future__ import annotations
 
@@ -18,6 +18,7 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 
 from thermobear.errors import InputError
+from thermobear.files import data_dir, read_toml
 
 __all__ = ["air_properties", "P_ATM", "T_RANGE_K"]
 
@@ -41,7 +42,9 @@ def _grid_K() -> np.ndarray:
 
 @lru_cache(maxsize=1)
 def _table():
-    from thermobear.files import data_dir, read_toml
+    """The spline's cubic pieces, read once per process from ``materials/air_1atm.toml``: an array
+    (4, n_intervals, 4 properties) of coefficients c0..c3 of v = c3 + s (c2 + s (c1 + s c0)),
+    s = T − T_i, and the same as nested tuples of Python floats (one temperature: no arrays)."""
     d = read_toml(str(data_dir("materials") / "air_1atm.toml"))
     where, fix = "materials/air_1atm.toml", " (regenerate it with thermobear.lubrication.air.write_table)"
     cols = []
@@ -55,7 +58,8 @@ def _table():
         raise InputError(where, d.get("p_Pa"), f"a 1 K grid on {T_RANGE_K} K at {P_ATM} Pa" + fix)
     if any(c.shape != T.shape or not np.all(np.isfinite(c) & (c > 0)) for c in cols):
         raise InputError(where, None, f"{T.size} finite, positive values per column" + fix)
-    return CubicSpline(T, np.column_stack(cols))   # one spline, 4 columns
+    c = CubicSpline(T, np.column_stack(cols)).c                 # one spline, 4 columns
+    return c, [tuple(tuple(float(c[m, i, q]) for m in range(4)) for q in range(4)) for i in range(c.shape[1])]
 
 
 def write_table(path) -> None:
@@ -79,24 +83,9 @@ def write_table(path) -> None:
         fh.write("\n".join(lines) + "\n")
 
 
-@lru_cache(maxsize=1)
-def _scalar_table():
-    """The spline's polynomial pieces as Python floats, per 1 K interval: (c0, c1, c2, c3) per
-    property, v = c3 + c2 s + c1 s² + c0 s³ with s = T − T_i (the order in which scipy's PPoly sums)."""
-    sp = _table()
-    c = sp.c                                   # (4, n_intervals, 4 properties)
-    return [tuple(tuple(float(c[m, i, q]) for m in range(4)) for q in range(4)) for i in range(c.shape[1])]
-
-
-def _air_scalar(T):
-    """Air properties at one temperature [K] inside the table (rho, mu, k, cp), evaluated as
-    :func:`_table`'s spline does, without the array machinery."""
-    tab = _scalar_table()
-    i = min(int(T - T_RANGE_K[0]), len(tab) - 1)
-    s = T - (T_RANGE_K[0] + i)
-    s2 = s * s
-    s3 = s2 * s
-    return tuple(c3 + c2 * s + c1 * s2 + c0 * s3 for c0, c1, c2, c3 in tab[i])
+def _cubic(c0, c1, c2, c3, s):
+    """One cubic piece of the table's spline at s = T − T_i [K] (floats or arrays)."""
+    return c3 + s * (c2 + s * (c1 + s * c0))
 
 
 def air_properties(T_K, p_Pa=P_ATM):
@@ -113,19 +102,27 @@ def air_properties(T_K, p_Pa=P_ATM):
     >>> round(p["rho"], 3), round(p["k"], 4), round(p["Pr"], 3)
     (1.177, 0.0264, 0.707)
     """
-    if isinstance(T_K, (float, np.floating)) and p_Pa == P_ATM and T_RANGE_K[0] <= T_K <= T_RANGE_K[1]:
-        rho, mu, k, cp = _air_scalar(float(T_K))        # one temperature (thermal elements): no arrays
+    if isinstance(T_K, float) and p_Pa == P_ATM and T_RANGE_K[0] <= T_K <= T_RANGE_K[1]:
+        T = float(T_K)                                              # one temperature: Python floats
+        i = min(int(T - T_RANGE_K[0]), len(_table()[1]) - 1)
+        s = T - (T_RANGE_K[0] + i)
+        rho, mu, k, cp = (_cubic(*cq, s) for cq in _table()[1][i])
         return {"rho": rho, "mu": mu, "k": k, "cp": cp, "nu": mu / rho, "Pr": mu * cp / k}
     T = np.asarray(T_K, dtype=float)
-    if np.any(~np.isfinite(T)) or np.any(T < T_RANGE_K[0]) or np.any(T > T_RANGE_K[1]):
+    if T.size and not (T.min() >= T_RANGE_K[0] and T.max() <= T_RANGE_K[1]):      # NaN fails too
         raise InputError("T_K", T_K, f"air properties are provided for {T_RANGE_K[0]:g}..{T_RANGE_K[1]:g} K")
     if not (np.isfinite(p_Pa) and p_Pa > 0):
         raise InputError("p_Pa", p_Pa, "pressure must be > 0 [Pa]")
     if abs(p_Pa - P_ATM) < 1e-9 * P_ATM:
-        v = _table()(T)
-        out = {k: v[..., i] for i, k in enumerate(_KEYS)}
+        c = _table()[0]
+        i = np.minimum((T - T_RANGE_K[0]).astype(np.intp), c.shape[1] - 1)
+        s = (T - (T_RANGE_K[0] + i))[..., None]
+        v = _cubic(*c[:, i], s)
+        out = {k: v[..., q] for q, k in enumerate(_KEYS)}
     else:
         out = {k: np.asarray(v, float) for k, v in _propssi(T, float(p_Pa)).items()}
     out["nu"] = out["mu"] / out["rho"]
     out["Pr"] = out["mu"] * out["cp"] / out["k"]
-    return {k: (float(v) if np.ndim(v) == 0 else np.asarray(v)) for k, v in out.items()}
+    if T.ndim == 0:
+        return {k: float(v) for k, v in out.items()}
+    return out

@@ -1,12 +1,13 @@
 r"""EHL film thickness, Moes parameters, lubrication regime and specific film thickness.
 
-Conventions (PHYSICS.md §5, §12): x is the rolling direction; ``Rx``, ``Ry`` the
+Conventions (Hamrock & Dowson 1977; Moes 1992): x is the rolling direction; ``Rx``, ``Ry`` the
 reduced radii in the rolling / transverse direction (Ry ≥ Rx for ball–race
 contacts); ``u`` is the MEAN entrainment speed u = (u1 + u2)/2 [m/s] (Hamrock
 convention) at every public function — the Moes / NVM groups use the sum speed
 2u internally; ``eta`` the inlet dynamic viscosity [Pa s]; ``alpha_p`` the
 pressure–viscosity coefficient [1/Pa]; ``E_prime`` the reduced modulus
-2/E' = (1−ν1²)/E1 + (1−ν2²)/E2 [Pa].  All functions broadcast numpy arrays.
+2/E' = (1−ν1²)/E1 + (1−ν2²)/E2 [Pa].  All functions broadcast numpy arrays
+(e.g. a leading batch axis of temperature states against the contacts).
 
 Limits, defined so that no NaN and no floating-point warning is produced:
 
@@ -16,8 +17,15 @@ Limits, defined so that no NaN and no floating-point warning is produced:
   convention** (the rigid-isoviscous film grows without bound, h ∝ Q^-2, as
   Q → 0); the regime is "IVR".
 
-Regimes (PHYSICS.md §5.3; seed 004 §3): "IVR" iso-viscous rigid, "IVE"
+Regimes (Nijenbanning, Venner & Moes 1994; seed 004 §3): "IVR" iso-viscous rigid, "IVE"
 iso-viscous elastic, "PVR" piezo-viscous rigid, "EHL" piezo-viscous elastic.
+
+References
+----------
+Hamrock B. J., Dowson D. (1977) Isothermal elastohydrodynamic lubrication of point contacts,
+Part III — fully flooded results. J. Lubr. Technol. 99, 264–276.
+Nijenbanning G., Venner C. H., Moes H. (1994) Film thickness in elastohydrodynamically lubricated
+elliptic contacts. Wear 176, 217–229.
 """
 from __future__ import annotations
 
@@ -25,60 +33,169 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from thermobear.arrays import finite_range
-
 from thermobear.errors import InputError
+from thermobear.lubrication.nvm import (EXP_MAX, REGIMES, TINY, MoesMapBoundaries, Regime, _arr, _clip,
+                                        _ln_branches, _out, _regime_from_ln, ln_asymptote_consts,
+                                        moes_map_boundaries, moes_N, moes_regime, nvm_asymptotes, nvm_H)
 
 __all__ = [
     "hamrock_dowson_groups", "film_thickness", "moes_parameters", "moes_N",
     "nvm_asymptotes", "nvm_H", "film_thickness_nvm", "composite_roughness",
     "specific_film_thickness", "Regime", "moes_regime", "lubrication_regime",
-    "MoesMapBoundaries", "moes_map_boundaries", "REGIMES", "NVM_TINY", "NVM_EXP_MAX", "nvm_ln_asymptote_consts",
+    "MoesMapBoundaries", "moes_map_boundaries", "REGIMES", "ln_asymptote_consts", "TINY", "EXP_MAX",
+    "EHLContacts", "ehl_contacts",
 ]
 
-REGIMES = ("IVR", "IVE", "PVR", "EHL")
-
-_TINY = 1e-300     # floor inside logarithms (zero load / zero speed limits)
-_EXP_MAX = 700.0   # clip of exponents so ratios stay finite (e^700 ≈ 1e304)
-#: floor inside the logarithms and clip of the exponents of the NVM film functions (public: the film
-#: contact law of thermobear.loads.filmlaw evaluates the same blend with its derivatives, to the same bits)
-NVM_TINY, NVM_EXP_MAX = _TINY, _EXP_MAX
+_TINY, _EXP_MAX = TINY, EXP_MAX          # former private names (thermobear.loads.film imports them)
+_ln_asymptote_consts = ln_asymptote_consts
 
 
 # ---------------------------------------------------------------------------
 # input checks
 # ---------------------------------------------------------------------------
-def _arr(name, v, *, positive=False, nonneg=False):
-    a = np.asarray(v, dtype=float)
-    if not a.size:
-        return a
-    r = finite_range(a)
-    if r is None:
-        raise InputError(name, v, "must be finite")
-    if positive and r[0] <= 0:
-        raise InputError(name, v, "must be > 0")
-    if nonneg and r[0] < 0:
-        raise InputError(name, v, "must be >= 0")
-    return a
+def _geometry(Q, Rx, Ry, u, E_prime):
+    """Checked contact geometry (Q, Rx, Ry/Rx, u, E_prime), each array checked once (not broadcast);
+    Ry > 0 follows from Rx > 0 and Ry/Rx ≥ 1."""
+    Q = _arr("Q", Q, nonneg=True)
+    Rx = _arr("Rx", Rx, positive=True)
+    ratio = Ry / Rx if type(Ry) is float else np.asarray(Ry, dtype=float) / Rx
+    if not (ratio if type(ratio) is float else ratio.min()) >= 1.0 - 1e-12:     # NaN fails too
+        raise InputError("Ry/Rx", ratio, "must be >= 1 (Ry transverse, Rx rolling direction; "
+                         "these formulas were fitted for Ry >= Rx)")
+    return Q, Rx, ratio, _arr("u", u, nonneg=True), _arr("E_prime", E_prime, positive=True)
 
 
 def _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, alpha_positive):
-    Q = _arr("Q", Q, nonneg=True)
-    Rx = _arr("Rx", Rx, positive=True)
-    Ry = _arr("Ry", Ry, positive=True)
-    if np.any(Ry < Rx * (1.0 - 1e-12)):
-        raise InputError("Ry/Rx", Ry / Rx, "must be >= 1 (Ry transverse, Rx rolling direction; "
-                         "these formulas were fitted for Ry >= Rx)")
-    u = _arr("u", u, nonneg=True)
+    """Checked contact inputs (Q, Rx, Ry/Rx, u, eta, alpha_p, E_prime), not broadcast."""
+    Q, Rx, ratio, u, E_prime = _geometry(Q, Rx, Ry, u, E_prime)
     eta = _arr("eta", eta, positive=True)
     alpha_p = _arr("alpha_p", alpha_p, positive=alpha_positive, nonneg=True)
-    E_prime = _arr("E_prime", E_prime, positive=True)
-    return np.broadcast_arrays(Q, Rx, Ry, u, eta, alpha_p, E_prime)
+    return Q, Rx, ratio, u, eta, alpha_p, E_prime
 
 
-def _out(x, *inputs):
-    x = np.asarray(x, dtype=float)
-    return float(x) if all(np.ndim(i) == 0 for i in inputs) else x
+def _scalar(*inputs):
+    return all(np.ndim(v) == 0 for v in inputs)
+
+
+_FILM_KINDS = ("min", "central")
+
+
+# ---------------------------------------------------------------------------
+# Contacts prepared for the film and regime formulas
+# ---------------------------------------------------------------------------
+@dataclass(frozen=True)
+class EHLContacts:
+    r"""Point contacts prepared for the film and regime formulas (inputs checked once).
+
+    The temperature-independent factors of :func:`film_thickness` (Hamrock & Dowson 1977) and
+    :func:`lubrication_regime` (Nijenbanning, Venner & Moes 1994) for contacts of given load,
+    radii, entrainment speed and modulus; :meth:`film_thickness` and :meth:`regime` evaluate them
+    at the lubricant's η and α_p, which broadcast against the contacts (leading axes: temperature
+    states).  Built by :func:`ehl_contacts`; the module functions are these two steps.
+
+    Attributes
+    ----------
+    Rx, ratio : ndarray   rolling-direction radius [m] and Ry/Rx [-]
+    W : ndarray           load parameter Q/(E' Rx²) [-]
+    U_eta : ndarray       speed parameter per unit viscosity, U/η = u/(E' Rx) [1/(Pa s)]
+    E_prime : ndarray     reduced modulus [Pa]
+    loaded : ndarray      Q > 0
+    C_min, C_c : ndarray  h_min, h_c at U = G = 1 (Notes of :func:`film_thickness`) [m]; 0 where Q = 0
+    lnW : ndarray         ln W, floored at ln 1e-300 [-]
+    D : ndarray           Rx/Ry [-]
+    consts : tuple        :func:`~thermobear.lubrication.nvm.ln_asymptote_consts` of D
+    """
+
+    Rx: np.ndarray
+    ratio: np.ndarray
+    W: np.ndarray
+    U_eta: np.ndarray
+    E_prime: np.ndarray
+    loaded: np.ndarray
+    C_min: np.ndarray
+    C_c: np.ndarray
+    lnW: np.ndarray
+    D: np.ndarray
+    consts: tuple
+
+    def film_thickness(self, eta, alpha_p, kind="min", method="hamrock_dowson"):
+        """Film thickness [m] at viscosity ``eta`` [Pa s] and pressure–viscosity coefficient
+        ``alpha_p`` [1/Pa] (arrays; see :func:`film_thickness` for ``kind`` and ``method``)."""
+        kinds = kind if isinstance(kind, tuple) else (kind,)
+        if not kinds or any(k not in _FILM_KINDS for k in kinds):
+            raise InputError("film_thickness kind", kind, 'must be "min" or "central" (or a tuple of them)')
+        if method not in ("hamrock_dowson", "seed000_eq15") or (method == "seed000_eq15" and kinds != ("min",)):
+            raise InputError("film_thickness method", method, '"hamrock_dowson", or "seed000_eq15" (kind="min")')
+        eta = _arr("eta", eta, positive=True)
+        alpha_p = _arr("alpha_p", alpha_p, positive=True)
+        U, G = eta * self.U_eta, alpha_p * self.E_prime
+        out = []
+        for k in kinds:
+            if method == "seed000_eq15":
+                C = np.where(self.loaded, 3.63 * self.W**-0.073 * (1.0 - 0.61 * np.exp(-0.68 * self.ratio))
+                             * self.Rx, 0.0)
+                out.append(C * U**0.68 * G**0.49)
+            elif k == "central":
+                out.append(self.C_c * U**0.67 * G**0.53)
+            else:
+                out.append(self.C_min * U**0.68 * G**0.49)
+        return tuple(out) if isinstance(kind, tuple) else out[0]
+
+    def regime(self, eta, alpha_p) -> Regime:
+        """:class:`Regime` of the contacts at ``eta`` [Pa s] and ``alpha_p`` [1/Pa] (≥ 0)."""
+        eta = _arr("eta", eta, positive=True)
+        alpha_p = _arr("alpha_p", alpha_p, nonneg=True)
+        lnU2 = np.log(np.maximum(eta * (2.0 * self.U_eta), TINY))
+        lnM = self.lnW - 0.75 * lnU2
+        lnL = np.log(np.maximum(alpha_p * self.E_prime, TINY)) + 0.25 * lnU2
+        return _regime_from_ln(lnM, lnL, self.D, self.loaded, False, self.consts)
+
+
+def ehl_contacts(Q, Rx, Ry, u, E_prime) -> EHLContacts:
+    r"""Point contacts prepared for :func:`film_thickness` and :func:`lubrication_regime`.
+
+    Parameters
+    ----------
+    Q : array_like        normal load [N], >= 0
+    Rx, Ry : array_like   reduced radii, rolling / transverse direction [m], Ry >= Rx
+    u : array_like        mean entrainment speed (u1+u2)/2 [m/s], >= 0
+    E_prime : array_like  reduced modulus E' [Pa]
+
+    Returns
+    -------
+    EHLContacts  evaluate with ``.film_thickness(eta, alpha_p, kind)`` and ``.regime(eta, alpha_p)``
+
+    Notes
+    -----
+    For contacts evaluated at many temperatures (coupled and transient solvers): the
+    temperature-independent factors are computed once, e.g.
+
+    .. math::
+
+        h_{min} = C_{min}\, U^{0.68} G^{0.49},\qquad
+        C_{min} = 3.63\, R_x W^{-0.073} (1 - e^{-0.68\kappa})
+
+    (Hamrock & Dowson 1977), and ln W and the D-terms of the NVM asymptotes (Nijenbanning, Venner
+    & Moes 1994) for the regime.
+
+    Examples
+    --------
+    >>> c = ehl_contacts([4527.0, 0.0], 5.109e-3, 165.1e-3, 6.25, 228e9)
+    >>> h = c.film_thickness(0.04, 2.3e-8, kind="central")
+    >>> [round(float(v) * 1e6, 2) for v in h], c.regime(0.04, 2.3e-8).code.tolist()
+    ([0.69, 0.0], ['EHL', 'IVR'])
+    """
+    Q, Rx, ratio, u, E_prime = _geometry(Q, Rx, Ry, u, E_prime)
+    loaded = Q > 0
+    ERx = E_prime * Rx
+    W = Q / (E_prime * Rx**2)
+    Ws = np.where(loaded, W, 1.0)
+    kappa = 1.0339 * ratio**0.636
+    C_min = np.where(loaded, 3.63 * Ws**-0.073 * (1.0 - np.exp(-0.68 * kappa)) * Rx, 0.0)
+    C_c = np.where(loaded, 2.69 * Ws**-0.067 * (1.0 - 0.61 * np.exp(-0.73 * kappa)) * Rx, 0.0)
+    D = 1.0 / ratio
+    return EHLContacts(Rx=Rx, ratio=ratio, W=W, U_eta=u / ERx, E_prime=E_prime, loaded=loaded, C_min=C_min,
+                       C_c=C_c, lnW=np.log(np.maximum(W, TINY)), D=D, consts=ln_asymptote_consts(D))
 
 
 # ---------------------------------------------------------------------------
@@ -98,13 +215,23 @@ def hamrock_dowson_groups(Q, Rx, Ry, u, eta, alpha_p, E_prime):
 
     Returns
     -------
-    (U, G, W, kappa)  U = η u/(E' Rx), G = α_p E', W = Q/(E' Rx²),
-                      κ = 1.0339 (Ry/Rx)^0.636 (Hamrock & Brewe 1983 ellipticity)
+    (U, G, W, kappa) : tuple of float or ndarray
+        the speed, material, load parameters and the ellipticity [-]
 
     Notes
     -----
-    Hamrock & Dowson, J. Lubr. Technol. 99 (1977) 264; PHYSICS.md §5.1; seed 000
-    eq 16 and seed 004 eq 10 (U*, G*, W*).
+    .. math::
+
+        U = \frac{\eta u}{E' R_x},\quad G = \alpha_p E',\quad W = \frac{Q}{E' R_x^2},\quad
+        \kappa = 1.0339 \left(\frac{R_y}{R_x}\right)^{0.636}
+
+    (Hamrock & Dowson 1977 [1]_; κ of Hamrock & Brewe 1983 [2]_; seed 000 eq 16 and seed 004
+    eq 10 write the same U*, G*, W*).
+
+    References
+    ----------
+    .. [1] Hamrock B. J., Dowson D. (1977) J. Lubr. Technol. 99, 264–276.
+    .. [2] Hamrock B. J., Brewe D. E. (1983) J. Lubr. Technol. 105, 171–177.
 
     Examples
     --------
@@ -112,12 +239,13 @@ def hamrock_dowson_groups(Q, Rx, Ry, u, eta, alpha_p, E_prime):
     >>> f"{U:.3g} {G:.4g} {W:.3g} {k:.3g}"
     '2.15e-10 5244 0.000761 9.43'
     """
-    Q, Rx, Ry, u, eta, alpha_p, E_prime = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
-    U = eta * u / (E_prime * Rx)
-    G = alpha_p * E_prime
-    W = Q / (E_prime * Rx**2)
-    kappa = 1.0339 * (Ry / Rx) ** 0.636
-    return tuple(_out(x, Q) for x in (U, G, W, kappa))
+    Qa, Rxa, ratio, ua, etaa, alphaa, Ea = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
+    U = etaa * ua / (Ea * Rxa)
+    G = alphaa * Ea
+    W = Qa / (Ea * Rxa**2)
+    kappa = 1.0339 * ratio**0.636
+    shape = np.broadcast_shapes(*(np.shape(v) for v in (Qa, Rxa, ratio, ua, etaa, alphaa, Ea)))
+    return tuple(_out(np.broadcast_to(x, shape), Q) for x in (U, G, W, kappa))
 
 
 def film_thickness(Q, Rx, Ry, u, eta, alpha_p, E_prime, kind="min", method="hamrock_dowson"):
@@ -131,61 +259,65 @@ def film_thickness(Q, Rx, Ry, u, eta, alpha_p, E_prime, kind="min", method="hamr
     eta : array_like      inlet dynamic viscosity [Pa s]
     alpha_p : array_like  pressure–viscosity coefficient [1/Pa]
     E_prime : array_like  reduced modulus E' [Pa]
-    kind : {"min", "central"}
+    kind : {"min", "central"} or a tuple of them
+        a tuple gives a tuple of films, in that order, from one pass over the inputs
     method : {"hamrock_dowson", "nvm", "seed000_eq15"}
-        "hamrock_dowson" (default) — Hamrock & Dowson (1977):
-            h_c   = Rx 2.69 U^0.67 G^0.53 W^-0.067 (1 − 0.61 e^(−0.73 κ))
-            h_min = Rx 3.63 U^0.68 G^0.49 W^-0.073 (1 − e^(−0.68 κ))
-        "nvm" (central only) — Nijenbanning, Venner & Moes (1994), see
-            :func:`film_thickness_nvm`.
-        "seed000_eq15" (min only) — the form PRINTED in seed 000 eq 15
-            (Ianuș et al.): 3.63 Rx U^0.68 G^0.49 W^-0.073 (1 − 0.61 e^(−0.68 k)),
-            k = Ry/Rx.  Its ellipticity factor differs from Hamrock–Dowson's
-            (1 − e^(−0.68 κ)); for seed 000's k ≈ 17.7 both are 1 within 1.3 %.
-            Offered only to reproduce that paper.
+        "hamrock_dowson" (default) — Hamrock & Dowson (1977) [1]_, see Notes;
+        "nvm" (central only) — Nijenbanning, Venner & Moes (1994), see :func:`film_thickness_nvm`;
+        "seed000_eq15" (min only) — the form PRINTED in seed 000 eq 15 (Ianuș et al.):
+        3.63 Rx U^0.68 G^0.49 W^-0.073 (1 − 0.61 e^(−0.68 k)), k = Ry/Rx.  Its ellipticity
+        factor differs from Hamrock–Dowson's (1 − e^(−0.68 κ)); for seed 000's k ≈ 17.7
+        both are 1 within 1.3 %.  Offered only to reproduce that paper.
 
     Returns
     -------
-    ndarray  film thickness [m]; 0 where u = 0 and, by convention, where Q = 0
+    float or ndarray  film thickness [m]; 0 where u = 0 and, by convention, where Q = 0
 
     Notes
     -----
-    Groups as in :func:`hamrock_dowson_groups`.  Fitted for κ ≈ 1–8,
-    isothermal, Newtonian, fully flooded, smooth surfaces (PHYSICS.md §5.1).
+    With the groups U, G, W, κ of :func:`hamrock_dowson_groups` (Hamrock & Dowson 1977 [1]_, their
+    central and minimum film formulas):
+
+    .. math::
+
+        h_c = 2.69\, R_x U^{0.67} G^{0.53} W^{-0.067} (1 - 0.61 e^{-0.73\kappa}),\qquad
+        h_{min} = 3.63\, R_x U^{0.68} G^{0.49} W^{-0.073} (1 - e^{-0.68\kappa})
+
+    Fitted for κ ≈ 1–8, isothermal, Newtonian, fully flooded, smooth surfaces [1]_.
     Requires alpha_p > 0 (G = 0 would give a zero film, which is not the
     iso-viscous answer — use method="nvm").
 
+    References
+    ----------
+    .. [1] Hamrock B. J., Dowson D. (1977) Isothermal elastohydrodynamic lubrication of point
+           contacts, Part III. J. Lubr. Technol. 99, 264–276.
+
     Examples
     --------
+    Inner contact of a 209 bearing (Hamrock & Dowson's example inputs, 400 rad/s):
+
     >>> h = film_thickness(4527., 5.109e-3, 165.1e-3, 6.25, 0.04, 2.3e-8, 228e9, kind="central")
     >>> round(h * 1e6, 2)
     0.69
+    >>> [round(v * 1e6, 2) for v in film_thickness(4527., 5.109e-3, 165.1e-3, 6.25, 0.04, 2.3e-8, 228e9,
+    ...                                            kind=("min", "central"))]
+    [0.55, 0.69]
     """
-    if kind not in ("min", "central"):
-        raise InputError("film_thickness kind", kind, 'must be "min" or "central"')
+    kinds = kind if isinstance(kind, tuple) else (kind,)
+    if not kinds or any(k not in _FILM_KINDS for k in kinds):
+        raise InputError("film_thickness kind", kind, 'must be "min" or "central" (or a tuple of them)')
     if method == "nvm":
-        if kind != "central":
+        if kinds != ("central",):
             raise InputError("film_thickness method", method, 'NVM gives the central film only: use kind="central"')
         return film_thickness_nvm(Q, Rx, Ry, u, eta, alpha_p, E_prime)
     if method not in ("hamrock_dowson", "seed000_eq15"):
         raise InputError("film_thickness method", method, 'must be "hamrock_dowson", "nvm" or "seed000_eq15"')
-    if method == "seed000_eq15" and kind != "min":
+    if method == "seed000_eq15" and kinds != ("min",):
         raise InputError("film_thickness method", method, 'seed 000 eq 15 is a minimum film: use kind="min"')
-    args = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, True)
-    Qa, Rxa, Rya, ua, etaa, alphaa, Ea = args
-    loaded = Qa > 0
-    U = etaa * ua / (Ea * Rxa)
-    G = alphaa * Ea
-    W = np.where(loaded, Qa, 1.0) / (Ea * Rxa**2)
-    ratio = Rya / Rxa
-    kappa = 1.0339 * ratio**0.636
-    if kind == "central":
-        H = 2.69 * U**0.67 * G**0.53 * W**-0.067 * (1.0 - 0.61 * np.exp(-0.73 * kappa))
-    elif method == "seed000_eq15":
-        H = 3.63 * U**0.68 * G**0.49 * W**-0.073 * (1.0 - 0.61 * np.exp(-0.68 * ratio))
-    else:
-        H = 3.63 * U**0.68 * G**0.49 * W**-0.073 * (1.0 - np.exp(-0.68 * kappa))
-    return _out(np.where(loaded, H * Rxa, 0.0), Q, Rx, Ry, u, eta, alpha_p, E_prime)
+    h = ehl_contacts(Q, Rx, Ry, u, E_prime).film_thickness(eta, alpha_p, kind, method)
+    if not _scalar(Q, Rx, Ry, u, eta, alpha_p, E_prime):
+        return h
+    return tuple(float(v) for v in h) if isinstance(kind, tuple) else float(h)
 
 
 # ---------------------------------------------------------------------------
@@ -206,7 +338,7 @@ def moes_parameters(Q, Rx, Ry, u, eta, alpha_p, E_prime):
     Notes
     -----
     Moes (1992); Nijenbanning, Venner & Moes, Wear 176 (1994) 217; seed 004
-    eq 9 (with 2U*); PHYSICS.md §5.2.  U, G, W are the Hamrock groups of
+    eq 9 (with 2U*).  U, G, W are the Hamrock groups of
     :func:`hamrock_dowson_groups`, so 2U is the sum-velocity group.  M = inf
     where u = 0, M = 0 where Q = 0.
 
@@ -216,189 +348,15 @@ def moes_parameters(Q, Rx, Ry, u, eta, alpha_p, E_prime):
     >>> round(M), round(L, 1), round(D, 4)
     (8066, 23.9, 0.0309)
     """
-    Qa, Rxa, Rya, ua, etaa, alphaa, Ea = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
+    Qa, Rxa, ratio, ua, etaa, alphaa, Ea = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
+    Qa, Rxa, ratio, ua, etaa, alphaa, Ea = np.broadcast_arrays(Qa, Rxa, ratio, ua, etaa, alphaa, Ea)
     U2 = 2.0 * etaa * ua / (Ea * Rxa)
     W = Qa / (Ea * Rxa**2)
     moving = U2 > 0
     M = np.where(moving, W * np.where(moving, U2, 1.0) ** -0.75, np.where(Qa > 0, np.inf, 0.0))
     L = alphaa * Ea * U2**0.25
-    D = Rxa / Rya
+    D = 1.0 / ratio
     return tuple(_out(x, Q, Rx, Ry, u, eta, alpha_p, E_prime) for x in (M, L, D))
-
-
-def moes_N(M, D):
-    r"""Seed 004's load parameter N = M D^(1/2) = W (2U)^(-3/4) λ^(1/2), λ = Rx/Ry.
-
-    Parameters
-    ----------
-    M : array_like  Moes load parameter [-]
-    D : array_like  Rx/Ry (seed 004's λ) [-]
-
-    Returns
-    -------
-    ndarray  N [-]
-
-    Notes
-    -----
-    Seed 004 eq 9 prints N = W* (2U*)^(3/4) λ^(1/2); the exponent of 2U* must
-    be −3/4 (a minus sign lost in the text): N is used as a load parameter in
-    the Biboulet PVR transition N/6.6 (seed 004 eq 19), which seed 000 eq 23
-    writes M = 0.5549 k^-0.6029 W U^-0.75 — load over a power of speed.  With
-    +3/4 N would grow with speed.
-
-    Examples
-    --------
-    >>> round(moes_N(8064.0, 0.0309), 1)
-    1417.5
-    """
-    return _out(np.asarray(M, dtype=float) * np.sqrt(np.asarray(D, dtype=float)), M, D)
-
-
-def nvm_ln_asymptote_consts(D):
-    """The D-dependent parts of the logs of the NVM asymptotes (Nijenbanning, Venner & Moes 1994):
-    (c_RI, c_EI, c_RP, c_EP, ln h00) with ln H_RI = c_RI − 2 ln M, ln H_EI = c_EI − (2/15) ln M,
-    ln H_RP = c_RP + (2/3) ln L, ln H_EP = c_EP − ln M/12 + (3/4) ln L.  Split off so that a caller
-    evaluating many temperatures at one geometry (:func:`thermobear.losses.evaluate_losses`)
-    computes them once; :func:`_ln_asymptotes` adds the M, L terms in the same order (same bits)."""
-    lnD = np.log(D)
-    e = np.log1p(0.006 * lnD + 0.63 * D ** (4.0 / 7.0))
-    c_RI = np.log(145.0) - (15.0 / 7.0) * np.log1p(0.796 * D ** (14.0 / 15.0)) - lnD
-    c_EI = np.log(3.18) - (14.0 / 25.0) * e - lnD / 15.0
-    c_RP = np.log(1.29) - (2.0 / 3.0) * np.log1p(0.691 * D)
-    c_EP = np.log(1.48) - (7.0 / 20.0) * e - lnD / 24.0
-    ln_h00 = np.log(1.8) - lnD
-    return c_RI, c_EI, c_RP, c_EP, ln_h00
-
-
-_ln_asymptote_consts = nvm_ln_asymptote_consts      # former private name (thermobear.losses.local imports it)
-
-
-def _ln_asymptotes_from(consts, lnM, lnL):
-    """Logs of the four NVM asymptotes and of h00 from :func:`_ln_asymptote_consts` and ln M, ln L."""
-    c_RI, c_EI, c_RP, c_EP, ln_h00 = consts
-    return (c_RI - 2.0 * lnM, c_EI - (2.0 / 15.0) * lnM, c_RP + (2.0 / 3.0) * lnL,
-            c_EP - lnM / 12.0 + 0.75 * lnL, ln_h00)
-
-
-def _ln_asymptotes(lnM, lnL, D):
-    """Natural logs of the four NVM asymptotes and of the h00 cap (PHYSICS.md §5.2)."""
-    return _ln_asymptotes_from(_ln_asymptote_consts(D), lnM, lnL)
-
-
-def _ln_blend_ratios(ln_RI, ln_EI, ln_RP, ln_EP, ln_h00):
-    """(ln iso − ln piezo, ln H_RI − ln H_EI, ln H_EP − ln H_RP): the dominance ratios of the NVM
-    blend whose signs decide the regime (see :func:`moes_regime`), in logs."""
-    ln_EIc = -0.25 * np.logaddexp(-4.0 * ln_EI, -4.0 * ln_h00)
-    ln_iso = (2.0 / 3.0) * np.logaddexp(1.5 * ln_RI, 1.5 * ln_EIc)
-    ln_piezo = -0.125 * np.logaddexp(-8.0 * ln_RP, -8.0 * ln_EP)
-    return ln_iso - ln_piezo, ln_RI - ln_EI, ln_EP - ln_RP
-
-
-def _ln_branches(lnM, lnL, D):
-    ln_RI, ln_EI, ln_RP, ln_EP, ln_h00 = _ln_asymptotes(lnM, lnL, D)
-    ln_EIc = -0.25 * np.logaddexp(-4.0 * ln_EI, -4.0 * ln_h00)          # (H_EI^-4 + h00^-4)^(-1/4)
-    ln_iso = (2.0 / 3.0) * np.logaddexp(1.5 * ln_RI, 1.5 * ln_EIc)      # (H_RI^1.5 + H_EI'^1.5)^(2/3)
-    ln_piezo = -0.125 * np.logaddexp(-8.0 * ln_RP, -8.0 * ln_EP)        # (H_RP^-8 + H_EP^-8)^(-1/8)
-    s = 1.5 * (1.0 + np.exp(-1.2 * np.exp(np.clip(ln_EI - ln_RI, -_EXP_MAX, _EXP_MAX))))
-    ln_H = np.logaddexp(s * ln_iso, s * ln_piezo) / s
-    return ln_H, ln_iso, ln_piezo, ln_RI, ln_EI, ln_RP, ln_EP
-
-
-def _lnML(M, L):
-    M = np.asarray(M, dtype=float)
-    L = np.asarray(L, dtype=float)
-    lnM = np.log(np.clip(M, _TINY, 1.0 / _TINY))
-    lnL = np.log(np.clip(L, _TINY, 1.0 / _TINY))
-    return lnM, lnL
-
-
-def _check_MLD(M, L, D):
-    M = _arr("M", np.where(np.isposinf(np.asarray(M, dtype=float)), 1.0 / _TINY, M), nonneg=True)
-    L = _arr("L", L, nonneg=True)
-    D = _arr("D", D, positive=True)
-    if np.any(D > 1.0 + 1e-12):
-        raise InputError("D = Rx/Ry", D, "must lie in (0, 1]")
-    return M, L, D
-
-
-@dataclass(frozen=True)
-class _Asym:
-    H_RI: np.ndarray
-    H_EI: np.ndarray
-    H_RP: np.ndarray
-    H_EP: np.ndarray
-
-
-def nvm_asymptotes(M, L, D):
-    r"""The four asymptotic central films of Nijenbanning, Venner & Moes (1994).
-
-    Parameters
-    ----------
-    M, L : array_like  Moes load and lubricant parameters [-]
-    D : array_like     Rx/Ry [-]
-
-    Returns
-    -------
-    object with H_RI, H_EI, H_RP, H_EP [-]  (H = (h/Rx)(2U)^(-1/2)):
-        H_RI = 145 (1 + 0.796 D^(14/15))^(-15/7) D^-1 M^-2
-        H_EI = 3.18 (1 + 0.006 ln D + 0.63 D^(4/7))^(-14/25) D^(-1/15) M^(-2/15)
-        H_RP = 1.29 (1 + 0.691 D)^(-2/3) L^(2/3)
-        H_EP = 1.48 (1 + 0.006 ln D + 0.63 D^(4/7))^(-7/20) D^(-1/24) M^(-1/12) L^(3/4)
-
-    Notes
-    -----
-    Nijenbanning, Venner & Moes, Wear 176 (1994) 217–229, coefficients as in
-    PHYSICS.md §5.2 (confirmed there against a public implementation).
-
-    Examples
-    --------
-    >>> a = nvm_asymptotes(8064.0, 23.9, 0.0309)
-    >>> round(float(a.H_EP), 2)
-    8.55
-    """
-    M, L, D = _check_MLD(M, L, D)
-    lnM, lnL = _lnML(M, L)
-    ln = _ln_asymptotes(lnM, lnL, D)[:4]
-    vals = [np.exp(np.clip(x, -_EXP_MAX, _EXP_MAX)) for x in ln]
-    return _Asym(*[_out(v, M, L, D) for v in vals])
-
-
-def nvm_H(M, L, D):
-    r"""Dimensionless central film H = (h_c/Rx)(2U)^(-1/2) of Nijenbanning, Venner & Moes.
-
-    Parameters
-    ----------
-    M, L : array_like  Moes load and lubricant parameters [-] (see :func:`moes_parameters`)
-    D : array_like     Rx/Ry, 0 < D ≤ 1 [-]
-
-    Returns
-    -------
-    ndarray  H [-]
-
-    Notes
-    -----
-    H = { [H_RI^(3/2) + (H_EI^-4 + h00^-4)^(-3/8)]^(2s/3) + (H_RP^-8 + H_EP^-8)^(-s/8) }^(1/s),
-    s = 1.5 (1 + exp(−1.2 H_EI/H_RI)),  h00 = 1.8 D^-1
-    (Nijenbanning, Venner & Moes 1994; asymptotes in :func:`nvm_asymptotes`).
-
-    Form implemented: the dimensionally consistent one of PHYSICS.md §5.2, in
-    which both branches enter as H^s (the point-contact analogue of Moes'
-    line-contact blend (iso^s + piezo^s)^(1/s)).  A public implementation
-    raises the iso branch to 2/(3s) instead of 2s/3, which adds H to H^s; it
-    cannot be right at both ends (at low M it does not tend to H_RI).  The two
-    agree where the piezo branch dominates (209 inner contact: 8.65 vs 8.63).
-    The original paper could not be consulted here.  Computed in logarithms
-    so that M → 0 or ∞ gives no overflow.
-
-    Examples
-    --------
-    >>> round(float(nvm_H(8064.0, 23.9, 0.0309)), 2)
-    8.65
-    """
-    M, L, D = _check_MLD(M, L, D)
-    lnM, lnL = _lnML(M, L)
-    ln_H = _ln_branches(lnM, lnL, D)[0]
-    return _out(np.exp(np.clip(ln_H, -_EXP_MAX, _EXP_MAX)), M, L, D)
 
 
 def film_thickness_nvm(Q, Rx, Ry, u, eta, alpha_p, E_prime):
@@ -418,7 +376,7 @@ def film_thickness_nvm(Q, Rx, Ry, u, eta, alpha_p, E_prime):
     -----
     Valid over all four regimes (IVR, IVE, PVR, EHL), unlike Hamrock–Dowson.
     For narrow ellipses (D ≈ 0.03) NVM gives 20–30 % more than Hamrock–Dowson
-    (PHYSICS.md §5.2: 209 inner contact 0.92 vs 0.69 µm).
+    (209 inner contact, Hamrock & Dowson's example inputs: 0.92 vs 0.69 µm).
 
     Examples
     --------
@@ -426,17 +384,16 @@ def film_thickness_nvm(Q, Rx, Ry, u, eta, alpha_p, E_prime):
     >>> round(h * 1e6, 2)
     0.92
     """
-    Qa, Rxa, Rya, ua, etaa, alphaa, Ea = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
+    Qa, Rxa, ratio, ua, etaa, alphaa, Ea = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
     U2 = 2.0 * etaa * ua / (Ea * Rxa)
     W = Qa / (Ea * Rxa**2)
     ok = (U2 > 0) & (Qa > 0)
     lnU2 = np.log(np.where(ok, U2, 1.0))
     lnM = np.log(np.where(ok, W, 1.0)) - 0.75 * lnU2
-    lnL = np.log(np.clip(alphaa * Ea, _TINY, None)) + 0.25 * lnU2
-    D = Rxa / Rya
-    ln_H = _ln_branches(lnM, lnL, D)[0]
+    lnL = np.log(np.maximum(alphaa * Ea, TINY)) + 0.25 * lnU2
+    ln_H = _ln_branches(lnM, lnL, 1.0 / ratio)[0]
     ln_h = np.where(ok, ln_H + np.log(Rxa) + 0.5 * lnU2, 0.0)
-    return _out(np.where(ok, np.exp(np.clip(ln_h, -_EXP_MAX, _EXP_MAX)), 0.0),
+    return _out(np.where(ok, np.exp(_clip(ln_h, -EXP_MAX, EXP_MAX)), 0.0),
                 Q, Rx, Ry, u, eta, alpha_p, E_prime)
 
 
@@ -453,7 +410,7 @@ def composite_roughness(Rq1, Rq2):
     """
     a = _arr("Rq1", Rq1, nonneg=True)
     b = _arr("Rq2", Rq2, nonneg=True)
-    return _out(np.hypot(a, b), Rq1, Rq2)
+    return np.hypot(a, b).item() if type(a) is float and type(b) is float else _out(np.hypot(a, b), Rq1, Rq2)
 
 
 def specific_film_thickness(h, Rq1, Rq2):
@@ -470,7 +427,7 @@ def specific_film_thickness(h, Rq1, Rq2):
 
     Notes
     -----
-    Seed 000 eq 19; PHYSICS.md §5.4.  Both roughnesses zero raises InputError
+    Seed 000 eq 19 (Λ with the RMS roughness Rq, not Ra).  Both roughnesses zero raises InputError
     (Λ undefined for ideally smooth surfaces).
 
     Examples
@@ -479,100 +436,15 @@ def specific_film_thickness(h, Rq1, Rq2):
     1.42
     """
     h = _arr("h", h, nonneg=True)
-    sigma = np.asarray(composite_roughness(Rq1, Rq2), dtype=float)
-    if np.any(sigma <= 0):
+    sigma = composite_roughness(Rq1, Rq2)
+    if not (np.min(sigma) if np.ndim(sigma) else sigma) > 0:
         raise InputError("Rq1, Rq2", (Rq1, Rq2), "composite roughness must be > 0 [m] (Lambda undefined for smooth surfaces)")
-    return _out(h / sigma, h, Rq1, Rq2)
+    return h / sigma if isinstance(h, np.ndarray) and h.ndim else _out(h / sigma, Rq1, Rq2)
 
 
 # ---------------------------------------------------------------------------
 # Regime
 # ---------------------------------------------------------------------------
-@dataclass(frozen=True)
-class Regime:
-    """Lubrication regime per contact (arrays broadcast from the inputs).
-
-    Attributes
-    ----------
-    code : ndarray of str    "IVR" | "IVE" | "PVR" | "EHL"
-    iso_over_piezo : ndarray iso branch / piezo branch of the NVM blend [-];
-                             > 1 → iso-viscous (IVR or IVE), < 1 → piezo-viscous
-    RI_over_EI : ndarray     H_RI / H_EI (iso asymptotes) [-]; > 1 → rigid (IVR)
-    EP_over_RP : ndarray     H_EP / H_RP (piezo branch) [-]; > 1 → rigid (PVR)
-    M, L, D : ndarray        Moes parameters used [-]
-    H : ndarray              NVM dimensionless central film [-]
-
-    A ratio near 1 means the contact sits near that boundary of the Moes map;
-    |log10(ratio)| is the distance in decades.  An unloaded contact (Q = 0)
-    has code "IVR" and M = 0; its ratios and H are finite but floored values
-    (1e±304 at most) with no physical meaning.
-    """
-
-    code: np.ndarray
-    iso_over_piezo: np.ndarray
-    RI_over_EI: np.ndarray
-    EP_over_RP: np.ndarray
-    M: np.ndarray
-    L: np.ndarray
-    D: np.ndarray
-    H: np.ndarray
-
-
-def _regime_from_ln(lnM, lnL, D, unloaded, scalar):
-    ln_H, ln_iso, ln_piezo, ln_RI, ln_EI, ln_RP, ln_EP = _ln_branches(lnM, lnL, D)
-    iso = ln_iso >= ln_piezo
-    rigid_iso = ln_RI >= ln_EI
-    rigid_piezo = ln_RP <= ln_EP
-    code = np.where(iso, np.where(rigid_iso, "IVR", "IVE"), np.where(rigid_piezo, "PVR", "EHL"))
-    code = np.where(unloaded, "IVR", code)
-
-    def ex(x):
-        return np.exp(np.clip(x, -_EXP_MAX, _EXP_MAX))
-
-    fields = (ex(ln_iso - ln_piezo), ex(ln_RI - ln_EI), ex(ln_EP - ln_RP),
-              np.where(unloaded, 0.0, ex(lnM)), ex(lnL),
-              np.asarray(D, dtype=float), ex(ln_H))
-    if scalar:
-        return Regime(str(code), *[float(f) for f in fields])
-    return Regime(np.asarray(code, dtype="<U3"), *[np.asarray(f, dtype=float) for f in fields])
-
-
-def moes_regime(M, L, D):
-    r"""Lubrication regime on the Moes map from M, L and D = Rx/Ry.
-
-    Parameters
-    ----------
-    M, L : array_like  Moes load and lubricant parameters [-] (M = inf allowed: u → 0)
-    D : array_like     Rx/Ry, 0 < D ≤ 1 [-]
-
-    Returns
-    -------
-    Regime  codes and the dominant-term ratios
-
-    Notes
-    -----
-    Dominant term of the NVM blend (PHYSICS.md §5.3; seed 004 §3.2, which
-    rebuilds the Moes map from the asymptotes "as explained in [27]"):
-    iso-viscous if the iso branch (H_RI^1.5 + H_EI'^1.5)^(2/3) exceeds the
-    piezo branch (H_RP^-8 + H_EP^-8)^(-1/8) (H_EI' = (H_EI^-4 + h00^-4)^(-1/4));
-    within the iso branch rigid if H_RI > H_EI (where the two asymptotes
-    cross, as a Moes map draws them; the blending cap h00 is not used here);
-    within the piezo branch rigid if H_RP < H_EP.  These cut-offs are
-    derived, not published.
-
-    Examples
-    --------
-    >>> moes_regime(8064.0, 23.9, 0.0309).code
-    'EHL'
-    >>> moes_regime([1.0, 1e4], [0.5, 20.0], 0.05).code.tolist()
-    ['IVR', 'EHL']
-    """
-    scalar = all(np.ndim(x) == 0 for x in (M, L, D))
-    M, L, D = _check_MLD(M, L, D)
-    lnM, lnL = _lnML(M, L)
-    return _regime_from_ln(lnM, lnL, D, M <= 0, scalar)
-
-
 def lubrication_regime(Q, Rx, Ry, u, eta, alpha_p, E_prime):
     r"""Lubrication regime of each contact ("IVR" | "IVE" | "PVR" | "EHL").
 
@@ -596,95 +468,8 @@ def lubrication_regime(Q, Rx, Ry, u, eta, alpha_p, E_prime):
     >>> lubrication_regime([4527., 1e-3], 5.109e-3, 165.1e-3, 6.25, 0.04, 2.3e-8, 228e9).code.tolist()
     ['EHL', 'IVR']
     """
-    Qa, Rxa, Rya, ua, etaa, alphaa, Ea = _contact(Q, Rx, Ry, u, eta, alpha_p, E_prime, False)
-    lnU2 = np.log(np.clip(2.0 * etaa * ua / (Ea * Rxa), _TINY, None))
-    lnM = np.log(np.clip(Qa / (Ea * Rxa**2), _TINY, None)) - 0.75 * lnU2
-    lnL = np.log(np.clip(alphaa * Ea, _TINY, None)) + 0.25 * lnU2
-    scalar = all(np.ndim(x) == 0 for x in (Q, Rx, Ry, u, eta, alpha_p, E_prime))
-    return _regime_from_ln(lnM, lnL, Rxa / Rya, Qa <= 0, scalar)
-
-
-# ---------------------------------------------------------------------------
-# Moes map boundaries
-# ---------------------------------------------------------------------------
-@dataclass(frozen=True)
-class MoesMapBoundaries:
-    """Regime boundaries on the (M, L) Moes map for one D = Rx/Ry.
-
-    Attributes
-    ----------
-    D : float                     Rx/Ry [-]
-    M : ndarray                   grid of M [-]
-    L_iso_piezo : ndarray         L where iso branch = piezo branch, at each M
-                                  (below: iso-viscous, above: piezo-viscous)
-    M_rigid_elastic_iso : float   M where H_RI = H_EI (left: IVR, right: IVE);
-                                  meaningful below L_iso_piezo
-    L_rigid_elastic_piezo : ndarray  L where H_RP = H_EP, at each M
-                                  (L = M (C_RP/C_EP)^12; above: PVR, below: EHL);
-                                  meaningful above L_iso_piezo
-    """
-
-    D: float
-    M: np.ndarray
-    L_iso_piezo: np.ndarray
-    M_rigid_elastic_iso: float
-    L_rigid_elastic_piezo: np.ndarray
-
-
-def moes_map_boundaries(D, M=None):
-    r"""Boundary curves of the Moes regime map for plotting.
-
-    Parameters
-    ----------
-    D : float          Rx/Ry, 0 < D ≤ 1 [-]
-    M : array_like     values of M at which to give the curves [-]
-                       (default: 200 points log-spaced over 1e-1 … 1e5)
-
-    Returns
-    -------
-    MoesMapBoundaries
-
-    Notes
-    -----
-    Same criteria as :func:`moes_regime`.  H_RP = H_EP is explicit:
-    ln L = 12 (ln C_RP − ln C_EP) + ln M.  H_RI = H_EI is a root in M found by
-    bisection on ln M; iso = piezo is found for all M at once by a vectorised
-    bisection on ln L (the piezo branch increases monotonically with L).
-    Computed here: D = 1 → M ≈ 4.6 and M ≈ 45 L; D = 0.1 → 23 and 15 L
-    (PHYSICS.md §5.3).
-
-    Examples
-    --------
-    >>> b = moes_map_boundaries(1.0, M=[100.0])
-    >>> round(b.M_rigid_elastic_iso, 1), round(float(100.0 / b.L_rigid_elastic_piezo[0]), 1)
-    (4.6, 44.7)
-    """
-    D = float(D)
-    if not (np.isfinite(D) and 0.0 < D <= 1.0):
-        raise InputError("D = Rx/Ry", D, "must lie in (0, 1]")
-    M = np.logspace(-1, 5, 200) if M is None else _arr("M", M, positive=True)
-    lnM = np.log(M)
-    lnCRP = np.log(1.29) - (2.0 / 3.0) * np.log1p(0.691 * D)
-    lnCEP = np.log(1.48) - (7.0 / 20.0) * np.log1p(0.006 * np.log(D) + 0.63 * D ** (4.0 / 7.0)) - np.log(D) / 24.0
-    L_re_piezo = np.exp(12.0 * (lnCRP - lnCEP) + lnM)
-
-    # H_RI = H_EI : g(lnM) = ln_RI - ln_EI, strictly decreasing in lnM
-    lo, hi = np.array(-60.0), np.array(60.0)
-    for _ in range(100):
-        mid = 0.5 * (lo + hi)
-        ln = _ln_branches(mid, np.array(0.0), D)
-        g = ln[3] - ln[4]
-        lo, hi = np.where(g > 0, mid, lo), np.where(g > 0, hi, mid)
-    M_re_iso = float(np.exp(0.5 * (lo + hi)))
-
-    # iso = piezo : for each M, bisection on lnL of ln_piezo - ln_iso (increasing in lnL)
-    lo = np.full_like(lnM, -60.0)
-    hi = np.full_like(lnM, 60.0)
-    for _ in range(100):
-        mid = 0.5 * (lo + hi)
-        ln = _ln_branches(lnM, mid, D)
-        f = ln[2] - ln[1]
-        lo, hi = np.where(f < 0, mid, lo), np.where(f < 0, hi, mid)
-    L_iso_piezo = np.exp(0.5 * (lo + hi))
-    return MoesMapBoundaries(D=D, M=M, L_iso_piezo=L_iso_piezo, M_rigid_elastic_iso=M_re_iso,
-                             L_rigid_elastic_piezo=L_re_piezo)
+    r = ehl_contacts(Q, Rx, Ry, u, E_prime).regime(eta, alpha_p)
+    if not _scalar(Q, Rx, Ry, u, eta, alpha_p, E_prime):
+        return r
+    return Regime(str(r.code), *(float(getattr(r, f)) for f in ("ln_iso_over_piezo", "ln_RI_over_EI",
+                                                                "ln_EP_over_RP", "M", "L", "D")), int(r.index))

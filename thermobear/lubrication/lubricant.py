@@ -2,7 +2,7 @@ r"""Lubricants: viscosity–temperature (ASTM D341), density, pressure–viscosi
 
 A :class:`Lubricant` is an oil, or a grease described by its base oil (every
 film, rolling-force and SKF formula uses the base-oil properties: seed 000 §3,
-seed 002 §4.3, PHYSICS.md §6).  Temperatures at the interface are in °C
+seed 002 §4.3; SKF 2004).  Temperatures at the interface are in °C
 (names end in ``_C``); everything else is SI except the kinematic viscosity,
 returned in cSt (= mm²/s) because every correlation that uses it (Walther,
 Gold, SKF) is written in cSt.
@@ -28,14 +28,14 @@ Data: ``materials/lubricants/<name>.toml`` (see :func:`lubricant_names`).
 from __future__ import annotations
 
 import math
-import warnings
 
 import numpy as np
 
-from thermobear.arrays import finite_range
 
 from thermobear.files import data_dir, lookup, names_in
-from thermobear.errors import ExtrapolationWarning, InputError, OutsideValidity
+from thermobear.errors import ExtrapolationWarning, InputError
+from thermobear.schema import Field, check_table
+from thermobear.validity import T_LUBRICANT_REFUSE_C, T_LUBRICANT_WARN_C, check as check_limit
 from thermobear.units import ZERO_C_K
 
 __all__ = [
@@ -45,21 +45,26 @@ __all__ = [
     "T_WARN_C", "T_VALID_C",
 ]
 
-#: Temperatures [°C] outside which a lubricant property is an extrapolation
-#: (ExtrapolationWarning).  ASTM D341 is a two-point fit at 40/100 °C; the
-#: standard's charts span about -20...150 °C for mineral oils and the Cragoe /
-#: API correlations were fitted over a similar band.
-T_WARN_C = (-20.0, 150.0)
-#: Temperatures [°C] outside which thermobear refuses (OutsideValidity): below
-#: -60 °C mineral oils are near or past their pour point (wax, glass) and above
-#: 250 °C past the flash point of typical bearing oils; Walther's law has no
-#: meaning there.
-T_VALID_C = (-60.0, 250.0)
+#: Temperatures [°C] outside which a lubricant property is an extrapolation (ExtrapolationWarning)
+#: and outside which thermobear refuses (InputError): :data:`thermobear.validity.LIMITS` ["lubricant_T"].
+T_WARN_C = T_LUBRICANT_WARN_C
+T_VALID_C = T_LUBRICANT_REFUSE_C
 
 _T40_K = 40.0 + ZERO_C_K
 _T100_K = 100.0 + ZERO_C_K
 _RHO_WATER_15_KG_M3 = 999.0   # water at 60 °F (15.56 °C), for the specific gravity d in Cragoe's forms
 _K1_API_LUBE = 0.34878 * 1.8  # kg/(m^3 K): API MPMS 11.1 lubricating-oil K1 = 0.34878 (per °F), x 1.8 per K
+
+
+def _xp(x):
+    """The module whose exp/log10 the formulas below use: ``math`` for one Python float (the thermal
+    elements ask for one temperature at a time), numpy otherwise — one formula for both."""
+    return math if type(x) is float else np
+
+
+def _num(x):
+    """``x`` unchanged if a Python float, else as a float array."""
+    return x if type(x) is float else np.asarray(x, dtype=float)
 
 
 # ---------------------------------------------------------------------------
@@ -78,16 +83,15 @@ def walther_Z(nu_cSt):
 
     Notes
     -----
-    ASTM D341-09 eq (2) (PHYSICS.md §6).  The exponential correction matters
-    only below about 2 cSt.
+    ASTM D341-09 eq (2).  The exponential correction matters only below about 2 cSt.
 
     Examples
     --------
     >>> round(float(walther_Z(10.0)), 12)
     10.7
     """
-    nu = np.asarray(nu_cSt, dtype=float)
-    return nu + 0.7 + np.exp(-1.47 - 1.84 * nu - 0.51 * nu**2)
+    nu = _num(nu_cSt)
+    return nu + 0.7 + _xp(nu).exp(-1.47 - 1.84 * nu - 0.51 * nu**2)
 
 
 def walther_nu_from_Z(Z):
@@ -106,8 +110,8 @@ def walther_nu_from_Z(Z):
     >>> round(float(walther_nu_from_Z(walther_Z(1.5))), 3)
     1.5
     """
-    x = np.asarray(Z, dtype=float) - 0.7
-    return x - np.exp(-0.7487 - 3.295 * x + 0.6119 * x**2 - 0.3193 * x**3)
+    x = _num(Z) - 0.7
+    return x - _xp(x).exp(-0.7487 - 3.295 * x + 0.6119 * x**2 - 0.3193 * x**3)
 
 
 def walther_fit(nu1_cSt, T1_K, nu2_cSt, T2_K):
@@ -125,7 +129,7 @@ def walther_fit(nu1_cSt, T1_K, nu2_cSt, T2_K):
     Notes
     -----
     B = [log log Z1 − log log Z2] / [log T2 − log T1],  A = log log Z1 + B log T1
-    (ASTM D341; PHYSICS.md §6).  Typical B ≈ 3–4 for mineral oils.
+    (ASTM D341-09).  Typical B ≈ 3–4 for mineral oils.
 
     Examples
     --------
@@ -158,7 +162,8 @@ def walther_nu(A, B, T_K):
     >>> round(float(walther_nu(A, B, 333.15)), 2)
     19.51
     """
-    Z = 10.0 ** (10.0 ** (A - B * np.log10(np.asarray(T_K, dtype=float))))
+    T = _num(T_K)
+    Z = 10.0 ** (10.0 ** (A - B * _xp(T).log10(T)))
     return walther_nu_from_Z(Z)
 
 
@@ -184,8 +189,8 @@ def density_api(rho15, T_C, K1=_K1_API_LUBE):
     -----
     API MPMS ch. 11.1 (2004) / ASTM D1250-04, lubricating-oil commodity group;
     the standard's base is 60 °F = 15.56 °C, taken here as 15 °C (0.04 %
-    density difference).  a ≈ 7.3e-4 1/K at 865 kg/m³, inside PHYSICS.md §6's
-    6.5–7.5e-4 1/K for mineral oils.  Used also for synthetic base oils
+    density difference).  a ≈ 7.3e-4 1/K at 865 kg/m³, inside the 6.5–7.5e-4 1/K typical of
+    mineral oils.  Used also for synthetic base oils
     (estimated; esters and PAO have similar volumetric expansion).
 
     Examples
@@ -193,10 +198,10 @@ def density_api(rho15, T_C, K1=_K1_API_LUBE):
     >>> round(float(density_api(864.6, 40.0)), 1)
     848.8
     """
-    rho15 = np.asarray(rho15, dtype=float)
+    rho15 = _num(rho15)
     a = K1 / rho15
-    dT = np.asarray(T_C, dtype=float) - 15.0
-    return rho15 * np.exp(-a * dT * (1.0 + 0.8 * a * dT))
+    dT = _num(T_C) - 15.0
+    return rho15 * _xp(dT).exp(-a * dT * (1.0 + 0.8 * a * dT))
 
 
 def gold_alpha_p(nu_cSt, s, t):
@@ -224,7 +229,7 @@ def gold_alpha_p(nu_cSt, s, t):
     >>> round(float(gold_alpha_p(230.0, 9.90, 0.14)) * 1e9, 2)
     21.2
     """
-    return s * np.asarray(nu_cSt, dtype=float) ** t * 1e-9
+    return s * _num(nu_cSt) ** t * 1e-9
 
 
 def cragoe_k_th(rho15, T_C):
@@ -251,8 +256,8 @@ def cragoe_k_th(rho15, T_C):
     >>> round(float(cragoe_k_th(864.6, 40.0)), 4)
     0.1325
     """
-    d = np.asarray(rho15, dtype=float) / _RHO_WATER_15_KG_M3
-    return 0.117257 / d * (1.0 - 0.00054 * np.asarray(T_C, dtype=float))
+    d = _num(rho15) / _RHO_WATER_15_KG_M3
+    return 0.117257 / d * (1.0 - 0.00054 * _num(T_C))
 
 
 def cragoe_cp(rho15, T_C):
@@ -271,16 +276,16 @@ def cragoe_cp(rho15, T_C):
     -----
     Cragoe (1929, US Bureau of Standards Misc. Publ. 97):
     c = (0.388 + 0.00045 t)/√d Btu/(lb °F), t in °F, converted to SI.  The
-    Btu form is quoted in public engineering forums; PHYSICS.md §8 gives
-    1.9–2.1 kJ/(kg K) for mineral oils, which this reproduces at 20–90 °C.
+    Btu form is quoted in public engineering forums; it gives the 1.9–2.1 kJ/(kg K) typical of
+    mineral oils at 20–90 °C.
 
     Examples
     --------
     >>> round(float(cragoe_cp(864.6, 40.0)))
     1957
     """
-    d = np.asarray(rho15, dtype=float) / _RHO_WATER_15_KG_M3
-    return (1684.8 + 3.391 * np.asarray(T_C, dtype=float)) / np.sqrt(d)
+    d = _num(rho15) / _RHO_WATER_15_KG_M3
+    return (1684.8 + 3.391 * _num(T_C)) / _xp(d).sqrt(d)
 
 
 # ---------------------------------------------------------------------------
@@ -288,12 +293,14 @@ def cragoe_cp(rho15, T_C):
 # ---------------------------------------------------------------------------
 def _out(x, like):
     """Return a float for scalar input, else an ndarray."""
+    if type(x) is float:
+        return x
     return float(x) if np.ndim(like) == 0 else np.asarray(x, dtype=float)
 
 
 def _plain(T_C) -> bool:
     """True for one temperature [°C] as a Python or numpy float inside T_WARN_C (no check, warning or
-    error to give: the scalar fast path of :class:`Lubricant` applies)."""
+    error to give: :class:`Lubricant` evaluates its formulas on the Python float)."""
     return type(T_C) in (float, np.float64) and T_WARN_C[0] <= T_C <= T_WARN_C[1]
 
 
@@ -327,7 +334,7 @@ class Lubricant:
     Notes
     -----
     Temperatures outside T_WARN_C = (-20, 150) °C give an ExtrapolationWarning,
-    outside T_VALID_C = (-60, 250) °C an OutsideValidity error.
+    outside T_VALID_C = (-40, 250) °C an InputError.
 
     Examples
     --------
@@ -403,7 +410,7 @@ class Lubricant:
         name = kw.get("name", "custom")
         eta = _positive(f"lubricant[{name}].eta_Pa_s", eta_Pa_s)
         if not np.isfinite(T_C) or not T_VALID_C[0] <= T_C <= T_VALID_C[1]:
-            raise OutsideValidity(f"lubricant[{name}].T_C", T_C,
+            raise InputError(f"lubricant[{name}].T_C", T_C,
                                   f"reference temperature must lie in {T_VALID_C[0]}...{T_VALID_C[1]} °C")
         if walther_B is None or not np.isfinite(walther_B) or not 0.0 <= walther_B <= 10.0:
             raise InputError(f"lubricant[{name}].walther_B", walther_B,
@@ -450,76 +457,39 @@ class Lubricant:
     # -- temperature checks --------------------------------------------------
     def _T(self, T_C, what):
         T = np.asarray(T_C, dtype=float)
-        if not T.size:
-            return T
-        r = finite_range(T)
-        if r is None:
-            raise InputError(f"{self.name}.{what}(T_C)", T_C, "temperature must be finite [°C]")
-        lo, hi = T_VALID_C
-        if r[0] < lo or r[1] > hi:
-            raise OutsideValidity(f"{self.name}.{what}(T_C)", T_C,
-                                  f"lubricant properties are valid only in {lo}...{hi} °C")
-        wlo, whi = T_WARN_C
-        if r[0] < wlo or r[1] > whi:
-            warnings.warn(f"{self.name}.{what}: T_C outside {wlo}...{whi} °C is an extrapolation "
-                          "of the ASTM D341 / density / thermal correlations", ExtrapolationWarning,
-                          stacklevel=3)
+        if T.size and not (T_WARN_C[0] <= T.min() and T.max() <= T_WARN_C[1]):    # NaN fails too
+            check_limit("lubricant_T", T, f"{self.name}.{what}(T_C)", category=ExtrapolationWarning)
         return T
 
-    # -- scalar fast path -----------------------------------------------------
-    # The thermal elements ask for one temperature at a time, many times per coupled solve: a
-    # Python float inside T_WARN_C is evaluated with ``math`` (the formulas of walther_nu and
-    # density_api; equal to the array path to rounding), anything else takes the array path
-    # (its checks, warnings and errors).
-    def _nu_s(self, T):
-        Z = 10.0 ** (10.0 ** (self.walther_A - self.walther_B * math.log10(T + ZERO_C_K)))
-        x = Z - 0.7
-        return x - math.exp(-0.7487 - 3.295 * x + 0.6119 * (x * x) - 0.3193 * (x * x * x))
-
-    def _rho_s(self, T):
-        a = _K1_API_LUBE / self.rho15
-        dT = T - 15.0
-        return self.rho15 * math.exp(-a * dT * (1.0 + 0.8 * a * dT))
-
     # -- properties -----------------------------------------------------------
+    # One temperature as a Python float inside T_WARN_C (the thermal elements ask for one at a time)
+    # needs no check: the formulas run on the float (with ``math``); anything else is checked first.
     def nu(self, T_C):
         """Kinematic viscosity [cSt] at T_C [°C], ASTM D341 (see :func:`walther_nu`)."""
         if _plain(T_C):
-            return self._nu_s(float(T_C))
+            return walther_nu(self.walther_A, self.walther_B, float(T_C) + ZERO_C_K)
         T = self._T(T_C, "nu")
         return _out(walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K), T_C)
 
     def rho(self, T_C):
         """Density [kg/m³] at T_C [°C] (see :func:`density_api`)."""
         if _plain(T_C):
-            return self._rho_s(float(T_C))
+            return density_api(self.rho15, float(T_C))
         T = self._T(T_C, "rho")
         return _out(density_api(self.rho15, T), T_C)
 
     def eta(self, T_C):
-        """Dynamic viscosity [Pa s] at T_C [°C]: η = ν [cSt] × 1e-6 × ρ [kg/m³] (PHYSICS.md §12.2)."""
+        """Dynamic viscosity [Pa s] at T_C [°C]: η = ν [cSt] × 1e-6 × ρ [kg/m³]."""
         if _plain(T_C):
             T = float(T_C)
-            return self._nu_s(T) * 1e-6 * self._rho_s(T)
-        T = self._T(T_C, "eta")
+        else:
+            T = self._T(T_C, "eta")
         nu = walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K)
         return _out(nu * 1e-6 * density_api(self.rho15, T), T_C)
 
-    def _eta_alpha_rho(self, T_C):
-        """(η [Pa s], α_p [1/Pa], ρ [kg/m³]) at the temperatures ``T_C`` [°C] (arrays): :meth:`eta`,
-        :meth:`alpha_p_at` and :meth:`rho` with one temperature check and the viscosity and density
-        computed once (the loss kernels' look-up; same values)."""
-        T = self._T(T_C, "eta")
-        nu = walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K)
-        rho = density_api(self.rho15, T)
-        if self.gold_s is not None:
-            alpha = gold_alpha_p(nu, self.gold_s, self.gold_t)
-        elif self.alpha_p is None:
-            raise InputError(f"lubricant[{self.name}].alpha_p", None,
-                             "unknown: give alpha_p [1/Pa] or Gold coefficients gold_s, gold_t")
-        else:
-            alpha = np.full(np.shape(T), self.alpha_p)
-        return nu * 1e-6 * rho, alpha, rho
+    def _const(self, v, T, T_C):
+        """A constant property ``v`` shaped like the temperatures."""
+        return v if type(T) is float else _out(np.full(np.shape(T), v), T_C)
 
     def alpha_p_at(self, T_C):
         """Pressure–viscosity coefficient [1/Pa] at T_C [°C].
@@ -527,37 +497,27 @@ class Lubricant:
         Gold et al. s ν(T)^t when s, t are given (see :func:`gold_alpha_p`), else
         the constant alpha_p.  Raises InputError when neither is known.
         """
-        T = self._T(T_C, "alpha_p_at")
+        T = float(T_C) if _plain(T_C) else self._T(T_C, "alpha_p_at")
         if self.gold_s is not None:
             nu = walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K)
             return _out(gold_alpha_p(nu, self.gold_s, self.gold_t), T_C)
         if self.alpha_p is None:
             raise InputError(f"lubricant[{self.name}].alpha_p", None,
                              "unknown: give alpha_p [1/Pa] or Gold coefficients gold_s, gold_t")
-        return _out(np.full(np.shape(T), self.alpha_p), T_C)
+        return self._const(self.alpha_p, T, T_C)
 
     def k_th(self, T_C):
         """Thermal conductivity [W/(m K)] at T_C [°C]: constant, or Cragoe (1929) (:func:`cragoe_k_th`)."""
-        if _plain(T_C):
-            T = float(T_C)
-            if self._k_th is not None:
-                return self._k_th
-            return 0.117257 / (self.rho15 / _RHO_WATER_15_KG_M3) * (1.0 - 0.00054 * T)
-        T = self._T(T_C, "k_th")
+        T = float(T_C) if _plain(T_C) else self._T(T_C, "k_th")
         if self._k_th is not None:
-            return _out(np.full(np.shape(T), self._k_th), T_C)
+            return self._const(self._k_th, T, T_C)
         return _out(cragoe_k_th(self.rho15, T), T_C)
 
     def cp(self, T_C):
         """Specific heat [J/(kg K)] at T_C [°C]: constant, or Cragoe (1929) (:func:`cragoe_cp`)."""
-        if _plain(T_C):
-            T = float(T_C)
-            if self._cp is not None:
-                return self._cp
-            return (1684.8 + 3.391 * T) / math.sqrt(self.rho15 / _RHO_WATER_15_KG_M3)
-        T = self._T(T_C, "cp")
+        T = float(T_C) if _plain(T_C) else self._T(T_C, "cp")
         if self._cp is not None:
-            return _out(np.full(np.shape(T), self._cp), T_C)
+            return self._const(self._cp, T, T_C)
         return _out(cragoe_cp(self.rho15, T), T_C)
 
 
@@ -573,21 +533,38 @@ def lubricant_names() -> list[str]:
     return names_in(data_dir("materials") / "lubricants")
 
 
-_KNOWN_KEYS = {"name", "kind", "description", "base_oil", "thickener", "nu40_cSt", "nu100_cSt",
-               "rho15_kg_m3", "alpha_p_1_Pa", "gold_s_1_GPa", "gold_t", "alpha40_1_GPa", "thermal",
-               "k_W_mK", "cp_J_kgK", "eta_ref_Pa_s", "T_ref_C", "walther_B", "estimated",
-               "grease_T_min_C", "grease_T_max_C"}
+#: The keys of a lubricant table (data files, inline scene tables), with their kinds and units.
+FIELDS = {
+    "name": Field.text("label"),
+    "kind": Field.choice("oil", "grease", doc="oil, or grease (the models use its base oil)"),
+    "description": Field.text(),
+    "base_oil": Field.choice("mineral", "PAO", "ester", "ester+vegetal", "glycol", "silicone",
+                             doc="base oil family"),
+    "thickener": Field.text("grease thickener"),
+    "nu40_cSt": Field.number("cSt", 0.0, None, lo_open=True, doc="kinematic viscosity at 40 °C"),
+    "nu100_cSt": Field.number("cSt", 0.0, None, lo_open=True, doc="kinematic viscosity at 100 °C"),
+    "rho15_kg_m3": Field.number("kg/m^3", 500.0, 2500.0, doc="density at 15 °C"),
+    "alpha_p_1_Pa": Field.number("1/Pa", 0.0, 1e-7, lo_open=True, doc="pressure-viscosity coefficient"),
+    "gold_s_1_GPa": Field.number("1/GPa", 0.0, None, lo_open=True, doc="Gold et al. 2001 alpha = s nu^t"),
+    "gold_t": Field.number("-", 0.0, 1.0, doc="Gold et al. 2001 exponent"),
+    "alpha40_1_GPa": Field.number("1/GPa", 0.0, None, lo_open=True, doc="reference only"),
+    "thermal": Field.choice("cragoe", "given", doc="thermal properties: Cragoe 1929, or k_W_mK and cp_J_kgK"),
+    "k_W_mK": Field.number("W/(m K)", 0.0, 10.0, lo_open=True, doc="thermal conductivity"),
+    "cp_J_kgK": Field.number("J/(kg K)", 0.0, 1e4, lo_open=True, doc="specific heat"),
+    "eta_ref_Pa_s": Field.number("Pa s", 0.0, None, lo_open=True, doc="one viscosity point (with T_ref_C)"),
+    "T_ref_C": Field.number("°C", -60.0, 250.0, doc="temperature of eta_ref_Pa_s"),
+    "walther_B": Field.number("-", 0.0, 10.0, lo_open=True, doc="ASTM D341 slope (one-point lubricants)"),
+    "estimated": Field.names("keys whose values are estimates"),
+    "grease_T_min_C": Field.number("°C", -100.0, 300.0, doc="grease operating range (maker)"),
+    "grease_T_max_C": Field.number("°C", -100.0, 300.0, doc="grease operating range (maker)"),
+}
+_ALIASES = {"eta_Pa_s": "eta_ref_Pa_s", "T_C": "T_ref_C"}
 
 
 def _from_mapping(d: dict, where: str) -> Lubricant:
     """Build a Lubricant from data-file keys (units in the key names), naming ``where`` in errors."""
-    d = dict(d)
-    for alias, key in (("eta_Pa_s", "eta_ref_Pa_s"), ("T_C", "T_ref_C")):
-        if alias in d:
-            d.setdefault(key, d.pop(alias))
-    unknown = set(d) - _KNOWN_KEYS
-    if unknown:
-        raise InputError(where, sorted(unknown), f"unknown keys; known: {', '.join(sorted(_KNOWN_KEYS))}")
+    d = {_ALIASES.get(k, k): v for k, v in d.items()}
+    d = check_table(d, FIELDS, where)
     if d.get("thermal", "cragoe") != "cragoe" and ("k_W_mK" not in d or "cp_J_kgK" not in d):
         raise InputError(f"{where}.thermal", d.get("thermal"), '"cragoe", or give k_W_mK and cp_J_kgK')
     common = dict(alpha_p=d.get("alpha_p_1_Pa"), gold_s=d.get("gold_s_1_GPa"), gold_t=d.get("gold_t"),

@@ -1,24 +1,23 @@
 r"""Scene files: a bearing, its lubricant, loads, speed, and how heat leaves it.
 
-A scene is a TOML file with units in the key names, converted to SI once here.
-Sections (see ``examples/README.md`` for every key)::
+A scene is a TOML file with units in the key names, converted to SI once here.  Every section
+and every inline table is checked by one strict schema (:mod:`thermobear.schema`): an unknown key
+is refused with the list of accepted ones, every number must be a TOML number in its range,
+every boolean a TOML boolean, every choice one of its listed values.  Sections (the keys of
+:data:`SECTIONS`; ``examples/README.md`` has the table)::
 
     [scene]      name, description, source
-    [bearing]    catalog = "7210"  and/or inline D_mm, dm_mm, Z, fi, fo, Pd_mm, alpha0_deg,
-                 kind, bore_mm, outer_diameter_mm, width_mm, series, C0_kN, materials
-    [lubricant]  name = "seed004-mineral" or inline nu40_cSt, nu100_cSt, rho15_kg_m3, alpha_p_1_Pa;
-                 supply = "oil_jet" | "grease" | "oil_bath" | "oil_air" | "dry_film";
-                 flow_L_h, T_in_C (oil jet); Rq_ball_um, Rq_ring_um (roughness);
-                 mu_boundary, mu_full_film (mixed-lubrication friction, seed 000 eq 18)
-    [operation]  n_rpm, Fa_N, Fr_N, M_Nm (tilt free) ; rotating = "inner" | "outer";
-                 T_C (prescribed bearing/contact temperature: no thermal network needed)
-    [thermal]    network = "oil_jet_ball_bearing" | ... ; T_ambient_C ; [thermal.parameters];
-                 fixed_C = { inner_ring = 52.0, outer_ring = 48.0 }  (measured temperatures imposed
-                 on nodes, as seed 004 §4.5 does with its IR/OR thermocouples: the rest is solved)
-    [models]     optional overrides: rolling, hertz, load_model, drag, sliding, ...
+    [bearing]    catalog = "7210" and/or inline geometry (thermobear.contact.geometry keys)
+    [lubricant]  name = "seed004-mineral" or inline properties (thermobear.lubrication.lubricant keys);
+                 supply, flow_L_h, T_in_C, Rq_ball_um, Rq_ring_um, mu_boundary, mu_full_film
+    [operation]  n_rpm, Fa_N, Fr_N, M_Nm (tilt free), rotating, T_C (prescribed temperature)
+    [thermal]    network, T_ambient_C, [thermal.parameters], fixed_C = { node = °C }
+    [models]     overrides of the model choice (thermobear.models.choose_models)
+    [rig]        J_kg_m2, [rig.map] channel = "node" | "input" | "ignore" | "impose:<node>"
 
-Every bad value raises :class:`~thermobear.errors.InputError` naming the field,
-the value and what is expected.
+Every bad value raises :class:`~thermobear.errors.InputError` naming the field, the value and
+what is accepted; names the scene uses inside its network (parameters, imposed nodes, rig map
+targets) are checked against the network when the scene is read.
 """
 from __future__ import annotations
 
@@ -28,14 +27,80 @@ from pathlib import Path
 
 import numpy as np
 
-from thermobear.files import read_toml
+from thermobear import validity
+from thermobear.contact.geometry import BallBearing, bearing, bearing_from_dict, bearing_table
+from thermobear.contact.hertz import METHODS as HERTZ_METHODS
 from thermobear.errors import InputError
-from thermobear.contact.geometry import BallBearing, bearing, bearing_from_dict
+from thermobear.files import read_toml
+from thermobear.losses.local import ROLLING_MODELS
+from thermobear.lubrication.lubricant import FIELDS as LUBRICANT_FIELDS
+from thermobear.lubrication.lubricant import Lubricant, lubricant
+from thermobear.schema import Field, check_table, check_value
+from thermobear.scene.network import network_nodes, network_spec
 
-__all__ = ["Scene", "load_scene", "scene_from_dict", "SUPPLIES"]
+__all__ = ["Scene", "load_scene", "scene_from_dict", "SUPPLIES", "SECTIONS", "MODEL_FIELDS", "RIG_TARGETS"]
 
 SUPPLIES = ("oil_jet", "grease", "oil_bath", "oil_air", "dry_film")
-_SECTIONS = ("scene", "bearing", "lubricant", "operation", "thermal", "models", "rig")
+_T_LO, _T_HI = validity.T_LUBRICANT_REFUSE_C
+
+
+def _temperature(doc):
+    return Field.number("°C", _T_LO, _T_HI, doc=doc)
+
+
+#: ``[models]``: every key can be forced (``--set models.<key>=<value>`` on the command line).
+MODEL_FIELDS = {
+    "rolling": Field.choice(*ROLLING_MODELS, doc="hydrodynamic rolling force model"),
+    "hertz": Field.choice(*HERTZ_METHODS, doc="Hertz solution"),
+    "load_model": Field.choice("closed_form", "jones_harris", "film", doc="load distribution model"),
+    "drag": Field.flag("drag of the balls in the oil–air mixture"),
+    "kinematics": Field.choice("outer", "inner", "radial", doc="ball spin control"),
+    "stiffness": Field.choice("nominal", "per_ball", doc="contact stiffness at the nominal or each ball's angle"),
+    "high_speed": Field.flag("Jones high-speed ball equilibrium"),
+    "losses": Field.choice("local", "skf", doc="per-contact local model or SKF 2004 global model"),
+    "skf_R1": Field.number("-", 0.0, None, lo_open=True, doc="SKF rolling constant R1"),
+    "skf_S1": Field.number("-", 0.0, None, lo_open=True, doc="SKF sliding constant S1"),
+    "skf_mu_EHL": Field.number("-", 0.0, 1.0, lo_open=True, doc="SKF full-film sliding friction"),
+}
+
+_SUPPLY_FIELDS = {
+    "supply": Field.choice(*SUPPLIES, doc="lubrication method"),
+    "flow_L_h": Field.number("L/h", 0.0, 1e5, doc="oil flow through the bearing"),
+    "T_in_C": _temperature("oil inlet temperature"),
+    "Rq_ball_um": Field.number("µm", 0.0, 10.0, doc="RMS roughness of the balls"),
+    "Rq_ring_um": Field.number("µm", 0.0, 10.0, doc="RMS roughness of the races"),
+    "mu_boundary": Field.number("-", 0.0, 1.0, doc="boundary friction coefficient (seed 000 eq 18)"),
+    "mu_full_film": Field.number("-", 0.0, 1.0, doc="full-film friction coefficient (seed 000 eq 18)"),
+}
+
+#: Every section's keys (``bearing``: ``catalog`` plus the geometry keys of
+#: :func:`thermobear.contact.geometry.bearing_from_dict`, checked there; ``lubricant``: the supply
+#: keys plus :data:`thermobear.lubrication.lubricant.FIELDS`).
+SECTIONS = {
+    "scene": {"name": Field.text("scene name"), "description": Field.text(), "source": Field.text()},
+    "bearing": {"catalog": Field.text("catalogue designation (thermobear list bearings)")},
+    "lubricant": {**_SUPPLY_FIELDS, **LUBRICANT_FIELDS},
+    "operation": {
+        "n_rpm": Field.number("rpm", 0.0, None, doc="speed of the rotating ring", required=True),
+        "Fa_N": Field.number("N", 0.0, None, doc="axial load"),
+        "Fr_N": Field.number("N", 0.0, None, doc="radial load (towards ψ = 0)"),
+        "M_Nm": Field.number("N m", doc="tilting moment (tilt free); absent: tilt held"),
+        "rotating": Field.choice("inner", "outer", doc="rotating ring"),
+        "T_C": _temperature("prescribed contact temperature (no thermal network)"),
+    },
+    "thermal": {
+        "network": Field.text("bundled network name or a .toml path"),
+        "T_ambient_C": _temperature("ambient temperature"),
+        "parameters": Field.table('"<element or node>.<parameter>" = value overrides'),
+        "fixed_C": Field.table("node = measured temperature [°C], imposed"),
+    },
+    "models": MODEL_FIELDS,
+    "rig": {"J_kg_m2": Field.number("kg m^2", 0.0, None, lo_open=True, doc="rotating inertia (spin-down)"),
+            "map": Field.table('log channel = "node" | "input" | "ignore" | "impose:<node>"')},
+}
+#: Special targets of ``[rig.map]`` besides node names (``"impose:<node>"`` imposes the channel).
+RIG_TARGETS = ("input", "ignore")
+_IMPOSE = "impose:"
 
 
 @dataclass(frozen=True)
@@ -46,7 +111,7 @@ class Scene:
     ----------
     name : str
     bearing : BallBearing
-    lubricant : object            thermobear.lubrication.lubricant.Lubricant
+    lubricant : Lubricant
     supply : str                  lubrication method (``SUPPLIES``)
     n_rpm : float                 speed of the rotating ring [rpm] (edge unit, kept for reporting)
     omega : float                 its angular speed [rad/s]
@@ -59,11 +124,13 @@ class Scene:
     T_ambient_C : float           ambient temperature [°C]
     Rq_ball, Rq_ring : float      RMS roughness [m]
     mu_boundary, mu_full_film : float   friction coefficients of seed 000 eq 18 [-]
-    network : str | None          thermal network name (networks/<name>.toml)
+    network : str | None          thermal network name or path
     network_parameters : dict     overrides of the network's parameters
     T_fixed_C : dict              node → imposed temperature [°C] (measured rig temperatures; the
                                   node becomes a fixed-temperature boundary of the network)
-    models : dict                 model overrides (see thermobear.coupled.solver)
+    models : dict                 model overrides (see thermobear.models.choose_models)
+    rig_J_kg_m2 : float | None    rotating inertia of a spin-down rig [kg m²]
+    rig_map : dict                log channel → node or special target (``[rig.map]``)
     source : str                  where the scene comes from
     path : str | None             file it was read from
     raw : dict                    the parsed TOML (for tools that need more)
@@ -90,6 +157,8 @@ class Scene:
     network_parameters: dict = field(default_factory=dict)
     T_fixed_C: dict = field(default_factory=dict)
     models: dict = field(default_factory=dict)
+    rig_J_kg_m2: float | None = None
+    rig_map: dict = field(default_factory=dict)
     source: str = ""
     path: str | None = None
     raw: dict = field(default_factory=dict, repr=False, compare=False)
@@ -110,234 +179,178 @@ class Scene:
         return self.omega if self.rotating == "outer" else 0.0
 
     def with_(self, **changes) -> "Scene":
-        """Copy with operating values changed, in the scene's own edge units.
+        """Copy with values changed, in the scene's own edge units, each checked as in a scene file.
 
-        Accepted keys: n_rpm, Fa (or Fa_N), Fr (Fr_N), M (M_Nm), T_C, T_oil_in_C, T_ambient_C,
-        oil_flow_L_h, lubricant (name, table or object), bearing (catalog name, table or BallBearing),
-        network_parameters (merged), T_fixed_C (node → °C, replaces; ``{}`` clears) and models
-        (merged); each value is checked as in a scene file.
+        Accepted keys: n_rpm, Fa (or Fa_N), Fr (Fr_N), M (M_Nm; None holds the tilt), T_C (None: solve
+        the network), T_oil_in_C, T_ambient_C, oil_flow_L_h, rotating, supply, lubricant (name, table or
+        Lubricant), bearing (catalogue name, table or BallBearing), network, network_parameters (merged),
+        T_fixed_C (node → °C, replaces; ``{}`` clears) and models (merged).
 
-        >>> from thermobear.scene.scene import load_scene
+        >>> from thermobear.scene import load_scene
         >>> import thermobear
         >>> s = load_scene(thermobear.example_path("seed004_oil_jet_7210.toml"))
         >>> s.with_(n_rpm=6500, Fr=1500).Fr
         1500.0
         """
-        alias = {"Fa_N": "Fa", "Fr_N": "Fr", "M_Nm": "M"}
         kw = {}
         for k, v in changes.items():
-            k = alias.get(k, k)
-            where = f"scene.with_({k})"
-            if k in ("n_rpm", "Fa", "Fr", "T_C", "T_oil_in_C", "T_ambient_C", "M"):
-                if v is None and k in ("T_C", "T_oil_in_C", "M"):
-                    kw[k] = None
-                else:
-                    kw[k] = _num({k: v}, k, "scene.with_")
-            elif k == "oil_flow_L_h":
-                kw["oil_flow"] = _num({k: v}, k, "scene.with_", lo=0.0) * 1e-3 / 3600.0
-            elif k == "lubricant":
-                if isinstance(v, (str, dict)):
-                    kw[k] = _lubricant_of(v["name"] if isinstance(v, dict) and set(v) == {"name"} else v,
-                                          where="lubricant")
-                elif all(hasattr(v, a) for a in ("eta", "nu", "rho", "alpha_p_at")):
-                    kw[k] = v
-                else:
-                    raise InputError(where, v, "a lubricant name, a table of its properties, or a Lubricant")
-            elif k == "T_fixed_C":
-                kw[k] = _fixed_temperatures(v, where)
-            elif k in ("network_parameters", "models"):
-                if not isinstance(v, dict):
-                    raise InputError(where, v, "must be a table (dict)")
-                merged = {**getattr(self, k), **v}
-                probe = {"thermal": {"parameters": merged}} if k == "network_parameters" else {"models": merged}
-                _check_overrides(probe)
-                kw[k] = merged
-            elif k == "bearing":
-                from thermobear.contact.geometry import BallBearing
-                if isinstance(v, str):
-                    kw[k] = bearing(v)
-                elif isinstance(v, dict):
-                    kw[k] = _bearing_of(v)
-                elif isinstance(v, BallBearing):
-                    kw[k] = v
-                else:
-                    raise InputError(where, v, "a catalog name, a bearing table, or a BallBearing")
-            else:
-                raise InputError(where, v, "unknown override; accepted: n_rpm, Fa, Fr, M, T_C, T_oil_in_C, "
-                                 "T_ambient_C, oil_flow_L_h, lubricant, bearing, network_parameters, T_fixed_C, "
-                                 "models")
+            k = _ALIASES.get(k, k)
+            if k not in _WITH:
+                raise InputError(f"scene.with_({k})", v, f"unknown override; accepted: {', '.join(_WITH)}")
+            kw.update(_WITH[k](self, v, k))
         new = dataclasses.replace(self, **kw)
-        _validate_operation(new)
+        _check_scene(new, network_changed=bool({"network", "network_parameters", "T_fixed_C"} & set(kw)))
         return new
 
 
-def _lubricant_of(spec, where="lubricant"):
-    from thermobear.lubrication.lubricant import Lubricant, lubricant  # lubricant sits below scene in the data flow
-    if isinstance(spec, str):
-        return lubricant(spec)
-    if isinstance(spec, dict):
-        if "name" in spec and not any(k in spec for k in ("nu40_cSt", "eta_Pa_s")):
-            return lubricant(spec["name"])
-        return Lubricant.from_dict(spec, where=where) if hasattr(Lubricant, "from_dict") else Lubricant(**spec)
-    return spec
+# --------------------------------------------------------------------------- sections → Scene
+def _with_number(section, key, attr, scale=1.0, nullable=False):
+    """An override of ``[section] key``, checked by that key's field (errors name the override)."""
+    def f(scene, v, name):
+        if v is None and nullable:
+            return {attr: None}
+        return {attr: check_value(v, SECTIONS[section][key], name) * scale}
+    return f
 
 
-def _num(sec: dict, key: str, where: str, default=None, lo=None, hi=None, lo_open=False, required=False):
-    if key not in sec:
-        if required:
-            raise InputError(f"{where}.{key}", None, "missing required field")
-        return default
-    v = sec[key]
-    if isinstance(v, bool) or not isinstance(v, (int, float)):
-        raise InputError(f"{where}.{key}", v, "must be a number")
-    v = float(v)
-    if not np.isfinite(v):
-        raise InputError(f"{where}.{key}", v, "must be finite")
-    if lo is not None and (v < lo or (lo_open and v == lo)):
-        rng = f"> {lo}" if lo_open else f">= {lo}"
-        raise InputError(f"{where}.{key}", v, f"must be {rng}" + (f" and <= {hi}" if hi is not None else ""))
-    if hi is not None and v > hi:
-        raise InputError(f"{where}.{key}", v, f"must be <= {hi}")
-    return v
+def _with_table(attr):
+    def f(scene, v, name):
+        if not isinstance(v, dict):
+            raise InputError(name, v, "must be a table (dict)")
+        if attr == "models":
+            return {attr: {**scene.models, **check_table(v, MODEL_FIELDS, "models")}}
+        if attr == "network_parameters":
+            return {attr: {**scene.network_parameters, **_parameters(v)}}
+        return {attr: _fixed(v)}
+    return f
 
 
-def _check_keys(sec: dict, allowed: set, where: str):
-    if not isinstance(sec, dict):
-        raise InputError(where, sec, "must be a table")
-    for k in sec:
-        if k not in allowed:
-            raise InputError(f"{where}.{k}", sec[k], f"unknown key; accepted: {', '.join(sorted(allowed))}")
+def _with_object(attr):
+    def f(scene, v, name):
+        if attr == "lubricant":
+            if isinstance(v, Lubricant):
+                return {attr: v}
+            return {attr: _lubricant_of(v if isinstance(v, dict) else {"name": v}, name)}
+        if isinstance(v, BallBearing):
+            return {attr: v}
+        if isinstance(v, str):
+            return {attr: bearing(v)}
+        return {attr: _bearing_of(v)}
+    return f
 
 
-_BEARING_INLINE = {"D_mm", "dm_mm", "Z", "fi", "fo", "Pd_mm", "alpha0_deg", "kind", "bore_mm",
-                   "outer_diameter_mm", "width_mm", "series", "C0_kN", "ball_material", "ring_material",
-                   "name", "description", "source", "estimated"}
+_ALIASES = {"Fa_N": "Fa", "Fr_N": "Fr", "M_Nm": "M"}
+_WITH = {
+    "n_rpm": _with_number("operation", "n_rpm", "n_rpm"),
+    "Fa": _with_number("operation", "Fa_N", "Fa"),
+    "Fr": _with_number("operation", "Fr_N", "Fr"),
+    "M": _with_number("operation", "M_Nm", "M", nullable=True),
+    "T_C": _with_number("operation", "T_C", "T_C", nullable=True),
+    "T_oil_in_C": _with_number("lubricant", "T_in_C", "T_oil_in_C", nullable=True),
+    "T_ambient_C": _with_number("thermal", "T_ambient_C", "T_ambient_C"),
+    "oil_flow_L_h": _with_number("lubricant", "flow_L_h", "oil_flow", scale=1e-3 / 3600.0),
+    "rotating": lambda s, v, name: {"rotating": check_value(v, SECTIONS["operation"]["rotating"], name)},
+    "supply": lambda s, v, name: {"supply": check_value(v, SECTIONS["lubricant"]["supply"], name)},
+    "network": lambda s, v, name: {"network": check_value(v, SECTIONS["thermal"]["network"], name)},
+    "lubricant": _with_object("lubricant"),
+    "bearing": _with_object("bearing"),
+    "network_parameters": _with_table("network_parameters"),
+    "T_fixed_C": _with_table("T_fixed_C"),
+    "models": _with_table("models"),
+}
+
+
+def _lubricant_of(sec: dict, where: str):
+    """The lubricant of a ``[lubricant]`` table without its supply keys: a catalogue name alone, or
+    inline properties (the name then labels them)."""
+    props = {k: v for k, v in sec.items() if k not in _SUPPLY_FIELDS}
+    if not props:
+        raise InputError(f"{where}.name", None, "give a lubricant name or its properties (nu40_cSt, nu100_cSt, ...)")
+    typed = check_table(props, LUBRICANT_FIELDS, where)
+    if set(typed) == {"name"}:
+        return lubricant(typed["name"])
+    if not ({"nu40_cSt", "eta_ref_Pa_s", "eta_Pa_s"} & set(props)):
+        raise InputError(f"{where}", ", ".join(sorted(set(props) - {"name"})),
+                         "with a catalogue name give no other lubricant properties; inline properties need "
+                         "nu40_cSt, nu100_cSt, rho15_kg_m3 (or eta_ref_Pa_s at T_ref_C)")
+    return Lubricant.from_dict(props, where=where)
 
 
 def _bearing_of(sec: dict) -> BallBearing:
-    _check_keys(sec, _BEARING_INLINE | {"catalog"}, "bearing")
+    check_value(sec, Field.table(), "bearing")
     if "catalog" in sec:
-        base = bearing(str(sec["catalog"]))
+        name = check_value(sec["catalog"], SECTIONS["bearing"]["catalog"], "bearing.catalog")
+        base = bearing(name)
         over = {k: v for k, v in sec.items() if k != "catalog"}
         if not over:
             return base
-        from thermobear.contact.geometry import _catalog
-        merged = {**_catalog()[sec["catalog"]], **over}
-        return bearing_from_dict(merged, name=str(sec["catalog"]), where="bearing")
+        return bearing_from_dict({**bearing_table(name), **over}, name=base.name, where="bearing")
     return bearing_from_dict(sec, name=sec.get("name", "custom"), where="bearing")
 
 
-_MODEL_KEYS = {"rolling", "hertz", "load_model", "drag", "kinematics", "stiffness", "high_speed", "losses",
-               "skf_R1", "skf_S1", "skf_mu_EHL"}
+def _parameters(params: dict) -> dict:
+    """``[thermal.parameters]``: name → finite number."""
+    return check_table(params, {}, "thermal.parameters", extra=lambda k: Field.number(doc="network parameter"))
 
 
-def _fixed_temperatures(v, where="thermal.fixed_C") -> dict:
-    """Validate a node → imposed temperature table [°C] (measured rig temperatures)."""
+def _fixed(v) -> dict:
+    """``[thermal] fixed_C``: node → imposed temperature [°C] (measured rig temperatures)."""
     if v is None:
         return {}
-    if not isinstance(v, dict):
-        raise InputError(where, v, "a table of node = temperature [°C], e.g. { inner_ring = 50.0 }")
-    out = {}
-    for k, t in v.items():
-        if not isinstance(k, str) or not k:
-            raise InputError(where, k, "node names are text")
-        if isinstance(t, bool) or not isinstance(t, (int, float)) or not np.isfinite(t) or not -60.0 <= t <= 250.0:
-            raise InputError(f"{where}.{k}", t, "temperature must be a number in [-60, 250] °C")
-        out[k] = float(t)
-    return out
+    return check_table(v, {}, "thermal.fixed_C", extra=lambda k: _temperature("imposed node temperature"))
 
 
-def _check_overrides(d: dict):
-    """Validate a ``[models]`` table and ``[thermal.parameters]`` (shared by files and ``with_``)."""
-    models = d.get("models", {})
-    _check_keys(models, _MODEL_KEYS, "models")
-    for k in ("skf_R1", "skf_S1", "skf_mu_EHL"):
-        if k in models:
-            _num(models, k, "models", lo=0.0, lo_open=True)
-    if "kinematics" in models and models["kinematics"] not in ("outer", "inner", "radial"):
-        raise InputError("models.kinematics", models["kinematics"], "ball spin control: 'outer', 'inner' or 'radial'")
-    if "stiffness" in models and models["stiffness"] not in ("nominal", "per_ball"):
-        raise InputError("models.stiffness", models["stiffness"], "'nominal' or 'per_ball'")
-    params = d.get("thermal", {}).get("parameters", {})
-    if not isinstance(params, dict):
-        raise InputError("thermal.parameters", params, "must be a table of parameter = value")
-    for k, v in params.items():
-        if isinstance(v, bool) or not isinstance(v, (int, float)) or not np.isfinite(v):
-            raise InputError(f"thermal.parameters.{k}", v, "must be a finite number")
+def _rig_map(v) -> dict:
+    return check_table(v, {}, "rig.map", extra=lambda k: Field.text("node name, input, ignore or impose:<node>"))
 
 
-def _validate_operation(s: Scene):
-    if s.rotating not in ("inner", "outer"):
-        raise InputError("operation.rotating", s.rotating, "must be 'inner' or 'outer'")
-    if not (np.isfinite(s.n_rpm) and s.n_rpm >= 0):
-        raise InputError("operation.n_rpm", s.n_rpm, "speed must be >= 0 [rpm]")
-    for nm in ("Fa", "Fr"):
-        v = getattr(s, nm)
-        if not (np.isfinite(v) and v >= 0):
-            raise InputError(f"operation.{nm}_N", v, "load must be >= 0 [N]")
-    if s.M is not None and not np.isfinite(s.M):
-        raise InputError("operation.M_Nm", s.M, "moment must be finite [N m]")
-    if not (np.isfinite(s.oil_flow) and s.oil_flow >= 0):
-        raise InputError("lubricant.flow_L_h", s.oil_flow * 3.6e6, "oil flow must be >= 0 [L/h]")
+def _check_scene(s: Scene, network_changed: bool = True):
+    """Checks that involve more than one key (and the network's names)."""
     if s.supply == "oil_jet" and s.T_C is None and s.network is not None and s.T_oil_in_C is None:
         raise InputError("lubricant.T_in_C", None, "an oil-jet scene solved thermally needs the oil inlet temperature [°C]")
-    if s.T_C is not None and not (-60.0 <= s.T_C <= 250.0):
-        raise InputError("operation.T_C", s.T_C, "temperature must lie in [-60, 250] °C")
-    for nm in ("T_ambient_C", "T_oil_in_C"):
-        v = getattr(s, nm)
-        if v is not None and not (-60.0 <= v <= 250.0):
-            raise InputError(f"thermal.{nm}", v, "temperature must lie in [-60, 250] °C")
+    if s.bearing.dm is not None:
+        validity.check("n_dm", s.n_rpm * s.bearing.dm * 1e3, "operation.n_rpm", warn=False)
+    if s.network is None:
+        if s.T_fixed_C:
+            raise InputError("thermal.fixed_C", s.T_fixed_C, "imposed node temperatures need a thermal network")
+        return
+    if network_changed:
+        network_spec(s.network, s.path, parameters=s.network_parameters, fixed_C=s.T_fixed_C)
+    if s.rig_map:
+        nodes = network_nodes(s.network, s.path)
+        for ch, target in s.rig_map.items():
+            node = target[len(_IMPOSE):] if target.startswith(_IMPOSE) else target
+            if target not in RIG_TARGETS and node not in nodes:
+                raise InputError(f"rig.map.{ch}", target, f"unknown node; the network {s.network} has: "
+                                 f"{', '.join(nodes)} (or input, ignore, impose:<node>)")
 
 
 def scene_from_dict(d: dict, path: str | None = None) -> Scene:
     """Validate a parsed scene table and convert it to SI (see the module docstring)."""
-    _check_keys(d, set(_SECTIONS), "scene file")
-    meta = d.get("scene", {})
-    _check_keys(meta, {"name", "description", "source"}, "scene")
+    check_table(d, {k: Field.table() for k in SECTIONS}, "scene file")
     if "bearing" not in d:
         raise InputError("bearing", None, "missing section [bearing] (catalog = \"...\" or inline geometry)")
-    brg = _bearing_of(d["bearing"])
     if "lubricant" not in d:
         raise InputError("lubricant", None, "missing section [lubricant] (name = \"...\" or inline properties)")
-    lsec = dict(d["lubricant"])
-    lkeys = {"supply", "flow_L_h", "T_in_C", "Rq_ball_um", "Rq_ring_um", "mu_boundary", "mu_full_film"}
-    supply = lsec.get("supply", "oil_jet")
-    if supply not in SUPPLIES:
-        raise InputError("lubricant.supply", supply, f"must be one of {', '.join(SUPPLIES)}")
-    lub_spec = {k: v for k, v in lsec.items() if k not in lkeys}
-    if not lub_spec:
-        raise InputError("lubricant.name", None, "give a lubricant name or its properties (nu40_cSt, nu100_cSt, ...)")
-    lub = _lubricant_of(lub_spec["name"] if set(lub_spec) == {"name"} else lub_spec, where="lubricant")
-    op = d.get("operation", {})
-    _check_keys(op, {"n_rpm", "Fa_N", "Fr_N", "M_Nm", "rotating", "T_C"}, "operation")
-    th = d.get("thermal", {})
-    _check_keys(th, {"network", "T_ambient_C", "parameters", "fixed_C"}, "thermal")
-    _check_overrides(d)
-    params = th.get("parameters", {})
-    if "network" in th and not isinstance(th["network"], str):
-        raise InputError("thermal.network", th["network"], "must be a network name or a path (text)")
-    models = d.get("models", {})
-
+    meta = check_table(d.get("scene", {}), SECTIONS["scene"], "scene")
+    op = check_table(d.get("operation", {}), SECTIONS["operation"], "operation")
+    lsec = check_table(d["lubricant"], SECTIONS["lubricant"], "lubricant")
+    th = check_table(d.get("thermal", {}), SECTIONS["thermal"], "thermal")
+    models = check_table(d.get("models", {}), MODEL_FIELDS, "models")
+    rig = check_table(d.get("rig", {}), SECTIONS["rig"], "rig")
     s = Scene(
-        name=str(meta.get("name", Path(path).stem if path else "scene")),
-        bearing=brg, lubricant=lub, supply=supply,
-        n_rpm=_num(op, "n_rpm", "operation", required=True, lo=0.0),
-        rotating=str(op.get("rotating", "inner")),
-        Fa=_num(op, "Fa_N", "operation", 0.0, lo=0.0),
-        Fr=_num(op, "Fr_N", "operation", 0.0, lo=0.0),
-        M=_num(op, "M_Nm", "operation", None),
-        T_C=_num(op, "T_C", "operation", None, lo=-60.0, hi=250.0),
-        oil_flow=_num(lsec, "flow_L_h", "lubricant", 0.0, lo=0.0) * 1e-3 / 3600.0,
-        T_oil_in_C=_num(lsec, "T_in_C", "lubricant", None, lo=-60.0, hi=250.0),
-        T_ambient_C=_num(th, "T_ambient_C", "thermal", 20.0, lo=-60.0, hi=250.0),
-        Rq_ball=_num(lsec, "Rq_ball_um", "lubricant", 0.05, lo=0.0) * 1e-6,
-        Rq_ring=_num(lsec, "Rq_ring_um", "lubricant", 0.1, lo=0.0) * 1e-6,
-        mu_boundary=_num(lsec, "mu_boundary", "lubricant", 0.11, lo=0.0, hi=1.0),
-        mu_full_film=_num(lsec, "mu_full_film", "lubricant", 0.05, lo=0.0, hi=1.0),
-        network=th.get("network"), network_parameters=dict(params),
-        T_fixed_C=_fixed_temperatures(th.get("fixed_C")),
-        models=dict(models), source=str(meta.get("source", "")), path=path, raw=d)
-    _validate_operation(s)
+        name=meta.get("name", Path(path).stem if path else "scene"),
+        bearing=_bearing_of(d["bearing"]), lubricant=_lubricant_of(d["lubricant"], "lubricant"),
+        supply=lsec.get("supply", "oil_jet"), n_rpm=op["n_rpm"], rotating=op.get("rotating", "inner"),
+        Fa=op.get("Fa_N", 0.0), Fr=op.get("Fr_N", 0.0), M=op.get("M_Nm"), T_C=op.get("T_C"),
+        oil_flow=lsec.get("flow_L_h", 0.0) * 1e-3 / 3600.0, T_oil_in_C=lsec.get("T_in_C"),
+        T_ambient_C=th.get("T_ambient_C", 20.0), Rq_ball=lsec.get("Rq_ball_um", 0.05) * 1e-6,
+        Rq_ring=lsec.get("Rq_ring_um", 0.1) * 1e-6, mu_boundary=lsec.get("mu_boundary", 0.11),
+        mu_full_film=lsec.get("mu_full_film", 0.05), network=th.get("network"),
+        network_parameters=_parameters(th.get("parameters", {})), T_fixed_C=_fixed(th.get("fixed_C")),
+        models=models, rig_J_kg_m2=rig.get("J_kg_m2"), rig_map=_rig_map(rig.get("map", {})),
+        source=meta.get("source", ""), path=path, raw=d)
+    _check_scene(s)
     return s
 
 
@@ -351,5 +364,5 @@ def load_scene(path) -> Scene:
     """
     p = Path(path)
     if not p.is_file():
-        raise InputError("scene", str(path), "file not found")
+        raise InputError("scene", str(path), "file not found" if not p.exists() else "is not a file")
     return scene_from_dict(read_toml(str(p.resolve())), path=str(p))

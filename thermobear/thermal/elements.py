@@ -1,80 +1,78 @@
 r"""Thermal elements: conductances between two nodes of a thermal network.
 
-Pure functions (scalars or numpy arrays, broadcast) give the conductance
-G [W/K] or the heat-transfer coefficient h [W/(m² K)] of each element family
-(PHYSICS.md §8; Pouly et al. 2010; Brossier et al. 2021):
+Pure functions (scalars or numpy arrays, broadcast) give the conductance G [W/K] or the
+heat-transfer coefficient h [W/(m² K)] of each element family [1]_, [2]_:
 
-=========================  ==============================================  =======================
+=========================  ==============================================  ===================================
 element                    model                                           function
-=========================  ==============================================  =======================
+=========================  ==============================================  ===================================
 radial conduction          G = 2π k L / ln(r2/r1)                          :func:`shell_conductance`
 planar conduction          G = k A / ℓ                                     :func:`planar_conductance`
 ball–race contact          R = 𝔎(e)/(2π k a) per body per contact          :func:`ball_race_conductance`
-convection, Harris         h = C k Pr^⅓ (u/(ν x))^½, C = 0.0332            :func:`h_harris`
-free convection, cylinder  Churchill–Chu (ChEDL ``ht``), air by CoolProp   :func:`h_natural_horizontal_cylinder`
-forced convection          Churchill–Bernstein cylinder / flat plate       :func:`h_forced_cylinder`
+convection in the bearing  h = C k Pr^⅓ (u/(ν x))^½                        :func:`h_harris`
+free convection, cylinder  Churchill–Chu (ChEDL ``ht``)                    :func:`h_natural_horizontal_cylinder`
+forced convection          Churchill–Bernstein cylinder / flat plate       :func:`h_forced_cylinder`, :func:`h_forced_plate`
 radiation (linearised)     h = ε σ (T1²+T2²)(T1+T2)                        :func:`h_radiation`
 oil advection (one-way)    G = ρ c_p Q̇ β                                   :func:`advection_conductance`
-=========================  ==============================================  =======================
+=========================  ==============================================  ===================================
 
-The classes at the end wrap these functions as network elements: each holds
-its SI parameters (already evaluated from the network file) and returns its
-conductance at the current node temperatures.  Only the element *families*
-live here; which element joins which nodes is data (``networks/*.toml``).
+The element kinds at the end (:data:`ELEMENT_TYPES`) wrap these functions as network elements:
+each holds its SI parameters — numbers, or arrays over a batch of operating points — and returns
+its conductance at the node temperatures of every operating point at once.  Which element joins
+which nodes is data (``networks/*.toml``).
+
+References
+----------
+.. [1] Pouly, F., Changenet, C., Ville, F., Velex, P., Damiens, B., 2010, "Power loss predictions
+   in high-speed rolling element bearings using thermal networks", Tribology Transactions 53,
+   957–967.
+.. [2] Bergman, T. L., Lavine, A. S., Incropera, F. P., DeWitt, D. P., 2011, *Fundamentals of Heat
+   and Mass Transfer*, 7th ed., Wiley: eq 3.33 (cylindrical shell), eq 3.6 (plane wall), eq 7.23
+   (laminar flat plate, local Nusselt 0.332 Re^½ Pr^⅓), eq 1.8–1.9 (radiation).
+.. [3] Yovanovich, M. M., 1971, "Thermal constriction resistance between contacting metallic
+   paraboloids", AIAA Progress in Astronautics 24, 337–358; Muzychka, Y. S., Yovanovich, M. M.,
+   2001, "Thermal resistance models for non-circular moving heat sources", J. Heat Transfer 123,
+   1028–1034 (the elliptical isothermal contact, R = 𝔎(e)/(2π k a)).
+.. [4] Harris, T. A., 2001, *Rolling Bearing Analysis*, 4th ed., Wiley, ch. 15 (heat transfer in
+   bearings: Nu_x = C Re_x^½ Pr^⅓ for components in the oil–air mixture, C = 0.0332).
+.. [5] Churchill, S. W., Chu, H. H. S., 1975, Int. J. Heat Mass Transfer 18, 1049–1053;
+   Churchill, S. W., Bernstein, M., 1977, J. Heat Transfer 99, 300–306 (via ChEDL ``ht``).
+.. [6] Brossier, P., Niel, D., Changenet, C., Ville, F., Belmonte, J., 2021, "Experimental and
+   numerical investigations on rolling element bearing thermal behaviour", Tribology
+   International 153, 106666 (oil penetration coefficient β of oil-jet lubrication).
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
 import numpy as np
-
-from thermobear.arrays import _within
+from ht.conv_external import Nu_cylinder_Churchill_Bernstein
+from ht.conv_external import Nu_horizontal_plate_laminar_Baehr, Nu_horizontal_plate_turbulent_Schlichting
+from ht.conv_free_immersed import Nu_horizontal_cylinder_Churchill_Chu
 from scipy.special import ellipk
 
-from thermobear.lubrication.air import T_RANGE_K as _AIR_T_RANGE_K
-from thermobear.lubrication.air import air_properties as _air_properties
+from thermobear.arrays import checked, out as _out
 from thermobear.errors import InputError
-from thermobear.lubrication.lubricant import T_VALID_C as _T_VALID_C
+from thermobear.lubrication.air import T_RANGE_K as AIR_T_RANGE_K
+from thermobear.lubrication.air import air_properties
+from thermobear.validity import T_LUBRICANT_REFUSE_C
 
 __all__ = [
     "SIGMA_SB", "shell_conductance", "planar_conductance", "constriction_resistance",
-    "ball_race_conductance", "h_harris", "HARRIS_COEFFICIENTS", "air_properties",
-    "oil_air_properties", "h_natural_horizontal_cylinder", "h_forced_cylinder",
-    "h_forced_plate", "h_radiation", "advection_conductance", "ELEMENT_TYPES",
+    "ball_race_conductance", "h_harris", "HARRIS_COEFFICIENTS", "oil_air_properties",
+    "h_natural_horizontal_cylinder", "h_forced_cylinder", "h_forced_plate", "h_radiation",
+    "advection_conductance", "Element", "ELEMENT_TYPES", "CORRELATIONS", "CORRELATION_KEYS",
+    "STRING_KEYS", "MATERIAL_KEYS",
 ]
 
 SIGMA_SB = 5.670374419e-8   #: Stefan–Boltzmann constant [W/(m² K⁴)] (CODATA 2018, exact)
+G_N = 9.80665               #: standard gravity [m/s²]
 
-#: Named coefficients C of the convection law h = C k Pr^⅓ (u/(ν x))^½ (PHYSICS.md §8 item 4).
+#: Named coefficients C of the convection law h = C k Pr^⅓ (u/(ν x))^½.
 HARRIS_COEFFICIENTS = {
-    "harris": 0.0332,               # Harris 2001 as quoted by PHYSICS.md §8 (unconfirmed - recalled)
-    "flat_plate_laminar": 0.332,    # laminar flat plate, local Nusselt (Incropera), 10x larger
+    "harris": 0.0332,               # Harris 2001 ch. 15 [4]
+    "flat_plate_laminar": 0.332,    # laminar flat plate, local Nusselt [2] eq 7.23: 10× Harris's
 }
-
-
-def _pos(name, v, strict=True):
-    a = np.asarray(v, dtype=float)
-    if a.size and not _within(a, 0.0, strict):
-        raise InputError(name, v, "must be finite and " + ("> 0" if strict else ">= 0"))
-    return a
-
-
-def _out(x):
-    return float(x) if np.ndim(x) == 0 else x
-
-
-_FLOATS = (float, np.float64)
-
-
-def _floats(*vs) -> bool:
-    """True when every value is one Python (or numpy) float: the scalar fast paths below apply."""
-    return all(type(v) in _FLOATS for v in vs)
-
-
-def _all_pos(*vs) -> bool:
-    """Floats all finite and > 0 (the check of :func:`_pos`)."""
-    return all(0.0 < v < math.inf for v in vs)
 
 
 # ---------------------------------------------------------------------------
@@ -85,22 +83,26 @@ def shell_conductance(k, L, r1, r2):
 
     Parameters
     ----------
-    k : array_like    thermal conductivity [W/(m K)]
-    L : array_like    axial length (ring width) [m]
+    k : array_like       thermal conductivity [W/(m K)]
+    L : array_like       axial length (ring width) [m]
     r1, r2 : array_like  inner and outer radius, 0 < r1 < r2 [m]
 
     Returns
     -------
-    G = 2 π k L / ln(r2/r1)  [W/K]  (PHYSICS.md §8 item 1; Incropera eq 3.33).
+    float or ndarray  G [W/K]
+
+    Notes
+    -----
+    .. math:: G = \frac{2 \pi k L}{\ln(r_2 / r_1)}
+
+    (Bergman et al. 2011 eq 3.33 [2]).
 
     Examples
     --------
     >>> round(shell_conductance(42.7, 0.02, 0.025, 0.0286), 2)
     39.9
     """
-    if _floats(k, L, r1, r2) and _all_pos(k, L, r1, r2) and r2 > r1:          # one element: no arrays
-        return 2.0 * math.pi * k * L / math.log(r2 / r1)
-    k, L, r1, r2 = (_pos(n, v) for n, v in (("k_W_mK", k), ("L_m", L), ("r1_m", r1), ("r2_m", r2)))
+    k, L, r1, r2 = (checked(n, v) for n, v in (("k_W_mK", k), ("L_m", L), ("r1_m", r1), ("r2_m", r2)))
     if np.any(r2 <= r1):
         raise InputError("r2_m", _out(r2), f"outer radius must exceed the inner radius r1_m = {_out(r1)}")
     return _out(2.0 * np.pi * k * L / np.log(r2 / r1))
@@ -117,17 +119,20 @@ def planar_conductance(k, A, length):
 
     Returns
     -------
-    G = k A / ℓ  [W/K]  (PHYSICS.md §8 item 2).
+    float or ndarray  G [W/K]
+
+    Notes
+    -----
+    .. math:: G = \frac{k A}{\ell}
+
+    (Bergman et al. 2011 eq 3.6 [2]).
 
     Examples
     --------
     >>> planar_conductance(40.0, 1e-3, 0.1)
     0.4
     """
-    if _floats(k, A, length) and _all_pos(k, A, length):                     # one element: no arrays
-        return k * A / length
-    k, A, length = _pos("k_W_mK", k), _pos("A_m2", A), _pos("length_m", length)
-    return _out(k * A / length)
+    return _out(checked("k_W_mK", k) * checked("A_m2", A) / checked("length_m", length))
 
 
 def constriction_resistance(k, a, b):
@@ -141,14 +146,15 @@ def constriction_resistance(k, a, b):
 
     Returns
     -------
-    R = 𝔎(m) / (2 π k a_major), m = e² = 1 − (a_minor/a_major)²  [K/W]
+    float or ndarray  R [K/W]
 
     Notes
     -----
-    Yovanovich / Muzychka (PHYSICS.md §8 item 3); 𝔎 is the complete elliptic
-    integral of the first kind with *parameter* m = e² (``scipy.special.ellipk``,
-    PHYSICS.md §12 pitfall 9).  For a circle 𝔎(0) = π/2 and R = 1/(4 k a).
-    Stationary, isothermal contact: at Péclet numbers u b/(2κ) ≫ 1 the moving
+    .. math:: R = \frac{\mathfrak{K}(m)}{2 \pi k a_{major}}, \quad m = 1 - (a_{minor}/a_{major})^2
+
+    (Yovanovich 1971; Muzychka & Yovanovich 2001 [3]); 𝔎 is the complete elliptic integral of
+    the first kind with *parameter* m = e² (``scipy.special.ellipk``).  For a circle 𝔎(0) = π/2
+    and R = 1/(4 k a).  Stationary, isothermal contact: at Péclet numbers u b/(2κ) ≫ 1 the moving
     heat source lowers R (a ×2–5 uncertainty, not modelled).
 
     Examples
@@ -157,10 +163,9 @@ def constriction_resistance(k, a, b):
     >>> round(r, 6), round(1 / (4 * 40.0 * 1e-3), 6)
     (6.25, 6.25)
     """
-    k, a, b = _pos("k_W_mK", k), _pos("a_m", a), _pos("b_m", b)
+    k, a, b = checked("k_W_mK", k), checked("a_m", a), checked("b_m", b)
     major, minor = np.maximum(a, b), np.minimum(a, b)
-    m = 1.0 - (minor / major) ** 2
-    return _out(ellipk(m) / (2.0 * np.pi * k * major))
+    return _out(ellipk(1.0 - (minor / major) ** 2) / (2.0 * np.pi * k * major))
 
 
 def ball_race_conductance(k_ball, k_ring, a, b):
@@ -168,15 +173,21 @@ def ball_race_conductance(k_ball, k_ring, a, b):
 
     Parameters
     ----------
-    k_ball, k_ring : float   conductivities of ball and ring [W/(m K)]
-    a, b : array_like        per-ball Hertz semi-axes [m], shape (..., Z); a ball
-                             with a = 0 or b = 0 is unloaded and conducts nothing
+    k_ball, k_ring : array_like  conductivities of ball and ring [W/(m K)] (broadcast against
+                                 the leading axes of ``a``)
+    a, b : array_like            per-ball Hertz semi-axes [m], shape (..., Z); a ball with
+                                 a = 0 or b = 0 is unloaded and conducts nothing
 
     Returns
     -------
-    G = Σ_balls 1 / (R_ball + R_ring), R = 𝔎(e)/(2π k a) per body  [W/K]
-    (PHYSICS.md §8 item 3: one constriction per body, bodies in series,
-    contacts in parallel), summed over the last axis.
+    float or ndarray  G [W/K], summed over the last axis
+
+    Notes
+    -----
+    One constriction per body (:func:`constriction_resistance`), the two bodies in series, the
+    contacts in parallel [1]_, [3]_:
+
+    .. math:: G = \sum_{balls} \frac{1}{R_{ball} + R_{ring}}
 
     Examples
     --------
@@ -185,17 +196,16 @@ def ball_race_conductance(k_ball, k_ring, a, b):
     >>> round(G / G1, 12)
     2.0
     """
-    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
-    a, b = np.broadcast_arrays(a, b)
-    if np.any(~np.isfinite(a) | ~np.isfinite(b) | (a < 0) | (b < 0)):
-        raise InputError("contacts.a_m/b_m", a, "semi-axes must be finite and >= 0 [m]")
+    a, b = np.broadcast_arrays(np.asarray(a, dtype=float), np.asarray(b, dtype=float))
+    checked("contacts.a_m", a, strict=False)
+    checked("contacts.b_m", b, strict=False)
+    kb = checked("k_W_mK", k_ball)[..., None]
+    kr = checked("k_W_mK", k_ring)[..., None]
     loaded = (a > 0) & (b > 0)
     aa, bb = np.where(loaded, a, 1.0), np.where(loaded, b, 1.0)
-    k_ball, k_ring = _pos("k_W_mK", k_ball), _pos("k_W_mK", k_ring)
-    # constriction_resistance of each body; the ellipse (major axis, 𝔎(m)) is the same for both
     major, minor = np.maximum(aa, bb), np.minimum(aa, bb)
     Km = ellipk(1.0 - (minor / major) ** 2)
-    R = Km / (2.0 * np.pi * k_ball * major) + Km / (2.0 * np.pi * k_ring * major)
+    R = Km / (2.0 * np.pi * major) * (1.0 / kb + 1.0 / kr)
     return _out(np.sum(np.where(loaded, 1.0 / R, 0.0), axis=-1))
 
 
@@ -212,19 +222,19 @@ def h_harris(k, Pr, u, nu, x, coefficient="harris"):
     u : array_like    surface speed relative to the fluid [m/s]
     nu : array_like   fluid kinematic viscosity [m²/s]
     x : array_like    characteristic length (ball diameter, ring width) [m]
-    coefficient : str or float  ``"harris"`` (0.0332), ``"flat_plate_laminar"``
-                      (0.332) or a number
+    coefficient : str or float  ``"harris"`` (0.0332), ``"flat_plate_laminar"`` (0.332) or a number
 
     Returns
     -------
-    h = C k Pr^⅓ (u / (ν x))^½  [W/(m² K)], i.e. Nu_x = C Re_x^½ Pr^⅓.
+    float or ndarray  h [W/(m² K)]
 
     Notes
     -----
-    Harris 2001 as given in PHYSICS.md §8 item 4 (unconfirmed – recalled).  The
-    (u/(ν x))^½ form is the dimensionally correct one (pitfall 11); Harris's
-    0.0332 is 10× below laminar flat-plate theory (0.332, Incropera): which one
-    Pouly 2010 used was not checked, so the coefficient is a named choice.
+    .. math:: h = C\, k\, Pr^{1/3} \left(\frac{u}{\nu x}\right)^{1/2}, \quad Nu_x = C\, Re_x^{1/2} Pr^{1/3}
+
+    Harris 2001 ch. 15 gives C = 0.0332 [4]_, ten times below laminar flat-plate theory (0.332,
+    Bergman et al. 2011 eq 7.23 [2]_) for the same Re_x and Pr; which one Pouly et al. 2010 used is
+    not stated, so the coefficient is a named choice of each network element.
 
     Examples
     --------
@@ -239,19 +249,9 @@ def h_harris(k, Pr, u, nu, x, coefficient="harris"):
         C = HARRIS_COEFFICIENTS[coefficient]
     else:
         C = float(coefficient)
-    k, Pr, nu, x = _pos("k_W_mK", k), _pos("Pr", Pr), _pos("nu_m2_s", nu), _pos("x_m", x)
-    u = _pos("u_m_s", u, strict=False)
+    k, Pr, nu, x = checked("k_W_mK", k), checked("Pr", Pr), checked("nu_m2_s", nu), checked("x_m", x)
+    u = checked("u_m_s", u, strict=False)
     return _out(C * k * np.cbrt(Pr) * np.sqrt(u / (nu * x)))
-
-
-def air_properties(T_K, p_Pa=101325.0):
-    r"""Dry-air properties (CoolProp, tabulated): see :func:`thermobear.lubrication.air.air_properties`.
-
-    >>> p = air_properties(300.0)
-    >>> round(p["rho"], 3), round(p["k"], 4), round(p["Pr"], 3)
-    (1.177, 0.0264, 0.707)
-    """
-    return _air_properties(T_K, p_Pa)
 
 
 def oil_air_properties(X, rho_oil, nu_oil_cSt, k_oil, cp_oil, T_K):
@@ -263,17 +263,18 @@ def oil_air_properties(X, rho_oil, nu_oil_cSt, k_oil, cp_oil, T_K):
     rho_oil : array_like     oil density [kg/m³]
     nu_oil_cSt : array_like  oil kinematic viscosity [mm²/s]
     k_oil, cp_oil : array_like  oil conductivity [W/(m K)] and specific heat [J/(kg K)]
-    T_K : array_like         temperature (air properties) [K]
+    T_K : array_like         temperature (air properties, 200–600 K) [K]
 
     Returns
     -------
-    dict rho, mu, k, cp, nu, Pr of the mixture (SI).
+    dict  rho [kg/m³], mu [Pa s], k [W/(m K)], cp [J/(kg K)], nu [m²/s], Pr [-] of the mixture
 
     Notes
     -----
-    Linear volume mixing of ρ, μ and k, mass-weighted c_p:
-    ρ_e = Xρ_o + (1−X)ρ_a, μ_e = Xμ_o + (1−X)μ_a (PHYSICS.md §7.1, unconfirmed –
-    textbook), k_e = Xk_o + (1−X)k_a (same rule, estimated).
+    Linear volume mixing of ρ, μ and k, mass-weighted c_p (Pouly et al. 2010 [1]_ for ρ and μ;
+    the same rule for k is an estimate):
+
+    .. math:: \rho_e = X \rho_o + (1 - X) \rho_a, \quad \mu_e = X \mu_o + (1 - X) \mu_a
 
     Examples
     --------
@@ -281,17 +282,8 @@ def oil_air_properties(X, rho_oil, nu_oil_cSt, k_oil, cp_oil, T_K):
     >>> round(p["k"], 4) == round(air_properties(300.0)["k"], 4)
     True
     """
-    if _floats(X, rho_oil, nu_oil_cSt, k_oil, cp_oil, T_K) and 0.0 <= X <= 1.0:
-        # one state (the thermal elements): the same arithmetic on Python floats
-        air = _air_properties(T_K)
-        mu_oil = nu_oil_cSt * 1e-6 * rho_oil
-        rho = X * rho_oil + (1 - X) * air["rho"]
-        mu = X * mu_oil + (1 - X) * air["mu"]
-        k = X * k_oil + (1 - X) * air["k"]
-        cp = (X * rho_oil * cp_oil + (1 - X) * air["rho"] * air["cp"]) / rho
-        return dict(rho=rho, mu=mu, k=k, cp=cp, nu=mu / rho, Pr=mu * cp / k)
     X = np.asarray(X, dtype=float)
-    if np.any(~np.isfinite(X) | (X < 0) | (X > 1)):
+    if X.size and not (X.min() >= 0.0 and X.max() <= 1.0):
         raise InputError("oil_fraction", _out(X), "oil volume fraction must lie in [0, 1]")
     air = air_properties(T_K)
     mu_oil = np.asarray(nu_oil_cSt, dtype=float) * 1e-6 * rho_oil
@@ -299,50 +291,44 @@ def oil_air_properties(X, rho_oil, nu_oil_cSt, k_oil, cp_oil, T_K):
     mu = X * mu_oil + (1 - X) * air["mu"]
     k = X * k_oil + (1 - X) * air["k"]
     cp = (X * rho_oil * cp_oil + (1 - X) * air["rho"] * air["cp"]) / rho
-    return {key: _out(v) for key, v in dict(rho=rho, mu=mu, k=k, cp=cp, nu=mu / rho,
-                                            Pr=mu * cp / k).items()}
+    return {key: _out(v) for key, v in dict(rho=rho, mu=mu, k=k, cp=cp, nu=mu / rho, Pr=mu * cp / k).items()}
 
 
 def _film_air(T_s_K, T_inf_K):
+    """Air at the film temperature (held inside the table's 200–600 K)."""
     Tf = 0.5 * (np.asarray(T_s_K, float) + np.asarray(T_inf_K, float))
-    from thermobear.lubrication.air import T_RANGE_K
-    return Tf, air_properties(np.clip(Tf, *T_RANGE_K))   # properties held in the table's range
+    return Tf, air_properties(np.clip(Tf, *AIR_T_RANGE_K))
 
 
-def h_natural_horizontal_cylinder(T_s_K, T_inf_K, D, method="Churchill-Chu"):
+def h_natural_horizontal_cylinder(T_s_K, T_inf_K, D):
     r"""Free-convection coefficient of a horizontal cylinder in still air [W/(m² K)].
 
     Parameters
     ----------
-    T_s_K, T_inf_K : float  surface and ambient temperature [K]
-    D : float               cylinder diameter [m]
-    method : str            correlation name passed to ``ht.Nu_horizontal_cylinder``
+    T_s_K, T_inf_K : array_like  surface and ambient temperature [K]
+    D : array_like               cylinder diameter [m]
 
     Returns
     -------
-    h = Nu_D k / D with Nu_D = [0.60 + 0.387 Ra^{1/6} / (1+(0.559/Pr)^{9/16})^{8/27}]²
-    (Churchill & Chu 1975, via ChEDL ``ht``), air at the film temperature
-    (CoolProp), Gr = g β |ΔT| D³/ν², β = 1/T_film (ideal gas).
+    float or ndarray  h = Nu_D k / D [W/(m² K)]
+
+    Notes
+    -----
+    Churchill & Chu 1975 [5]_ (``ht.conv_free_immersed.Nu_horizontal_cylinder_Churchill_Chu``):
+
+    .. math:: Nu_D = \left[0.60 + \frac{0.387\, Ra^{1/6}}{(1 + (0.559/Pr)^{9/16})^{8/27}}\right]^2
+
+    air at the film temperature, Ra = Gr Pr, Gr = g β |ΔT| D³/ν², β = 1/T_film (ideal gas).
 
     Examples
     --------
     >>> round(h_natural_horizontal_cylinder(330.0, 300.0, 0.15), 2)
     4.76
     """
-    D = float(_pos("D_m", D))
-    return _h_natural_cylinder(float(T_s_K), float(T_inf_K), D, method)
-
-
-def _h_natural_cylinder(T_s_K: float, T_inf_K: float, D: float, method="Churchill-Chu") -> float:
-    """:func:`h_natural_horizontal_cylinder` on checked floats (the network's fast path)."""
-    import ht
-
-    Tf = 0.5 * (T_s_K + T_inf_K)
-    air = _air_properties(min(max(Tf, _AIR_T_RANGE_K[0]), _AIR_T_RANGE_K[1]))   # as _film_air
-    dT = abs(T_s_K - T_inf_K)
-    Gr = 9.80665 * (1.0 / Tf) * dT * D**3 / air["nu"] ** 2
-    Nu = ht.Nu_horizontal_cylinder(Pr=air["Pr"], Gr=Gr, Method=method)
-    return Nu * air["k"] / D
+    D = checked("D_m", D)
+    Tf, air = _film_air(T_s_K, T_inf_K)
+    Gr = G_N / Tf * np.abs(np.asarray(T_s_K, float) - T_inf_K) * D**3 / air["nu"] ** 2
+    return _out(Nu_horizontal_cylinder_Churchill_Chu(Pr=air["Pr"], Gr=Gr) * air["k"] / D)
 
 
 def h_forced_cylinder(u_inf, D, T_s_K, T_inf_K):
@@ -350,33 +336,31 @@ def h_forced_cylinder(u_inf, D, T_s_K, T_inf_K):
 
     Parameters
     ----------
-    u_inf : float           free-stream air speed [m/s]
-    D : float               cylinder diameter [m]
-    T_s_K, T_inf_K : float  surface and air temperature [K] (film properties)
+    u_inf : array_like           free-stream air speed [m/s]
+    D : array_like               cylinder diameter [m]
+    T_s_K, T_inf_K : array_like  surface and air temperature [K] (film properties)
 
     Returns
     -------
-    h = Nu_D k / D, Nu_D = 0.3 + 0.62 Re^½ Pr^⅓ / [1+(0.4/Pr)^⅔]^¼ [1+(Re/282000)^⅝]^⅘
-    (Churchill & Bernstein 1977; ``ht.conv_external.Nu_cylinder_Churchill_Bernstein``),
-    Re = u D/ν, air at the film temperature (CoolProp).
+    float or ndarray  h = Nu_D k / D [W/(m² K)]
 
     Notes
     -----
-    The specific ``ht`` function is called on purpose: in ht 1.2.0
-    ``Nu_external_cylinder(..., Method="Churchill-Bernstein")`` dispatches to
-    Sanitjai–Goldstein (14 % higher here).
+    Churchill & Bernstein 1977 [5]_ (``ht.conv_external.Nu_cylinder_Churchill_Bernstein``; in ht
+    1.2.0 the dispatcher ``Nu_external_cylinder(Method="Churchill-Bernstein")`` runs
+    Sanitjai–Goldstein instead, 14 % higher here, so the specific function is called):
+
+    .. math:: Nu_D = 0.3 + \frac{0.62 Re^{1/2} Pr^{1/3}}{[1 + (0.4/Pr)^{2/3}]^{1/4}}
+              \left[1 + \left(\frac{Re}{282000}\right)^{5/8}\right]^{4/5}
 
     Examples
     --------
     >>> round(h_forced_cylinder(2.0, 0.1, 320.0, 300.0), 2)
     16.04
     """
-    from ht.conv_external import Nu_cylinder_Churchill_Bernstein
-
-    D, u = float(_pos("D_m", D)), float(_pos("u_air_m_s", u_inf))
+    D, u = checked("D_m", D), checked("u_air_m_s", u_inf)
     _, air = _film_air(T_s_K, T_inf_K)
-    Nu = Nu_cylinder_Churchill_Bernstein(Re=u * D / air["nu"], Pr=air["Pr"])
-    return Nu * air["k"] / D
+    return _out(Nu_cylinder_Churchill_Bernstein(Re=u * D / air["nu"], Pr=air["Pr"]) * air["k"] / D)
 
 
 def h_forced_plate(u_inf, L, T_s_K, T_inf_K):
@@ -384,26 +368,30 @@ def h_forced_plate(u_inf, L, T_s_K, T_inf_K):
 
     Parameters
     ----------
-    u_inf : float           free-stream air speed [m/s]
-    L : float               plate length in the flow direction [m]
-    T_s_K, T_inf_K : float  surface and air temperature [K] (film properties)
+    u_inf : array_like           free-stream air speed [m/s]
+    L : array_like               plate length in the flow direction [m]
+    T_s_K, T_inf_K : array_like  surface and air temperature [K] (film properties)
 
     Returns
     -------
-    h = Nu_L k / L with ``ht.Nu_external_horizontal_plate`` (laminar Baehr,
-    turbulent Schlichting, transition Re = 5e5), Re = u L/ν.
+    float or ndarray  h = Nu_L k / L [W/(m² K)]
+
+    Notes
+    -----
+    Laminar Baehr (Nu = 0.664 Re^½ Pr^⅓ for Pr 0.6–10), turbulent Schlichting above the transition
+    Reynolds number 5e5, as ``ht.Nu_external_horizontal_plate`` selects them [5]_.
 
     Examples
     --------
     >>> round(h_forced_plate(2.0, 0.1, 320.0, 300.0), 2)    # laminar: 0.664 Re^½ Pr^⅓ k/L
     17.55
     """
-    import ht
-
-    L, u = float(_pos("L_m", L)), float(_pos("u_air_m_s", u_inf))
+    L, u = checked("L_m", L), checked("u_air_m_s", u_inf)
     _, air = _film_air(T_s_K, T_inf_K)
-    Nu = ht.Nu_external_horizontal_plate(Re=u * L / air["nu"], Pr=air["Pr"], L=L)
-    return Nu * air["k"] / L
+    Re = u * L / air["nu"]
+    Nu = np.where(Re < 5e5, Nu_horizontal_plate_laminar_Baehr(Re, air["Pr"]),
+                  Nu_horizontal_plate_turbulent_Schlichting(np.maximum(Re, 5e5), air["Pr"]))
+    return _out(Nu * air["k"] / L)
 
 
 def h_radiation(emissivity, T1_K, T2_K):
@@ -416,9 +404,14 @@ def h_radiation(emissivity, T1_K, T2_K):
 
     Returns
     -------
-    h = ε σ (T1² + T2²)(T1 + T2), so that h (T1 − T2) = ε σ (T1⁴ − T2⁴) exactly
-    (the secant form of PHYSICS.md §8 item 5's 4 ε σ T_m³; it is updated in
-    the outer loop of the steady solver).
+    float or ndarray  h [W/(m² K)]
+
+    Notes
+    -----
+    .. math:: h = \varepsilon \sigma (T_1^2 + T_2^2)(T_1 + T_2)
+
+    so that h (T1 − T2) = ε σ (T1⁴ − T2⁴) exactly (Bergman et al. 2011 eqs 1.7–1.9 [2]_; the
+    secant form of 4 ε σ T_m³, re-evaluated at every iterate of the solvers).
 
     Examples
     --------
@@ -427,9 +420,9 @@ def h_radiation(emissivity, T1_K, T2_K):
     True
     """
     eps = np.asarray(emissivity, dtype=float)
-    if np.any(~np.isfinite(eps) | (eps <= 0) | (eps > 1)):
+    if eps.size and not (eps.min() > 0 and eps.max() <= 1):
         raise InputError("emissivity", _out(eps), "must lie in (0, 1]")
-    T1, T2 = _pos("T1_K", T1_K), _pos("T2_K", T2_K)
+    T1, T2 = checked("T1_K", T1_K), checked("T2_K", T2_K)
     return _out(eps * SIGMA_SB * (T1**2 + T2**2) * (T1 + T2))
 
 
@@ -441,13 +434,18 @@ def advection_conductance(rho, cp, Q, beta):
     rho : array_like   oil density [kg/m³]
     cp : array_like    oil specific heat [J/(kg K)]
     Q : array_like     supplied oil flow [m³/s]
-    beta : array_like  penetration coefficient: fraction of Q passing through
-                       the bearing, 0 < β ≤ 1 [-] (≈ 0.4, seed 004 §4.5 citing Brossier 2021)
+    beta : array_like  penetration coefficient: fraction of Q passing through the bearing,
+                       0 < β ≤ 1 [-] (≈ 0.4 for oil jets, Brossier et al. 2021 [6]_, as seed 004 §4.5 uses)
 
     Returns
     -------
-    G = ρ c_p Q β [W/K]; the heat carried away is Φ = G (T_mix − T_in)
-    (PHYSICS.md §8 item 6).  A one-way (upwind) link: only the downstream
+    float or ndarray  G [W/K]
+
+    Notes
+    -----
+    .. math:: G = \rho\, c_p\, \dot Q\, \beta
+
+    The heat carried away is Φ = G (T_mix − T_in): a one-way (upwind) link, only the downstream
     node's balance contains it.
 
     Examples
@@ -456,26 +454,33 @@ def advection_conductance(rho, cp, Q, beta):
     1.8733
     """
     beta = np.asarray(beta, dtype=float)
-    if np.any(~np.isfinite(beta) | (beta <= 0) | (beta > 1)):
+    if beta.size and not (beta.min() > 0 and beta.max() <= 1):
         raise InputError("beta", _out(beta), "penetration coefficient must lie in (0, 1]")
-    return _out(_pos("rho_kg_m3", rho) * _pos("cp_J_kgK", cp) * _pos("Q_m3_s", Q, strict=False) * beta)
+    return _out(checked("rho_kg_m3", rho) * checked("cp_J_kgK", cp) * checked("Q_m3_s", Q, strict=False) * beta)
 
 
 # ---------------------------------------------------------------------------
-# network elements (parameters already evaluated to SI by network.py)
+# network elements: parameters in SI (numbers or arrays over the operating points)
 # ---------------------------------------------------------------------------
-@dataclass
+def _oil_T(T_K):
+    """Temperature [°C] for the oil's property correlations, held inside their accepted range: an
+    iterate of a coupled solve may overshoot transiently; an equilibrium beyond the limit is
+    reported as runaway by the solver, not as an error from a property call."""
+    return np.clip(np.asarray(T_K, float) - 273.15, *T_LUBRICANT_REFUSE_C)
+
+
+@dataclass(frozen=True)
 class Element:
     """One element (edge) of a thermal network.
 
     Attributes
     ----------
     name : str            unique element name
-    type : str            element family (key of ``ELEMENT_TYPES``)
+    type : str            element family (key of :data:`ELEMENT_TYPES`)
     nodes : tuple         (node_0, node_1); for ``advection`` (upstream, downstream)
     i, j : int            node indices
-    p : dict              evaluated parameters (SI, keys as in the network file)
-    context : object      lubricant etc. for temperature-dependent properties
+    p : dict              parameters (SI, keys as in the network file): numbers, or arrays over the
+                          operating points (shape (B,)); materials as Material objects
     """
 
     name: str
@@ -483,36 +488,18 @@ class Element:
     nodes: tuple
     i: int
     j: int
-    p: dict
-    context: dict = field(default_factory=dict, repr=False)
-    advective = False           #: one-way link (upwind), not a symmetric conductance
-    T_dependent = False         #: conductance depends on node temperatures
+    p: dict = field(repr=False)
+    advective = False               #: one-way link (upwind), not a symmetric conductance
 
-    def conductance(self, T_K) -> float:
-        """Conductance [W/K] at node temperatures ``T_K`` (array over all nodes); each element type
-        (the subclasses in ``ELEMENT_TYPES``) defines it."""
+    def depends_on(self) -> tuple:
+        """Indices of the nodes whose temperatures the conductance depends on."""
+        return ()
+
+    def conductance(self, Ti, Tj, oil=None, shared=None):
+        """Conductance [W/K] at the temperatures ``Ti``, ``Tj`` [K] of its two nodes (arrays over the
+        operating points); ``oil`` the lubricant (fluid properties), ``shared`` a dict in which
+        elements evaluated at the same temperatures share fluid properties."""
         raise TypeError(f"{type(self).__name__} is an element base class: it has no conductance of its own")
-
-    def _T_nodes(self) -> tuple:
-        """Indices of the nodes whose temperatures the conductance depends on (both by default)."""
-        return (self.i, self.j) if self.T_dependent else ()
-
-    def _conductance_shared(self, T_K, shared: dict) -> float:
-        """:meth:`conductance`, with fluid properties shared between elements through ``shared``
-        (a dict the caller keeps for one temperature state; the network solvers' fast path)."""
-        return self.conductance(T_K)
-
-    def _memo(self, compute):
-        """``compute()`` (the conductance of a temperature-independent element) memoised on the
-        element's parameter values: the network's load check and the solver's plan both evaluate
-        it, for every operating point."""
-        key = tuple((k, (v.shape, v.tobytes()) if isinstance(v, np.ndarray) else v) for k, v in self.p.items())
-        hit = self.__dict__.get("_tb_G")
-        if hit is not None and hit[0] == key:
-            return hit[1]
-        G = compute()
-        self.__dict__["_tb_G"] = (key, G)
-        return G
 
 
 def _k(p, key="k_W_mK", mat="material"):
@@ -522,80 +509,67 @@ def _k(p, key="k_W_mK", mat="material"):
 class Conductance(Element):
     """A given conductance ``G_W_K`` or resistance ``R_K_W``."""
 
-    def conductance(self, T_K):
-        return float(self.p["G_W_K"]) if "G_W_K" in self.p else 1.0 / float(self.p["R_K_W"])
+    def conductance(self, Ti, Tj, oil=None, shared=None):
+        return self.p["G_W_K"] if "G_W_K" in self.p else 1.0 / self.p["R_K_W"]
 
 
 class Shell(Element):
-    """Radial conduction through a cylindrical shell (``shell_conductance``)."""
+    """Radial conduction through a cylindrical shell (:func:`shell_conductance`)."""
 
-    def conductance(self, T_K):
-        return self._memo(lambda: shell_conductance(_k(self.p), self.p["L_m"], self.p["r1_m"], self.p["r2_m"]))
+    def conductance(self, Ti, Tj, oil=None, shared=None):
+        return shell_conductance(_k(self.p), self.p["L_m"], self.p["r1_m"], self.p["r2_m"])
 
 
 class Planar(Element):
-    """Planar / axial conduction (``planar_conductance``)."""
+    """Planar / axial conduction (:func:`planar_conductance`)."""
 
-    def conductance(self, T_K):
-        return self._memo(lambda: planar_conductance(_k(self.p), self.p["A_m2"], self.p["length_m"]))
+    def conductance(self, Ti, Tj, oil=None, shared=None):
+        return planar_conductance(_k(self.p), self.p["A_m2"], self.p["length_m"])
 
 
 class Interface(Element):
     """Thermal contact conductance of a fitted or clamped joint: G = h_c A."""
 
-    def conductance(self, T_K):
-        h, A = self.p["h_W_m2K"], self.p["A_m2"]
-        if _floats(h, A) and _all_pos(h, A):
-            return h * A
-        return float(_pos("h_W_m2K", h) * _pos("A_m2", A))
+    def conductance(self, Ti, Tj, oil=None, shared=None):
+        return checked("h_W_m2K", self.p["h_W_m2K"]) * checked("A_m2", self.p["A_m2"])
 
 
 class BallRaceContact(Element):
-    """Ball–race Hertz contacts of one raceway, balls in parallel (``ball_race_conductance``).
+    """Ball–race Hertz contacts of one raceway, balls in parallel (:func:`ball_race_conductance`).
 
-    The per-ball semi-axes come from the mechanics through the context keys
-    ``contacts.<inner|outer>.a_m`` and ``.b_m`` (arrays over the balls); when
-    absent, the fallback ``a_fallback_m``/``b_fallback_m`` for ``n_balls``
-    identical balls is used (network.py resolves this at build time and
-    records which one was used in ``p["semi_axes_from"]``).
+    The per-ball semi-axes ``a_m``, ``b_m`` (shape (..., Z)) come from the mechanics (the network
+    reads ``contacts.<inner|outer>.a_m`` / ``.b_m``), else from the element's fallback.
     """
 
-    def conductance(self, T_K):
+    def conductance(self, Ti, Tj, oil=None, shared=None):
         kb = self.p["k_ball_W_mK"] if "k_ball_W_mK" in self.p else self.p["material_ball"].k
         kr = self.p["k_ring_W_mK"] if "k_ring_W_mK" in self.p else self.p["material_ring"].k
-        return self._memo(lambda: ball_race_conductance(kb, kr, self.p["a_m"], self.p["b_m"]))
+        return ball_race_conductance(kb, kr, self.p["a_m"], self.p["b_m"])
 
 
 class Convection(Element):
     """Convection from a surface (node 0) to a fluid (node 1) with a NAMED correlation.
 
-    ``correlation``: ``harris`` / ``flat_plate_laminar`` (oil–air mixture, needs
-    ``u_m_s``, ``x_m``, ``oil_fraction`` and the lubricant ``oil`` in the
-    context), ``natural_horizontal_cylinder`` (``D_m``), ``forced_cylinder``
-    (``D_m``, ``u_air_m_s``), ``forced_plate`` (``L_m``, ``u_air_m_s``),
+    ``correlation``: ``harris`` / ``flat_plate_laminar`` (oil–air mixture, needs ``u_m_s``,
+    ``x_m``, ``oil_fraction`` and the lubricant), ``natural_horizontal_cylinder`` (``D_m``),
+    ``forced_cylinder`` (``D_m``, ``u_air_m_s``), ``forced_plate`` (``L_m``, ``u_air_m_s``),
     ``given`` (``h_W_m2K``).  Always ``A_m2``.
     """
 
-    @property
-    def T_dependent(self):
-        return self.p["correlation"] != "given"
-
-    def _T_nodes(self) -> tuple:
+    def depends_on(self):
         c = self.p["correlation"]
         return () if c == "given" else (self.j,) if c in HARRIS_COEFFICIENTS else (self.i, self.j)
 
-    def _harris_props(self, Tf, shared=None) -> dict:
-        """Properties of the fluid (node 1, at ``Tf`` [K]) for the harris-type laws; ``shared``
-        caches them per (lubricant, fluid, oil fraction, temperature)."""
+    def _fluid(self, Tf, oil, shared):
+        """Properties of the fluid node at ``Tf`` [K] (harris-type laws), shared per state."""
         p = self.p
         fluid = p.get("fluid", "oil_air")
-        oil = self.context.get("oil") if fluid != "air" else None
         X = 0.0 if fluid == "air" else 1.0 if fluid == "oil" else p["oil_fraction"]
-        key = ("harris", id(oil), fluid, X, Tf)
+        key = (self.j, fluid, X.tobytes() if isinstance(X, np.ndarray) else X)
         if shared is not None and key in shared:
             return shared[key]
         if fluid == "air":
-            props = air_properties(_air_T(Tf))
+            props = air_properties(np.clip(Tf, *AIR_T_RANGE_K))
         else:
             T_C = _oil_T(Tf)
             props = oil_air_properties(X, oil.rho(T_C), oil.nu(T_C), oil.k_th(T_C), oil.cp(T_C), T_C + 273.15)
@@ -603,123 +577,73 @@ class Convection(Element):
             shared[key] = props
         return props
 
-    def h(self, T_K) -> float:
-        """Heat-transfer coefficient [W/(m² K)] at the current temperatures."""
-        return self._h(T_K, None)
-
-    def _h(self, T_K, _shared) -> float:
+    def h(self, Ti, Tj, oil=None, shared=None):
+        """Heat-transfer coefficient [W/(m² K)] at the node temperatures [K]."""
         p, c = self.p, self.p["correlation"]
-        Ts, Tf = float(T_K[self.i]), float(T_K[self.j])
         if c == "given":
-            return float(p["h_W_m2K"])
+            return p["h_W_m2K"]
         if c in HARRIS_COEFFICIENTS:
-            props = self._harris_props(Tf, _shared)
-            if _shared is not None:        # parameters checked at load, properties from the tables: no re-check
-                return (HARRIS_COEFFICIENTS[c] * props["k"] * math.cbrt(props["Pr"])
-                        * math.sqrt(p["u_m_s"] / (props["nu"] * p["x_m"])))
+            props = self._fluid(Tj, oil, shared)
             return h_harris(props["k"], props["Pr"], p["u_m_s"], props["nu"], p["x_m"], c)
         if c == "natural_horizontal_cylinder":
-            if _shared is not None:        # D_m checked at load
-                return _h_natural_cylinder(Ts, Tf, float(p["D_m"]))
-            return h_natural_horizontal_cylinder(Ts, Tf, p["D_m"])
+            return h_natural_horizontal_cylinder(Ti, Tj, p["D_m"])
         if c == "forced_cylinder":
-            return h_forced_cylinder(p["u_air_m_s"], p["D_m"], Ts, Tf)
-        if c == "forced_plate":
-            return h_forced_plate(p["u_air_m_s"], p["L_m"], Ts, Tf)
-        raise InputError(f"elements[{self.name}].correlation", c, f"one of {CORRELATIONS}")
+            return h_forced_cylinder(p["u_air_m_s"], p["D_m"], Ti, Tj)
+        return h_forced_plate(p["u_air_m_s"], p["L_m"], Ti, Tj)
 
-    def conductance(self, T_K):
-        # the keys were checked on load (network.py: units, correlation names), the fluid properties
-        # come from the tables: the fast path, without re-checking them
-        return self._h(T_K, {}) * float(self.p["A_m2"])
-
-    def _conductance_shared(self, T_K, shared):
-        return self._h(T_K, shared) * float(self.p["A_m2"])
-
-
-def _air_T(T_K: float) -> float:
-    """Temperature [K] for the air table, held inside 200–600 K (see :func:`_oil_T`)."""
-    return min(max(float(T_K), _AIR_T_RANGE_K[0]), _AIR_T_RANGE_K[1])
-
-
-def _oil_T(T_K: float) -> float:
-    """Temperature [°C] for the oil's property correlations, held inside their validity: an iterate of
-    the coupled solve may overshoot transiently; an equilibrium beyond the limit is reported as runaway
-    by the solver, not as an error from a property call."""
-    return min(max(T_K - 273.15, _T_VALID_C[0]), _T_VALID_C[1])
+    def conductance(self, Ti, Tj, oil=None, shared=None):
+        return self.h(Ti, Tj, oil, shared) * self.p["A_m2"]
 
 
 class Radiation(Element):
     """Linearised radiation from node 0 (surface, ``A_m2``, ``emissivity``) to node 1."""
 
-    T_dependent = True
+    def depends_on(self):
+        return (self.i, self.j)
 
-    def conductance(self, T_K):
-        eps, T1, T2 = self.p["emissivity"], float(T_K[self.i]), float(T_K[self.j])
-        if not (_floats(eps) and 0.0 < eps <= 1.0 and T1 > 0.0 and T2 > 0.0 and T1 < math.inf and T2 < math.inf):
-            # the checks of h_radiation and their errors
-            return h_radiation(self.p["emissivity"], T_K[self.i], T_K[self.j]) * float(self.p["A_m2"])
-        return eps * SIGMA_SB * (T1 * T1 + T2 * T2) * (T1 + T2) * float(self.p["A_m2"])   # h_radiation
-
-    def _conductance_shared(self, T_K, shared):
-        return self.conductance(T_K)
+    def conductance(self, Ti, Tj, oil=None, shared=None):
+        return h_radiation(self.p["emissivity"], Ti, Tj) * self.p["A_m2"]
 
 
 class Advection(Element):
-    """One-way oil stream from node 0 (upstream, e.g. fixed oil inlet) through node 1.
+    """One-way oil stream from node 0 (upstream, e.g. the fixed oil inlet) through node 1.
 
-    G = ρ c_p Q̇ β, with ρ, c_p given (``rho_kg_m3``, ``cp_J_kgK``) or taken from
-    the context lubricant ``oil`` at the upstream temperature.
+    G = ρ c_p Q̇ β (:func:`advection_conductance`), with ρ, c_p given (``rho_kg_m3``,
+    ``cp_J_kgK``) or those of the lubricant at the upstream temperature.
     """
 
     advective = True
 
-    @property
-    def T_dependent(self):
-        return not ("rho_kg_m3" in self.p and "cp_J_kgK" in self.p)
+    def depends_on(self):
+        return () if ("rho_kg_m3" in self.p and "cp_J_kgK" in self.p) else (self.i,)
 
-    def _T_nodes(self) -> tuple:
-        return (self.i,) if self.T_dependent else ()
-
-    def conductance(self, T_K):
+    def conductance(self, Ti, Tj, oil=None, shared=None):
         p = self.p
-        if "rho_kg_m3" in p and "cp_J_kgK" in p:
-            rho, cp = p["rho_kg_m3"], p["cp_J_kgK"]
-        else:
-            T_C = _oil_T(float(T_K[self.i]))
-            oil = self.context["oil"]
-            rho = p["rho_kg_m3"] if "rho_kg_m3" in p else oil.rho(T_C)
-            cp = p["cp_J_kgK"] if "cp_J_kgK" in p else oil.cp(T_C)
-        Q, beta = p["Q_m3_s"], p["beta"]
-        if not (_floats(rho, cp, Q, beta) and rho > 0.0 and cp > 0.0 and 0.0 < beta <= 1.0
-                and Q >= 0.0 and rho * cp * Q < math.inf):
-            return advection_conductance(rho, cp, Q, beta)              # the checks and their errors
-        return rho * cp * Q * beta                                      # advection_conductance
+        T_C = _oil_T(Ti)
+        rho = p["rho_kg_m3"] if "rho_kg_m3" in p else oil.rho(T_C)
+        cp = p["cp_J_kgK"] if "cp_J_kgK" in p else oil.cp(T_C)
+        return advection_conductance(rho, cp, p["Q_m3_s"], p["beta"])
 
 
-CORRELATIONS = ("harris", "flat_plate_laminar", "natural_horizontal_cylinder",
-                "forced_cylinder", "forced_plate", "given")
+CORRELATIONS = ("harris", "flat_plate_laminar", "natural_horizontal_cylinder", "forced_cylinder",
+                "forced_plate", "given")
 
-#: Element families: class, required keys, optional keys, "one of" groups.
-#: Numeric keys carry their unit in the name (``_m``, ``_m2``, ``_W_mK`` ...);
-#: dimensionless ones (beta, emissivity, oil_fraction, n_balls) are listed as such.
+#: Element families: class, required keys, optional keys, "one of" groups.  Numeric keys carry
+#: their unit in the name (``_m``, ``_m2``, ``_W_mK`` ...); dimensionless ones (beta, emissivity,
+#: oil_fraction, n_balls) are listed as such.
 ELEMENT_TYPES = {
     "conductance": dict(cls=Conductance, required=(), optional=(), one_of=(("G_W_K", "R_K_W"),)),
-    "shell": dict(cls=Shell, required=("r1_m", "r2_m", "L_m"), optional=(),
-                  one_of=(("k_W_mK", "material"),)),
-    "planar": dict(cls=Planar, required=("A_m2", "length_m"), optional=(),
-                   one_of=(("k_W_mK", "material"),)),
+    "shell": dict(cls=Shell, required=("r1_m", "r2_m", "L_m"), optional=(), one_of=(("k_W_mK", "material"),)),
+    "planar": dict(cls=Planar, required=("A_m2", "length_m"), optional=(), one_of=(("k_W_mK", "material"),)),
     "interface": dict(cls=Interface, required=("h_W_m2K", "A_m2"), optional=(), one_of=()),
     "ball_race_contact": dict(cls=BallRaceContact, required=("contact",),
-                              optional=("a_fallback_m", "b_fallback_m", "n_balls"),
-                              one_of=(("k_ball_W_mK", "material_ball"),
-                                      ("k_ring_W_mK", "material_ring"))),
+                              optional=("a_fallback_m", "b_fallback_m", "n_balls", "Q_fallback_N"),
+                              one_of=(("k_ball_W_mK", "material_ball"), ("k_ring_W_mK", "material_ring"))),
     "convection": dict(cls=Convection, required=("correlation", "A_m2"),
-                       optional=("u_m_s", "x_m", "oil_fraction", "fluid", "D_m", "L_m",
-                                 "u_air_m_s", "h_W_m2K"), one_of=()),
+                       optional=("u_m_s", "x_m", "oil_fraction", "fluid", "D_m", "L_m", "u_air_m_s", "h_W_m2K"),
+                       one_of=()),
     "radiation": dict(cls=Radiation, required=("emissivity", "A_m2"), optional=(), one_of=()),
-    "advection": dict(cls=Advection, required=("Q_m3_s", "beta"),
-                      optional=("rho_kg_m3", "cp_J_kgK"), one_of=()),
+    "advection": dict(cls=Advection, required=("Q_m3_s", "beta"), optional=("rho_kg_m3", "cp_J_kgK"), one_of=()),
 }
 
 #: Keys each convection correlation needs (checked on load).
@@ -730,7 +654,5 @@ CORRELATION_KEYS = {
 }
 
 #: Keys that are strings, not numbers or expressions.
-STRING_KEYS = {"contact": ("inner", "outer"), "correlation": CORRELATIONS,
-               "fluid": ("oil_air", "oil", "air")}
+STRING_KEYS = {"contact": ("inner", "outer"), "correlation": CORRELATIONS, "fluid": ("oil_air", "oil", "air")}
 MATERIAL_KEYS = ("material", "material_ball", "material_ring")
-

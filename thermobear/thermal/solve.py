@@ -1,97 +1,134 @@
-r"""Steady and transient solution of a thermal network, and the loss → node split.
+r"""Steady and transient solution of a thermal network at B operating points, and the loss split.
 
-Steady state (PHYSICS.md §8 "Solving"): the conductance matrix A (sparse) of
-the free nodes f and fixed nodes b gives
+Heat balance of the free nodes f, with the fixed nodes b as boundaries (Pouly et al. 2010):
 
-    A_ff T_f = P_f − A_fb T_b,
+.. math:: A_{ff}(T)\, T_f + A_{fb}(T)\, T_b = P_f
 
-with conductive elements symmetric (A_ii += G, A_jj += G, A_ij = A_ji −= G)
-and advective ones one-way (upwind: only the downstream row d gets
-A_dd += G, A_du −= G).  Temperature-dependent elements (free and forced
-convection, radiation, fluid properties) are updated in an outer Picard loop
-until max |ΔT| < tol_K.
+with conductive elements symmetric (A_ii += G, A_jj += G, A_ij = A_ji −= G) and advective ones
+one-way (upwind: only the downstream row d gets A_dd += G, A_du −= G).  Every operating point of
+a :class:`~thermobear.thermal.network.ThermalNetwork` is solved at once: stacked matrices
+(B, n_f, n_f), one batched LAPACK solve per iteration.
 
-Transient: C_f dT_f/dt = P_f(t, T) − A_ff(T) T_f − A_fb(T) T_b(t), integrated
-with scipy's BDF (stiff) with the sparse Jacobian −C⁻¹A_ff, restarted at
-every schedule breakpoint so that steps in the inputs are not smeared.
+* :func:`solve_steady` — Newton on T_f for the temperature-dependent conductances (free and
+  forced convection, radiation, fluid properties), ∂(A T)/∂T by forward differences of the
+  conductances; one linear solve for a linear network.  The energy balance of the result closes
+  to machine precision (the flows use the conductances of the final solve).
+* :func:`solve_transient` — C_f dT_f/dt = P_f(t, T) − A_ff(T) T_f − A_fb(T) T_b(t), integrated
+  with scipy's BDF and the block-diagonal Jacobian −C⁻¹ A_ff, restarted at every breakpoint so
+  that steps in the inputs are not smeared.
+* :func:`split_losses` — the bearing losses onto the nodes (½ of each contact loss to the ball,
+  ½ to its race; drag to the oil–air mixture), energy conserved exactly.
+
+References
+----------
+.. [1] Pouly, F., Changenet, C., Ville, F., Velex, P., Damiens, B., 2010, "Power loss predictions
+   in high-speed rolling element bearings using thermal networks", Tribology Transactions 53,
+   957–967.
+.. [2] Shampine, L. F., Reichelt, M. W., 1997, "The MATLAB ODE suite", SIAM J. Sci. Comput. 18,
+   1–22 (the BDF/NDF method of ``scipy.integrate.solve_ivp``).
 """
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from functools import lru_cache
 from typing import Callable
 
 import numpy as np
 import scipy.sparse as sp
-from scipy.integrate import solve_ivp
-from scipy.linalg.lapack import dgeev, dgesv
-from scipy.sparse.linalg import spsolve
+from scipy.integrate import BDF, Radau
 
 from thermobear.errors import InputError, NoConvergence
 from thermobear.thermal.network import ThermalNetwork
 
-__all__ = ["SteadyResult", "TransientResult", "Flow", "solve_steady", "solve_transient",
-           "assemble", "split_losses", "sources_vector"]
+__all__ = ["SteadyResult", "TransientResult", "solve_steady", "solve_linear", "solve_transient", "split_losses",
+           "sources_matrix", "batched_solve", "heat_out"]
 
 _C0 = 273.15
 
 
-@dataclass(frozen=True)
-class Flow:
-    """Heat flow through one element.
+def batched_solve(A, b):
+    """x with A x = b for stacked matrices A (B, n, n) and right-hand sides b (B, n) or (B, n, k);
+    rows of a singular A come back as NaN (the caller names the failure)."""
+    try:
+        return np.linalg.solve(A, b[..., None])[..., 0] if b.ndim == A.ndim - 1 else np.linalg.solve(A, b)
+    except np.linalg.LinAlgError:
+        out = np.full(b.shape, np.nan)
+        for k in range(A.shape[0]):
+            try:
+                out[k] = np.linalg.solve(A[k], b[k])
+            except np.linalg.LinAlgError:
+                pass
+        return out
 
-    Q_W is signed along the element's ``between`` order: for conduction,
-    convection and radiation the heat going from ``nodes[0]`` to ``nodes[1]``;
-    for advection (``nodes = (upstream, downstream)``) the heat the stream
-    carries away from the downstream node, G (T_down − T_up).  ``from_node`` /
-    ``to_node`` give the physical direction with ``abs(Q_W)``.
-    """
 
-    element: str
-    type: str
-    nodes: tuple
-    Q_W: float
-    G_W_K: float
+def sources_matrix(net: ThermalNetwork, sources_W) -> np.ndarray:
+    """Heat sources (B, n) [W] from a dict node → W (numbers, arrays over the B points, or per-ball
+    arrays (B, Z) summed over the last axis); unknown or fixed nodes → InputError."""
+    P = np.zeros((net.B, len(net.nodes)))
+    for name, q in (sources_W or {}).items():
+        k = net.index.get(name)
+        if k is None:
+            raise InputError("sources", name, f"unknown node; nodes: {', '.join(net.nodes)}")
+        if net.fixed[k]:
+            raise InputError(f"sources.{name}", q, "heat cannot be injected into a fixed-temperature node")
+        q = np.asarray(q, dtype=float)
+        if q.ndim == 2 or (q.ndim == 1 and net.B == 1 and q.size > 1):
+            q = q.sum(axis=-1)
+        if not np.all(np.isfinite(q)):
+            raise InputError(f"sources.{name}", q, "must be a finite heat flow [W]")
+        P[:, k] += q
+    return P
 
-    @property
-    def from_node(self) -> str:
-        """Node the heat leaves."""
-        if self.type == "advection":
-            return self.nodes[1] if self.Q_W >= 0 else "stream"
-        return self.nodes[0] if self.Q_W >= 0 else self.nodes[1]
 
-    @property
-    def to_node(self) -> str:
-        """Node the heat enters (``"stream"``: carried away by the oil)."""
-        if self.type == "advection":
-            return "stream" if self.Q_W >= 0 else self.nodes[1]
-        return self.nodes[1] if self.Q_W >= 0 else self.nodes[0]
+def heat_out(net: ThermalNetwork, Q) -> dict:
+    """Heat leaving the free part of the network [W] per point (B,): into each fixed node, and
+    into the oil stream (``"stream"``), from element flows Q (B, n_el)."""
+    out: dict = {}
+    fixed = net.fixed
+    for k, e in enumerate(net.elements):
+        fi, fj = fixed[e.i], fixed[e.j]
+        if e.advective:
+            if not fj:
+                out["stream"] = out.get("stream", 0.0) + Q[:, k]
+        elif fi != fj:
+            node = e.nodes[1] if fj else e.nodes[0]
+            out[node] = out.get(node, 0.0) + (Q[:, k] if fj else -Q[:, k])
+    return out
+
+
+def _scalar(v, B):
+    """Per-point values: a float for one operating point, else the (B,) array."""
+    return float(v[0]) if B == 1 else np.asarray(v)
 
 
 @dataclass
 class SteadyResult:
-    """Steady temperatures, flows and energy balance.
+    """Steady temperatures, flows and energy balance at B operating points.
+
+    Per-point quantities are floats when the network has one operating point, (B,) arrays otherwise.
 
     Attributes
     ----------
     T_C : dict              node → temperature [°C]
-    T_K : ndarray           temperatures of all nodes in ``network.nodes`` order [K]
-    flows : dict            element name → :class:`Flow`
+    T_K : ndarray           (B, n) temperatures of all nodes in ``network.nodes`` order [K]
+    G_W_K : ndarray         (B, n_el) element conductances of the final solve [W/K]
+    flows_W : dict          element name → heat flow [W], signed along the element's ``between``
+                            (advection: carried away from the downstream node)
     sources_W : dict        node → heat injected [W]
     balance_W : float       Σ sources − Σ heat leaving to fixed nodes and the oil stream [W]
-    balance_rel : float     |balance_W| / Σ|sources| (or / Σ|flows| without sources)
-    iterations : int        outer-loop iterations (1 for a linear network)
-    residual_K : float      last max |ΔT| of the outer loop [K]
+    balance_rel : float     |balance_W| / Σ |sources| (or / Σ |flows| without sources)
+    iterations : int        Newton iterations (1 for a linear network)
+    residual_K : float      last max |ΔT| [K]
     network : ThermalNetwork
     """
 
     T_C: dict
     T_K: np.ndarray
-    flows: dict
+    G_W_K: np.ndarray
+    flows_W: dict
     sources_W: dict
-    balance_W: float
-    balance_rel: float
+    balance_W: object
+    balance_rel: object
     iterations: int
     residual_K: float
     network: ThermalNetwork = field(repr=False)
@@ -99,343 +136,55 @@ class SteadyResult:
     @property
     def heat_out_W(self) -> dict:
         """Heat leaving into each fixed node and into the oil stream [W]."""
-        return _heat_out(self.network, self.flows)
+        Q = np.column_stack([np.atleast_1d(self.flows_W[e.name]) for e in self.network.elements])
+        return {k: _scalar(np.broadcast_to(v, (self.network.B,)), self.network.B)
+                for k, v in heat_out(self.network, Q).items()}
 
 
-@dataclass
-class TransientResult:
-    """Time series of a transient run.
-
-    Attributes
-    ----------
-    t : ndarray        output times [s]
-    T_K : ndarray      node temperatures, shape (n_nodes, n_t) [K]
-    T_C : dict         node → temperatures [°C]
-    sources_W : dict   node → injected heat [W] at the output times
-    report : dict      name → series of whatever the sources callback reported
-    nfev : int         right-hand-side evaluations
-    network : ThermalNetwork
-    """
-
-    t: np.ndarray
-    T_K: np.ndarray
-    T_C: dict
-    sources_W: dict
-    report: dict
-    nfev: int
-    network: ThermalNetwork = field(repr=False)
-
-
-def sources_vector(net: ThermalNetwork, sources_W) -> np.ndarray:
-    """Heat sources as a vector over ``net.nodes`` [W] (unknown or fixed nodes → InputError)."""
-    P = np.zeros(len(net.nodes))
-    for name, q in (sources_W or {}).items():
-        k = net.index.get(name)
-        if k is None:
-            raise InputError("sources", name, f"unknown node; nodes: {', '.join(net.nodes)}")
-        if net.fixed[k]:
-            raise InputError(f"sources.{name}", q, "heat cannot be injected into a fixed-temperature node")
-        q = q if type(q) is float else float(np.sum(q))
-        if not math.isfinite(q):
-            raise InputError(f"sources.{name}", q, "must be a finite heat flow [W]")
-        P[k] += q
-    return P
-
-
-def assemble(net: ThermalNetwork, T_K, G=None):
-    """Sparse conductance matrix A (n×n, CSR) and element conductances G [W/K].
-
-    Heat balance of node r: Σ_c A_rc T_c = P_r (net injected heat).
-
-    >>> import numpy as np
-    >>> from thermobear.thermal.network import load_network
-    >>> net = load_network({"nodes": {"a": {"C_J_K": 1.0}, "amb": {"T_C": 20.0}},
-    ...     "elements": [{"type": "conductance", "between": ["a", "amb"], "G_W_K": 2.0}]})
-    >>> A, G = assemble(net, net.initial_T_K())
-    >>> A.toarray()
-    array([[ 2., -2.],
-           [-2.,  2.]])
-    """
-    plan = _plan(net)
-    G = plan.conductances(T_K) if G is None else np.asarray(G, dtype=float)
-    return plan.csr(G), G
-
-
-_DENSE_MAX = 400      # networks up to this many nodes are solved with dense LU (faster than sparse there)
-
-
-class _Plan:
-    """Index structure of a network's conductance matrix and its temperature-independent
-    conductances, computed once per network (private; :func:`_plan` rebuilds it when the
-    elements or their parameters are replaced).
-
-    A = Σ_e G_e B_e with fixed 0/±1 patterns B_e (conductive elements symmetric, advective ones
-    upwind), so assembling is one weighted ``bincount`` over precomputed positions.  Elements
-    whose conductance depends on temperature are re-evaluated only when the temperatures of the
-    nodes they depend on change (``Element._T_nodes``); the harris-type convections sharing a fluid
-    node share one evaluation of the fluid properties (``Convection._harris_props``).
-    """
-
-    def __init__(self, net: ThermalNetwork):
-        els = net.elements
-        n = len(net.nodes)
-        self.n, self.elements = n, els
-        self.key = _plan_key(net)
-        (self.eidx, self.sign, self.flat, self.inv, self.nnz, self.indices, self.indptr, self.free,
-         self.fixed) = _pattern(n, tuple((e.i, e.j, bool(e.advective)) for e in els), net.fixed.tobytes())
-        self.dep = [k for k, e in enumerate(els) if e.T_dependent]
-        self.nodes_of = {k: tuple(els[k]._T_nodes()) for k in self.dep}
-        self._dep_items = [(k, els[k], self.nodes_of[k]) for k in self.dep]
-        # node → the temperature-dependent elements whose conductance it changes (dconductances)
-        self._users = {m: [k for k in self.dep if m in self.nodes_of[k]]
-                       for m in sorted({m for k in self.dep for m in self.nodes_of[k]})}
-        # positions of the free × free and free × fixed blocks in the flattened dense matrix
-        self._ff = (self.free[:, None] * n + self.free[None, :]).ravel()
-        self._fb = (self.free[:, None] * n + self.fixed[None, :]).ravel()
-        self._fpos = [-1] * n                   # node → position among the free nodes (−1: fixed)
-        for q, m in enumerate(self.free.tolist()):
-            self._fpos[m] = q
-        T0 = net.initial_T_K()
-        self.G0 = np.array([0.0 if k in self.dep else e.conductance(T0) for k, e in enumerate(els)], dtype=float)
-        self.memo: dict = {}
-
-    def conductances(self, T_K) -> np.ndarray:
-        """Conductance of every element [W/K] at node temperatures ``T_K`` [K] (as
-        ``net.conductances``)."""
-        if not self.dep:
-            return self.G0.copy()
-        T = np.asarray(T_K, dtype=float).tolist()      # the elements read single temperatures: floats
-        G = self.G0.copy()
-        shared: dict = {}
-        memo = self.memo
-        for k, e, nodes in self._dep_items:
-            key = tuple([T[m] for m in nodes])
-            hit = memo.get(k)
-            if hit is not None and hit[0] == key:
-                G[k] = hit[1]
-                continue
-            g = float(e._conductance_shared(T, shared))
-            memo[k] = (key, g)
-            G[k] = g
-        return G
-
-    def dconductances(self, T_K, h_K: float = 1e-3, nodes=None):
-        """Conductances G [W/K] and their forward-difference derivatives with respect to the
-        temperatures of the nodes each element depends on: list of (element, node, dG/dT [W/K²]);
-        ``nodes`` (indices) restricts the derivatives to those nodes (e.g. the free ones: a Newton
-        step on the free temperatures needs no derivative by a fixed one)."""
-        T = np.asarray(T_K, dtype=float).tolist()
-        G = self.conductances(T)
-        out = []
-        want = None if nodes is None else {int(m) for m in nodes}
-        els = self.elements
-        for m, users in self._users.items():
-            if want is not None and m not in want:
-                continue
-            Tp = list(T)
-            Tp[m] += h_K
-            shared: dict = {}                     # one property evaluation per perturbed node
-            for k in users:
-                g = float(els[k]._conductance_shared(Tp, shared))
-                out.append((k, m, (g - G[k]) / h_K))
-        return G, out
-
-    def dAT(self, T_K, dG) -> np.ndarray:
-        """∂(A(T) T)/∂T from the conductances' temperature dependence (n×n, dense) [W/K]:
-        ``dG`` as returned by :meth:`dconductances`."""
-        T = np.asarray(T_K, dtype=float)
-        D = np.zeros((self.n, self.n))
-        for k, m, d in dG:
-            e = self.elements[k]
-            if e.advective:
-                D[e.j, m] += d * (T[e.j] - T[e.i])
-            else:
-                D[e.i, m] += d * (T[e.i] - T[e.j])
-                D[e.j, m] += d * (T[e.j] - T[e.i])
-        return D
-
-    def dAT_free(self, T_K, dG) -> np.ndarray:
-        """The free × free block of :meth:`dAT` (``dG`` with derivatives by free nodes only, as
-        ``dconductances(..., nodes=self.free)`` gives them), built directly [W/K]."""
-        T = np.asarray(T_K, dtype=float).tolist()
-        fpos = self._fpos
-        nf = self.free.size
-        D = np.zeros((nf, nf))
-        els = self.elements
-        for k, m, d in dG:
-            e = els[k]
-            c = fpos[m]
-            if c < 0:                           # a derivative by a fixed node: not in this block
-                continue
-            if e.advective:
-                r = fpos[e.j]
-                if r >= 0:
-                    D[r, c] += d * (T[e.j] - T[e.i])
-            else:
-                r = fpos[e.i]
-                if r >= 0:
-                    D[r, c] += d * (T[e.i] - T[e.j])
-                r = fpos[e.j]
-                if r >= 0:
-                    D[r, c] += d * (T[e.j] - T[e.i])
-        return D
-
-    def values(self, G):
-        """Contributions of the elements to the matrix entries (pattern ``self.flat``)."""
-        return self.sign * G[self.eidx]
-
-    def dense(self, G) -> np.ndarray:
-        """Full conductance matrix A (n×n, dense) for conductances G."""
-        n = self.n
-        return np.bincount(self.flat, self.values(G), minlength=n * n).reshape(n, n)
-
-    def csr(self, G):
-        """Full conductance matrix A (n×n, CSR) for conductances G."""
-        data = np.bincount(self.inv, self.values(G), minlength=self.nnz)
-        return sp.csr_matrix((data, self.indices.copy(), self.indptr.copy()), shape=(self.n, self.n))
-
-    def blocks(self, G):
-        """(A_ff, A_fb) blocks, free × free and free × fixed: dense arrays for networks up to
-        ``_DENSE_MAX`` nodes, else sparse (CSC / CSR)."""
-        if self.n <= _DENSE_MAX:
-            A = np.bincount(self.flat, self.values(G), minlength=self.n * self.n)
-            nf = self.free.size
-            return A[self._ff].reshape(nf, nf), A[self._fb].reshape(nf, self.fixed.size)
-        A = self.csr(G)
-        return A[self.free][:, self.free].tocsc(), A[self.free][:, self.fixed]
-
-
-@lru_cache(maxsize=64)
-def _pattern(n, ija, fixed_bytes):
-    """Index structure of the conductance matrix of a topology (n nodes; elements (i, j, advective);
-    the fixed-node mask): cached, because networks are rebuilt for every operating point."""
-    i = np.array([t[0] for t in ija], dtype=int)
-    j = np.array([t[1] for t in ija], dtype=int)
-    adv = np.array([t[2] for t in ija], dtype=bool)
-    ks, ka = np.flatnonzero(~adv), np.flatnonzero(adv)
-    rows = np.concatenate([i[ks], j[ks], i[ks], j[ks], j[ka], j[ka]])
-    cols = np.concatenate([i[ks], j[ks], j[ks], i[ks], j[ka], i[ka]])
-    eidx = np.concatenate([ks, ks, ks, ks, ka, ka])
-    sign = np.concatenate([np.ones(2 * ks.size), -np.ones(2 * ks.size), np.ones(ka.size), -np.ones(ka.size)])
-    flat = rows * n + cols
-    uniq, inv = np.unique(flat, return_inverse=True)
-    ur, uc = np.divmod(uniq, n)
-    indptr = np.searchsorted(ur, np.arange(n + 1)).astype(np.int32)
-    fixed = np.frombuffer(fixed_bytes, dtype=bool)
-    out = (eidx, sign, flat, inv, uniq.size, uc.astype(np.int32), indptr, np.flatnonzero(~fixed),
-           np.flatnonzero(fixed))
-    for a in out:
-        if isinstance(a, np.ndarray):
-            a.setflags(write=False)          # shared between networks of one topology
-    return out
-
-
-def _plan_key(net):
-    els = net.elements
-    return (id(els), len(els), len(net.nodes), net.fixed.tobytes(),
-            tuple((id(e), e.i, e.j, id(e.p), tuple(map(id, e.p.values()))) for e in els))
-
-
-def _plan(net) -> _Plan:
-    """The cached :class:`_Plan` of a network (rebuilt when its elements changed)."""
-    plan = net.__dict__.get("_tb_plan")
-    if plan is None or plan.key != _plan_key(net):
-        plan = _Plan(net)
-        net.__dict__["_tb_plan"] = plan
-    return plan
-
-
-def _dense_solve(A, b):
-    """x with A x = b (LAPACK gesv: LU with partial pivoting, as ``numpy.linalg.solve``, called
-    directly: the networks' matrices are small and the wrapper's overhead is most of the cost);
-    None when A is singular."""
-    lu, piv, x, info = dgesv(A, b)
-    return None if info else x
-
-
-def _max_real_eigenvalue(M) -> float:
-    """Largest real part of the eigenvalues of a small dense matrix (LAPACK geev, as
-    ``numpy.linalg.eigvals``); NaN when M is not finite or the eigenvalues do not converge."""
-    if not np.isfinite(M).all():
-        return math.nan
-    wr, wi, vl, vr, info = dgeev(M, compute_vl=0, compute_vr=0)
-    return math.nan if info else float(wr.max())
-
-
-def _lin_solve(Aff, rhs):
-    """Solve A_ff x = rhs (dense LU or sparse LU); non-finite result when A_ff is singular."""
-    if isinstance(Aff, np.ndarray):
-        x = _dense_solve(Aff, rhs)
-        return np.full(np.shape(rhs), np.nan) if x is None else x
-    return spsolve(Aff, rhs)
-
-
-def _flows(net, T, G):
-    out = {}
-    T = T.tolist()
-    for e, g in zip(net.elements, G.tolist()):
-        Q = g * (T[e.j] - T[e.i]) if e.advective else g * (T[e.i] - T[e.j])
-        out[e.name] = Flow(e.name, e.type, e.nodes, Q, g)
-    return out
-
-
-def _heat_out(net, flows):
-    """Heat leaving the free part of the network: into each fixed node, and into the stream."""
-    out = {}
-    fixed = net.fixed.tolist()
-    for e in net.elements:
-        f = flows[e.name]
-        fi, fj = fixed[e.i], fixed[e.j]
-        if e.advective:
-            if not fj:
-                out["stream"] = out.get("stream", 0.0) + f.Q_W
-        elif fi != fj:
-            fixed_node = e.nodes[1] if fj else e.nodes[0]
-            q = f.Q_W if fj else -f.Q_W
-            out[fixed_node] = out.get(fixed_node, 0.0) + q
-    return out
-
-
-def _balance(net, P, flows):
-    out = _heat_out(net, flows)
-    total_out = math.fsum(out.values())
-    P = np.asarray(P, dtype=float).tolist()
-    bal = math.fsum(P) - total_out
-    scale = math.fsum([abs(q) for q in P]) or math.fsum(abs(f.Q_W) for f in flows.values()) or 1.0
-    return bal, abs(bal) / scale
+def _result(net, T, G, P, it, res) -> SteadyResult:
+    B = net.B
+    Q = net.flows(T, G)
+    Pf = P[:, ~net.fixed]
+    out = heat_out(net, Q)
+    total_out = sum(np.broadcast_to(v, (B,)) for v in out.values()) if out else np.zeros(B)
+    bal = Pf.sum(axis=1) - total_out
+    scale = np.abs(Pf).sum(axis=1)
+    scale = np.where(scale > 0, scale, np.maximum(np.abs(Q).sum(axis=1), 1.0))
+    return SteadyResult(
+        T_C={n: _scalar(T[:, k] - _C0, B) for k, n in enumerate(net.nodes)}, T_K=T, G_W_K=G,
+        flows_W={e.name: _scalar(Q[:, k], B) for k, e in enumerate(net.elements)},
+        sources_W={n: _scalar(P[:, k], B) for k, n in enumerate(net.nodes) if np.any(P[:, k])},
+        balance_W=_scalar(bal, B), balance_rel=_scalar(np.abs(bal) / scale, B), iterations=it, residual_K=res,
+        network=net)
 
 
 def solve_steady(net: ThermalNetwork, sources_W=None, *, T_guess_K=None, tol_K: float = 1e-8,
-                 max_iter: int = 200, relax: float = 1.0, linearized: bool = False) -> SteadyResult:
-    r"""Steady temperatures of a thermal network.
+                 max_iter: int = 50) -> SteadyResult:
+    r"""Steady temperatures of a thermal network at its operating points.
 
     Parameters
     ----------
     net : ThermalNetwork
-    sources_W : dict            free node → injected heat [W] (arrays are summed)
-    T_guess_K : array_like      start of the outer loop (default: free nodes at the
-                                mean fixed temperature)
-    tol_K : float               outer-loop tolerance on max |ΔT| [K]
-    max_iter : int              outer-loop budget
-    relax : float               under-relaxation of the outer loop, 0 < relax ≤ 1
-    linearized : bool           one linear solve with the conductances at ``T_guess_K`` (no outer
-                                loop): for callers that iterate anyway (the coupled fixed point
-                                converges conductances and losses together); the energy balance
-                                still closes exactly with those conductances
+    sources_W : dict or ndarray   free node → injected heat [W] (numbers or (B,) arrays), or a
+                                  (B, n) matrix (:func:`sources_matrix`)
+    T_guess_K : array_like        (B, n) start (default: free nodes at the mean fixed temperature)
+    tol_K : float                 Newton tolerance on max |ΔT| [K]
+    max_iter : int                iteration budget
 
     Returns
     -------
-    SteadyResult  (energy balance closes to machine precision: the flows are
-    computed with the conductances of the final linear solve)
+    SteadyResult   (energy balance closes to machine precision)
 
     Raises
     ------
-    NoConvergence  when the outer loop (temperature-dependent elements) does
-                   not reach tol_K within max_iter
+    NoConvergence  when an operating point does not reach tol_K, or its matrix is singular
 
     Notes
     -----
-    A_ff T_f = P_f − A_fb T_b (PHYSICS.md §8 "Solving"); sparse LU (scipy).
+    Newton on the free temperatures:
+
+    .. math:: \left(A_{ff} + \frac{\partial (A T)}{\partial T_f}\right) \Delta T_f
+              = P_f - A_{ff} T_f - A_{fb} T_b
 
     Examples
     --------
@@ -443,91 +192,127 @@ def solve_steady(net: ThermalNetwork, sources_W=None, *, T_guess_K=None, tol_K: 
     >>> net = load_network({"nodes": {"a": {}, "amb": {"T_C": 20.0}},
     ...     "elements": [{"type": "conductance", "between": ["a", "amb"], "G_W_K": 2.0}]})
     >>> r = solve_steady(net, {"a": 100.0})
-    >>> round(r.T_C["a"], 9), r.flows["a--amb"].Q_W, r.balance_rel < 1e-12
+    >>> round(r.T_C["a"], 9), r.flows_W["a--amb"], r.balance_rel < 1e-12
     (70.0, 100.0, True)
     """
-    if not 0 < relax <= 1:
-        raise InputError("relax", relax, "under-relaxation must lie in (0, 1]")
-    P = sources_vector(net, sources_W)
+    P = np.asarray(sources_W, float) if isinstance(sources_W, np.ndarray) else sources_matrix(net, sources_W)
     free, fixed = ~net.fixed, net.fixed
-    T = net.initial_T_K() if T_guess_K is None else np.array(T_guess_K, dtype=float)
-    T[fixed] = net.T_fixed_K[fixed]
-    history = []
-    it, res = 0, float("inf")
-    plan = _plan(net)
+    T = net.initial_T_K() if T_guess_K is None else np.array(np.broadcast_to(T_guess_K, (net.B, len(net.nodes))))
+    T[:, fixed] = net.T_fixed_K[:, fixed]
+    res, it = math.inf, 0
     for it in range(1, max_iter + 1):
-        G = plan.conductances(T)
-        Aff, Afb = plan.blocks(G)
-        rhs = P[free] - Afb @ T[fixed]
-        Tf = np.atleast_1d(_lin_solve(Aff, rhs))
-        if not np.all(np.isfinite(Tf)):
-            raise NoConvergence("singular conductance matrix (a node without conductance?)",
-                                iterations=it, last=T.copy(), history=history)
-        Tnew = T.copy()
-        Tnew[free] = T[free] + relax * (Tf - T[free])
-        res = float(np.max(np.abs(Tnew[free] - T[free]))) if free.any() else 0.0
-        history.append(res)
-        T = Tnew
-        if not net.T_dependent or linearized:
-            res = 0.0 if not net.T_dependent else res   # linear network: one exact solve
-            break
-        if res < tol_K:
+        if net.T_dependent:
+            G, dG = net.dconductances(T)
+        else:
+            G, dG = net.structure.G0, []
+        Aff, Afb = net.blocks(G)
+        R = np.einsum("bij,bj->bi", Aff, T[:, free]) + np.einsum("bij,bj->bi", Afb, T[:, fixed]) - P[:, free]
+        J = Aff + net.dAT_free(T, dG) if dG else Aff
+        dT = batched_solve(J, -R)
+        if not np.all(np.isfinite(dT)):
+            bad = np.flatnonzero(~np.isfinite(dT).all(axis=1))
+            raise NoConvergence(f"singular conductance matrix at operating point(s) {bad.tolist()} "
+                                "(a node without conductance?)", iterations=it, last=T.copy())
+        T[:, free] += dT
+        res = float(np.max(np.abs(dT))) if dT.size else 0.0
+        if not net.T_dependent or res <= tol_K:
             break
     else:
-        raise NoConvergence(f"steady outer loop: max |ΔT| = {res:.3g} K after {max_iter} iterations "
-                            f"(tolerance {tol_K:g} K)", iterations=max_iter, residual=res,
-                            last=T.copy(), history=history)
-    if (relax < 1 or net.T_dependent) and not linearized:
-        # final consistent linear solve with the converged conductances
-        G = plan.conductances(T)
-        Aff, Afb = plan.blocks(G)
-        T = T.copy()
-        T[free] = np.atleast_1d(_lin_solve(Aff, P[free] - Afb @ T[fixed]))
-    flows = _flows(net, T, G)
-    bal, rel = _balance(net, P[free], flows)
-    Tl, Pl = (T - _C0).tolist(), P.tolist()
-    return SteadyResult(T_C=dict(zip(net.nodes, Tl)), T_K=T,
-                        flows=flows, sources_W={n: q for n, q in zip(net.nodes, Pl) if q},
-                        balance_W=bal, balance_rel=rel, iterations=it, residual_K=res, network=net)
+        raise NoConvergence(f"steady network: max |ΔT| = {res:.3g} K after {max_iter} Newton iterations "
+                            f"(tolerance {tol_K:g} K)", iterations=max_iter, residual=res, last=T.copy())
+    G = net.conductances(T)
+    if net.T_dependent:                # the flows and the temperatures from the same conductances
+        Aff, Afb = net.blocks(G)
+        T[:, free] = batched_solve(Aff, P[:, free] - np.einsum("bij,bj->bi", Afb, T[:, fixed]))
+    return _result(net, T, G, P, it, res)
 
 
-def _call_sources(sources, t, T, net):
-    out = sources(t, {n: float(T[k]) for k, n in enumerate(net.nodes)}) if callable(sources) else sources
-    if isinstance(out, tuple):
-        src, rep = out
+def solve_linear(net: ThermalNetwork, sources_W, T_K) -> SteadyResult:
+    """Temperatures of the free nodes for sources (B, n) [W] with the conductances at ``T_K`` (B, n)
+    [K] held (one linear solve): the last step of a coupled solution, whose flows and temperatures
+    then come from the same conductances (the energy balance closes to machine precision)."""
+    free, fixed = ~net.fixed, net.fixed
+    T = np.array(T_K, dtype=float)
+    T[:, fixed] = net.T_fixed_K[:, fixed]
+    G = net.conductances(T)
+    Aff, Afb = net.blocks(G)
+    P = np.asarray(sources_W, float)
+    T[:, free] = batched_solve(Aff, P[:, free] - np.einsum("bij,bj->bi", Afb, T[:, fixed]))
+    if not np.all(np.isfinite(T)):
+        raise NoConvergence("singular conductance matrix (a node without conductance?)", iterations=1)
+    return _result(net, T, G, P, 1, 0.0)
+
+
+@dataclass
+class TransientResult:
+    """Time series of a transient run at B operating points.
+
+    Attributes
+    ----------
+    t : ndarray          output times [s]
+    T_K : ndarray        node temperatures, shape (n_t, B, n) [K]
+    T_C : dict           node → temperatures [°C]: (n_t,) for one operating point, (n_t, B) otherwise
+    report : dict        name → series of what the sources callback reported, (n_t,) or (n_t, B)
+    nfev : int           right-hand-side evaluations
+    completed : bool     False when the run was interrupted (``t`` ends where it stopped)
+    network : ThermalNetwork
+    """
+
+    t: np.ndarray
+    T_K: np.ndarray
+    T_C: dict
+    report: dict
+    nfev: int
+    completed: bool = True
+    network: ThermalNetwork = field(default=None, repr=False)
+
+
+def _start(net, T0_C):
+    """(B, n) start temperatures: fixed nodes at theirs, free nodes at ``T0_C`` (°C, a number, a
+    (B,) array, or node → °C), default the fixed node ``ambient`` (else the mean fixed T)."""
+    free, fixed = ~net.fixed, net.fixed
+    T = net.T_fixed_K.copy()
+    if T0_C is None:
+        a = net.index.get("ambient")
+        T[:, free] = (T[:, [a]] if a is not None and fixed[a] else T[:, fixed].mean(axis=1, keepdims=True))
+    elif isinstance(T0_C, dict):
+        T[:, free] = T[:, fixed].mean(axis=1, keepdims=True)
+        for name, v in T0_C.items():
+            if name not in net.index or fixed[net.index[name]]:
+                raise InputError("T0_C", name, "a free node name")
+            T[:, net.index[name]] = np.asarray(v, float) + _C0
     else:
-        src, rep = out, {}
-    return sources_vector(net, src), rep
+        T[:, free] = np.asarray(T0_C, float).reshape(-1, 1) + _C0
+    if not np.all(np.isfinite(T)):
+        raise InputError("T0_C", T0_C, "start temperatures must be finite [°C]")
+    return T
 
 
-def solve_transient(net: ThermalNetwork, sources, t_end: float, *, T0_C=None,
-                    breakpoints=(), fixed_C: Callable | None = None, t_eval=None,
-                    rtol: float = 1e-8, atol: float = 1e-8, method: str = "BDF",
-                    max_step: float = np.inf) -> TransientResult:
-    r"""Transient temperatures of a thermal network.
+def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_C=None, breakpoints=(),
+                    fixed_C: Callable | None = None, t_eval=None, rtol: float = 1e-8, atol: float = 1e-8,
+                    method: str = "BDF", max_step: float = np.inf, stop: Callable | None = None) -> TransientResult:
+    r"""Transient temperatures of a thermal network at its operating points.
 
     Parameters
     ----------
     net : ThermalNetwork        every free node needs a heat capacity C [J/K]
-    sources : dict or callable  node → W, or ``sources(t, T_K) -> dict`` or
-                                ``-> (dict, report)`` with ``T_K`` a dict node → K
-                                and ``report`` a dict of numbers to record
-                                (e.g. the loss breakdown).  A callable may carry an
-                                attribute ``_batch(t_array, T_K_arrays) -> (list of dicts,
-                                dict of arrays)`` giving the same for all output times at
-                                once; the output pass then calls it instead of the loop
+    sources : callable          ``sources(t, T_K) -> (P, report)``: T_K node temperatures
+                                (..., B, n) [K] (the output pass calls it once with a leading time
+                                axis), P the injected heat of the same shape [W], report a dict of
+                                arrays (..., B) to record (e.g. the loss breakdown); or a (B, n)
+                                matrix / dict of constant sources
     t_end : float               end time [s]
-    T0_C : float, dict or None  initial temperature of the free nodes [°C]; None:
-                                the fixed node ``ambient`` (else the mean fixed T)
-    breakpoints : sequence      times [s] where inputs step (integration restarts there;
-                                inside a segment [a, b) the callbacks see t < b, so a step
-                                at b never leaks into the segment before it; reported
-                                series are right-continuous: at t = b they show the new inputs)
-    fixed_C : callable          optional ``fixed_C(t) -> dict`` fixed node → °C
-                                (piecewise constant between breakpoints)
+    T0_C : float, array, dict   initial temperature of the free nodes [°C] (default: ambient)
+    breakpoints : sequence      times [s] where inputs step: the integration restarts there; inside a
+                                segment [a, b) the callbacks see t < b; reported series are
+                                right-continuous
+    fixed_C : callable          optional ``fixed_C(t) -> dict`` fixed node → °C (numbers or (B,)
+                                arrays), piecewise constant between breakpoints
     t_eval : array_like         output times [s] (default: the integrator's steps)
     rtol, atol : float          integrator tolerances (atol in K)
     method : str                ``"BDF"`` or ``"Radau"``
+    stop : callable             optional ``stop() -> bool`` checked between steps: True ends the run
+                                early, keeping what was integrated (``completed`` False)
 
     Returns
     -------
@@ -535,10 +320,10 @@ def solve_transient(net: ThermalNetwork, sources, t_end: float, *, T0_C=None,
 
     Notes
     -----
-    C_f dT_f/dt = P_f(t,T) − A_ff(T) T_f − A_fb(T) T_b(t) (PHYSICS.md §8);
-    Jacobian −C⁻¹A_ff (dense up to 400 nodes, else sparse; dP/dT and dG/dT neglected
-    in it, which only affects the Newton iterations of the implicit scheme, not the
-    solution: including them was tried and saved only 6 % of the evaluations).
+    .. math:: C_f \frac{dT_f}{dt} = P_f(t, T) - A_{ff}(T) T_f - A_{fb}(T) T_b(t)
+
+    Jacobian −C⁻¹ A_ff, block diagonal over the operating points (dP/dT and dG/dT left out of it:
+    they only change the Newton iterations of the implicit scheme, not the solution).
 
     Examples
     --------
@@ -559,97 +344,113 @@ def solve_transient(net: ThermalNetwork, sources, t_end: float, *, T0_C=None,
         bad = [n for n, c in zip(net.free_nodes, C) if not (np.isfinite(c) and c > 0)]
         raise InputError(f"{net.source}: nodes.{bad[0]}.C_J_K", None,
                          "the transient needs a heat capacity (C_J_K, or mass_kg/volume_m3 with a material)")
-    bps = sorted({float(b) for b in breakpoints if 0 < float(b) < t_end})
-    edges = [0.0, *bps, float(t_end)]
-
-    T = net.T_fixed_K.copy()
-    if T0_C is None:
-        T0 = T[net.index["ambient"]] if "ambient" in net.index and fixed[net.index["ambient"]] \
-            else net.T_fixed_K[fixed].mean()
-        T[free] = T0
-    elif isinstance(T0_C, dict):
-        T[free] = net.T_fixed_K[fixed].mean()
-        for name, v in T0_C.items():
-            if name not in net.index or fixed[net.index[name]]:
-                raise InputError("T0_C", name, "a free node name")
-            T[net.index[name]] = float(v) + _C0
-    else:
-        T[free] = float(T0_C) + _C0
-
-    def fixed_at(t):
+    if not callable(sources):
+        const = sources if isinstance(sources, np.ndarray) else sources_matrix(net, sources)
+        sources = (lambda t, T_K: (np.broadcast_to(const, np.shape(T_K)), {}))  # noqa: E731
+    B, nf = net.B, int(free.sum())
+    edges = [0.0, *sorted({float(b) for b in breakpoints if 0 < float(b) < t_end}), float(t_end)]
+    T = _start(net, T0_C)
+    t_eval = None if t_eval is None else np.asarray(t_eval, dtype=float)
+    nfev, pieces, completed = [0], [], True
+    y = T[:, free].ravel()
+    for a, b in zip(edges[:-1], edges[1:]):
         Tb = net.T_fixed_K.copy()
         if fixed_C is not None:
-            for name, v in fixed_C(t).items():
+            for name, v in fixed_C(0.5 * (a + b)).items():
                 if name not in net.index or not fixed[net.index[name]]:
                     raise InputError("fixed_C", name, "a fixed node name")
-                Tb[net.index[name]] = float(v) + _C0
-        return Tb
-
-    nfev = [0]
-    plan = _plan(net)
-    t_eval = None if t_eval is None else np.asarray(t_eval, dtype=float)
-    ts, Ys = [], []
-    y = T[free].copy()
-    for a, b in zip(edges[:-1], edges[1:]):
-        Tb = fixed_at(0.5 * (a + b))          # piecewise constant over the segment
-        Tfull = Tb.copy()
-        t_hi = np.nextafter(b, a)             # inputs of [a, b): the step at b belongs to the next segment
-
-        def rhs(t, yf, Tfull=Tfull, a=a, t_hi=t_hi):
-            nfev[0] += 1
-            Tfull[free] = yf
-            Aff, Afb = plan.blocks(plan.conductances(Tfull))
-            P, _ = _call_sources(sources, min(max(t, a), t_hi), Tfull, net)
-            return (P[free] - Aff @ yf - Afb @ Tfull[fixed]) / C
-
-        def jac(t, yf, Tfull=Tfull):
-            Tfull[free] = yf
-            Aff, _ = plan.blocks(plan.conductances(Tfull))
-            if isinstance(Aff, np.ndarray):
-                return -Aff / C[:, None]
-            return sp.diags(1.0 / C) @ (-Aff)
-
-        te_req = None if t_eval is None else t_eval[(t_eval >= a) & (t_eval <= b)]
-        te = None if te_req is None else np.union1d(te_req, [b])
-        sol = solve_ivp(rhs, (a, b), y, method=method, jac=jac, rtol=rtol, atol=atol,
-                        t_eval=te, max_step=max_step)
-        if not sol.success:
-            t_fail = sol.t[-1] if sol.t.size else a
-            raise NoConvergence(f"transient integration failed at t = {t_fail:.6g} s (segment {a:g}–{b:g} s): "
-                                f"{sol.message}",
-                                iterations=sol.nfev, last=sol.y[:, -1] if sol.y.size else y)
+                Tb[:, net.index[name]] = np.asarray(v, float) + _C0
+        sol, ok = _segment(net, sources, C, Tb, a, b, y, t_eval, nfev, rtol, atol, method, max_step, stop)
         y = sol.y[:, -1].copy()
-        keep = np.ones(sol.t.size, bool) if te_req is None else np.isin(sol.t, te_req)
+        pieces.append((sol, Tb, a, b))
+        if not ok:
+            completed = False
+            break
+    t_all, T_all = _collect(pieces, net, t_eval, B, nf)
+    P, report = sources(t_all, T_all) if t_all.size else (None, {})
+    squeeze = (lambda v: v[:, 0] if B == 1 else v)  # noqa: E731
+    return TransientResult(t=t_all, T_K=T_all, T_C={n: squeeze(T_all[..., k] - _C0) for k, n in enumerate(net.nodes)},
+                           report={k: squeeze(np.asarray(v, float)) for k, v in report.items()}, nfev=nfev[0],
+                           completed=completed, network=net)
+
+
+def _segment(net, sources, C, Tb, a, b, y0, t_eval, nfev, rtol, atol, method, max_step, stop):
+    """One segment [a, b] of a transient: (solution, finished)."""
+    free, fixed = ~net.fixed, net.fixed
+    B, nf = net.B, C.size
+    Tfull = Tb.copy()
+    t_hi = np.nextafter(b, a)             # inputs of [a, b): the step at b belongs to the next segment
+    Cinv = np.tile(1.0 / C, B)
+
+    def rhs(t, yf):
+        nfev[0] += 1
+        Tfull[:, free] = yf.reshape(B, nf)
+        Aff, Afb = net.blocks(net.conductances(Tfull))
+        P, _ = sources(min(max(t, a), t_hi), Tfull)
+        q = (P[:, free] - np.einsum("bij,bj->bi", Aff, Tfull[:, free]) - np.einsum("bij,bj->bi", Afb, Tfull[:, fixed]))
+        return q.ravel() * Cinv
+
+    def jac(t, yf):
+        Tfull[:, free] = yf.reshape(B, nf)
+        Aff, _ = net.blocks(net.conductances(Tfull))
+        Jb = -Aff / C[None, :, None]
+        return Jb[0] if B == 1 else sp.block_diag(list(Jb), format="csc")
+
+    te = None if t_eval is None else np.union1d(t_eval[(t_eval >= a) & (t_eval <= b)], [b])
+    solver = _METHODS[method](rhs, a, y0, b, jac=jac, rtol=rtol, atol=atol, max_step=max_step)
+    ts, ys = [a], [np.asarray(y0, float).copy()]
+    k = 1 if te is not None and te.size and te[0] == a else 0      # the next requested time to report
+    while solver.status == "running":
+        if stop is not None and stop():           # stopped by the caller: keep what was integrated
+            return _Segment(np.array(ts), np.array(ys).T), False
+        t_old = solver.t
+        msg = solver.step()
+        if solver.status == "failed":
+            raise NoConvergence(f"transient integration failed at t = {solver.t:.6g} s (segment {a:g}–{b:g} s): "
+                                f"{msg}", iterations=solver.nfev, last=solver.y)
+        if te is None:
+            ts.append(solver.t)
+            ys.append(solver.y.copy())
+            continue
+        hi = np.searchsorted(te, solver.t, side="right")
+        if hi > k:                                # requested times inside the step: dense output
+            dense = solver.dense_output()
+            for t in te[k:hi]:
+                ts.append(float(t))
+                ys.append(solver.y.copy() if t == solver.t else dense(t))
+            k = hi
+        del t_old
+    return _Segment(np.array(ts), np.array(ys).T), True
+
+
+@dataclass
+class _Segment:
+    """Times and states (n_free·B, n_t) of one integrated segment."""
+
+    t: np.ndarray
+    y: np.ndarray
+
+
+_METHODS = {"BDF": BDF, "Radau": Radau}
+
+
+def _collect(pieces, net, t_eval, B, nf):
+    """Output times and (n_t, B, n) temperatures of the segments (each step reported once)."""
+    free = ~net.fixed
+    ts, Ts = [], []
+    for sol, Tb, a, b in pieces:
+        keep = np.ones(sol.t.size, bool) if t_eval is None else np.isin(sol.t, t_eval)
         tt, ys = sol.t[keep], sol.y[:, keep]
         if ts and ts[-1].size and tt.size and tt[0] == ts[-1][-1]:
             tt, ys = tt[1:], ys[:, 1:]
+        T = np.broadcast_to(Tb, (tt.size, B, Tb.shape[1])).copy()
+        T[:, :, free] = ys.T.reshape(tt.size, B, nf)
         ts.append(tt)
-        Ys.append((ys, Tb))
-
-    t_all = np.concatenate(ts) if ts else np.array([])
-    T_all = np.concatenate([np.where(free[:, None], np.zeros((len(net.nodes), y_.shape[1])), Tb[:, None])
-                            for y_, Tb in Ys], axis=1)
-    T_all[free] = np.concatenate([y_ for y_, _ in Ys], axis=1)
-    src_series = {n: np.zeros(t_all.size) for n in net.free_nodes}
-    report: dict = {}
-    batch = getattr(sources, "_batch", None) if callable(sources) else None
-    if batch is not None and t_all.size:
-        # the callback can evaluate all output times at once (one vectorised loss evaluation)
-        srcs, reps = batch(t_all, {n: T_all[k] for k, n in enumerate(net.nodes)})
-        for k, src in enumerate(srcs):
-            P = sources_vector(net, src)
-            for n in net.free_nodes:
-                src_series[n][k] = P[net.index[n]]
-        report = {key: np.asarray(v, dtype=float) for key, v in reps.items()}
-    else:
-        for k, t in enumerate(t_all):
-            P, rep = _call_sources(sources, t, T_all[:, k], net)
-            for n in net.free_nodes:
-                src_series[n][k] = P[net.index[n]]
-            for key, v in rep.items():
-                report.setdefault(key, np.full(t_all.size, np.nan))[k] = v
-    return TransientResult(t=t_all, T_K=T_all, T_C={n: T_all[k] - _C0 for k, n in enumerate(net.nodes)},
-                           sources_W=src_series, report=report, nfev=nfev[0], network=net)
+        Ts.append(T)
+    n = len(net.nodes)
+    if not ts:
+        return np.zeros(0), np.zeros((0, B, n))
+    return np.concatenate(ts), np.concatenate(Ts, axis=0)
 
 
 def split_losses(P_inner_W=0.0, P_outer_W=0.0, P_drag_W=0.0, *, ball="balls", inner="inner_race",
@@ -658,33 +459,30 @@ def split_losses(P_inner_W=0.0, P_outer_W=0.0, P_drag_W=0.0, *, ball="balls", in
 
     Parameters
     ----------
-    P_inner_W, P_outer_W : array_like  loss at each inner / outer ball–race contact
-                                       (any shape, e.g. per ball) [W]
+    P_inner_W, P_outer_W : array_like  loss of all inner / outer ball–race contacts [W] (a number,
+                                       or one per operating point)
     P_drag_W : array_like              drag (churning) loss [W]
     ball, inner, outer, oil : str      node names receiving them
     extra : dict                       further node → loss [W] (e.g. seals, cage)
 
     Returns
     -------
-    dict node → W: ½ of each contact loss to the ball node and ½ to its
-    raceway node (Pouly 2010 convention, PHYSICS.md §8 "Heat sources"), drag
-    to the oil–air node.  Σ sources = Σ losses is checked (pitfall 13).
+    dict node → W: ½ of each contact loss to the ball node and ½ to its raceway node (Pouly et al.
+    2010 [1]_), drag to the oil–air node; Σ sources = Σ losses.
 
     Examples
     --------
-    >>> s = split_losses([1.0, 2.0], [0.5, 0.5], 0.3)
+    >>> s = split_losses(3.0, 1.0, 0.3)
     >>> s["balls"], s["inner_race"], s["outer_race"], s["oil_air"]
     (2.0, 1.5, 0.5, 0.3)
     """
-    parts = {"P_inner_W": P_inner_W, "P_outer_W": P_outer_W, "P_drag_W": P_drag_W}
-    parts.update({f"extra.{k}": v for k, v in (extra or {}).items()})
-    arr = {}
-    for k, v in parts.items():
+    def checked(name, v):
         a = np.asarray(v, dtype=float)
         if a.size and not (a.min() >= 0.0 and a.max() < math.inf):         # NaN fails both
-            raise InputError(k, v, "losses must be finite and >= 0 [W]")
-        arr[k] = a.ravel().tolist()
-    Pi, Po = math.fsum(arr["P_inner_W"]), math.fsum(arr["P_outer_W"])
+            raise InputError(name, v, "losses must be finite and >= 0 [W]")
+        return float(a) if a.ndim == 0 else a
+
+    Pi, Po, Pd = checked("P_inner_W", P_inner_W), checked("P_outer_W", P_outer_W), checked("P_drag_W", P_drag_W)
     out: dict = {}
 
     def add(node, q):
@@ -693,12 +491,7 @@ def split_losses(P_inner_W=0.0, P_outer_W=0.0, P_drag_W=0.0, *, ball="balls", in
     add(ball, 0.5 * Pi + 0.5 * Po)
     add(inner, 0.5 * Pi)
     add(outer, 0.5 * Po)
-    add(oil, math.fsum(arr["P_drag_W"]))
+    add(oil, Pd)
     for k, v in (extra or {}).items():
-        add(k, math.fsum(arr[f"extra.{k}"]))
-    total_losses = math.fsum(math.fsum(a) for a in arr.values())
-    total_sources = math.fsum(out.values())
-    if abs(total_sources - total_losses) > 1e-12 * max(total_losses, 1e-300):
-        raise RuntimeError(f"heat split does not conserve energy: sources {total_sources!r} W "
-                           f"≠ losses {total_losses!r} W")
+        add(k, checked(f"extra.{k}", v))
     return out

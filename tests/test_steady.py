@@ -1,0 +1,95 @@
+"""The coupled steady state (thermobear.coupled.steady): the batched Newton iteration reaches the
+fixed point an independent iteration reaches, converges quadratically, and its loss slopes are
+those of one temperature at a time; the transient's loss report equals the losses at its states."""
+import numpy as np
+import pytest
+
+import thermobear as tb
+from thermobear.coupled import steady_state, transient
+from thermobear.coupled.fixedpoint import solve_coupled
+from thermobear.coupled.steady import _C0, _slopes
+from thermobear.coupled.transient import point_model
+from thermobear.models import choose_models
+
+
+def _scene(name="seed004_oil_jet_7210.toml", **kw):
+    s = tb.load_scene(tb.example_path(name))
+    return s.with_(**kw) if kw else s
+
+
+def _picard_path(pm, T_limit_K=523.15):
+    """The fixed point by damped Picard on the coupled temperatures (an independent iteration):
+    losses at x → one linear network solve at the last state's conductances → new x."""
+    net, src, cp = pm.network, pm.source, pm.coupling
+    free, fixed = ~net.fixed, net.fixed
+    state = {"T": net.initial_T_K()}
+
+    def update(x_K):
+        parts = src.parts((np.asarray(x_K) - _C0)[None])
+        Aff, Afb = net.blocks(net.conductances(state["T"]))
+        rhs = parts @ cp.S.T - np.einsum("bij,bj->bi", Afb, state["T"][:, fixed])
+        Tf = np.linalg.solve(Aff[0], rhs[0])
+        state["T"] = state["T"].copy()
+        state["T"][0, free] = Tf
+        return cp.C @ Tf, float(parts.sum())
+    x0 = (state["T"][:, free] @ cp.C.T)[0]
+    return solve_coupled(update, x0, method="picard", damping=0.7, tol_K=1e-9, max_iter=2000, T_limit_K=T_limit_K)
+
+
+@pytest.mark.parametrize("name,kw", [("seed004_oil_jet_7210.toml", {}),
+                                     ("seed004_oil_jet_7210.toml", {"n_rpm": 8070.0, "Fr": 750.0,
+                                                                    "models": {"load_model": "jones_harris"}}),
+                                     ("seed002_grease_thrust_51107.toml", {})])
+def test_newton_reaches_the_fixed_point_of_an_independent_iteration(name, kw):
+    s = _scene(name, **kw)
+    st = steady_state(s)
+    ref = _picard_path(point_model(s, choose_models(s)))
+    x = np.array([0.5 * (st.T_C[st.roles["ball"]] + st.T_C[st.roles[r]]) for r in ("inner", "outer")]
+                 + [st.T_C[st.roles["oil"]]]) + _C0
+    np.testing.assert_allclose(x, ref.T_K, atol=1e-5)
+    assert st.P_W == pytest.approx(ref.P_W, rel=1e-7)
+    # the conductances' temperature dependence is in the Jacobian: quadratic convergence
+    assert st.iterations <= 7
+    res = [h["residual_K"] for h in st.history]
+    assert res[-1] <= 1e-6 and res[-2] <= 1e-2
+    assert abs(st.energy_balance_W) <= 1e-9 * st.P_W
+
+
+@pytest.mark.parametrize("kw", [{}, {"models": {"rolling": "houpert_ivr"}}, {"n_rpm": 8070.0}])
+def test_loss_slopes_are_those_of_one_temperature_at_a_time(kw):
+    """Each loss part reads only its own temperature (inner contacts the inner contact temperature,
+    outer the outer, drag the mixture): the diagonal slopes from x and x + h equal forward differences
+    taken one temperature at a time — the assumption the Newton Jacobian rests on."""
+    pm = point_model(_scene(**kw))
+    x = np.array([[47.0, 41.0, 43.0]])
+    P, dP = _slopes(pm.source, x, h=0.05)
+    for k in range(3):
+        xk = x.copy()
+        xk[0, k] += 0.05
+        col = (pm.source.parts(xk) - P) / 0.05
+        np.testing.assert_allclose(dP[0, :, k], col[0], rtol=1e-9, atol=1e-12)
+    assert np.all(np.diag(dP[0])[:2] < 0)      # thinner oil, less contact loss: the slopes are not trivially zero
+
+
+def test_transient_report_equals_the_losses_at_its_states():
+    s = _scene()
+    tr = transient(s, 1800.0, t_eval=[0.0, 60.0, 600.0, 1800.0])
+    pm = point_model(s)
+    ro = tr.roles
+    for k in range(tr.t_s.size):
+        T = {n: float(v[k]) for n, v in tr.T_C.items()}
+        x = np.array([[0.5 * (T[ro["ball"]] + T[ro["inner"]]), 0.5 * (T[ro["ball"]] + T[ro["outer"]]), T[ro["oil"]]]])
+        r = pm.source.result(x)
+        assert tr.P_W[k] == pytest.approx(float(np.asarray(r.P_W).ravel()[0]), rel=1e-12)
+        for fam, v in r.breakdown_W.items():
+            assert tr.breakdown_W[fam][k] == pytest.approx(float(np.asarray(v).ravel()[0]), rel=1e-12, abs=1e-15)
+    assert tr.P_W[-1] != pytest.approx(tr.P_W[0], rel=1e-3)      # the states differ
+
+
+def test_a_failing_point_does_not_stop_the_others():
+    s = _scene()
+    good, bad = s.with_(n_rpm=3000.0), s.with_(Fa=0.0, Fr=300.0)          # no equilibrium without axial load
+    out = tb.steady_states([good, bad, s])
+    assert isinstance(out[0], tb.SteadyState) and isinstance(out[2], tb.SteadyState)
+    assert isinstance(out[1], tb.NoEquilibrium)
+    assert out[2].P_W == pytest.approx(steady_state(s).P_W, rel=1e-12)

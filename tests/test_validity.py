@@ -1,0 +1,82 @@
+"""Where the models hold (thermobear.validity): every limit refuses beyond its accepted range with
+the field, the value, the range and the source, and warns beyond its validated range; the solvers
+and the entry points apply the same limits."""
+import math
+import warnings
+
+import numpy as np
+import pytest
+
+import thermobear as tb
+from thermobear import validity
+from thermobear.errors import InputError, OutsideValidity
+
+S004 = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
+
+
+@pytest.mark.parametrize("name", sorted(validity.LIMITS))
+def test_every_limit_refuses_and_warns_with_its_source(name):
+    lim = validity.LIMITS[name]
+    lo, hi = lim.refuse
+    if hi is not None:
+        with pytest.raises(InputError) as e:
+            validity.check(name, hi * 1.01 + 1e-12, "field.x")
+        msg = str(e.value)
+        assert msg.startswith("field.x = ") and lim.quantity in msg and lim.source in msg
+    if lo is not None:
+        with pytest.raises(InputError):
+            validity.check(name, lo - 1.0 if lo > 0 else -1.0 if lo == 0 else lo * 1.01, "field.x")
+    wlo, whi = lim.warn
+    inside = [v for v in (wlo, whi) if v is not None]
+    if inside:
+        v = (whi * 1.01 if whi is not None and (hi is None or whi * 1.01 < hi) else wlo * 0.99)
+        with pytest.warns(OutsideValidity) as rec:
+            got = validity.check(name, v, "field.y")
+        assert got and got[0].quantity == name and got[0].source == lim.source and "field.y" in str(rec[0].message)
+    with pytest.raises(InputError, match="finite"):
+        validity.check(name, math.nan, "field.z")
+
+
+def test_inside_every_range_nothing_is_said():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert validity.check("n_dm", 3e5, "x") == [] and validity.check("p_max", 2e9, "x") == []
+        assert validity.check("lubricant_T", np.array([20.0, 80.0]), "x") == []
+
+
+def test_the_solvers_and_the_scene_share_the_speed_limit():
+    # a scene refuses 1e6 rpm on a 7210 (n dm = 7e7 mm/min), as every solver entry point does
+    with pytest.raises(InputError, match="speed n·dm"):
+        S004.with_(n_rpm=1e6)
+    with pytest.warns(OutsideValidity, match="speed n·dm"):
+        st = tb.steady_state(S004.with_(n_rpm=16000.0))          # 1.1e6: computed, but outside the validated
+    assert any(w.quantity == "n_dm" for w in st.warnings)
+
+
+def test_a_load_the_contacts_cannot_carry_is_refused_naming_the_loads():
+    with pytest.raises(InputError) as e:
+        tb.steady_state(S004.with_(Fa=1e6))
+    assert "operation (Fa_N, Fr_N, M_Nm)" in str(e.value) and "Fa 1e+06 N" in str(e.value)
+    with pytest.raises(InputError, match="twice the ISO 76"):
+        tb.solve(S004.with_(Fa=1e6, T_C=50.0))
+
+
+def test_osculation_outside_its_range_is_refused():
+    with pytest.raises(InputError, match=r"bearing\[x\]\.fi = 10.0 — osculation must lie in \(0.5, 2\]"):
+        tb.BallBearing(D=11.5e-3, dm=43.5e-3, Z=7, fi=10.0, fo=0.53, name="x")
+    with pytest.raises(InputError, match="fo"):
+        tb.BallBearing(D=11.5e-3, dm=43.5e-3, Z=7, fi=0.52, fo=0.49, name="x")
+
+
+def test_a_start_below_the_lubricants_range_is_refused():
+    with pytest.raises(InputError, match="T0_C|T_ambient_C"):
+        tb.transient(S004, 100.0, T0_C=-60.0)
+
+
+def test_the_answers_warnings_are_its_own():
+    """A point inside every range carries no warning, although intermediate iterates may lie
+    beyond the lubricant's data; one outside carries each warning once."""
+    assert tb.steady_state(S004).warnings == []
+    hot = tb.steady_state(S004.with_(n_rpm=16000.0))
+    names = [w.quantity for w in hot.warnings]
+    assert len(names) == len(set(map(str, hot.warnings)))

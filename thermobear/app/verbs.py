@@ -1,0 +1,466 @@
+"""The command line's verbs: each checks its inputs and output paths first, then computes, then writes.
+
+Every verb returns its exit code: 0 done, 2 bad input (raised as InputError and turned into one
+line by :func:`thermobear.app.cli.main`), 3 a solver that could not deliver (or a sweep with failed
+points, unless ``--allow-failures``), 130 interrupted (Ctrl-C or SIGTERM; what was finished is
+kept and said where).
+"""
+from __future__ import annotations
+
+import signal
+import sys
+import tomllib
+from pathlib import Path
+
+import numpy as np
+
+from thermobear.app.output import (Progress, RowWriter, check_out_dir, check_out_file, csv_text, flatten,
+                                   print_json, write_text, wrote)
+from thermobear.app.rig import calibrate, channel_map, compare, parse_map, read_log
+from thermobear.app.spindown import spin_down_runs
+from thermobear.app.sweep import run_sweep, sweep_points
+from thermobear.contact.geometry import bearing_names
+from thermobear.contact.materials import material_names
+from thermobear.coupled import solve, transient
+from thermobear.errors import InputError
+from thermobear.files import data_dir, names_in, read_toml
+from thermobear.loads import load_distribution
+from thermobear.loads.highspeed import load_distribution_high_speed
+from thermobear.losses import BREAKDOWN_KEYS
+from thermobear.lubrication.lubricant import lubricant_names
+from thermobear.models import plan
+from thermobear.scene import load_scene
+from thermobear.scene.network import network_nodes
+from thermobear.validity import T_LUBRICANT_REFUSE_C
+
+__all__ = ["cmd_run", "cmd_loads", "cmd_list", "cmd_transient", "cmd_sweep", "cmd_compare", "cmd_calibrate",
+           "cmd_spin_down", "read_schedule", "EXIT_INTERRUPTED"]
+
+EXIT_SOLVER = 3
+EXIT_INTERRUPTED = 130
+
+
+# --------------------------------------------------------------------------- inputs
+def _value(text: str):
+    """A ``--set`` value read as TOML (``6500``, ``true``, ``"skf"``); a bare word stays text."""
+    try:
+        return tomllib.loads(f"v = {text}")["v"]
+    except tomllib.TOMLDecodeError:
+        return text.strip()
+
+
+def overrides(items) -> dict:
+    """``--set key=value`` items → :meth:`Scene.with_` keyword arguments (``models.<key>``,
+    ``fixed_C.<node>``, ``parameters.<name>`` go into their tables)."""
+    out: dict = {}
+    for it in items or []:
+        if "=" not in it:
+            raise InputError("--set", it, "expected key=value, e.g. --set n_rpm=6500 or --set models.losses=skf")
+        k, v = (s.strip() for s in it.split("=", 1))
+        val = _value(v)
+        for prefix, table in (("fixed_C.", "T_fixed_C"), ("models.", "models"), ("parameters.", "network_parameters")):
+            if k.startswith(prefix):
+                out.setdefault(table, {})[k[len(prefix):]] = val
+                break
+        else:
+            out[k] = val
+    return out
+
+
+def load_scene_with(path, sets=None):
+    """The scene of a file with the ``--set`` overrides applied (each checked as in a scene file)."""
+    scene = load_scene(path)
+    if sets:
+        ov = overrides(sets)
+        if "T_fixed_C" in ov:
+            ov["T_fixed_C"] = {**scene.T_fixed_C, **ov["T_fixed_C"]}
+        scene = scene.with_(**ov)
+    return scene
+
+
+def _T0(value, field="--T0-C"):
+    """A start temperature [°C]: finite and in the lubricant's accepted range."""
+    if value is None:
+        return None
+    lo, hi = T_LUBRICANT_REFUSE_C
+    if not (np.isfinite(value) and lo <= value <= hi):
+        raise InputError(field, value, f"start temperature must lie in [{lo:g}, {hi:g}] °C")
+    return float(value)
+
+
+def parse_values(text, field, *, allow_str=False):
+    """``"a:b:n"`` → n values from a to b (inclusive); ``"a,b,c"`` → the list; ``"a"`` → [a]."""
+    s = str(text).strip()
+    if ":" in s:
+        parts = s.split(":")
+        if len(parts) != 3:
+            raise InputError(field, text, "expected start:stop:count, e.g. 1000:8000:8")
+        try:
+            a, b, n = float(parts[0]), float(parts[1]), int(parts[2])
+        except ValueError:
+            raise InputError(field, text, "expected numbers start:stop:count (count an integer)") from None
+        if n < 1 or n > 100000 or not (np.isfinite(a) and np.isfinite(b)):
+            raise InputError(field, text, "count must lie in 1..100000 and start, stop be finite")
+        return np.linspace(a, b, n).tolist()
+    items = [v.strip() for v in s.split(",") if v.strip()]
+    if not items:
+        raise InputError(field, text, "expected a value, a list a,b,c or a range start:stop:count")
+    if allow_str:
+        return items
+    try:
+        vals = [float(v) for v in items]
+    except ValueError:
+        raise InputError(field, text, "expected numbers a,b,c or a range start:stop:count") from None
+    if not all(np.isfinite(vals)):
+        raise InputError(field, text, "values must be finite")
+    return vals
+
+
+# --------------------------------------------------------------------------- run / loads / list
+def cmd_run(args):
+    out = check_out_dir(args.plot)
+    res = solve(load_scene_with(args.scene, args.set))
+    if args.json:
+        print_json(res.as_dict())
+    else:
+        print(res.summary())
+    if out is not None:
+        from thermobear.app.plots import plot_result       # matplotlib: the optional "plot" extra
+        wrote(plot_result(res, out))
+    return 0
+
+
+def cmd_loads(args):
+    scene = load_scene_with(args.scene, args.set)
+    hs = plan(scene)[0]["high_speed"][0] == "yes"
+    M = scene.M
+    if hs:
+        ld = load_distribution_high_speed(scene.bearing, Fa=scene.Fa, Fr=scene.Fr, M=M, n_rpm=scene.n_rpm,
+                                          stiffness=scene.models.get("stiffness", "nominal"))
+    else:
+        ld = load_distribution(scene.bearing, Fa=scene.Fa, Fr=scene.Fr, M=M,
+                               stiffness=scene.models.get("stiffness", "nominal"))
+    form = (f"high-speed (Jones 1960: centrifugal force and gyroscopic moment at {scene.n_rpm:g} rpm)" if hs
+            else "static (low-speed Jones–Harris, rigid rings)")
+    d = {"bearing": scene.bearing.name, "form": form, "Fa_N": scene.Fa, "Fr_N": scene.Fr,
+         "delta_a_um": ld.delta_a * 1e6, "delta_r_um": ld.delta_r * 1e6, "theta_mrad": ld.theta * 1e3,
+         "Q_inner_N": ld.Q_i, "Q_outer_N": ld.Q_o, "alpha_inner_deg": np.rad2deg(ld.alpha_i),
+         "alpha_outer_deg": np.rad2deg(ld.alpha_o), "psi_deg": np.rad2deg(ld.psi), "residual": ld.residual,
+         "iterations": ld.iterations}
+    if args.json:
+        print_json(d)
+        return 0
+    print(f"{scene.bearing.name}: Fa = {scene.Fa:g} N, Fr = {scene.Fr:g} N — {form}")
+    print(f"  delta_a = {d['delta_a_um']:.3f} um, delta_r = {d['delta_r_um']:.3f} um (residual {ld.residual:.1e}, "
+          f"{ld.iterations} iterations)")
+    print(f"{'ball':>4s} {'psi [deg]':>10s} {'Q_i [N]':>10s} {'Q_o [N]':>10s} {'alpha_i [deg]':>14s} {'alpha_o [deg]':>14s}")
+    for j in range(scene.bearing.Z):
+        print(f"{j:4d} {d['psi_deg'][j]:10.1f} {ld.Q_i[j]:10.2f} {ld.Q_o[j]:10.2f} {d['alpha_inner_deg'][j]:14.2f} "
+              f"{d['alpha_outer_deg'][j]:14.2f}")
+    return 0
+
+
+def cmd_list(args):
+    what = {"bearings": bearing_names(), "lubricants": lubricant_names(), "materials": material_names(),
+            "networks": names_in(data_dir("networks")),
+            "examples": sorted(p.name for p in data_dir("examples").glob("*.toml"))}
+    if args.json:
+        print_json(what)
+    else:
+        for k, v in what.items():
+            print(f"{k}: {', '.join(v)}")
+    return 0
+
+
+# --------------------------------------------------------------------------- transient
+_SCHEDULE_KEYS = {"t_s", "n_rpm", "Fa_N", "Fr_N", "M_Nm", "T_oil_in_C", "T_ambient_C", "oil_flow_L_h", "lubricant"}
+
+
+def read_schedule(path, scene=None, t_end_s=None) -> list:
+    """Read a schedule TOML (``[[step]]`` tables with ``t_s`` and scene overrides) → [(t_s, {...}), ...];
+    each step is checked against the scene (:meth:`Scene.with_`) when one is given."""
+    p = Path(path)
+    if not p.is_file():
+        raise InputError("--schedule", str(path), "file not found")
+    d = read_toml(str(p.resolve()))
+    if set(d) - {"step"} or not isinstance(d.get("step"), list) or not d["step"]:
+        raise InputError(f"{p.name}", ", ".join(sorted(d)) or None,
+                         "expected [[step]] tables, e.g. [[step]] t_s = 600.0  n_rpm = 4800.0")
+    out, sc = [], scene
+    for i, st in enumerate(d["step"]):
+        where = f"{p.name}: step[{i}]"
+        if not isinstance(st, dict):
+            raise InputError(where, st, "must be a table")
+        for k in st:
+            if k not in _SCHEDULE_KEYS:
+                raise InputError(f"{where}.{k}", st[k], f"unknown key; accepted: {', '.join(sorted(_SCHEDULE_KEYS))}")
+        t = st.get("t_s")
+        if isinstance(t, bool) or not isinstance(t, (int, float)) or not np.isfinite(t) or t < 0:
+            raise InputError(f"{where}.t_s", t, "step time must be a number >= 0 [s]")
+        if t_end_s is not None and t >= t_end_s:
+            raise InputError(f"{where}.t_s", t, f"must be < --t-end ({t_end_s:g} s)")
+        if out and t <= out[-1][0]:
+            raise InputError(f"{where}.t_s", t, "step times must increase")
+        ch = {k: v for k, v in st.items() if k != "t_s"}
+        if sc is not None:
+            sc = sc.with_(**ch)
+        out.append((float(t), ch))
+    return out
+
+
+def t90_s(t, T):
+    """Time [s] at which T first reaches 90 % of its rise from T[0] to T[-1], interpolated between
+    output times (None without a rise)."""
+    t, T = np.asarray(t, float), np.asarray(T, float)
+    rise = T[-1] - T[0]
+    if T.size < 2 or abs(rise) < 1e-9:
+        return None
+    s = np.sign(rise) * (T - (T[0] + 0.9 * rise))
+    k = int(np.flatnonzero(s >= 0)[0])
+    if k == 0:
+        return float(t[0])
+    return float(t[k - 1] + (t[k] - t[k - 1]) * (-s[k - 1]) / (s[k] - s[k - 1]))
+
+
+def cmd_transient(args):
+    if not (np.isfinite(args.t_end) and args.t_end > 0):
+        raise InputError("--t-end", args.t_end, "end time must be > 0 [s]")
+    if args.points < 2 or args.points > 100000:
+        raise InputError("--points", args.points, "number of output times must lie in 2..100000")
+    T0 = _T0(args.T0_C)
+    out_csv = check_out_file(args.csv, "--csv")
+    out_dir = check_out_dir(args.plot)
+    scene = load_scene_with(args.scene, args.set)
+    if scene.T_C is not None:
+        raise InputError("operation.T_C", scene.T_C, "a transient solves the thermal network: remove the prescribed "
+                         "temperature (and give [thermal] network)")
+    schedule = read_schedule(args.schedule, scene, args.t_end) if args.schedule else []
+    stop = {"flag": False}
+
+    def halt(signum, frame):
+        stop["flag"] = True
+    previous = {s: signal.signal(s, halt) for s in (signal.SIGINT, signal.SIGTERM)}
+    try:
+        run = transient(scene, args.t_end, schedule=schedule, T0_C=T0, t_eval=np.linspace(0.0, args.t_end, args.points),
+                        stop=lambda: stop["flag"])
+    finally:
+        for s, h in previous.items():
+            signal.signal(s, h)
+    nodes = list(run.T_C)
+    header = ["t_s"] + [f"T_{n}_C" for n in nodes] + ["P_W"] + [f"P_{k}_W" for k in run.breakdown_W]
+    cols = [run.t_s] + [run.T_C[n] for n in nodes] + [run.P_W] + list(run.breakdown_W.values())
+    rows = list(zip(*[np.asarray(c, float) for c in cols]))
+    if out_csv:
+        write_text(out_csv, csv_text(header, rows, [f"thermobear transient of {scene.name} ({args.scene}), "
+                                                     f"t_end {args.t_end:g} s" + ("" if run.completed else
+                                                     f", interrupted at {run.t_s[-1] if run.t_s.size else 0:g} s")]))
+        wrote([out_csv])
+    if not run.completed:
+        t = float(run.t_s[-1]) if run.t_s.size else 0.0
+        print(f"interrupted at t = {t:g} s: kept {len(rows)} output times" + (f" in {out_csv}" if out_csv else
+              " (no --csv: nothing written)"), file=sys.stderr)
+        return EXIT_INTERRUPTED
+    if args.json:
+        print_json({"scene": scene.name, "t_s": run.t_s, "T_C": run.T_C, "P_W": run.P_W,
+                    "breakdown_W": run.breakdown_W, "schedule": schedule,
+                    "final_T_C": {n: float(run.T_C[n][-1]) for n in nodes},
+                    "warnings": [w.as_dict() for w in run.warnings]})
+    else:
+        print(f"thermobear transient — {scene.name}: {args.t_end:g} s, {len(schedule)} schedule steps")
+        print(f"\n{'node':18s} {'start [°C]':>11s} {'end [°C]':>10s} {'t90 [s]':>9s}")
+        for n in nodes:
+            T = np.asarray(run.T_C[n], float)
+            t90 = t90_s(run.t_s, T)
+            print(f"{n:18s} {T[0]:11.2f} {T[-1]:10.2f} " + (f"{t90:9.0f}" if t90 is not None else f"{'-':>9s}"))
+        print(f"\nPower loss at the end {run.P_W[-1]:.3f} W (start {run.P_W[0]:.3f} W)")
+        for k, v in run.breakdown_W.items():
+            print(f"  {k:12s} {float(v[-1]):10.4f} W")
+    if out_dir is not None:
+        from thermobear.app.plots import plot_heatup       # matplotlib: the optional "plot" extra
+        out_dir.mkdir(parents=True, exist_ok=True)
+        free = {n: run.T_C[n] for n in nodes if np.ptp(run.T_C[n]) > 0}
+        wrote([plot_heatup(run.t_s, free, out_dir / "heatup.png", title=f"Heat-up — {scene.name}")])
+    return 0
+
+
+# --------------------------------------------------------------------------- sweep
+_MODEL_COLUMNS = ("thermal", "load_model", "high_speed", "drag", "losses", "rolling", "kinematics", "hertz")
+
+
+def _sweep_header(scene, grid) -> list:
+    """Columns of a sweep's rows, known before the first row (rows stream out as they finish)."""
+    scenes = {str(v): scene.with_(**{k: v}) for k, vals in grid.items() for v in vals if k == "T_C"} or {"": scene}
+    nodes, coupled, prescribed = [], False, False
+    for sc in scenes.values():
+        if sc.T_C is None and scene.network:
+            coupled = True
+        else:
+            prescribed = True
+    if coupled:
+        nodes += network_nodes(scene.network, scene.path)
+    if prescribed:
+        nodes.append("contacts (prescribed)")
+    bd = ("rolling", "sliding", "drag", "seal") if scene.models.get("losses") == "skf" else BREAKDOWN_KEYS
+    return (list(grid) + ["status", "reason", "P_W", "torque_Nm", "T_ball_C", "iterations", "residual_K"]
+            + [f"breakdown_W.{k}" for k in bd] + [f"temperatures_C.{n}" for n in nodes]
+            + [f"models.{k}" for k in _MODEL_COLUMNS] + ["warnings"])
+
+
+def _grid(args) -> dict:
+    grid = {}
+    for attr, key, field in (("n_rpm", "n_rpm", "--n-rpm"), ("Fa", "Fa_N", "--Fa"), ("Fr", "Fr_N", "--Fr"),
+                             ("T_C", "T_C", "--T-C")):
+        if getattr(args, attr) is not None:
+            grid[key] = parse_values(getattr(args, attr), field)
+    if args.lubricant is not None:
+        grid["lubricant"] = parse_values(args.lubricant, "--lubricant", allow_str=True)
+    if not grid:
+        raise InputError("sweep", None, "give at least one of --n-rpm, --Fa, --Fr, --T-C, --lubricant")
+    return grid
+
+
+def cmd_sweep(args):
+    out_csv, out_jsonl = check_out_file(args.csv, "--csv"), check_out_file(args.jsonl, "--jsonl")
+    out_dir = check_out_dir(args.plot)
+    if args.processes is not None and args.processes < 1:
+        raise InputError("--processes", args.processes, "must be >= 1")
+    scene = load_scene_with(args.scene, args.set)
+    grid = _grid(args)
+    for k, vals in grid.items():                 # every value of every axis checked before computing
+        for v in vals:
+            scene.with_(**{k: v})
+    total = len(sweep_points(grid))
+    writer = RowWriter(_sweep_header(scene, grid), out_csv, out_jsonl,
+                       f"thermobear sweep of {scene.name} ({args.scene}): " + ", ".join(f"{k} x{len(v)}" for k, v in grid.items()))
+    try:
+        rows = run_sweep(scene, grid, scheduler=args.scheduler, processes=args.processes,
+                         progress=Progress(enabled=not args.quiet), on_row=writer.write)
+    except KeyboardInterrupt:
+        writer.close()
+        where = ", ".join(writer.paths) if writer.paths else "nowhere (give --csv or --jsonl to keep rows)"
+        print(f"interrupted: kept {writer.count} of {total} rows in {where}", file=sys.stderr)
+        return EXIT_INTERRUPTED
+    writer.close()
+    wrote(writer.paths)
+    failed = [r for r in rows if r["status"] != "ok"]
+    if args.json:
+        print_json(rows)
+    elif not writer.paths:
+        print(csv_text(writer.header, [[i] + [_flat_get(r, k) for k in writer.header[1:]] for i, r in enumerate(rows)]),
+              end="")
+    else:
+        print(f"{len(rows)} operating points ({len(failed)} failed), columns: {', '.join(writer.header)}")
+    if out_dir is not None and "n_rpm" in grid:
+        from thermobear.app.plots import plot_sweep        # matplotlib: the optional "plot" extra
+        wrote(plot_sweep(rows, grid, out_dir, scene.name))
+    if failed and not args.allow_failures:
+        print(f"error: {len(failed)} of {len(rows)} points failed ({', '.join(sorted({r['status'] for r in failed}))}); "
+              "their rows say why (--allow-failures exits 0)", file=sys.stderr)
+        return EXIT_SOLVER
+    return 0
+
+
+def _flat_get(row, key):
+    return flatten(row).get(key)
+
+
+# --------------------------------------------------------------------------- compare / calibrate
+def _rig_inputs(args):
+    scene = load_scene_with(args.scene, getattr(args, "set", None))
+    log = read_log(args.log)
+    return scene, log, channel_map(scene, log, parse_map(args.map))
+
+
+def cmd_compare(args):
+    out_dir = check_out_dir(args.plot)
+    out_csv = check_out_file(args.csv, "--csv")
+    T0 = _T0(args.T0_C)
+    scene, log, mapping = _rig_inputs(args)
+    comp = compare(scene, log, mapping, T0_C=T0)
+    if out_csv:
+        chans = list(comp.measured)
+        header = ["t_s" if comp.kind == "transient" else "n_rpm"] + [f"{c}{s}" for c in chans for s in ("", "_model")]
+        rows = [[comp.x[i]] + [v for c in chans for v in (comp.measured[c][i], comp.simulated[c][i])]
+                for i in range(comp.x.size)]
+        write_text(out_csv, csv_text(header, rows, [f"thermobear compare: {args.log} vs {scene.name}"]))
+        wrote([out_csv])
+    print_json(comp.as_dict()) if args.json else print(comp.summary())
+    if out_dir is not None:
+        from thermobear.app.plots import plot_comparison   # matplotlib: the optional "plot" extra
+        wrote(plot_comparison(comp, out_dir, f"{Path(args.log).name} vs {scene.name}"))
+    return 0
+
+
+def cmd_calibrate(args):
+    out_dir = check_out_dir(args.plot)
+    if args.max_nfev < 1:
+        raise InputError("--max-nfev", args.max_nfev, "must be >= 1")
+    T0 = _T0(args.T0_C)
+    scene, log, mapping = _rig_inputs(args)
+    cal = calibrate(scene, log, args.param, mapping, T0_C=T0, max_nfev=args.max_nfev)
+    print_json(cal.as_dict()) if args.json else print(cal.summary())
+    if out_dir is not None and cal.comparison is not None:
+        from thermobear.app.plots import plot_comparison   # matplotlib: the optional "plot" extra
+        wrote(plot_comparison(cal.comparison, out_dir, f"{Path(args.log).name}, calibrated", prefix="calibrate"))
+    return 0
+
+
+# --------------------------------------------------------------------------- spin-down
+def cmd_spin_down(args):
+    out_dir = check_out_dir(args.plot)
+    scene = load_scene_with(args.scene, args.set)
+    if scene.T_C is None:
+        raise InputError("operation.T_C", None, "the spin-down rig model needs a prescribed temperature (seed 001: 26.5 °C)")
+    J = args.J if args.J is not None else scene.rig_J_kg_m2
+    if J is None:
+        raise InputError("rig.J_kg_m2", None, "the spin-down needs the rotating inertia J [kg m²]: give --J or "
+                         "[rig] J_kg_m2 in the scene")
+    if not (np.isfinite(J) and J > 0):
+        raise InputError("--J", J, "inertia must be > 0 [kg m²]")
+    log = read_log(args.log) if args.log else None
+    if log is not None and (not ({"n_rpm", "torque_Nm"} <= set(log.columns)) or log.kind != "steady"):
+        raise InputError("--log", args.log, "a spin-down log has n_rpm and torque_Nm columns and no t_s")
+    rpms = parse_values(args.rpm, "--rpm") if args.rpm else (list(log["n_rpm"]) if log is not None else [scene.n_rpm])
+    for r in rpms:
+        if not r > 0:
+            raise InputError("--rpm", r, "initial speeds must be > 0 [rpm]")
+    if log is not None and "Fa_N" in log.columns and np.any(np.abs(log["Fa_N"] - scene.Fa) > 1e-6 * max(scene.Fa, 1)):
+        raise InputError("--log", args.log, f"its Fa_N differs from the scene's Fa = {scene.Fa:g} N (another rig set-up)")
+    runs = spin_down_runs(scene, float(J), rpms)
+    if log is not None:
+        for r in runs:
+            k = np.flatnonzero(np.isclose(log["n_rpm"], r["n0_rpm"]))
+            r["T_log_Nm"] = float(log["torque_Nm"][k[0]]) if k.size else None
+            r["T_error"] = r["T0_Nm"] / r["T_log_Nm"] - 1 if r["T_log_Nm"] else None
+    pub = [{k: v for k, v in r.items() if not k.startswith("_")} for r in runs]
+    if args.json:
+        print_json({"scene": scene.name, "J_kg_m2": J, "T_C": scene.T_C, "runs": pub})
+    else:
+        _print_spin_down(scene, J, pub, log is not None)
+    if out_dir is not None:
+        from thermobear.app.plots import plot_spin_down, plot_vs_speed   # the optional "plot" extra
+        out_dir.mkdir(parents=True, exist_ok=True)
+        paths = [plot_spin_down([(f"{r['n0_rpm']:g} rpm", r["_sd"].t, r["_sd"].omega) for r in runs],
+                                out_dir / "spin_down.png", f"Spin-down — {scene.name}, J = {J:g} kg m²")]
+        n0 = np.array([r["n0_rpm"] for r in runs])
+        sim = {"torque at the initial speed": np.array([r["T0_Nm"] for r in runs])}
+        meas = ({"torque at the initial speed": np.array([r.get("T_log_Nm") or np.nan for r in runs])}
+                if log is not None else None)
+        paths.append(plot_vs_speed(n0, sim, out_dir / "spin_down_torque.png", meas, "friction torque [N mm]",
+                                   f"Torque vs speed — {scene.name}", 1e3))
+        wrote(paths)
+    return 0
+
+
+def _print_spin_down(scene, J, pub, with_log):
+    print(f"thermobear spin-down — {scene.name}: J = {J:g} kg m², T = {scene.T_C:g} °C; "
+          "K*, n from t_max and φ_max (seed 001 eqs 20–21)")
+    head = f"{'n0 [rpm]':>8s} {'t_stop [s]':>10s} {'phi [rad]':>10s} {'K* [N m s^n]':>13s} {'n':>6s} {'T(w0) [N m]':>12s}"
+    print(head + (f" {'log [N m]':>10s} {'error':>7s}" if with_log else ""))
+    for r in pub:
+        line = (f"{r['n0_rpm']:8.0f} {r['t_stop_s']:10.2f} {r['phi_max_rad']:10.2f} {r['K_star']:13.4e} "
+                f"{r['n']:6.3f} {r['T0_Nm']:12.4e}")
+        if with_log and r.get("T_log_Nm"):
+            line += f" {r['T_log_Nm']:10.4e} {100 * r['T_error']:+6.1f}%"
+        print(line)
+

@@ -1,0 +1,110 @@
+"""The validity of an answer: the limits of :mod:`thermobear.validity` checked at a solved point.
+
+The solvers call :func:`contact_pressure` as soon as the loads are known (a load the contacts
+cannot carry is refused before anything else runs) and :func:`point_warnings` on each answer (what
+lies outside the validated range becomes a warning of that point's result).
+"""
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+
+from thermobear.errors import ExtrapolationWarning, InputError
+from thermobear.arrays import take
+from thermobear.validity import LIMITS, P_MAX_REFUSE_PA, check, collect
+
+__all__ = ["p_max_Pa", "contact_pressure", "overloads", "point_warnings", "family_warnings", "emit"]
+
+
+def p_max_Pa(Q, a, b):
+    r"""Maximum Hertz contact pressure [Pa] of contacts with load Q [N] and semi-axes a, b [m].
+
+    .. math:: p_{max} = \frac{3 Q}{2 \pi a b}
+
+    (Harris 2001 eq 6.47); 0 where a contact is unloaded.
+
+    >>> round(float(p_max_Pa(1000.0, 1e-3, 2e-4)) / 1e6, 1)
+    2387.3
+    """
+    Q, a, b = (np.asarray(v, float) for v in (Q, a, b))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where((Q > 0) & (a > 0) & (b > 0), 1.5 * Q / (np.pi * a * b), 0.0)
+
+
+def contact_pressure(contacts, field: str = "operation (Fa_N, Fr_N, M_Nm)", warn: bool = False) -> list:
+    """Refuse (InputError) loads whose maximum contact pressure exceeds the accepted limit, per
+    contact of a prepared contact set (``contacts.sides[side]`` with Q, a, b); returns the warnings
+    (with ``warn``)."""
+    out = []
+    for side in ("inner", "outer"):
+        sd = contacts.sides[side] if hasattr(contacts, "sides") else contacts[side]
+        out += check("p_max", p_max_Pa(sd["Q"], sd["a"], sd["b"]), field, what=f"{side} contacts", warn=warn)
+    return out
+
+
+def overloads(scenes, contacts) -> dict:
+    """Points whose loads the contacts cannot carry: index → InputError naming the loads (the
+    maximum contact pressure beyond :data:`thermobear.validity.P_MAX_REFUSE_PA`, twice the ISO 76
+    static rating load), for a contact set over the points of ``scenes``."""
+    p = np.stack([np.asarray(p_max_Pa(contacts.sides[s]["Q"], contacts.sides[s]["a"], contacts.sides[s]["b"]), float)
+                  .reshape(len(scenes), -1).max(axis=1) for s in ("inner", "outer")])
+    out = {}
+    for b in np.flatnonzero(p.max(axis=0) > P_MAX_REFUSE_PA):
+        sc, side = scenes[b], ("inner", "outer")[int(np.argmax(p[:, b]))]
+        loads = f"Fa {sc.Fa:g} N, Fr {sc.Fr:g} N" + (f", M {sc.M:g} N m" if sc.M is not None else "")
+        out[int(b)] = InputError("operation (Fa_N, Fr_N, M_Nm)", loads,
+                                 f"more than the contacts can carry: maximum contact pressure {p[:, b].max() / 1e6:.4g} MPa "
+                                 f"at the {side} contacts > {P_MAX_REFUSE_PA / 1e6:.4g} MPa, twice the ISO 76 static "
+                                 f"rating load ({sc.bearing.name})")
+    return out
+
+
+def point_warnings(scene, losses, x_C) -> list:
+    """The OutsideValidity warnings of one solved operating point: speed, contact pressure, contact
+    and oil temperatures (the lubricant's validated range), the SKF model's Φ_bl."""
+    with collect(replay=False) as got:
+        check("n_dm", scene.n_rpm * scene.bearing.dm * 1e3, "operation.n_rpm", warn=True)
+        check("lubricant_T", np.asarray(x_C, float), "contact / oil temperature", category=ExtrapolationWarning)
+        if getattr(losses, "contacts", None):
+            contact_pressure(losses.contacts, warn=True)
+        skf = getattr(losses, "skf", None)
+        if skf is not None:
+            check("skf_phi_bl", np.asarray(skf.phi_bl, float), "models.losses = skf")
+    return list(got)
+
+
+def _outside_warn(name, v) -> np.ndarray:
+    """Per point (rows of ``v``): anything outside the validated range of limit ``name``."""
+    lo, hi = LIMITS[name].warn
+    v = np.asarray(v, float).reshape(np.shape(v)[0], -1)
+    out = np.zeros(v.shape[0], bool)
+    if lo is not None:
+        out |= (v < lo).any(axis=1)
+    if hi is not None:
+        out |= (v > hi).any(axis=1)
+    return out
+
+
+def family_warnings(scenes, losses, x_C) -> list:
+    """:func:`point_warnings` of the B points of a family (batched ``losses``, ``x_C`` (B, 3)): the
+    ranges checked for all points at once, the messages made only for the points outside."""
+    B = len(scenes)
+    n_dm = np.array([s.n_rpm * s.bearing.dm * 1e3 for s in scenes])
+    flag = _outside_warn("n_dm", n_dm[:, None]) | _outside_warn("lubricant_T", x_C)
+    c = getattr(losses, "contacts", None)
+    if c:
+        p = np.concatenate([np.reshape(p_max_Pa(c[s]["Q"], c[s]["a"], c[s]["b"]), (B, -1)) for s in ("inner", "outer")], 1)
+        flag |= _outside_warn("p_max", p)
+    if getattr(losses, "skf", None) is not None:
+        flag |= _outside_warn("skf_phi_bl", np.reshape(np.asarray(losses.skf.phi_bl, float), (B, -1)))
+    out = [[] for _ in range(B)]
+    for b in np.flatnonzero(flag):
+        out[b] = point_warnings(scenes[b], take(losses, b, B), x_C[b])
+    return out
+
+
+def emit(ws, stacklevel: int = 3):
+    """Issue an answer's warnings to the caller (Python warnings; the command line prints each once)."""
+    for w in ws:
+        warnings.warn(w, stacklevel=stacklevel)

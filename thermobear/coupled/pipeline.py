@@ -1,0 +1,268 @@
+r"""Scene → loads → contacts, for one operating point or a family of them.
+
+A **family** is a set of operating points (scenes) that share everything but numbers: the bearing,
+lubricant, supply, network and model choices are the same, while speed, loads, moment, inlet and
+ambient temperatures, oil flow, imposed node temperatures and network context values may differ.
+A family is solved together: one batched load distribution, one batched contact set, one network
+at B operating points (:mod:`thermobear.coupled.steady`).
+
+The load step follows :func:`thermobear.models.choose_models`: the closed form (pure axial load,
+Harris 2001 eq 7.36), the dry Jones–Harris distribution (low- or high-speed form, reusing the dry
+solution the model choice computed), or the film load model at a film temperature.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from thermobear.arrays import take
+from thermobear.contact.kinematics import entrainment_speed
+from thermobear.errors import InputError, SolverError
+from thermobear.loads import LoadDistribution, axial_contact_angle, load_distribution
+from thermobear.loads.film import film_load_distribution
+from thermobear.loads.highspeed import load_distribution_high_speed
+from thermobear.losses import ContactSet, prepare_contacts
+from thermobear.models import plan, refuse_unloaded_thrust
+from thermobear.scene import Scene
+
+__all__ = ["Family", "families", "film_temperature_C", "closed_form_axial", "stack_loads", "family_loads",
+           "family_contacts", "scene_load", "scene_contacts", "film_scene_load"]
+
+
+def film_temperature_C(scene: Scene) -> float:
+    """Temperature [°C] at which the film load model evaluates the films when the caller gives none:
+    the prescribed T_C, else the oil inlet, else the ambient temperature (the steady state iterates it)."""
+    for T in (scene.T_C, scene.T_oil_in_C, scene.T_ambient_C):
+        if T is not None:
+            return float(T)
+    return 20.0
+
+
+def closed_form_axial(brg, Fa) -> LoadDistribution:
+    """Pure axial load, all balls equal: Harris 2001 eq 7.36 (radial/angular) or Q = Fa/Z (thrust);
+    ``Fa`` [N] a number or an array (one load case each).
+
+    A thrust bearing without axial load has no contact at all (its washers are not radially located
+    and nothing presses the balls): NoEquilibrium, as the high-speed form says."""
+    Fa_a = np.asarray(Fa, dtype=float)
+    Z = brg.Z
+    if brg.kind == "thrust" and not np.all(Fa_a > 0):
+        refuse_unloaded_thrust(float(np.min(Fa_a)))
+    psi = 2.0 * np.pi * np.arange(Z) / Z
+    if brg.kind == "thrust" and brg.alpha0 >= np.pi / 2 - 1e-12:
+        al = np.full(Fa_a.shape, np.pi / 2)
+        Q = Fa_a / Z
+        da = brg.A + (Q / brg.Kn()) ** (2.0 / 3.0)
+    else:
+        loaded = Fa_a > 0
+        al = np.where(loaded, axial_contact_angle(brg, np.where(loaded, Fa_a, 1.0)),
+                      0.0 if brg.kind == "deep_groove" else brg.alpha0)   # unloaded: as Jones–Harris reports
+        Q = np.where(loaded, Fa_a / (Z * np.sin(np.where(loaded, al, 1.0))), 0.0)
+        da = np.where(loaded, brg.A * np.cos(brg.alpha0) * np.tan(al), 0.0)
+    dn = (Q / brg.Kn()) ** (2.0 / 3.0)
+    full = np.multiply.outer(Q, np.ones(Z))
+    per = (lambda v: np.multiply.outer(v, np.ones(Z)))  # noqa: E731
+    sc = (lambda v: float(v) if np.ndim(v) == 0 else v)  # noqa: E731
+    return LoadDistribution(delta_a=sc(da), delta_r=sc(0.0 * da), theta=sc(0.0 * da), Q_i=full, Q_o=full.copy(),
+                            alpha_i=per(al), alpha_o=per(al), psi=psi, delta_n=per(dn), residual=0.0, iterations=0,
+                            Fa=Fa_a, Fr=np.zeros_like(Fa_a), M=0.0)
+
+
+def stack_loads(loads) -> LoadDistribution:
+    """One batched load distribution (leading axis) from single-point ones of the same bearing."""
+    first = loads[0]
+    fields = {}
+    for name in ("delta_a", "delta_r", "theta", "Q_i", "Q_o", "alpha_i", "alpha_o", "delta_n", "Fa", "Fr", "M"):
+        fields[name] = np.stack([np.asarray(getattr(ld, name), float) for ld in loads])
+    fields["residual"] = max(float(np.max(ld.residual)) for ld in loads)
+    fields["iterations"] = max(int(np.max(ld.iterations)) for ld in loads)
+    fields["psi"] = first.psi
+    return LoadDistribution(**fields)
+
+
+@dataclass(frozen=True)
+class Family:
+    """Operating points that share everything but numbers (see the module docstring).
+
+    Attributes
+    ----------
+    scenes : tuple           the B scenes
+    index : tuple            their positions in the caller's list
+    models : dict            the shared model choices (model → (choice, reason) of the first point)
+    dry : tuple              per point, the dry load distribution the model choice solved (or None)
+    """
+
+    scenes: tuple
+    index: tuple
+    models: dict
+    dry: tuple
+
+    @property
+    def B(self) -> int:
+        return len(self.scenes)
+
+    @property
+    def scene(self) -> Scene:
+        """The first point (everything shared is read from it)."""
+        return self.scenes[0]
+
+    def values(self, attr) -> np.ndarray:
+        """(B,) array of a per-point scene value (None → NaN)."""
+        return np.array([np.nan if getattr(s, attr) is None else getattr(s, attr) for s in self.scenes], float)
+
+
+def _key(scene: Scene, models: dict):
+    """What a family shares: every choice, the bearing and lubricant objects, the network, the names
+    of imposed nodes and context values, the element overrides and every non-numeric scene value."""
+    params = scene.network_parameters
+    return (id(scene.bearing), id(scene.lubricant), scene.supply, scene.network, scene.path, scene.rotating,
+            scene.M is None, scene.T_C is None, scene.T_oil_in_C is None, scene.Rq_ball, scene.Rq_ring,
+            scene.mu_boundary, scene.mu_full_film, tuple(sorted(scene.T_fixed_C)),
+            tuple(sorted((k, v if "." in k else None) for k, v in params.items())),
+            tuple(sorted((k, repr(v)) for k, v in scene.models.items())),
+            tuple(sorted((k, repr(v[0])) for k, v in models.items())))
+
+
+def families(scenes, plans=None) -> tuple:
+    """Group operating points into families.
+
+    Parameters
+    ----------
+    scenes : list of Scene
+    plans : list            per scene ``(models, dry)`` (:func:`thermobear.models.plan_many`) or an
+                            exception; default: planned one by one
+
+    Returns
+    -------
+    (list of Family, dict index → exception)  the points whose model choice failed apart
+    """
+    plans = plans if plans is not None else [plan(s) for s in scenes]
+    groups: dict = {}
+    failed = {}
+    for i, (sc, p) in enumerate(zip(scenes, plans)):
+        if isinstance(p, Exception):
+            failed[i] = p
+            continue
+        groups.setdefault(_key(sc, p[0]), []).append((i, sc, p))
+    fams = [Family(scenes=tuple(m[1] for m in members), index=tuple(m[0] for m in members),
+                   models=members[0][2][0], dry=tuple(m[2][1] for m in members)) for members in groups.values()]
+    return fams, failed
+
+
+def _film_inputs(scene: Scene, n_rpm, T_film_C):
+    """Entrainment speed [m/s] (at the nominal angle), viscosity [Pa s] and α_p [1/Pa] of the films."""
+    b, lub = scene.bearing, scene.lubricant
+    w = np.asarray(n_rpm, float) * np.pi / 30.0
+    wi, wo = (w, 0.0 * w) if scene.rotating == "inner" else (0.0 * w, w)
+    u = np.maximum(np.asarray(entrainment_speed(wi, wo, b.D, b.dm, b.alpha0), float), 1e-6)
+    T = np.asarray(T_film_C, float)
+    return u, np.asarray(lub.eta(T), float), np.asarray(lub.alpha_p_at(T), float)
+
+
+def film_loads(scene: Scene, models: dict, Fa, Fr, M, n_rpm, T_film_C) -> LoadDistribution:
+    """Film load model (:mod:`thermobear.loads.film`, or :mod:`thermobear.loads.highspeed` with
+    ``film=`` in the high-speed form), films at ``T_film_C`` [°C]; arrays: one load case each."""
+    stiff = scene.models.get("stiffness", "nominal")
+    u, eta, ap = _film_inputs(scene, n_rpm, T_film_C)
+    batch = np.ndim(Fa) > 0
+    val = (lambda v: np.asarray(v, float)) if batch else float     # noqa: E731
+    if models["high_speed"][0] == "yes":
+        return load_distribution_high_speed(scene.bearing, Fa=Fa, Fr=Fr, M=M, n_rpm=val(n_rpm), stiffness=stiff,
+                                            film=dict(eta=val(eta), alpha_p=val(ap)))
+    uu = u[:, None] if batch else float(u)
+    return film_load_distribution(scene.bearing, Fa=Fa, Fr=Fr, M=M, u_i=uu, u_o=uu, eta=val(eta), alpha_p=val(ap),
+                                  stiffness=stiff)
+
+
+def family_loads(fam: Family, T_film_C=None) -> LoadDistribution:
+    """The batched load distribution of a family (leading axis B) by its load model; ``T_film_C``
+    (B,) [°C] the film temperatures of the film load model (default :func:`film_temperature_C`)."""
+    sc, m = fam.scene, fam.models
+    Fa, Fr = fam.values("Fa"), fam.values("Fr")
+    M = None if sc.M is None else fam.values("M")
+    lm = m["load_model"][0]
+    if lm == "closed_form":
+        return closed_form_axial(sc.bearing, Fa)
+    if lm == "film":
+        T = np.array([film_temperature_C(s) for s in fam.scenes]) if T_film_C is None else np.asarray(T_film_C, float)
+        return film_loads(sc, m, Fa, Fr, M, fam.values("n_rpm"), T)
+    if all(d is not None for d in fam.dry):
+        return stack_loads(fam.dry)
+    stiff = sc.models.get("stiffness", "nominal")
+    if m["high_speed"][0] == "yes":
+        return load_distribution_high_speed(sc.bearing, Fa=Fa, Fr=Fr, M=M, n_rpm=fam.values("n_rpm"), stiffness=stiff)
+    return load_distribution(sc.bearing, Fa=Fa, Fr=Fr, M=M, stiffness=stiff)
+
+
+def family_contacts(fam: Family, load: LoadDistribution) -> ContactSet:
+    """Temperature-independent contact data of a family (ellipses, kinematics), batch (B,)."""
+    sc, m = fam.scene, fam.models
+    return prepare_contacts(sc.bearing, fam.values("Fa"), fam.values("Fr"), fam.values("n_rpm"),
+                            M=None if sc.M is None else fam.values("M"), rotating=sc.rotating,
+                            hertz_method=m["hertz"][0], centrifugal=m["high_speed"][0] != "yes", load=load,
+                            control=m["kinematics"][0])
+
+
+def _one(scene: Scene, models=None):
+    """A one-point family of ``scene`` (models chosen unless given)."""
+    if models is None:
+        models, dry = plan(scene)
+    else:
+        dry = None
+    return Family(scenes=(scene,), index=(0,), models=models, dry=(dry,))
+
+
+def scene_load(scene: Scene, models: dict | None = None, T_film_C=None) -> LoadDistribution:
+    """Load distribution of one scene by the model :func:`~thermobear.models.choose_models` picked
+    (``T_film_C`` [°C]: temperature of the films for the ``"film"`` load model)."""
+    fam = _one(scene, models)
+    T = None if T_film_C is None else [float(T_film_C)]
+    return take(family_loads(fam, T), 0, 1)
+
+
+def film_scene_load(scene: Scene, models: dict, T_film_C, n_rpm=None) -> LoadDistribution:
+    """Film load model of a scene, films at ``T_film_C`` [°C]; with arrays ``n_rpm`` [rpm] and/or
+    ``T_film_C`` one batched solve over those operating points (loads of the scene)."""
+    T = np.asarray(T_film_C, float)
+    n = np.asarray(scene.n_rpm if n_rpm is None else n_rpm, float)
+    if T.ndim == 0 and n.ndim == 0:
+        return film_loads(scene, models, scene.Fa, scene.Fr, scene.M, float(n), float(T))
+    n, T = (a.ravel() for a in np.broadcast_arrays(n, T))
+    M = None if scene.M is None else np.full(n.size, scene.M)
+    return film_loads(scene, models, np.full(n.size, scene.Fa), np.full(n.size, scene.Fr), M, n, T)
+
+
+def scene_contacts(scene: Scene, models: dict | None = None, load: LoadDistribution | None = None,
+                   n_rpm=None, T_film_C=None) -> ContactSet:
+    """Temperature-independent contact data of a scene (loads, ellipses, kinematics).
+
+    ``n_rpm`` may override the scene's speed with an array (one operating point each, the loads of
+    the scene: a prescribed-temperature sweep); ``T_film_C``: see :func:`scene_load`."""
+    models = models if models is not None else plan(scene)[0]
+    if load is None and models["load_model"][0] == "film" and n_rpm is not None and np.ndim(n_rpm):
+        raise InputError("models.load_model", "film", "the film load model takes one speed per call (no speed "
+                         "arrays): sweep the scenes one by one")
+    load = load if load is not None else scene_load(scene, models, T_film_C=T_film_C)
+    n = scene.n_rpm if n_rpm is None else n_rpm
+    return prepare_contacts(scene.bearing, scene.Fa, scene.Fr, n, M=scene.M, rotating=scene.rotating,
+                            hertz_method=models["hertz"][0], centrifugal=models["high_speed"][0] != "yes", load=load,
+                            control=models["kinematics"][0])
+
+
+def split_failures(fn, fam: Family, *args):
+    """``fn(fam, *args)`` for a family; when it raises a SolverError / InputError for the whole batch,
+    the family is halved until the failing points stand alone.  Returns [(sub-family, result or
+    exception)]."""
+    try:
+        return [(fam, fn(fam, *args))]
+    except (SolverError, InputError) as exc:
+        if fam.B == 1:
+            return [(fam, exc)]
+    h = fam.B // 2
+    out = []
+    for part in (slice(0, h), slice(h, fam.B)):
+        sub = Family(scenes=fam.scenes[part], index=fam.index[part], models=fam.models, dry=fam.dry[part])
+        sub_args = [a[part] if isinstance(a, np.ndarray) and a.shape[:1] == (fam.B,) else a for a in args]
+        out += split_failures(fn, sub, *sub_args)
+    return out

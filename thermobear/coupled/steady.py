@@ -1,0 +1,472 @@
+r"""Coupled steady state: losses(T) ↔ thermal network, for one operating point or many at once.
+
+The losses depend on three coupled temperatures x (inner contact, outer contact — each the mean of
+ball and race nodes, seed 004 §4.5 — and oil–air mixture); the network turns them into node
+temperatures.  The steady operating point solves, for the free node temperatures T_f of every
+operating point of a family at once (stacked matrices, one batched solve per iteration):
+
+.. math:: R(T_f) = A_{ff}(T) T_f + A_{fb}(T) T_b - S\, P(C T_f) = 0,
+          \qquad J = A_{ff} + \frac{\partial (A T)}{\partial T_f} - S \frac{\partial P}{\partial x} C
+
+with C the coupled-temperature map and S the split of the three loss parts onto the nodes
+(:class:`~thermobear.coupled.sources.Coupling`).  ∂P/∂x comes from one loss evaluation at stacked
+temperature states (x and x + h; four states for a source whose parts share temperatures), ∂(AT)/∂T
+from forward differences of the temperature-dependent conductances (re-evaluated while the steps
+exceed 1 K).  Convergence is quadratic to superlinear (5–7 iterations from ambient); each point
+stops on its own (max |ΔT_f| ≤ tol_K), and a point that fails does not stop the others.
+
+Stability: the loop gain, the largest real eigenvalue of dG/dx = C A_ff⁻¹ S ∂P/∂x (the losses
+through the network), must be < 1 at an equilibrium.  A point whose Newton iteration cannot decide
+(gain ≥ 1, a temperature beyond the lubricant's limit, divergence) is decided on the physical
+heating path (:func:`thermobear.coupled.fixedpoint.solve_coupled`: Anderson mixing, then Picard from
+ambient, which names thermal runaway).
+
+With the film load model the loads depend on the film temperature, taken as the mean contact
+temperature of the solution: an outer fixed point on that temperature (a few load updates; each
+round's film load distributions solved for the family's points in one batched call).
+
+The returned states are full network solves with the converged losses: their energy balance
+closes to machine precision, and their coupled temperatures are checked against the fixed point.
+"""
+from __future__ import annotations
+
+import warnings
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from thermobear.arrays import take
+from thermobear.coupled.fixedpoint import solve_coupled
+from thermobear.coupled.pipeline import (Family, families, family_contacts, family_loads, film_temperature_C,
+                                        split_failures)
+from thermobear.coupled.limits import emit, family_warnings, overloads
+from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepared_for
+from thermobear.errors import (ExtrapolationWarning, InputError, NoConvergence, OutsideValidity, SolverError,
+                               ThermalRunaway)
+from thermobear.models import plan_many
+from thermobear.scene import Scene
+from thermobear.thermal.solve import batched_solve, solve_linear
+from thermobear.validity import T_LUBRICANT_REFUSE_C
+
+__all__ = ["SteadyState", "steady_state", "steady_states", "T_LIMIT_K"]
+
+_C0 = 273.15
+T_LIMIT_K = T_LUBRICANT_REFUSE_C[1] + _C0     #: an equilibrium beyond the lubricant's limit is runaway
+_FILM_TOL_K = 0.1                              #: film temperature fixed point tolerance [K]
+_FILM_MAXITER = 10
+
+
+@dataclass
+class SteadyState:
+    """Coupled steady state of one operating point.
+
+    Attributes
+    ----------
+    T_C : dict                node → temperature [°C]
+    T_ball_C : float          ball temperature [°C]
+    P_W : float               total power loss [W]
+    losses : LossResult       losses at equilibrium (the SKF model: its result)
+    iterations : int          fixed-point iterations
+    residual_K : float        last temperature change [K]
+    energy_balance_W : float  Σ sources − Σ heat to fixed nodes and the oil stream [W]
+    heat_flows_W : dict       element → heat flow [W] (signed along the element's ``between``)
+    models_used : dict        model → (choice, reason)
+    history : list            convergence history
+    roles : dict              role → node (ball, inner, outer, oil)
+    warnings : list           OutsideValidity warnings of this point's answer
+    """
+
+    T_C: dict
+    T_ball_C: float
+    P_W: float
+    losses: object
+    iterations: int
+    residual_K: float
+    energy_balance_W: float
+    heat_flows_W: dict
+    models_used: dict
+    history: list = field(default_factory=list)
+    roles: dict = field(default_factory=dict)
+    warnings: list = field(default_factory=list)
+
+
+@dataclass
+class _Newton:
+    """Per-point outcome of the batched Newton iteration."""
+
+    T: np.ndarray            # (B, n) node temperatures [K]
+    x: np.ndarray            # (B, 3) coupled temperatures [K]
+    done: np.ndarray         # (B,) converged to a stable equilibrium
+    its: np.ndarray          # (B,) iterations
+    step: np.ndarray         # (B,) last step [K]
+    gain: np.ndarray         # (B,) loop gain
+    history: list            # per point, list of dicts
+    method: tuple = ()       # per point, how it converged
+
+
+def _slopes(src, x_C, h=0.05):
+    """Loss parts P (B, 3) [W] at x [°C] and ∂P/∂x (B, 3, 3) [W/K] by forward differences."""
+    if src.diagonal:       # each part reads its own temperature: x and x + h in one evaluation
+        Pm = src.parts(np.stack([x_C, x_C + h]))
+        return Pm[0], (Pm[1] - Pm[0])[:, :, None] * np.eye(3)[None] / h
+    X = np.repeat(x_C[None], 4, axis=0)
+    for k in range(3):
+        X[k + 1, :, k] += h
+    Pm = src.parts(X)
+    return Pm[0], np.stack([(Pm[k + 1] - Pm[0]) / h for k in range(3)], axis=-1)
+
+
+def _loop_gain(Aff, S, dP, C):
+    """Largest real eigenvalue of C A_ff⁻¹ S ∂P/∂x per point (B,); NaN where it is not defined."""
+    M = np.einsum("ki,bil->bkl", C, batched_solve(Aff, np.einsum("ik,bkl->bil", S, dP)))
+    ok = np.isfinite(M).all(axis=(1, 2))
+    out = np.full(M.shape[0], np.nan)
+    if ok.any():
+        out[ok] = np.linalg.eigvals(M[ok]).real.max(axis=1)
+    return out
+
+
+def _newton(net, src, cp: Coupling, tol_K, T0=None, maxiter: int = 30, h: float = 0.05) -> _Newton:
+    """Batched Newton on the free node temperatures (see the module docstring)."""
+    B, free, fixed = net.B, ~net.fixed, net.fixed
+    T = net.initial_T_K()
+    if T0 is not None:              # a start per point (rows of NaN: the default start)
+        T0 = np.asarray(T0, float)
+        T = np.where(np.isfinite(T0).all(axis=1, keepdims=True) & ~fixed, T0, T)
+    Tb = T[:, fixed]
+    done, bad = np.zeros(B, bool), np.zeros(B, bool)
+    its, step, gain = np.zeros(B, int), np.full(B, np.inf), np.full(B, np.nan)
+    hist = [[] for _ in range(B)]
+    dG = None
+    for it in range(1, maxiter + 1):
+        live = ~(done | bad)
+        if not live.any():
+            break
+        x = T[:, free] @ cp.C.T
+        P, dP = _slopes(src, x - _C0, h)
+        fresh = live & (step > 1.0)
+        if dG is None or fresh.any():  # the slopes of the conductances re-evaluated while a point's step > 1 K;
+            G, dG_new = net.dconductances(T)     # below, each point keeps its last ones (same as alone)
+            dG = dG_new if dG is None else [(k, m, np.where(fresh, dn, do)) for (k, m, dn), (_, _, do) in zip(dG_new, dG)]
+        else:
+            G = net.conductances(T)
+        Aff, Afb = net.blocks(G)
+        Tf = T[:, free]
+        R = np.einsum("bij,bj->bi", Aff, Tf) + np.einsum("bij,bj->bi", Afb, Tb) - P @ cp.S.T
+        J = Aff + net.dAT_free(T, dG) - np.einsum("ik,bkl,lj->bij", cp.S, dP, cp.C)
+        dT = batched_solve(J, -R)
+        finite = np.isfinite(dT).all(axis=1)
+        bad |= live & ~finite
+        live &= finite
+        dT = np.where(live[:, None], dT, 0.0)
+        s = np.where(live, np.abs(dT).max(axis=1, initial=0.0), np.inf)
+        # the loop gain at the first iterate, whenever the step does not shrink, and at the answer
+        check = live & ((it == 1) | (s >= step) | (s <= tol_K))
+        if check.any():
+            gain = np.where(check, _loop_gain(Aff, cp.S, dP, cp.C), gain)
+        step = np.where(live, s, step)
+        dT *= np.minimum(1.0, 50.0 / np.maximum(np.abs(dT).max(axis=1, initial=0.0), 1e-300))[:, None]
+        for b in np.flatnonzero(live):
+            hist[b].append(dict(iteration=it, T_K=x[b].copy(), residual_K=float(s[b]),
+                                mean_residual_K=float(np.mean(cp.C @ dT[b])), P_W=float(P[b].sum()), step="newton"))
+        T[:, free] = Tf + dT
+        its = np.where(live, it, its)
+        conv = live & (s <= tol_K)
+        done |= conv
+        bad |= live & ~conv & ((gain >= 1.0) | (~np.isfinite(gain)) | ((T[:, free] @ cp.C.T).max(axis=1) > T_LIMIT_K))
+    done &= np.isfinite(gain) & (gain < 1.0)
+    return _Newton(T=T, x=T[:, free] @ cp.C.T, done=done, its=its, step=step, gain=gain, history=hist,
+                   method=("newton",) * B)
+
+
+def _sources_matrix(net, cp: Coupling, parts) -> np.ndarray:
+    """(B, n) node sources [W] of the loss parts (B, 3)."""
+    P = np.zeros((net.B, len(net.nodes)))
+    P[:, ~net.fixed] = parts @ cp.S.T
+    return P
+
+
+def _physical_path(net, src, cp: Coupling, tol_K) -> _Newton:
+    """One point (B = 1) decided on the heating path (:func:`~thermobear.coupled.fixedpoint.solve_coupled`:
+    Anderson mixing, then Picard from ambient); raises ThermalRunaway or NoConvergence."""
+    free, fixed = ~net.fixed, net.fixed
+    state = {"T": net.initial_T_K()}
+    Tb = state["T"][:, fixed]
+
+    def update(x_K):
+        parts = src.parts((np.asarray(x_K) - _C0)[None])
+        P = _sources_matrix(net, cp, parts)
+        Aff, Afb = net.blocks(net.conductances(state["T"]))   # linearised at the last iterate
+        Tf = batched_solve(Aff, P[:, free] - np.einsum("bij,bj->bi", Afb, Tb))
+        state["T"] = np.where(fixed, state["T"], 0.0)
+        state["T"][:, free] = Tf
+        return (Tf @ cp.C.T)[0], float(parts.sum())
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ExtrapolationWarning)
+        res = solve_coupled(update, (state["T"][:, free] @ cp.C.T)[0], tol_K=tol_K, T_limit_K=T_LIMIT_K)
+    x = res.T_K[None]
+    T = state["T"]
+    return _Newton(T=T, x=x, done=np.array([True]), its=np.array([res.iterations]), step=np.array([res.residual_K]),
+                   gain=np.array([res.loop_gain]), history=[res.history], method=(res.method,))
+
+
+def _models_used(fam: Family, r, template, cp: Coupling, nw: _Newton, b: int) -> dict:
+    used = dict(getattr(r, "models_used", {}))
+    used.update(fam.models)
+    lm, hs = fam.models["load_model"][0], fam.models["high_speed"][0]
+    used["load_distribution"] = (
+        "closed form, all balls equal" if lm == "closed_form" else
+        "Jones–Harris high-speed (centrifugal, gyroscopic)" if hs == "yes" else "Jones–Harris low-speed, rigid rings",
+        fam.models["load_model"][1])
+    if fam.scene.bearing.kind != "thrust":
+        used["centrifugal"] = (("in the ball equilibrium", "high-speed form") if hs == "yes" else
+                               ("F_c/cos α on the outer contact", "balls outside the load zone ride on the outer race"))
+    else:
+        used["centrifugal"] = ("none", "thrust bearing")
+    used["thermal"] = (f"network {template.name}", f"fixed point on 3 coupled temperatures: {nw.method[b]}, "
+                                                   f"{int(nw.its[b])} iterations, loop gain {nw.gain[b]:.2f}")
+    used["node_roles"] = (cp.roles, "contact temperature = mean of ball and race nodes (seed 004 §4.5)")
+    return used
+
+
+def _finish(fam: Family, net, src, cp: Coupling, template, nw: _Newton, tol_K) -> list:
+    """Per point: a SteadyState from a full network solve with the converged losses, a SolverError,
+    or None (not converged: the caller decides it on the heating path)."""
+    free = ~net.fixed
+    x_C = nw.x - _C0
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ExtrapolationWarning)
+        r = src.result(x_C)
+    parts = src.parts(x_C)
+    st = solve_linear(net, _sources_matrix(net, cp, parts), nw.T)
+    gap = np.abs(st.T_K[:, free] @ cp.C.T - nw.x).max(axis=1)
+    bal = np.atleast_1d(st.balance_W)
+    flows = {k: np.atleast_1d(v) for k, v in st.flows_W.items()}
+    warned = family_warnings(fam.scenes, r, x_C)
+    out = []
+    for b in range(fam.B):
+        if not nw.done[b]:
+            out.append(None)
+            continue
+        T_C = {n: float(st.T_K[b, k] - _C0) for k, n in enumerate(net.nodes)}
+        hot = {k: v for k, v in T_C.items() if v + _C0 > T_LIMIT_K}
+        if hot:
+            node = max(hot, key=hot.get)
+            out.append(ThermalRunaway(
+                f"no equilibrium below {T_LIMIT_K - _C0:g} °C (the lubricant's limit): the network cannot shed "
+                f"{parts[b].sum():.4g} W even at that temperature ({node} would reach {hot[node]:.4g} °C); more "
+                "cooling, less speed or a thinner oil is needed", iterations=int(nw.its[b]),
+                residual=float(nw.step[b]), last=T_C, history=nw.history[b]))
+            continue
+        if gap[b] > max(10 * tol_K, 1e-4):
+            out.append(NoConvergence(f"coupled temperatures of the final network solve differ from the fixed point "
+                                     f"by {gap[b]:.3g} K", iterations=int(nw.its[b]), residual=float(gap[b]),
+                                     last=T_C, history=nw.history[b]))
+            continue
+        rb = take(r, b, fam.B)
+        P = float(np.asarray(r.P_W, float).reshape(-1)[b])
+        out.append(SteadyState(
+            T_C=T_C, T_ball_C=T_C[cp.roles["ball"]], P_W=P, losses=rb, iterations=int(nw.its[b]),
+            residual_K=max(float(nw.step[b]), float(gap[b])), energy_balance_W=float(bal[b]),
+            heat_flows_W={k: float(v[b]) for k, v in flows.items()},
+            models_used=_models_used(fam, rb, template, cp, nw, b), history=nw.history[b], roles=dict(cp.roles),
+            warnings=warned[b]))
+    return out
+
+
+def _solve_loaded(fam: Family, load, template, cp: Coupling, tol_K, T0=None) -> list:
+    """Steady states of a family with given (batched) loads: Newton for all points, the heating
+    path for the points it cannot decide.  Per point a SteadyState or a SolverError."""
+    contacts = family_contacts(fam, load)
+    over = overloads(fam.scenes, contacts)
+    if over:                        # refused points apart; the others solved as a family of their own
+        keep = [b for b in range(fam.B) if b not in over]
+        out = [over.get(b) for b in range(fam.B)]
+        if keep:
+            sub = Family(scenes=tuple(fam.scenes[b] for b in keep), index=tuple(fam.index[b] for b in keep),
+                         models=fam.models, dry=tuple(fam.dry[b] for b in keep))
+            T0k = None if T0 is None else np.asarray(T0)[keep]
+            for b, r in zip(keep, _solve_loaded(sub, take(load, np.array(keep), fam.B), template, cp, tol_K, T0k)):
+                out[b] = r
+        return out
+    net = family_network(fam, template, contacts)
+    src = loss_sources(fam, contacts)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ExtrapolationWarning)
+        nw = _newton(net, src, cp, tol_K, T0)
+    out = _finish(fam, net, src, cp, template, nw, tol_K)
+    for b in [b for b, o in enumerate(out) if o is None]:
+        sub = Family(scenes=(fam.scenes[b],), index=(fam.index[b],), models=fam.models, dry=(fam.dry[b],))
+        load_b = take(load, b, fam.B) if fam.B > 1 else load
+        cs_b = family_contacts(sub, _batched(load_b))
+        net_b, src_b = family_network(sub, template, cs_b), loss_sources(sub, cs_b)
+        try:
+            nw_b = _physical_path(net_b, src_b, cp, tol_K)
+        except SolverError as exc:
+            out[b] = exc
+            continue
+        out[b] = _finish(sub, net_b, src_b, cp, template, nw_b, tol_K)[0]
+    return out
+
+
+def _batched(load):
+    """A one-point load distribution with a leading batch axis of 1 (the family form)."""
+    return take(load, np.array([0]), 1) if np.ndim(load.delta_a) == 0 else load
+
+
+def _solve_family(fam: Family, tol_K, load=None, prepared=None) -> list:
+    """Per point of a family: a SteadyState or the exception that stopped it."""
+    try:
+        pre = prepared_for(fam.scene, prepared if prepared is not None and prepared.serves(fam.scene) else None)
+    except InputError as exc:
+        return [exc] * fam.B
+    template, cp = pre.template, pre.coupling
+    if load is not None:
+        return _solve_loaded(fam, load, template, cp, tol_K)
+    if fam.models["load_model"][0] == "film":
+        return _film_family(fam, template, cp, tol_K)
+    out = [None] * fam.B
+    pos = {i: k for k, i in enumerate(fam.index)}
+    for sub, ld in split_failures(family_loads, fam):
+        res = [ld] * sub.B if isinstance(ld, Exception) else _solve_loaded(sub, ld, template, cp, tol_K)
+        for i, r in zip(sub.index, res):
+            out[pos[i]] = r
+    return out
+
+
+def _mean_contact_C(st: SteadyState) -> float:
+    """Mean contact temperature [°C] of a state (ball with each race, seed 004 §4.5)."""
+    c = st.losses.contacts
+    return float(np.mean(np.concatenate([np.ravel(c["inner"]["T_C"]), np.ravel(c["outer"]["T_C"])])))
+
+
+def _node_T(st: SteadyState, template) -> np.ndarray:
+    return np.array([st.T_C[n] + _C0 for n in template.nodes])
+
+
+def _film_family(fam: Family, template, cp: Coupling, tol_K) -> list:
+    """The film load model's fixed point on the film temperature for a family (module docstring):
+    a dry start, then film load updates, each followed by a steady state started from the last."""
+    B = fam.B
+    dry = Family(scenes=fam.scenes, index=fam.index, dry=fam.dry,
+                 models={**fam.models, "load_model": ("jones_harris", "start of the film fixed point")})
+    T_ref = np.array([film_temperature_C(s) for s in fam.scenes])
+    start = np.full((B, len(template.nodes)), np.nan)
+    pos = {i: k for k, i in enumerate(fam.index)}
+    for sub, ld in split_failures(family_loads, dry):
+        if isinstance(ld, Exception):
+            continue          # no dry equilibrium to start from: the film model decides on its own
+        for i, st in zip(sub.index, _solve_loaded(sub, ld, template, cp, max(tol_K, 1e-3))):
+            if isinstance(st, SteadyState):
+                T_ref[pos[i]], start[pos[i]] = _mean_contact_C(st), _node_T(st, template)
+    out, hist = [None] * B, [[] for _ in range(B)]
+    live = np.arange(B)
+    for k in range(1, _FILM_MAXITER + 1):
+        if live.size == 0:
+            break
+        sub = Family(scenes=tuple(fam.scenes[j] for j in live), index=tuple(fam.index[j] for j in live),
+                     models=fam.models, dry=tuple(fam.dry[j] for j in live))
+        results = {}
+        for part, ld in split_failures(family_loads, sub, T_ref[live]):
+            idx = [pos[i] for i in part.index]
+            res = [ld] * part.B if isinstance(ld, Exception) else _solve_loaded(part, ld, template, cp, tol_K,
+                                                                                start[idx])
+            results.update(zip(idx, res))
+        nxt = []
+        for j in live:
+            st = results[j]
+            if not isinstance(st, SteadyState):
+                out[j] = st
+                continue
+            T_new = _mean_contact_C(st)
+            hist[j].append(dict(iteration=k, T_film_C=float(T_ref[j]), T_contacts_C=T_new, P_W=st.P_W))
+            if abs(T_new - T_ref[j]) <= _FILM_TOL_K:
+                st.models_used["load_distribution"] = (
+                    "film in the contact law (" + ("high-speed, thermobear.loads.highspeed"
+                                                   if fam.models["high_speed"][0] == "yes"
+                                                   else "low-speed, thermobear.loads.film") + ")",
+                    f"films at the mean contact temperature {T_ref[j]:.2f} °C ({k} load updates from "
+                    f"{hist[j][0]['T_film_C']:.2f} °C)")
+                st.history = list(st.history) + [dict(h, step="film") for h in hist[j]]
+                out[j] = st
+                continue
+            T_ref[j], start[j] = T_new, _node_T(st, template)
+            nxt.append(j)
+        live = np.array(nxt, int)
+    for j in live:
+        h = hist[j]
+        out[j] = NoConvergence(f"film load model: the film temperature did not settle within {_FILM_TOL_K} K in "
+                               f"{_FILM_MAXITER} load updates (last {h[-2]['T_contacts_C']:.2f} → "
+                               f"{h[-1]['T_contacts_C']:.2f} °C)", iterations=_FILM_MAXITER,
+                               residual=abs(h[-1]["T_contacts_C"] - h[-1]["T_film_C"]), history=h)
+    return out
+
+
+def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> list:
+    """Coupled steady states of many operating points, solved together.
+
+    Parameters
+    ----------
+    scenes : list of Scene     the operating points (any mix: they are grouped into families that
+                               share bearing, lubricant, network and model choices, each family
+                               solved in batched calls)
+    tol_K : float              Newton tolerance on the node temperatures [K]
+    load : LoadDistribution    optional loads to use instead of the model's (one scene, or a batch
+                               matching a single family)
+    prepared : Prepared        :func:`~thermobear.coupled.sources.prepare` of a family, reused for the
+                               points it serves (the others are prepared here)
+
+    Returns
+    -------
+    list   per scene, its :class:`SteadyState`, or the InputError / SolverError that stopped it
+           (a failing point never stops the others)
+    """
+    scenes = list(scenes)
+    for k, sc in enumerate(scenes):
+        if not isinstance(sc, Scene):
+            raise InputError(f"scenes[{k}]", type(sc).__name__, "a thermobear Scene")
+        if sc.T_C is not None:
+            raise InputError("operation.T_C", sc.T_C, "the scene prescribes its temperature: use solve() "
+                             "or remove operation.T_C to solve the thermal network")
+    out: list = [None] * len(scenes)
+    fams, failed = families(scenes, plan_many(scenes))
+    for i, exc in failed.items():
+        out[i] = exc
+    if load is not None and len(fams) != 1:
+        raise InputError("load", "LoadDistribution", "injected loads need the scenes of one family")
+    with warnings.catch_warnings():
+        # property calls at intermediate iterates may lie beyond a correlation's data: only the answer
+        # counts, and its validity is checked on its own (SteadyState.warnings, limits.point_warnings)
+        warnings.simplefilter("ignore", OutsideValidity)
+        for fam in fams:
+            for i, r in zip(fam.index, _solve_family(fam, tol_K, None if load is None else _batched(load), prepared)):
+                out[i] = r
+    seen: set = set()
+    emit([w for r in out if isinstance(r, SteadyState) for w in r.warnings if not (str(w) in seen or seen.add(str(w)))])
+    return out
+
+
+def steady_state(scene: Scene, *, tol_K: float = 1e-6, load=None, prepared=None) -> SteadyState:
+    """Coupled steady state of a scene: losses(T) ↔ thermal network, to a fixed point.
+
+    See the module docstring for the method.  ``load`` uses the given load distribution instead of
+    the one the scene's models give; ``prepared`` the :func:`~thermobear.coupled.sources.prepare` of
+    its family, reused (many operating points of one machine).
+
+    Raises
+    ------
+    ThermalRunaway, NoConvergence   no stable equilibrium (with the history)
+    InputError                      a scene the models cannot represent
+
+    >>> import thermobear as tb
+    >>> st = steady_state(tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml")))
+    >>> bool(abs(st.energy_balance_W) <= 1e-9 * st.P_W), bool(st.T_C["inner_ring"] > 30.0)
+    (True, True)
+    """
+    if prepared is not None:
+        prepared_for(scene, prepared)                    # refuse one prepared for another family
+    r = steady_states([scene], tol_K=tol_K, load=load, prepared=prepared)[0]
+    if isinstance(r, Exception):
+        raise r
+    return r

@@ -1,0 +1,280 @@
+r"""Heat-up of a scene: the thermal network integrated in time with the losses re-evaluated.
+
+.. math:: C_f \frac{dT_f}{dt} = S\, P(C T_f) - A_{ff}(T) T_f - A_{fb}(T) T_b
+
+with the loss parts P at the coupled temperatures (:mod:`thermobear.coupled.sources`) and the
+network of :mod:`thermobear.thermal`; integrated by :func:`thermobear.thermal.solve_transient`
+(BDF).  A schedule changes the operating point at given times (speed, loads, inlet and ambient
+temperatures, oil flow, lubricant): each segment gets its own loads, contacts and network (a
+step may change boundary temperatures, convection and contact ellipses, not only the losses).
+With the film load model the loads depend on the film temperature: each segment is run in
+pieces, the loads re-solved at the start of each at its mean contact temperature, the pieces sized
+for ≈ 2 K of drift.
+"""
+from __future__ import annotations
+
+import warnings
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from thermobear.coupled.limits import emit, point_warnings
+from thermobear.coupled.pipeline import Family, family_contacts, family_loads, film_temperature_C
+from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepared_for
+from thermobear.coupled.steady import T_LIMIT_K, _batched
+from thermobear.errors import ExtrapolationWarning, InputError, OutsideValidity, ThermalRunaway
+from thermobear.models import plan
+from thermobear.scene import Scene
+from thermobear.thermal import solve_transient
+
+__all__ = ["TransientRun", "transient", "PointModel", "point_model", "heat_sources"]
+
+_C0 = 273.15
+_FILM_DT0_S = 20.0      # first piece of a film-load-model transient [s]
+_FILM_DRIFT_K = 2.0     # film-temperature drift per piece [K] (loads re-solved at each piece's start)
+
+
+@dataclass
+class TransientRun:
+    """Heat-up of a scene.
+
+    Attributes
+    ----------
+    t_s : ndarray            times [s]
+    T_C : dict               node → temperatures [°C] (arrays over t_s)
+    P_W : ndarray            total power loss [W]
+    breakdown_W : dict       loss family → power [W] over t_s
+    models_used : dict       model → (choice, reason) of the first segment; "schedule" lists the choices
+                             that later schedule steps change (e.g. the film load model from a radial step)
+    roles : dict             role → node
+    warnings : list          OutsideValidity warnings of the run
+    completed : bool         False when the run was stopped early (what was integrated is kept)
+    """
+
+    t_s: np.ndarray
+    T_C: dict
+    P_W: np.ndarray
+    breakdown_W: dict
+    models_used: dict
+    roles: dict = field(default_factory=dict)
+    warnings: list = field(default_factory=list)
+    completed: bool = True
+
+
+def _segments(scene: Scene, schedule, t_end_s):
+    """[(t_start, scene)] of a schedule ``[(t_s, overrides), ...]``: times increasing, in [0, t_end)."""
+    steps = list(schedule or [])
+    out = [(0.0, scene)]
+    for k, (t, ch) in enumerate(steps):
+        if not (np.isfinite(t) and 0 <= t < t_end_s):
+            raise InputError(f"schedule[{k}].t_s", t, f"step times must lie in [0, {t_end_s:g}) s")
+        if k > 0 and t <= steps[k - 1][0]:
+            raise InputError(f"schedule[{k}].t_s", t, f"step times must increase (the step before is at "
+                             f"{steps[k - 1][0]:g} s; two steps at one time would be merged)")
+        out.append((float(t), out[-1][1].with_(**ch)))
+    return out
+
+
+@dataclass(frozen=True)
+class PointModel:
+    """Everything the thermal solution of one operating point needs: its family (one point), the
+    network at that point, the loss source and the coupling of losses and nodes."""
+
+    family: Family
+    network: object
+    source: object
+    coupling: Coupling
+
+
+def point_model(scene: Scene, models: dict | None = None, *, T_film_C=None, load=None, template=None,
+                prepared=None) -> PointModel:
+    """Loads, contacts, network and loss source of one operating point.
+
+    ``models`` default :func:`~thermobear.models.choose_models`; ``T_film_C`` [°C] the film
+    temperature of the film load model; ``load`` loads to use instead of the model's; ``template`` a
+    network template instead of the scene's (what-if studies); ``prepared`` the :func:`prepare` of its family."""
+    models = models if models is not None else plan(scene)[0]
+    fam = Family(scenes=(scene,), index=(0,), models=models, dry=(None,))
+    if load is None:
+        load = family_loads(fam, None if T_film_C is None else [T_film_C])
+    cs = family_contacts(fam, _batched(load))
+    if template is not None:
+        cp = Coupling.of(template)
+    else:
+        pre = prepared_for(scene, prepared)
+        template, cp = pre.template, pre.coupling
+    return PointModel(family=fam, network=family_network(fam, template, cs), source=loss_sources(fam, cs), coupling=cp)
+
+
+def heat_sources(pm: PointModel):
+    """``sources(t, T_K)`` of :func:`thermobear.thermal.solve_transient` for a point model: the node
+    sources of the losses at the node temperatures, and (with a leading time axis, the output pass)
+    the report P_W and P_<loss family> [W]."""
+    net, src, cp = pm.network, pm.source, pm.coupling
+    free = ~net.fixed
+
+    def sources(t, T_K):
+        x = T_K[..., free] @ cp.C.T - _C0
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ExtrapolationWarning)
+            parts = src.parts(x)
+            rep = _report(src, x) if np.ndim(t) else {}
+        P = np.zeros(T_K.shape)
+        P[..., free] = parts @ cp.S.T
+        return P, rep
+    return sources
+
+
+def _report(src, x):
+    """P_W and P_<loss family> [W] at coupled temperatures x (..., B, 3) (one evaluation)."""
+    r = src.result(x)
+    shape = x.shape[:-1]
+    return {"P_W": np.broadcast_to(np.asarray(r.P_W, float), shape),
+            **{f"P_{n}": np.broadcast_to(np.asarray(v, float), shape) for n, v in r.breakdown_W.items()}}
+
+
+def _film_of(T_state, roles, scene) -> float:
+    """Mean contact temperature [°C] (ball with each race) of a state node → °C; the scene's default."""
+    if not isinstance(T_state, dict) or roles is None:
+        return float(T_state) if np.ndim(T_state) == 0 and T_state is not None else film_temperature_C(scene)
+    Tb = T_state.get(roles["ball"], np.nan)
+    T = 0.25 * (2.0 * Tb + T_state.get(roles["inner"], np.nan) + T_state.get(roles["outer"], np.nan))
+    return float(T) if np.isfinite(T) else film_temperature_C(scene)
+
+
+def _pieces(scenes, t_end_s):
+    bounds = [t for t, _ in scenes] + [float(t_end_s)]
+    return [(ts, bounds[k + 1], sc, k == len(scenes) - 1) for k, (ts, sc) in enumerate(scenes) if bounds[k + 1] > ts]
+
+
+def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=None, rtol: float = 1e-5,
+              atol: float = 1e-3, load=None, stop=None, prepared=None) -> TransientRun:
+    """Heat-up of a scene on its thermal network, losses re-evaluated as temperatures change.
+
+    Parameters
+    ----------
+    scene : Scene
+    t_end_s : float          end time [s]
+    schedule : list          optional steps ``[(t_s, {"n_rpm": ..., "Fa": ..., ...}), ...]`` applied
+                             from t_s on (:meth:`Scene.with_` overrides); times must increase
+    T0_C : float or dict     start temperature of the free nodes [°C] (default: ambient)
+    t_eval : array_like      output times [s]
+    rtol, atol : float       BDF tolerances (atol in K): the defaults keep the seed 004 heat-up (3600 s)
+                             within 5 mK and the power within 1e-4 of a rtol = 1e-8 solution
+    load : LoadDistribution  loads to use instead of the model's (one operating point: no schedule)
+    stop : callable          ``stop() -> bool``, checked during the integration: True ends the run
+                             early, keeping what was integrated (``completed`` False)
+    prepared : Prepared      :func:`~thermobear.coupled.sources.prepare` of the scene's family, reused
+
+    Returns
+    -------
+    TransientRun
+    """
+    if not (np.isfinite(t_end_s) and t_end_s > 0):
+        raise InputError("t_end_s", t_end_s, "end time must be > 0 [s]")
+    if load is not None and schedule:
+        raise InputError("load", "LoadDistribution", "injected loads hold one operating point: no schedule")
+    if T0_C is not None and not isinstance(T0_C, dict):
+        if not np.isfinite(T0_C):
+            raise InputError("T0_C", T0_C, "start temperature must be finite [°C]")
+        scene.with_(T_ambient_C=float(T0_C))                    # the accepted range of a scene temperature
+    if t_eval is not None:
+        t_eval = np.asarray(t_eval, float)
+        if t_eval.ndim != 1 or np.any(~np.isfinite(t_eval)) or np.any((t_eval < 0) | (t_eval > t_end_s)) \
+                or np.any(np.diff(t_eval) <= 0):
+            raise InputError("t_eval", t_eval, f"output times must increase within [0, {t_end_s}] s")
+    pre = prepared_for(scene, prepared)
+    return _run(_pieces(_segments(scene, schedule, t_end_s), t_end_s), scene, T0_C, t_eval, rtol, atol, load, stop, pre)
+
+
+def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre) -> TransientRun:
+    T_state = scene.T_ambient_C if T0_C is None else T0_C
+    out_t, out_T, out_rep, first, seg_changes, seen = [], {}, {}, None, {}, set()
+    film_dt, completed, i = None, True, -1
+    with warnings.catch_warnings():
+        # property calls at the integrator's trial states may lie beyond a correlation's data; the
+        # validity of the states reported is checked once, on the series (limits.point_warnings)
+        warnings.simplefilter("ignore", OutsideValidity)
+        while i + 1 < len(pieces):
+            i += 1
+            ts, te, sc, last_seg = pieces[i]
+            models = plan(sc)[0]
+            film = load is None and models["load_model"][0] == "film"
+            T_film = None
+            if film:
+                T_film = _film_of(T_state, first[1] if first else None, sc)
+                film_dt = min(_FILM_DT0_S, te - ts) if film_dt is None else film_dt
+                if ts + film_dt < te - 1e-9 * te:
+                    pieces.insert(i + 1, (ts + film_dt, te, sc, last_seg))
+                    te, last_seg = ts + film_dt, False
+            pm = point_model(sc, models, T_film_C=T_film, load=load, prepared=pre if pre.serves(sc) else None)
+            net, cp = pm.network, pm.coupling
+            first = first or (models, cp.roles, list(net.nodes))
+            changed = {k: v for k, v in models.items() if first[0].get(k, (None,))[0] != v[0]}
+            if changed and id(sc) not in seen:
+                seen.add(id(sc))
+                seg_changes[ts] = changed
+            if list(net.nodes) != first[2]:
+                raise InputError("schedule", ts, "a step may not change the thermal network's nodes")
+            seg = None
+            if t_eval is not None:   # points in [ts, te) belong to this segment (right-continuous at steps)
+                want = t_eval[(t_eval >= ts) & ((t_eval < te) | (last_seg & (t_eval <= te)))]
+                seg = np.union1d(want - ts, [te - ts])
+            tr = solve_transient(net, heat_sources(pm), te - ts, T0_C=_T0(T_state, net), t_eval=seg,
+                                 rtol=rtol, atol=atol, stop=stop)
+            t_abs = np.asarray(tr.t) + ts
+            keep = np.ones(t_abs.size, bool) if t_eval is None else np.isin(np.round(t_abs, 9), np.round(t_eval, 9))
+            if not last_seg and tr.completed:
+                keep &= t_abs < te                    # the step's instant is reported by the next segment
+            out_t.append(t_abs[keep])
+            for n, v in tr.T_C.items():
+                out_T.setdefault(n, []).append(np.asarray(v)[keep])
+            for n, v in tr.report.items():
+                out_rep.setdefault(n, []).append(np.asarray(v, float)[keep])
+            if tr.t.size:
+                T_state = {n: float(np.asarray(v)[-1]) for n, v in tr.T_C.items() if n in net.free_nodes}
+            if not tr.completed:
+                completed = False
+                break
+            if film:       # next piece: as long as gives ≈ _FILM_DRIFT_K of film-temperature drift (×½ … ×4)
+                drift = abs(_film_of(T_state, cp.roles, sc) - T_film)
+                film_dt = (te - ts) * float(np.clip(_FILM_DRIFT_K / max(drift, 1e-9), 0.5, 4.0))
+            _check_limit(T_state, te)
+    got = []
+    if out_t:
+        ro, cat = first[1], np.concatenate
+        Tb = cat(out_T[ro["ball"]])
+        x = [0.5 * (Tb + cat(out_T[ro["inner"]])), 0.5 * (Tb + cat(out_T[ro["outer"]])), cat(out_T[ro["oil"]])]
+        for _, _, sc, _ in pieces[:i + 1]:
+            got += [w for w in point_warnings(sc, None, np.concatenate(x)) if str(w) not in map(str, got)]
+    emit(got)
+    return _assemble(out_t, out_T, out_rep, first, seg_changes, got, completed)
+
+
+def _T0(T_state, net):
+    """Start temperatures of a segment: a number, or node → °C restricted to the free nodes."""
+    if isinstance(T_state, dict):
+        return {n: v for n, v in T_state.items() if n in net.free_nodes}
+    return T_state
+
+
+def _check_limit(T_state: dict, te):
+    hot = {n: v for n, v in T_state.items() if v + _C0 > T_LIMIT_K}
+    if hot:
+        node = max(hot, key=hot.get)
+        raise ThermalRunaway(f"the heat-up passes the lubricant's limit {T_LIMIT_K - _C0:g} °C ({node} at "
+                             f"{hot[node]:.4g} °C by t = {te:g} s): no equilibrium the bearing could run at",
+                             iterations=0, last=T_state)
+
+
+def _assemble(out_t, out_T, out_rep, first, seg_changes, got, completed) -> TransientRun:
+    cat = lambda parts: np.concatenate(parts) if parts else np.zeros(0)  # noqa: E731
+    rep = {n: cat(v) for n, v in out_rep.items()}
+    used = dict(first[0])
+    if seg_changes:
+        used["schedule"] = ("models change with the schedule", "; ".join(
+            f"from t = {t:g} s: " + ", ".join(f"{k} {v[0]} ({v[1]})" for k, v in ch.items())
+            for t, ch in sorted(seg_changes.items())))
+    return TransientRun(t_s=cat(out_t), T_C={n: cat(v) for n, v in out_T.items()}, P_W=rep.get("P_W", np.zeros(0)),
+                        breakdown_W={n[2:]: v for n, v in rep.items() if n.startswith("P_") and n != "P_W"},
+                        models_used=used, roles=first[1], warnings=list(got), completed=completed)

@@ -1,0 +1,10 @@
+"""Load ratings and rating life of ball bearings.
+
+* :mod:`thermobear.rating.iso76`    — static load rating C0, static equivalent load P0, s0,
+  contact pressure against the 4 200 MPa reference (ISO 76:2006);
+* :mod:`thermobear.rating.iso281`   — dynamic load rating C, equivalent load P, L10, κ, e_C, C_u,
+  a_ISO, L10m (ISO 281:2007);
+* :mod:`thermobear.rating.iso16281` — reference rating life L10r from the ball loads (ISO/TS 16281:2008);
+* :mod:`thermobear.rating.life`     — :func:`rating_life`, all of it for one bearing and load case.
+"""
+from thermobear.rating.life import RatingLife, rating_life, load_ratings, equivalent_loads  # noqa: F401
