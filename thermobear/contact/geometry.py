@@ -26,6 +26,7 @@ import numpy as np
 
 from thermobear.files import data_dir, read_toml
 from thermobear.errors import InputError
+from thermobear.schema import Field, check_table
 from thermobear.validity import check as check_limit
 from thermobear.contact.hertz import contact_stiffness, series_stiffness
 from thermobear.contact.materials import Material, material, reduced_modulus
@@ -292,9 +293,30 @@ class BallBearing:
 # ---- catalog ----------------------------------------------------------------
 _MM_KEYS = {"D_mm": "D", "dm_mm": "dm", "Pd_mm": "Pd", "bore_mm": "bore",
             "outer_diameter_mm": "outer_diameter", "width_mm": "width"}
-_KNOWN_KEYS = set(_MM_KEYS) | {"kind", "Z", "fi", "fo", "alpha0_deg", "ball_material", "ring_material", "series",
-                               "C0_kN", "C_kN", "estimated", "source", "description", "name", "clearance_group",
-                               "aliases"}
+#: The keys of a bearing table (catalogue entries, inline scene tables), with their kinds and units;
+#: the physical limits (osculation, balls that fit, contact angle) are checked by BallBearing.
+FIELDS = {
+    "D_mm": Field.number("mm", 0.0, 1000.0, lo_open=True, doc="ball diameter", required=True),
+    "dm_mm": Field.number("mm", 0.0, 5000.0, lo_open=True, doc="pitch diameter", required=True),
+    "Z": Field.integer("-", 1, 200, doc="number of balls", required=True),
+    "fi": Field.number("-", doc="inner osculation r/D", required=True),
+    "fo": Field.number("-", doc="outer osculation r/D", required=True),
+    "Pd_mm": Field.number("mm", -10.0, 10.0, doc="diametral clearance (negative: preload)"),
+    "alpha0_deg": Field.number("deg", 0.0, 90.0, doc="free contact angle"),
+    "kind": Field.choice(*KINDS, doc="bearing type"),
+    "bore_mm": Field.number("mm", 0.0, 5000.0, lo_open=True, doc="bore diameter"),
+    "outer_diameter_mm": Field.number("mm", 0.0, 6000.0, lo_open=True, doc="outer diameter"),
+    "width_mm": Field.number("mm", 0.0, 1000.0, lo_open=True, doc="width (height of a thrust bearing)"),
+    "ball_material": Field.text("material name (materials/solids)"),
+    "ring_material": Field.text("material name (materials/solids)"),
+    "series": Field.text("series (e.g. 62, 72B)"),
+    "C0_kN": Field.number("kN", 0.0, None, lo_open=True, doc="basic static load rating"),
+    "C_kN": Field.number("kN", 0.0, None, lo_open=True, doc="basic dynamic load rating"),
+    "clearance_group": Field.text("ISO 5753-1 radial clearance group (CN, C3, C4, ...)"),
+    "estimated": Field.names("keys whose values are estimates"),
+    "aliases": Field.names("other designations"),
+    "name": Field.text(), "description": Field.text(), "source": Field.text(),
+}
 
 
 def canonical_designation(name: str) -> str:
@@ -440,44 +462,19 @@ def bearing_from_dict(d: dict, name: str = "custom", where: str = "bearing") -> 
     as the mid value of that ISO 5753-1 group; an explicit ``Pd_mm`` wins, and the group is kept only
     if Pd lies in its range.  Unknown keys raise InputError naming them; so do missing required keys.
     """
-    for k in d:
-        if k not in _KNOWN_KEYS:
-            raise InputError(f"{where}.{k}", d[k], f"unknown key; accepted: {', '.join(sorted(_KNOWN_KEYS))}")
-    for req in ("D_mm", "dm_mm", "Z", "fi", "fo"):
-        if req not in d:
-            raise InputError(f"{where}.{req}", None, "missing required field")
-
-    def num(k):
-        v = d[k]
-        if isinstance(v, bool) or not isinstance(v, (int, float)) or not np.isfinite(v):
-            raise InputError(f"{where}.{k}", v, "must be a finite number")
-        return float(v)
-
-    def text(k, default=None):
-        v = d.get(k, default)
-        if v is not None and not isinstance(v, str):
-            raise InputError(f"{where}.{k}", v, "must be a text string")
-        return v
-
-    kw = {_MM_KEYS[k]: num(k) * 1e-3 for k in d if k in _MM_KEYS}
-    if "alpha0_deg" in d:
-        kw["alpha0"] = float(np.deg2rad(num("alpha0_deg")))
+    t = check_table(d, FIELDS, where)
+    kw = {_MM_KEYS[k]: t[k] * 1e-3 for k in t if k in _MM_KEYS}
+    if "alpha0_deg" in t:
+        kw["alpha0"] = float(np.deg2rad(t["alpha0_deg"]))
     for mk in ("ball_material", "ring_material"):
-        if mk in d:
-            kw[mk] = material(text(mk))
-    Z = d["Z"]
-    if isinstance(Z, bool) or not isinstance(Z, (int, float)):
-        raise InputError(f"{where}.Z", Z, "number of balls must be an integer >= 3")
-    est = d.get("estimated", ())
-    if not isinstance(est, (list, tuple)) or not all(isinstance(e, str) for e in est):
-        raise InputError(f"{where}.estimated", est, "must be a list of field names")
-    kind = text("kind", "deep_groove")
-    group = text("clearance_group")
-    if group is not None:
-        kw["clearance_group"] = _clearance(kw, group, kind, where)
-    return BallBearing(Z=Z, fi=num("fi"), fo=num("fo"), kind=kind, name=text("name", name), series=text("series"),
-                       C0=num("C0_kN") * 1e3 if "C0_kN" in d else None,
-                       C=num("C_kN") * 1e3 if "C_kN" in d else None, estimated=tuple(est), **kw)
+        if mk in t:
+            kw[mk] = material(t[mk])
+    kind = t.get("kind", "deep_groove")
+    if t.get("clearance_group") is not None:
+        kw["clearance_group"] = _clearance(kw, t["clearance_group"], kind, where)
+    return BallBearing(Z=t["Z"], fi=t["fi"], fo=t["fo"], kind=kind, name=t.get("name", name), series=t.get("series"),
+                       C0=t["C0_kN"] * 1e3 if "C0_kN" in t else None, C=t["C_kN"] * 1e3 if "C_kN" in t else None,
+                       estimated=tuple(t.get("estimated", ())), **kw)
 
 
 def _clearance(kw: dict, group: str, kind: str, where: str) -> str | None:

@@ -86,9 +86,10 @@ def _outside_warn(name, v) -> np.ndarray:
     return out
 
 
-def family_warnings(scenes, losses, x_C) -> list:
+def family_warnings(scenes, losses, x_C, answered=None) -> list:
     """:func:`point_warnings` of the B points of a family (batched ``losses``, ``x_C`` (B, 3)): the
-    ranges checked for all points at once, the messages made only for the points outside."""
+    ranges checked for all points at once, the messages made only for the points outside (and
+    ``answered``: a mask of the points that have an answer)."""
     B = len(scenes)
     n_dm = np.array([s.n_rpm * s.bearing.dm * 1e3 for s in scenes])
     flag = _outside_warn("n_dm", n_dm[:, None]) | _outside_warn("lubricant_T", x_C)
@@ -99,6 +100,8 @@ def family_warnings(scenes, losses, x_C) -> list:
     if getattr(losses, "skf", None) is not None:
         flag |= _outside_warn("skf_phi_bl", np.reshape(np.asarray(losses.skf.phi_bl, float), (B, -1)))
     out = [[] for _ in range(B)]
+    if answered is not None:
+        flag &= np.asarray(answered, bool)
     for b in np.flatnonzero(flag):
         out[b] = point_warnings(scenes[b], take(losses, b, B), x_C[b])
     return out

@@ -243,7 +243,7 @@ def _finish(fam: Family, net, src, cp: Coupling, template, nw: _Newton, tol_K) -
     gap = np.abs(st.T_K[:, free] @ cp.C.T - nw.x).max(axis=1)
     bal = np.atleast_1d(st.balance_W)
     flows = {k: np.atleast_1d(v) for k, v in st.flows_W.items()}
-    warned = family_warnings(fam.scenes, r, x_C)
+    warned = family_warnings(fam.scenes, r, x_C, nw.done & (nw.x.max(axis=1) <= T_LIMIT_K))
     out = []
     for b in range(fam.B):
         if not nw.done[b]:
