@@ -171,6 +171,8 @@ def newton(problem, z, opt: NewtonOptions, state=None) -> NewtonResult:
         if floored:
             todo &= ~floor
         n_todo = np.count_nonzero(todo)
+        if n_todo == 0 and act.size == nb:    # every case stopped before any retired: the arrays are the batch
+            break
         if n_todo < todo.size:                # retire the cases that have stopped
             if act.size == nb:                # the first retirement: the batch results are the current arrays
                 z_all, st_all = zz.copy(), st

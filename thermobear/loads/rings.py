@@ -92,12 +92,17 @@ def check_stiffness(stiffness):
         raise InputError("stiffness", stiffness, f"must be one of {', '.join(STIFFNESS_MODES)}")
 
 
+def _bad(v):
+    """Any load negative or not finite (NaN fails both comparisons)."""
+    return v.size > 0 and not (v.min() >= 0.0 and v.max() < np.inf)
+
+
 def _check_loads(brg, Fa, Fr, M):
     for nm, v in (("Fa", Fa), ("Fr", Fr)):
-        if np.any(~np.isfinite(v)) or np.any(v < 0):
+        if _bad(v):
             raise InputError(nm, v, "load must be finite and >= 0 [N] (Fa pushes the inner ring along +x; "
                              "Fr acts at psi = 0)")
-    if M is not None and np.any(~np.isfinite(M)):
+    if M is not None and M.size and not np.isfinite(M).all():
         raise InputError("M", M, "moment must be finite [N m]")
     if brg.kind == "thrust" and np.any(Fr > 0):
         raise NoEquilibrium(
