@@ -7,6 +7,8 @@ iteration count.  Nothing returns NaN or a silently unconverged result.
 """
 from __future__ import annotations
 
+import numpy as np
+
 __all__ = [
     "ThermobearError", "InputError", "SolverError", "NoEquilibrium",
     "NoConvergence", "ThermalRunaway", "OutsideValidity", "ExtrapolationWarning",
@@ -104,7 +106,6 @@ class ExtrapolationWarning(OutsideValidity):
 
 def _short(value) -> str:
     try:
-        import numpy as np
         arr = np.asarray(value)
         if arr.ndim and arr.size > 4:
             return f"array(min={arr.min():.6g}, max={arr.max():.6g})"

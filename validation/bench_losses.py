@@ -141,7 +141,7 @@ def main(argv=None):
         now, ref = measure_against(a.against, Path(__file__).resolve().parent.parent, a.rounds)
     else:
         now, ref = measure(), {}
-    print(f"local loss model, seed-004 scene (7210, 15 balls); µs per call (batches: µs per point)"
+    print("local loss model, seed-004 scene (7210, 15 balls); µs per call (batches: µs per point)"
           + (f"; reference: {a.against}" if a.against else ""))
     print(f"{'case':24s} {'this tree':>12s} {'target':>9s}" + (f" {a.against:>12s} {'ratio':>7s}" if ref else ""))
     for k in dict.fromkeys(list(now) + list(ref)):

@@ -54,7 +54,7 @@ from _common import median_time
 
 import thermobear as tb
 from thermobear.errors import ExtrapolationWarning, InputError, SolverError
-from thermobear.losses.skf import MU_EHL, skf_constants, skf_friction
+from thermobear.losses.skf import MU_EHL, skf_friction
 from thermobear.loads import LoadDistribution, axial_contact_angle, load_distribution
 from thermobear.scene.scene import Scene, scene_from_dict
 from thermobear.coupled import scene_losses, steady_state, transient

@@ -147,7 +147,7 @@ def main(argv=()):
         x = by.get((lv, fam))
         return x.t_batch_s if x and x.errors else float("nan")
     s1 = [lv for lv in ("L1", "L2", "L3", "L4") if (lv, "seed001 torque") in by]
-    w(f"* Seed 001 (3-ball rig, mW losses): " + ", ".join(f"{lv} {rms(lv, 'seed001 torque')}" for lv in s1)
+    w("* Seed 001 (3-ball rig, mW losses): " + ", ".join(f"{lv} {rms(lv, 'seed001 torque')}" for lv in s1)
       + f" at {t('L2', 'seed001 torque') * 1e3:.2g} ms (L2) to {t('L3', 'seed001 torque') * 1e3:.2g} ms (L3) per "
       "point: the symmetric thrust load needs no Jones–Harris and the rig no thermal network, so the "
       "higher levels cost more for the same number.  The model is low at low speed (see "

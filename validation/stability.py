@@ -380,7 +380,7 @@ def run(png=HERE / "report" / "stability_map.png", processes=None) -> str:
       f"those cells have Φ_bl > 0.5 (ν·n ≤ {np.max((N * NU)[ill]):.3g} rpm·mm²/s), where eq A.13 divides by "
       "1 − Φ_bl → 0: boundary friction dominates, the backed-out μ_EHL is ill-conditioned and its sign "
       "carries no information.")
-    w(f"* At high ν·n (Φ_bl ≤ 0.5): " + (f"negative from ν·n ≥ {np.min((N * NU)[hi]):.3g} rpm·mm²/s." if hi.any()
+    w("* At high ν·n (Φ_bl ≤ 0.5): " + (f"negative from ν·n ≥ {np.min((N * NU)[hi]):.3g} rpm·mm²/s." if hi.any()
       else "μ_EHL stays positive (the catalogue M_rr, 27 % above the calibrated one, does not exceed the total) — "
       "seed 002's statement (negative μ_EHD at high speed with catalogue constants) is NOT reproduced "
       "with a torque that follows the calibrated model; it needs a measured torque that rises more slowly "

@@ -24,6 +24,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+from thermobear.lubrication.film import moes_map_boundaries  # noqa: E402
+
 __all__ = ["plot_result", "plot_ball_loads", "plot_regime_map", "plot_loss_breakdown", "plot_losses_vs_speed",
            "plot_sweep", "plot_comparison",
            "plot_heatup", "plot_vs_speed", "plot_spin_down", "REGIME_COLORS"]
@@ -80,7 +82,6 @@ def plot_regime_map(losses, brg, path, title: str = "") -> str:
     The boundaries depend on D = Rx/Ry; they are drawn for the mean D of the
     plotted contacts (the spread of D between contacts is printed in the legend).
     """
-    from thermobear.lubrication.film import moes_map_boundaries
     fig, ax = plt.subplots(figsize=(7, 5.5))
     Ms, Ls, Ds = [], [], []
     for side, mk in (("inner", "o"), ("outer", "s")):

@@ -40,6 +40,23 @@ EXIT_SOLVER = 3
 EXIT_INTERRUPTED = 130
 
 
+def _plot_dir(path):
+    """The --plot folder, checked (creatable) with the plot module importable, before computing."""
+    out = check_out_dir(path)
+    if out is not None:
+        _plots()
+    return out
+
+
+def _plots():
+    """The plot module (matplotlib is the optional "plot" extra: a run without --plot never imports it)."""
+    try:
+        from thermobear.app import plots
+    except ImportError as exc:
+        raise InputError("--plot", None, f"plots need matplotlib: pip install 'thermobear[plot]' ({exc})") from None
+    return plots
+
+
 # --------------------------------------------------------------------------- inputs
 def _value(text: str):
     """A ``--set`` value read as TOML (``6500``, ``true``, ``"skf"``); a bare word stays text."""
@@ -118,15 +135,15 @@ def parse_values(text, field, *, allow_str=False):
 
 # --------------------------------------------------------------------------- run / loads / list
 def cmd_run(args):
-    out = check_out_dir(args.plot)
+    out = _plot_dir(args.plot)
     res = solve(load_scene_with(args.scene, args.set))
     if args.json:
         print_json(res.as_dict())
     else:
         print(res.summary())
     if out is not None:
-        from thermobear.app.plots import plot_result       # matplotlib: the optional "plot" extra
-        wrote(plot_result(res, out))
+        plots = _plots()
+        wrote(plots.plot_result(res, out))
     return 0
 
 
@@ -229,7 +246,7 @@ def cmd_transient(args):
         raise InputError("--points", args.points, "number of output times must lie in 2..100000")
     T0 = _T0(args.T0_C)
     out_csv = check_out_file(args.csv, "--csv")
-    out_dir = check_out_dir(args.plot)
+    out_dir = _plot_dir(args.plot)
     scene = load_scene_with(args.scene, args.set)
     if scene.T_C is not None:
         raise InputError("operation.T_C", scene.T_C, "a transient solves the thermal network: remove the prescribed "
@@ -276,10 +293,10 @@ def cmd_transient(args):
         for k, v in run.breakdown_W.items():
             print(f"  {k:12s} {float(v[-1]):10.4f} W")
     if out_dir is not None:
-        from thermobear.app.plots import plot_heatup       # matplotlib: the optional "plot" extra
+        plots = _plots()
         out_dir.mkdir(parents=True, exist_ok=True)
         free = {n: run.T_C[n] for n in nodes if np.ptp(run.T_C[n]) > 0}
-        wrote([plot_heatup(run.t_s, free, out_dir / "heatup.png", title=f"Heat-up — {scene.name}")])
+        wrote([plots.plot_heatup(run.t_s, free, out_dir / "heatup.png", title=f"Heat-up — {scene.name}")])
     return 0
 
 
@@ -321,7 +338,7 @@ def _grid(args) -> dict:
 
 def cmd_sweep(args):
     out_csv, out_jsonl = check_out_file(args.csv, "--csv"), check_out_file(args.jsonl, "--jsonl")
-    out_dir = check_out_dir(args.plot)
+    out_dir = _plot_dir(args.plot)
     if args.processes is not None and args.processes < 1:
         raise InputError("--processes", args.processes, "must be >= 1")
     scene = load_scene_with(args.scene, args.set)
@@ -351,8 +368,8 @@ def cmd_sweep(args):
     else:
         print(f"{len(rows)} operating points ({len(failed)} failed), columns: {', '.join(writer.header)}")
     if out_dir is not None and "n_rpm" in grid:
-        from thermobear.app.plots import plot_sweep        # matplotlib: the optional "plot" extra
-        wrote(plot_sweep(rows, grid, out_dir, scene.name))
+        plots = _plots()
+        wrote(plots.plot_sweep(rows, grid, out_dir, scene.name))
     if failed and not args.allow_failures:
         print(f"error: {len(failed)} of {len(rows)} points failed ({', '.join(sorted({r['status'] for r in failed}))}); "
               "their rows say why (--allow-failures exits 0)", file=sys.stderr)
@@ -372,7 +389,7 @@ def _rig_inputs(args):
 
 
 def cmd_compare(args):
-    out_dir = check_out_dir(args.plot)
+    out_dir = _plot_dir(args.plot)
     out_csv = check_out_file(args.csv, "--csv")
     T0 = _T0(args.T0_C)
     scene, log, mapping = _rig_inputs(args)
@@ -386,13 +403,13 @@ def cmd_compare(args):
         wrote([out_csv])
     print_json(comp.as_dict()) if args.json else print(comp.summary())
     if out_dir is not None:
-        from thermobear.app.plots import plot_comparison   # matplotlib: the optional "plot" extra
-        wrote(plot_comparison(comp, out_dir, f"{Path(args.log).name} vs {scene.name}"))
+        plots = _plots()
+        wrote(plots.plot_comparison(comp, out_dir, f"{Path(args.log).name} vs {scene.name}"))
     return 0
 
 
 def cmd_calibrate(args):
-    out_dir = check_out_dir(args.plot)
+    out_dir = _plot_dir(args.plot)
     if args.max_nfev < 1:
         raise InputError("--max-nfev", args.max_nfev, "must be >= 1")
     T0 = _T0(args.T0_C)
@@ -400,14 +417,14 @@ def cmd_calibrate(args):
     cal = calibrate(scene, log, args.param, mapping, T0_C=T0, max_nfev=args.max_nfev)
     print_json(cal.as_dict()) if args.json else print(cal.summary())
     if out_dir is not None and cal.comparison is not None:
-        from thermobear.app.plots import plot_comparison   # matplotlib: the optional "plot" extra
-        wrote(plot_comparison(cal.comparison, out_dir, f"{Path(args.log).name}, calibrated", prefix="calibrate"))
+        plots = _plots()
+        wrote(plots.plot_comparison(cal.comparison, out_dir, f"{Path(args.log).name}, calibrated", prefix="calibrate"))
     return 0
 
 
 # --------------------------------------------------------------------------- spin-down
 def cmd_spin_down(args):
-    out_dir = check_out_dir(args.plot)
+    out_dir = _plot_dir(args.plot)
     scene = load_scene_with(args.scene, args.set)
     if scene.T_C is None:
         raise InputError("operation.T_C", None, "the spin-down rig model needs a prescribed temperature (seed 001: 26.5 °C)")
@@ -438,15 +455,15 @@ def cmd_spin_down(args):
     else:
         _print_spin_down(scene, J, pub, log is not None)
     if out_dir is not None:
-        from thermobear.app.plots import plot_spin_down, plot_vs_speed   # the optional "plot" extra
+        plots = _plots()
         out_dir.mkdir(parents=True, exist_ok=True)
-        paths = [plot_spin_down([(f"{r['n0_rpm']:g} rpm", r["_sd"].t, r["_sd"].omega) for r in runs],
+        paths = [plots.plot_spin_down([(f"{r['n0_rpm']:g} rpm", r["_sd"].t, r["_sd"].omega) for r in runs],
                                 out_dir / "spin_down.png", f"Spin-down — {scene.name}, J = {J:g} kg m²")]
         n0 = np.array([r["n0_rpm"] for r in runs])
         sim = {"torque at the initial speed": np.array([r["T0_Nm"] for r in runs])}
         meas = ({"torque at the initial speed": np.array([r.get("T_log_Nm") or np.nan for r in runs])}
                 if log is not None else None)
-        paths.append(plot_vs_speed(n0, sim, out_dir / "spin_down_torque.png", meas, "friction torque [N mm]",
+        paths.append(plots.plot_vs_speed(n0, sim, out_dir / "spin_down_torque.png", meas, "friction torque [N mm]",
                                    f"Torque vs speed — {scene.name}", 1e3))
         wrote(paths)
     return 0

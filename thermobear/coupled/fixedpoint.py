@@ -3,7 +3,8 @@ r"""Thermo-mechanical coupling: the fixed point T = G(T) and thermal runaway.
 The losses depend on the temperatures of balls, rings and oil (viscosity), and
 the thermal network turns the losses into temperatures.  The steady operating
 point is the fixed point of the update map G: coupled temperatures → losses →
-network → new temperatures (PHYSICS.md §8 "Solving").
+network → new temperatures (the coupling of Pouly et al. 2010, Tribology Transactions 53:957,
+and of seed 004 §4.5).
 
 * :func:`solve_coupled` solves T = G(T) on a small vector with Anderson
   mixing (Walker & Ni 2011, type II; a multi-secant method), step clipping and

@@ -57,7 +57,7 @@ def _constants(brg):
     Sg[:Z, 0], Sg[2 * Z:3 * Z, 1], Sg[:Z, 2] = 1.0, c, c
     # per-ball rows (L_aa, L_ar, L_ra, L_rr, L_ta, L_tr, b_a, b_r, m0..m5 unused) -> S entries:
     # (L W_t)[m, k] with L the ring rows (a, r, t = tilt) of d r_g/dp and W_t = [[1, 0, c], [0, c, 0]]
-    one, c2 = np.ones(Z), c * c
+    one, _c2 = np.ones(Z), c * c
     M = np.zeros((8, Z, 12))
     for row, col, w in ((0, 0, one), (1, 1, c), (0, 2, c),            # row a of r_g: d/dg0, dg1, dg2
                         (2, 3, one), (3, 4, c), (2, 5, c),            # row r

@@ -202,7 +202,7 @@ def relax(pb, z, st, todo):
     gyroscopic friction at the iterate, frozen) is placed again by :func:`place` with the rings
     held; the case keeps the new positions if its residual falls.  Near the solution no ball
     qualifies, so the quadratic convergence of Newton is untouched.  Returns (z, st)."""
-    nb, Z, A = z.shape[0], pb.Z, pb.A
+    _nb, Z, A = z.shape[0], pb.Z, pb.A
     s = pb.scale[:, None]
     ar = np.abs(st.res[:, 3:])
     rb = np.maximum(ar[:, :Z], ar[:, Z:])

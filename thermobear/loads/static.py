@@ -421,7 +421,7 @@ def load_distribution_static(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, *, stiffn
     check_stiffness(stiffness)
     shape, Fa_b, Fr_b, M_b, Mv = batch_loads(brg, Fa, Fr, M)
     tilt_free = M_b is not None
-    A, R, Z = brg.A, brg.R_inner_locus, brg.Z
+    A, R, _Z = brg.A, brg.R_inner_locus, brg.Z
     y0 = None if start is None else _start_unknowns(brg, start, Fa_b.size)
     r, pb = _solve(brg, Fa_b, Fr_b, Mv, tilt_free, stiffness, tol, maxiter, y0)
     y, norm, its = r.z, r.norm, r.iterations
