@@ -13,6 +13,8 @@ from thermobear.errors import InputError, NoConvergence
 from thermobear.thermal import (prepare_network, load_network, network_names, solve_steady, solve_transient,
                                 split_losses, evaluate)
 from thermobear.thermal import elements as el
+from thermobear.contact.kinematics import ball_kinematics
+from thermobear.losses.drag import oil_volume_fraction_parker
 from thermobear.contact.materials import material
 
 C0 = 273.15
@@ -82,9 +84,16 @@ class StubOil:
 
 
 def oil_jet_context(n_rpm=6500.0, T_amb=25.0, T_oil=30.0, flow_L_h=10.0, **extra):
-    ctx = {"bearing": StubBearing(), "oil": StubOil(),
-           "scene": {"n_rpm": n_rpm, "T_ambient_C": T_amb, "T_oil_in_C": T_oil,
-                     "oil_flow_m3_s": flow_L_h / 3.6e6}}
+    """The context the coupled solver gives the oil-jet network: scene values and what the physics computed
+    for the operating point (``op``: kinematics at the nominal angle, Parker's oil fraction)."""
+    b = StubBearing()
+    w = n_rpm * math.pi / 30.0
+    k = ball_kinematics(w, 0.0, b.alpha0, b.alpha0, b.D, b.dm)
+    ctx = {"bearing": b, "oil": StubOil(),
+           "scene": {"n_rpm": n_rpm, "T_ambient_C": T_amb, "T_oil_in_C": T_oil, "oil_flow_m3_s": flow_L_h / 3.6e6},
+           "op": {"omega_rad_s": w, "omega_inner_rad_s": w, "omega_outer_rad_s": 0.0, "omega_cage_rad_s": float(k.omega_c),
+                  "omega_ball_rad_s": abs(float(k.omega_R)),
+                  "oil_fraction": float(oil_volume_fraction_parker(flow_L_h / 60.0 * 1e3, n_rpm, b.dm * 1e3))}}
     ctx.update(extra)
     return ctx
 
@@ -458,15 +467,16 @@ def test_a_template_at_many_operating_points_equals_each_point_alone():
     ctxs = [oil_jet_context(), oil_jet_context(n_rpm=3200.0, T_oil=50.0), oil_jet_context(flow_L_h=15.0)]
     template = prepare_network(spec, {"bearing": ctxs[0]["bearing"]})
     scene = {k: np.array([c["scene"][k] for c in ctxs]) for k in ctxs[0]["scene"]}
-    many = template.at({**ctxs[0], "scene": scene})
+    op = {k: np.array([c["op"][k] for c in ctxs]) for k in ctxs[0]["op"]}
+    many = template.at({**ctxs[0], "scene": scene, "op": op})
     assert many.B == 3
     for b, ctx in enumerate(ctxs):
         one = load_network(spec, ctx)
         T = one.initial_T_K() + 7.0
         np.testing.assert_allclose(many.conductances(np.repeat(T, 3, axis=0))[b], one.conductances(T)[0], rtol=1e-14)
     bad = dict(scene, oil_flow_m3_s=np.array([1e-6, -1e-6, 1e-6]))
-    with pytest.raises(InputError, match="oil_fraction|oil_stream"):
-        template.at({**ctxs[0], "scene": bad})
+    with pytest.raises(InputError, match=r"elements\[oil_stream\]\.Q_m3_s .* must be >= 0"):
+        template.at({**ctxs[0], "scene": bad, "op": op})
 
 def test_heat_balance_jacobian_matches_finite_differences():
     """∂(A(T) T)/∂T of the network (the Newton Jacobian's thermal part) against central differences
@@ -474,7 +484,7 @@ def test_heat_balance_jacobian_matches_finite_differences():
     spec = read_toml(str(data_dir("networks") / "oil_jet_ball_bearing.toml"))
     ctx = oil_jet_context()
     net = prepare_network(spec, {"bearing": ctx["bearing"]}).at({**ctx, "scene": {
-        k: np.array([v, v]) for k, v in ctx["scene"].items()}})
+        k: np.array([v, v]) for k, v in ctx["scene"].items()}, "op": {k: np.array([v, v]) for k, v in ctx["op"].items()}})
     T = net.initial_T_K() + np.where(net.fixed, 0.0, np.linspace(5.0, 40.0, len(net.nodes)))[None] * np.array([[1.0], [1.5]])
 
     def flux(T):                                   # A(T) T: heat leaving each node [W]

@@ -159,9 +159,12 @@ def network_template(scene: Scene, fixed_placeholders: bool = False) -> NetworkT
 def network_context(fam: Family, contacts: ContactSet | None = None) -> dict:
     """Context of the network at a family's B operating points (arrays (B,), contacts (B, Z)).
 
-    ``op`` holds what the physics computed for each point: the rotating-ring speed, the cage speed
-    and the ball spin speed (kinematics of the contacts), and the oil volume fraction of the
-    oil–air mixture (Parker 1984, :func:`thermobear.losses.drag.oil_volume_fraction_parker`)."""
+    ``op`` holds what the physics computed for each point [rad/s]: the ring speeds (``omega_rad_s``
+    the rotating one, ``omega_inner_rad_s``, ``omega_outer_rad_s``), the cage speed
+    ``omega_cage_rad_s`` and the balls' spin speed about their own axes ``omega_ball_rad_s`` (the
+    kinematics of the contacts, :func:`thermobear.contact.kinematics.caged_ball_kinematics`), and the
+    oil volume fraction ``oil_fraction`` of the oil–air mixture (Parker 1984,
+    :func:`thermobear.losses.drag.oil_volume_fraction_parker`, as the drag model uses it)."""
     sc = fam.scene
     n = fam.values("n_rpm")
     T_in = fam.values("T_oil_in_C")
@@ -175,11 +178,14 @@ def network_context(fam: Family, contacts: ContactSet | None = None) -> dict:
            "fixed": {f"n{k}": np.array([s.T_fixed_C[node] for s in fam.scenes], float)
                      for k, node in enumerate(sorted(sc.T_fixed_C))}}
     omega = n * np.pi / 30.0
-    op = {"omega_rad_s": omega, "oil_fraction": _oil_fraction(fam, n)}
+    inner = sc.rotating == "inner"
+    op = {"omega_rad_s": omega, "omega_inner_rad_s": omega if inner else 0.0 * omega,
+          "omega_outer_rad_s": 0.0 * omega if inner else omega, "oil_fraction": _oil_fraction(fam, n)}
     if contacts is not None:
         ctx["contacts"] = {s: {"a_m": np.asarray(contacts.sides[s]["a"], float),
                                "b_m": np.asarray(contacts.sides[s]["b"], float)} for s in ("inner", "outer")}
-        op["omega_cage_rad_s"] = np.asarray(contacts.omega_c, float)[..., 0]
+        op["omega_cage_rad_s"] = np.asarray(contacts.omega_cage, float)
+        op["omega_ball_rad_s"] = np.asarray(contacts.omega_ball, float).mean(axis=-1)
     ctx["op"] = op
     return ctx
 

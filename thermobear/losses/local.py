@@ -118,6 +118,8 @@ class ContactSet:
     load : LoadDistribution
     omega_c : ndarray             cage speed per ball [rad/s] (batch + (Z,)); all balls at the one cage speed
     omega_cage : ndarray          cage speed [rad/s] (batch)
+    omega_ball : ndarray          ball spin speed about its own axis, relative to the cage, |ω_R| [rad/s]
+                                  (batch + (Z,))
     models_used : dict
     Q, alpha : ndarray            contact load [N] and angle [rad], (*batch, 2, Z): inner, outer raceway
     Rx, Ry : ndarray              reduced radii, rolling / transverse direction [m] (broadcast to (*batch, 2, Z))
@@ -143,6 +145,7 @@ class ContactSet:
     load: LoadDistribution
     omega_c: np.ndarray
     omega_cage: np.ndarray
+    omega_ball: np.ndarray
     models_used: dict
     Q: np.ndarray
     alpha: np.ndarray
@@ -284,7 +287,8 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
     Q2, Rx2, Ry2, u2, a2, b2 = (f(v) for v in (Q2, Rx2, Ry2, u2, a2, b2))
     inv_omega = np.where(omega > 0, 1.0 / np.where(omega > 0, omega, 1.0), 0.0)
     return ContactSet(brg=brg, n_rpm=f(nb), omega=f(omega), inv_omega=f(inv_omega), load=load, omega_c=f(omega_c),
-                      omega_cage=f(w_cage), models_used=models, Q=f(Q2), alpha=f(al2), Rx=f(Rx2), Ry=f(Ry2),
+                      omega_cage=f(w_cage), omega_ball=f(np.abs(np.broadcast_to(kin.omega_R, omega_c.shape))),
+                      models_used=models, Q=f(Q2), alpha=f(al2), Rx=f(Rx2), Ry=f(Ry2),
                       a=f(a2), b=f(b2), u=f(u2), spin=f(spin2), omega_roll=f(omega_roll2), P_sliding_mu=f(P_sl),
                       P_pivoting_mu=f(P_piv), P_hysteresis=f(P_hys), ehl=ehl_contacts(Q2, Rx2, Ry2, u2, brg.E_prime),
                       rolling=rolling_contacts(Q2, Rx2, Ry2, u2, brg.E_prime, a2, b2))

@@ -114,10 +114,8 @@ class ThermalNetwork:
         """(B, n_el) heat flow through each element [W], signed along ``nodes`` (conduction,
         convection, radiation: from nodes[0] to nodes[1]; advection: carried away from the
         downstream node, G (T_down − T_up))."""
-        i = np.array([e.i for e in self.elements])
-        j = np.array([e.j for e in self.elements])
-        adv = np.array([e.advective for e in self.elements])
-        return G * np.where(adv, T_K[:, j] - T_K[:, i], T_K[:, i] - T_K[:, j])
+        s = self.structure
+        return G * np.where(s.adv, T_K[:, s.j] - T_K[:, s.i], T_K[:, s.i] - T_K[:, s.j])
 
     def take(self, idx) -> "ThermalNetwork":
         """The network at a subset of its operating points (index array or mask)."""
@@ -149,12 +147,15 @@ class Structure:
     users: dict               # free node → elements depending on it
     G0: np.ndarray            # (B, n_el) conductances of the other elements (dep columns 0)
 
+    i: np.ndarray = None      # element → its first node (flows)
+    j: np.ndarray = None      # element → its second node
+    adv: np.ndarray = None    # element → advective
+
     @classmethod
-    def of(cls, template, elements, T_fixed_K, oil) -> "Structure":
-        """The structure of a network at its operating points; every element is evaluated once at a
-        probe state (free nodes 10 K above the mean fixed temperature), naming the element when its
-        conductance is not finite and ≥ 0; the constant ones are kept."""
-        n, fixed = len(template.nodes), template.fixed
+    def topology(cls, fixed, elements) -> "Structure":
+        """The part that depends only on the network's topology (computed once, by its template):
+        matrix pattern, positions of the free and fixed blocks, temperature dependence."""
+        n = fixed.size
         pattern = np.zeros((len(elements), n * n))
         for k, e in enumerate(elements):
             i, j = e.i, e.j
@@ -173,19 +174,34 @@ class Structure:
             for m in elements[k].depends_on():
                 if not fixed[m]:
                     users.setdefault(m, []).append(k)
+        for a in (pattern,):
+            a.setflags(write=False)
+        return cls(pattern=pattern, ff=(free_i[:, None] * n + free_i[None, :]).ravel(),
+                   fb=(free_i[:, None] * n + fixed_i[None, :]).ravel(), nf=free_i.size, nb=fixed_i.size,
+                   fpos=tuple(fpos.tolist()), dep=dep, users=users, G0=None,
+                   i=np.array([e.i for e in elements]), j=np.array([e.j for e in elements]),
+                   adv=np.array([e.advective for e in elements]))
+
+    def at(self, template, elements, T_fixed_K, oil) -> "Structure":
+        """This topology at operating points: every element evaluated once at a probe state (free nodes
+        10 K above the mean fixed temperature), naming the element when its conductance is not finite
+        and ≥ 0; the constant ones kept (those reading only the bearing from the template)."""
+        fixed = template.fixed
         T = T_fixed_K.copy()
         T[:, ~fixed] = T_fixed_K[:, fixed].mean(axis=1, keepdims=True) + 10.0
         G0 = np.zeros((T.shape[0], len(elements)))
         shared: dict = {}
         for k, e in enumerate(elements):
+            G_static = template.elements[k].G_static
+            if G_static is not None:
+                G0[:, k] = G_static
+                continue
             try:
                 G = np.asarray(e.conductance(T[:, e.i], T[:, e.j], oil, shared), float)
             except InputError as exc:
                 raise InputError(f"{template.source}: elements[{e.name}].{exc.field}", exc.value, exc.expected) from None
             if not (np.all(np.isfinite(G)) and np.all(G >= 0)):
                 raise InputError(f"{template.source}: elements[{e.name}]", G, "conductance must be finite and >= 0 [W/K]")
-            if k not in dep:
+            if k not in self.dep:
                 G0[:, k] = G
-        return cls(pattern=pattern, ff=(free_i[:, None] * n + free_i[None, :]).ravel(),
-                   fb=(free_i[:, None] * n + fixed_i[None, :]).ravel(), nf=free_i.size, nb=fixed_i.size,
-                   fpos=tuple(fpos.tolist()), dep=dep, users=users, G0=G0)
+        return replace(self, G0=G0)

@@ -113,6 +113,7 @@ class ElementTemplate:
     static: dict
     dynamic: tuple          # (key, field, Expression)
     field: str              # "<file>: elements[<name>]"
+    G_static: float | None = None   # the conductance [W/K] when it reads only the bearing and no temperature
 
 
 @dataclass(frozen=True)
@@ -130,6 +131,7 @@ class NetworkTemplate:
     elements : tuple              :class:`ElementTemplate` entries
     estimated : dict              "nodes.x" / "elements[y]" → list of estimated keys
     info : dict                   node → its description / measured_by / source (for reports)
+    topology : Structure          matrix pattern and temperature dependence (the network's constant part)
     """
 
     name: str
@@ -142,6 +144,7 @@ class NetworkTemplate:
     elements: tuple
     estimated: dict = field(default_factory=dict)
     info: dict = field(default_factory=dict)
+    topology: Structure = None
 
     @property
     def free_nodes(self) -> list:
@@ -187,7 +190,7 @@ class NetworkTemplate:
             T_fixed[:, k] = _check_value(fld, "T_C", np.broadcast_to(val, (B,))) + _C0
         elements = tuple(_instantiate(e, ctx, B, oil) for e in self.elements)
         return ThermalNetwork(template=self, B=B, T_fixed_K=T_fixed, elements=elements, oil=oil,
-                              structure=Structure.of(self, elements, T_fixed, oil))
+                              structure=self.topology.at(self, elements, T_fixed, oil))
 
 
 def _batch_size(ctx) -> int:
@@ -408,7 +411,17 @@ def _element(pre, k, e, ctx, index, fixed, estimated, seen) -> ElementTemplate:
         raise InputError(f"{f}.between", between, "the downstream (second) node of an advection must be free")
     if typ == "ball_race_contact":
         static.update(_fallback_axes(f, static, ctx))
-    return ElementTemplate(name=name, type=typ, nodes=tuple(between), i=i, j=j, static=static,
+    G = None
+    if not dynamic and typ != "ball_race_contact":
+        el = ELEMENT_TYPES[typ]["cls"](name=name, type=typ, nodes=tuple(between), i=i, j=j, p=static)
+        if not el.depends_on() and typ not in ("convection", "advection", "radiation"):
+            try:
+                G = float(el.conductance(None, None))
+            except InputError as exc:
+                raise InputError(f"{f}.{exc.field}", exc.value, exc.expected) from None
+            if not (np.isfinite(G) and G >= 0):
+                raise InputError(f, G, "conductance must be finite and >= 0 [W/K]")
+    return ElementTemplate(name=name, type=typ, nodes=tuple(between), i=i, j=j, static=static, G_static=G,
                            dynamic=tuple(dynamic), field=f)
 
 
@@ -505,8 +518,11 @@ def prepare_network(spec, context=None, *, source: str | None = None) -> Network
     _check_reachable(pre, names, index, fixed, elements)
     for a in (fixed, C):
         a.setflags(write=False)
+    probes = [ELEMENT_TYPES[e.type]["cls"](name=e.name, type=e.type, nodes=e.nodes, i=e.i, j=e.j,
+                                           p={**e.static, **{k: 0.0 for k, _, _ in e.dynamic}}) for e in elements]
     return NetworkTemplate(name=data.get("name", src), source=src, nodes=tuple(names), index=index, fixed=fixed,
-                           C_J_K=C, T_fixed=T_fixed, elements=elements, estimated=estimated, info=info)
+                           C_J_K=C, T_fixed=T_fixed, elements=elements, estimated=estimated, info=info,
+                           topology=Structure.topology(fixed, probes))
 
 
 def network_names() -> list:
