@@ -62,7 +62,7 @@ def test_loss_slopes_are_those_of_one_temperature_at_a_time(kw):
     taken one temperature at a time — the assumption the Newton Jacobian rests on."""
     pm = point_model(_scene(**kw))
     x = np.array([[47.0, 41.0, 43.0]])
-    P, dP = _slopes(pm.source, x, h=0.05)
+    P, dP = _slopes(pm.source, pm.coupling, x, h=0.05)
     for k in range(3):
         xk = x.copy()
         xk[0, k] += 0.05
@@ -93,3 +93,23 @@ def test_a_failing_point_does_not_stop_the_others():
     assert isinstance(out[0], tb.SteadyState) and isinstance(out[2], tb.SteadyState)
     assert isinstance(out[1], tb.NoEquilibrium)
     assert out[2].P_W == pytest.approx(steady_state(s).P_W, rel=1e-12)
+
+
+def test_coupling_conserves_each_loss_part_and_matches_the_pouly_split():
+    """Every loss part's heat goes somewhere whole (columns of S sum to 1); the three default parts split
+    as split_losses does (½ ball, ½ race; drag to the mixture); contact temperatures are ball/race means."""
+    from thermobear.coupled.sources import Coupling, prepare
+    from thermobear.thermal import split_losses
+    s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
+    cp = prepare(s).coupling
+    assert np.allclose(cp.S.sum(axis=0), 1.0)
+    assert np.allclose(cp.C.sum(axis=1), 1.0)
+    t = prepare(s).template
+    free = np.flatnonzero(~t.fixed)
+    for col, unit in enumerate(np.eye(3)):
+        want = {k: v for k, v in split_losses(*unit).items() if v}
+        got = {t.nodes[free[i]]: q for i, q in enumerate(cp.S[:, col]) if q}
+        assert got == pytest.approx(want)
+    assert list(cp.reads) == [0, 1, 2] and cp.parts == ("inner", "outer", "drag")
+    with pytest.raises(tb.InputError, match="loss parts"):
+        Coupling.of(t, parts=("inner", "brakes"))

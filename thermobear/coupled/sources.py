@@ -29,10 +29,10 @@ from thermobear.coupled.limits import overloads
 from thermobear.coupled.pipeline import Family, scene_contacts
 from thermobear.scene import Scene
 from thermobear.scene.network import network_spec
-from thermobear.thermal import ROLES, NetworkTemplate, ThermalNetwork, prepare_network, split_losses
+from thermobear.thermal import ROLES, NetworkTemplate, ThermalNetwork, prepare_network
 from thermobear.validity import T_LUBRICANT_REFUSE_C
 
-__all__ = ["LocalSources", "SKFSources", "SKFLosses", "Coupling", "loss_sources", "network_template",
+__all__ = ["LocalSources", "SKFSources", "SKFLosses", "Coupling", "PARTS", "TEMPERATURES", "DEFAULT_PARTS", "loss_sources", "network_template",
            "family_network", "network_context", "scene_losses", "skf_losses", "Prepared", "prepare",
            "prepared_for"]
 
@@ -209,27 +209,58 @@ def family_network(fam: Family, template: NetworkTemplate, contacts: ContactSet 
     return template.at(network_context(fam, contacts), oil=fam.scene.lubricant, batch=fam.B)
 
 
+#: The coupled temperatures the loss models read, each the mean of role nodes (role → weight): a contact
+#: reads the mean of its ball and race nodes (seed 004 §4.5), drag the oil–air mixture.  A new loss
+#: part that reads another temperature adds its entry here (after these three: their order is fixed).
+TEMPERATURES = {"inner": {"ball": 0.5, "inner": 0.5},
+                "outer": {"ball": 0.5, "outer": 0.5},
+                "oil": {"oil": 1.0}}
+
+#: The loss parts a source reports: part → (heat split, role → fraction summing to 1; the coupled
+#: temperature it reads).  Each contact loss goes ½ to the ball and ½ to its race (Pouly et al.
+#: 2010), drag to the oil–air mixture.
+PARTS = {"inner": ({"ball": 0.5, "inner": 0.5}, "inner"),
+         "outer": ({"ball": 0.5, "outer": 0.5}, "outer"),
+         "drag": ({"oil": 1.0}, "oil")}
+
+#: The parts every source reports, in this order.
+DEFAULT_PARTS = ("inner", "outer", "drag")
+
+
 @dataclass(frozen=True)
 class Coupling:
     """Which network nodes the losses heat and whose temperatures they read.
 
     Attributes
     ----------
-    roles : dict          role → node name (``ball``, ``inner``, ``outer``, ``oil``; :data:`ROLES`)
-    C : ndarray           (3, n_free): coupled temperatures x = C T_free (inner contact = ½(ball +
-                          inner race), outer contact = ½(ball + outer race), oil)
-    S : ndarray           (n_free, 3): free-node sources = S P (the split of the three loss parts)
+    roles : dict          role → node name (``ball``, ``inner``, ``outer``, ``oil``, …; :data:`ROLES`)
+    parts : tuple         the loss parts, in the order of the sources' columns (:data:`PARTS`)
+    temperatures : tuple  the coupled temperatures, in the order of x (:data:`TEMPERATURES`)
+    C : ndarray           (n_x, n_free): coupled temperatures x = C T_free
+    S : ndarray           (n_free, n_parts): free-node sources = S P (the split of the loss parts)
+    reads : ndarray       (n_parts,): the coupled temperature each part reads (index into x)
     """
 
     roles: dict
     C: np.ndarray
     S: np.ndarray
+    parts: tuple = DEFAULT_PARTS
+    temperatures: tuple = tuple(TEMPERATURES)
+    reads: np.ndarray = field(default_factory=lambda: np.arange(3))
 
     @classmethod
-    def of(cls, template: NetworkTemplate) -> "Coupling":
+    def of(cls, template: NetworkTemplate, parts: tuple = DEFAULT_PARTS) -> "Coupling":
+        unknown = [p for p in parts if p not in PARTS]
+        if unknown:
+            raise InputError("parts", unknown, f"loss parts among {', '.join(PARTS)}")
+        temps = tuple(TEMPERATURES)[:3] + tuple(dict.fromkeys(PARTS[p][1] for p in parts
+                                                               if PARTS[p][1] not in tuple(TEMPERATURES)[:3]))
+        needed = dict.fromkeys(r for t in temps for r in TEMPERATURES[t])
+        needed.update(dict.fromkeys(r for p in parts for r in PARTS[p][0]))
         free = ~template.fixed
         roles = {}
-        for role, cands in ROLES.items():
+        for role in needed:
+            cands = ROLES[role]
             hit = next((c for c in cands if c in template.index and free[template.index[c]]), None)
             if hit is None:
                 raise InputError(f"network {template.name}", role, f"has no node for the role '{role}' "
@@ -238,18 +269,23 @@ class Coupling:
         fpos = -np.ones(len(template.nodes), int)
         fpos[free] = np.arange(int(free.sum()))
         pos = {r: fpos[template.index[n]] for r, n in roles.items()}
-        C = np.zeros((3, int(free.sum())))
-        for row, side in ((0, "inner"), (1, "outer")):
-            C[row, pos["ball"]] += 0.5
-            C[row, pos[side]] += 0.5
-        C[2, pos["oil"]] += 1.0
-        S = np.zeros((int(free.sum()), 3))
-        for col, unit in enumerate(np.eye(3)):
-            split = split_losses(*unit, ball=roles["ball"], inner=roles["inner"], outer=roles["outer"],
-                                 oil=roles["oil"])
-            for node, q in split.items():
-                S[fpos[template.index[node]], col] += q
-        return cls(roles=roles, C=C, S=S)
+        C = np.zeros((len(temps), int(free.sum())))
+        for row, t in enumerate(temps):
+            for role, w in TEMPERATURES[t].items():
+                C[row, pos[role]] += w
+        S = np.zeros((int(free.sum()), len(parts)))
+        for col, p in enumerate(parts):
+            for role, w in PARTS[p][0].items():
+                S[pos[role], col] += w
+        reads = np.array([temps.index(PARTS[p][1]) for p in parts], int)
+        return cls(roles=roles, C=C, S=S, parts=tuple(parts), temperatures=temps, reads=reads)
+
+    def incidence(self) -> np.ndarray:
+        """(n_parts, n_x): 1 where a part reads a coupled temperature (the pattern of ∂P/∂x of a source
+        whose parts each read their own temperature)."""
+        R = np.zeros((len(self.parts), len(self.temperatures)))
+        R[np.arange(len(self.parts)), self.reads] = 1.0
+        return R
 
 
 def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oil_C=None, load=None,

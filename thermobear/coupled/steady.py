@@ -95,7 +95,7 @@ class _Newton:
     """Per-point outcome of the batched Newton iteration."""
 
     T: np.ndarray            # (B, n) node temperatures [K]
-    x: np.ndarray            # (B, 3) coupled temperatures [K]
+    x: np.ndarray            # (B, n_x) coupled temperatures [K]
     done: np.ndarray         # (B,) converged to a stable equilibrium
     its: np.ndarray          # (B,) iterations
     step: np.ndarray         # (B,) last step [K]
@@ -104,16 +104,17 @@ class _Newton:
     method: tuple = ()       # per point, how it converged
 
 
-def _slopes(src, x_C, h=0.05):
-    """Loss parts P (B, 3) [W] at x [°C] and ∂P/∂x (B, 3, 3) [W/K] by forward differences."""
+def _slopes(src, cp: Coupling, x_C, h=0.05):
+    """Loss parts P (B, n_parts) [W] at x [°C] and ∂P/∂x (B, n_parts, n_x) [W/K] by forward differences."""
     if src.diagonal:       # each part reads its own temperature: x and x + h in one evaluation
         Pm = src.parts(np.stack([x_C, x_C + h]))
-        return Pm[0], (Pm[1] - Pm[0])[:, :, None] * np.eye(3)[None] / h
-    X = np.repeat(x_C[None], 4, axis=0)
-    for k in range(3):
+        return Pm[0], (Pm[1] - Pm[0])[:, :, None] * cp.incidence()[None] / h
+    n = x_C.shape[-1]
+    X = np.repeat(x_C[None], n + 1, axis=0)
+    for k in range(n):
         X[k + 1, :, k] += h
     Pm = src.parts(X)
-    return Pm[0], np.stack([(Pm[k + 1] - Pm[0]) / h for k in range(3)], axis=-1)
+    return Pm[0], np.stack([(Pm[k + 1] - Pm[0]) / h for k in range(n)], axis=-1)
 
 
 def _loop_gain(Aff, S, dP, C):
@@ -143,7 +144,7 @@ def _newton(net, src, cp: Coupling, tol_K, T0=None, maxiter: int = 30, h: float 
         if not live.any():
             break
         x = T[:, free] @ cp.C.T
-        P, dP = _slopes(src, x - _C0, h)
+        P, dP = _slopes(src, cp, x - _C0, h)
         fresh = live & (step > 1.0)
         if dG is None or fresh.any():  # the slopes of the conductances re-evaluated while a point's step > 1 K;
             G, dG_new = net.dconductances(T)     # below, each point keeps its last ones (same as alone)
@@ -180,7 +181,7 @@ def _newton(net, src, cp: Coupling, tol_K, T0=None, maxiter: int = 30, h: float 
 
 
 def _sources_matrix(net, cp: Coupling, parts) -> np.ndarray:
-    """(B, n) node sources [W] of the loss parts (B, 3)."""
+    """(B, n) node sources [W] of the loss parts (B, n_parts)."""
     P = np.zeros((net.B, len(net.nodes)))
     P[:, ~net.fixed] = parts @ cp.S.T
     return P
