@@ -89,8 +89,7 @@ def _row(point: dict, sc: Scene, st=None, exc=None) -> dict:
                    iterations=getattr(exc, "iterations", None), residual_K=_finite_or_none(getattr(exc, "residual", None)),
                    warnings=[])
         return row
-    row.update(P_W=float(st.P_W), torque_Nm=float(st.losses.torque_Nm),
-               breakdown_W={k: float(v) for k, v in st.losses.breakdown_W.items()},
+    row.update(P_W=float(st.P_W), torque_Nm=float(st.torque_Nm), breakdown_W=dict(st.breakdown_W),
                temperatures_C={k: float(v) for k, v in st.T_C.items()}, T_ball_C=float(st.T_ball_C),
                models=_choices(st.models_used), status="ok", reason=str(st.models_used["thermal"][1]),
                iterations=int(st.iterations), residual_K=float(st.residual_K),

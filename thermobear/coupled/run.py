@@ -101,6 +101,5 @@ def solve(scene: Scene) -> RunResult:
                          T_C={"contacts (prescribed)": T}, models_used=r.models_used, losses=r,
                          warnings=ws)
     st = steady_state(scene)
-    return RunResult(scene=scene, P_W=st.P_W, torque_Nm=float(st.losses.torque_Nm),
-                     breakdown_W={k: float(v) for k, v in st.losses.breakdown_W.items()}, T_C=st.T_C,
+    return RunResult(scene=scene, P_W=st.P_W, torque_Nm=st.torque_Nm, breakdown_W=dict(st.breakdown_W), T_C=st.T_C,
                      models_used=st.models_used, losses=st.losses, steady=st, warnings=st.warnings)

@@ -68,8 +68,11 @@ class LocalSources:
     def parts(self, x_C) -> np.ndarray:
         """(..., B, 3) inner contacts, outer contacts, drag [W] at coupled temperatures (..., B, 3) [°C]
         (every leading state in one evaluation)."""
-        r = self.result(x_C)
-        shape = np.shape(x_C)[:-1]
+        return self.parts_of(self.result(x_C), np.shape(x_C)[:-1])
+
+    @staticmethod
+    def parts_of(r: LossResult, shape) -> np.ndarray:
+        """The loss parts (``shape`` + (3,)) [W] of a result of :meth:`result`."""
         return np.stack([np.broadcast_to(r.contact_W["inner"], shape), np.broadcast_to(r.contact_W["outer"], shape),
                          np.broadcast_to(r.breakdown_W["drag"], shape)], axis=-1)
 
@@ -107,10 +110,16 @@ class SKFSources:
     def parts(self, x_C) -> np.ndarray:
         x = np.asarray(x_C, float)
         if x.ndim == 2:
-            r = self.result(x)
-            c = np.asarray(r.P_W, float) - np.asarray(r.breakdown_W["drag"], float)
-            return np.stack([0.5 * c, 0.5 * c, np.asarray(r.breakdown_W["drag"], float) + 0.0 * c], axis=-1)
+            return self.parts_of(self.result(x), x.shape[:-1])
         return np.stack([self.parts(xk) for xk in x])
+
+    @staticmethod
+    def parts_of(r: SKFLosses, shape) -> np.ndarray:
+        """The loss parts (``shape`` + (3,)) [W] of a result of :meth:`result` (½ of the contact losses
+        to each side)."""
+        drag = np.broadcast_to(np.asarray(r.breakdown_W["drag"], float), shape)
+        c = np.broadcast_to(np.asarray(r.P_W, float), shape) - drag
+        return np.stack([0.5 * c, 0.5 * c, drag], axis=-1)
 
 
 def skf_losses(scene: Scene, T_C, models: dict, *, n_rpm=None, Fa=None, Fr=None) -> SKFLosses:
