@@ -36,7 +36,8 @@ def _picard_path(pm, T_limit_K=523.15):
     return solve_coupled(update, x0, method="picard", damping=0.7, tol_K=1e-9, max_iter=2000, T_limit_K=T_limit_K)
 
 
-@pytest.mark.parametrize("name,kw", [("seed004_oil_jet_7210.toml", {}),
+@pytest.mark.parametrize("name,kw", [("seed004_oil_jet_7210.toml", {"models": {"high_speed": True,
+                                                                               "load_model": "jones_harris"}}),
                                      ("seed004_oil_jet_7210.toml", {"n_rpm": 8070.0, "Fr": 750.0,
                                                                     "models": {"load_model": "jones_harris"}}),
                                      ("seed002_grease_thrust_51107.toml", {})])

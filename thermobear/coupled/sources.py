@@ -298,12 +298,13 @@ class Coupling:
 
 
 def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oil_C=None, load=None,
-                 models: dict | None = None, contacts: ContactSet | None = None, n_rpm=None):
+                 models: dict | None = None, contacts: ContactSet | None = None, n_rpm=None, dry=None):
     """Losses of a scene at given temperatures [W] (default: the scene's prescribed T_C): the local
     model (:func:`thermobear.losses.evaluate_losses`) or the SKF model, as the scene's models say.
 
     ``n_rpm`` and the temperatures may be arrays (one operating point each, vectorised; the loads
-    of the scene); ``load`` / ``contacts`` inject a load distribution / prepared contacts.
+    of the scene); ``load`` / ``contacts`` inject a load distribution / prepared contacts; ``dry``
+    is the dry load distribution the model choice ``models`` solved (:func:`~thermobear.models.plan_many`).
 
     >>> import thermobear as tb
     >>> s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
@@ -311,7 +312,6 @@ def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oi
     >>> max(r.breakdown_W, key=r.breakdown_W.get), r.models_used["load_distribution"][0]
     ('rolling', 'Jones–Harris high-speed (centrifugal, gyroscopic)')
     """
-    dry = None
     if models is None:
         models, dry = plan(scene)
     if T_C is None:

@@ -30,12 +30,14 @@ closes to machine precision, and their coupled temperatures are checked against 
 """
 from __future__ import annotations
 
+import dataclasses
 import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from thermobear.arrays import take
+from thermobear.coupled.blend import blend_states
 from thermobear.coupled.fixedpoint import solve_coupled
 from thermobear.coupled.pipeline import (Family, families, family_contacts, family_loads, film_temperature_C,
                                         split_failures)
@@ -480,18 +482,33 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> l
             raise InputError("operation.T_C", sc.T_C, "the scene prescribes its temperature: use solve() "
                              "or remove operation.T_C to solve the thermal network")
     out: list = [None] * len(scenes)
-    fams, failed = families(scenes, plan_many(scenes))
-    for i, exc in failed.items():
-        out[i] = exc
+    jobs, plans, owner = [], [], []           # one job per model alternative of a point
+    for i, (sc, alts) in enumerate(zip(scenes, plan_many(scenes))):
+        if isinstance(alts, Exception):
+            out[i] = alts
+            continue
+        if load is not None:                  # injected loads: one model, the dominant one
+            alts = [dataclasses.replace(max(alts, key=lambda a: a.weight), weight=1.0)]
+        for a in alts:
+            jobs.append(sc)
+            plans.append((a.models, a.dry))
+            owner.append((i, a.weight))
+    fams, _ = families(jobs, plans)
     if load is not None and len(fams) != 1:
         raise InputError("load", "LoadDistribution", "injected loads need the scenes of one family")
+    res: list = [None] * len(jobs)
     with warnings.catch_warnings():
         # property calls at intermediate iterates may lie beyond a correlation's data: only the answer
         # counts, and its validity is checked on its own (SteadyState.warnings, limits.point_warnings)
         warnings.simplefilter("ignore", OutsideValidity)
         for fam in fams:
-            for i, r in zip(fam.index, _solve_family(fam, tol_K, None if load is None else _batched(load), prepared)):
-                out[i] = r
+            for j, r in zip(fam.index, _solve_family(fam, tol_K, None if load is None else _batched(load), prepared)):
+                res[j] = r
+    parts: dict = {}
+    for (i, w), r in zip(owner, res):
+        parts.setdefault(i, []).append((w, r))
+    for i, p in parts.items():
+        out[i] = blend_states(p, SteadyState)
     seen: set = set()
     emit([w for r in out if isinstance(r, SteadyState) for w in r.warnings if not (str(w) in seen or seen.add(str(w)))])
     return out
