@@ -20,6 +20,15 @@ sub-models serve it, each with the reason, overridable from the scene's ``[model
 * **drag** — only for jet / oil–air supply, or grease at n·d_m ≥ 1e5 mm/min (below, churning of a
   few balls in air is < 0.1 % of the contact losses).
 * **rolling** — per-contact regime selection (seed 004 §4.3) unless named.
+* **traction** — the film's own traction law (Eyring stress and limiting shear stress of the base
+  oil; :mod:`thermobear.losses.traction`) wherever an oil film carries the contacts; a constant
+  full-film μ only for a dry film.  A constant μ_e charges the low-slip spin of thrust and
+  angular-contact bearings with plateau traction (+40 % of the seed 002 torque:
+  validation/report/seed002_local_diagnosis.md).
+* **inlet_heating** — the thermal film reduction of Gupta et al. (1992) where it reduces the film by
+  ≥ 1 % at the scene's temperature and speed (:mod:`thermobear.lubrication.thermal_film`).
+* **starvation** — SKF's kinematic replenishment factor Φ_rs on the rolling force where it is
+  ≤ 0.99 at the scene's temperature and speed (grease and oil–air starve more than jet and bath).
 * **hertz** — exact (one ellipticity solve per contact; the approximations' errors, 1–5 %, would
   show in p_max and the film).
 
@@ -34,9 +43,12 @@ from thermobear.arrays import take
 from thermobear.errors import InputError, NoEquilibrium, SolverError
 from thermobear.loads import LoadDistribution, load_distribution, needs_high_speed
 from thermobear.loads.highspeed import load_distribution_high_speed
+from thermobear.losses.skf import K_RS, phi_rs, skf_K_z
+from thermobear.lubrication.thermal_film import thermal_loading_parameter, thermal_reduction_gupta
 from thermobear.scene import Scene
 
-__all__ = ["choose_models", "plan", "plan_many", "open_contacts", "dry_load", "is_symmetric", "FLOODED"]
+__all__ = ["choose_models", "plan", "plan_many", "open_contacts", "dry_load", "is_symmetric", "FLOODED",
+           "film_options"]
 
 FLOODED = ("oil_jet", "oil_bath")
 
@@ -153,6 +165,50 @@ def _combined_load_model(scene: Scene, high_speed: bool, dry) -> tuple:
                     "films enter each contact law (Jones–Harris with NVM films)")
 
 
+def film_options(models: dict) -> dict:
+    """The keyword arguments of :func:`thermobear.losses.evaluate_losses` for the film choices of a
+    :func:`choose_models` answer (``traction``, ``inlet_heating``, ``starvation``; absent → the
+    constant-μ, isothermal, flooded model)."""
+    return {"traction": models.get("traction", ("constant",))[0],
+            "inlet_heating": bool(models.get("inlet_heating", (False,))[0]),
+            "starvation": bool(models.get("starvation", (False,))[0])}
+
+
+def _film_choices(scene: Scene, out: dict) -> None:
+    """``traction``, ``inlet_heating`` and ``starvation``, each with its reason (see the module docstring);
+    evaluated at the scene's temperature (prescribed, else the oil inlet or the ambient)."""
+    m, b, oil = scene.models, scene.bearing, scene.lubricant
+    if "traction" in m:
+        out["traction"] = (m["traction"], "chosen in the scene")
+    elif scene.supply == "dry_film":
+        out["traction"] = ("constant", "dry film: constant friction coefficient")
+    else:
+        out["traction"] = ("eyring", f"oil film: the base oil's traction (Eyring stress {oil.eyring_stress:.3g} Pa, "
+                                     f"τ_L/p {oil.limiting_shear:g}) on each contact's slip")
+    T = scene.T_C if scene.T_C is not None else (scene.T_oil_in_C if scene.T_oil_in_C is not None
+                                                   else scene.T_ambient_C)
+    wet = scene.supply != "dry_film" and scene.n_rpm > 0
+    if "inlet_heating" in m:
+        out["inlet_heating"] = (m["inlet_heating"], "chosen in the scene")
+    elif not wet:
+        out["inlet_heating"] = (False, "no rolling film")
+    else:
+        u_sum = scene.omega * b.dm / 2.0 * (1.0 - (b.D / b.dm) ** 2)        # 2u at α = 0: an upper bound
+        phi = float(thermal_reduction_gupta(thermal_loading_parameter(oil.beta_at(float(T)), oil.eta(float(T)),
+                                                                      u_sum, oil.k_th(float(T)))))
+        out["inlet_heating"] = (phi < 0.99, f"Gupta φ_T = {phi:.3f} at {T:g} °C "
+                                + ("(≥ 1 % thinner film)" if phi < 0.99 else "(< 1 %: isothermal inlet)"))
+    if "starvation" in m:
+        out["starvation"] = (m["starvation"], "chosen in the scene")
+    elif not wet or scene.supply not in K_RS or b.bore is None or b.outer_diameter is None:
+        out["starvation"] = (False, "fully flooded (no replenishment factor for this supply or bearing: bore/OD unknown)")
+    else:
+        phi = float(phi_rs(scene.n_rpm, oil.nu(float(T)), b.bore * 1e3, b.outer_diameter * 1e3, skf_K_z(b.kind),
+                           K_RS[scene.supply]))
+        out["starvation"] = (phi <= 0.99, f"{scene.supply}: SKF Φ_rs = {phi:.3f} at {T:g} °C "
+                             + ("(replenishment lags: rolling force reduced)" if phi <= 0.99 else "(flooded)"))
+
+
 def _choose(scene: Scene, dry) -> dict:
     b, m = scene.bearing, dict(scene.models)
     out = {}
@@ -198,6 +254,7 @@ def _choose(scene: Scene, dry) -> dict:
                          else "Jones outer-raceway control")
     out["hertz"] = (m.get("hertz", "exact"), "chosen in the scene" if "hertz" in m else
                     "exact elliptic integrals (approximations err 1–5 %)")
+    _film_choices(scene, out)
     return out
 
 
