@@ -104,8 +104,7 @@ def contact_conditions(base):
         sp = abs(float(np.asarray(cs.spin)[..., 0, 0]))
         args = (float(c["h_c"][0]), float(c["eta"][0]), sc.lubricant.alpha_p_at(T), sc.lubricant.eyring_stress,
                 sc.lubricant.limiting_shear)
-        mu_s = strip_traction_coefficient(cs.slip_spin[..., 0, 0, :], cs.p_strip[..., 0, 0, :], *args)
-        mu_h = strip_traction_coefficient(cs.slip_heathcote[..., 0, 0, :], cs.p_strip[..., 0, 0, :], *args)
+        mu_h, mu_s = strip_traction_coefficient(cs.slips[..., 0, 0, :, :], cs.p_strip[..., 0, 0, :, :], *args)
         b_ = sc.bearing
         pr = float(phi_rs(n, sc.lubricant.nu(T), b_.bore * 1e3, b_.outer_diameter * 1e3, skf_K_z(b_.kind),
                           K_RS["grease"]))
@@ -123,7 +122,7 @@ def traction_curve(base):
     cs, r = _losses(sc, 49.8, **STEPS[-1][1])
     c = r.contacts["inner"]
     u = float(np.asarray(cs.u)[..., 0, 0])
-    pm = cs.p_strip[..., 0, 0, :]
+    pm = cs.p_strip[..., 0, 0, 0, :]
     rows = ["| slide-to-roll | μ (Eyring, τ0 5 MPa) |", "|---|---|"]
     for srr in (1e-4, 1e-3, 3e-3, 1e-2, 3e-2, 0.1):
         mu = strip_traction_coefficient(np.full(pm.shape, srr * u), pm, float(c["h_c"][0]), float(c["eta"][0]),

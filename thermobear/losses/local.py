@@ -136,10 +136,11 @@ class ContactSet:
     P_sliding_mu : ndarray        Heathcote sliding power per unit friction coefficient [W]
     P_pivoting_mu : ndarray       pivoting power per unit friction coefficient [W]
     P_hysteresis : ndarray        hysteresis power [W]
-    slip_spin, slip_heathcote : ndarray
-                                  |slip speed| of pivoting and of Heathcote micro-slip at the strip nodes
-                                  ξ_k of :data:`thermobear.losses.traction.STRIP_NODES` [m/s], (*batch, 2, Z, k)
-    p_strip : ndarray             mean pressure across the rolling direction there, (π/4) p_max √(1 − ξ_k²) [Pa]
+    slips : ndarray               |slip speed| of Heathcote micro-slip and of pivoting at the strip nodes
+                                  ξ_k of :data:`thermobear.losses.traction.STRIP_NODES` [m/s], (*batch, 2, Z, 2, k)
+    p_strip : ndarray             mean pressure across the rolling direction there, (π/4) p_max √(1 − ξ_k²) [Pa],
+                                  (*batch, 2, Z, 1, k)
+    K_z : float or None           SKF bearing-type constant of the replenishment factor (None: bore/OD or kind unknown)
     ehl : EHLContacts             the contacts prepared for the film and regime formulas
                                   (:func:`thermobear.lubrication.film.ehl_contacts`)
     rolling : RollingContacts     the contacts prepared for the rolling-force formulas
@@ -169,9 +170,9 @@ class ContactSet:
     P_sliding_mu: np.ndarray
     P_pivoting_mu: np.ndarray
     P_hysteresis: np.ndarray
-    slip_spin: np.ndarray
-    slip_heathcote: np.ndarray
+    slips: np.ndarray
     p_strip: np.ndarray
+    K_z: float | None
     ehl: EHLContacts
     rolling: RollingContacts
 
@@ -287,7 +288,11 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
     P_sl = sliding_power_heathcote(1.0, Q2, a2, Ra2, omega_roll2)
     P_piv = np.asarray(pivoting_moment(1.0, Q2, a2)) * np.abs(spin2)
     P_hys = np.asarray(hysteresis_moment(Q2, brg.D, np.maximum(Ry2 / Rx2, 1.0))) * np.abs(omega_roll2)
-    slip_spin, slip_heath, p_strip = _strip_slips(Q2, a2, b2, Ra2, spin2, omega_roll2)
+    slips, p_strip = _strip_slips(Q2, a2, b2, Ra2, spin2, omega_roll2)
+    try:
+        K_z = skf_K_z(brg.kind) if brg.bore is not None and brg.outer_diameter is not None else None
+    except InputError:
+        K_z = None
     models = {
         "load_distribution": ("Jones–Harris low-speed, rigid rings" + (", tilt free" if M is not None else ""),
                               "quasi-static ball loads and angles (seed 004 eqs 6–8)"),
@@ -304,15 +309,16 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
                       omega_cage=f(w_cage), omega_ball=f(np.abs(np.broadcast_to(kin.omega_R, omega_c.shape))),
                       models_used=models, Q=f(Q2), alpha=f(al2), Rx=f(Rx2), Ry=f(Ry2),
                       a=f(a2), b=f(b2), u=f(u2), spin=f(spin2), omega_roll=f(omega_roll2), P_sliding_mu=f(P_sl),
-                      P_pivoting_mu=f(P_piv), P_hysteresis=f(P_hys), slip_spin=f(slip_spin),
-                      slip_heathcote=f(slip_heath), p_strip=f(p_strip), ehl=ehl_contacts(Q2, Rx2, Ry2, u2, brg.E_prime),
+                      P_pivoting_mu=f(P_piv), P_hysteresis=f(P_hys), slips=f(slips), p_strip=f(p_strip), K_z=K_z,
+                      ehl=ehl_contacts(Q2, Rx2, Ry2, u2, brg.E_prime),
                       rolling=rolling_contacts(Q2, Rx2, Ry2, u2, brg.E_prime, a2, b2))
 
 
 def _strip_slips(Q, a, b, Ra, spin, omega_roll):
-    """Slip speeds of pivoting (|ω_s| a ξ) and Heathcote micro-slip (|ω_roll| |B(ξ0 a) − B(ξ a)|, seed 000
-    eq 7) at the strip nodes ξ of :data:`~thermobear.losses.traction.STRIP_NODES`, and the slice mean
-    pressure (π/4) p_max √(1 − ξ²) of the Hertz contact there: arrays (*contacts, nodes) [m/s, m/s, Pa]."""
+    """Slip speeds of Heathcote micro-slip (|ω_roll| |B(ξ0 a) − B(ξ a)|, seed 000 eq 7) and pivoting
+    (|ω_s| a ξ) at the strip nodes ξ of :data:`~thermobear.losses.traction.STRIP_NODES`, stacked
+    (*contacts, 2, nodes) [m/s], and the slice mean pressure (π/4) p_max √(1 − ξ²) of the Hertz contact
+    there, (*contacts, 1, nodes) [Pa]."""
     xi = STRIP_NODES[0]
     a_ = a[..., None]
     x = xi * a_
@@ -322,7 +328,8 @@ def _strip_slips(Q, a, b, Ra, spin, omega_roll):
     slip_heath = np.abs(omega_roll)[..., None] * np.abs(dB)
     ab = a * b
     p_max = np.where(ab > 0, 1.5 * Q / (np.pi * np.where(ab > 0, ab, 1.0)), 0.0)
-    return slip_spin, slip_heath, (0.25 * np.pi) * p_max[..., None] * np.sqrt(1.0 - xi**2)
+    p_strip = (0.25 * np.pi) * p_max[..., None] * np.sqrt(1.0 - xi**2)
+    return np.stack((slip_heath, slip_spin), axis=-2), p_strip[..., None, :]
 
 
 # --------------------------------------------------------------------------- temperatures
@@ -420,11 +427,11 @@ def _replenishment(cs, oil, T2, supply):
     """SKF's kinematic replenishment factor Φ_rs (:func:`~thermobear.losses.skf.phi_rs`) of the
     bearing at each contact's viscosity [-] (bore, OD in mm; K_z of the bearing kind, K_rs of the supply)."""
     brg = cs.brg
-    if brg.bore is None or brg.outer_diameter is None or supply not in K_RS:
+    if cs.K_z is None or supply not in K_RS:
         raise InputError("models.starvation", True, "the replenishment factor needs the bearing's bore and outside "
-                         "diameter and an oil or grease supply (" + ", ".join(K_RS) + ")")
+                         "diameter, an SKF bearing kind and an oil or grease supply (" + ", ".join(K_RS) + ")")
     n = np.asarray(cs.n_rpm, float)[(...,) + (None,) * 2]
-    return phi_rs(n, _at(oil.nu, T2), brg.bore * 1e3, brg.outer_diameter * 1e3, skf_K_z(brg.kind), K_RS[supply])
+    return phi_rs(n, _at(oil.nu, T2), brg.bore * 1e3, brg.outer_diameter * 1e3, cs.K_z, K_RS[supply])
 
 
 def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=None, T_oil_C=None,
@@ -510,9 +517,10 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     else:                                           # smooth surfaces: Λ = ∞, full-film friction
         Lam = np.full(h_min.shape, np.inf)
     if traction == "eyring":
-        args = (h_c, eta2, alpha2, oil.eyring_stress, oil.limiting_shear)
-        mu = mixed_friction_ianus(Lam, strip_traction_coefficient(cs.slip_heathcote, cs.p_strip, *args), mu_boundary)
-        mu_piv = mixed_friction_ianus(Lam, strip_traction_coefficient(cs.slip_spin, cs.p_strip, *args), mu_boundary)
+        mu_f = strip_traction_coefficient(cs.slips, cs.p_strip, h_c[..., None], eta2[..., None], alpha2[..., None],
+                                          oil.eyring_stress, oil.limiting_shear)     # (..., 2, Z, 2): micro-slip, spin
+        mu = mixed_friction_ianus(Lam, mu_f[..., 0], mu_boundary)
+        mu_piv = mixed_friction_ianus(Lam, mu_f[..., 1], mu_boundary)
     else:
         mu = mu_piv = mixed_friction_ianus(Lam, mu_full_film, mu_boundary)
     P = np.empty((4,) + h_min.shape)                # rolling, sliding, pivoting, hysteresis per contact

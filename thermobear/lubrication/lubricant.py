@@ -163,9 +163,13 @@ def walther_nu(A, B, T_K):
     >>> round(float(walther_nu(A, B, 333.15)), 2)
     19.51
     """
+    return walther_nu_from_Z(_walther_Z_at(A, B, T_K))
+
+
+def _walther_Z_at(A, B, T_K):
+    """D341 Z = 10^(10^(A − B log10 T)) at T_K [K]."""
     T = _num(T_K)
-    Z = 10.0 ** (10.0 ** (A - B * _xp(T).log10(T)))
-    return walther_nu_from_Z(Z)
+    return 10.0 ** (10.0 ** (A - B * _xp(T).log10(T)))
 
 
 def walther_temperature_coefficient(A, B, T_K):
@@ -196,9 +200,8 @@ def walther_temperature_coefficient(A, B, T_K):
     >>> round(float(walther_temperature_coefficient(A, B, 333.15)), 4)
     0.028
     """
-    T = _num(T_K)
-    Z = 10.0 ** (10.0 ** (A - B * _xp(T).log10(T)))
-    return B * Z * _xp(Z).log(Z) / (walther_nu_from_Z(Z) * T)
+    Z = _walther_Z_at(A, B, T_K)
+    return B * Z * _xp(Z).log(Z) / (walther_nu_from_Z(Z) * _num(T_K))
 
 
 # ---------------------------------------------------------------------------
