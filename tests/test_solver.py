@@ -6,7 +6,7 @@ import pytest
 import thermobear as tb
 from thermobear.errors import InputError, ThermalRunaway
 from thermobear.coupled import scene_load, scene_losses, solve, steady_state, steady_states, transient
-from thermobear.models import choose_models, open_contacts
+from thermobear.models import choose_models, film_options, open_contacts
 from thermobear.scene.network import network_spec
 
 S004 = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
@@ -64,9 +64,11 @@ def test_closed_form_and_jones_harris_paths_agree(scene):
 
 def test_prescribed_temperature_equals_bearing_losses():
     # low-speed path: bearing_losses adds F_c to the outer contacts itself
-    r = solve(S004.with_(T_C=50.0, models={"high_speed": False, "load_model": "jones_harris"}))
+    sc = S004.with_(T_C=50.0, models={"high_speed": False, "load_model": "jones_harris"})
+    r = solve(sc)
     ref = tb.bearing_losses(S004.bearing, S004.lubricant, Fa=450.0, Fr=325.0, n_rpm=3200.0, T_C=50.0,
-                            oil_flow_m3_s=S004.oil_flow, Rq_ball=S004.Rq_ball, Rq_ring=S004.Rq_ring)
+                            oil_flow_m3_s=S004.oil_flow, Rq_ball=S004.Rq_ball, Rq_ring=S004.Rq_ring,
+                            **film_options(choose_models(sc)))
     assert r.P_W == pytest.approx(ref.P_W, rel=1e-12)
 
 
@@ -80,7 +82,7 @@ def test_high_speed_path_when_centrifugal_force_matters():
     ld = load_distribution_high_speed(S004.bearing, Fa=450.0, Fr=325.0, n_rpm=6500.0)
     ref = tb.bearing_losses(S004.bearing, S004.lubricant, Fa=450.0, Fr=325.0, n_rpm=6500.0, T_C=50.0,
                             oil_flow_m3_s=S004.oil_flow, Rq_ball=S004.Rq_ball, Rq_ring=S004.Rq_ring,
-                            load=ld, centrifugal=False)
+                            load=ld, centrifugal=False, **film_options(m))
     assert r.P_W == pytest.approx(ref.P_W, rel=1e-12)
     assert np.all(r.losses.contacts["outer"]["alpha"] < r.losses.contacts["inner"]["alpha"])
 
@@ -145,10 +147,13 @@ def test_skf_loss_path():
 
 def test_schedule_steps_reach_the_network():
     # a step of the oil inlet temperature changes the fixed node and the end state equals the steady state
-    tr = transient(S004, 1.0e6, schedule=[(1000.0, {"T_oil_in_C": 70.0})], t_eval=[999.0, 1000.0, 1.0e6])
+    # (models pinned: inside a switch band the steady state blends alternatives, the transient runs the
+    # dominant one)
+    s = S004.with_(models={"high_speed": True, "load_model": "jones_harris"})
+    tr = transient(s, 1.0e6, schedule=[(1000.0, {"T_oil_in_C": 70.0})], t_eval=[999.0, 1000.0, 1.0e6])
     assert tr.t_s.tolist() == [999.0, 1000.0, 1.0e6]
     assert tr.T_C["oil_inlet"].tolist() == [30.0, 70.0, 70.0]
-    st = steady_state(S004.with_(T_oil_in_C=70.0))
+    st = steady_state(s.with_(T_oil_in_C=70.0))
     assert tr.T_C["balls"][-1] == pytest.approx(st.T_C["balls"], abs=0.05)
 
 
@@ -164,7 +169,9 @@ def test_many_points_solved_together_equal_each_solved_alone(scene):
     together = steady_states(scenes)
     for sc, st in zip(scenes, together):
         alone = steady_state(sc)
-        assert st.models_used["thermal"][1].startswith("fixed point on 3 coupled temperatures: newton")
+        # 7210 at 12 105 rpm with inlet heating and replenishment (issue 17): the cold start's loop gain is 1.47,
+        # the batched Newton hands the point to the fallback path, alone and together alike
+        assert st.models_used["thermal"][1].startswith("fixed point on 3 coupled temperatures: ")
         for node, T in alone.T_C.items():
             assert st.T_C[node] == pytest.approx(T, abs=1e-6)
         assert st.P_W == pytest.approx(alone.P_W, rel=1e-9)

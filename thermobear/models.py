@@ -20,6 +20,15 @@ sub-models serve it, each with the reason, overridable from the scene's ``[model
 * **drag** — for jet / oil–air supply (the oil–air mixture) and grease (the cavity air: negligible
   below n·d_m ≈ 1e5 mm/min, ∝ ω², so kept everywhere rather than switched on at a speed).
 * **rolling** — per-contact regime selection (seed 004 §4.3) unless named.
+* **traction** — the film's own traction law (Eyring stress and limiting shear stress of the base
+  oil; :mod:`thermobear.losses.traction`) wherever an oil film carries the contacts; a constant
+  full-film μ only for a dry film.  A constant μ_e charges the low-slip spin of thrust and
+  angular-contact bearings with plateau traction (+40 % of the seed 002 torque:
+  validation/report/seed002_local_diagnosis.md).
+* **inlet_heating** — the thermal film reduction of Gupta et al. (1992) wherever an oil film rolls
+  (:mod:`thermobear.lubrication.thermal_film`; φ_T → 1 at low speed × viscosity, so no switch).
+* **starvation** — SKF's kinematic replenishment factor Φ_rs on the rolling force wherever it is
+  defined (grease, oil–air, jet, bath; Φ_rs → 1 when the track refills, so no switch).
 * **hertz** — exact (one ellipticity solve per contact; the approximations' errors, 1–5 %, would
   show in p_max and the film).
 
@@ -43,6 +52,8 @@ from thermobear.arrays import take
 from thermobear.errors import InputError, NoEquilibrium, SolverError
 from thermobear.loads import LoadDistribution, load_distribution, needs_high_speed
 from thermobear.loads.highspeed import load_distribution_high_speed
+from thermobear.losses.skf import K_RS, phi_rs, skf_K_z
+from thermobear.lubrication.thermal_film import thermal_loading_parameter, thermal_reduction_gupta
 from thermobear.scene import Scene
 
 #: Where the model choice switches, both models are solved across a band of the switch's criterion and
@@ -58,7 +69,7 @@ BLEND_BANDS = {"high_speed": (0.035, 0.07), "film": (0.0, 0.1)}
 MIN_WEIGHT = 1e-3
 
 __all__ = ["choose_models", "plan", "plan_many", "open_contacts", "dry_load", "is_symmetric", "FLOODED",
-           "BLEND_BANDS", "Alternative", "DryRow", "smooth_weight"]
+           "BLEND_BANDS", "Alternative", "DryRow", "smooth_weight", "film_options"]
 
 FLOODED = ("oil_jet", "oil_bath")
 
@@ -208,6 +219,52 @@ def _load_model_alternatives(scene: Scene, dry) -> list:
     return [(("film", why), w), (("jones_harris", why), 1.0 - w)]
 
 
+def film_options(models: dict) -> dict:
+    """The keyword arguments of :func:`thermobear.losses.evaluate_losses` for the film choices of a
+    :func:`choose_models` answer (``traction``, ``inlet_heating``, ``starvation``; absent → the
+    constant-μ, isothermal, flooded model)."""
+    return {"traction": models.get("traction", ("constant",))[0],
+            "inlet_heating": bool(models.get("inlet_heating", (False,))[0]),
+            "starvation": bool(models.get("starvation", (False,))[0])}
+
+
+def _film_choices(scene: Scene, out: dict) -> None:
+    """``traction``, ``inlet_heating`` and ``starvation``, each with its reason (see the module docstring);
+    evaluated at the scene's temperature (prescribed, else the oil inlet or the ambient)."""
+    m, b, oil = scene.models, scene.bearing, scene.lubricant
+    if "traction" in m:
+        out["traction"] = (m["traction"], "chosen in the scene")
+    elif scene.supply == "dry_film":
+        out["traction"] = ("constant", "dry film: constant friction coefficient")
+    else:
+        out["traction"] = ("eyring", f"oil film: the base oil's traction (Eyring stress {oil.eyring_stress:.3g} Pa, "
+                                     f"τ_L/p {oil.limiting_shear:g}) on each contact's slip")
+    T = scene.T_C if scene.T_C is not None else (scene.T_oil_in_C if scene.T_oil_in_C is not None
+                                                   else scene.T_ambient_C)
+    wet = scene.supply != "dry_film" and scene.n_rpm > 0
+    # both factors tend to 1 continuously where they do not matter: applied wherever they are defined
+    # (no switch at a threshold, so no step), the reason giving their size at the scene's temperature
+    if "inlet_heating" in m:
+        out["inlet_heating"] = (m["inlet_heating"], "chosen in the scene")
+    elif not wet:
+        out["inlet_heating"] = (False, "no rolling film")
+    else:
+        u_sum = scene.omega * b.dm / 2.0 * (1.0 - (b.D / b.dm) ** 2)        # 2u at α = 0: an upper bound
+        phi = float(thermal_reduction_gupta(thermal_loading_parameter(oil.beta_at(float(T)), oil.eta(float(T)),
+                                                                      u_sum, oil.k_th(float(T)))))
+        out["inlet_heating"] = (True, f"Gupta φ_T = {phi:.3f} at {T:g} °C, the inlet's shear heating "
+                                      "(→ 1 at low speed × viscosity)")
+    if "starvation" in m:
+        out["starvation"] = (m["starvation"], "chosen in the scene")
+    elif not wet or scene.supply not in K_RS or b.bore is None or b.outer_diameter is None:
+        out["starvation"] = (False, "fully flooded (no replenishment factor for this supply or bearing: bore/OD unknown)")
+    else:
+        phi = float(phi_rs(scene.n_rpm, oil.nu(float(T)), b.bore * 1e3, b.outer_diameter * 1e3, skf_K_z(b.kind),
+                           K_RS[scene.supply]))
+        out["starvation"] = (True, f"{scene.supply}: SKF Φ_rs = {phi:.3f} at {T:g} °C on the rolling force "
+                                   "(kinematic replenishment; → 1 when the track refills)")
+
+
 def _choose(scene: Scene, hs: tuple, lm: tuple | None) -> dict:
     """The model choices of a scene, given the high-speed choice ``hs`` and, for a combined load the
     scene does not fix, the load model ``lm`` (each ``(choice, reason)``)."""
@@ -253,6 +310,7 @@ def _choose(scene: Scene, hs: tuple, lm: tuple | None) -> dict:
                          else "Jones outer-raceway control")
     out["hertz"] = (m.get("hertz", "exact"), "chosen in the scene" if "hertz" in m else
                     "exact elliptic integrals (approximations err 1–5 %)")
+    _film_choices(scene, out)
     return out
 
 

@@ -24,7 +24,7 @@ from thermobear.errors import InputError
 from thermobear.losses import ContactSet, LossResult, evaluate_losses
 from thermobear.losses.drag import oil_volume_fraction_parker
 from thermobear.losses.skf import skf_friction
-from thermobear.models import plan, refuse_unloaded_thrust
+from thermobear.models import film_options, plan, refuse_unloaded_thrust
 from thermobear.coupled.limits import overloads
 from thermobear.coupled.pipeline import Family, scene_contacts
 from thermobear.scene import Scene
@@ -57,7 +57,8 @@ class LocalSources:
         flow = float(flow[0]) if np.all(flow == flow[0]) else flow      # one value when the points share it
         self.kw = dict(supply=sc.supply, oil_flow_m3_s=flow, Rq_ball=sc.Rq_ball, Rq_ring=sc.Rq_ring,
                        mu_boundary=sc.mu_boundary, mu_full_film=sc.mu_full_film,
-                       rolling_model=fam.models["rolling"][0], drag=bool(fam.models["drag"][0]))
+                       rolling_model=fam.models["rolling"][0], drag=bool(fam.models["drag"][0]),
+                       **film_options(fam.models))
 
     def result(self, x_C) -> LossResult:
         """Losses at coupled temperatures x (B, 3) [°C] (inner contact, outer contact, oil)."""
@@ -332,7 +333,7 @@ def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oi
     r = evaluate_losses(cs, scene.lubricant, T_C, T_inner_C=T_inner_C, T_outer_C=T_outer_C, T_oil_C=T_oil_C,
                         supply=scene.supply, oil_flow_m3_s=scene.oil_flow, Rq_ball=scene.Rq_ball,
                         Rq_ring=scene.Rq_ring, mu_boundary=scene.mu_boundary, mu_full_film=scene.mu_full_film,
-                        rolling_model=models["rolling"][0], drag=bool(models["drag"][0]))
+                        rolling_model=models["rolling"][0], drag=bool(models["drag"][0]), **film_options(models))
     used = dict(r.models_used)
     used.update(models)
     lm, hs = models["load_model"][0], models["high_speed"][0]

@@ -50,16 +50,22 @@ from thermobear.errors import InputError
 from thermobear.loads.static import LoadDistribution, load_distribution
 from thermobear.losses.drag import drag_loss, oil_volume_fraction_parker
 from thermobear.losses.rolling import RollingContacts, rolling_contacts, rolling_power
-from thermobear.losses.sliding import (deformed_radius, hysteresis_moment, mixed_friction_ianus, pivoting_moment,
-                                       sliding_power_heathcote)
+from thermobear.losses.skf import K_RS, phi_rs, skf_K_z
+from thermobear.losses.sliding import (XI0_HEATHCOTE, deformed_radius, hysteresis_moment, mixed_friction_ianus,
+                                       pivoting_moment, sliding_power_heathcote)
+from thermobear.losses.traction import STRIP_NODES, strip_traction_coefficient
 from thermobear.lubrication.film import REGIMES, EHLContacts, ehl_contacts, specific_film_thickness
+from thermobear.lubrication.thermal_film import (thermal_inlet_viscosity, thermal_loading_parameter,
+                                                 thermal_reduction_gupta)
 
 __all__ = ["LossResult", "ContactSet", "ContactArrays", "bearing_losses", "prepare_contacts", "evaluate_losses",
-           "BREAKDOWN_KEYS", "ROLLING_MODELS"]
+           "BREAKDOWN_KEYS", "ROLLING_MODELS", "TRACTION_MODELS"]
 
 BREAKDOWN_KEYS = ("sliding", "rolling", "pivoting", "hysteresis", "drag")
 ROLLING_MODELS = ("auto", "auto_sharp", "biboulet_ivr", "biboulet_ehl", "biboulet_transition", "houpert_ivr",
                   "houpert_ehl", "biboulet_pvr")
+#: full-film traction: a constant μ_e (seed 000 eq 18), or the oil's Eyring / limiting-shear-stress law
+TRACTION_MODELS = ("constant", "eyring")
 #: rolling_model of this module → model of :func:`~thermobear.losses.rolling.rolling_force`
 _ROLLING_FORCE_MODEL = {"auto": "auto_smooth", "auto_sharp": "auto"}
 SUPPLIES = ("oil_jet", "grease", "oil_bath", "oil_air", "dry_film")
@@ -130,6 +136,11 @@ class ContactSet:
     P_sliding_mu : ndarray        Heathcote sliding power per unit friction coefficient [W]
     P_pivoting_mu : ndarray       pivoting power per unit friction coefficient [W]
     P_hysteresis : ndarray        hysteresis power [W]
+    slips : ndarray               |slip speed| of Heathcote micro-slip and of pivoting at the strip nodes
+                                  ξ_k of :data:`thermobear.losses.traction.STRIP_NODES` [m/s], (*batch, 2, Z, 2, k)
+    p_strip : ndarray             mean pressure across the rolling direction there, (π/4) p_max √(1 − ξ_k²) [Pa],
+                                  (*batch, 2, Z, 1, k)
+    K_z : float or None           SKF bearing-type constant of the replenishment factor (None: bore/OD or kind unknown)
     ehl : EHLContacts             the contacts prepared for the film and regime formulas
                                   (:func:`thermobear.lubrication.film.ehl_contacts`)
     rolling : RollingContacts     the contacts prepared for the rolling-force formulas
@@ -159,6 +170,9 @@ class ContactSet:
     P_sliding_mu: np.ndarray
     P_pivoting_mu: np.ndarray
     P_hysteresis: np.ndarray
+    slips: np.ndarray
+    p_strip: np.ndarray
+    K_z: float | None
     ehl: EHLContacts
     rolling: RollingContacts
 
@@ -274,6 +288,11 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
     P_sl = sliding_power_heathcote(1.0, Q2, a2, Ra2, omega_roll2)
     P_piv = np.asarray(pivoting_moment(1.0, Q2, a2)) * np.abs(spin2)
     P_hys = np.asarray(hysteresis_moment(Q2, brg.D, np.maximum(Ry2 / Rx2, 1.0))) * np.abs(omega_roll2)
+    slips, p_strip = _strip_slips(Q2, a2, b2, Ra2, spin2, omega_roll2)
+    try:
+        K_z = skf_K_z(brg.kind) if brg.bore is not None and brg.outer_diameter is not None else None
+    except InputError:
+        K_z = None
     models = {
         "load_distribution": ("Jones–Harris low-speed, rigid rings" + (", tilt free" if M is not None else ""),
                               "quasi-static ball loads and angles (seed 004 eqs 6–8)"),
@@ -290,8 +309,27 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
                       omega_cage=f(w_cage), omega_ball=f(np.abs(np.broadcast_to(kin.omega_R, omega_c.shape))),
                       models_used=models, Q=f(Q2), alpha=f(al2), Rx=f(Rx2), Ry=f(Ry2),
                       a=f(a2), b=f(b2), u=f(u2), spin=f(spin2), omega_roll=f(omega_roll2), P_sliding_mu=f(P_sl),
-                      P_pivoting_mu=f(P_piv), P_hysteresis=f(P_hys), ehl=ehl_contacts(Q2, Rx2, Ry2, u2, brg.E_prime),
+                      P_pivoting_mu=f(P_piv), P_hysteresis=f(P_hys), slips=f(slips), p_strip=f(p_strip), K_z=K_z,
+                      ehl=ehl_contacts(Q2, Rx2, Ry2, u2, brg.E_prime),
                       rolling=rolling_contacts(Q2, Rx2, Ry2, u2, brg.E_prime, a2, b2))
+
+
+def _strip_slips(Q, a, b, Ra, spin, omega_roll):
+    """Slip speeds of Heathcote micro-slip (|ω_roll| |B(ξ0 a) − B(ξ a)|, seed 000 eq 7) and pivoting
+    (|ω_s| a ξ) at the strip nodes ξ of :data:`~thermobear.losses.traction.STRIP_NODES`, stacked
+    (*contacts, 2, nodes) [m/s], and the slice mean pressure (π/4) p_max √(1 − ξ²) of the Hertz contact
+    there, (*contacts, 1, nodes) [Pa]."""
+    xi = STRIP_NODES[0]
+    a_ = a[..., None]
+    x = xi * a_
+    slip_spin = np.abs(spin)[..., None] * x
+    Ra2 = np.broadcast_to(Ra, a.shape)[..., None] ** 2
+    dB = np.sqrt(np.maximum(Ra2 - x * x, 0.0)) - np.sqrt(np.maximum(Ra2 - (XI0_HEATHCOTE * a_) ** 2, 0.0))
+    slip_heath = np.abs(omega_roll)[..., None] * np.abs(dB)
+    ab = a * b
+    p_max = np.where(ab > 0, 1.5 * Q / (np.pi * np.where(ab > 0, ab, 1.0)), 0.0)
+    p_strip = (0.25 * np.pi) * p_max[..., None] * np.sqrt(1.0 - xi**2)
+    return np.stack((slip_heath, slip_spin), axis=-2), p_strip[..., None, :]
 
 
 # --------------------------------------------------------------------------- temperatures
@@ -377,10 +415,30 @@ def _drag_power(cs, oil, T_oil, eta_oil, supply, oil_flow_m3_s):
     return P if all_run else np.where(run, P, 0.0)
 
 
+def _inlet_viscosity(cs, oil, T2, eta2):
+    """Inlet viscosity lowered by inlet shear heating [Pa s]: Gupta et al. (1992) φ_T at the contacts'
+    thermal loading (pure rolling at the centre, u_s = 2u), read as the viscosity of the thermal film
+    (:mod:`thermobear.lubrication.thermal_film`)."""
+    L = thermal_loading_parameter(_at(oil.beta_at, T2), eta2, 2.0 * cs.u, _at(oil.k_th, T2))
+    return thermal_inlet_viscosity(eta2, thermal_reduction_gupta(L))
+
+
+def _replenishment(cs, oil, T2, supply):
+    """SKF's kinematic replenishment factor Φ_rs (:func:`~thermobear.losses.skf.phi_rs`) of the
+    bearing at each contact's viscosity [-] (bore, OD in mm; K_z of the bearing kind, K_rs of the supply)."""
+    brg = cs.brg
+    if cs.K_z is None or supply not in K_RS:
+        raise InputError("models.starvation", True, "the replenishment factor needs the bearing's bore and outside "
+                         "diameter, an SKF bearing kind and an oil or grease supply (" + ", ".join(K_RS) + ")")
+    n = np.asarray(cs.n_rpm, float)[(...,) + (None,) * 2]
+    return phi_rs(n, _at(oil.nu, T2), brg.bore * 1e3, brg.outer_diameter * 1e3, cs.K_z, K_RS[supply])
+
+
 def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=None, T_oil_C=None,
                     supply: str = "oil_jet", oil_flow_m3_s=0.0, Rq_ball: float = 0.05e-6,
                     Rq_ring: float = 0.1e-6, mu_boundary: float = 0.11, mu_full_film: float = 0.05,
-                    rolling_model: str = "auto", drag: bool = True) -> LossResult:
+                    rolling_model: str = "auto", drag: bool = True, traction: str = "constant",
+                    inlet_heating: bool = False, starvation: bool = False) -> LossResult:
     r"""Temperature-dependent part of the local model on prepared contacts [W].
 
     Parameters
@@ -395,6 +453,14 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     supply, oil_flow_m3_s, Rq_ball, Rq_ring, mu_boundary, mu_full_film, rolling_model, drag
                                   as :func:`bearing_losses`; ``oil_flow_m3_s`` [m³/s] may have the shape
                                   of ``cs.batch``
+    traction : str                ``"constant"``: full-film μ = ``mu_full_film`` (seed 000 eq 18);
+                                  ``"eyring"``: the film's Eyring / limiting-shear-stress traction on the slip
+                                  of each contact (:func:`~thermobear.losses.traction.strip_traction_coefficient`,
+                                  the oil's ``eyring_stress`` and ``limiting_shear``)
+    inlet_heating : bool          thermal reduction of film and rolling force by inlet shear heating
+                                  (Gupta et al. 1992, :mod:`thermobear.lubrication.thermal_film`)
+    starvation : bool             kinematic replenishment: the rolling force times SKF's Φ_rs of the supply
+                                  (:func:`~thermobear.losses.skf.phi_rs`; needs the bearing's bore and OD)
 
     Returns
     -------
@@ -433,36 +499,53 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
         raise InputError("rolling_model", rolling_model, f"must be one of {', '.join(ROLLING_MODELS)}")
     if supply not in SUPPLIES:
         raise InputError("supply", supply, "must be " + ", ".join(SUPPLIES[:-1]) + " or " + SUPPLIES[-1])
+    if traction not in TRACTION_MODELS:
+        raise InputError("traction", traction, f"must be one of {', '.join(TRACTION_MODELS)}")
     dragged = drag and supply not in ("oil_bath", "dry_film") and bool(cs.n_rpm.any())
     Tall, lead, per_ball = _temperatures(cs, T_C, T_inner_C, T_outer_C, T_oil_C, dragged)
     T2 = Tall[..., :2, :]                           # the raceways' contact temperatures
     eta_all = _at(oil.eta, Tall)                    # contacts and (drag) the oil–air mixture in one call
     eta2, alpha2 = eta_all[..., :2, :], _at(oil.alpha_p_at, T2)
-    h_min, h_c = cs.ehl.film_thickness(eta2, alpha2, kind=("min", "central"))
-    reg = cs.ehl.regime(eta2, alpha2)
-    F_R = cs.rolling.force(eta2, _ROLLING_FORCE_MODEL.get(rolling_model, rolling_model), alpha_p=alpha2, regime=reg)
+    eta_in = _inlet_viscosity(cs, oil, T2, eta2) if inlet_heating else eta2
+    h_min, h_c = cs.ehl.film_thickness(eta_in, alpha2, kind=("min", "central"))
+    reg = cs.ehl.regime(eta_in, alpha2)
+    F_R = cs.rolling.force(eta_in, _ROLLING_FORCE_MODEL.get(rolling_model, rolling_model), alpha_p=alpha2, regime=reg)
+    if starvation:
+        F_R = F_R * _replenishment(cs, oil, T2, supply)
     if Rq_ball or Rq_ring:
         Lam = specific_film_thickness(h_min, Rq_ball, Rq_ring)
     else:                                           # smooth surfaces: Λ = ∞, full-film friction
         Lam = np.full(h_min.shape, np.inf)
-    mu = mixed_friction_ianus(Lam, mu_full_film, mu_boundary)
+    if traction == "eyring":
+        mu_f = strip_traction_coefficient(cs.slips, cs.p_strip, h_c[..., None], eta2[..., None], alpha2[..., None],
+                                          oil.eyring_stress, oil.limiting_shear)     # (..., 2, Z, 2): micro-slip, spin
+        mu = mixed_friction_ianus(Lam, mu_f[..., 0], mu_boundary)
+        mu_piv = mixed_friction_ianus(Lam, mu_f[..., 1], mu_boundary)
+    else:
+        mu = mu_piv = mixed_friction_ianus(Lam, mu_full_film, mu_boundary)
     P = np.empty((4,) + h_min.shape)                # rolling, sliding, pivoting, hysteresis per contact
     P[0] = rolling_power(cs.u, F_R)
     np.multiply(mu, cs.P_sliding_mu, out=P[1])
-    np.multiply(mu, cs.P_pivoting_mu, out=P[2])
+    np.multiply(mu_piv, cs.P_pivoting_mu, out=P[2])
     P[3] = cs.P_hysteresis
     if dragged:
         P_drag = _drag_power(cs, oil, Tall[..., 2, 0], eta_all[..., 2, 0], supply, oil_flow_m3_s)
     else:
         P_drag = np.zeros(lead + cs.batch)
-    per_contact = dict(T_C=T2, eta=eta2, h_min=h_min, h_c=h_c, Lambda=Lam, regime=reg.code, mu=mu, F_R=F_R,
+    per_contact = dict(T_C=T2, eta=eta2, h_min=h_min, h_c=h_c, Lambda=Lam, regime=reg.code, mu=mu,
+                       mu_pivoting=np.broadcast_to(mu_piv, h_min.shape), F_R=F_R,
                        P_rolling=P[0], P_sliding=P[1], P_pivoting=P[2], P_hysteresis=P[3], M=reg.M, L=reg.L)
     models = dict(cs.models_used)
     seen = ", ".join(REGIMES[i] for i in np.flatnonzero(np.bincount(reg.index.ravel(), minlength=4)))
     models.update({
         "rolling": (rolling_model, "per-contact regime: " + seen if rolling_model == "auto" else "chosen explicitly"),
         "film": ("Hamrock–Dowson h_min, h_c; regime by NVM dominant terms", "seed 000 eq 15, seed 004 §3"),
-        "friction": ("mixed μ(Λ) seed 000 eq 18", f"μ_e {mu_full_film}, μ_a {mu_boundary}"),
+        "friction": ("mixed μ(Λ) seed 000 eq 18", f"μ_e {mu_full_film}, μ_a {mu_boundary}" if traction != "eyring"
+                     else f"μ_e from the film's traction (Eyring τ0 {oil.eyring_stress:.3g} Pa, Λ_L "
+                          f"{oil.limiting_shear:g}; Johnson & Tevaarwerk 1977, Bair & Winer 1979), μ_a {mu_boundary}"),
+        "inlet_heating": ("Gupta et al. 1992 φ_T on the inlet viscosity" if inlet_heating else "isothermal inlet", ""),
+        "starvation": (f"SKF Φ_rs (K_rs {K_RS.get(supply, 0):g}) on the rolling force" if starvation
+                       else "fully flooded", ""),
         "drag": ("Pouly 2010 sphere drag" if drag and supply not in ("oil_bath", "dry_film") else "none",
                  {"oil_jet": "Parker oil fraction", "oil_air": "oil fraction 1 %", "grease": "air only"}.get(
                      supply, "not modelled for this supply")),
@@ -522,7 +605,8 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
                    supply: str = "oil_jet", oil_flow_m3_s=0.0, Rq_ball: float = 0.05e-6,
                    Rq_ring: float = 0.1e-6, mu_boundary: float = 0.11, mu_full_film: float = 0.05,
                    rolling_model: str = "auto", hertz_method: str = "exact", control: str | None = None,
-                   centrifugal: bool = True, drag: bool = True, load: LoadDistribution | None = None
+                   centrifugal: bool = True, drag: bool = True, load: LoadDistribution | None = None,
+                   traction: str = "constant", inlet_heating: bool = False, starvation: bool = False
                    ) -> LossResult:
     r"""Power loss of a ball bearing by the local contact model.
 
@@ -552,6 +636,9 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
     centrifugal : bool              add F_c/cos α to the outer contact load
     drag : bool                     include the drag term
     load : LoadDistribution         reuse a load distribution (must match Fa, Fr, M)
+    traction, inlet_heating, starvation
+                                    full-film traction law, inlet shear heating, kinematic replenishment
+                                    (see :func:`evaluate_losses`)
 
     Returns
     -------
@@ -579,4 +666,5 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
                           hertz_method=hertz_method, control=control, centrifugal=centrifugal, load=load)
     return evaluate_losses(cs, oil, T_C, T_inner_C=T_inner_C, T_outer_C=T_outer_C, T_oil_C=T_oil_C, supply=supply,
                            oil_flow_m3_s=oil_flow_m3_s, Rq_ball=Rq_ball, Rq_ring=Rq_ring, mu_boundary=mu_boundary,
-                           mu_full_film=mu_full_film, rolling_model=rolling_model, drag=drag)
+                           mu_full_film=mu_full_film, rolling_model=rolling_model, drag=drag, traction=traction,
+                           inlet_heating=inlet_heating, starvation=starvation)

@@ -32,7 +32,7 @@ from thermobear.contact.geometry import BallBearing, bearing, bearing_from_dict,
 from thermobear.contact.hertz import METHODS as HERTZ_METHODS
 from thermobear.errors import InputError
 from thermobear.files import read_toml
-from thermobear.losses.local import ROLLING_MODELS
+from thermobear.losses.local import ROLLING_MODELS, TRACTION_MODELS
 from thermobear.lubrication.lubricant import FIELDS as LUBRICANT_FIELDS
 from thermobear.lubrication.lubricant import Lubricant, lubricant
 from thermobear.schema import Field, check_table, check_value
@@ -61,6 +61,9 @@ MODEL_FIELDS = {
     "skf_R1": Field.number("-", 0.0, None, lo_open=True, doc="SKF rolling constant R1"),
     "skf_S1": Field.number("-", 0.0, None, lo_open=True, doc="SKF sliding constant S1"),
     "skf_mu_EHL": Field.number("-", 0.0, 1.0, lo_open=True, doc="SKF full-film sliding friction"),
+    "traction": Field.choice(*TRACTION_MODELS, doc="full-film traction: constant mu_full_film or the oil's Eyring law"),
+    "inlet_heating": Field.flag("thermal film reduction by inlet shear heating (Gupta et al. 1992)"),
+    "starvation": Field.flag("kinematic replenishment: SKF phi_rs on the rolling force"),
 }
 
 _SUPPLY_FIELDS = {
