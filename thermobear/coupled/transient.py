@@ -10,6 +10,12 @@ step may change boundary temperatures, convection and contact ellipses, not only
 With the film load model the loads depend on the film temperature: each segment is run in
 pieces, the loads re-solved at the start of each at its mean contact temperature, the pieces sized
 for ≈ 2 K of drift.
+
+A logged boundary (``boundary``: node → temperatures sampled at times, e.g. the room, an outer
+ring, the oil inlet as a rig logged them) imposes those nodes, linear between the samples
+(:class:`thermobear.thermal.solve.LinearBoundary`), and varies them continuously through every
+segment and piece: the schedule and the boundary reach the integrator through the same
+``fixed_C(t)`` of :func:`thermobear.thermal.solve_transient`.
 """
 from __future__ import annotations
 
@@ -26,6 +32,7 @@ from thermobear.errors import ExtrapolationWarning, InputError, OutsideValidity,
 from thermobear.models import plan
 from thermobear.scene import Scene
 from thermobear.thermal import solve_transient
+from thermobear.thermal.solve import LinearBoundary
 
 __all__ = ["TransientRun", "transient", "PointModel", "point_model", "heat_sources"]
 
@@ -148,7 +155,7 @@ def _pieces(scenes, t_end_s):
 
 
 def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=None, rtol: float = 1e-5,
-              atol: float = 1e-3, load=None, stop=None, prepared=None) -> TransientRun:
+              atol: float = 1e-3, load=None, stop=None, prepared=None, boundary=None) -> TransientRun:
     """Heat-up of a scene on its thermal network, losses re-evaluated as temperatures change.
 
     Parameters
@@ -165,6 +172,12 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
     stop : callable          ``stop() -> bool``, checked during the integration: True ends the run
                              early, keeping what was integrated (``completed`` False)
     prepared : Prepared      :func:`~thermobear.coupled.sources.prepare` of the scene's family, reused
+                             (with ``boundary``: of the scene with those nodes imposed)
+    boundary : LinearBoundary  logged temperatures of nodes [°C] at times [s] on the run's clock
+                             (:class:`~thermobear.thermal.solve.LinearBoundary`, or a pair
+                             ``(t_s, {node: T_C})``): the nodes are imposed (``T_fixed_C``, a node
+                             receiving loss heat is refused) and follow the samples, linear between
+                             them; the samples must cover [0, t_end_s] (no extrapolation)
 
     Returns
     -------
@@ -183,11 +196,29 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
         if t_eval.ndim != 1 or np.any(~np.isfinite(t_eval)) or np.any((t_eval < 0) | (t_eval > t_end_s)) \
                 or np.any(np.diff(t_eval) <= 0):
             raise InputError("t_eval", t_eval, f"output times must increase within [0, {t_end_s}] s")
+    if boundary is not None:
+        boundary, scene = _imposed(boundary, scene, t_end_s)
     pre = prepared_for(scene, prepared)
-    return _run(_pieces(_segments(scene, schedule, t_end_s), t_end_s), scene, T0_C, t_eval, rtol, atol, load, stop, pre)
+    return _run(_pieces(_segments(scene, schedule, t_end_s), t_end_s), scene, T0_C, t_eval, rtol, atol, load, stop, pre,
+                boundary)
 
 
-def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre) -> TransientRun:
+def _imposed(boundary, scene: Scene, t_end_s):
+    """The boundary, checked to cover [0, t_end_s], and the scene with its nodes imposed at t = 0."""
+    if not isinstance(boundary, LinearBoundary):
+        try:
+            t_s, T_C = boundary
+        except (TypeError, ValueError):
+            raise InputError("boundary", type(boundary).__name__, "a LinearBoundary or (t_s, {node: T_C})") from None
+        boundary = LinearBoundary.of(t_s, T_C)
+    t0, t1 = boundary.span_s
+    if t0 > 0.0 or t1 < t_end_s:
+        raise InputError(boundary.source, f"[{t0:g}, {t1:g}] s", f"the logged boundary must cover the run [0, "
+                         f"{t_end_s:g}] s (a log is not extrapolated)")
+    return boundary, scene.with_(T_fixed_C={**scene.T_fixed_C, **boundary(0.0)})
+
+
+def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None) -> TransientRun:
     T_state = scene.T_ambient_C if T0_C is None else T0_C
     out_t, out_T, out_rep, first, seg_changes, seen = [], {}, {}, None, {}, set()
     film_dt, completed, i = None, True, -1
@@ -221,7 +252,8 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre) -> TransientR
                 want = t_eval[(t_eval >= ts) & ((t_eval < te) | (last_seg & (t_eval <= te)))]
                 seg = np.union1d(want - ts, [te - ts])
             tr = solve_transient(net, heat_sources(pm), te - ts, T0_C=_T0(T_state, net), t_eval=seg,
-                                 rtol=rtol, atol=atol, stop=stop)
+                                 rtol=rtol, atol=atol, stop=stop,
+                                 fixed_C=None if boundary is None else boundary.shifted(ts))
             t_abs = np.asarray(tr.t) + ts
             keep = np.ones(t_abs.size, bool) if t_eval is None else np.isin(np.round(t_abs, 9), np.round(t_eval, 9))
             if not last_seg and tr.completed:
