@@ -16,7 +16,8 @@ import numpy as np
 
 from thermobear.app.output import (Progress, RowWriter, check_out_dir, check_out_file, csv_text, flatten,
                                    print_json, write_text, wrote)
-from thermobear.app.rig import calibrate, channel_map, compare, parse_map, read_log
+from thermobear.app.calibration import calibrate
+from thermobear.app.rig import channel_map, compare, parse_map, read_log
 from thermobear.app.spindown import spin_down_runs
 from thermobear.app.sweep import run_sweep, sweep_points
 from thermobear.contact.geometry import bearing_names
