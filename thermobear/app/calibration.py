@@ -151,7 +151,8 @@ class Calibration:
     def as_dict(self) -> dict:
         return {"values": self.values, "std": self.std, "start": self.start, "cov": self.cov,
                 "rms_residual": self.rms_residual, "dof": self.dof, "nfev": self.nfev, "message": self.message,
-                "metrics": self.comparison.metrics if self.comparison else None}
+                "metrics": self.comparison.metrics if self.comparison else None,
+                "mode": self.comparison.mode if self.comparison else None}
 
     def summary(self) -> str:
         w = max([18] + [len(k) for k in self.values])

@@ -400,7 +400,8 @@ def cmd_compare(args):
         header = ["t_s" if comp.kind == "transient" else "n_rpm"] + [f"{c}{s}" for c in chans for s in ("", "_model")]
         rows = [[comp.x[i]] + [v for c in chans for v in (comp.measured[c][i], comp.simulated[c][i])]
                 for i in range(comp.x.size)]
-        write_text(out_csv, csv_text(header, rows, [f"thermobear compare: {args.log} vs {scene.name}"]))
+        note = f"thermobear compare: {args.log} vs {scene.name}; mode: {comp.mode}"
+        write_text(out_csv, csv_text(header, rows, [note]))
         wrote([out_csv])
     print_json(comp.as_dict()) if args.json else print(comp.summary())
     if out_dir is not None:
