@@ -73,7 +73,7 @@ def test_loss_slopes_are_those_of_one_temperature_at_a_time(kw):
 
 
 def test_transient_report_equals_the_losses_at_its_states():
-    s = _scene()
+    s = _scene(models={"high_speed": True, "load_model": "jones_harris"})      # one model: its point model
     tr = transient(s, 1800.0, t_eval=[0.0, 60.0, 600.0, 1800.0])
     pm = point_model(s)
     ro = tr.roles

@@ -16,7 +16,8 @@ import numpy as np
 
 from thermobear.app.output import (Progress, RowWriter, check_out_dir, check_out_file, csv_text, flatten,
                                    print_json, write_text, wrote)
-from thermobear.app.rig import calibrate, channel_map, compare, parse_map, read_log
+from thermobear.app.calibration import calibrate
+from thermobear.app.rig import channel_map, compare, parse_map, read_log
 from thermobear.app.spindown import spin_down_runs
 from thermobear.app.sweep import run_sweep, sweep_points
 from thermobear.contact.geometry import bearing_names
@@ -399,7 +400,8 @@ def cmd_compare(args):
         header = ["t_s" if comp.kind == "transient" else "n_rpm"] + [f"{c}{s}" for c in chans for s in ("", "_model")]
         rows = [[comp.x[i]] + [v for c in chans for v in (comp.measured[c][i], comp.simulated[c][i])]
                 for i in range(comp.x.size)]
-        write_text(out_csv, csv_text(header, rows, [f"thermobear compare: {args.log} vs {scene.name}"]))
+        note = f"thermobear compare: {args.log} vs {scene.name}; mode: {comp.mode}"
+        write_text(out_csv, csv_text(header, rows, [note]))
         wrote([out_csv])
     print_json(comp.as_dict()) if args.json else print(comp.summary())
     if out_dir is not None:

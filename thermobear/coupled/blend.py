@@ -23,7 +23,7 @@ import numpy as np
 
 from thermobear.errors import OutsideValidity
 
-__all__ = ["blend_states", "blend_losses", "switch_label"]
+__all__ = ["blend_states", "blend_losses", "switch_label", "StackedBlend"]
 
 _SWITCHED = ("high_speed", "load_model")
 
@@ -118,3 +118,35 @@ def blend_losses(parts):
     return dataclasses.replace(
         dom, P_W=_weighted(parts, lambda r: r.P_W), torque_Nm=_weighted(parts, lambda r: r.torque_Nm),
         breakdown_W={k: _weighted(parts, lambda r: r.breakdown_W.get(k, 0.0)) for k in keys}, models_used=used)
+
+
+class StackedBlend:
+    """One operating point's model alternatives as one loss source: ``source`` evaluates the K
+    alternatives as K stacked points of one batch (one call: their contact sets differ, their loss
+    options do not), and the parts and results are weighted with ``weights`` (K,).  The transient's
+    heat sources across a switch band (the steady state blends whole answers)."""
+
+    def __init__(self, source, weights):
+        self.source, self.w = source, np.asarray(weights, float)
+        self.diagonal = source.diagonal
+        self.K = self.w.size
+
+    def _stack(self, x_C):
+        x = np.asarray(x_C, float)
+        return np.repeat(x[..., None, :], self.K, axis=-2)        # (..., n_x) → (..., K, n_x)
+
+    def parts(self, x_C):
+        """Weighted loss parts (..., n_parts) [W] at coupled temperatures (..., n_x) [°C]."""
+        return np.einsum("k,...kp->...p", self.w, self.source.parts(self._stack(x_C)))
+
+    def result(self, x_C):
+        """The alternatives' results with power, torque, breakdown and contact powers weighted (the
+        per-contact arrays keep the alternatives' axis)."""
+        r = self.source.result(self._stack(x_C))
+
+        def wsum(v):
+            v = np.asarray(v, float)
+            return np.tensordot(v, self.w, axes=([-1], [0])) if v.shape[-1:] == (self.K,) else v
+        return dataclasses.replace(r, P_W=wsum(r.P_W), torque_Nm=wsum(r.torque_Nm),
+                                   breakdown_W={k: wsum(v) for k, v in r.breakdown_W.items()},
+                                   contact_W={k: wsum(v) for k, v in r.contact_W.items()})

@@ -209,7 +209,7 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
     rotating : str               ``"inner"`` or ``"outer"``
     hertz_method : str           ``"exact"`` or an approximation (``thermobear.contact.hertz.METHODS``)
     control : str, optional      ball spin control; default ``"radial"`` (thrust), ``"outer"`` otherwise
-    centrifugal : bool           add F_c/cos α to the outer contact load
+    centrifugal : bool           add F_c/cos α to the outer contact load (or one flag per operating point)
     load : LoadDistribution, optional
                                  a solved load distribution (must match Fa, Fr, M); with a leading
                                  batch axis B when solved for array loads
@@ -267,10 +267,11 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
     free = ball_kinematics(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, control=control).omega_c
     w_cage = np.asarray(common_cage_speed(np.broadcast_to(free, sh), Qi), float)
     omega_c = np.broadcast_to(w_cage[ex], sh)
-    if centrifugal and brg.kind != "thrust":
+    cf = np.asarray(centrifugal, bool)
+    if cf.any() and brg.kind != "thrust":
         Fc = 0.5 * brg.ball_mass * brg.dm * omega_c**2
         ca = np.cos(ao)
-        Qo = Qo + np.where(ca > np.cos(np.deg2rad(80.0)), Fc / np.maximum(ca, 1e-3), 0.0)
+        Qo = Qo + np.where(cf[..., None] & (ca > np.cos(np.deg2rad(80.0))), Fc / np.maximum(ca, 1e-3), 0.0)
     kin = caged_ball_kinematics(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, omega_c, Qi, Qo, control=control)
     # both raceways at once, stacked on an axis before the balls (inner, outer): (*batch, 2, Z)
     col = (2, 1)                                                # per-raceway constants against (*batch, 2, Z)
@@ -299,7 +300,8 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
         "hertz": (hertz_method, "exact elliptic integrals" if hertz_method == "exact" else "approximation chosen"),
         "kinematics": (f"no-slip at contact centres, {control} control, one cage speed",
                        "thrust: symmetric radial ball axis (seed 000)" if control == "radial" else "Jones outer-race control"),
-        "centrifugal": ("F_c/cos α on the outer contact" if centrifugal and brg.kind != "thrust" else "none",
+        "centrifugal": ("F_c/cos α on the outer contact" if cf.all() and brg.kind != "thrust" else
+                        "F_c/cos α on the outer contact of some points" if cf.any() and brg.kind != "thrust" else "none",
                         "balls outside the load zone ride on the outer race"),
     }
     f = _frozen
