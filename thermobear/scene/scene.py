@@ -77,24 +77,24 @@ _SUPPLY_FIELDS = {
     "Rq_ring_um": Field.number("µm", 0.0, 10.0, doc="RMS roughness of the races"),
     "mu_boundary": Field.number("-", 0.0, 1.0, doc="boundary friction coefficient (seed 000 eq 18)"),
     "mu_full_film": Field.number("-", 0.0, 1.0, doc="full-film friction coefficient (seed 000 eq 18)"),
-    "oil_level_mm": Field.number("mm", 0.0, None, lo_open=True, doc="oil bath: level above the lowest point of the "
+    "oil_level_mm": Field.number("mm", 0.0, 1e4, lo_open=True, doc="oil bath: level above the lowest point of the "
                                  "outer-ring raceway (SKF 2004's H; default: the middle of the lowest ball)"),
-    "sump_volume_L": Field.number("L", 0.0, None, lo_open=True, doc="oil bath: volume of the bath (default: the oil "
+    "sump_volume_L": Field.number("L", 0.0, 1e5, lo_open=True, doc="oil bath: volume of the bath (default: the oil "
                                   "in the housing's bore below the level)"),
     "grease_fill": Field.number("-", 0.0, 1.0, lo_open=True, doc="grease: fill of the bearing's free volume "
                                 "(default 0.3)"),
-    "air_flow_L_min": Field.number("L/min", 0.0, None, doc="oil–air / oil mist: carrier air flow (at 20 °C, 1 atm)"),
+    "air_flow_L_min": Field.number("L/min", 0.0, 1e5, doc="oil–air / oil mist: carrier air flow (at 20 °C, 1 atm)"),
     "oil_feed": Field.choice("jet", "circulating", doc="oil_jet: a jet (penetration 0.4) or circulating oil through "
                              "the bearing (all of it)"),
 }
 
-_LENGTH = dict(unit="mm", lo=0.0, lo_open=True)
+_LENGTH = dict(unit="mm", lo=0.0, hi=1e4, lo_open=True)
 #: ``[shaft]``: the shaft of a parametric network (thermobear.thermal.build; defaults there).
 SHAFT_FIELDS = {
     "diameter_mm": Field.number(**_LENGTH, doc="shaft diameter (the bearing bore; a stepped shaft is not modelled)"),
-    "bore_mm": Field.number("mm", 0.0, None, doc="bore of a hollow shaft (default 0: solid)"),
-    "length_left_mm": Field.number("mm", 0.0, None, doc="from the bearing's side face to the shaft end (default 2.5 d)"),
-    "length_right_mm": Field.number("mm", 0.0, None, doc="the same on the right"),
+    "bore_mm": Field.number("mm", 0.0, 1e4, doc="bore of a hollow shaft (default 0: solid)"),
+    "length_left_mm": Field.number("mm", 0.0, 1e4, doc="from the bearing's side face to the shaft end (default 2.5 d)"),
+    "length_right_mm": Field.number("mm", 0.0, 1e4, doc="the same on the right"),
     "material": Field.text("material name (default steel-c45)"),
     "end_left": Field.choice("free", "fixed", "adiabatic", doc="free: convection; fixed: held at T_end_left_C; "
                              "adiabatic: a symmetry plane"),
@@ -104,7 +104,7 @@ SHAFT_FIELDS = {
     "surface": Field.choice("air", "enclosed", doc="the shaft outside the housing in the room's air, or enclosed"),
     "interference_um": Field.number("µm", -1e3, 1e3, doc="diametral interference of the inner ring's seat, negative: "
                                     "clearance (default: probable k5/m5 fit, g6 for a rotating outer ring)"),
-    "fit_h_W_m2K": Field.number("W/(m² K)", 0.0, None, lo_open=True, doc="the seat's joint conductance, given"),
+    "fit_h_W_m2K": Field.number("W/(m² K)", 0.0, 1e8, lo_open=True, doc="the seat's joint conductance, given"),
 }
 #: ``[housing]``: the housing of a parametric network.
 HOUSING_FIELDS = {
@@ -118,11 +118,11 @@ HOUSING_FIELDS = {
                                      "pillow: 0.7 × body diameter)"),
     "base_length_mm": Field.number(**_LENGTH, doc="pillow: length of the foot across the shaft (default 2.5 × body "
                                    "diameter)"),
-    "offset_mm": Field.number("mm", doc="axial position of the housing's centre from the bearing's (default 0)"),
+    "offset_mm": Field.number("mm", -1e4, 1e4, doc="axial position of the housing's centre from the bearing's (default 0)"),
     "end_left": Field.choice("air", "mounted", "adiabatic", doc="left end face (flange: mounted by default)"),
     "end_right": Field.choice("air", "mounted", "adiabatic", doc="right end face (default air)"),
     "mounting": Field.choice("frame", "none", doc="bolted to a frame at ambient (default) or not"),
-    "mounting_h_W_m2K": Field.number("W/(m² K)", 0.0, None, lo_open=True, doc="mounting joint (default 3600, "
+    "mounting_h_W_m2K": Field.number("W/(m² K)", 0.0, 1e7, lo_open=True, doc="mounting joint (default 3600, "
                                      "Bergman Table 3.2)"),
     "frame_material": Field.text("material of the frame (default steel-c45)"),
     "air": Field.choice("still", "forced", doc="air around the housing"),
@@ -130,7 +130,7 @@ HOUSING_FIELDS = {
     "emissivity": Field.number("-", 0.0, 1.0, lo_open=True, doc="of the housing's outside (default 0.8)"),
     "interference_um": Field.number("µm", -1e3, 1e3, doc="diametral interference of the outer ring's seat, negative: "
                                     "clearance (default: probable H7 fit, N7 for a rotating outer ring)"),
-    "fit_h_W_m2K": Field.number("W/(m² K)", 0.0, None, lo_open=True, doc="the seat's joint conductance, given"),
+    "fit_h_W_m2K": Field.number("W/(m² K)", 0.0, 1e8, lo_open=True, doc="the seat's joint conductance, given"),
     "seals": Field.choice("none", "shields", "contact", doc="closures of the bearing's cavity"),
 }
 

@@ -407,7 +407,9 @@ def mixed_convection(h_forced, h_free, n=3.0):
     (5.0, 10.0)
     """
     hf, hn = checked("h_forced_W_m2K", h_forced, strict=False), checked("h_free_W_m2K", h_free, strict=False)
-    return _out((hf**n + hn**n) ** (1.0 / n))
+    big, small = np.maximum(hf, hn), np.minimum(hf, hn)
+    ratio = np.divide(small, big, out=np.zeros_like(big), where=big > 0)
+    return _out(big * (1.0 + ratio**n) ** (1.0 / n))          # = (h_F^n + h_N^n)^(1/n), exact at either limit
 
 
 def h_radiation(emissivity, T1_K, T2_K):
