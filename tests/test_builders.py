@@ -1,4 +1,4 @@
-"""Thermal networks built from dimensions (thermobear.thermal.build): the new elements against their
+"""Thermal networks built from dimensions (thermobear.thermal.builders): the new elements against their
 correlations' published numbers and limits, the discretisation rule, energy conservation of built
 networks, the scene sections, the seed rigs rebuilt, the example machines."""
 from __future__ import annotations
@@ -18,11 +18,11 @@ from thermobear.scene.scene import scene_from_dict
 from thermobear.thermal import ROLES, prepare_network, solve_steady
 from thermobear.thermal import conduction as cd
 from thermobear.thermal import convection as cv
-from thermobear.thermal.build import Housing, Lubrication, Machine, Shaft, build_network, segment_count
-from thermobear.thermal.build.axisym import face_conductance, node_radius
-from thermobear.thermal.build.fits import probable_interference, seat_conductance
-from thermobear.thermal.build.lubrication import immersed_share
-from thermobear.thermal.build.rigs import seed002_machine, seed004_machine
+from thermobear.thermal.builders import Housing, Lubrication, Machine, Shaft, build_network, segment_count
+from thermobear.thermal.builders.axisym import face_conductance, node_radius
+from thermobear.thermal.builders.fits import probable_interference, seat_conductance
+from thermobear.thermal.builders.lubrication import immersed_share
+from thermobear.thermal.builders.rigs import seed002_machine, seed004_machine
 
 C0 = 273.15
 STEEL = 42.7 / (7830.0 * 475.0)

@@ -1,8 +1,8 @@
-"""The seed rigs rebuilt with the builders (thermobear.thermal.build.rigs) against their hand-written networks.
+"""The seed rigs rebuilt with the builders (thermobear.thermal.builders.rigs) against their hand-written networks.
 
 The seed-004 rig (networks/oil_jet_ball_bearing.toml) and the seed-002 rig
 (networks/grease_thrust_four_ball.toml) carry estimates (dimensions, materials, joint
-conductances, the mounting); the machines of thermobear.thermal.build.rigs carry the same
+conductances, the mounting); the machines of thermobear.thermal.builders.rigs carry the same
 estimates and are built by the same code as any scene's [shaft] / [housing].  Both are solved with
 the coupled thermobear solution (the same losses) at the seeds' speeds; the built network's housing
 is compared by its volume mean (the hand networks' housing is one node) and by its seat cell.
@@ -11,9 +11,9 @@ Why they differ (the report's columns): (1) the exposed faces — the builders t
 housing's geometry (the end face an annulus outside the bearing; the hand networks count the
 bearing's and shaft's end faces as housing): the column "area" runs the hand network with the
 builders' areas; (2) the conduction inside the shaft and the housing the builders resolve (the
-rule of thermobear.thermal.build.axisym, checked against finite elements in network_fem.md) and
+rule of thermobear.thermal.builders.axisym, checked against finite elements in network_fem.md) and
 the hand networks lump, with the seats in series with the cells' conduction to the seat face;
-(3) what the builders add (thermobear.thermal.build.rigs.DIFFERENCES).
+(3) what the builders add (thermobear.thermal.builders.rigs.DIFFERENCES).
 
 Run:  python validation/network_rigs.py   (≈ 20 s)
 """
@@ -29,8 +29,8 @@ from _common import write_report  # noqa: E402
 
 import thermobear as tb  # noqa: E402
 from thermobear.coupled.steady import steady_state  # noqa: E402
-from thermobear.thermal.build import build_network  # noqa: E402
-from thermobear.thermal.build.rigs import DIFFERENCES, seed002_machine, seed004_machine  # noqa: E402
+from thermobear.thermal.builders import build_network  # noqa: E402
+from thermobear.thermal.builders.rigs import DIFFERENCES, seed002_machine, seed004_machine  # noqa: E402
 
 
 def _areas(bearing, D_h, L_h):

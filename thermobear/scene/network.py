@@ -4,7 +4,7 @@ A scene names a bundled network (``networks/<name>.toml``) or a path (absolute, 
 scene file, or — for a scene built in code — to the working directory), or describes its machine
 (``[shaft]``, ``[housing]`` and the lubrication keys of ``[lubricant]``): the network is then
 built from those dimensions (:func:`machine_from_sections` → a
-:class:`~thermobear.thermal.build.Machine`, ``scene.network``; :func:`thermobear.thermal.build.build_network`).
+:class:`~thermobear.thermal.builders.Machine`, ``scene.network``; :func:`thermobear.thermal.builders.build_network`).
 :func:`network_spec` returns its table with ``[thermal.parameters]`` applied and the ``[thermal]
 fixed_C`` nodes turned into fixed-temperature boundaries; every name the scene uses (parameters,
 imposed nodes, ``[rig.map]`` targets) is checked against the network here, when the scene is read.
@@ -17,7 +17,7 @@ from pathlib import Path
 from thermobear.contact.materials import material_names
 from thermobear.errors import InputError
 from thermobear.files import data_dir, names_in, read_toml
-from thermobear.thermal.build import Housing, Lubrication, Machine, Shaft, build_network
+from thermobear.thermal.builders import Housing, Lubrication, Machine, Shaft, build_network
 from thermobear.thermal.network import ROLES
 
 __all__ = ["network_path", "network_spec", "network_nodes", "network_table", "heat_receiving_nodes",
@@ -120,7 +120,7 @@ def network_spec(network: str, scene_path: str | None = None, *, parameters: dic
 
 def network_table(network, scene_path: str | None = None) -> dict:
     """A fresh copy of a network's table: a file's (bundled name or path), or built from a
-    :class:`~thermobear.thermal.build.Machine`."""
+    :class:`~thermobear.thermal.builders.Machine`."""
     if isinstance(network, Machine):
         return build_network(network).spec
     return copy.deepcopy(read_toml(str(network_path(str(network), scene_path))))

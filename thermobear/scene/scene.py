@@ -41,7 +41,7 @@ from thermobear.lubrication.lubricant import Lubricant, lubricant
 from thermobear.schema import Field, check_table, check_value
 from thermobear.scene.network import (PARAMETRIC, check_lubrication_keys, lubrication_of, machine_from_sections,
                                      network_nodes, network_spec)
-from thermobear.thermal.build import Machine
+from thermobear.thermal.builders import Machine
 
 __all__ = ["Scene", "load_scene", "scene_from_dict", "SUPPLIES", "SECTIONS", "MODEL_FIELDS", "RIG_TARGETS",
            "SHAFT_FIELDS", "HOUSING_FIELDS"]
@@ -89,7 +89,7 @@ _SUPPLY_FIELDS = {
 }
 
 _LENGTH = dict(unit="mm", lo=0.0, hi=1e4, lo_open=True)
-#: ``[shaft]``: the shaft of a parametric network (thermobear.thermal.build; defaults there).
+#: ``[shaft]``: the shaft of a parametric network (thermobear.thermal.builders; defaults there).
 SHAFT_FIELDS = {
     "diameter_mm": Field.number(**_LENGTH, doc="shaft diameter (the bearing bore; a stepped shaft is not modelled)"),
     "bore_mm": Field.number("mm", 0.0, 1e4, doc="bore of a hollow shaft (default 0: solid)"),

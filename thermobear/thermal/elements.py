@@ -5,7 +5,7 @@ plane walls, ball–race constrictions, joints) or :mod:`thermobear.thermal.conv
 radiation, advection); those functions are re-exported here.  An element holds its SI parameters —
 numbers, or arrays over a batch of operating points — and returns its conductance at the node
 temperatures of every operating point at once.  Which element joins which nodes is data
-(``networks/*.toml``, or a network built by :mod:`thermobear.thermal.build`).
+(``networks/*.toml``, or a network built by :mod:`thermobear.thermal.builders`).
 
 =================  ==========================================================================================
 ``type``           conductance
