@@ -24,7 +24,7 @@ the balls and the mixture; the same with the rule refined (Bi ≤ 0.01); the fin
 What the comparison does not test: that a block housing behaves as the annulus of its cross-section
 (both models make that idealisation), the convection correlations themselves.
 
-Run:  python validation/network_fem.py   (needs scikit-fem: pip install "thermobear[validation]"; ≈ 1 min)
+Run:  python validation/network_fem.py   (needs scikit-fem: pip install "thermobear[validation]"; ≈ 1–2 min)
 """
 from __future__ import annotations
 
@@ -37,7 +37,7 @@ import scipy.sparse as sp
 from scipy.sparse.linalg import spsolve
 
 try:                                    # the validation extra: pip install "thermobear[validation]"
-    from skfem import (Basis, BilinearForm, ElementQuad1, FacetBasis, Functional, LinearForm, MeshQuad, asm,
+    from skfem import (Basis, BilinearForm, ElementQuad1, FacetBasis, LinearForm, MeshQuad, asm,
                        condense)
 except ImportError:                     # pragma: no cover - reported by main()
     MeshQuad = None
@@ -140,13 +140,13 @@ class Fem:
         b = asm(LinearForm(lambda v, w: v * 2 * np.pi * w.x[0]), fb)
         return M, b, float(b.sum())
 
-    def volume_mean(self, T, r0, r1, z0, z1):
+    def volume_weights(self, r0, r1, z0, z1):
+        """Weights w (length n) with w·T the volume mean of T over the box (r0..r1, z0..z1)."""
         mid = self.mesh.p[:, self.mesh.t].mean(axis=1)
         el = np.flatnonzero((mid[0] > r0) & (mid[0] < r1) & (mid[1] > z0) & (mid[1] < z1))
         sb = Basis(self.mesh, self.e, elements=el)
-        num = asm(Functional(lambda w: w["T"] * 2 * np.pi * w.x[0]), sb, T=sb.interpolate(T))
-        vol = asm(Functional(lambda w: 2 * np.pi * w.x[0]), sb)
-        return num / vol
+        w = asm(LinearForm(lambda v, w_: v * 2 * np.pi * w_.x[0]), sb)
+        return w / w.sum()
 
 
 def _refine(pts, h):
@@ -207,6 +207,7 @@ def solve_fem(built, net, lay, sources, h_max, T_start):
     def face_T(b, A, node):
         return T[node] if xf is None else float(b @ xf[:fem.n] / A)
     ns = len(scalars)
+    weights = {c.name: fem.volume_weights(c.r0, c.r1, c.z0, c.z1) for c in built.cells}
     for it in range(60):
         acc = _Acc(fem.K0.copy(), np.zeros((fem.n, ns)), np.zeros((ns, ns)), np.zeros(fem.n), np.zeros(ns), fem.n)
         for e, s, M, b, A, cell, other in faces:
@@ -236,7 +237,7 @@ def solve_fem(built, net, lay, sources, h_max, T_start):
             xn[I] = spsolve(A_, b_)
         else:
             xn = spsolve(K, rhs)
-        Tn = _means(fem, xn, built, ring_face, scalars, spos)
+        Tn = _means(fem, xn, built, ring_face, scalars, spos, weights)
         step = max(abs(Tn[k] - T[k]) for k in Tn) if xf is not None else math.inf
         T.update(Tn)
         xf = xn
@@ -291,12 +292,12 @@ def _G(e, Ti, Tj, oil):
     return float(np.asarray(e.conductance(np.array([Ti]), np.array([Tj]), oil, {})).ravel()[0])
 
 
-def _means(fem, x, built, ring_face, scalars, spos):
+def _means(fem, x, built, ring_face, scalars, spos, weights):
     out = {n: float(x[spos[n]]) for n in scalars}
     for n, (M, b, A) in ring_face.items():
         out[n] = float(b @ x[:fem.n] / A)
     for c in built.cells:
-        out[c.name] = float(fem.volume_mean(x[:fem.n], c.r0, c.r1, c.z0, c.z1))
+        out[c.name] = float(weights[c.name] @ x[:fem.n])
     return out
 
 
