@@ -12,6 +12,9 @@ every boolean a TOML boolean, every choice one of its listed values.  Sections (
                  supply, flow_L_h, T_in_C, Rq_ball_um, Rq_ring_um, mu_boundary, mu_full_film
     [operation]  n_rpm, Fa_N, Fr_N, M_Nm (tilt free), rotating, T_C (prescribed temperature)
     [thermal]    network, T_ambient_C, [thermal.parameters], fixed_C = { node = °C }
+    [shaft]      the shaft, [housing] the housing: the thermal network built from these dimensions
+                 (network = "parametric", implied by either section; lubricant keys oil_level_mm,
+                 sump_volume_L, grease_fill, air_flow_L_min, oil_feed)
     [models]     overrides of the model choice (thermobear.models.choose_models)
     [rig]        J_kg_m2, [rig.map] channel = "node" | "input" | "ignore" | "impose:<node>"
 
@@ -36,9 +39,12 @@ from thermobear.losses.local import ROLLING_MODELS, TRACTION_MODELS
 from thermobear.lubrication.lubricant import FIELDS as LUBRICANT_FIELDS
 from thermobear.lubrication.lubricant import Lubricant, lubricant
 from thermobear.schema import Field, check_table, check_value
-from thermobear.scene.network import network_nodes, network_spec
+from thermobear.scene.network import (PARAMETRIC, check_lubrication_keys, lubrication_of, machine_from_sections,
+                                     network_nodes, network_spec)
+from thermobear.thermal.builders import Machine
 
-__all__ = ["Scene", "load_scene", "scene_from_dict", "SUPPLIES", "SECTIONS", "MODEL_FIELDS", "RIG_TARGETS"]
+__all__ = ["Scene", "load_scene", "scene_from_dict", "SUPPLIES", "SECTIONS", "MODEL_FIELDS", "RIG_TARGETS",
+           "SHAFT_FIELDS", "HOUSING_FIELDS"]
 
 SUPPLIES = ("oil_jet", "grease", "oil_bath", "oil_air", "dry_film")
 _T_LO, _T_HI = validity.T_LUBRICANT_REFUSE_C
@@ -74,6 +80,61 @@ _SUPPLY_FIELDS = {
     "Rq_ring_um": Field.number("µm", 0.0, 10.0, doc="RMS roughness of the races"),
     "mu_boundary": Field.number("-", 0.0, 1.0, doc="boundary friction coefficient (seed 000 eq 18)"),
     "mu_full_film": Field.number("-", 0.0, 1.0, doc="full-film friction coefficient (seed 000 eq 18)"),
+    "oil_level_mm": Field.number("mm", 0.0, 1e4, lo_open=True, doc="oil bath: level above the lowest point of the "
+                                 "outer-ring raceway (SKF 2004's H; default: the middle of the lowest ball)"),
+    "sump_volume_L": Field.number("L", 0.0, 1e5, lo_open=True, doc="oil bath: volume of the bath (default: the oil "
+                                  "in the housing's bore below the level)"),
+    "grease_fill": Field.number("-", 0.0, 1.0, lo_open=True, doc="grease: fill of the bearing's free volume "
+                                "(default 0.3)"),
+    "air_flow_L_min": Field.number("L/min", 0.0, 1e5, doc="oil–air / oil mist: carrier air flow (at 20 °C, 1 atm)"),
+    "oil_feed": Field.choice("jet", "circulating", doc="oil_jet: a jet (penetration 0.4) or circulating oil through "
+                             "the bearing (all of it)"),
+}
+
+_LENGTH = dict(unit="mm", lo=0.0, hi=1e4, lo_open=True)
+#: ``[shaft]``: the shaft of a parametric network (thermobear.thermal.builders; defaults there).
+SHAFT_FIELDS = {
+    "diameter_mm": Field.number(**_LENGTH, doc="shaft diameter (the bearing bore; a stepped shaft is not modelled)"),
+    "bore_mm": Field.number("mm", 0.0, 1e4, doc="bore of a hollow shaft (default 0: solid)"),
+    "length_left_mm": Field.number("mm", 0.0, 1e4, doc="from the bearing's side face to the shaft end (default 2.5 d)"),
+    "length_right_mm": Field.number("mm", 0.0, 1e4, doc="the same on the right"),
+    "material": Field.text("material name (default steel-c45)"),
+    "end_left": Field.choice("free", "fixed", "adiabatic", doc="free: convection; fixed: held at T_end_left_C; "
+                             "adiabatic: a symmetry plane"),
+    "end_right": Field.choice("free", "fixed", "adiabatic", doc="the same on the right"),
+    "T_end_left_C": _temperature("temperature of a fixed left end (default ambient)"),
+    "T_end_right_C": _temperature("temperature of a fixed right end (default ambient)"),
+    "surface": Field.choice("air", "enclosed", doc="the shaft outside the housing in the room's air, or enclosed"),
+    "interference_um": Field.number("µm", -1e3, 1e3, doc="diametral interference of the inner ring's seat, negative: "
+                                    "clearance (default: probable k5/m5 fit, g6 for a rotating outer ring)"),
+    "fit_h_W_m2K": Field.number("W/(m² K)", 0.0, 1e8, lo_open=True, doc="the seat's joint conductance, given"),
+}
+#: ``[housing]``: the housing of a parametric network.
+HOUSING_FIELDS = {
+    "type": Field.choice("block", "pillow", "flange", doc="rectangular block, pillow block, flanged housing"),
+    "material": Field.text("material name (default cast-iron-gjl-250)"),
+    "axial_length_mm": Field.number(**_LENGTH, doc="length along the shaft (default 2 × bearing width)"),
+    "height_mm": Field.number(**_LENGTH, doc="block: outer height (default 2 × bearing OD)"),
+    "depth_mm": Field.number(**_LENGTH, doc="block: outer depth across the shaft (default 2 × bearing OD)"),
+    "outer_diameter_mm": Field.number(**_LENGTH, doc="pillow / flange: body diameter (default 2 × bearing OD)"),
+    "centre_height_mm": Field.number(**_LENGTH, doc="shaft axis above the mounting face (block: half the height; "
+                                     "pillow: 0.7 × body diameter)"),
+    "base_length_mm": Field.number(**_LENGTH, doc="pillow: length of the foot across the shaft (default 2.5 × body "
+                                   "diameter)"),
+    "offset_mm": Field.number("mm", -1e4, 1e4, doc="axial position of the housing's centre from the bearing's (default 0)"),
+    "end_left": Field.choice("air", "mounted", "adiabatic", doc="left end face (flange: mounted by default)"),
+    "end_right": Field.choice("air", "mounted", "adiabatic", doc="right end face (default air)"),
+    "mounting": Field.choice("frame", "none", doc="bolted to a frame at ambient (default) or not"),
+    "mounting_h_W_m2K": Field.number("W/(m² K)", 0.0, 1e7, lo_open=True, doc="mounting joint (default 3600, "
+                                     "Bergman Table 3.2)"),
+    "frame_material": Field.text("material of the frame (default steel-c45)"),
+    "air": Field.choice("still", "forced", doc="air around the housing"),
+    "air_speed_m_s": Field.number("m/s", 0.0, 100.0, lo_open=True, doc="forced air speed"),
+    "emissivity": Field.number("-", 0.0, 1.0, lo_open=True, doc="of the housing's outside (default 0.8)"),
+    "interference_um": Field.number("µm", -1e3, 1e3, doc="diametral interference of the outer ring's seat, negative: "
+                                    "clearance (default: probable H7 fit, N7 for a rotating outer ring)"),
+    "fit_h_W_m2K": Field.number("W/(m² K)", 0.0, 1e8, lo_open=True, doc="the seat's joint conductance, given"),
+    "seals": Field.choice("none", "shields", "contact", doc="closures of the bearing's cavity"),
 }
 
 #: Every section's keys (``bearing``: ``catalog`` plus the geometry keys of
@@ -92,12 +153,14 @@ SECTIONS = {
         "T_C": _temperature("prescribed contact temperature (no thermal network)"),
     },
     "thermal": {
-        "network": Field.text("bundled network name or a .toml path"),
+        "network": Field.text('bundled network name, a .toml path, or "parametric" (built from [shaft], [housing])'),
         "T_ambient_C": _temperature("ambient temperature"),
         "parameters": Field.table('"<element or node>.<parameter>" = value overrides'),
         "fixed_C": Field.table("node = measured temperature [°C], imposed"),
     },
     "models": MODEL_FIELDS,
+    "shaft": SHAFT_FIELDS,
+    "housing": HOUSING_FIELDS,
     "rig": {"J_kg_m2": Field.number("kg m^2", 0.0, None, lo_open=True, doc="rotating inertia (spin-down)"),
             "map": Field.table('log channel = "node" | "input" | "ignore" | "impose:<node>"')},
 }
@@ -127,7 +190,8 @@ class Scene:
     T_ambient_C : float           ambient temperature [°C]
     Rq_ball, Rq_ring : float      RMS roughness [m]
     mu_boundary, mu_full_film : float   friction coefficients of seed 000 eq 18 [-]
-    network : str | None          thermal network name or path
+    network : str | Machine | None  thermal network name or path, or the machine a network is built
+                                  from (``[shaft]``, ``[housing]``; ``str(network) == "parametric"``)
     network_parameters : dict     overrides of the network's parameters
     T_fixed_C : dict              node → imposed temperature [°C] (measured rig temperatures; the
                                   node becomes a fixed-temperature boundary of the network)
@@ -156,7 +220,7 @@ class Scene:
     Rq_ring: float = 0.1e-6
     mu_boundary: float = 0.11
     mu_full_film: float = 0.05
-    network: str | None = None
+    network: str | Machine | None = None
     network_parameters: dict = field(default_factory=dict)
     T_fixed_C: dict = field(default_factory=dict)
     models: dict = field(default_factory=dict)
@@ -202,7 +266,12 @@ class Scene:
                 raise InputError(f"scene.with_({k})", v, f"unknown override; accepted: {', '.join(_WITH)}")
             kw.update(_WITH[k](self, v, k))
         new = dataclasses.replace(self, **kw)
-        _check_scene(new, network_changed=bool({"network", "network_parameters", "T_fixed_C"} & set(kw)))
+        if new.network == PARAMETRIC:                                   # named now: build it from the sections
+            new = dataclasses.replace(new, network=_machine(new))
+        elif isinstance(new.network, Machine) and {"bearing", "lubricant", "supply", "rotating"} & set(kw):
+            new = dataclasses.replace(new, network=_machine(new))       # the machine follows its bearing
+        _check_scene(new, network_changed=bool({"network", "network_parameters", "T_fixed_C", "bearing", "lubricant",
+                                                "supply", "rotating"} & set(kw)))
         return new
 
 
@@ -307,6 +376,31 @@ def _rig_map(v) -> dict:
     return check_table(v, {}, "rig.map", extra=lambda k: Field.text("node name, input, ignore or impose:<node>"))
 
 
+def _machine(s: Scene) -> Machine:
+    """The machine of a parametric scene, from its ``[shaft]``, ``[housing]`` and ``[lubricant]`` tables
+    (at the scene's own operating point: what the discretisation rule reads)."""
+    d = s.raw or {}
+    sh = check_table(d.get("shaft", {}), SHAFT_FIELDS, "shaft")
+    ho = check_table(d.get("housing", {}), HOUSING_FIELDS, "housing")
+    lub = check_table(d.get("lubricant", {}), SECTIONS["lubricant"], "lubricant") if "lubricant" in d else {}
+    old = s.network if isinstance(s.network, Machine) else None
+    if old is not None and not d:
+        return dataclasses.replace(old, bearing=s.bearing, rotating=s.rotating,
+                                   lubrication=lubrication_of({}, s.lubricant, s.supply))
+    return machine_from_sections(sh, ho, lub, bearing=s.bearing, lubricant=s.lubricant, supply=s.supply,
+                                 rotating=s.rotating, n_rpm=s.n_rpm, T_ambient_C=s.T_ambient_C, Fa=s.Fa, Fr=s.Fr)
+
+
+def _network_of(d: dict, th: dict):
+    """The scene's network: a name or path, or ``"parametric"`` when it describes its machine."""
+    described = [k for k in ("shaft", "housing") if k in d]
+    net = th.get("network")
+    if described and net not in (None, PARAMETRIC):
+        raise InputError("thermal.network", net, f"[{'], ['.join(described)}] describe the machine of a parametric "
+                         'network: remove them, or the network name (or write network = "parametric")')
+    return PARAMETRIC if described else net
+
+
 def _check_scene(s: Scene, network_changed: bool = True):
     """Checks that involve more than one key (and the network's names)."""
     if s.supply == "oil_jet" and s.T_C is None and s.network is not None and s.T_oil_in_C is None:
@@ -349,10 +443,13 @@ def scene_from_dict(d: dict, path: str | None = None) -> Scene:
         oil_flow=lsec.get("flow_L_h", 0.0) * 1e-3 / 3600.0, T_oil_in_C=lsec.get("T_in_C"),
         T_ambient_C=th.get("T_ambient_C", 20.0), Rq_ball=lsec.get("Rq_ball_um", 0.05) * 1e-6,
         Rq_ring=lsec.get("Rq_ring_um", 0.1) * 1e-6, mu_boundary=lsec.get("mu_boundary", 0.11),
-        mu_full_film=lsec.get("mu_full_film", 0.05), network=th.get("network"),
+        mu_full_film=lsec.get("mu_full_film", 0.05), network=_network_of(d, th),
         network_parameters=_parameters(th.get("parameters", {})), T_fixed_C=_fixed(th.get("fixed_C")),
         models=models, rig_J_kg_m2=rig.get("J_kg_m2"), rig_map=_rig_map(rig.get("map", {})),
         source=meta.get("source", ""), path=path, raw=d)
+    check_lubrication_keys(lsec, s.supply)
+    if s.network == PARAMETRIC:
+        s = dataclasses.replace(s, network=_machine(s))
     _check_scene(s)
     return s
 

@@ -73,7 +73,7 @@ STATIC_ROOTS = frozenset({"bearing"})
 
 # unit suffix → (lower bound, strict) checked on every numeric key
 _POSITIVE = ("_m", "_m2", "_m3", "_kg", "_W_mK", "_W_m2K", "_J_K", "_kg_m3", "_J_kgK", "_W_K", "_K_W", "_N")
-_NONNEG = ("_m3_s", "_m_s", "_kg_s")
+_NONNEG = ("_m3_s", "_m_s", "_kg_s", "_rad_s")
 _DIMENSIONLESS = ("beta", "emissivity", "oil_fraction", "n_balls")
 _NODE_KEYS = {"C_J_K", "mass_kg", "volume_m3", "material", "T_C", "description", "estimated", "measured_by",
               "source"}
@@ -223,7 +223,8 @@ def _instantiate(e: ElementTemplate, ctx, B, oil) -> Element:
         p["a_m"], p["b_m"], p["semi_axes_from"] = _semi_axes(e, p, ctx, B)
     if e.type in ("convection", "advection") and oil is None:
         needs = (e.type == "advection" and not ("rho_kg_m3" in p and "cp_J_kgK" in p)) or (
-            e.type == "convection" and p["correlation"] in HARRIS_COEFFICIENTS and p.get("fluid", "oil_air") != "air")
+            e.type == "convection" and p["correlation"] in HARRIS_COEFFICIENTS and p.get("fluid", "oil_air") != "air"
+        ) or (e.type == "convection" and p.get("fluid") == "oil")
         if needs:
             key = "correlation" if e.type == "convection" else "rho_kg_m3"
             raise InputError(f"{e.field}.{key}", p.get(key), "needs the lubricant 'oil' in the context (or give "
