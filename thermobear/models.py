@@ -18,7 +18,17 @@ sub-models serve it, each with the reason, overridable from the scene's ``[model
   every ball on both races at most 6 % — validation/report/film_criterion.md).  Grease and oil–air
   contacts outside the load zone are taken as starved.
 * **drag** — only for jet / oil–air supply, or grease at n·d_m ≥ 1e5 mm/min (below, churning of a
-  few balls in air is < 0.1 % of the contact losses).
+  few balls in air is < 0.1 % of the contact losses).  In an oil bath the balls above the bath run in
+  air: their loss there is left out, the bath's is **churning**.
+* **churning** — where an oil level reaches the balls (``lubricant.oil_level_mm`` > 0; an oil bath
+  without a level takes H = D/2, the lowest ball centre, SKF's recommended static level): the local
+  model's ball drag in oil weighted by the immersed share of the ball path
+  (:func:`~thermobear.losses.drag.churning_loss`), or SKF's drag term with V_M at H/dm (SKF 2018).
+* **seals** — contact seals (RSL, RSH, RS1, …): SKF 2004's M_seal (:mod:`thermobear.losses.seals`);
+  shields and open bearings have none.
+* **cage** — a ring-guided cage (``bearing.cage = "inner_ring" | "outer_ring"``): Petroff land friction
+  and ball–pocket sliding (:mod:`thermobear.losses.cage`); a ball-centred cage (the default: pressed
+  steel and polyamide cages) none.
 * **rolling** — per-contact regime selection (seed 004 §4.3) unless named.
 * **hertz** — exact (one ellipticity solve per contact; the approximations' errors, 1–5 %, would
   show in p_max and the film).
@@ -34,9 +44,13 @@ from thermobear.arrays import take
 from thermobear.errors import InputError, NoEquilibrium, SolverError
 from thermobear.loads import LoadDistribution, load_distribution, needs_high_speed
 from thermobear.loads.highspeed import load_distribution_high_speed
+from thermobear.losses.cage import cage_land_estimate
+from thermobear.losses.skf import drag_loss_factor_VM
+from thermobear.losses.seals import CONTACT_SEALS, seal_counterface_estimate_mm
 from thermobear.scene import Scene
 
-__all__ = ["choose_models", "plan", "plan_many", "open_contacts", "dry_load", "is_symmetric", "FLOODED"]
+__all__ = ["choose_models", "plan", "plan_many", "open_contacts", "dry_load", "is_symmetric", "FLOODED",
+           "added_losses", "oil_level", "seal_diameter_mm", "cage_land"]
 
 FLOODED = ("oil_jet", "oil_bath")
 
@@ -186,10 +200,13 @@ def _choose(scene: Scene, dry) -> dict:
         out["drag"] = (True, f"{scene.supply}: balls run through an oil–air mixture")
     elif ndm >= 1e5 and scene.supply == "grease":
         out["drag"] = (True, f"n dm = {ndm:.3g} mm rpm >= 1e5")
+    elif scene.supply == "oil_bath":
+        out["drag"] = (False, "oil bath: the balls run in air above the bath (their loss in the bath: churning)")
     else:
         out["drag"] = (False, f"{scene.supply} at n dm = {ndm:.3g} mm rpm: churning negligible")
     lm = m.get("losses", "local")
     out["losses"] = (lm, "chosen in the scene" if "losses" in m else "per-contact local model (default)")
+    out.update(added_losses(scene))
     out["rolling"] = (m.get("rolling", "auto"), "chosen in the scene" if "rolling" in m
                       else "per-contact regime (IVR: Houpert, PVR/IVE: Biboulet, EHL: Houpert; seed 004)")
     default_control = "radial" if b.kind == "thrust" else "outer"
@@ -198,6 +215,98 @@ def _choose(scene: Scene, dry) -> dict:
                          else "Jones outer-raceway control")
     out["hertz"] = (m.get("hertz", "exact"), "chosen in the scene" if "hertz" in m else
                     "exact elliptic integrals (approximations err 1–5 %)")
+    return out
+
+
+def oil_level(scene: Scene) -> tuple:
+    """``(H [m] or None, how)``: the oil level above the lowest point of the outer-ring raceway —
+    ``lubricant.oil_level_mm``, or for an oil bath without it D/2 (the lowest ball centre: SKF's
+    recommended static level, "at the centre of the lowest rolling element")."""
+    if scene.oil_level is not None:
+        return scene.oil_level, "given"
+    if scene.supply == "oil_bath":
+        return 0.5 * scene.bearing.D, "not given: H = D/2, the lowest ball centre (SKF's static oil-bath level)"
+    return None, ""
+
+
+def seal_diameter_mm(scene: Scene) -> tuple:
+    """``(d_s [mm], how)``: the seal counterface diameter given or estimated
+    (:func:`~thermobear.losses.seals.seal_counterface_estimate_mm`)."""
+    if scene.seal_diameter is not None:
+        return scene.seal_diameter * 1e3, "given"
+    b = scene.bearing
+    return seal_counterface_estimate_mm(b.bore * 1e3, b.outer_diameter * 1e3), "estimated d + 0.25 (D − d)"
+
+
+def cage_land(scene: Scene) -> tuple:
+    """``(dict d_land, b_land, c_land [m], estimated keys)`` of a ring-guided cage
+    (:func:`~thermobear.losses.cage.cage_land_estimate` for what the scene does not give)."""
+    b = scene.bearing
+    land = cage_land_estimate(scene.cage, b.bore * 1e3, b.outer_diameter * 1e3, b.width * 1e3)
+    est = ["d_land"]
+    for key, given in (("b_land", scene.cage_land_width), ("c_land", scene.cage_land_clearance)):
+        if given is None:
+            est.append(key)
+        else:
+            land[key] = given
+    return land, est
+
+
+def _forced(m, key, cond, why):
+    """``m[key]`` forced True where ``cond`` is False: InputError saying why."""
+    if m.get(key) is True and not cond:
+        raise InputError(f"models.{key}", True, why)
+
+
+def added_losses(scene: Scene) -> dict:
+    """The choices ``churning``, ``seals`` and ``cage`` (see the module docstring): each ``(choice, reason)``,
+    choice False where the scene has no such loss.  Needs no load solve (the coupling of a scene family
+    is built from it)."""
+    m, b, skf = scene.models, scene.bearing, scene.models.get("losses") == "skf"
+    out = {}
+    H, how = oil_level(scene)
+    _forced(m, "churning", H is not None and H > 0, "churning needs an oil level reaching the balls: give "
+            "lubricant.oil_level_mm > 0 with an oil supply")
+    if m.get("churning") is False:
+        out["churning"] = (False, "chosen in the scene")
+    elif H is None:
+        out["churning"] = (False, f"{scene.supply}: no oil bath (no lubricant.oil_level_mm)")
+    elif H <= 0:
+        out["churning"] = (False, "oil level 0: no ball reaches the bath")
+    else:
+        lvl = f"oil level H = {H * 1e3:.3g} mm ({how}), H/dm = {H / b.dm:.3g}"
+        out["churning"] = (("skf_2018", f"{lvl}: SKF 2018 drag term, V_M = {float(drag_loss_factor_VM(H / b.dm)):.3g} "
+                            "(SKF's diagram, digitised)") if skf else
+                           ("pouly_immersed", f"{lvl}: the balls cross the bath; Pouly's sphere drag in oil × the "
+                            "immersed share of the ball path"))
+    contact = scene.seals in CONTACT_SEALS
+    _forced(m, "seals", contact, f"seal friction needs a contact seal (bearing.seals one of {', '.join(CONTACT_SEALS)})")
+    if m.get("seals") is False:
+        out["seals"] = (False, "chosen in the scene")
+    elif not contact:
+        out["seals"] = (False, "open bearing" if scene.seals == "none" else
+                        f"shields ×{scene.seal_sides}: non-contact, no friction (SKF)")
+    else:
+        ds, how = seal_diameter_mm(scene)
+        out["seals"] = (f"SKF 2004 {scene.seals} ×{scene.seal_sides}",
+                        f"M_seal = K_S1 d_s^β + K_S2 (SKF table 4), d_s = {ds:.3g} mm ({how})")
+    ring = scene.cage != "balls"
+    _forced(m, "cage", ring and scene.supply != "dry_film" and not skf, "the cage loss needs a ring-guided cage "
+            "(bearing.cage = 'inner_ring' | 'outer_ring') with an oil or grease film on its land, and the local model")
+    if m.get("cage") is False:
+        out["cage"] = (False, "chosen in the scene")
+    elif not ring:
+        out["cage"] = (False, "ball-centred cage: no land; its pocket forces balance only the cage's windage "
+                              "(not modelled)")
+    elif skf:
+        out["cage"] = (False, "SKF model: the cage is inside its empirical constants")
+    elif scene.supply == "dry_film":
+        out["cage"] = (False, "dry film: no fluid film on the cage land")
+    else:
+        land, est = cage_land(scene)
+        out["cage"] = ("petroff_land+pocket", f"{scene.cage}-centred cage: Petroff land friction (land Ø "
+                       f"{land['d_land'] * 1e3:.3g} mm, width {land['b_land'] * 1e3:.3g} mm, clearance "
+                       f"{land['c_land'] * 1e3:.3g} mm; estimated: {', '.join(est)}) + ball–pocket sliding")
     return out
 
 
