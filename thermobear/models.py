@@ -100,8 +100,8 @@ def _dry_key(scene: Scene):
     m = scene.models
     if m.get("load_model") in ("closed_form", "film") or (scene.T_C is None and not scene.network):
         return None
-    if m.get("losses") == "skf" and scene.supply not in FLOODED and scene.T_C is not None:
-        return None         # prescribed T, SKF losses, no film test: no loads needed
+    if m.get("losses") == "skf":
+        return None         # the SKF global model reads F_a, F_r only: no film test, no dry loads needed
     try:
         hs = _high_speed_choice(scene)[0] == "yes"
     except InputError:
@@ -154,6 +154,8 @@ def _combined_load_model(scene: Scene, high_speed: bool, dry) -> tuple:
     """Dry Jones–Harris, or the film load model when the dry solution leaves contacts open in a
     flooded bearing (see :func:`open_contacts`)."""
     jh = "combined load: balls differ (Jones–Harris, seed 004 eqs 6–8)"
+    if scene.models.get("losses") == "skf":
+        return "jones_harris", jh + "; SKF global model: its losses read F_a, F_r only (no film test)"
     if scene.supply not in FLOODED:
         return "jones_harris", jh + f"; {scene.supply}: contacts outside the load zone taken as starved (no film load)"
     if isinstance(dry, SolverError):    # the load step itself will say so (a sweep records it for its point)

@@ -225,7 +225,8 @@ def _models_used(fam: Family, r, template, cp: Coupling, nw: _Newton, b: int) ->
                                ("F_c/cos α on the outer contact", "balls outside the load zone ride on the outer race"))
     else:
         used["centrifugal"] = ("none", "thrust bearing")
-    used["thermal"] = (f"network {template.name}", f"fixed point on 3 coupled temperatures: {nw.method[b]}, "
+    used["thermal"] = (f"network {template.name}", f"fixed point on {len(cp.temperatures)} coupled temperatures: "
+                                                   f"{nw.method[b]}, "
                                                    f"{int(nw.its[b])} iterations, loop gain {nw.gain[b]:.2f}")
     used["node_roles"] = (cp.roles, "contact temperature = mean of ball and race nodes (seed 004 §4.5)")
     return used

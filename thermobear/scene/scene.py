@@ -219,7 +219,7 @@ class Scene:
 
         Accepted keys: n_rpm, Fa (or Fa_N), Fr (Fr_N), M (M_Nm; None holds the tilt), T_C (None: solve
         the network), T_oil_in_C, T_ambient_C, oil_flow_L_h, rotating, supply, lubricant (name, table or
-        Lubricant), bearing (catalogue name, table or BallBearing), seals, seal_sides, oil_level_mm (None:
+        Lubricant), bearing (catalogue name, table or BallBearing), seals, seal_sides, cage, oil_level_mm (None:
         not given), network, network_parameters (merged), T_fixed_C (node → °C, replaces; ``{}`` clears)
         and models (merged).
 
@@ -290,6 +290,7 @@ _WITH = {
     "seals": lambda s, v, name: {"seals": check_value(v, SECTIONS["bearing"]["seals"], name),
                                  "seal_sides": _default_sides(check_value(v, SECTIONS["bearing"]["seals"], name))},
     "seal_sides": lambda s, v, name: {"seal_sides": check_value(v, SECTIONS["bearing"]["seal_sides"], name)},
+    "cage": lambda s, v, name: {"cage": check_value(v, SECTIONS["bearing"]["cage"], name)},
     "rotating": lambda s, v, name: {"rotating": check_value(v, SECTIONS["operation"]["rotating"], name)},
     "supply": lambda s, v, name: {"supply": check_value(v, SECTIONS["lubricant"]["supply"], name)},
     "network": lambda s, v, name: {"network": check_value(v, SECTIONS["thermal"]["network"], name)},
