@@ -53,6 +53,13 @@ def _clip(x_C):
     return np.clip(x_C, *T_LUBRICANT_REFUSE_C)
 
 
+def _through_flow(fam: Family) -> np.ndarray:
+    """(B,) oil flow through the bearing [m³/s]: the supplied jet flow × the share that enters it
+    (``lubricant.jet_penetration``, seed 004 §4.5's β) — the W of Parker's oil fraction
+    (:func:`thermobear.losses.drag.oil_volume_fraction_parker`)."""
+    return fam.values("oil_flow") * fam.values("jet_penetration")
+
+
 def _one(values: np.ndarray):
     """One float when every point shares the value, else the (B,) array."""
     return float(values[0]) if np.all(values == values[0]) else values
@@ -90,7 +97,7 @@ class LocalSources:
     def __init__(self, fam: Family, contacts: ContactSet):
         self.fam, self.contacts = fam, contacts
         sc = fam.scene
-        self.kw = dict(supply=sc.supply, oil_flow_m3_s=_one(fam.values("oil_flow")), Rq_ball=sc.Rq_ball,
+        self.kw = dict(supply=sc.supply, oil_flow_m3_s=_one(_through_flow(fam)), Rq_ball=sc.Rq_ball,
                        Rq_ring=sc.Rq_ring, mu_boundary=sc.mu_boundary, mu_full_film=sc.mu_full_film,
                        rolling_model=fam.models["rolling"][0], drag=bool(fam.models["drag"][0]),
                        **_added_local(fam.scenes, fam.models))
@@ -238,7 +245,7 @@ def network_context(fam: Family, contacts: ContactSet | None = None) -> dict:
     T_in = fam.values("T_oil_in_C")
     scene = {"n_rpm": n, "T_ambient_C": fam.values("T_ambient_C"),
              "T_oil_in_C": np.where(np.isnan(T_in), fam.values("T_ambient_C"), T_in),
-             "oil_flow_m3_s": fam.values("oil_flow")}
+             "oil_flow_m3_s": fam.values("oil_flow"), "jet_penetration": fam.values("jet_penetration")}
     for key in sc.network_parameters:
         if "." not in key:
             scene[key] = np.array([s.network_parameters[key] for s in fam.scenes], float)
@@ -263,7 +270,7 @@ def _oil_fraction(fam: Family, n_rpm) -> np.ndarray:
     0 otherwise (the drag model's choices, :func:`thermobear.losses.evaluate_losses`)."""
     sc = fam.scene
     if sc.supply == "oil_jet":
-        W = fam.values("oil_flow") * 1e6 * 60.0
+        W = _through_flow(fam) * 1e6 * 60.0
         run = n_rpm > 0
         X = np.zeros(n_rpm.shape)
         if run.any():
@@ -415,7 +422,7 @@ def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oi
         if over:
             raise over[0]
     r = evaluate_losses(cs, scene.lubricant, T_C, T_inner_C=T_inner_C, T_outer_C=T_outer_C, T_oil_C=T_oil_C,
-                        supply=scene.supply, oil_flow_m3_s=scene.oil_flow, Rq_ball=scene.Rq_ball,
+                        supply=scene.supply, oil_flow_m3_s=scene.oil_flow * scene.jet_penetration, Rq_ball=scene.Rq_ball,
                         Rq_ring=scene.Rq_ring, mu_boundary=scene.mu_boundary, mu_full_film=scene.mu_full_film,
                         rolling_model=models["rolling"][0], drag=bool(models["drag"][0]),
                         **_added_local([scene], models))

@@ -16,7 +16,9 @@ definitions found nothing beyond seed 004's wording):
 * ρ_mix = X ρ_oil + (1 − X) ρ_air and μ_mix = X μ_oil + (1 − X) μ_air (linear
   rules, unconfirmed – textbook).
 * X from Parker (1984, NASA TP-2275, as quoted by Harris), X = 1e5 W^0.37 / (n dm^1.7)
-  with W in cm³/min, n in r/min, dm in mm.  The number is used as the volume
+  with W in cm³/min, n in r/min, dm in mm; W is the flow *through the bearing*: of an oil jet only a
+  share β passes (seed 004 §4.5: β ≈ 0.4, Brossier et al. 2021; the scene's
+  ``lubricant.jet_penetration``; validation/report/seed004_drag.md).  The number is used as the volume
   *fraction* (default ``convention="fraction"``), not as a percent: this is what
   seed 004 §6 implies — "multiplying the oil flow rate by 1.5 leads to an increase
   of drag losses equal to 16 %" — since 1.5^0.37 = 1.162 only if ρ_mix is dominated

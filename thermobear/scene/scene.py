@@ -77,6 +77,8 @@ _SUPPLY_FIELDS = {
     "Rq_ring_um": Field.number("µm", 0.0, 10.0, doc="RMS roughness of the races"),
     "mu_boundary": Field.number("-", 0.0, 1.0, doc="boundary friction coefficient (seed 000 eq 18)"),
     "mu_full_film": Field.number("-", 0.0, 1.0, doc="full-film friction coefficient (seed 000 eq 18)"),
+    "jet_penetration": Field.number("-", 0.0, 1.0, lo_open=True, doc="share of the supplied jet flow that passes "
+                                    "through the bearing (seed 004 §4.5 β); default 1: flow_L_h passes whole"),
     "oil_level_mm": Field.number("mm", 0.0, None, doc="oil-bath level above the lowest point of the outer-ring "
                                  "raceway (SKF's H); oil bath default: the lowest ball centre, D/2"),
 }
@@ -141,6 +143,8 @@ class Scene:
     M : float | None              tilting moment [N m]; None holds the tilt
     T_C : float | None            prescribed contact temperature [°C] (None: solve the thermal network)
     oil_flow : float              supplied oil flow [m^3/s] (oil jet)
+    jet_penetration : float       share of it that passes through the bearing [-] (seed 004 §4.5 β;
+                                  default 1): the flow of Parker's oil fraction (drag)
     oil_level : float | None      oil-bath level above the lowest point of the outer-ring raceway [m]
                                   (SKF's H); None: not given (an oil bath then takes D/2)
     T_oil_in_C : float | None     oil inlet temperature [°C]
@@ -176,6 +180,7 @@ class Scene:
     M: float | None = None
     T_C: float | None = None
     oil_flow: float = 0.0
+    jet_penetration: float = 1.0
     T_oil_in_C: float | None = None
     T_ambient_C: float = 20.0
     Rq_ball: float = 0.05e-6
@@ -218,10 +223,10 @@ class Scene:
         """Copy with values changed, in the scene's own edge units, each checked as in a scene file.
 
         Accepted keys: n_rpm, Fa (or Fa_N), Fr (Fr_N), M (M_Nm; None holds the tilt), T_C (None: solve
-        the network), T_oil_in_C, T_ambient_C, oil_flow_L_h, rotating, supply, lubricant (name, table or
-        Lubricant), bearing (catalogue name, table or BallBearing), seals, seal_sides, cage, oil_level_mm (None:
-        not given), network, network_parameters (merged), T_fixed_C (node → °C, replaces; ``{}`` clears)
-        and models (merged).
+        the network), T_oil_in_C, T_ambient_C, oil_flow_L_h, jet_penetration, oil_level_mm (None: not
+        given), rotating, supply, lubricant (name, table or Lubricant), bearing (catalogue name, table or
+        BallBearing), seals, seal_sides, cage, network, network_parameters (merged), T_fixed_C (node → °C,
+        replaces; ``{}`` clears) and models (merged).
 
         >>> from thermobear.scene import load_scene
         >>> import thermobear
@@ -287,6 +292,7 @@ _WITH = {
     "T_ambient_C": _with_number("thermal", "T_ambient_C", "T_ambient_C"),
     "oil_flow_L_h": _with_number("lubricant", "flow_L_h", "oil_flow", scale=1e-3 / 3600.0),
     "oil_level_mm": _with_number("lubricant", "oil_level_mm", "oil_level", scale=1e-3, nullable=True),
+    "jet_penetration": _with_number("lubricant", "jet_penetration", "jet_penetration"),
     "seals": lambda s, v, name: {"seals": check_value(v, SECTIONS["bearing"]["seals"], name),
                                  "seal_sides": _default_sides(check_value(v, SECTIONS["bearing"]["seals"], name))},
     "seal_sides": lambda s, v, name: {"seal_sides": check_value(v, SECTIONS["bearing"]["seal_sides"], name)},
@@ -416,7 +422,8 @@ def scene_from_dict(d: dict, path: str | None = None) -> Scene:
         bearing=_bearing_of(d["bearing"]), lubricant=_lubricant_of(d["lubricant"], "lubricant"),
         supply=lsec.get("supply", "oil_jet"), n_rpm=op["n_rpm"], rotating=op.get("rotating", "inner"),
         Fa=op.get("Fa_N", 0.0), Fr=op.get("Fr_N", 0.0), M=op.get("M_Nm"), T_C=op.get("T_C"),
-        oil_flow=lsec.get("flow_L_h", 0.0) * 1e-3 / 3600.0, T_oil_in_C=lsec.get("T_in_C"),
+        oil_flow=lsec.get("flow_L_h", 0.0) * 1e-3 / 3600.0, jet_penetration=lsec.get("jet_penetration", 1.0),
+        T_oil_in_C=lsec.get("T_in_C"),
         T_ambient_C=th.get("T_ambient_C", 20.0), Rq_ball=lsec.get("Rq_ball_um", 0.05) * 1e-6,
         Rq_ring=lsec.get("Rq_ring_um", 0.1) * 1e-6, mu_boundary=lsec.get("mu_boundary", 0.11),
         mu_full_film=lsec.get("mu_full_film", 0.05), network=th.get("network"),
