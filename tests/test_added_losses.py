@@ -29,8 +29,10 @@ def test_model_choice_says_why():
     assert m["drag"][0] is False
     assert choose_models(BATH.with_(models={"losses": "skf"}))["churning"][0] == "skf_2018"
     assert choose_models(BATH.with_(oil_level_mm=0.0))["churning"] == (False, "oil level 0: no ball reaches the bath")
-    default = choose_models(BATH.with_(oil_level_mm=None))["churning"]
-    assert default[0] and "D/2" in default[1]
+    missing = choose_models(BATH.with_(oil_level_mm=None))["churning"]
+    assert missing[0] is False and "oil_level_mm" in missing[1]
+    no_level = scene_losses(BATH.with_(oil_level_mm=None, T_C=50.0, models={"losses": "skf"}))
+    assert no_level.breakdown_W["churning"] == 0.0 and no_level.P_W > 0      # the SKF model runs, without drag
     jet = choose_models(JET)
     assert not jet["churning"][0] and not jet["seals"][0] and not jet["cage"][0]
     assert choose_models(BATH.with_(seals="shield"))["seals"][0] is False

@@ -18,11 +18,11 @@ sub-models serve it, each with the reason, overridable from the scene's ``[model
   every ball on both races at most 6 % — validation/report/film_criterion.md).  Grease and oil–air
   contacts outside the load zone are taken as starved.
 * **drag** — only for jet / oil–air supply, or grease at n·d_m ≥ 1e5 mm/min (below, churning of a
-  few balls in air is < 0.1 % of the contact losses).  In an oil bath the balls above the bath run in
-  air: their loss there is left out, the bath's is **churning**.
-* **churning** — where an oil level reaches the balls (``lubricant.oil_level_mm`` > 0; an oil bath
-  without a level takes H = D/2, the lowest ball centre, SKF's recommended static level): the local
-  model's ball drag in oil weighted by the immersed share of the ball path
+  few balls in air is < 0.1 % of the contact losses).  In an oil bath the bath's drag on the balls is
+  **churning** (no oil–air mixture term).
+* **churning** — where an oil level reaches the balls (``lubricant.oil_level_mm`` > 0, horizontal shaft;
+  an oil bath without a level is not given one: the reason says so): the local model's ball drag in
+  oil weighted by the immersed share of the ball path
   (:func:`~thermobear.losses.drag.churning_loss`), or SKF's drag term with V_M at H/dm (SKF 2018).
 * **seals** — contact seals (RSL, RSH, RS1, …): SKF 2004's M_seal (:mod:`thermobear.losses.seals`);
   shields and open bearings have none.
@@ -203,7 +203,8 @@ def _choose(scene: Scene, dry) -> dict:
     elif ndm >= 1e5 and scene.supply == "grease":
         out["drag"] = (True, f"n dm = {ndm:.3g} mm rpm >= 1e5")
     elif scene.supply == "oil_bath":
-        out["drag"] = (False, "oil bath: the balls run in air above the bath (their loss in the bath: churning)")
+        out["drag"] = (False, "oil bath: no oil–air mixture term (the bath's drag on the balls is the churning "
+                              "term, from lubricant.oil_level_mm)")
     else:
         out["drag"] = (False, f"{scene.supply} at n dm = {ndm:.3g} mm rpm: churning negligible")
     lm = m.get("losses", "local")
@@ -221,13 +222,11 @@ def _choose(scene: Scene, dry) -> dict:
 
 
 def oil_level(scene: Scene) -> tuple:
-    """``(H [m] or None, how)``: the oil level above the lowest point of the outer-ring raceway —
-    ``lubricant.oil_level_mm``, or for an oil bath without it D/2 (the lowest ball centre: SKF's
-    recommended static level, "at the centre of the lowest rolling element")."""
+    """``(H [m] or None, how)``: the oil level above the lowest point of the outer-ring raceway,
+    ``lubricant.oil_level_mm`` (None where the scene does not give it: no default — the level of a bath
+    is a design value, and the immersion model assumes a horizontal shaft)."""
     if scene.oil_level is not None:
         return scene.oil_level, "given"
-    if scene.supply == "oil_bath":
-        return 0.5 * scene.bearing.D, "not given: H = D/2, the lowest ball centre (SKF's static oil-bath level)"
     return None, ""
 
 
@@ -271,6 +270,10 @@ def added_losses(scene: Scene) -> dict:
             "lubricant.oil_level_mm > 0 with an oil supply")
     if m.get("churning") is False:
         out["churning"] = (False, "chosen in the scene")
+    elif H is None and scene.supply == "oil_bath":
+        out["churning"] = (False, "oil bath without lubricant.oil_level_mm: churning not modelled (give the level "
+                                  "above the lowest point of the outer-ring raceway; SKF's static level is the "
+                                  "lowest ball centre, D/2)")
     elif H is None:
         out["churning"] = (False, f"{scene.supply}: no oil bath (no lubricant.oil_level_mm)")
     elif H <= 0:

@@ -139,9 +139,10 @@ class SKFLosses:
 def _added_skf(scenes, models: dict) -> dict:
     """:func:`skf_losses` keywords: the oil level [mm] (churning chosen) and the seal moment [N mm]."""
     kw = {}
-    if _chosen(models, "churning") or scenes[0].supply == "oil_bath":      # an oil bath at level 0: no drag
-        kw["H_mm"] = _one(np.array([(oil_level(s)[0] if _chosen(models, "churning") else 0.0) * 1e3
-                                    for s in scenes], float))
+    if _chosen(models, "churning"):
+        kw["H_mm"] = _one(np.array([oil_level(s)[0] * 1e3 for s in scenes], float))
+    elif scenes[0].supply == "oil_bath":          # level 0, not given or churning switched off: no drag term
+        kw["H_mm"] = 0.0
     if _chosen(models, "seals"):
         kw["M_seal_Nmm"] = _one(np.array([_seal(s).M_Nm * 1e3 for s in scenes], float))
     return kw

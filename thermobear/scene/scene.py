@@ -80,7 +80,7 @@ _SUPPLY_FIELDS = {
     "jet_penetration": Field.number("-", 0.0, 1.0, lo_open=True, doc="share of the supplied jet flow that passes "
                                     "through the bearing (seed 004 §4.5 β); default 1: flow_L_h passes whole"),
     "oil_level_mm": Field.number("mm", 0.0, None, doc="oil-bath level above the lowest point of the outer-ring "
-                                 "raceway (SKF's H); oil bath default: the lowest ball centre, D/2"),
+                                 "raceway (SKF's H), horizontal shaft; not given: no churning"),
 }
 
 #: ``[bearing]`` keys besides the geometry: seals and cage (defaults: no seal; a ball-centred cage).
@@ -146,7 +146,7 @@ class Scene:
     jet_penetration : float       share of it that passes through the bearing [-] (seed 004 §4.5 β;
                                   default 1): the flow of Parker's oil fraction (drag)
     oil_level : float | None      oil-bath level above the lowest point of the outer-ring raceway [m]
-                                  (SKF's H); None: not given (an oil bath then takes D/2)
+                                  (SKF's H; horizontal shaft); None: not given (no churning)
     T_oil_in_C : float | None     oil inlet temperature [°C]
     T_ambient_C : float           ambient temperature [°C]
     Rq_ball, Rq_ring : float      RMS roughness [m]
