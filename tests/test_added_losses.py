@@ -129,3 +129,21 @@ def test_cli_run_json_on_the_oil_bath(capsys, extra):
     assert all(np.isfinite(v) and v >= 0 for v in d["breakdown_W"].values())
     for key in ("churning", "seals", "cage", "drag"):
         assert d["models_used"][key]["reason"]
+
+
+#: a value every [models] key accepts on the oil-bath example (a new key must be added here)
+_FORCEABLE = {"rolling": "auto", "hertz": "exact", "load_model": "jones_harris", "drag": "false",
+              "kinematics": "outer", "stiffness": "nominal", "high_speed": "false", "losses": "local",
+              "skf_R1": "1e-6", "skf_S1": "0.01", "skf_mu_EHL": "0.05", "churning": "false", "seals": "false",
+              "cage": "false"}
+
+
+def test_every_models_key_can_be_forced_with_set(capsys):
+    from thermobear.scene.scene import MODEL_FIELDS
+    assert set(_FORCEABLE) == set(MODEL_FIELDS)
+    for key, value in _FORCEABLE.items():
+        code = main(["run", str(EX / "oil_bath_6208.toml"), "--json", "--set", "T_C=50", "--set",
+                     f"models.{key}={value}"])
+        out = capsys.readouterr().out
+        assert code == 0, (key, out)
+        assert json.loads(out)["P_W"] > 0

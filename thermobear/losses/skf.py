@@ -5,8 +5,10 @@ the frictional moment"; restated in seed 002, Cousseau et al., Appendix A) is
 
     M = Φ_ish Φ_rs G_rr (ν n)^0.6  +  G_sl μ_sl  +  M_drag  +  M_seal      [N mm]
 
-with G_rr, G_sl functions of bearing type, series constants and loads.  It is
-defined in SKF's units: M in N mm, n in r/min, ν in mm²/s (cSt) at the operating
+with G_rr, G_sl functions of bearing type, series constants and loads.  M_drag is the drag of an
+oil bath: with the oil level H known, the two-term form of SKF's 2018 edition (Rolling bearings 17000 EN)
+with V_M read off SKF's diagram (:func:`drag_loss_factor_VM`, digitised in ``materials/skf_constants.toml``);
+M_seal the seal moment of :mod:`thermobear.losses.seals`.  It is defined in SKF's units: M in N mm, n in r/min, ν in mm²/s (cSt) at the operating
 temperature (grease: base-oil viscosity), loads in N, d, D, dm = (d + D)/2 in mm.
 
 Everything in this module up to :func:`skf_moment` works in those units (every
