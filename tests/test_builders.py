@@ -238,8 +238,10 @@ def test_built_networks_conserve_energy_and_hold_the_role_nodes(name):
     r = solve_steady(net, P)
     assert abs(r.balance_W) < 1e-7 * 43.0                     # the flows of the final solve (conditioning ~1e8)
     assert sum(r.heat_out_W.values()) == pytest.approx(43.0, rel=1e-7)
-    for role, cands in ROLES.items():
-        assert cands[0] in built.nodes or (thrust and role in ("inner", "outer")), role
+    present = {"inner": not thrust, "outer": not thrust, "ball": True, "oil": True, "cage": m.cage,
+               "bath": m.lubrication.supply == "oil_bath", "seal": m.housing.seals == "contact"}
+    for role, cands in ROLES.items():      # each role the machine has lands on its own node (the first candidate)
+        assert (cands[0] in built.nodes) == present[role], role
     assert all(np.isfinite(list(r.T_C.values())))
     assert r.T_C["balls"] > m.T_ambient_C                      # heated above the room
     assert np.all(np.isfinite(net.C_J_K[~net.fixed])) and np.all(net.C_J_K[~net.fixed] > 0)   # transient-ready
@@ -275,7 +277,7 @@ def test_stiffer_mounting_and_forced_air_cool_the_housing():
 
 # --------------------------------------------------------------------------- scenes
 def _scene(**sections):
-    d = {"bearing": {"catalog": "6208"}, "lubricant": {"name": "iso-vg-68-mineral", "supply": "oil_bath"},
+    d = {"bearing": {"catalog": "6208"}, "lubricant": {"name": "iso-vg-68-mineral", "supply": "oil_bath", "oil_level_mm": 6.0},
          "operation": {"n_rpm": 3000.0, "Fr_N": 2000.0}, "thermal": {"T_ambient_C": 25.0}, "housing": {}}
     for k, v in sections.items():
         if v is None:
@@ -287,13 +289,14 @@ def _scene(**sections):
 
 def test_scene_sections_build_the_machine_in_si():
     s = _scene(shaft={"length_left_mm": 60.0, "end_left": "fixed", "T_end_left_C": 35.0, "interference_um": 10.0},
-               housing={"height_mm": 140.0, "depth_mm": 120.0, "axial_length_mm": 60.0, "seals": "contact"},
-               lubricant={"oil_level_mm": 6.0, "sump_volume_L": 0.25})
+               housing={"height_mm": 140.0, "depth_mm": 120.0, "axial_length_mm": 60.0},
+               bearing={"seals": "RS1"}, lubricant={"oil_level_mm": 6.0, "sump_volume_L": 0.25})
     m = s.network
     assert isinstance(m, Machine) and str(m) == "parametric"
     assert m.shaft.length_left == pytest.approx(0.06) and m.shaft.interference == pytest.approx(10e-6)
     assert m.housing.height == pytest.approx(0.14) and m.lubrication.sump_volume == pytest.approx(2.5e-4)
     assert m.lubrication.oil_level == pytest.approx(6e-3) and m.n_rpm == 3000.0 and m.Fr == 2000.0
+    assert m.housing.seals == "contact"                         # [bearing] seals = "RS1" closes the cavity
     assert s.with_(n_rpm=4000.0).network == m                  # one network for a sweep's points
     assert s.with_(bearing="6210").network.bearing.name == "6210"
     assert _scene(housing=None, thermal={"network": "parametric"}).network.housing == Housing()
@@ -313,7 +316,7 @@ def test_scene_sections_build_the_machine_in_si():
     ("shaft", "T_end_left_C", 30.0, r"shaft\.T_end_left_C = 30.0 — applies to a fixed end"),
     ("shaft", "diameter_mm", 35.0, r"shaft\.diameter_mm = 35.0 — the inner ring's seat is the bearing bore"),
     ("lubricant", "grease_fill", 0.3, r"lubricant\.grease_fill = 0.3 — applies to supply = \"grease\""),
-    ("lubricant", "oil_level_mm", -1.0, r"lubricant\.oil_level_mm = -1.0 — must be in \(0, 10000\]"),
+    ("lubricant", "oil_level_mm", -1.0, r"lubricant\.oil_level_mm = -1.0 — must be in \[0, 10000\]"),
     ("thermal", "network", "one_node", r"thermal\.network = 'one_node' — \[housing\] describe"),
 ])
 def test_bad_machine_keys_are_refused_by_name(section, key, value, match):

@@ -67,8 +67,8 @@ def test_prescribed_temperature_equals_bearing_losses():
     sc = S004.with_(T_C=50.0, models={"high_speed": False, "load_model": "jones_harris"})
     r = solve(sc)
     ref = tb.bearing_losses(S004.bearing, S004.lubricant, Fa=450.0, Fr=325.0, n_rpm=3200.0, T_C=50.0,
-                            oil_flow_m3_s=S004.oil_flow, Rq_ball=S004.Rq_ball, Rq_ring=S004.Rq_ring,
-                            **film_options(choose_models(sc)))
+                            oil_flow_m3_s=S004.oil_flow * S004.jet_penetration, Rq_ball=S004.Rq_ball,
+                            Rq_ring=S004.Rq_ring, **film_options(choose_models(sc)))
     assert r.P_W == pytest.approx(ref.P_W, rel=1e-12)
 
 
@@ -81,8 +81,8 @@ def test_high_speed_path_when_centrifugal_force_matters():
     r = solve(sc.with_(models={"load_model": "jones_harris"}))        # the dry law alone (no film blend)
     ld = load_distribution_high_speed(S004.bearing, Fa=450.0, Fr=325.0, n_rpm=6500.0)
     ref = tb.bearing_losses(S004.bearing, S004.lubricant, Fa=450.0, Fr=325.0, n_rpm=6500.0, T_C=50.0,
-                            oil_flow_m3_s=S004.oil_flow, Rq_ball=S004.Rq_ball, Rq_ring=S004.Rq_ring,
-                            load=ld, centrifugal=False, **film_options(m))
+                            oil_flow_m3_s=S004.oil_flow * S004.jet_penetration, Rq_ball=S004.Rq_ball,
+                            Rq_ring=S004.Rq_ring, load=ld, centrifugal=False, **film_options(m))
     assert r.P_W == pytest.approx(ref.P_W, rel=1e-12)
     assert np.all(r.losses.contacts["outer"]["alpha"] < r.losses.contacts["inner"]["alpha"])
 

@@ -18,7 +18,17 @@ sub-models serve it, each with the reason, overridable from the scene's ``[model
   every ball on both races at most 6 % — validation/report/film_criterion.md).  Grease and oil–air
   contacts outside the load zone are taken as starved.
 * **drag** — for jet / oil–air supply (the oil–air mixture) and grease (the cavity air: negligible
-  below n·d_m ≈ 1e5 mm/min, ∝ ω², so kept everywhere rather than switched on at a speed).
+  below n·d_m ≈ 1e5 mm/min, ∝ ω², so kept everywhere rather than switched on at a speed).  In an oil
+  bath the bath's drag on the balls is **churning** (no oil–air mixture term).
+* **churning** — where an oil level reaches the balls (``lubricant.oil_level_mm`` > 0, horizontal shaft;
+  an oil bath without a level is not given one: the reason says so): the local model's ball drag in
+  oil weighted by the immersed share of the ball path
+  (:func:`~thermobear.losses.drag.churning_loss`), or SKF's drag term with V_M at H/dm (SKF 2018).
+* **seals** — contact seals (RSL, RSH, RS1, …): SKF 2004's M_seal (:mod:`thermobear.losses.seals`);
+  shields and open bearings have none.
+* **cage** — a ring-guided cage (``bearing.cage = "inner_ring" | "outer_ring"``): Petroff land friction
+  and ball–pocket sliding (:mod:`thermobear.losses.cage`); a ball-centred cage (the default: pressed
+  steel and polyamide cages) none.
 * **rolling** — per-contact regime selection (seed 004 §4.3) unless named.
 * **traction** — the film's own traction law (Eyring stress and limiting shear stress of the base
   oil; :mod:`thermobear.losses.traction`) wherever an oil film carries the contacts; a constant
@@ -52,7 +62,9 @@ from thermobear.arrays import take
 from thermobear.errors import InputError, NoEquilibrium, SolverError
 from thermobear.loads import LoadDistribution, load_distribution, needs_high_speed
 from thermobear.loads.highspeed import load_distribution_high_speed
-from thermobear.losses.skf import K_RS, phi_rs, skf_K_z
+from thermobear.losses.cage import cage_land_estimate
+from thermobear.losses.seals import CONTACT_SEALS, seal_counterface_estimate_mm
+from thermobear.losses.skf import K_RS, drag_loss_factor_VM, phi_rs, skf_K_z
 from thermobear.lubrication.thermal_film import thermal_loading_parameter, thermal_reduction_gupta
 from thermobear.scene import Scene
 
@@ -69,7 +81,8 @@ BLEND_BANDS = {"high_speed": (0.035, 0.07), "film": (0.0, 0.1)}
 MIN_WEIGHT = 1e-3
 
 __all__ = ["choose_models", "plan", "plan_many", "open_contacts", "dry_load", "is_symmetric", "FLOODED",
-           "BLEND_BANDS", "Alternative", "DryRow", "smooth_weight", "film_options"]
+           "BLEND_BANDS", "Alternative", "DryRow", "smooth_weight", "film_options", "added_losses", "oil_level",
+           "seal_diameter_mm", "cage_land"]
 
 FLOODED = ("oil_jet", "oil_bath")
 
@@ -108,8 +121,8 @@ def _dry_key(scene: Scene, hs: bool):
     m = scene.models
     if m.get("load_model") in ("closed_form", "film") or (scene.T_C is None and not scene.network):
         return None
-    if m.get("losses") == "skf" and scene.supply not in FLOODED and scene.T_C is not None:
-        return None         # prescribed T, SKF losses, no film test: no loads needed
+    if m.get("losses") == "skf":
+        return None         # the SKF global model reads F_a, F_r only: no film test, no dry loads needed
     if is_symmetric(scene) and not hs and "load_model" not in m:
         return None
     return (scene.bearing, float(scene.Fa), float(scene.Fr), None if scene.M is None else float(scene.M),
@@ -197,6 +210,8 @@ def _load_model_alternatives(scene: Scene, dry) -> list:
     both blended while the least loaded contact carries less than 10 % of the greatest
     (:data:`BLEND_BANDS`)."""
     jh = "combined load: balls differ (Jones–Harris, seed 004 eqs 6–8)"
+    if scene.models.get("losses") == "skf":
+        return [(("jones_harris", jh + "; SKF global model: its losses read F_a, F_r only (no film test)"), 1.0)]
     if scene.supply not in FLOODED:
         return [(("jones_harris", jh + f"; {scene.supply}: contacts outside the load zone taken as starved (no "
                                        "film load)"), 1.0)]
@@ -298,10 +313,14 @@ def _choose(scene: Scene, hs: tuple, lm: tuple | None) -> dict:
     elif scene.supply == "grease":
         out["drag"] = (True, f"grease: the balls' drag in the cavity air (∝ ω², negligible at n dm = {ndm:.3g} mm "
                              "rpm below 1e5; kept everywhere so that no switch steps the answer)")
+    elif scene.supply == "oil_bath":
+        out["drag"] = (False, "oil bath: no oil–air mixture term (the bath's drag on the balls is the churning "
+                              "term, from lubricant.oil_level_mm)")
     else:
         out["drag"] = (False, f"{scene.supply}: drag of the balls not modelled for this supply")
     lm_ = m.get("losses", "local")
     out["losses"] = (lm_, "chosen in the scene" if "losses" in m else "per-contact local model (default)")
+    out.update(added_losses(scene))
     out["rolling"] = (m.get("rolling", "auto"), "chosen in the scene" if "rolling" in m
                       else "per-contact regime (IVR: Houpert, PVR/IVE: Biboulet, EHL: Houpert; seed 004)")
     default_control = "radial" if b.kind == "thrust" else "outer"
@@ -337,6 +356,98 @@ class Alternative:
     models: dict
     dry: DryRow | None
     weight: float
+def oil_level(scene: Scene) -> tuple:
+    """``(H [m] or None, how)``: the oil level above the lowest point of the outer-ring raceway,
+    ``lubricant.oil_level_mm`` (None where the scene does not give it: no default — the level of a bath
+    is a design value, and the immersion model assumes a horizontal shaft)."""
+    if scene.oil_level is not None:
+        return scene.oil_level, "given"
+    return None, ""
+
+
+def seal_diameter_mm(scene: Scene) -> tuple:
+    """``(d_s [mm], how)``: the seal counterface diameter given or estimated
+    (:func:`~thermobear.losses.seals.seal_counterface_estimate_mm`)."""
+    if scene.seal_diameter is not None:
+        return scene.seal_diameter * 1e3, "given"
+    b = scene.bearing
+    return seal_counterface_estimate_mm(b.bore * 1e3, b.outer_diameter * 1e3), "estimated d + 0.25 (D − d)"
+
+
+def cage_land(scene: Scene) -> tuple:
+    """``(dict d_land, b_land, c_land [m], estimated keys)`` of a ring-guided cage
+    (:func:`~thermobear.losses.cage.cage_land_estimate` for what the scene does not give)."""
+    b = scene.bearing
+    land = cage_land_estimate(scene.cage, b.bore * 1e3, b.outer_diameter * 1e3, b.width * 1e3)
+    est = ["d_land"]
+    for key, given in (("b_land", scene.cage_land_width), ("c_land", scene.cage_land_clearance)):
+        if given is None:
+            est.append(key)
+        else:
+            land[key] = given
+    return land, est
+
+
+def _forced(m, key, cond, why):
+    """``m[key]`` forced True where ``cond`` is False: InputError saying why."""
+    if m.get(key) is True and not cond:
+        raise InputError(f"models.{key}", True, why)
+
+
+def added_losses(scene: Scene) -> dict:
+    """The choices ``churning``, ``seals`` and ``cage`` (see the module docstring): each ``(choice, reason)``,
+    choice False where the scene has no such loss.  Needs no load solve (the coupling of a scene family
+    is built from it)."""
+    m, b, skf = scene.models, scene.bearing, scene.models.get("losses") == "skf"
+    out = {}
+    H, how = oil_level(scene)
+    _forced(m, "churning", H is not None and H > 0, "churning needs an oil level reaching the balls: give "
+            "lubricant.oil_level_mm > 0 with an oil supply")
+    if m.get("churning") is False:
+        out["churning"] = (False, "chosen in the scene")
+    elif H is None and scene.supply == "oil_bath":
+        out["churning"] = (False, "oil bath without lubricant.oil_level_mm: churning not modelled (give the level "
+                                  "above the lowest point of the outer-ring raceway; SKF's static level is the "
+                                  "lowest ball centre, D/2)")
+    elif H is None:
+        out["churning"] = (False, f"{scene.supply}: no oil bath (no lubricant.oil_level_mm)")
+    elif H <= 0:
+        out["churning"] = (False, "oil level 0: no ball reaches the bath")
+    else:
+        lvl = f"oil level H = {H * 1e3:.3g} mm ({how}), H/dm = {H / b.dm:.3g}"
+        out["churning"] = (("skf_2018", f"{lvl}: SKF 2018 drag term, V_M = {float(drag_loss_factor_VM(H / b.dm)):.3g} "
+                            "(SKF's diagram, digitised)") if skf else
+                           ("pouly_immersed", f"{lvl}: the balls cross the bath; Pouly's sphere drag in oil × the "
+                            "immersed share of the ball path"))
+    contact = scene.seals in CONTACT_SEALS
+    _forced(m, "seals", contact, f"seal friction needs a contact seal (bearing.seals one of {', '.join(CONTACT_SEALS)})")
+    if m.get("seals") is False:
+        out["seals"] = (False, "chosen in the scene")
+    elif not contact:
+        out["seals"] = (False, "open bearing" if scene.seals == "none" else
+                        f"shields ×{scene.seal_sides}: non-contact, no friction (SKF)")
+    else:
+        ds, how = seal_diameter_mm(scene)
+        out["seals"] = (f"SKF 2004 {scene.seals} ×{scene.seal_sides}",
+                        f"M_seal = K_S1 d_s^β + K_S2 (SKF table 4), d_s = {ds:.3g} mm ({how})")
+    ring = scene.cage != "balls"
+    _forced(m, "cage", ring and scene.supply != "dry_film" and not skf, "the cage loss needs a ring-guided cage "
+            "(bearing.cage = 'inner_ring' | 'outer_ring') with an oil or grease film on its land, and the local model")
+    if m.get("cage") is False:
+        out["cage"] = (False, "chosen in the scene")
+    elif not ring:
+        out["cage"] = (False, "ball-centred cage: no land; its pocket forces balance only the cage's windage "
+                              "(not modelled)")
+    elif skf:
+        out["cage"] = (False, "SKF model: the cage is inside its empirical constants")
+    elif scene.supply == "dry_film":
+        out["cage"] = (False, "dry film: no fluid film on the cage land")
+    else:
+        land, est = cage_land(scene)
+        out["cage"] = ("petroff_land+pocket", f"{scene.cage}-centred cage: Petroff land friction (land Ø "
+                       f"{land['d_land'] * 1e3:.3g} mm, width {land['b_land'] * 1e3:.3g} mm, clearance "
+                       f"{land['c_land'] * 1e3:.3g} mm; estimated: {', '.join(est)}) + ball–pocket sliding")
+    return out
 
 
 def plan(scene: Scene) -> tuple:

@@ -60,8 +60,9 @@ def main() -> int:
     L += ["", f"Model: hydrodynamic rolling is the largest term ({rng('rolling')}), sliding {rng('sliding')} — the "
           f"paper's ordering — but drag is {rng('drag')} rather than ≈ 5 % and pivoting + hysteresis (not in seed "
           f"004's model) add {min(ph):.0f}–{max(ph):.0f} %. Drag uses Pouly's structure with Parker's oil fraction read as a fraction (the reading "
-          "that reproduces seed 004's +16 % drag for ×1.5 flow); with D = 12.7 mm estimated and A_c = πD²/4 "
-          "(no cage shielding; Pouly's A_c not recovered) it is likely overestimated. Reported, not tuned.", ""]
+          "that reproduces seed 004's +16 % drag for ×1.5 flow) of the flow through the bearing (β = 0.4 of the "
+          "injected flow, seed 004 §4.5); D = 12.7 mm is estimated and A_c = πD²/4 (Pouly's A_c not recovered): "
+          "seed004_drag.md. Reported, not tuned.", ""]
 
     # 2. regimes
     L += ["## 2. Lubrication regime per ball (seed 004 §3.2, Fig. 3)", ""]

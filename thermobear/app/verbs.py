@@ -28,6 +28,7 @@ from thermobear.files import data_dir, names_in, read_toml
 from thermobear.loads import load_distribution
 from thermobear.loads.highspeed import load_distribution_high_speed
 from thermobear.losses import BREAKDOWN_KEYS
+from thermobear.losses.skf import SKF_BREAKDOWN_KEYS
 from thermobear.lubrication.lubricant import lubricant_names
 from thermobear.models import plan
 from thermobear.scene import load_scene
@@ -302,7 +303,8 @@ def cmd_transient(args):
 
 
 # --------------------------------------------------------------------------- sweep
-_MODEL_COLUMNS = ("thermal", "load_model", "high_speed", "drag", "losses", "rolling", "kinematics", "hertz")
+_MODEL_COLUMNS = ("thermal", "load_model", "high_speed", "drag", "churning", "seals", "cage", "losses", "rolling",
+                  "kinematics", "hertz")
 
 
 def _sweep_header(scene, grid) -> list:
@@ -318,7 +320,7 @@ def _sweep_header(scene, grid) -> list:
         nodes += network_nodes(scene.network, scene.path)
     if prescribed:
         nodes.append("contacts (prescribed)")
-    bd = ("rolling", "sliding", "drag", "seal") if scene.models.get("losses") == "skf" else BREAKDOWN_KEYS
+    bd = SKF_BREAKDOWN_KEYS if scene.models.get("losses") == "skf" else BREAKDOWN_KEYS
     return (list(grid) + ["status", "reason", "P_W", "torque_Nm", "T_ball_C", "iterations", "residual_K"]
             + [f"breakdown_W.{k}" for k in bd] + [f"temperatures_C.{n}" for n in nodes]
             + [f"models.{k}" for k in _MODEL_COLUMNS] + ["warnings"])

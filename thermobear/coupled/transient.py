@@ -26,7 +26,7 @@ import numpy as np
 
 from thermobear.coupled.limits import emit, point_warnings
 from thermobear.coupled.pipeline import Family, family_contacts, family_loads, film_temperature_C, stack_loads
-from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepared_for
+from thermobear.coupled.sources import Coupling, family_network, loss_parts, loss_sources, prepared_for
 from thermobear.coupled.steady import T_LIMIT_K, _batched
 from thermobear.errors import ExtrapolationWarning, InputError, OutsideValidity, ThermalRunaway
 from thermobear.losses import prepare_contacts
@@ -111,7 +111,7 @@ def point_model(scene: Scene, models: dict | None = None, *, T_film_C=None, load
         load = family_loads(fam, None if T_film_C is None else [T_film_C])
     cs = family_contacts(fam, _batched(load))
     if template is not None:
-        cp = Coupling.of(template)
+        cp = Coupling.of(template, parts=loss_parts(models))
     else:
         pre = prepared_for(scene, prepared)
         template, cp = pre.template, pre.coupling

@@ -14,6 +14,11 @@ step by the public function of its module:
   integral of μ q |ω_s x| for the Hertz strip load)
 * hysteresis  P = MER |ω_roll|  (seed 000 eq 25)
 * drag of the balls in the oil–air mixture (Pouly et al. 2010, seed 004 eq 21)
+* churning of the balls through an oil bath: the same drag in oil, weighted by the immersed share of
+  the ball path at the oil level (:func:`~thermobear.losses.drag.churning_loss`)
+* seal friction, SKF 2004 (:func:`~thermobear.losses.seals.seal_friction`, given as a torque)
+* cage: Petroff land friction of a ring-guided cage and ball–pocket sliding
+  (:func:`~thermobear.losses.cage.cage_loss`)
 
 with μ from the film parameter Λ (seed 000 eq 18), the Hamrock–Dowson film (1977) and the
 Nijenbanning–Venner–Moes regime (1994) at the viscosity of the contact temperature.  Sliding
@@ -29,7 +34,8 @@ regime (seed 004 §6.2).
 
 Heat sources (for the thermal network): each contact's loss goes ½ to the
 ball and ½ to the ring (the convention of Pouly et al. 2010), drag to the
-oil–air mixture.  The split conserves energy exactly (tested).
+oil–air mixture, churning to the bath, seal friction to the seal, cage losses to the cage.
+The split conserves energy exactly (tested).
 
 Shapes: a :class:`ContactSet` holds ``batch`` operating points (per-contact arrays
 ``(*batch, 2, Z)``, inner then outer raceway); temperatures broadcast to the batch, or carry extra
@@ -48,7 +54,8 @@ from thermobear.contact.hertz import hertz
 from thermobear.contact.kinematics import ball_kinematics, caged_ball_kinematics, common_cage_speed
 from thermobear.errors import InputError
 from thermobear.loads.static import LoadDistribution, load_distribution
-from thermobear.losses.drag import drag_loss, oil_volume_fraction_parker
+from thermobear.losses.cage import CageLand, cage_loss
+from thermobear.losses.drag import churning_loss, drag_loss, immersed_fraction, oil_volume_fraction_parker
 from thermobear.losses.rolling import RollingContacts, rolling_contacts, rolling_power
 from thermobear.losses.skf import K_RS, phi_rs, skf_K_z
 from thermobear.losses.sliding import (XI0_HEATHCOTE, deformed_radius, hysteresis_moment, mixed_friction_ianus,
@@ -61,7 +68,7 @@ from thermobear.lubrication.thermal_film import (thermal_inlet_viscosity, therma
 __all__ = ["LossResult", "ContactSet", "ContactArrays", "bearing_losses", "prepare_contacts", "evaluate_losses",
            "BREAKDOWN_KEYS", "ROLLING_MODELS", "TRACTION_MODELS"]
 
-BREAKDOWN_KEYS = ("sliding", "rolling", "pivoting", "hysteresis", "drag")
+BREAKDOWN_KEYS = ("sliding", "rolling", "pivoting", "hysteresis", "drag", "churning", "seal", "cage")
 ROLLING_MODELS = ("auto", "auto_sharp", "biboulet_ivr", "biboulet_ehl", "biboulet_transition", "houpert_ivr",
                   "houpert_ehl", "biboulet_pvr")
 #: full-film traction: a constant μ_e (seed 000 eq 18), or the oil's Eyring / limiting-shear-stress law
@@ -80,13 +87,14 @@ class LossResult:
     ----------
     P_W : float or ndarray              total power loss [W]
     torque_Nm : float or ndarray        friction torque on the rotating ring, P/ω [N m]
-    breakdown_W : dict                  sliding, rolling, pivoting, hysteresis, drag [W]
+    breakdown_W : dict                  sliding, rolling, pivoting, hysteresis, drag, churning, seal, cage [W]
     contacts : ContactArrays            per contact arrays (a mapping), ``"inner"``/``"outer"`` → dict of
                                         Q [N], alpha [rad], a, b [m], u [m/s], T_C, eta [Pa s],
                                         h_min, h_c [m], Lambda, regime (str), mu, F_R [N],
                                         P_rolling, P_sliding, P_pivoting, P_hysteresis [W], spin [rad/s],
                                         M, L (Moes parameters) [-]
-    heat_W : dict                       heat sources: ``inner_ring``, ``outer_ring``, ``balls``, ``oil`` [W]
+    heat_W : dict                       heat sources: ``inner_ring``, ``outer_ring``, ``balls``, ``oil``
+                                        (drag), ``bath`` (churning), ``seal``, ``cage`` [W]
     load : LoadDistribution
     omega_c : cage speed [rad/s]
     models_used : dict                  model per sub-problem with the reason
@@ -434,13 +442,30 @@ def _replenishment(cs, oil, T2, supply):
                          "diameter, an SKF bearing kind and an oil or grease supply (" + ", ".join(K_RS) + ")")
     n = np.asarray(cs.n_rpm, float)[(...,) + (None,) * 2]
     return phi_rs(n, _at(oil.nu, T2), brg.bore * 1e3, brg.outer_diameter * 1e3, cs.K_z, K_RS[supply])
+def _added(cs, oil, lead, T_bath_C, T_cage_C, oil_level_m, seal_torque_Nm, cage):
+    """Churning, seal and cage powers [W] (each (*lead, *batch)) of :func:`evaluate_losses`."""
+    brg, shape = cs.brg, lead + cs.batch
+    zero = np.zeros(shape)
+    out = {"churning": zero, "seal": zero + np.asarray(seal_torque_Nm, float) * cs.omega, "cage": zero}
+    if oil_level_m is not None:
+        T = np.broadcast_to(np.asarray(T_bath_C, float), shape)
+        w = immersed_fraction(np.broadcast_to(np.asarray(oil_level_m, float), cs.batch), brg.dm, brg.D)
+        out["churning"] = zero + churning_loss(brg.Z, brg.D, brg.dm, cs.omega_cage, w, _at(oil.rho, T),
+                                               _at(oil.eta, T)).P_W
+    if cage is not None:
+        T = np.broadcast_to(np.asarray(T_cage_C, float), shape)
+        w_rel = (cs.omega if cage.guide_rotates else 0.0) - cs.omega_cage
+        out["cage"] = zero + cage_loss(_at(oil.eta, T), brg.Z, brg.D, brg.dm, w_rel, cs.omega_ball, cage.mu_pocket,
+                                       cage.d_land, cage.b_land, cage.c_land).P_W
+    return out
 
 
 def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=None, T_oil_C=None,
                     supply: str = "oil_jet", oil_flow_m3_s=0.0, Rq_ball: float = 0.05e-6,
                     Rq_ring: float = 0.1e-6, mu_boundary: float = 0.11, mu_full_film: float = 0.05,
                     rolling_model: str = "auto", drag: bool = True, traction: str = "constant",
-                    inlet_heating: bool = False, starvation: bool = False) -> LossResult:
+                    inlet_heating: bool = False, starvation: bool = False, oil_level_m=None, T_bath_C=None,
+                    seal_torque_Nm=0.0, cage: CageLand | None = None, T_cage_C=None) -> LossResult:
     r"""Temperature-dependent part of the local model on prepared contacts [W].
 
     Parameters
@@ -463,6 +488,14 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
                                   (Gupta et al. 1992, :mod:`thermobear.lubrication.thermal_film`)
     starvation : bool             kinematic replenishment: the rolling force times SKF's Φ_rs of the supply
                                   (:func:`~thermobear.losses.skf.phi_rs`; needs the bearing's bore and OD)
+    oil_level_m : array_like, optional  oil-bath level above the lowest point of the outer-ring raceway
+                                  [m] (``cs.batch``): churning of the balls through the bath; None: none
+    T_bath_C : array_like, optional  bath temperature [°C] (default T_oil_C, else T_C)
+    seal_torque_Nm : array_like   friction torque of the seals [N m] (``cs.batch``; SKF's model is
+                                  temperature independent: :func:`~thermobear.losses.seals.seal_friction`)
+    cage : CageLand, optional     a ring-guided cage (:class:`~thermobear.losses.cage.CageLand`): land
+                                  friction and ball–pocket sliding; None: no cage loss
+    T_cage_C : array_like, optional  temperature of the oil at the cage land [°C] (default T_oil_C, else T_C)
 
     Returns
     -------
@@ -482,7 +515,9 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
         P = 2 u F_R + \mu\,(P_{sl}/\mu + P_{piv}/\mu) + P_{hys}
 
     with the μ = 1 sliding and pivoting powers and the hysteresis power of the ContactSet; the drag
-    of the balls is :func:`~thermobear.losses.drag.drag_loss` (Pouly et al. 2010).  Temperatures
+    of the balls is :func:`~thermobear.losses.drag.drag_loss` (Pouly et al. 2010), their churning in
+    a bath :func:`~thermobear.losses.drag.churning_loss`, the seal power the seal torque × ω, the cage
+    loss :func:`~thermobear.losses.cage.cage_loss`.  Temperatures
     with leading axes (e.g. shape (2, *batch): two states per operating point, for finite
     differences) evaluate every state in one pass.
 
@@ -534,6 +569,9 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
         P_drag = _drag_power(cs, oil, Tall[..., 2, 0], eta_all[..., 2, 0], supply, oil_flow_m3_s)
     else:
         P_drag = np.zeros(lead + cs.batch)
+    T_aux = T_C if T_oil_C is None else T_oil_C
+    added = _added(cs, oil, lead, T_aux if T_bath_C is None else T_bath_C, T_aux if T_cage_C is None else T_cage_C,
+                   oil_level_m, seal_torque_Nm, cage)
     per_contact = dict(T_C=T2, eta=eta2, h_min=h_min, h_c=h_c, Lambda=Lam, regime=reg.code, mu=mu,
                        mu_pivoting=np.broadcast_to(mu_piv, h_min.shape), F_R=F_R,
                        P_rolling=P[0], P_sliding=P[1], P_pivoting=P[2], P_hysteresis=P[3], M=reg.M, L=reg.L)
@@ -552,7 +590,11 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
                  {"oil_jet": "Parker oil fraction", "oil_air": "oil fraction 1 %", "grease": "air only"}.get(
                      supply, "not modelled for this supply")),
     })
-    return _result(cs, P, P_drag, per_contact, models)
+    if oil_level_m is not None:
+        models["churning"] = ("Pouly drag in oil × immersed share of the ball path", "oil level given")
+    if cage is not None:
+        models["cage"] = ("Petroff land + ball–pocket sliding", "ring-guided cage")
+    return _result(cs, P, P_drag, per_contact, models, added)
 
 
 def _as(x):
@@ -585,18 +627,20 @@ class ContactArrays(Mapping):
         return len(_SIDES)
 
 
-def _result(cs, P, P_drag, per_contact, models):
-    """The LossResult of the per-contact powers ``P`` (4, *lead, *batch, 2, Z) and the drag (*lead, *batch)."""
+def _result(cs, P, P_drag, per_contact, models, added):
+    """The LossResult of the per-contact powers ``P`` (4, *lead, *batch, 2, Z), the drag (*lead, *batch) and
+    the churning, seal and cage powers ``added`` (each (*lead, *batch))."""
     S = P.sum(-1)                                   # (4, *lead, *batch, 2): summed over the balls
     fam = S.sum(-1)                                 # each family summed over both raceways
     per_side = S.sum(0)                             # contact power of each raceway
     P_in, P_out = per_side[..., 0], per_side[..., 1]
     per_contact.update(Q=cs.Q, alpha=cs.alpha, a=cs.a, b=cs.b, u=cs.u, spin=cs.spin)
     breakdown = {"sliding": _as(fam[1]), "rolling": _as(fam[0]), "pivoting": _as(fam[2]),
-                 "hysteresis": _as(fam[3]), "drag": _as(P_drag)}
-    total = fam[1] + fam[0] + fam[2] + fam[3] + P_drag
+                 "hysteresis": _as(fam[3]), "drag": _as(P_drag), "churning": _as(added["churning"]),
+                 "seal": _as(added["seal"]), "cage": _as(added["cage"])}
+    total = fam[1] + fam[0] + fam[2] + fam[3] + P_drag + added["churning"] + added["seal"] + added["cage"]
     heat = {"inner_ring": _as(0.5 * P_in), "outer_ring": _as(0.5 * P_out), "balls": _as(0.5 * (P_in + P_out)),
-            "oil": _as(P_drag)}
+            "oil": _as(P_drag), "bath": _as(added["churning"]), "seal": _as(added["seal"]), "cage": _as(added["cage"])}
     return LossResult(P_W=_as(total), torque_Nm=_as(total * cs.inv_omega), breakdown_W=breakdown,
                       contacts=ContactArrays(per_contact), heat_W=heat, load=cs.load,
                       omega_c=_as(cs.omega_cage), models_used=models, contact_W={"inner": _as(P_in), "outer": _as(P_out)})
@@ -608,8 +652,8 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
                    Rq_ring: float = 0.1e-6, mu_boundary: float = 0.11, mu_full_film: float = 0.05,
                    rolling_model: str = "auto", hertz_method: str = "exact", control: str | None = None,
                    centrifugal: bool = True, drag: bool = True, load: LoadDistribution | None = None,
-                   traction: str = "constant", inlet_heating: bool = False, starvation: bool = False
-                   ) -> LossResult:
+                   traction: str = "constant", inlet_heating: bool = False, starvation: bool = False,
+                   oil_level_m=None, seal_torque_Nm=0.0, cage: CageLand | None = None) -> LossResult:
     r"""Power loss of a ball bearing by the local contact model.
 
     Parameters
@@ -641,6 +685,7 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
     traction, inlet_heating, starvation
                                     full-film traction law, inlet shear heating, kinematic replenishment
                                     (see :func:`evaluate_losses`)
+    oil_level_m, seal_torque_Nm, cage  churning, seal and cage terms, as :func:`evaluate_losses`
 
     Returns
     -------
@@ -669,4 +714,5 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
     return evaluate_losses(cs, oil, T_C, T_inner_C=T_inner_C, T_outer_C=T_outer_C, T_oil_C=T_oil_C, supply=supply,
                            oil_flow_m3_s=oil_flow_m3_s, Rq_ball=Rq_ball, Rq_ring=Rq_ring, mu_boundary=mu_boundary,
                            mu_full_film=mu_full_film, rolling_model=rolling_model, drag=drag, traction=traction,
-                           inlet_heating=inlet_heating, starvation=starvation)
+                           inlet_heating=inlet_heating, starvation=starvation, oil_level_m=oil_level_m,
+                           seal_torque_Nm=seal_torque_Nm, cage=cage)

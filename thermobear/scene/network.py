@@ -145,7 +145,8 @@ def _only_for(sec: dict, where: str, keys: tuple, ok: bool, why: str):
             raise InputError(f"{where}.{k}", sec[k], why)
 
 
-def _housing(h: dict) -> Housing:
+def _housing(h: dict, seals: str = "none") -> Housing:
+    """``seals``: the bearing's closures (``bearing.seals``: none, shields or contact seals)."""
     t = h.get("type", "block")
     _only_for(h, "housing", ("height_mm", "depth_mm"), t == "block", f"applies to block housings (type = {t!r})")
     _only_for(h, "housing", ("outer_diameter_mm",), t != "block", "applies to pillow and flange housings (a block "
@@ -164,7 +165,7 @@ def _housing(h: dict) -> Housing:
                    air=h.get("air", "still"), air_speed=h.get("air_speed_m_s", 0.0),
                    emissivity=h.get("emissivity", 0.8),
                    interference=h["interference_um"] * 1e-6 if "interference_um" in h else None,
-                   fit_h_W_m2K=h.get("fit_h_W_m2K"), seals=h.get("seals", "none"), **mm)
+                   fit_h_W_m2K=h.get("fit_h_W_m2K"), seals=seals, **mm)
 
 
 def _shaft(s: dict) -> Shaft:
@@ -198,7 +199,7 @@ def lubrication_of(lub: dict, lubricant, supply: str) -> Lubrication:
     per network)."""
     check_lubrication_keys(lub, supply)
     T = 40.0
-    return Lubrication(supply=supply, feed=lub.get("oil_feed", "jet"),
+    return Lubrication(supply=supply, feed=lub.get("oil_feed", "jet"), beta=lub.get("jet_penetration"),
                        oil_level=lub["oil_level_mm"] * 1e-3 if "oil_level_mm" in lub else None,
                        sump_volume=lub["sump_volume_L"] * 1e-3 if "sump_volume_L" in lub else None,
                        grease_fill=lub.get("grease_fill"), air_flow=lub.get("air_flow_L_min", 0.0) * 1e-3 / 60.0,
@@ -206,11 +207,12 @@ def lubrication_of(lub: dict, lubricant, supply: str) -> Lubrication:
 
 
 def machine_from_sections(shaft: dict, housing: dict, lub: dict, *, bearing, lubricant, supply: str, rotating: str,
-                          n_rpm: float, T_ambient_C: float, Fa: float, Fr: float, name: str = PARAMETRIC) -> Machine:
+                          n_rpm: float, T_ambient_C: float, Fa: float, Fr: float, name: str = PARAMETRIC,
+                          seals: str = "none") -> Machine:
     """The machine of a scene from its typed ``[shaft]``, ``[housing]`` and ``[lubricant]`` tables
     (edge units converted to SI here, once).  ``n_rpm``, ``T_ambient_C``, ``Fa``, ``Fr``: the scene's
     operating point, at which the discretisation rule estimates the convection and a clearance fit's
     seat pressure (the network reads every operating point's own speed and temperatures)."""
-    return Machine(bearing=bearing, shaft=_shaft(shaft), housing=_housing(housing),
+    return Machine(bearing=bearing, shaft=_shaft(shaft), housing=_housing(housing, seals),
                    lubrication=lubrication_of(lub, lubricant, supply), rotating=rotating, n_rpm=float(n_rpm),
                    T_ambient_C=float(T_ambient_C), Fa=float(Fa), Fr=float(Fr), name=name)

@@ -62,10 +62,16 @@ __all__ = ["NetworkTemplate", "ThermalNetwork", "prepare_network", "load_network
 #: Nodes that receive the losses, by role, each with its candidate node names in order of
 #: preference: each contact's loss ½ to the ball and ½ to the race (Pouly et al. 2010), drag to the
 #: oil–air mixture (seed 004 §4.5); the contact temperature is the mean of ball and race nodes.
+#: Churning heats the oil bath (``bath``: a sump node where the network has one), seal friction the
+#: seal (else the inner ring its lip runs on: its race node, so that a measured inner-ring node stays
+#: imposable), cage losses the cage (else the mixture around it).
 ROLES = {"inner": ("inner_race", "shaft_washer", "inner_ring", "bearing"),
          "outer": ("outer_race", "housing_washer", "outer_ring", "bearing"),
          "ball": ("balls", "bearing"),
-         "oil": ("oil_air", "balls", "bearing")}
+         "oil": ("oil_air", "balls", "bearing"),
+         "bath": ("oil_sump", "sump", "oil_bath", "oil_air", "balls", "bearing"),
+         "seal": ("seal", "inner_race", "shaft_washer", "inner_ring", "bearing"),
+         "cage": ("cage", "oil_air", "balls", "bearing")}
 
 #: Context roots whose values do not change with the operating point: expressions reading only
 #: these (and numbers) are evaluated once, by :func:`prepare_network`.

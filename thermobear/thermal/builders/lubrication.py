@@ -63,7 +63,11 @@ def immersed_share(level_y: float, r: float) -> float:
 
 
 def _level(m: Machine, lay: Layout) -> float:
-    H = m.lubrication.oil_level if m.lubrication.oil_level is not None else lay.D / 2
+    H = m.lubrication.oil_level
+    if H is None:
+        raise InputError("lubricant.oil_level_mm", None, "an oil bath in a parametric housing needs its level above "
+                         f"the outer raceway's lowest point (SKF's static level, the lowest ball's centre: D/2 = "
+                         f"{lay.D / 2 * 1e3:.3g} mm)")
     if H <= 0:
         raise InputError("lubricant.oil_level_mm", H * 1e3, "an oil bath needs a level above the outer raceway's "
                          "lowest point (> 0)")
