@@ -41,7 +41,7 @@ def test_rolling_power_is_2uF():
 
 
 def test_zero_load_contacts_lose_nothing_drag_remains():
-    r = losses(Fr=0.0, Fa=1e-9, centrifugal=False)
+    r = losses(Fr=0.0, Fa=0.0, centrifugal=False)
     assert r.breakdown_W["rolling"] < 1e-3 * r.breakdown_W["drag"]
     assert r.breakdown_W["sliding"] < 1e-6 and r.breakdown_W["hysteresis"] < 1e-6
     assert r.breakdown_W["drag"] > 1.0

@@ -142,7 +142,7 @@ def _combined_load_model(scene: Scene, high_speed: bool, dry) -> tuple:
     jh = "combined load: balls differ (Jones–Harris, seed 004 eqs 6–8)"
     if scene.supply not in FLOODED:
         return "jones_harris", jh + f"; {scene.supply}: contacts outside the load zone taken as starved (no film load)"
-    if isinstance(dry, SolverError):    # the load step itself will say so (a sweep records it for its point)
+    if isinstance(dry, (SolverError, InputError)):  # the load step says why (per point)
         return "jones_harris", jh + f"; the dry solution failed ({type(dry).__name__}), so no film test"
     n_open, Z = open_contacts(scene, high_speed, dry), scene.bearing.Z
     if n_open == 0:
@@ -208,7 +208,7 @@ def plan(scene: Scene) -> tuple:
     if key is not None:
         try:
             dry = _solve_dry(*key)
-        except SolverError as exc:
+        except (SolverError, InputError) as exc:   # loads the contacts cannot carry: said by the load step
             dry = exc
     models = _choose(scene, dry)
     return models, (dry if isinstance(dry, LoadDistribution) else None)
@@ -256,7 +256,7 @@ def _batch_dry(brg, no_M, stiff, low, keys, dry):
     if len(keys) == 1:
         try:
             dry[keys[0]] = _solve_dry(*keys[0])
-        except SolverError as exc:
+        except (SolverError, InputError) as exc:
             dry[keys[0]] = exc
         return
     Fa, Fr = np.array([k[1] for k in keys]), np.array([k[2] for k in keys])
@@ -264,7 +264,7 @@ def _batch_dry(brg, no_M, stiff, low, keys, dry):
     n = None if low else np.array([k[5] for k in keys])
     try:               # no continuation inside a batch: a case that needs it is left to its own solve
         ld = _solve_dry(brg, Fa, Fr, M, stiff, n, continuation=False) if low else _solve_dry(brg, Fa, Fr, M, stiff, n)
-    except SolverError:
+    except (SolverError, InputError):
         h = len(keys) // 2
         _batch_dry(brg, no_M, stiff, low, keys[:h], dry)
         _batch_dry(brg, no_M, stiff, low, keys[h:], dry)

@@ -135,6 +135,14 @@ LIMITS = {
     "s0": Limit(
         "static safety s0", "-", (None, None), (1.0, None),
         source="ISO 76:2006: s0 < 1 means permanent deformation above 1e-4 D (refused by the contact pressure)"),
+    "load": Limit(
+        "load (Fa, Fr, |M|/ℜ_i), when not 0", "N", (1e-6, None), (None, None),
+        source="below 1 µN the Hertz approach of a ball, (Q/K)^(2/3) with K ≈ 1e10 N/m^1.5, is below a tenth of "
+               "an atomic spacing, where continuum contact (Hertz; Johnson 1985 §4.2) has no meaning (0: unloaded)"),
+    "speed": Limit(
+        "speed, when not 0", "rpm", (1e-6, None), (None, None),
+        source="below 1e-6 rpm (one turn in 1.9 years) the bearing is at rest for every model here, and their "
+               "powers of the speed underflow the floating-point range (0: at rest)"),
     "skf_phi_bl": Limit(
         "SKF weighting factor Φ_bl", "-", (None, None), (None, 0.5),
         source="SKF 2004: mostly boundary lubrication, μ_bl an estimated constant"),
@@ -149,7 +157,7 @@ def _minmax(value):
         if a.size == 0:
             return None
         lo, hi = (float(a), float(a)) if a.ndim == 0 else (float(a.min()), float(a.max()))
-    if not (math.isfinite(lo) and math.isfinite(hi)):
+    if math.isnan(lo) or math.isnan(hi):
         return "nan"
     return lo, hi
 
@@ -167,7 +175,7 @@ def _show(value, scale):
 
 
 def check(name: str, value, field: str, *, what: str = "", category=OutsideValidity,
-          warn: bool = True) -> list:
+          warn: bool = True, given=None) -> list:
     """Check ``value`` (scalar or array, SI) against limit ``name`` of :data:`LIMITS`.
 
     Raises InputError(field, value, accepted range + source) when any element is outside the
@@ -182,12 +190,16 @@ def check(name: str, value, field: str, *, what: str = "", category=OutsideValid
     what : str          optional context for the message (e.g. "inner contact of ball 3")
     category : type     the warning class (an OutsideValidity subclass, e.g. ExtrapolationWarning)
     warn : bool         False: refuse only (e.g. while reading a scene; solvers warn when they run)
+    given : optional    the input as the user gave it, shown as the field's value when the quantity is
+                        computed from it (e.g. the loads whose contact pressure is refused); the
+                        quantity's offending value then goes into the message
     """
     lim = LIMITS[name]
     mm = _minmax(value)
     if mm is None:
         return []
-    if mm != "nan" and _inside(mm, lim.refuse, lim.lo_open) and (not warn or _inside(mm, lim.warn, False)):
+    finite = mm != "nan" and -math.inf < mm[0] and mm[1] < math.inf
+    if finite and _inside(mm, lim.refuse, lim.lo_open) and (not warn or _inside(mm, lim.warn, False)):
         return []                                      # the common case, without building messages
     shown = _show(value, lim.scale) if mm != "nan" else value
     ctx = f" ({what})" if what else ""
@@ -195,9 +207,15 @@ def check(name: str, value, field: str, *, what: str = "", category=OutsideValid
         raise InputError(field, shown, f"{lim.quantity} must be finite{ctx}")
     lo, hi = mm
     rlo, rhi = lim.refuse
-    if (rlo is not None and (lo < rlo or (lim.lo_open and lo <= rlo))) or (rhi is not None and hi > rhi):
-        raise InputError(field, shown, f"{lim.quantity} must lie in {lim.range_text('refuse')} [{lim.unit}]{ctx} "
+    below = rlo is not None and (lo < rlo or (lim.lo_open and lo <= rlo))
+    if below or (rhi is not None and hi > rhi):
+        quantity = lim.quantity
+        if given is not None:
+            shown, quantity = given, f"{lim.quantity} {(lo if below else hi) * lim.scale:.4g} {lim.unit}"
+        raise InputError(field, shown, f"{quantity} must lie in {lim.range_text('refuse')} [{lim.unit}]{ctx} "
                                        f"({lim.source})")
+    if not finite:                                     # infinite on a side without a bound
+        raise InputError(field, shown, f"{lim.quantity} must be finite{ctx}")
     wlo, whi = lim.warn
     out = []
     if not warn:
