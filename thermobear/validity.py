@@ -10,20 +10,23 @@ Two levels, for every quantity below:
   which the solvers collect into their results (``warnings``) and the command line prints one line
   each.
 
-========================  ==============  =====================  ====================  ==========
-quantity                  unit            refused beyond          warned beyond         source
-========================  ==============  =====================  ====================  ==========
-osculation f_i, f_o       –               outside (0.5, 2]        outside [0.505, 1.4]  [1]
-speed n·d_m               mm/min          > 4.0e6                 > 1.0e6               [2], [3]
-max. contact pressure     MPa             > 5 290                 > 4 200               [4], [5]
-contact angle + ellipse   °               beyond 90°              –                     [1]
-Hertz ellipse / radius    –               b/R_x or a/R_y > 1      > 0.2                 [6]
-lubricant temperature     °C              outside [−40, 250]      outside [−20, 150]    [7]
-static safety s0          –               (by the pressure)       < 1                   [4]
-SKF Φ_bl                  –               –                       > 0.5                 [8]
-========================  ==============  =====================  ====================  ==========
+The limits (the README's table is :func:`limits_table`, with the reasoning and source of each):
 
-Reasoning per limit is in :data:`LIMITS`.
+>>> print(limits_table(sources=False))
+| quantity | unit | refused | warned |
+|---|---|---|---|
+| osculation | – | outside (0.5, 2] | outside [0.505, 1.4] |
+| speed n·dm | mm/min | outside [0, 4e+06] | > 1e+06 |
+| maximum contact pressure | MPa | outside [0, 5292] | > 4200 |
+| contact angle + half the contact ellipse, from the groove bottom | deg | > 90 | – |
+| Hertz contact size / radius of curvature | – | outside [0, 1] | > 0.2 |
+| lubricant temperature | °C | outside [-40, 250] | outside [-20, 150] |
+| static safety s0 | – | – | < 1 |
+| load (Fa, Fr or M/ℜ_i), when not 0 | N | < 1e-06 | – |
+| speed, when not 0 | rpm | < 1e-06 | – |
+| SKF weighting factor Φ_bl | – | – | > 0.5 |
+
+Reasoning per limit is in :data:`LIMITS`; the sources are [1]_–[8]_.
 
 References
 ----------
@@ -70,8 +73,8 @@ import numpy as np
 
 from thermobear.errors import InputError, OutsideValidity
 
-__all__ = ["Limit", "LIMITS", "check", "collect", "P_MAX_REFUSE_PA", "P_MAX_WARN_PA", "T_LUBRICANT_REFUSE_C",
-           "T_LUBRICANT_WARN_C", "warning_lines"]
+__all__ = ["Limit", "LIMITS", "check", "collect", "limits_table", "P_MAX_REFUSE_PA", "P_MAX_WARN_PA",
+           "T_LUBRICANT_REFUSE_C", "T_LUBRICANT_WARN_C", "warning_lines"]
 
 
 @dataclass(frozen=True)
@@ -122,9 +125,10 @@ LIMITS = {
                "load, 4200·2^(1/3) MPa, where the permanent deformation (Palmgren 1959, ∝ Q²) is 4× "
                "ISO 76's and Hertz's elastic contact no longer holds"),
     "contact_angle": Limit(
-        "contact angle + half the contact ellipse", "deg", (None, math.pi / 2), (None, None), scale=180 / math.pi,
-        source="the contact must stay on the race side of the groove (Harris 2001 ch. 2): beyond 90° the "
-               "ellipse passes the groove's equator, over any shoulder"),
+        "contact angle + half the contact ellipse, from the groove bottom", "deg", (None, math.pi / 2), (None, None), scale=180 / math.pi,
+        source="the contact must stay on the race side of the groove (Harris 2001 ch. 2): beyond 90° from the "
+               "groove bottom (the radial plane; a thrust bearing's axis) the ellipse, a/(f D) wide on the groove "
+               "(Harris 2001 ch. 6), passes the groove's equator, over any shoulder"),
     "hertz_size": Limit(
         "Hertz contact size / radius of curvature", "-", (0.0, 1.0), (None, 0.2),
         source="Hertz's theory assumes contact dimensions small against the radii (Johnson 1985 §4.1)"),
@@ -136,7 +140,7 @@ LIMITS = {
         "static safety s0", "-", (None, None), (1.0, None),
         source="ISO 76:2006: s0 < 1 means permanent deformation above 1e-4 D (refused by the contact pressure)"),
     "load": Limit(
-        "load (Fa, Fr, |M|/ℜ_i), when not 0", "N", (1e-6, None), (None, None),
+        "load (Fa, Fr or M/ℜ_i), when not 0", "N", (1e-6, None), (None, None),
         source="below 1 µN the Hertz approach of a ball, (Q/K)^(2/3) with K ≈ 1e10 N/m^1.5, is below a tenth of "
                "an atomic spacing, where continuum contact (Hertz; Johnson 1985 §4.2) has no meaning (0: unloaded)"),
     "speed": Limit(
@@ -147,6 +151,33 @@ LIMITS = {
         "SKF weighting factor Φ_bl", "-", (None, None), (None, 0.5),
         source="SKF 2004: mostly boundary lubrication, μ_bl an estimated constant"),
 }
+
+
+def _bound_text(lim: Limit, which: str) -> str:
+    """A limit's refused or warned values, as a reader of a table reads them."""
+    lo, hi = getattr(lim, which)
+    f = (lambda v: f"{v * lim.scale:.4g}")  # noqa: E731
+    open_lo = lim.lo_open and which == "refuse"
+    if lo is None and hi is None:
+        return "–"
+    if lo is not None and hi is not None:
+        return f"outside {'(' if open_lo else '['}{f(lo)}, {f(hi)}]"
+    if hi is not None:
+        return f"> {f(hi)}"
+    return f"{'<=' if open_lo else '<'} {f(lo)}"
+
+
+def limits_table(sources: bool = True) -> str:
+    """:data:`LIMITS` as a Markdown table: quantity, unit, refused and warned values (and the source).
+
+    The README's table of the limits is this table (tests/test_readme.py checks it).
+    """
+    cols = ["quantity", "unit", "refused", "warned"] + (["source"] if sources else [])
+    rows = ["| " + " | ".join(cols) + " |", "|" + "---|" * len(cols)]
+    for lim in LIMITS.values():
+        cells = [lim.quantity, "–" if lim.unit == "-" else lim.unit, _bound_text(lim, "refuse"), _bound_text(lim, "warn")]
+        rows.append("| " + " | ".join(cells + ([lim.source] if sources else [])) + " |")
+    return "\n".join(rows)
 
 
 def _minmax(value):
