@@ -330,3 +330,12 @@ def test_oil_flow_per_operating_point_and_other_supplies():
     mist = evaluate_losses(cs, OIL, 50.0, supply="oil_air").breakdown_W["drag"]
     assert np.all(0 < air) and np.all(air < mist) and np.all(mist < r.breakdown_W["drag"])
     assert np.all(evaluate_losses(cs, OIL, 50.0, supply="oil_bath").breakdown_W["drag"] == 0.0)
+
+
+def test_two_dimensional_batch_temperatures_follow_their_operating_points():
+    # loads (2, 1) against speeds and temperatures (3,): each temperature stays with its speed
+    b, oil = tb.bearing("51205-3ball"), tb.lubricant("mol-liton-00")
+    n, T = np.array([60.0, 120.0, 210.0]), np.array([20.0, 40.0, 60.0])
+    r = tb.bearing_losses(b, oil, Fa=[[1.0], [4.0]], n_rpm=n, T_C=T, supply="grease")
+    single = [tb.bearing_losses(b, oil, Fa=1.0, n_rpm=nk, T_C=Tk, supply="grease").P_W for nk, Tk in zip(n, T)]
+    np.testing.assert_allclose(r.P_W[0], single, rtol=1e-12)
