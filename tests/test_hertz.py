@@ -1,5 +1,7 @@
 """Hertz point contact: exact solution against published/tabulated values and the
 approximations' error over Ry/Rx = 1…50 (issue 2 acceptance)."""
+import warnings
+
 import numpy as np
 import pytest
 from scipy.special import ellipe, ellipk
@@ -136,3 +138,26 @@ def test_nearly_circular_contact_takes_the_leading_order_ellipticity():
     # Ry/Rx − 1 = 2e-8: F(ρ) cancels 0/0 in floating point; κ = (Ry/Rx)^(2/3) to O((Ry/Rx − 1)²)
     c = hertz(10.0, 5e-3, 5.0000001e-3, 2.3e11)
     assert c.kappa == pytest.approx(1.0 + (2 / 3) * 2e-8, abs=1e-12)
+
+
+def test_a_contact_beyond_its_radii_or_the_float_range_is_refused_by_name():
+    # hertz(100, 1e-300, 1e-2, 228e9) returned a = inf (with overflow warnings)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        with pytest.raises(InputError, match=r"^Rx, Ry = 1e\+298 — the larger over the smaller radius must be <= 1e\+10"):
+            hertz(100.0, 1e-300, 1e-2, 228e9)
+        with pytest.raises(InputError, match=r"Hertz contact size / radius of curvature must lie in \[0, 1\]"):
+            hertz(58605.0, 0.015625, 0.0078125, 1e9)            # a soft, heavily loaded contact: a > Ry
+        with pytest.raises(InputError, match="Hertz contact size"):
+            hertz(1.7e308, 1e-30, 1e-30, 1.7e308)               # beyond the float range
+        with pytest.raises(InputError, match=r"^Q, Rx, Ry, E_prime = 'shapes \(4,\), \(3,\), \(\), \(\)' — must broadcast"):
+            hertz(np.ones(4), np.full(3, 1e-3), 1e-2, 2e11)
+
+
+def test_a_vanishing_load_gives_a_vanishing_contact_not_zero_times_infinity():
+    # a = c Q^(1/3): a subnormal load keeps the ellipse's shape and a finite pressure
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        tiny, one = hertz(5e-324, 1e-3, 1e-2, 2e11), hertz(1.0, 1e-3, 1e-2, 2e11)
+    assert tiny.a / one.a == pytest.approx(np.cbrt(5e-324), rel=1e-12)
+    assert tiny.p_max / one.p_max == pytest.approx(np.cbrt(5e-324), rel=1e-12) and tiny.p_max > 0

@@ -48,6 +48,10 @@ def test_the_solvers_and_the_scene_share_the_speed_limit():
     # a scene refuses 1e6 rpm on a 7210 (n dm = 7e7 mm/min), as every solver entry point does
     with pytest.raises(InputError, match="speed n·dm"):
         S004.with_(n_rpm=1e6)
+    with pytest.raises(InputError, match=r"^n_rpm = 1000000.0 — speed n·dm 7e\+07 mm/min must lie in \[0, 4e\+06\]"):
+        tb.bearing_losses(S004.bearing, S004.lubricant, 450.0, 325.0, n_rpm=1e6, T_C=50.0)
+    with pytest.raises(InputError, match=r"^n_rpm = 1000000.0 — speed n·dm"):
+        tb.load_distribution(S004.bearing, 450.0, 325.0, n_rpm=1e6)
     with pytest.warns(OutsideValidity, match="speed n·dm"):
         st = tb.steady_state(S004.with_(n_rpm=16000.0))          # 1.1e6: computed, but outside the validated
     assert any(w.quantity == "n_dm" for w in st.warnings)

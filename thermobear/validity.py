@@ -243,7 +243,8 @@ def check(name: str, value, field: str, *, what: str = "", category=OutsideValid
         quantity = lim.quantity
         if given is not None:
             shown, quantity = given, f"{lim.quantity} {(lo if below else hi) * lim.scale:.4g} {lim.unit}"
-        raise InputError(field, shown, f"{quantity} must lie in {lim.range_text('refuse')} [{lim.unit}]{ctx} "
+        verb = "lie in" if rlo is not None and rhi is not None else "be"
+        raise InputError(field, shown, f"{quantity} must {verb} {lim.range_text('refuse')} [{lim.unit}]{ctx} "
                                        f"({lim.source})")
     if not finite:                                     # infinite on a side without a bound
         raise InputError(field, shown, f"{lim.quantity} must be finite{ctx}")

@@ -181,8 +181,7 @@ def check_contacts(brg: BallBearing, sides, field: str, *, warn: bool = False, g
             p = np.where(Q > 0, 1.5 * Q / (np.pi * a * b), 0.0)
         out += check("p_max", p, field, what=f"{side} contacts", warn=warn, given=given)
         theta = np.where(Q > 0, groove_angle(brg, c["alpha"], a, f), 0.0)
-        out += check("contact_angle", theta, field, what=f"{side} contacts, from the groove bottom", warn=warn,
-                     given=given)
+        out += check("contact_angle", theta, field, what=f"{side} contacts", warn=warn, given=given)
     return out
 
 
@@ -238,7 +237,7 @@ def check_loads(brg: BallBearing, Fa, Fr, M=None, n_rpm=0.0, *, names=("Fa", "Fr
     if not all(np.all(np.isfinite(v)) for v in arrays[:3]):
         return                                    # not numbers: the forms name them
     for name, v in zip(names, loads):
-        check("load", v[v > 0], name, warn=False)
+        check("load", v[(v > 0) & (v < np.inf)], name, warn=False)      # (overflowed M/ℜ_i: the pressure says)
     peaks = [float(np.max(v)) if v.size else 0.0 for v in loads]
     if not max(peaks) > 0:
         return                                    # nothing to carry
