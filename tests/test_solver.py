@@ -1,5 +1,7 @@
 """Scene solver: least model per scene, same numbers on every path, steady energy balance,
 transient → steady, runaway and convergence behaviour (issues 4 and 5)."""
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -53,7 +55,9 @@ def _scene_dict():
         return tomllib.load(fh)
 
 
-@pytest.mark.parametrize("scene", [S001, S004.with_(Fr=0.0, T_C=50.0, n_rpm=1000.0), S002.with_(T_C=50.0)])
+@pytest.mark.parametrize("scene", [S001, S004.with_(Fr=0.0, T_C=50.0, n_rpm=1000.0), S002.with_(T_C=50.0),
+                                   S004.with_(bearing="6210", Fa=0.0, Fr=0.0, T_C=50.0, models={"high_speed": False})],
+                         ids=["seed001", "seed004-axial", "seed002", "unloaded-deep-groove"])
 def test_closed_form_and_jones_harris_paths_agree(scene):
     a = scene_losses(scene)
     assert choose_models(scene)["load_model"][0] == "closed_form"
@@ -273,3 +277,16 @@ def test_two_schedule_steps_at_one_time_are_refused_not_merged():
         transient(S004, 300.0, schedule=[(100.0, {"n_rpm": 4000.0}), (100.0, {"n_rpm": 5000.0})])
     with pytest.raises(InputError, match="step times must increase"):
         transient(S004, 300.0, schedule=[(200.0, {"n_rpm": 4000.0}), (100.0, {"n_rpm": 5000.0})])
+
+
+def test_the_kinematics_model_of_the_scene_is_the_one_used():
+    a = scene_losses(S004.with_(T_C=50.0, models={"high_speed": False}))
+    b = scene_losses(S004.with_(T_C=50.0, models={"high_speed": False, "kinematics": "inner"}))
+    assert a.P_W != b.P_W and b.models_used["kinematics"][0] == "inner"
+
+
+def test_outer_ring_rotation_does_not_take_the_inner_ring_high_speed_path():
+    sc = dataclasses.replace(S004, rotating="outer").with_(n_rpm=6500.0)
+    assert choose_models(sc)["high_speed"][0] == "no"
+    with pytest.raises(InputError, match="inner"):
+        choose_models(sc.with_(models={"high_speed": True}))

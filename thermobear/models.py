@@ -215,7 +215,7 @@ def _load_model_alternatives(scene: Scene, dry) -> list:
     if scene.supply not in FLOODED:
         return [(("jones_harris", jh + f"; {scene.supply}: contacts outside the load zone taken as starved (no "
                                        "film load)"), 1.0)]
-    if isinstance(dry, SolverError):    # the load step itself will say so (a sweep records it for its point)
+    if isinstance(dry, (SolverError, InputError)):  # the load step itself will say so (per point)
         return [(("jones_harris", jh + f"; the dry solution failed ({type(dry).__name__}), so no film test"), 1.0)]
     Z = scene.bearing.Z
     lo, hi = BLEND_BANDS["film"]
@@ -531,7 +531,7 @@ def _batch_dry(brg, no_M, stiff, low, keys, dry):
     n = None if low else np.array([k[5] for k in keys])
     try:               # no continuation inside a batch: a case that needs it is left to its own solve
         ld = _solve_dry(brg, Fa, Fr, M, stiff, n, continuation=len(keys) == 1)
-    except SolverError as exc:
+    except (SolverError, InputError) as exc:     # loads the contacts cannot carry: said by the load step
         if len(keys) == 1:
             dry[keys[0]] = exc
             return

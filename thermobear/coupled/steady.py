@@ -45,6 +45,7 @@ from thermobear.coupled.limits import emit, family_warnings, overloads
 from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepared_for
 from thermobear.errors import (ExtrapolationWarning, InputError, NoConvergence, OutsideValidity, SolverError,
                                ThermalRunaway)
+from thermobear.loads.api import check_loads, contact_bounds
 from thermobear.models import plan_many
 from thermobear.scene import Scene
 from thermobear.thermal.solve import batched_solve, solve_linear
@@ -56,6 +57,7 @@ _C0 = 273.15
 T_LIMIT_K = T_LUBRICANT_REFUSE_C[1] + _C0     #: an equilibrium beyond the lubricant's limit is runaway
 _FILM_TOL_K = 0.1                              #: film temperature fixed point tolerance [K]
 _FILM_MAXITER = 10
+_SCENE_LOADS = ("operation.Fa_N", "operation.Fr_N", "operation.M_Nm", "operation.n_rpm")
 
 
 @dataclass
@@ -482,8 +484,17 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> l
             raise InputError("operation.T_C", sc.T_C, "the scene prescribes its temperature: use solve() "
                              "or remove operation.T_C to solve the thermal network")
     out: list = [None] * len(scenes)
+    alternatives = plan_many(scenes)
+    bounds: dict = {}
+    for k, sc in enumerate(scenes):          # loads no answer exists for, named as the scene names them
+        if sc.bearing not in bounds:
+            bounds[sc.bearing] = contact_bounds(sc.bearing)
+        try:
+            check_loads(sc.bearing, sc.Fa, sc.Fr, sc.M, sc.n_rpm, names=_SCENE_LOADS, bounds=bounds[sc.bearing])
+        except InputError as exc:
+            alternatives[k] = exc
     jobs, plans, owner = [], [], []           # one job per model alternative of a point
-    for i, (sc, alts) in enumerate(zip(scenes, plan_many(scenes))):
+    for i, (sc, alts) in enumerate(zip(scenes, alternatives)):
         if isinstance(alts, Exception):
             out[i] = alts
             continue

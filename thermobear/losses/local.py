@@ -53,6 +53,7 @@ from thermobear.contact.geometry import BallBearing
 from thermobear.contact.hertz import hertz
 from thermobear.contact.kinematics import ball_kinematics, caged_ball_kinematics, common_cage_speed
 from thermobear.errors import InputError
+from thermobear.loads.api import check_contacts, check_loads, loads_text
 from thermobear.loads.static import LoadDistribution, load_distribution
 from thermobear.losses.cage import CageLand, cage_loss
 from thermobear.losses.drag import churning_loss, drag_loss, immersed_fraction, oil_volume_fraction_parker
@@ -64,6 +65,7 @@ from thermobear.losses.traction import STRIP_NODES, strip_traction_coefficient
 from thermobear.lubrication.film import REGIMES, EHLContacts, ehl_contacts, specific_film_thickness
 from thermobear.lubrication.thermal_film import (thermal_inlet_viscosity, thermal_loading_parameter,
                                                  thermal_reduction_gupta)
+from thermobear.validity import check as check_limit
 
 __all__ = ["LossResult", "ContactSet", "ContactArrays", "bearing_losses", "prepare_contacts", "evaluate_losses",
            "BREAKDOWN_KEYS", "ROLLING_MODELS", "TRACTION_MODELS"]
@@ -314,7 +316,7 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
     }
     f = _frozen
     Q2, Rx2, Ry2, u2, a2, b2 = (f(v) for v in (Q2, Rx2, Ry2, u2, a2, b2))
-    inv_omega = np.where(omega > 0, 1.0 / np.where(omega > 0, omega, 1.0), 0.0)
+    inv_omega = np.where(omega > 0, 1.0 / np.maximum(omega, np.finfo(float).tiny), 0.0)     # (subnormal ω: finite)
     return ContactSet(brg=brg, n_rpm=f(nb), omega=f(omega), inv_omega=f(inv_omega), load=load, omega_c=f(omega_c),
                       omega_cage=f(w_cage), omega_ball=f(np.abs(np.broadcast_to(kin.omega_R, omega_c.shape))),
                       models_used=models, Q=f(Q2), alpha=f(al2), Rx=f(Rx2), Ry=f(Ry2),
@@ -409,7 +411,7 @@ def _drag_power(cs, oil, T_oil, eta_oil, supply, oil_flow_m3_s):
         P = [drag_loss(brg.Z, brg.D, brg.dm, wc, X, oil.rho(t), e, t + 273.15).P_W
              for t, e in zip(T_oil.ravel().tolist(), eta_oil.ravel().tolist())]
         return np.array(P).reshape(T_oil.shape)
-    run = cs.n_rpm > 0
+    run = cs.omega_cage > 0                       # (a subnormal speed: a cage speed of 0)
     all_run = bool(run.all())
     if supply == "oil_jet":
         W = np.asarray(oil_flow_m3_s, float) * 1e6 * 60.0                             # [cm³/min]
@@ -538,7 +540,7 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
         raise InputError("supply", supply, "must be " + ", ".join(SUPPLIES[:-1]) + " or " + SUPPLIES[-1])
     if traction not in TRACTION_MODELS:
         raise InputError("traction", traction, f"must be one of {', '.join(TRACTION_MODELS)}")
-    dragged = drag and supply not in ("oil_bath", "dry_film") and bool(cs.n_rpm.any())
+    dragged = drag and supply not in ("oil_bath", "dry_film") and bool(cs.omega_cage.any())
     Tall, lead, per_ball = _temperatures(cs, T_C, T_inner_C, T_outer_C, T_oil_C, dragged)
     T2 = Tall[..., :2, :]                           # the raceways' contact temperatures
     eta_all = _at(oil.eta, Tall)                    # contacts and (drag) the oil–air mixture in one call
@@ -707,10 +709,17 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
     >>> max(r.breakdown_W, key=r.breakdown_W.get), bool(abs(r.torque_Nm * 4800 * np.pi / 30 / r.P_W - 1) < 1e-12)
     ('rolling', True)
     """
-    batch = np.broadcast_shapes(np.shape(Fa), np.shape(Fr), np.shape(n_rpm), np.shape(T_C),
-                                np.shape(T_oil_C) if T_oil_C is not None else ())
+    shapes = [np.shape(v) for v in (Fa, Fr, n_rpm, T_C)] + [np.shape(T_oil_C) if T_oil_C is not None else ()]
+    try:
+        batch = np.broadcast_shapes(*shapes)
+    except ValueError:
+        raise InputError("Fa, Fr, n_rpm, T_C, T_oil_C", "shapes " + ", ".join(map(str, shapes)),
+                         "must broadcast together (numpy rules)") from None
+    check_loads(brg, Fa, Fr, M, n_rpm)                    # before any solve: what no answer exists for
+    check_limit("n_dm", np.asarray(n_rpm, float) * brg.dm * 1e3, "n_rpm")    # warns beyond the validated speed
     cs = prepare_contacts(brg, Fa, Fr, np.broadcast_to(np.asarray(n_rpm, float), batch), M=M, rotating=rotating,
                           hertz_method=hertz_method, control=control, centrifugal=centrifugal, load=load)
+    check_contacts(brg, cs.sides, "Fa, Fr, M", warn=True, given=loads_text(Fa, Fr, M))
     return evaluate_losses(cs, oil, T_C, T_inner_C=T_inner_C, T_outer_C=T_outer_C, T_oil_C=T_oil_C, supply=supply,
                            oil_flow_m3_s=oil_flow_m3_s, Rq_ball=Rq_ball, Rq_ring=Rq_ring, mu_boundary=mu_boundary,
                            mu_full_film=mu_full_film, rolling_model=rolling_model, drag=drag, traction=traction,
