@@ -299,9 +299,12 @@ def thermally_safe_speed(scene: Scene, *, limit_C: float = 70.0, node: str | Non
             raise NoSpeedRoot(f"{scene.name}: the limit {limit_C:g} °C on {what} is exceeded already at "
                               f"{bottom:.6g} rpm ({T[0]:.2f} °C)", residual=T[0] - limit_C)
 
+        seen = {}
+
         def excess(n):
             try:
-                return hottest_ring_C(steady_state(scene.with_(n_rpm=float(n)), prepared=prep), node) - limit_C
+                seen[n] = steady_state(scene.with_(n_rpm=float(n)), prepared=prep)
+                return hottest_ring_C(seen[n], node) - limit_C
             except (ThermalRunaway, InputError) as e:
                 if not _beyond(e):
                     raise
@@ -309,7 +312,7 @@ def thermally_safe_speed(scene: Scene, *, limit_C: float = 70.0, node: str | Non
         n, r = brentq(excess, ladder[i - 1], ladder[i], xtol=xtol_rpm, full_output=True)
     if not r.converged:
         raise NoConvergence(f"{scene.name}: Brent did not converge ({r.flag})", iterations=r.iterations)
-    st = steady_state(scene.with_(n_rpm=float(n)), prepared=prep)
+    st = seen[n] if n in seen else steady_state(scene.with_(n_rpm=float(n)), prepared=prep)
     Tn = hottest_ring_C(st, node)
     rise = T[int(np.argmin(T[:i + 1])):i + 1]       # from the coolest ladder point up to the crossing
     return SafeSpeed(scene=scene.name, n_rpm=float(n), limit_C=float(limit_C), node=node or "hottest ring", T_C=Tn,
