@@ -1,6 +1,7 @@
 """Speeds: ISO 15312 reference conditions and heat flow, DIN 732's speed ratio, the model's thermal
 reference speed and the thermally safe speed of a scene's cooling (root meets its condition, trends,
 failures named)."""
+import json
 import warnings
 
 import numpy as np
@@ -126,7 +127,6 @@ def test_din732_of_the_block_scene(block):
 
 
 def test_cli_speed_json(capsys, block):
-    import json
     assert main(["speed", tb.example_path("block_6208_oil_bath.toml"), "--json", "--limit-C", "70"]) == 0
     rep = json.loads(capsys.readouterr().out)
     assert abs(rep["model"]["T_C"] - 70.0) < 0.01
