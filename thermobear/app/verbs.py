@@ -17,6 +17,7 @@ import numpy as np
 from thermobear.app.output import (Progress, RowWriter, check_out_dir, check_out_file, csv_text, flatten,
                                    print_json, write_text, wrote)
 from thermobear.app.calibration import calibrate
+from thermobear.app.scaffold import scaffold
 from thermobear.app.rig import channel_map, compare, parse_map, read_log
 from thermobear.app.spindown import spin_down_runs
 from thermobear.app.sweep import run_sweep, sweep_points
@@ -35,7 +36,7 @@ from thermobear.scene import load_scene
 from thermobear.scene.network import network_nodes
 from thermobear.validity import T_LUBRICANT_REFUSE_C
 
-__all__ = ["cmd_run", "cmd_loads", "cmd_list", "cmd_transient", "cmd_sweep", "cmd_compare", "cmd_calibrate",
+__all__ = ["cmd_run", "cmd_loads", "cmd_list", "cmd_init", "cmd_transient", "cmd_sweep", "cmd_compare", "cmd_calibrate",
            "cmd_spin_down", "read_schedule", "EXIT_INTERRUPTED"]
 
 EXIT_SOLVER = 3
@@ -176,6 +177,22 @@ def cmd_loads(args):
     for j in range(scene.bearing.Z):
         print(f"{j:4d} {d['psi_deg'][j]:10.1f} {ld.Q_i[j]:10.2f} {ld.Q_o[j]:10.2f} {d['alpha_inner_deg'][j]:14.2f} "
               f"{d['alpha_outer_deg'][j]:14.2f}")
+    return 0
+
+
+def cmd_init(args):
+    out = check_out_file(args.out, "--out")
+    cmd = " ".join(["thermobear init", args.bearing, "--lubrication", args.lubrication]
+                   + [f"{flag} {v:g}" if isinstance(v, float) else f"{flag} {v}" for flag, v in
+                      (("--oil", args.oil), ("--housing", args.housing), ("--speed-rpm", args.speed_rpm),
+                       ("--Fr-N", args.Fr_N), ("--Fa-N", args.Fa_N)) if v is not None])
+    text = scaffold(args.bearing, args.lubrication, oil=args.oil, housing=args.housing, n_rpm=args.speed_rpm,
+                    Fr_N=args.Fr_N, Fa_N=args.Fa_N, command=cmd)
+    if out is None:
+        print(text, end="")
+    else:
+        write_text(out, text)
+        wrote([out])
     return 0
 
 
