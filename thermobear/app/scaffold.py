@@ -272,10 +272,9 @@ def _housing_rows(m, lay, housing: str) -> list:
                  ("centre_height_mm", round(1e3 * lay.centre_height, 3), "mm: half the height")]
     else:
         rows.append(("outer_diameter_mm", round(1e3 * lay.height, 3), f"mm: 2 D, {_MACHINE_SRC}"))
-        rows.append(("centre_height_mm", round(1e3 * lay.centre_height, 3),
-                     "mm: 0.7 × body diameter (pillow foot)" if lay.foot else "mm: the body's axis"))
         if lay.foot:
-            rows.append(("base_length_mm", round(1e3 * lay.base_length, 3), "mm: 2.5 × body diameter (the foot)"))
+            rows += [("centre_height_mm", round(1e3 * lay.centre_height, 3), "mm: 0.7 × body diameter (the foot)"),
+                     ("base_length_mm", round(1e3 * lay.base_length, 3), "mm: 2.5 × body diameter (the foot)")]
     rows += [("end_left", lay.end_left, "air | mounted | adiabatic" + (" (a flange is bolted by its left face)"
                                                                         if housing == "flange" else "")),
              ("end_right", lay.end_right, "air | mounted | adiabatic"),

@@ -1,6 +1,7 @@
 """``thermobear run``: a scene with the least model it needs, and what it reports."""
 from __future__ import annotations
 
+import re
 import warnings
 from dataclasses import dataclass
 
@@ -14,7 +15,57 @@ from thermobear.errors import OutsideValidity
 from thermobear.models import plan_many
 from thermobear.scene import Scene
 
-__all__ = ["RunResult", "solve"]
+__all__ = ["RunResult", "solve", "heat_flows", "heat_flow_table"]
+
+#: the sign convention of the heat-flow table
+HEAT_FLOW_SIGN = ("W leaving the machine through each path into a fixed-temperature boundary (ambient air, frame, "
+                  "a held shaft end, an imposed node) or the oil stream; positive: out; the paths sum to the power loss")
+
+
+def heat_flows(st: SteadyState) -> dict:
+    """Where the heat goes at a steady state: per loss part the nodes it heats, per path the W leaving.
+
+    Returns ``{"sign": ..., "sources_W": {part: {node: W}}, "out_W": {path: W}, "out_to": {path: boundary},
+    "out_by_group_W": {group: W}}`` (groups: :func:`path_group`)."""
+    groups: dict = {}
+    for k, v in st.heat_out_W.items():
+        g = path_group(k, st.heat_out_to.get(k, ""))
+        groups[g] = groups.get(g, 0.0) + v
+    return {"sign": HEAT_FLOW_SIGN, "sources_W": {p: n for p, n in st.heat_sources_W.items() if any(n.values())},
+            "out_W": st.heat_out_W, "out_to": st.heat_out_to, "out_by_group_W": groups}
+
+
+def path_group(path: str, boundary: str) -> str:
+    """A readable group of a path: the body its cell belongs to (cell suffixes of the builders'
+    discretisation dropped: ``housing_left_1_r5`` → ``housing_left``) and the surface it leaves by
+    (``ambient_sides``, ``frame_mounting``, ``ambient_end``); the oil stream by its name.
+
+    >>> path_group("housing_left_1_r5--ambient_sides", "ambient"), path_group("oil_stream", "stream")
+    ('housing → ambient_sides', 'oil_stream → stream')
+    """
+    if "--" not in path:
+        return f"{path} → {boundary}"
+    src, surface = path.split("--", 1)
+    body = re.sub(r"(_seat)?(_\d+)?(_r\d+)?$", "", src) or src
+    if re.fullmatch(r"housing_(left|right)", body):       # axial slices of one housing
+        body = "housing"
+    return f"{body} → {surface}"
+
+
+def heat_flow_table(st: SteadyState, P_W: float) -> list:
+    """Lines of the text table of :func:`heat_flows` (paths grouped by body and surface)."""
+    hf = heat_flows(st)
+    lines = ["Heat sources (loss part → node, W)"]
+    for part, nodes in hf["sources_W"].items():
+        lines.append(f"  {part:18s} " + ", ".join(f"{n} {w:.3f}" for n, w in nodes.items() if w))
+    lines += ["", "Heat leaving (W out of the machine into a fixed-temperature boundary or the oil stream; the paths "
+              "sum to the power loss)", f"  {'path (body → surface)':44s} {'W':>10s} {'share':>7s}"]
+    total = 0.0
+    for g, w in sorted(hf["out_by_group_W"].items(), key=lambda kv: -abs(kv[1])):
+        total += w
+        lines.append(f"  {g:44s} {w:10.4f} {100 * w / P_W if P_W > 0 else 0.0:6.1f} %")
+    lines.append(f"  {'total':44s} {total:10.4f} (power loss {P_W:.4f} W)")
+    return lines
 
 
 @dataclass
@@ -58,7 +109,9 @@ class RunResult:
         if self.steady is not None:
             d["solver"] = {"iterations": self.steady.iterations, "residual_K": self.steady.residual_K,
                            "energy_balance_W": self.steady.energy_balance_W}
+            d["T_contacts_C"] = self.steady.T_contacts_C
             d["heat_flows_W"] = self.steady.heat_flows_W
+            d["heat_flows"] = heat_flows(self.steady)
         return d
 
     def summary(self) -> str:
@@ -77,6 +130,7 @@ class RunResult:
                 continue
             lines.append(f"  {k:18s} {str(v[0]):40s} {v[1]}")
         if self.steady is not None:
+            lines += ["", *heat_flow_table(self.steady, self.P_W)]
             lines += ["", f"Fixed point: {self.steady.iterations} iterations, residual {self.steady.residual_K:.1e} K, "
                           f"energy balance {self.steady.energy_balance_W:.1e} W"]
         return "\n".join(lines)

@@ -48,7 +48,7 @@ from thermobear.errors import (ExtrapolationWarning, InputError, NoConvergence, 
 from thermobear.loads.api import check_loads, contact_bounds
 from thermobear.models import plan_many
 from thermobear.scene import Scene
-from thermobear.thermal.solve import batched_solve, solve_linear
+from thermobear.thermal.solve import batched_solve, heat_paths, solve_linear
 from thermobear.validity import T_LUBRICANT_REFUSE_C
 
 __all__ = ["SteadyState", "steady_state", "steady_states", "T_LIMIT_K"]
@@ -77,6 +77,10 @@ class SteadyState:
     residual_K : float        last temperature change [K]
     energy_balance_W : float  Σ sources − Σ heat to fixed nodes and the oil stream [W]
     heat_flows_W : dict       element → heat flow [W] (signed along the element's ``between``)
+    heat_sources_W : dict     loss part → {node: W}: where each part of the loss heats the network
+    heat_out_W : dict         path (element) → W leaving the network through it into a fixed-temperature
+                              node or the oil stream (positive: out); sums to the heat of the sources
+    heat_out_to : dict        path → the boundary it leads to (a fixed node, or ``"stream"``)
     models_used : dict        model → (choice, reason)
     history : list            convergence history
     roles : dict              role → node (ball, inner, outer, oil)
@@ -97,6 +101,9 @@ class SteadyState:
     torque_Nm: float = 0.0
     breakdown_W: dict = field(default_factory=dict)
     T_contacts_C: float = 0.0
+    heat_sources_W: dict = field(default_factory=dict)
+    heat_out_W: dict = field(default_factory=dict)
+    heat_out_to: dict = field(default_factory=dict)
     batch_losses: object = field(default=None, repr=False)
     row: int | None = None
 
@@ -295,6 +302,8 @@ def _finish(fam: Family, net, src, cp: Coupling, template, nw: _Newton, tol_K) -
     gap = np.abs(st.T_K[:, free] @ cp.C.T - nw.x).max(axis=1)
     bal = np.atleast_1d(st.balance_W)
     flows = {k: np.atleast_1d(v) for k, v in st.flows_W.items()}
+    paths = heat_paths(net, np.column_stack([np.broadcast_to(flows[e.name], (fam.B,)) for e in net.elements]))
+    free_nodes = [n for n, f in zip(net.nodes, free) if f]
     warned = family_warnings(fam.scenes, r, x_C, nw.done & (nw.x.max(axis=1) <= T_LIMIT_K))
     B = fam.B
     P_all, M_all = (np.broadcast_to(np.asarray(v, float), (B,)) for v in (r.P_W, r.torque_Nm))
@@ -331,7 +340,19 @@ def _finish(fam: Family, net, src, cp: Coupling, template, nw: _Newton, tol_K) -
             heat_flows_W={k: float(v[b]) for k, v in flows.items()},
             models_used=_point_models_used(used, nw, b), history=nw.history[b], roles=dict(cp.roles),
             warnings=warned[b], torque_Nm=float(M_all[b]), breakdown_W={k: float(v[b]) for k, v in bd_all.items()},
-            T_contacts_C=float(np.broadcast_to(T_cont, (B,))[b]), batch_losses=r, row=b))
+            T_contacts_C=float(np.broadcast_to(T_cont, (B,))[b]), batch_losses=r, row=b,
+            heat_sources_W=_part_sources(cp, parts[b], free_nodes),
+            heat_out_W={k: float(q[b]) for k, (_, q) in paths.items()},
+            heat_out_to={k: to for k, (to, _) in paths.items()}))
+    return out
+
+
+def _part_sources(cp: Coupling, parts_b, free_nodes) -> dict:
+    """Loss part → {node: W} of one point: the split of each part over the network's free nodes."""
+    out = {}
+    for j, name in enumerate(cp.parts):
+        q = cp.S[:, j] * float(parts_b[j])
+        out[name] = {free_nodes[i]: float(q[i]) for i in np.flatnonzero(cp.S[:, j])}
     return out
 
 
