@@ -99,6 +99,18 @@ def test_list_and_loads(capsys):
     assert code == 0 and len(d["Q_inner_N"]) == len(d["psi_deg"]) and d["form"].startswith("high-speed")
 
 
+def test_list_bearings_of_a_series(capsys):
+    code, out, _ = run(capsys, "list", "bearings", "--series", "62", "--json")
+    rows = json.loads(out)
+    assert code == 0 and [r["designation"] for r in rows][:3] == ["6200", "6201", "6202"]
+    r = next(r for r in rows if r["designation"] == "6208")
+    assert (r["d_mm"], r["D_mm"], r["B_mm"]) == (40.0, 80.0, 18.0) and "D_mm" in r["estimated"] and r["C0_kN"] > 0
+    code, out, _ = run(capsys, "list", "bearings", "--series", "72 B")
+    assert code == 0 and "7205B" in out and "40.00" in out
+    code, _, err = run(capsys, "list", "bearings", "--series", "99")
+    assert code == 2 and "known series" in err
+
+
 def test_solver_error_exit_3(capsys, monkeypatch):
     import thermobear.app.verbs as verbs
     from thermobear.errors import ThermalRunaway

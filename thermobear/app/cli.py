@@ -161,6 +161,10 @@ def build_parser() -> argparse.ArgumentParser:
     it.set_defaults(func=cmd_init)
 
     li = sub.add_parser("list", help="list bundled bearings, lubricants, materials, networks, examples")
+    li.add_argument("what", nargs="?", choices=["bearings", "lubricants", "materials", "networks", "examples"],
+                    help="one category (default: all, names only)")
+    li.add_argument("--series", metavar="S", help='bearings of one series as a table (d x D x B, Z, D_w, alpha0, C, '
+                    'C0, estimated values), e.g. 62, "72 B", 70')
     li.add_argument("--json", action="store_true")
     li.set_defaults(func=cmd_list)
     return p

@@ -21,7 +21,7 @@ from thermobear.app.scaffold import scaffold
 from thermobear.app.rig import channel_map, compare, parse_map, read_log
 from thermobear.app.spindown import spin_down_runs
 from thermobear.app.sweep import run_sweep, sweep_points
-from thermobear.contact.geometry import bearing_names
+from thermobear.contact.geometry import bearing, bearing_names
 from thermobear.contact.materials import material_names
 from thermobear.coupled import solve, transient
 from thermobear.errors import InputError
@@ -196,15 +196,50 @@ def cmd_init(args):
     return 0
 
 
+def bearing_rows(series: str) -> list:
+    """One row per catalogue bearing of a series: designation, boundary dimensions [mm], Z, D_w [mm],
+    alpha0 [deg], C and C0 [kN], the estimated values."""
+    rows = []
+    for name in bearing_names(series=series):
+        b = bearing(name)
+        rows.append({"designation": name, "kind": b.kind, "d_mm": round(b.bore * 1e3, 6),
+                     "D_mm": round(b.outer_diameter * 1e3, 6), "B_mm": round(b.width * 1e3, 6), "Z": b.Z,
+                     "Dw_mm": round(b.D * 1e3, 6), "alpha0_deg": round(float(np.rad2deg(b.alpha0)), 6),
+                     "C_kN": None if b.C is None else b.C / 1e3, "C0_kN": None if b.C0 is None else b.C0 / 1e3,
+                     "estimated": list(b.estimated)})
+    return rows
+
+
+def _print_bearing_rows(series, rows):
+    print(f"series {series}: {len(rows)} bearings (alpha0 of a deep groove bearing: its free contact angle from the "
+          "mid clearance; C, C0 by ISO 281 / ISO 76 from the geometry)")
+    print(f"{'designation':12s} {'d x D x B [mm]':>18s} {'Z':>3s} {'D_w [mm]':>9s} {'alpha0':>7s} {'C [kN]':>8s} "
+          f"{'C0 [kN]':>8s}  estimated")
+    for r in rows:
+        dims = f"{r['d_mm']:g} x {r['D_mm']:g} x {r['B_mm']:g}"
+        C, C0 = (f"{v:8.2f}" if v is not None else f"{'-':>8s}" for v in (r["C_kN"], r["C0_kN"]))
+        print(f"{r['designation']:12s} {dims:>18s} {r['Z']:3d} {r['Dw_mm']:9.4f} {r['alpha0_deg']:7.2f} {C} {C0}  "
+              f"{', '.join(r['estimated']) or '-'}")
+
+
 def cmd_list(args):
-    what = {"bearings": bearing_names(), "lubricants": lubricant_names(), "materials": material_names(),
-            "networks": names_in(data_dir("networks")),
-            "examples": sorted(p.name for p in data_dir("examples").glob("*.toml"))}
+    if args.series is not None:
+        if args.what not in (None, "bearings"):
+            raise InputError("--series", args.series, "applies to thermobear list bearings")
+        rows = bearing_rows(args.series)
+        print_json(rows) if args.json else _print_bearing_rows(args.series, rows)
+        return 0
+    what = {"bearings": bearing_names, "lubricants": lubricant_names, "materials": material_names,
+            "networks": lambda: names_in(data_dir("networks")),
+            "examples": lambda: sorted(p.name for p in data_dir("examples").glob("*.toml"))}
+    what = {k: f() for k, f in what.items() if args.what in (None, k)}
     if args.json:
         print_json(what)
     else:
         for k, v in what.items():
             print(f"{k}: {', '.join(v)}")
+    if args.what is None and not args.json:
+        print("(thermobear list bearings --series 62: a series as a table)")
     return 0
 
 
