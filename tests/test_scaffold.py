@@ -107,6 +107,8 @@ def test_thermal_reference_speed_balances_the_reference_heat_flow_and_falls_with
     (["6208", "--lubrication", "grease", "--oil", "iso-vg-68-mineral"], "needs a grease"),
     (["6208", "--lubrication", "oil-jet", "--oil", "grease-lithium-mineral-vg100-nlgi2"], "needs an oil"),
     (["6208", "--lubrication", "oil-bath", "--speed-rpm", "-5"], "--speed-rpm"),
+    (["51107", "--lubrication", "grease", "--Fr-N", "1000"], "--Fr-N"),
+    (["7205B", "--lubrication", "grease", "--Fr-N", "1000"], "--Fa-N"),
 ])
 def test_init_refuses_unknown_names_with_one_line(argv, field, capsys):
     assert main(["init", *argv]) == 2

@@ -211,6 +211,12 @@ def _operation(brg, ref: ReferenceSpeed | None, n_rpm, Fr_N, Fa_N) -> list:
         rows.append(("Fa_N", _sig(fa, 3), f"N: {how}, {C0}" if fa > 0 else "N: none (radial reference load)"))
         rows.append(("Fr_N", _sig(fr, 3), f"N: {how}, {C0}" if fr > 0 else "N: none (axial reference load)"))
     else:
+        if brg.kind == "thrust" and (Fr_N or not Fa_N):
+            raise InputError("--Fr-N" if Fr_N else "--Fa-N", Fr_N or Fa_N, "a thrust ball bearing carries an axial load "
+                             "only: give --Fa-N > 0 and no --Fr-N")
+        if brg.kind == "angular_contact" and not Fa_N:
+            raise InputError("--Fa-N", Fa_N, "a single angular contact bearing needs an axial load against its "
+                             "shoulder: give --Fa-N (the axial reaction or preload of the arrangement)")
         rows.append(("Fa_N", float(Fa_N or 0.0), "N: given (--Fa-N)" if Fa_N is not None else "N: 0 (only --Fr-N given)"))
         rows.append(("Fr_N", float(Fr_N or 0.0), "N: given (--Fr-N)" if Fr_N is not None else "N: 0 (only --Fa-N given)"))
     rows.append(("rotating", "inner", "the inner ring turns with the shaft"))
