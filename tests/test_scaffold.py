@@ -12,7 +12,7 @@ import pytest
 
 import thermobear as tb
 from thermobear.app.cli import main
-from thermobear.app.scaffold import reference_loads, scaffold, thermal_reference_speed
+from thermobear.coupled.speeds import reference_loads, thermal_reference_speed
 from thermobear.coupled import solve
 from thermobear.errors import OutsideValidity
 from thermobear.losses.skf import skf_constants, skf_friction
@@ -85,20 +85,11 @@ def test_defaults_follow_iso_15312_reference_conditions(capsys):
     # every key line says where its value comes from
     keys = [ln for ln in text.splitlines() if "=" in ln and not ln.startswith(("#", "["))]
     assert keys and all("#" in ln for ln in keys if not ln.startswith(("name =", "description =", "source =")))
-    assert reference_loads(tb.bearing("51107"))[0] == pytest.approx(0.02 * tb.bearing("51107").C0)
-    assert reference_loads(tb.bearing("7205B")) == pytest.approx((0.05 * tb.bearing("7205B").C0, 0.0))
-
-
-def test_thermal_reference_speed_balances_the_reference_heat_flow_and_falls_with_size():
-    refs = [thermal_reference_speed(tb.bearing(n)) for n in ("6204", "6208", "6216")]
-    assert refs[0].n_rpm > refs[1].n_rpm > refs[2].n_rpm
-    r = refs[1]
-    assert r.N_W == pytest.approx(16e3 * math.pi * 0.018 * (0.080 + 0.040))       # q_r A_r, A_r < 0.05 m²
-    sc = scene_from_dict({"bearing": {"catalog": "6208"}, "lubricant": {"name": r.oil, "supply": "oil_bath",
-                          "oil_level_mm": 6.35}, "operation": {"n_rpm": r.n_rpm, "Fr_N": r.Fr_N, "T_C": 70.0}})
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", OutsideValidity)
-        assert solve(sc).P_W == pytest.approx(r.N_W, rel=1e-2)
+    for name in ("51107", "7205B"):                       # axial (thrust) / radial with its axial reaction
+        d = tomllib.loads(_init(capsys, name, "--lubrication", "grease"))
+        loads = reference_loads(tb.bearing(name))
+        assert d["operation"]["Fa_N"] > 0 and d["operation"]["Fa_N"] == pytest.approx(loads["Fa"], rel=2e-3)
+        assert d["operation"]["Fr_N"] == pytest.approx(loads.get("Fr", 0.0), rel=2e-3)
 
 
 @pytest.mark.parametrize("argv, field", [

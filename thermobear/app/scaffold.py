@@ -4,10 +4,11 @@ The scene names every key it uses, with its unit and where its value comes from:
 
 * the bearing: the catalogue (``materials/bearings/*.toml``; estimated internal geometry marked there);
 * the operating point, when not given: the reference conditions of ISO 15312:2003 (thermal speed
-  rating) — a radial load of 0.05 C0 for a radial bearing, an axial load of 0.02 C0 for a thrust
-  bearing (an angular contact bearing gets its 0.05 C0 as an axial load: a single angular contact
-  bearing carries a radial load only against an axial one), ambient 20 °C — and half of the
-  bearing's thermal reference speed (:func:`thermal_reference_speed`);
+  rating) — a radial load of 0.05 C0 for a radial bearing (an angular contact bearing with the axial
+  reaction of a half load zone, 1.25 Fr tan α0: alone it carries a radial load only against an axial
+  one), an axial load of 0.02 C0 for a thrust bearing, ambient 20 °C — and half of the
+  bearing's thermal reference speed (:func:`thermobear.coupled.speeds.thermal_reference_speed`: the speed at
+  which thermobear's loss at the reference conditions equals the reference heat flow q_r A_r);
 * the lubrication: ISO 15312's reference lubrication (oil bath to the middle of the lowest ball,
   ISO VG 32 for radial and VG 68 for thrust bearings; a lithium / mineral-oil grease of 100–200 mm²/s
   at 40 °C filling 30 % of the free space), an oil-jet flow that carries the bearing's reference heat
@@ -27,27 +28,21 @@ from __future__ import annotations
 
 import difflib
 import math
-import warnings
-from dataclasses import dataclass, replace
-
-import numpy as np
-from scipy.optimize import brentq
 
 from thermobear import __version__
 from thermobear.contact.geometry import BallBearing, bearing
-from thermobear.coupled import solve
-from thermobear.errors import InputError, OutsideValidity
+from thermobear.coupled.speeds import ReferenceSpeed, reference_loads, thermal_reference_speed
+from thermobear.errors import InputError, NoSpeedRoot
 from thermobear.lubrication.lubricant import lubricant, lubricant_names
 from thermobear.scene import scene_from_dict
 from thermobear.thermal.builders.layout import H_MOUNT_W_M2K, layout
 
-__all__ = ["METHODS", "HOUSINGS", "ReferenceSpeed", "thermal_reference_speed", "scaffold", "scaffold_text"]
+__all__ = ["METHODS", "HOUSINGS", "scaffold"]
 
 #: ``--lubrication`` choices → the scene's ``supply``.
 METHODS = {"oil-bath": "oil_bath", "grease": "grease", "oil-jet": "oil_jet", "oil-air": "oil_air"}
 HOUSINGS = ("block", "pillow", "flange")
 
-T_REF_C = 70.0            #: ISO 15312 reference bearing temperature [°C]
 T_AMBIENT_REF_C = 20.0    #: ISO 15312 reference ambient [°C]
 SPEED_FRACTION = 0.5      #: default speed / thermal reference speed [-]
 JET_RISE_K = 10.0         #: oil-jet default: rise of the oil carrying the reference heat flow [K] (estimated)
@@ -56,108 +51,6 @@ OIL_AIR_FLOW_L_H = 0.005  #: oil–air default oil feed [L/h] (estimated)
 OIL_AIR_AIR_L_MIN = 20.0  #: oil–air default carrier air [L/min] (estimated)
 GREASE_FILL = 0.3         #: ISO 15312 Annex C grease quantity: 30 % of the free space [-]
 DEFAULT_GREASE = "grease-lithium-mineral-vg100-nlgi2"
-
-
-@dataclass(frozen=True)
-class ReferenceSpeed:
-    """Thermal reference speed of a bearing (ISO 15312 heat balance, thermobear's loss model).
-
-    n_rpm [r/min]; N_W the reference heat flow q_r A_r [W]; A_r_m2, q_W_m2 the heat-emitting
-    reference surface [m²] and heat-flow density [W/m²]; Fa_N, Fr_N the reference load [N];
-    oil the reference oil; capped: True when the loss stays below N_W up to n·dm = 2e6 mm/min (then
-    n_rpm is that cap).
-    """
-
-    n_rpm: float
-    N_W: float
-    A_r_m2: float
-    q_W_m2: float
-    Fa_N: float
-    Fr_N: float
-    oil: str
-    capped: bool = False
-
-
-def reference_loads(brg: BallBearing) -> tuple[float, float]:
-    """ISO 15312 reference load (Fa, Fr) [N]: 0.05 C0 for radial bearings (axial for angular contact:
-    see the module docstring), 0.02 C0 for thrust bearings.
-
-    >>> fa, fr = reference_loads(bearing("6208")); fa, round(fr / bearing("6208").C0, 3)
-    (0.0, 0.05)
-    """
-    if brg.C0 is None:
-        raise InputError("bearing.C0_kN", None, "the default load is a fraction of C0 (ISO 15312): give --Fr-N / --Fa-N")
-    if brg.kind == "thrust":
-        return 0.02 * brg.C0, 0.0
-    if brg.kind == "angular_contact":
-        return 0.05 * brg.C0, 0.0
-    return 0.0, 0.05 * brg.C0
-
-
-def _reference_surface(brg: BallBearing) -> tuple[float, float]:
-    r"""ISO 15312 heat-emitting reference surface A_r [m²] and reference heat-flow density q_r [W/m²].
-
-    .. math::  A_r = \pi B (D + d) \ \text{(radial)}, \quad A_r = \tfrac{\pi}{2} (D^2 - d^2) \ \text{(thrust)};
-               q_r = 16\,\text{kW/m}^2 \,(A_r / 0.05\,\text{m}^2)^{-0.34} \ \text{(radial)},
-               \ 20\,\text{kW/m}^2 \,(A_r / 0.05\,\text{m}^2)^{-0.16} \ \text{(thrust)}, \ \text{the power only for } A_r > 0.05\,\text{m}^2
-    """
-    d, D, B = brg.bore, brg.outer_diameter, brg.width
-    if brg.kind == "thrust":
-        A = 0.5 * math.pi * (D * D - d * d)
-        return A, 20e3 * (A / 0.05) ** -0.16 if A > 0.05 else 20e3
-    A = math.pi * B * (D + d)
-    return A, 16e3 * (A / 0.05) ** -0.34 if A > 0.05 else 16e3
-
-
-def thermal_reference_speed(brg: BallBearing) -> ReferenceSpeed:
-    r"""Thermal reference speed: the speed at which the bearing's loss at the ISO 15312 reference
-    conditions equals the reference heat flow q_r A_r [1]_.
-
-    The loss is thermobear's (the model a scene chooses, :func:`thermobear.coupled.solve`) at 70 °C,
-    oil bath to the middle of the lowest ball, ISO VG 32 (radial) or VG 68 (thrust) mineral oil, load
-    :func:`reference_loads`.  Thrust ball bearings are outside ISO 15312's scope; the same balance
-    is applied to them as an extension.
-
-    .. math::  P(n_{\theta r}) = q_r A_r
-
-    Parameters
-    ----------
-    brg : BallBearing    with bore, outer_diameter, width [m] and C0 [N]
-
-    Returns
-    -------
-    ReferenceSpeed
-
-    References
-    ----------
-    .. [1] ISO 15312:2003, Rolling bearings — Thermal speed rating — Calculation.
-
-    Examples
-    --------
-    >>> r = thermal_reference_speed(bearing("6208"))
-    >>> round(r.N_W, 1), 5000 < r.n_rpm < 20000      # W; SKF lists 15 000 r/min for the 6208
-    (108.6, True)
-    """
-    Fa, Fr = reference_loads(brg)
-    A, q = _reference_surface(brg)
-    N = q * A
-    oil = "iso-vg-68-mineral" if brg.kind == "thrust" else "iso-vg-32-mineral"
-    dm_mm = 0.5 * (brg.bore + brg.outer_diameter) * 1e3
-    base = scene_from_dict({
-        "bearing": {"catalog": brg.name},
-        "lubricant": {"name": oil, "supply": "oil_bath", "oil_level_mm": 0.5 * brg.D * 1e3},
-        "operation": {"n_rpm": 1000.0, "Fa_N": Fa, "Fr_N": Fr, "T_C": T_REF_C}})
-    base = replace(base, bearing=brg)          # the bearing as given (its overrides kept)
-
-    def excess(log_n):
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", OutsideValidity)
-            return solve(base.with_(n_rpm=float(np.exp(log_n)))).P_W - N
-    lo, hi = math.log(10.0), math.log(2e6 / dm_mm)
-    if excess(hi) < 0:
-        return ReferenceSpeed(float(np.exp(hi)), N, A, q, Fa, Fr, oil, capped=True)
-    n = float(np.exp(brentq(excess, lo, hi, xtol=1e-3)))
-    return ReferenceSpeed(n, N, A, q, Fa, Fr, oil)
 
 
 # --------------------------------------------------------------------------- choices
@@ -197,19 +90,20 @@ def _operation(brg, ref: ReferenceSpeed | None, n_rpm, Fr_N, Fa_N) -> list:
     if n_rpm is None:
         n = _sig(SPEED_FRACTION * ref.n_rpm)
         rows.append(("n_rpm", n, f"r/min: {SPEED_FRACTION:g} × the thermal reference speed {ref.n_rpm:.0f} r/min "
-                     "(ISO 15312 heat balance q_r A_r = "
-                     f"{ref.N_W:.1f} W at 70 °C with thermobear's losses; thermobear.app.scaffold)"))
+                     f"(ISO 15312 heat balance q_r A_r = {ref.Phi_r_W:.1f} W at 70 °C with thermobear's losses; "
+                     "thermobear speed SCENE)"))
     else:
         rows.append(("n_rpm", float(n_rpm), "r/min: given (--speed-rpm)"))
     if Fr_N is None and Fa_N is None:
-        fa, fr = reference_loads(brg)
-        how = {"thrust": "0.02 C0 axial (ISO 15312 reference load of thrust bearings)",
-               "angular_contact": "0.05 C0 applied axially (ISO 15312 reference load level; an angular contact "
-                                  "bearing alone carries a radial load only against an axial one)",
-               }.get(brg.kind, "0.05 C0 radial (ISO 15312 reference load of radial bearings)")
+        loads = reference_loads(brg)
+        fa, fr = loads.get("Fa", 0.0), loads.get("Fr", 0.0)
         C0 = f"C0 = {brg.C0 / 1e3:.2f} kN (catalogue, ISO 76)"
-        rows.append(("Fa_N", _sig(fa, 3), f"N: {how}, {C0}" if fa > 0 else "N: none (radial reference load)"))
-        rows.append(("Fr_N", _sig(fr, 3), f"N: {how}, {C0}" if fr > 0 else "N: none (axial reference load)"))
+        src_fr = f"N: 0.05 C0, ISO 15312 reference load of radial bearings, {C0}"
+        src_fa = {"thrust": f"N: 0.02 C0, ISO 15312 reference load of thrust bearings, {C0}",
+                  "angular_contact": "N: 1.25 Fr tan(alpha0), the axial reaction of a half load zone (Sjövall; Harris "
+                                     "& Kotzalas 2007): a single angular contact bearing needs it"}.get(brg.kind)
+        rows.append(("Fa_N", _sig(fa, 3), src_fa if fa > 0 else "N: none (radial reference load)"))
+        rows.append(("Fr_N", _sig(fr, 3), src_fr if fr > 0 else "N: none (axial reference load)"))
     else:
         if brg.kind == "thrust" and (Fr_N or not Fa_N):
             raise InputError("--Fr-N" if Fr_N else "--Fa-N", Fr_N or Fa_N, "a thrust ball bearing carries an axial load "
@@ -233,8 +127,8 @@ def _lubrication(brg, supply, oil, oil_src, ref: ReferenceSpeed | None) -> list:
     elif supply == "oil_jet":
         lub = lubricant(oil)
         rho_cp = float(lub.rho(T_JET_IN_C) * lub.cp(T_JET_IN_C))
-        Q = ref.N_W / (rho_cp * JET_RISE_K) * 3.6e6
-        rows += [("flow_L_h", _sig(Q, 2), f"L/h: carries the reference heat flow {ref.N_W:.1f} W (ISO 15312 q_r A_r) "
+        Q = ref.Phi_r_W / (rho_cp * JET_RISE_K) * 3.6e6
+        rows += [("flow_L_h", _sig(Q, 2), f"L/h: carries the reference heat flow {ref.Phi_r_W:.1f} W (ISO 15312 q_r A_r) "
                   f"with a {JET_RISE_K:g} K rise, Q = N / (rho c_p dT), rho c_p = {rho_cp / 1e6:.2f} MJ/(m3 K) at "
                   f"{T_JET_IN_C:g} °C (rise estimated: 5-15 K is usual for circulating oil)"),
                  ("T_in_C", T_JET_IN_C, "°C: estimated (a tempered supply above a 20 °C room)"),
@@ -315,6 +209,15 @@ def _section(name: str, rows, lines: list, note: str | None = None):
         lines.append(f"{kv:32s} # {src}" if src else kv)
 
 
+def _reference_speed(brg: BallBearing) -> ReferenceSpeed:
+    """The thermal reference speed, or InputError asking for the speed when the model has none."""
+    try:
+        return thermal_reference_speed(brg)
+    except NoSpeedRoot as exc:
+        raise InputError("--speed-rpm", None, f"no default speed: {' '.join(str(exc).split())}; give --speed-rpm "
+                         "(and for an oil jet --oil's flow in the scene)") from None
+
+
 def _check_number(field: str, v, positive: bool):
     if v is None:
         return
@@ -365,7 +268,7 @@ def scaffold(name: str, lubrication: str, *, oil: str | None = None, housing: st
     brg = _bearing(name)
     supply = METHODS[lubrication]
     oil, oil_src = _lubricant(oil, supply, brg)
-    ref = thermal_reference_speed(brg) if (n_rpm is None or supply == "oil_jet") else None
+    ref = _reference_speed(brg) if (n_rpm is None or supply == "oil_jet") else None
     rows = {"bearing": _bearing_rows(brg), "lubricant": _lubrication(brg, supply, oil, oil_src, ref),
             "operation": _operation(brg, ref, n_rpm, Fr_N, Fa_N),
             "thermal": [("T_ambient_C", T_AMBIENT_REF_C, "°C: ISO 15312 reference ambient; network = \"parametric\" "

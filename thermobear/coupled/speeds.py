@@ -40,7 +40,7 @@ from thermobear.rating.speeds import (din732_heat_flow, din732_parameters, din73
 from thermobear.scene import Scene
 from thermobear.validity import LIMITS, collect
 
-__all__ = ["ReferenceSpeed", "SafeSpeed", "Din732Speed", "reference_lubricant", "thermal_reference_speed",
+__all__ = ["ReferenceSpeed", "SafeSpeed", "Din732Speed", "reference_lubricant", "reference_loads", "thermal_reference_speed",
            "thermally_safe_speed", "din732_safe_speed", "hottest_ring_C"]
 
 _N_DM_REFUSE = LIMITS["n_dm"].refuse[1]          #: mm/min
@@ -111,6 +111,24 @@ def _first_crossing(n, g):
     return None if hit.size == 0 else int(hit[0])
 
 
+def reference_loads(brg: BallBearing) -> dict:
+    """ISO 15312's reference load of ``brg`` as scene loads {"Fa": N, "Fr": N}: the fraction of C0 of
+    :func:`~thermobear.rating.speeds.reference_conditions`, and for an angular contact bearing the axial
+    reaction of a half load zone (:data:`AXIAL_REACTION`).
+
+    >>> import thermobear as tb
+    >>> {k: round(v) for k, v in reference_loads(tb.bearing("6208")).items()}
+    {'Fr': 994}
+    """
+    if brg.C0 is None:
+        raise InputError("bearing.C0_kN", None, "ISO 15312's reference load is a fraction of C0")
+    ref = reference_conditions(brg.kind)
+    loads = {ref.load: ref.load_fraction * brg.C0}
+    if brg.kind == "angular_contact":                 # the axial reaction of a half load zone (ε = 0.5)
+        loads["Fa"] = AXIAL_REACTION * loads["Fr"] * float(np.tan(brg.alpha0))
+    return loads
+
+
 def thermal_reference_speed(brg: BallBearing, *, lubricant: Lubricant | None = None, n_max_rpm=None,
                             xtol_rpm: float = 0.01, points: int = 25) -> ReferenceSpeed:
     """ISO 15312 thermal reference speed of ``brg`` from thermobear's local loss model.
@@ -134,11 +152,9 @@ def thermal_reference_speed(brg: BallBearing, *, lubricant: Lubricant | None = N
     oil = reference_lubricant(brg.kind) if lubricant is None else lubricant
     A_r = float(reference_surface(brg.bore, brg.outer_diameter, brg.width, brg.kind))
     q_r = float(reference_heat_flow_density(A_r))
-    Phi, load = q_r * A_r, ref.load_fraction * brg.C0
+    loads = reference_loads(brg)
+    Phi, load = q_r * A_r, loads[ref.load]
     level = brg.D / 2.0 if ref.load == "Fr" else None
-    loads = {ref.load: load}
-    if brg.kind == "angular_contact":                 # the axial reaction of a half load zone (ε = 0.5)
-        loads["Fa"] = AXIAL_REACTION * load * np.tan(brg.alpha0)
 
     def power(n):
         return bearing_losses(brg, oil, n_rpm=n, T_C=ref.T_C, supply="oil_bath", oil_level_m=level, **loads).P_W
