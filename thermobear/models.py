@@ -101,7 +101,8 @@ def _dry_key(scene: Scene):
 def _solve_dry(brg, Fa, Fr, M, stiffness, n_rpm, *, continuation=True) -> LoadDistribution:
     """Dry Jones–Harris load distribution (high-speed form when ``n_rpm`` is given); arrays batch."""
     if n_rpm is None:
-        return load_distribution(brg, Fa=Fa, Fr=Fr, M=M, stiffness=stiffness, continuation=continuation)
+        return load_distribution(brg, Fa=Fa, Fr=Fr, M=M, stiffness=stiffness, continuation=continuation,
+                                 refuse_overload=False)      # the contact set refuses overloads per point
     return load_distribution_high_speed(brg, Fa=Fa, Fr=Fr, M=M, n_rpm=n_rpm, stiffness=stiffness)
 
 

@@ -192,7 +192,8 @@ def family_loads(fam: Family, T_film_C=None) -> LoadDistribution:
     stiff = sc.models.get("stiffness", "nominal")
     if m["high_speed"][0] == "yes":
         return load_distribution_high_speed(sc.bearing, Fa=Fa, Fr=Fr, M=M, n_rpm=fam.values("n_rpm"), stiffness=stiff)
-    return load_distribution(sc.bearing, Fa=Fa, Fr=Fr, M=M, stiffness=stiff)
+    # overloads are refused per point by coupled/limits.py (on the contact set), not for the whole batch
+    return load_distribution(sc.bearing, Fa=Fa, Fr=Fr, M=M, stiffness=stiff, refuse_overload=False)
 
 
 def family_contacts(fam: Family, load: LoadDistribution) -> ContactSet:
