@@ -13,9 +13,9 @@ anything, checked on every contact of a solution:
   bearing's washers; Harris 2001 ch. 2 and 6).
 
 Both scale with the load as Q^(1/3) for a given contact angle; a per-bearing bound of p_max(1 N, α)
-and a(1 N, α) over 0 ≤ α ≤ 90° (:func:`_unit_bounds`) screens the cases, and the contacts of a case
-the screen does not clear are evaluated exactly (:func:`thermobear.contact.hertz.hertz` at their own
-angles).
+and a(1 N, α) over 0 ≤ α ≤ 90° (:func:`_unit_bounds`), at each case's largest load and angle, screens
+the cases, and the contacts of a case the screen does not clear are evaluated exactly
+(:func:`thermobear.contact.hertz.hertz` at their own angles).
 
 References
 ----------
@@ -48,13 +48,14 @@ def _contacts(brg: BallBearing, side: str, Q, alpha):
 
 @lru_cache(maxsize=32)
 def _unit_bounds(brg: BallBearing):
-    """Per side: the largest p_max [Pa] and semi-axis a (across the rolling direction) [m] at Q = 1 N over
-    α ∈ [0, 90°] (+1 % margin)."""
-    out = {}
-    for side in ("inner", "outer"):
+    """The largest p_max [Pa] and angular half-width a/(f D) of the contact ellipse across the groove [rad] of
+    either side's contacts at Q = 1 N, over α ∈ [0, 90°] (+1 % margin)."""
+    p, a = [], []
+    for side, f in (("inner", brg.fi), ("outer", brg.fo)):
         c = _contacts(brg, side, np.ones_like(_GRID), _GRID)
-        out[side] = (1.01 * float(np.max(c.p_max)), 1.01 * float(np.max(c.a)))
-    return out
+        p.append(1.01 * float(np.max(c.p_max)))
+        a.append(1.01 * float(np.max(c.a)) / (f * brg.D))
+    return {"both": (max(p), max(a))}
 
 
 def contact_limits(brg: BallBearing, Q_i, Q_o, alpha_i, alpha_o):
@@ -92,22 +93,24 @@ def refuse_overload(brg: BallBearing, ld, field: str = "Fa, Fr, M") -> None:
     them: p_max beyond :data:`thermobear.validity.P_MAX_REFUSE_PA` or an ellipse past the groove edge
     (module docstring).  Returns None when every contact is inside both limits."""
     Z = brg.Z
-    Qi, Qo = np.reshape(ld.Q_i, (-1, Z)), np.reshape(ld.Q_o, (-1, Z))
-    ai, ao = np.reshape(ld.alpha_i, (-1, Z)), np.reshape(ld.alpha_o, (-1, Z))
+    Qi, Qo, ai, ao = (np.asarray(v, dtype=float).reshape(-1, Z) for v in (ld.Q_i, ld.Q_o, ld.alpha_i, ld.alpha_o))
     lim_a, ab = LIMITS["contact_angle"].refuse[1], _bottom(brg)
-    bound = _unit_bounds(brg)
-    suspect = np.zeros(Qi.shape[0], bool)
-    for side, Q, al, f in (("inner", Qi, ai, brg.fi), ("outer", Qo, ao, brg.fo)):
-        q3 = np.cbrt(np.maximum(Q, 0.0))
-        p_hi, a_hi = bound[side]
-        suspect |= (q3.max(axis=1) * p_hi > P_MAX_REFUSE_PA) | \
-            np.any((Q > 0) & (np.abs(al - ab) + q3 * a_hi / (f * brg.D) > lim_a), axis=1)
-    for k in np.flatnonzero(suspect):
-        lim = contact_limits(brg, Qi[k], Qo[k], ai[k], ao[k])
-        for side in ("inner", "outer"):
-            p, reach = lim[side]
-            if p.max() > P_MAX_REFUSE_PA or reach.max() > lim_a:
-                raise InputError(field, _loads_text(ld, k), _why(side, p, reach, lim_a))
+    p_hi, a_hi = _unit_bounds(brg)["both"]
+    # per case, both sides at once: the bounds at the largest load and the largest angle from the groove bottom
+    q3 = np.cbrt(np.maximum(Qi.max(axis=1), Qo.max(axis=1)))
+    reach = np.maximum(np.abs(ai - ab).max(axis=1), np.abs(ao - ab).max(axis=1))
+    suspect = (q3 * p_hi > P_MAX_REFUSE_PA) | (reach + q3 * a_hi > lim_a)
+    if not suspect.any():
+        return
+    sus = np.flatnonzero(suspect)
+    lim = contact_limits(brg, Qi[sus], Qo[sus], ai[sus], ao[sus])        # exact, the suspects only
+    bad = {side: (lim[side][0].max(axis=1) > P_MAX_REFUSE_PA) | (lim[side][1].max(axis=1) > lim_a)
+           for side in ("inner", "outer")}
+    over = bad["inner"] | bad["outer"]
+    if over.any():
+        j = int(np.argmax(over))
+        side = "inner" if bad["inner"][j] else "outer"
+        raise InputError(field, _loads_text(ld, int(sus[j])), _why(side, lim[side][0][j], lim[side][1][j], lim_a))
 
 
 def _bottom(brg: BallBearing) -> float:

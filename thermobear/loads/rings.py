@@ -216,9 +216,12 @@ def _check_loads(brg, F):
     Fa = F[:, 0]
     if _bad(Fa):
         raise InputError("Fa", Fa, "load must be finite and >= 0 [N] (Fa pushes the inner ring along +x)")
-    for k in (1, 2, 3, 4):
-        if F.size and not np.isfinite(F[:, k]).all():
+    if F.size and not np.isfinite(F.sum()):                    # (one reduction in the common case)
+        k = next((k for k in (1, 2, 3, 4) if not np.isfinite(F[:, k]).all()), None)
+        if k is not None:
             raise InputError(_NAMES[k], F[:, k], "must be finite [N] or [N m]")
+    if brg.kind == "deep_groove":
+        return
     Frad = np.hypot(F[:, 1], F[:, 3])
     Mabs = np.hypot(F[:, 2], F[:, 4])
     if brg.kind == "thrust" and np.any(Frad > 0):
@@ -239,16 +242,19 @@ def ring_loads(brg: BallBearing, Fa, Fr, M, Fz=0.0, My=None, extra=()) -> RingLo
     ``M`` and ``My`` ``None``: the tilts are held at 0; either given: both tilts free (the other moment 0).
     Raises InputError for a negative axial or a non-finite load and NoEquilibrium for loads the bearing cannot
     carry at all.  Five ring unknowns are solved when F_z or M_y is not 0 in some case, three otherwise."""
-    vals = [np.asarray(v, dtype=float) for v in (Fa, Fr, 0.0 if M is None else M, Fz, 0.0 if My is None else My)]
-    ex = [np.asarray(v, dtype=float) for v in extra]
-    shape = np.broadcast_shapes(*(v.shape for v in vals), *(v.shape for v in ex))
-    F = np.empty((int(np.prod(shape)), 5))
-    for k, v in enumerate(vals):
-        F[:, k] = np.broadcast_to(v, shape).ravel()
+    raw = (Fa, Fr, 0.0 if M is None else M, Fz, 0.0 if My is None else My)
+    if not extra and all(isinstance(v, (float, int)) for v in raw):        # one case given as numbers
+        shape, F = (), np.array([raw], dtype=float)
+    else:
+        vals = [np.asarray(v, dtype=float) for v in raw]
+        shape = np.broadcast_shapes(*(v.shape for v in vals), *(np.shape(v) for v in extra))
+        F = np.empty((int(np.prod(shape)), 5))
+        for k, v in enumerate(vals):
+            F[:, k] = np.broadcast_to(v, shape).ravel()
     _check_loads(brg, F)
-    ndof = 5 if F.size and (np.any(F[:, 3] != 0.0) or np.any(F[:, 4] != 0.0)) else 3
+    ndof = 5 if F.size and np.any(F[:, 3:] != 0.0) else 3
     return RingLoads(shape, F, M is not None or My is not None, ndof,
-                     tuple(np.broadcast_to(v, shape).ravel() for v in ex))
+                     tuple(np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for v in extra))
 
 
 def azimuths(Z: int):
@@ -310,11 +316,16 @@ def ring_direction(J, r, free):
     """Newton direction −J⁻¹ r of the ring unknowns (nb, ndof), the unknowns with ``free`` 0 held (their rows
     and columns dropped).  A singular case (no ball in contact) is regularised (+1e-3 on the diagonal: a push
     towards contact); one singular even then gets NaN (it fails)."""
+    n = J.shape[1]
     fi = np.flatnonzero(free)
-    held = fi.size < J.shape[1]
+    held = fi.size < n
     if held:
         out = np.zeros(r.shape)
-        J, r = J[:, fi][:, :, fi], r[:, fi]
+        k = fi.size
+        if fi[-1] == k - 1:                    # the free unknowns first (e.g. the tilt of an in-plane case held)
+            J, r, fi = J[:, :k, :k], r[:, :k], slice(0, k)
+        else:
+            J, r = J[:, fi[:, None], fi], r[:, fi]
     try:
         d = -np.linalg.solve(J, r[..., None])[..., 0]
     except np.linalg.LinAlgError:
