@@ -6,3 +6,5 @@ from thermobear.loads.highspeed import (load_distribution_high_speed, load_distr
                                         HighSpeedExtras, FilmInputs, HS_CONTROLS)
 from thermobear.loads.film import film_load_distribution, film_contact_law, FilmLoadDistribution  # noqa: F401
 from thermobear.loads.api import load_distribution, high_speed_cases, FORMS  # noqa: F401
+from thermobear.loads.static import ring_reaction  # noqa: F401
+from thermobear.loads.sets import Support, ShaftLoads, bearing_set, shaft_on_two_supports, shaft_loads, warm_supports  # noqa: F401

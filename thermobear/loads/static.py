@@ -44,6 +44,7 @@ References
 """
 from __future__ import annotations
 
+from dataclasses import replace
 from functools import lru_cache
 
 import numpy as np
@@ -54,7 +55,8 @@ from thermobear.loads.newton import NewtonOptions, continuation, newton
 from thermobear.loads.rings import (STIFFNESS_MODES, LoadDistribution, RingLoads, arm_length, azimuths,
                                     check_stiffness, lever_matrix, ring_direction, ring_loads, ring_sums, unbatch)
 
-__all__ = ["load_distribution_static", "axial_contact_angle", "needs_high_speed", "LoadDistribution", "STIFFNESS_MODES"]
+__all__ = ["load_distribution_static", "ring_reaction", "reaction_problem", "reaction_of", "axial_contact_angle", "needs_high_speed", "LoadDistribution",
+           "STIFFNESS_MODES"]
 
 _TOL = 1e-12          # relative equilibrium residual at which Newton stops
 _MAXIT = 60
@@ -499,6 +501,84 @@ def _result(brg, pb, y, norm, its, loads, arm, Fa, Fr):
         alpha_o=unbatch(shape, alpha.copy(), True), psi=azimuths(Z), delta_n=unbatch(shape, sp, True),
         residual=float(norm.max()) if norm.size else 0.0, iterations=int(its.max()) if its.size else 0,
         delta_z=unbatch(shape, out5[:, 3]), theta_y=unbatch(shape, out5[:, 4]), **loads.result_fields(Fa, Fr))
+
+
+def ring_reaction(brg: BallBearing, q, *, stiffness: str = "nominal", tilt_arm: str = "groove"):
+    r"""The loads that hold the inner ring at a given displacement, the ring's stiffness matrix there and the
+    load distribution.
+
+    The displacement-controlled static form: one evaluation of the equilibrium of
+    :func:`load_distribution_static` at the ring displacement q instead of a solve for it.
+
+    Parameters
+    ----------
+    brg : BallBearing
+    q : array_like     (δa, δr, θ, δz, θ_y) [m, m, rad, m, rad] on the last axis (leading axes: cases); δa from
+                       the centred position, axes and signs of :mod:`thermobear.loads.rings`
+    stiffness, tilt_arm : as :func:`load_distribution_static`
+
+    Returns
+    -------
+    (P, K, ld)  P (..., 5): the loads (F_a, F_r, M, F_z, M_y) on the inner ring that the balls balance
+                [N, N, N m, N, N m]; K (..., 5, 5): the stiffness dP/dq [N/m, N/rad, N m/m, N m/rad];
+                ld: the LoadDistribution at q (its applied loads are P)
+
+    Raises
+    ------
+    NoEquilibrium   a loaded ball of an angular contact bearing over its low shoulder (contact angle ≤ 0)
+
+    Notes
+    -----
+    K is the exact Jacobian of the equilibrium (symmetric): per ball dQ n nᵀ + (Q/A_j) e eᵀ summed with the
+    levers of :func:`thermobear.loads.rings.lever_matrix` (module docstring), in the physical units of q and P.
+
+    Examples
+    --------
+    At the solution of a load case the reaction is the load itself:
+
+    >>> from thermobear.contact.geometry import bearing
+    >>> b = bearing("7210")
+    >>> ld = load_distribution_static(b, Fa=450.0, Fr=325.0, M=2.0)
+    >>> P, K, at = ring_reaction(b, [ld.delta_a, ld.delta_r, ld.theta, 0.0, 0.0])
+    >>> [round(float(v), 6) + 0.0 for v in P], bool(np.allclose(at.Q, ld.Q, rtol=1e-9))
+    ([450.0, 325.0, 2.0, 0.0, 0.0], True)
+    """
+    check_stiffness(stiffness)
+    arm = arm_length(brg, tilt_arm)
+    q = np.asarray(q, dtype=float)
+    if q.shape[-1:] != (5,) or not np.all(np.isfinite(q)):
+        raise InputError("q", q, "finite (delta_a, delta_r, theta, delta_z, theta_y) [m, m, rad, m, rad] on a last axis")
+    shape = q.shape[:-1]
+    qf = q.reshape(-1, 5)
+    pb = reaction_problem(brg, qf.shape[0], stiffness)
+    P, K, y = reaction_of(pb, qf, arm)
+    loads = RingLoads(shape, P, True, 5)
+    ld = _result(brg, pb, y, np.zeros(qf.shape[0]), np.zeros(qf.shape[0], int), loads, arm, P[:, 0], P[:, 1])
+    if not shape:
+        ld = replace(ld, Fa=np.asarray(float(P[0, 0])), Fr=np.asarray(float(P[0, 1])))
+    else:
+        ld = replace(ld, Fa=P[:, 0].reshape(shape), Fr=P[:, 1].reshape(shape))
+    return P.reshape(shape + (5,)), K.reshape(shape + (5, 5)), ld
+
+
+def reaction_problem(brg: BallBearing, nb: int, stiffness: str = "nominal"):
+    """The five-unknown static problem of ``nb`` cases at prescribed ring displacements (applied loads 0, force
+    scale 1 N, every case loaded): the ring reaction is its residual, the stiffness its Jacobian."""
+    pb = _StaticProblem(brg, np.zeros((nb, 5)), np.ones(nb), np.ones(5), stiffness)
+    pb.zero[:] = False
+    pb.any_zero = False
+    return pb
+
+
+def reaction_of(pb, q, arm):
+    """Loads P (nb, 5) and stiffness K (nb, 5, 5) of the five-unknown problem ``pb`` (applied loads 0, scale 1)
+    at the ring displacements q (nb, 5) [m, rad], and the scaled unknowns y (:func:`ring_reaction`)."""
+    A, brg = pb.A, pb.brg
+    to_y = np.array([1.0 / A, 1.0 / A, arm / A, 1.0 / A, arm / A])
+    y = (q - np.array([A * np.sin(brg.alpha0), 0.0, 0.0, 0.0, 0.0])) * to_y
+    st = pb.evaluate(y)
+    to_P = np.array([1.0, 1.0, arm, 1.0, arm])
+    return st.res * to_P, st.J * to_P[:, None] * to_y[None, :], y
 
 
 #: the static form under its former name (``thermobear.loads.static.load_distribution``, imported by
