@@ -127,9 +127,10 @@ def build_parser() -> argparse.ArgumentParser:
     _common(sd)
     sd.set_defaults(func=cmd_spin_down)
 
-    lo = sub.add_parser("loads", help="load distribution of a scene's bearing (per ball loads and angles)")
+    lo = sub.add_parser("loads", help="load distribution of a scene's bearing (static or high-speed; per ball loads "
+                                      "and angles; --plot: the ball loads around the bearing)")
     lo.add_argument("scene")
-    _common(lo, plot=False)
+    _common(lo)
     lo.set_defaults(func=cmd_loads)
 
     li = sub.add_parser("list", help="list bundled bearings, lubricants, materials, networks, examples")
