@@ -197,3 +197,21 @@ def test_tilt_arm_pitch_uses_the_pitch_radius():
     assert np.allclose(np.arctan2(A1, A2)[ld.Q > 0], ld.alpha_i[ld.Q > 0], rtol=0, atol=1e-12)
     with pytest.raises(InputError, match="tilt_arm"):
         load_distribution(b, Fa=1.0, tilt_arm="shaft")
+
+
+@pytest.mark.parametrize("control", ["inner", "both"])
+def test_high_speed_friction_rows_turn_with_the_load(control):
+    """With gyroscopic friction at the inner contacts (control "inner" / "both") the ring equations carry the
+    friction forces and couples in both planes: a load turned by k ball pitches (with its moment) gives the
+    turned solution."""
+    b = bearing("7210")
+    k, Z = 2, b.Z
+    beta = 2 * np.pi * k / Z
+    c, s = np.cos(beta), np.sin(beta)
+    ref = load_distribution_high_speed(b, Fa=1500.0, Fr=400.0, M=3.0, n_rpm=6000.0, control=control)
+    rot = load_distribution_high_speed(b, Fa=1500.0, Fr=400.0 * c, Fz=400.0 * s, M=3.0 * c, My=3.0 * s,
+                                       n_rpm=6000.0, control=control)
+    assert np.allclose(rot.Q_i, np.roll(ref.Q_i, k), rtol=1e-7, atol=1e-8 * 1500)
+    assert np.allclose(rot.Q_o, np.roll(ref.Q_o, k), rtol=1e-7, atol=1e-8 * 1500)
+    assert rot.theta * c + rot.theta_y * s == pytest.approx(ref.theta, rel=1e-7)
+    assert np.hypot(rot.delta_r, rot.delta_z) == pytest.approx(ref.delta_r, rel=1e-7)

@@ -78,7 +78,7 @@ import numpy as np
 from thermobear.contact.geometry import BallBearing
 from thermobear.errors import InputError, NoConvergence, NoEquilibrium
 from thermobear.loads.filmlaw import _FilmAt, _NVMFixed, _carry, _invert, invert_error
-from thermobear.loads.newton import NewtonOptions, newton
+from thermobear.loads.newton import NewtonOptions, RowState, newton
 from thermobear.loads.rings import (LoadDistribution, arm_length, azimuths, check_stiffness, levers, ring_direction,
                                     ring_loads, unbatch)
 from thermobear.loads.static import _StaticProblem, load_distribution_static
@@ -202,21 +202,11 @@ def _nonneg(name, v):
 
 
 
-class _FilmState:
+class _FilmState(RowState):
     """Residual, Jacobian and per-ball film data at one iterate (leading axis: the load cases)."""
 
     FIELDS = ("y", "res", "J", "norm", "Q", "d_el", "h_i", "h_o", "s", "alpha", "Qs", "GQ", "Ga", "nit", "rel",
               "fail", "codes")
-
-    def take(self, idx):
-        new = _FilmState.__new__(_FilmState)
-        for k in self.FIELDS:
-            setattr(new, k, getattr(self, k)[idx])
-        return new
-
-    def put(self, idx, other):
-        for k in self.FIELDS:
-            getattr(self, k)[idx] = getattr(other, k)
 
 
 class _FilmProblem:

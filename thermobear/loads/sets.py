@@ -51,7 +51,7 @@ import numpy as np
 from thermobear.contact.fits import expanded_bearing, steel_expansion
 from thermobear.contact.geometry import BallBearing
 from thermobear.errors import InputError, NoConvergence, NoEquilibrium
-from thermobear.loads.newton import NewtonOptions, newton
+from thermobear.loads.newton import NewtonOptions, RowState, newton
 from thermobear.loads.overload import refuse_overload as refuse_overload_of
 from thermobear.loads.rings import LoadDistribution, arm_length, check_stiffness, ring_direction
 from thermobear.loads.static import load_distribution_static, reaction_of, reaction_problem, ring_reaction
@@ -241,18 +241,8 @@ class _ShaftProblem:
         return ring_direction(st.J, st.res, np.ones(self.n))
 
 
-class _ShaftState:
+class _ShaftState(RowState):
     FIELDS = ("z", "res", "J", "norm")
-
-    def take(self, idx):
-        new = _ShaftState()
-        for k in self.FIELDS:
-            setattr(new, k, getattr(self, k)[idx])
-        return new
-
-    def put(self, idx, other):
-        for k in self.FIELDS:
-            getattr(self, k)[idx] = getattr(other, k)
 
 
 def _external(Fa, Fr, M, Fz, My, x_load):

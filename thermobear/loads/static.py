@@ -51,7 +51,7 @@ import numpy as np
 
 from thermobear.contact.geometry import BallBearing
 from thermobear.errors import InputError, NoConvergence, NoEquilibrium
-from thermobear.loads.newton import NewtonOptions, continuation, newton
+from thermobear.loads.newton import NewtonOptions, RowState, continuation, newton
 from thermobear.loads.rings import (STIFFNESS_MODES, LoadDistribution, RingLoads, arm_length, azimuths,
                                     check_stiffness, lever_matrix, ring_direction, ring_loads, ring_sums, unbatch)
 
@@ -166,20 +166,10 @@ def _constants(brg, ndof):
     return out + (float(brg.Kn()),)
 
 
-class _StaticState:
+class _StaticState(RowState):
     """Residual, Jacobian and ball geometry at one iterate (leading axis: the load cases)."""
 
     FIELDS = ("y", "AA", "Aj", "s", "res", "J", "norm")
-
-    def take(self, idx):
-        new = _StaticState.__new__(_StaticState)
-        for k in self.FIELDS:
-            setattr(new, k, getattr(self, k)[idx])
-        return new
-
-    def put(self, idx, other):
-        for k in self.FIELDS:
-            getattr(self, k)[idx] = getattr(other, k)
 
 
 class _StaticProblem:
