@@ -88,6 +88,7 @@ def _fixed(brg, lam_i, lam_o, kin_control, ndof, arm):
     m = brg.ball_mass
     f = dict(
         brg=brg, Z=Z, A=A, R=arm, L=L, Sg=Sg, Msum=Msum, ng=ndof, comp=comp, lev=lev,
+        rows_k=tuple((k, int(comp[k]), lev[k][None, :]) for k in range(1, ndof)),   # rows after δa, levers (1, Z)
         off=row(0.0, A * np.cos(brg.alpha0)),
         c0=row((brg.fi - 0.5) * brg.D, (brg.fo - 0.5) * brg.D),      # |O_i − C|, |C − O_o| unloaded [m]
         lam_i=lam_i, lam_o=lam_o, kin_control=kin_control, Ki0=Ki, Ko0=Ko, k_eps=k_eps,
@@ -566,13 +567,13 @@ class _HSProblem:
         for e in range(4):
             np.subtract(H[e][:, Z:], H[e][:, :Z], out=B[:, e])
         B *= As[:, None]
-        ng, comp, lev = self.ng, self.comp, self.lev
+        ng, rows_k = self.ng, self.rows_k
         C = np.empty((nb, 2, ng + 2, Z))
         for row in range(2):
             h = (H[2 * row][:, :Z] * As, H[2 * row + 1][:, :Z] * As)
             C[:, row, 0] = h[0]
-            for k in range(1, ng):
-                np.multiply(h[comp[k]], lev[k], out=C[:, row, k])
+            for k, ck, wk in rows_k:
+                np.multiply(h[ck], wk, out=C[:, row, k])
         wrs = self.wrsZ
         FcW = st.WZ * (2.0 * self.mdm2)
         if self.has_lam:
@@ -587,17 +588,16 @@ class _HSProblem:
         # rows), W_tᵀ the levers (row k: w_k in component comp_k); by X (p_i = A_c − X, p_o = X through M_g):
         # u m_oᵀ − L
         P = np.empty((nb, 2 * ng + 2, Z))             # L rows (F_a, F_r, M/ℜ[, F_z, M_y/ℜ]) × (axial, radial), b_i
-        G = ((Gaa, Gar), (Gra, Grr))
-        P[:, 0], P[:, 1] = Gaa[:, :Z], Gar[:, :Z]
-        for k in range(1, ng):
-            np.multiply(G[comp[k]][0][:, :Z], lev[k], out=P[:, 2 * k])
-            np.multiply(G[comp[k]][1][:, :Z], lev[k], out=P[:, 2 * k + 1])
+        G = ((Gaa[:, :Z], Gar[:, :Z]), (Gra[:, :Z], Grr[:, :Z]))
+        P[:, 0], P[:, 1] = G[0]
+        for k, ck, wk in rows_k:
+            np.multiply(G[ck][0], wk, out=P[:, 2 * k])
+            np.multiply(G[ck][1], wk, out=P[:, 2 * k + 1])
         P[:, 2 * ng], P[:, 2 * ng + 1] = bA[:, :Z], bR[:, :Z]
         Rr = np.empty((nb, 2, ng + 1, Z))
         if self.lam_i:
             li = self.LAMD[0, 0]
-            u = [li * cs[:, :Z]] + [li * cs[:, :Z] * lev[k] if comp[k] == 0 else li * -sn[:, :Z] * lev[k]
-                                    for k in range(1, ng)]
+            u = [li * cs[:, :Z]] + [li * cs[:, :Z] * wk if ck == 0 else li * -sn[:, :Z] * wk for _, ck, wk in rows_k]
             for k, mom in self.mom:
                 u[k] = u[k] - mom
             for m in range(ng):

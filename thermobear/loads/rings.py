@@ -248,9 +248,10 @@ def ring_loads(brg: BallBearing, Fa, Fr, M, Fz=0.0, My=None, extra=()) -> RingLo
     else:
         vals = [np.asarray(v, dtype=float) for v in raw]
         shape = np.broadcast_shapes(*(v.shape for v in vals), *(np.shape(v) for v in extra))
-        F = np.empty((int(np.prod(shape)), 5))
+        F = np.empty(shape + (5,))
         for k, v in enumerate(vals):
-            F[:, k] = np.broadcast_to(v, shape).ravel()
+            F[..., k] = v                                   # (broadcast by the assignment)
+        F = F.reshape(-1, 5)
     _check_loads(brg, F)
     ndof = 5 if F.size and np.any(F[:, 3:] != 0.0) else 3
     return RingLoads(shape, F, M is not None or My is not None, ndof,

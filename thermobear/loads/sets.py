@@ -53,7 +53,7 @@ from thermobear.contact.geometry import BallBearing
 from thermobear.errors import InputError, NoConvergence, NoEquilibrium
 from thermobear.loads.newton import NewtonOptions, RowState, newton
 from thermobear.loads.overload import refuse_overload as refuse_overload_of
-from thermobear.loads.rings import LoadDistribution, arm_length, check_stiffness, ring_direction
+from thermobear.loads.rings import arm_length, check_stiffness, ring_direction
 from thermobear.loads.static import load_distribution_static, reaction_of, reaction_problem, ring_reaction
 
 __all__ = ["Support", "ShaftLoads", "ARRANGEMENTS", "shaft_loads", "bearing_set", "shaft_on_two_supports",

@@ -186,7 +186,9 @@ class _StaticProblem:
         self.zero = np.max(np.abs(F_app), axis=1) == 0.0
         self.any_zero = bool(self.zero.any())
         self.free, self.per_ball = free, stiffness == "per_ball"
-        self.all_free, self.free_idx = bool(free.all()), np.flatnonzero(free)
+        fi = np.flatnonzero(free)
+        self.all_free = fi.size == free.size
+        self.free_idx = slice(0, fi.size) if fi.size and fi[-1] == fi.size - 1 else fi    # a prefix: a view
         self.Z, self.A = brg.Z, brg.A
         self.L, self.A0, self.A0x2, self.sums, self.Kn0 = _constants(brg, self.ndof)
 
