@@ -60,7 +60,7 @@ def test_lame_closes_the_interference_and_reaches_the_textbook_limits():
 
 def test_rotating_ring_limits():
     """The rotating annular disc tends to the solid disc as its bore closes; at its rim
-    u = ρω²b[(3 + ν)a² + (1 − ν)b²]/(4E) (Timoshenko & Goodier 1970 §32); u ∝ ω²."""
+    u = ρω²b[(3 + ν)a² + (1 − ν)b²]/(4E) (Timoshenko & Goodier 1970 ch. 4); u ∝ ω²."""
     w, a, b = 1000.0, 0.02, 0.024
     rim = 7830.0 * w ** 2 * b * ((3.3) * a * a + 0.7 * b * b) / (4 * 210e9)
     assert rotating_ring_displacement(b, a, b, w) == pytest.approx(rim, rel=1e-12)

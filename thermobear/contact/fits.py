@@ -21,7 +21,7 @@ of the ball diameter D:
   (materials/iso286_fits.toml), corrected for the parts' temperatures (a warmer shaft tightens, a warmer
   inner ring loosens the inner fit; a warmer housing loosens the outer one);
 * free thermal expansion of every part, α L (T − 20 °C);
-* centrifugal expansion of the rotating inner ring (a rotating annular disc [1] §32), which also loosens
+* centrifugal expansion of the rotating inner ring (a rotating annular disc [1]), which also loosens
   its fit by the difference of the bore's and the shaft's growth, :func:`rotating_ring_displacement`.
 
 A negative P_d,op is a radial preload: every ball is compressed by −P_d,op/2 with the rings centred,
@@ -32,12 +32,12 @@ distribution of :mod:`thermobear.loads` then carries the thermally induced prelo
 
 References
 ----------
-.. [1] Timoshenko, S. P. & Goodier, J. N. (1970). *Theory of Elasticity*, 3rd ed., McGraw-Hill, §28 (thick
-   cylinder under internal and external pressure, radial displacement u(r)) and §32 (rotating disc of
-   uniform thickness, plane stress, u(r)).
+.. [1] Timoshenko, S. P. & Goodier, J. N. (1970). *Theory of Elasticity*, 3rd ed., McGraw-Hill, ch. 4
+   (two-dimensional problems in polar coordinates: the thick-walled cylinder under internal and external
+   pressure, and the rotating disc of uniform thickness, plane stress — the radial displacements u(r)).
 .. [2] Budynas, R. G. & Nisbett, J. K. (2011). *Shigley's Mechanical Engineering Design*, 9th ed.,
    McGraw-Hill, §3–16 (press and shrink fits: the interface pressure of two cylinders of different
-   materials, eq 3–56).
+   materials).
 .. [3] Harris, T. A. & Kotzalas, M. N. (2007). *Essential Concepts of Bearing Technology*, 5th ed., CRC Press,
    ch. 3 (interference fitting and clearance: effect of the fits on the clearance, differential thermal
    expansion).
@@ -207,7 +207,7 @@ def lame_displacement(r, a, b, p_in=0.0, p_out=0.0, E=210e9, nu=0.3):
 
     Notes
     -----
-    Lamé (Timoshenko & Goodier 1970 [1] §28):
+    Lamé (Timoshenko & Goodier 1970 [1] ch. 4):
 
     .. math::
 
@@ -245,7 +245,7 @@ def fit_pressure(interference, d, inner_bore, outer_diameter, E_inner=210e9, nu_
     Notes
     -----
     Equal and opposite radial displacements close the radial interference I/2 (Budynas & Nisbett 2011 [2]
-    eq 3–56, from Lamé [1]), with c = inner_bore/2, R = d/2, o = outer_diameter/2:
+    §3–16, from Lamé [1]), with c = inner_bore/2, R = d/2, o = outer_diameter/2:
 
     .. math::
 
@@ -281,7 +281,7 @@ def rotating_ring_displacement(r, a, b, omega, rho=7830.0, E=210e9, nu=0.3):
 
     Notes
     -----
-    Timoshenko & Goodier 1970 [1] §32:
+    Timoshenko & Goodier 1970 [1] ch. 4 (rotating disc):
 
     .. math::
 
