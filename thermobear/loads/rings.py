@@ -16,8 +16,9 @@ outer one by (Jones 1960 [1]; Harris 2001 [2] ch. 7; ISO/TS 16281 [3], rigid rin
 (axial, radial in the ball's own radial plane), A = (f_i + f_o − 1) D the unloaded distance of the
 groove centres, α0 the free contact angle and ℜ the tilt arm (:data:`TILT_ARMS`): by default the radius
 ℜ_i = d_m/2 + (f_i − ½) D cos α0 of the locus of inner groove centres (exact for a rigid ring turning
-about its centre, Harris 2001 §7.4), or the pitch radius d_m/2 of ISO/TS 16281.  The ring displacement
-across the ball's plane (tangential) moves no groove centre to first order and is left out, as in [1–3].
+about its centre, Harris 2001 §7.4), or the pitch radius d_m/2 (the convention the ISO/TS 16281
+reference examples are computed with, :mod:`thermobear.rating.iso16281`).  The ring displacement across
+the ball's plane (tangential) moves no groove centre to first order and is left out, as in [1–3].
 The map is linear in the scaled ring unknowns
 
     g = (δa/A, δr/A, θℜ/A, δz/A, θ_yℜ/A):
