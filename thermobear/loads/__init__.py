@@ -9,5 +9,7 @@ from thermobear.loads.highspeed import (load_distribution_high_speed, load_distr
                                         HighSpeedExtras, FilmInputs, HS_CONTROLS)
 from thermobear.loads.film import film_load_distribution, film_contact_law, FilmLoadDistribution  # noqa: F401
 from thermobear.loads.api import load_distribution, high_speed_cases, FORMS  # noqa: F401
+from thermobear.loads.overload import (check_loads, check_contacts, contact_bounds, groove_angle,  # noqa: F401
+                                       loads_text, refuse_overload)
 from thermobear.loads.sets import (Support, ShaftLoads, bearing_set, shaft_on_two_supports, shaft_loads,  # noqa: F401
                                    warm_supports)

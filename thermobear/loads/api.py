@@ -22,11 +22,13 @@ from thermobear.contact.kinematics import entrainment_speed
 from thermobear.errors import InputError
 from thermobear.loads.film import film_load_distribution
 from thermobear.loads.highspeed import FilmInputs, load_distribution_high_speed
-from thermobear.loads.overload import refuse_overload as refuse_overload_of
+from thermobear.loads.overload import (check_contacts, check_loads, contact_bounds, groove_angle,  # noqa: F401
+                                       loads_text, refuse_overload as refuse_overload_of)
 from thermobear.loads.rings import LoadDistribution
 from thermobear.loads.static import load_distribution_static, needs_high_speed
 
-__all__ = ["load_distribution", "FORMS", "high_speed_cases"]
+__all__ = ["load_distribution", "FORMS", "high_speed_cases", "check_loads", "check_contacts", "groove_angle",
+           "loads_text", "contact_bounds"]
 
 FORMS = ("auto", "static", "high_speed")
 
@@ -142,9 +144,8 @@ def _load_distribution(brg, Fa, Fr, M, n_rpm, Fz, My, form, film, stiffness, con
     """:func:`load_distribution` without the overload check."""
     if form not in FORMS:
         raise InputError("form", form, f"must be one of {', '.join(FORMS)}")
+    check_loads(brg, Fa, Fr, M, n_rpm, Fz=Fz, My=My)
     n = np.asarray(n_rpm, dtype=float)
-    if np.any(~np.isfinite(n)) or np.any(n < 0):
-        raise InputError("n_rpm", n_rpm, "inner-ring speed must be finite and >= 0 [rpm] (outer ring fixed)")
     if isinstance(film, FilmInputs):
         film = {"eta": film.eta, "alpha_p": film.alpha_p}
     if film is not None and not hasattr(film, "keys"):
@@ -152,8 +153,13 @@ def _load_distribution(brg, Fa, Fr, M, n_rpm, Fz, My, form, film, stiffness, con
                          "'u_i', 'u_o' [m/s])")
     opts = {k: v for k, v in (("tol", tol), ("maxiter", maxiter)) if v is not None}
     opts.update(Fz=Fz, My=My, tilt_arm=tilt_arm)
+    return _solve(brg, Fa, Fr, M, n, form, film, stiffness, control, opts, start, continuation)
+
+
+def _solve(brg, Fa, Fr, M, n, form, film, stiffness, control, opts, start, continuation):
+    """The load distribution in the form asked for (``"auto"``: by :func:`high_speed_cases`)."""
     if form == "auto":
-        hs = high_speed_cases(brg, Fa, Fr, n, Fz=Fz)
+        hs = high_speed_cases(brg, Fa, Fr, n, Fz=opts["Fz"])
         if np.all(hs) and hs.size:
             form = "high_speed"
         elif not np.any(hs):
@@ -208,9 +214,9 @@ def _mixed(brg, Fa, Fr, M, n, hs, film, stiffness, control, opts, start, continu
         idx = np.flatnonzero(sel)
         f = None if film is None else {k: _rows(v, shape, brg.Z, idx) for k, v in film.items()}
         st = None if start is None or form == "high_speed" else _rows_of_start(start, shape, idx)
-        ld = _load_distribution(brg, Fa_b[idx], Fr_b[idx], None if M_b is None else M_b[idx], n_b[idx], Fz_b[idx],
-                                None if My_b is None else My_b[idx], form, f, stiffness, control, opts.get("tol"),
-                                opts.get("maxiter"), st, continuation, opts["tilt_arm"])
+        o = dict(opts, Fz=Fz_b[idx], My=None if My_b is None else My_b[idx])
+        ld = _solve(brg, Fa_b[idx], Fr_b[idx], None if M_b is None else M_b[idx], n_b[idx], form, f, stiffness,
+                    control, o, st, continuation)
         parts.append((idx, ld))
     nb, Z = flat.size, brg.Z
     out = {}

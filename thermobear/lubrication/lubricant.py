@@ -32,7 +32,7 @@ import math
 import numpy as np
 
 
-from thermobear.files import data_dir, lookup, names_in
+from thermobear.files import data_dir, lookup, names_in, read_toml
 from thermobear.errors import ExtrapolationWarning, InputError
 from thermobear.schema import Field, check_table
 from thermobear.validity import T_LUBRICANT_REFUSE_C, T_LUBRICANT_WARN_C, check as check_limit
@@ -41,7 +41,8 @@ from thermobear.units import ZERO_C_K
 __all__ = [
     "Lubricant", "lubricant", "lubricant_names",
     "walther_Z", "walther_nu_from_Z", "walther_fit", "walther_nu",
-    "density_api", "gold_alpha_p", "cragoe_k_th", "cragoe_cp",
+    "density_api", "gold_alpha_p", "cragoe_k_th", "cragoe_cp", "walther_temperature_coefficient",
+    "traction_defaults",
     "T_WARN_C", "T_VALID_C",
 ]
 
@@ -162,9 +163,45 @@ def walther_nu(A, B, T_K):
     >>> round(float(walther_nu(A, B, 333.15)), 2)
     19.51
     """
+    return walther_nu_from_Z(_walther_Z_at(A, B, T_K))
+
+
+def _walther_Z_at(A, B, T_K):
+    """D341 Z = 10^(10^(A − B log10 T)) at T_K [K]."""
     T = _num(T_K)
-    Z = 10.0 ** (10.0 ** (A - B * _xp(T).log10(T)))
-    return walther_nu_from_Z(Z)
+    return 10.0 ** (10.0 ** (A - B * _xp(T).log10(T)))
+
+
+def walther_temperature_coefficient(A, B, T_K):
+    r"""Temperature–viscosity coefficient of the kinematic viscosity, −d ln ν/dT, from ASTM D341 [1/K].
+
+    Parameters
+    ----------
+    A, B : float       Walther constants (see :func:`walther_fit`) [-]
+    T_K : array_like   absolute temperature [K]
+
+    Returns
+    -------
+    ndarray  −d ln ν/dT [1/K]
+
+    Notes
+    -----
+    Differentiating log10 log10 Z = A − B log10 T:
+
+    .. math::
+
+        -\frac{d\ln\nu}{dT} = \frac{B\, Z \ln Z}{\nu\, T},\qquad Z = 10^{10^{A - B\log_{10}T}}
+
+    with dν/dZ = 1 (the exponential correction of :func:`walther_Z` matters below 2 cSt only).
+
+    Examples
+    --------
+    >>> A, B = walther_fit(36.6, 313.15, 7.8, 373.15)
+    >>> round(float(walther_temperature_coefficient(A, B, 333.15)), 4)
+    0.028
+    """
+    Z = _walther_Z_at(A, B, T_K)
+    return B * Z * _xp(Z).log(Z) / (walther_nu_from_Z(Z) * _num(T_K))
 
 
 # ---------------------------------------------------------------------------
@@ -288,6 +325,21 @@ def cragoe_cp(rho15, T_C):
     return (1684.8 + 3.391 * _num(T_C)) / _xp(d).sqrt(d)
 
 
+def traction_defaults(base_oil: str) -> dict:
+    """Eyring stress [Pa] and limiting shear stress–pressure coefficient [-] of a base-oil family
+    (``materials/lubricant_traction.toml``, sources there): keys ``eyring_stress_Pa``,
+    ``limiting_shear_coefficient``.
+
+    >>> traction_defaults("mineral")["eyring_stress_Pa"]
+    5000000.0
+    """
+    table = read_toml(str(data_dir("materials") / "lubricant_traction.toml"))
+    if base_oil not in table or not isinstance(table[base_oil], dict):
+        raise InputError("lubricant.base_oil", base_oil, "traction data exist for "
+                         + ", ".join(k for k, v in table.items() if isinstance(v, dict)))
+    return dict(table[base_oil])
+
+
 # ---------------------------------------------------------------------------
 # Lubricant
 # ---------------------------------------------------------------------------
@@ -329,7 +381,10 @@ class Lubricant:
     Methods (T_C scalar or array [°C]; scalar in → float out)
     -------
     nu(T_C) [cSt], eta(T_C) [Pa s], rho(T_C) [kg/m³], alpha_p_at(T_C) [1/Pa],
-    k_th(T_C) [W/(m K)], cp(T_C) [J/(kg K)]
+    k_th(T_C) [W/(m K)], cp(T_C) [J/(kg K)], beta_at(T_C) [1/K]
+
+    Attributes ``eyring_stress`` [Pa] and ``limiting_shear`` [-]: the base oil's traction properties
+    (arguments ``eyring_stress``, ``limiting_shear``; default :func:`traction_defaults` of ``base_oil``).
 
     Notes
     -----
@@ -345,7 +400,7 @@ class Lubricant:
 
     def __init__(self, nu40_cSt, nu100_cSt, rho15, alpha_p=None, *, gold_s=None, gold_t=None,
                  k_th=None, cp=None, name="custom", kind="oil", base_oil="mineral",
-                 thickener=None, description="", estimated=()):
+                 thickener=None, description="", estimated=(), eyring_stress=None, limiting_shear=None):
         nu40 = _positive(f"lubricant[{name}].nu40_cSt", nu40_cSt)
         nu100 = _positive(f"lubricant[{name}].nu100_cSt", nu100_cSt)
         if not nu100 < nu40:
@@ -353,11 +408,11 @@ class Lubricant:
                              f"must be < nu40_cSt = {nu40_cSt} (viscosity falls with temperature)")
         A, B = walther_fit(nu40, _T40_K, nu100, _T100_K)
         self._setup(A, B, rho15, alpha_p, gold_s, gold_t, k_th, cp, name, kind, base_oil,
-                    thickener, description, estimated)
+                    thickener, description, estimated, eyring_stress, limiting_shear)
 
     # shared by __init__ and from_single_point
     def _setup(self, A, B, rho15, alpha_p, gold_s, gold_t, k_th, cp, name, kind, base_oil,
-               thickener, description, estimated):
+               thickener, description, estimated, eyring_stress=None, limiting_shear=None):
         self.name, self.description = str(name), str(description)
         if kind not in ("oil", "grease"):
             raise InputError(f"lubricant[{name}].kind", kind, 'must be "oil" or "grease"')
@@ -375,6 +430,11 @@ class Lubricant:
         self._k_th = None if k_th is None else _positive(f"lubricant[{name}].k_th", k_th)
         self._cp = None if cp is None else _positive(f"lubricant[{name}].cp", cp)
         self.estimated = tuple(estimated)
+        fam = traction_defaults(base_oil) if eyring_stress is None or limiting_shear is None else {}
+        self.eyring_stress = _positive(f"lubricant[{name}].eyring_stress_Pa",
+                                       fam["eyring_stress_Pa"] if eyring_stress is None else eyring_stress)
+        self.limiting_shear = _positive(f"lubricant[{name}].limiting_shear_coefficient",
+                                        fam["limiting_shear_coefficient"] if limiting_shear is None else limiting_shear)
 
     @classmethod
     def from_single_point(cls, eta_Pa_s, T_C, rho15, walther_B=3.7, alpha_p=None, **kw):
@@ -421,7 +481,8 @@ class Lubricant:
         obj = cls.__new__(cls)
         obj._setup(A, walther_B, rho15, alpha_p, kw.get("gold_s"), kw.get("gold_t"), kw.get("k_th"),
                    kw.get("cp"), name, kw.get("kind", "oil"), kw.get("base_oil", "mineral"),
-                   kw.get("thickener"), kw.get("description", ""), kw.get("estimated", ()))
+                   kw.get("thickener"), kw.get("description", ""), kw.get("estimated", ()),
+                   kw.get("eyring_stress"), kw.get("limiting_shear"))
         return obj
 
     @classmethod
@@ -486,6 +547,15 @@ class Lubricant:
             T = self._T(T_C, "eta")
         nu = walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K)
         return _out(nu * 1e-6 * density_api(self.rho15, T), T_C)
+
+    def beta_at(self, T_C):
+        """Temperature–viscosity coefficient −d ln η/dT [1/K] at T_C [°C]: ASTM D341
+        (:func:`walther_temperature_coefficient`) plus the density's thermal expansion (:func:`density_api`)."""
+        T = float(T_C) if _plain(T_C) else self._T(T_C, "beta_at")
+        a = _K1_API_LUBE / self.rho15
+        dT = T - 15.0
+        return _out(walther_temperature_coefficient(self.walther_A, self.walther_B, T + ZERO_C_K)
+                    + a * (1.0 + 1.6 * a * dT), T_C)
 
     def _const(self, v, T, T_C):
         """A constant property ``v`` shaped like the temperatures."""
@@ -557,6 +627,10 @@ FIELDS = {
     "estimated": Field.names("keys whose values are estimates"),
     "grease_T_min_C": Field.number("°C", -100.0, 300.0, doc="grease operating range (maker)"),
     "grease_T_max_C": Field.number("°C", -100.0, 300.0, doc="grease operating range (maker)"),
+    "eyring_stress_Pa": Field.number("Pa", 0.0, None, lo_open=True,
+                                     doc="Eyring stress of the base oil (traction; default by base_oil family)"),
+    "limiting_shear_coefficient": Field.number("-", 0.0, 1.0, lo_open=True,
+                                               doc="limiting shear stress / pressure (traction; default by family)"),
 }
 _ALIASES = {"eta_Pa_s": "eta_ref_Pa_s", "T_C": "T_ref_C"}
 
@@ -571,7 +645,8 @@ def _from_mapping(d: dict, where: str) -> Lubricant:
                   k_th=d.get("k_W_mK"), cp=d.get("cp_J_kgK"), name=d.get("name", "custom"),
                   kind=d.get("kind", "oil"), base_oil=d.get("base_oil", "mineral"),
                   thickener=d.get("thickener"), description=d.get("description", ""),
-                  estimated=d.get("estimated", ()))
+                  estimated=d.get("estimated", ()), eyring_stress=d.get("eyring_stress_Pa"),
+                  limiting_shear=d.get("limiting_shear_coefficient"))
     if "eta_ref_Pa_s" in d:
         for key in ("T_ref_C", "rho15_kg_m3"):
             if key not in d:
