@@ -29,7 +29,7 @@ from thermobear.loads import load_distribution
 from thermobear.losses import BREAKDOWN_KEYS
 from thermobear.losses.skf import SKF_BREAKDOWN_KEYS
 from thermobear.lubrication.lubricant import lubricant_names
-from thermobear.models import plan
+from thermobear.models import moments, plan
 from thermobear.scene import load_scene
 from thermobear.scene.network import network_nodes
 from thermobear.validity import T_LUBRICANT_REFUSE_C
@@ -156,7 +156,8 @@ def cmd_loads(args):
     out = _plot_dir(getattr(args, "plot", None))
     hs = plan(scene)[0]["high_speed"][0] == "yes"
     brg, stiff = scene.bearing, scene.models.get("stiffness", "nominal")
-    ld = load_distribution(brg, Fa=scene.Fa, Fr=scene.Fr, M=scene.M, n_rpm=scene.n_rpm if hs else 0.0,
+    M, My = moments(scene)
+    ld = load_distribution(brg, Fa=scene.Fa, Fr=scene.Fr, M=M, Fz=scene.Fz, My=My, n_rpm=scene.n_rpm if hs else 0.0,
                            form="high_speed" if hs else "static", stiffness=stiff)
     form = (f"high-speed solution (Jones 1960: ball centrifugal force and gyroscopic moment at {scene.n_rpm:g} rpm, "
             "inner and outer contacts apart)" if hs else
@@ -169,6 +170,7 @@ def cmd_loads(args):
                 "rigid-body travel to first contact")
     rest_txt = "elastic approach and the balls' outward shift at speed" if hs else "elastic approach"
     d = {"bearing": brg.name, "form": form, "high_speed": hs, "Fa_N": scene.Fa, "Fr_N": scene.Fr, "M_Nm": scene.M,
+         "Fz_N": scene.Fz, "My_Nm": scene.My,
          "n_rpm": scene.n_rpm, "delta_a_um": ld.delta_a * 1e6, "delta_a_free_um": free * 1e6,
          "delta_a_elastic_um": (ld.delta_a - free) * 1e6,
          "axial_end_play_um": brg.free_end_play * 1e6 if brg.kind == "deep_groove" else None,
@@ -180,6 +182,8 @@ def cmd_loads(args):
         print_json(d)
     else:
         m = "" if scene.M is None else f", M = {scene.M:g} N m"
+        m += "" if not scene.Fz else f", Fz = {scene.Fz:g} N"
+        m += "" if scene.My is None else f", My = {scene.My:g} N m"
         print(f"{brg.name}: Fa = {scene.Fa:g} N, Fr = {scene.Fr:g} N{m} — {form}")
         print(f"  delta_a = {d['delta_a_um']:.3f} um from the centred rings = {d['delta_a_free_um']:.3f} um {free_txt} "
               f"(A sin alpha0) {'+' if d['delta_a_elastic_um'] >= 0 else '-'} {abs(d['delta_a_elastic_um']):.3f} um "

@@ -58,10 +58,13 @@ from thermobear.files import data_dir, lookup, read_toml
 
 __all__ = ["T_REF_C", "seat_deviations", "ring_deviations", "fit_interference", "lame_displacement",
            "fit_pressure", "rotating_ring_displacement", "OperatingClearance", "operating_clearance",
-           "clearance_preload", "expanded_bearing", "steel_expansion"]
+           "clearance_preload", "expanded_bearing", "steel_expansion", "SHAFT_CLASSES", "HOUSING_CLASSES"]
 
 T_REF_C = 20.0          #: reference temperature of sizes and clearances [°C] (ISO 1)
 _INTERFERENCE = ("min", "mean", "max")
+#: The tolerance classes of seats :func:`seat_deviations` knows (materials/iso286_fits.toml).
+SHAFT_CLASSES = tuple(f"{z}{g}" for z in ("h", "js", "k", "m", "n", "p") for g in (5, 6, 7)) + ("j5", "j6")
+HOUSING_CLASSES = tuple(f"{z}{g}" for z in ("H", "JS") for g in (5, 6, 7)) + ("J7", "K7", "M7", "N7", "P7")
 
 
 def _table() -> dict:

@@ -490,7 +490,8 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> l
         if sc.bearing not in bounds:
             bounds[sc.bearing] = contact_bounds(sc.bearing)
         try:
-            check_loads(sc.bearing, sc.Fa, sc.Fr, sc.M, sc.n_rpm, names=_SCENE_LOADS, bounds=bounds[sc.bearing])
+            check_loads(sc.bearing, sc.Fa, sc.Fr, sc.M, sc.n_rpm, Fz=sc.Fz, My=sc.My, names=_SCENE_LOADS,
+                        bounds=bounds[sc.bearing])
         except InputError as exc:
             alternatives[k] = exc
     jobs, plans, owner = [], [], []           # one job per model alternative of a point
