@@ -29,6 +29,7 @@ from thermobear.loads import load_distribution
 from thermobear.losses import BREAKDOWN_KEYS
 from thermobear.losses.skf import SKF_BREAKDOWN_KEYS
 from thermobear.lubrication.lubricant import lubricant_names
+from thermobear.coupled.ratings import check_static_safety
 from thermobear.models import moments, plan
 from thermobear.scene import load_scene
 from thermobear.scene.network import network_nodes
@@ -154,6 +155,7 @@ def cmd_loads(args):
     per-ball loads and angles; ``--plot DIR`` draws the ball loads around the bearing."""
     scene = load_scene_with(args.scene, args.set)
     out = _plot_dir(getattr(args, "plot", None))
+    check_static_safety(scene)                              # before any solve
     hs = plan(scene)[0]["high_speed"][0] == "yes"
     brg, stiff = scene.bearing, scene.models.get("stiffness", "nominal")
     M, My = moments(scene)
