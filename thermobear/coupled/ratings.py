@@ -65,8 +65,8 @@ def check_static_safety(scene) -> None:
     >>> try:
     ...     check_static_safety(s.with_(Fr=40000.0))
     ... except InputError as e:
-    ...     print(str(e)[:96])
-    operation (Fa_N, Fr_N, Fz_N) = 'Fa 0 N, Fr 40000 N' — static safety s0 0.4971 - must be >= 0.5 [-]
+    ...     print(str(e)[:94])
+    operation (Fa_N, Fr_N, Fz_N) = 'Fa 0 N, Fr 40000 N' — static safety s0 0.4971 - must be >= 0.5
     """
     b = scene.bearing
     if b.kind == "thrust" and (scene.Fr or scene.Fz):

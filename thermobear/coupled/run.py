@@ -10,7 +10,8 @@ from thermobear.coupled.blend import blend_losses
 from thermobear.coupled.limits import emit, point_warnings
 from thermobear.coupled.ratings import Ratings, check_static_safety, scene_ratings
 from thermobear.coupled.sources import scene_losses
-from thermobear.coupled.steady import SteadyState, steady_state
+from thermobear.coupled.steady import SCENE_LOADS, SteadyState, steady_state
+from thermobear.loads import check_loads
 from thermobear.errors import OutsideValidity
 from thermobear.models import plan_many
 from thermobear.scene import Scene
@@ -104,7 +105,9 @@ def solve(scene: Scene) -> RunResult:
     >>> r.P_W > 0, r.steady.iterations < 10
     (True, True)
     """
-    check_static_safety(scene)                 # before any solve
+    check_loads(scene.bearing, scene.Fa, scene.Fr, scene.M, scene.n_rpm, Fz=scene.Fz, My=scene.My,
+                names=SCENE_LOADS)             # before any solve, as steady_states
+    check_static_safety(scene)
     if scene.T_C is not None:
         alts = plan_many([scene])[0]
         if isinstance(alts, Exception):

@@ -58,7 +58,7 @@ _C0 = 273.15
 T_LIMIT_K = T_LUBRICANT_REFUSE_C[1] + _C0     #: an equilibrium beyond the lubricant's limit is runaway
 _FILM_TOL_K = 0.1                              #: film temperature fixed point tolerance [K]
 _FILM_MAXITER = 10
-_SCENE_LOADS = ("operation.Fa_N", "operation.Fr_N", "operation.M_Nm", "operation.n_rpm")
+SCENE_LOADS = ("operation.Fa_N", "operation.Fr_N", "operation.M_Nm", "operation.n_rpm")
 
 
 @dataclass
@@ -491,7 +491,7 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> l
         if sc.bearing not in bounds:
             bounds[sc.bearing] = contact_bounds(sc.bearing)
         try:
-            check_loads(sc.bearing, sc.Fa, sc.Fr, sc.M, sc.n_rpm, Fz=sc.Fz, My=sc.My, names=_SCENE_LOADS,
+            check_loads(sc.bearing, sc.Fa, sc.Fr, sc.M, sc.n_rpm, Fz=sc.Fz, My=sc.My, names=SCENE_LOADS,
                         bounds=bounds[sc.bearing])
             check_static_safety(sc)
         except InputError as exc:
