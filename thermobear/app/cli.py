@@ -28,6 +28,7 @@ import signal
 import sys
 import warnings
 
+from thermobear.app.speed import cmd_speed
 from thermobear.app.verbs import (EXIT_INTERRUPTED, cmd_calibrate, cmd_compare, cmd_list, cmd_loads, cmd_run,
                                   cmd_spin_down, cmd_sweep, cmd_transient)
 from thermobear import __version__
@@ -135,6 +136,15 @@ def build_parser() -> argparse.ArgumentParser:
     lo.add_argument("scene")
     _common(lo)
     lo.set_defaults(func=cmd_loads)
+
+    spd = sub.add_parser("speed", help="thermal reference speed (ISO 15312, model), thermally safe speed of the "
+                         "scene's cooling (model) and DIN 732's, with the hottest ring at each")
+    spd.add_argument("scene")
+    spd.add_argument("--limit-C", dest="limit_C", type=float, default=70.0, metavar="T",
+                     help="limit temperature of the hottest ring or --node [°C] (default 70)")
+    spd.add_argument("--node", default=None, help="a network node instead of the hottest ring")
+    _common(spd, plot=False)
+    spd.set_defaults(func=cmd_speed)
 
     li = sub.add_parser("list", help="list bundled bearings, lubricants, materials, networks, examples")
     li.add_argument("--json", action="store_true")

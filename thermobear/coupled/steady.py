@@ -396,6 +396,22 @@ def _solve_family(fam: Family, tol_K, load=None, prepared=None) -> list:
     return out
 
 
+def _points_apart(fam: Family, tol_K, load, prepared) -> list:
+    """:func:`_solve_family`; when a point's iterate leaves what the models can represent (an
+    InputError, e.g. a lubricant past its refusal temperature), each point again on its own, so
+    that the error is that point's and the others are solved."""
+    try:
+        return _solve_family(fam, tol_K, load, prepared)
+    except InputError as exc:
+        if fam.B == 1:
+            return [exc]
+    out = []
+    for b in range(fam.B):
+        one = Family(scenes=(fam.scenes[b],), index=(fam.index[b],), models=fam.models, dry=(fam.dry[b],))
+        out += _points_apart(one, tol_K, None if load is None else _batched(take(load, b, fam.B)), prepared)
+    return out
+
+
 def _node_T(st: SteadyState, template) -> np.ndarray:
     return np.array([st.T_C[n] + _C0 for n in template.nodes])
 
@@ -527,7 +543,7 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> l
                     shared.append(pre)
                 except InputError:
                     pre = None              # the family's own solve names the error per point
-            for j, r in zip(fam.index, _solve_family(fam, tol_K, None if load is None else _batched(load), pre)):
+            for j, r in zip(fam.index, _points_apart(fam, tol_K, None if load is None else _batched(load), pre)):
                 res[j] = r
     parts: dict = {}
     for (i, w), r in zip(owner, res):
