@@ -132,9 +132,10 @@ def build_parser() -> argparse.ArgumentParser:
     _common(sd)
     sd.set_defaults(func=cmd_spin_down)
 
-    lo = sub.add_parser("loads", help="load distribution of a scene's bearing (per ball loads and angles)")
+    lo = sub.add_parser("loads", help="load distribution of a scene's bearing (static or high-speed; per ball loads "
+                                      "and angles; --plot: the ball loads around the bearing)")
     lo.add_argument("scene")
-    _common(lo, plot=False)
+    _common(lo)
     lo.set_defaults(func=cmd_loads)
 
     spd = sub.add_parser("speed", help="thermal reference speed (ISO 15312, model), thermally safe speed of the "

@@ -3,6 +3,7 @@ r"""Plots of results (matplotlib, Agg backend: files only, no display needed).
 Every function writes one PNG and returns its path:
 
 * :func:`plot_ball_loads`         per-ball contact load and lubrication regime (polar)
+* :func:`plot_load_distribution`  per-ball inner / outer loads of a load distribution, both radial directions (polar)
 * :func:`plot_regime_map`         the Moes (M, L) map with its regime boundaries and every contact
 * :func:`plot_loss_breakdown`     loss families of one operating point (bar)
 * :func:`plot_losses_vs_speed`    loss breakdown vs speed (stacked)
@@ -26,7 +27,7 @@ import numpy as np  # noqa: E402
 
 from thermobear.lubrication.film import moes_map_boundaries  # noqa: E402
 
-__all__ = ["plot_result", "plot_ball_loads", "plot_regime_map", "plot_loss_breakdown", "plot_losses_vs_speed",
+__all__ = ["plot_result", "plot_ball_loads", "plot_load_distribution", "plot_regime_map", "plot_loss_breakdown", "plot_losses_vs_speed",
            "plot_sweep", "plot_comparison",
            "plot_heatup", "plot_vs_speed", "plot_spin_down", "REGIME_COLORS"]
 
@@ -73,6 +74,40 @@ def plot_ball_loads(losses, path, title: str = "") -> str:
             ax.bar([0], [0], color=REGIME_COLORS.get(r, "black"), label=r)
         ax.legend(loc="lower left", bbox_to_anchor=(-0.15, -0.15), fontsize=8, title="regime")
     fig.suptitle(title or "Ball loads and lubrication regimes")
+    return _save(fig, path)
+
+
+def plot_load_distribution(ld, path, title: str = "") -> str:
+    """Ball loads around the bearing (polar): inner and outer contact load [N] at each ball's azimuth ψ, with the
+    radial load (F_r along y at ψ = 0, F_z along z at ψ = 90°) and the ring's radial displacement (δr, δz) as
+    arrows in the same plane, so a load in either radial direction shows where it loads the balls.
+
+    Parameters
+    ----------
+    ld : LoadDistribution   one load case (per-ball arrays of shape (Z,))
+    path : str              PNG to write
+    """
+    psi = np.asarray(ld.psi, float)
+    Qi, Qo = np.asarray(ld.Q_i, float).reshape(-1), np.asarray(ld.Q_o, float).reshape(-1)
+    if Qi.size != psi.size:
+        raise ValueError("plot_load_distribution draws one load case")
+    fig, ax = plt.subplots(subplot_kw={"projection": "polar"}, figsize=(6, 6))
+    width = 2 * np.pi / max(psi.size, 1) * 0.35
+    ax.bar(psi - width / 2, Qi, width=width, color="tab:blue", edgecolor="k", linewidth=0.5, label="inner Q_i [N]")
+    ax.bar(psi + width / 2, Qo, width=width, color="tab:orange", edgecolor="k", linewidth=0.5, label="outer Q_o [N]")
+    top = max(float(np.max(Qo)), float(np.max(Qi)), 1e-12)
+    for (u, v), style, name in (((float(ld.Fr), float(ld.Fz)), "-", "radial load (Fr, Fz)"),
+                                ((float(ld.delta_r), float(ld.delta_z)), "--", "ring displacement (δr, δz)")):
+        if np.hypot(u, v) > 0:
+            ax.annotate("", xy=(np.arctan2(v, u), 0.9 * top), xytext=(0.0, 0.0),
+                        arrowprops=dict(arrowstyle="->", linestyle=style, color="k", lw=1.5))
+            ax.plot([], [], style, color="k", label=name)
+    ax.set_theta_zero_location("N")
+    ax.set_theta_direction(-1)
+    ax.set_title("ψ from y (ψ = 0) towards z (ψ = 90°)", fontsize=9)
+    ax.legend(loc="lower left", bbox_to_anchor=(-0.15, -0.15), fontsize=8)
+    fig.suptitle(title or "Ball loads")
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
     return _save(fig, path)
 
 

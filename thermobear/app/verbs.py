@@ -27,11 +27,11 @@ from thermobear.coupled import solve, transient
 from thermobear.errors import InputError
 from thermobear.files import data_dir, names_in, read_toml
 from thermobear.loads import load_distribution
-from thermobear.loads.highspeed import load_distribution_high_speed
 from thermobear.losses import BREAKDOWN_KEYS
 from thermobear.losses.skf import SKF_BREAKDOWN_KEYS
 from thermobear.lubrication.lubricant import lubricant_names
-from thermobear.models import plan
+from thermobear.coupled.ratings import check_static_safety
+from thermobear.models import moments, plan
 from thermobear.scene import load_scene
 from thermobear.scene.network import network_nodes
 from thermobear.validity import T_LUBRICANT_REFUSE_C
@@ -151,32 +151,57 @@ def cmd_run(args):
 
 
 def cmd_loads(args):
+    """``thermobear loads``: the scene bearing's load distribution — which form (static or high-speed), the ring
+    displacements with the axial one split into the free travel through the clearance and the elastic part,
+    per-ball loads and angles; ``--plot DIR`` draws the ball loads around the bearing."""
     scene = load_scene_with(args.scene, args.set)
+    out = _plot_dir(getattr(args, "plot", None))
+    check_static_safety(scene)                              # before any solve
     hs = plan(scene)[0]["high_speed"][0] == "yes"
-    M = scene.M
-    if hs:
-        ld = load_distribution_high_speed(scene.bearing, Fa=scene.Fa, Fr=scene.Fr, M=M, n_rpm=scene.n_rpm,
-                                          stiffness=scene.models.get("stiffness", "nominal"))
-    else:
-        ld = load_distribution(scene.bearing, Fa=scene.Fa, Fr=scene.Fr, M=M,
-                               stiffness=scene.models.get("stiffness", "nominal"))
-    form = (f"high-speed (Jones 1960: centrifugal force and gyroscopic moment at {scene.n_rpm:g} rpm)" if hs
-            else "static (low-speed Jones–Harris, rigid rings)")
-    d = {"bearing": scene.bearing.name, "form": form, "Fa_N": scene.Fa, "Fr_N": scene.Fr,
-         "delta_a_um": ld.delta_a * 1e6, "delta_r_um": ld.delta_r * 1e6, "theta_mrad": ld.theta * 1e3,
-         "Q_inner_N": ld.Q_i, "Q_outer_N": ld.Q_o, "alpha_inner_deg": np.rad2deg(ld.alpha_i),
-         "alpha_outer_deg": np.rad2deg(ld.alpha_o), "psi_deg": np.rad2deg(ld.psi), "residual": ld.residual,
-         "iterations": ld.iterations}
+    brg, stiff = scene.bearing, scene.models.get("stiffness", "nominal")
+    M, My = moments(scene)
+    ld = load_distribution(brg, Fa=scene.Fa, Fr=scene.Fr, M=M, Fz=scene.Fz, My=My, n_rpm=scene.n_rpm if hs else 0.0,
+                           form="high_speed" if hs else "static", stiffness=stiff)
+    form = (f"high-speed solution (Jones 1960: ball centrifugal force and gyroscopic moment at {scene.n_rpm:g} rpm, "
+            "inner and outer contacts apart)" if hs else
+            "static solution (low-speed Jones–Harris, rigid rings: no centrifugal force, one load per ball)")
+    # the axial displacement from the centred rings: the rigid-body travel through the clearance to first contact
+    # (A sin alpha0, taken when the bearing carries an axial load), then the rest — the elastic approach of the
+    # contacts (and at speed the balls' outward shift)
+    free = brg.A * np.sin(brg.alpha0) * np.sign(ld.delta_a) if (scene.Fa > 0 or brg.kind != "deep_groove") else 0.0
+    free_txt = ("free axial play taken up through the clearance" if brg.kind == "deep_groove" else
+                "rigid-body travel to first contact")
+    rest_txt = "elastic approach and the balls' outward shift at speed" if hs else "elastic approach"
+    d = {"bearing": brg.name, "form": form, "high_speed": hs, "Fa_N": scene.Fa, "Fr_N": scene.Fr, "M_Nm": scene.M,
+         "Fz_N": scene.Fz, "My_Nm": scene.My,
+         "n_rpm": scene.n_rpm, "delta_a_um": ld.delta_a * 1e6, "delta_a_free_um": free * 1e6,
+         "delta_a_elastic_um": (ld.delta_a - free) * 1e6,
+         "axial_end_play_um": brg.free_end_play * 1e6 if brg.kind == "deep_groove" else None,
+         "delta_r_um": ld.delta_r * 1e6, "delta_z_um": ld.delta_z * 1e6, "theta_mrad": ld.theta * 1e3,
+         "theta_y_mrad": ld.theta_y * 1e3, "Q_inner_N": ld.Q_i, "Q_outer_N": ld.Q_o,
+         "alpha_inner_deg": np.rad2deg(ld.alpha_i), "alpha_outer_deg": np.rad2deg(ld.alpha_o),
+         "psi_deg": np.rad2deg(ld.psi), "residual": ld.residual, "iterations": ld.iterations}
     if args.json:
         print_json(d)
-        return 0
-    print(f"{scene.bearing.name}: Fa = {scene.Fa:g} N, Fr = {scene.Fr:g} N — {form}")
-    print(f"  delta_a = {d['delta_a_um']:.3f} um, delta_r = {d['delta_r_um']:.3f} um (residual {ld.residual:.1e}, "
-          f"{ld.iterations} iterations)")
-    print(f"{'ball':>4s} {'psi [deg]':>10s} {'Q_i [N]':>10s} {'Q_o [N]':>10s} {'alpha_i [deg]':>14s} {'alpha_o [deg]':>14s}")
-    for j in range(scene.bearing.Z):
-        print(f"{j:4d} {d['psi_deg'][j]:10.1f} {ld.Q_i[j]:10.2f} {ld.Q_o[j]:10.2f} {d['alpha_inner_deg'][j]:14.2f} "
-              f"{d['alpha_outer_deg'][j]:14.2f}")
+    else:
+        m = "" if scene.M is None else f", M = {scene.M:g} N m"
+        m += "" if not scene.Fz else f", Fz = {scene.Fz:g} N"
+        m += "" if scene.My is None else f", My = {scene.My:g} N m"
+        print(f"{brg.name}: Fa = {scene.Fa:g} N, Fr = {scene.Fr:g} N{m} — {form}")
+        print(f"  delta_a = {d['delta_a_um']:.3f} um from the centred rings = {d['delta_a_free_um']:.3f} um {free_txt} "
+              f"(A sin alpha0) {'+' if d['delta_a_elastic_um'] >= 0 else '-'} {abs(d['delta_a_elastic_um']):.3f} um "
+              f"{rest_txt}" + (f"; the bearing's axial end play 2 A sin alpha0 = {d['axial_end_play_um']:.3f} um"
+                                 if brg.kind == "deep_groove" else ""))
+        print(f"  delta_r = {d['delta_r_um']:.3f} um, theta = {d['theta_mrad']:.4f} mrad (residual {ld.residual:.1e}, "
+              f"{ld.iterations} iterations)")
+        print(f"{'ball':>4s} {'psi [deg]':>10s} {'Q_i [N]':>10s} {'Q_o [N]':>10s} {'alpha_i [deg]':>14s} "
+              f"{'alpha_o [deg]':>14s}")
+        for j in range(brg.Z):
+            print(f"{j:4d} {d['psi_deg'][j]:10.1f} {ld.Q_i[j]:10.2f} {ld.Q_o[j]:10.2f} {d['alpha_inner_deg'][j]:14.2f} "
+                  f"{d['alpha_outer_deg'][j]:14.2f}")
+    if out is not None:
+        wrote([_plots().plot_load_distribution(ld, out / "load_distribution.png",
+                                               f"{brg.name}: {'high-speed' if hs else 'static'} solution")])
     return 0
 
 

@@ -9,8 +9,10 @@ import numpy as np
 
 from thermobear.coupled.blend import blend_losses
 from thermobear.coupled.limits import emit, point_warnings
+from thermobear.coupled.ratings import Ratings, check_static_safety, scene_ratings
 from thermobear.coupled.sources import scene_losses
-from thermobear.coupled.steady import SteadyState, steady_state
+from thermobear.coupled.steady import SCENE_LOADS, SteadyState, steady_state
+from thermobear.loads import check_loads
 from thermobear.errors import OutsideValidity
 from thermobear.models import plan_many
 from thermobear.scene import Scene
@@ -82,7 +84,10 @@ class RunResult:
     models_used : dict         model → (choice, reason)
     losses : LossResult        the loss result (per contact)
     steady : SteadyState       the coupled solution (None when the temperature is prescribed)
-    warnings : list            OutsideValidity warnings of the answer
+    warnings : list            OutsideValidity warnings of the answer (the ratings' included)
+    ratings : Ratings          C0, C, s0, p_max, κ, a_ISO, lives, clearance at the steady state
+                               (:func:`~thermobear.coupled.ratings.scene_ratings`; None at a prescribed
+                               temperature or at rest)
     """
 
     scene: Scene
@@ -94,6 +99,7 @@ class RunResult:
     losses: object
     steady: SteadyState | None = None
     warnings: list = None
+    ratings: Ratings | None = None
 
     def as_dict(self) -> dict:
         r = self.losses
@@ -112,6 +118,12 @@ class RunResult:
             d["T_contacts_C"] = self.steady.T_contacts_C
             d["heat_flows_W"] = self.steady.heat_flows_W
             d["heat_flows"] = heat_flows(self.steady)
+        if self.ratings is not None:
+            r = self.ratings.as_dict()
+            del r["warnings"]                   # in the answer's warnings
+            d["ratings"] = r
+            d.update(s0=r["s0"], kappa=r["kappa"], a_ISO=r["a_ISO"], L10m_h=r["L10m_h"],
+                     clearance_um={k: r["clearance_um"][k] for k in ("mounted", "operating")})
         return d
 
     def summary(self) -> str:
@@ -133,6 +145,8 @@ class RunResult:
             lines += ["", *heat_flow_table(self.steady, self.P_W)]
             lines += ["", f"Fixed point: {self.steady.iterations} iterations, residual {self.steady.residual_K:.1e} K, "
                           f"energy balance {self.steady.energy_balance_W:.1e} W"]
+        if self.ratings is not None:
+            lines += [""] + self.ratings.lines()
         return "\n".join(lines)
 
 
@@ -145,6 +159,9 @@ def solve(scene: Scene) -> RunResult:
     >>> r.P_W > 0, r.steady.iterations < 10
     (True, True)
     """
+    check_loads(scene.bearing, scene.Fa, scene.Fr, scene.M, scene.n_rpm, Fz=scene.Fz, My=scene.My,
+                names=SCENE_LOADS)             # before any solve, as steady_states
+    check_static_safety(scene)
     if scene.T_C is not None:
         alts = plan_many([scene])[0]
         if isinstance(alts, Exception):
@@ -162,5 +179,10 @@ def solve(scene: Scene) -> RunResult:
                          T_C={"contacts (prescribed)": T}, models_used=r.models_used, losses=r,
                          warnings=ws)
     st = steady_state(scene)
+    rt = None
+    if scene.n_rpm > 0:
+        rt = scene_ratings(scene, st)
+        emit(rt.warnings)
     return RunResult(scene=scene, P_W=st.P_W, torque_Nm=st.torque_Nm, breakdown_W=dict(st.breakdown_W), T_C=st.T_C,
-                     models_used=st.models_used, losses=st.losses, steady=st, warnings=st.warnings)
+                     models_used=st.models_used, losses=st.losses, steady=st,
+                     warnings=list(st.warnings) + (rt.warnings if rt else []), ratings=rt)

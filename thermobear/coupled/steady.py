@@ -42,6 +42,7 @@ from thermobear.coupled.fixedpoint import solve_coupled
 from thermobear.coupled.pipeline import (Family, families, family_contacts, family_loads, film_temperature_C,
                                         split_failures)
 from thermobear.coupled.limits import emit, family_warnings, overloads
+from thermobear.coupled.ratings import check_static_safety
 from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepare, prepared_for
 from thermobear.errors import (ExtrapolationWarning, InputError, NoConvergence, OutsideValidity, SolverError,
                                ThermalRunaway)
@@ -57,7 +58,7 @@ _C0 = 273.15
 T_LIMIT_K = T_LUBRICANT_REFUSE_C[1] + _C0     #: an equilibrium beyond the lubricant's limit is runaway
 _FILM_TOL_K = 0.1                              #: film temperature fixed point tolerance [K]
 _FILM_MAXITER = 10
-_SCENE_LOADS = ("operation.Fa_N", "operation.Fr_N", "operation.M_Nm", "operation.n_rpm")
+SCENE_LOADS = ("operation.Fa_N", "operation.Fr_N", "operation.M_Nm", "operation.n_rpm")
 
 
 @dataclass
@@ -521,15 +522,20 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> l
             raise InputError("operation.T_C", sc.T_C, "the scene prescribes its temperature: use solve() "
                              "or remove operation.T_C to solve the thermal network")
     out: list = [None] * len(scenes)
-    alternatives = plan_many(scenes)
+    alternatives: list = [None] * len(scenes)
     bounds: dict = {}
-    for k, sc in enumerate(scenes):          # loads no answer exists for, named as the scene names them
+    for k, sc in enumerate(scenes):          # before any solve: loads no answer exists for, named as the scene does
         if sc.bearing not in bounds:
             bounds[sc.bearing] = contact_bounds(sc.bearing)
         try:
-            check_loads(sc.bearing, sc.Fa, sc.Fr, sc.M, sc.n_rpm, names=_SCENE_LOADS, bounds=bounds[sc.bearing])
+            check_loads(sc.bearing, sc.Fa, sc.Fr, sc.M, sc.n_rpm, Fz=sc.Fz, My=sc.My, names=SCENE_LOADS,
+                        bounds=bounds[sc.bearing])
+            check_static_safety(sc)
         except InputError as exc:
             alternatives[k] = exc
+    todo = [k for k, a in enumerate(alternatives) if a is None]
+    for k, alts in zip(todo, plan_many([scenes[k] for k in todo])):
+        alternatives[k] = alts
     jobs, plans, owner = [], [], []           # one job per model alternative of a point
     for i, (sc, alts) in enumerate(zip(scenes, alternatives)):
         if isinstance(alts, Exception):
