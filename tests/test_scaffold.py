@@ -67,10 +67,9 @@ def test_init_then_run_within_factor_2_of_skf(name, method, tmp_path, capsys):
     print(f"\n{name:7s} {method:9s} {scene.n_rpm:6.0f} r/min Fa {scene.Fa:6.0f} N Fr {scene.Fr:6.0f} N at {T:5.1f} °C: "
           f"thermobear {P:7.2f} W, SKF 2004 {'(72B constants, proxy) ' if skf is None else ''}{ref:7.2f} W, "
           f"ratio {P / ref:.2f}")
-    if skf is None:
-        pytest.xfail(f"SKF 2004 has no catalogue constants for series {scene.bearing.series} (its table 3 lists 72 B, "
-                     f"73 B); against the 72 B constants as a proxy the ratio is {P / proxy:.2f}")
-    assert 0.5 <= P / skf <= 2.0
+    # SKF 2004 lists no constants for the spindle series 70 C (its table 3: single-row 72 B, 73 B): there
+    # the SKF model with the constants of the nearest listed single-row series (NO_SKF_CONSTANTS), printed as such
+    assert 0.5 <= P / ref <= 2.0
 
 
 def test_defaults_follow_iso_15312_reference_conditions(capsys):
