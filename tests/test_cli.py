@@ -342,3 +342,17 @@ def test_every_models_key_can_be_forced_on_the_command_line(capsys):
     assert code == 0 and d["models_used"]["drag"]["choice"] is False and d["models_used"]["hertz"]["choice"] == "houpert"
     code, _, err = run(capsys, "run", s004, "--set", 'models.drag="false"')
     assert_bad_input(code, err, "models.drag")
+
+
+def test_run_and_transient_plots_of_a_machine_show_its_network_and_power(capsys, tmp_path):
+    scene = str(Path(__file__).parents[1] / "examples" / "block_6208_oil_bath.toml")
+    code, _, _ = run(capsys, "run", scene, "--plot", tmp_path / "run")
+    assert code == 0 and (tmp_path / "run" / "network.png").stat().st_size > 50_000
+    code, _, _ = run(capsys, "transient", scene, "--t-end", "600", "--plot", tmp_path / "tr")
+    assert code == 0 and (tmp_path / "tr" / "heatup.png").stat().st_size > 20_000
+
+
+def test_node_families_group_a_machines_parts():
+    from thermobear.app.plots import node_family
+    assert [node_family(n) for n in ("inner_race", "shaft_seat_3_r2", "housing_foot", "balls", "oil_sump", "frame")] \
+        == ["inner", "shaft", "housing", "ball", "oil", ""]

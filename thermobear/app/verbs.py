@@ -375,7 +375,8 @@ def cmd_transient(args):
         plots = _plots()
         out_dir.mkdir(parents=True, exist_ok=True)
         free = {n: run.T_C[n] for n in nodes if np.ptp(run.T_C[n]) > 0}
-        wrote([plots.plot_heatup(run.t_s, free, out_dir / "heatup.png", title=f"Heat-up — {scene.name}")])
+        wrote([plots.plot_heatup(run.t_s, free, out_dir / "heatup.png", title=f"Heat-up — {scene.name}",
+                                 power_W=run.P_W)])
     return 0
 
 
