@@ -32,7 +32,7 @@ import dataclasses
 from thermobear.coupled.ratings import scene_clearance
 from thermobear.errors import InputError, NoConvergence, ThermalPreloadRunaway
 
-__all__ = ["clearance_loop", "preload_runaway", "CLEARANCE_TOL_M"]
+__all__ = ["clearance_loop", "preload_runaway", "scene_at_clearance", "CLEARANCE_TOL_M"]
 
 CLEARANCE_TOL_M = 1e-8          #: fixed-point tolerance on the clearance [m]
 _MAXITER = 25
@@ -42,7 +42,7 @@ def _choice(r) -> str:
     return r.models_used.get("clearance", ("given",))[0]
 
 
-def _with_pd(scene, Pd):
+def scene_at_clearance(scene, Pd):
     """The scene with its bearing at clearance ``Pd`` [m] (the network and everything else unchanged)."""
     return dataclasses.replace(scene, bearing=scene.bearing.with_(Pd=float(Pd)))
 
@@ -137,7 +137,7 @@ def clearance_loop(scenes, first: list, solve, *, tol_m: float = CLEARANCE_TOL_M
         if not nxt:
             break
         idx = list(nxt)
-        for i, r in zip(idx, solve([_with_pd(scenes[i], nxt[i]) for i in idx])):
+        for i, r in zip(idx, solve([scene_at_clearance(scenes[i], nxt[i]) for i in idx])):
             used[i], out[i] = nxt[i], r
         live = {i: None for i in idx if not isinstance(out[i], Exception)}
     return out
