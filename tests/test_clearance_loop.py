@@ -5,6 +5,7 @@ import numpy as np
 import pytest
 
 import thermobear as tb
+from thermobear.app.cli import main
 from thermobear.coupled.ratings import scene_clearance
 
 
@@ -97,5 +98,4 @@ def test_cli_exit_code_3_one_line(tmp_path, jet):
     src = open(tb.example_path("block_6208_oil_jet.toml")).read()
     f = tmp_path / "cn.toml"
     f.write_text(src.replace('catalog = "6208"', 'catalog = "6208"\nshaft_fit = "k5"\nhousing_fit = "H7"', 1))
-    from thermobear.app.cli import main
     assert main(["run", str(f)]) == 3
