@@ -17,7 +17,13 @@ Models (one function each, all vectorised):
 * thermal conductivity and specific heat — Cragoe (1929) petroleum-oil
   correlations, or constants from the data file.
 
-Data: ``materials/lubricants/<name>.toml`` (see :func:`lubricant_names`).
+Data: ``materials/lubricants/<name>.toml`` (see :func:`lubricant_names`); estimated values carry
+their range in ``uncertainty`` (:func:`thermobear.schema.check_uncertainty`).
+
+Per operating point: :meth:`Lubricant.per_point` gives the same lubricant with some data values as
+arrays (B,) — one per operating point of a family, e.g. the draws of an uncertainty run — and every
+property then broadcasts those values against the temperatures (the same formulas; a leading
+batch axis B in the temperatures' last place, or :meth:`Lubricant.aligned` for trailing axes).
 
 >>> oil = lubricant("seed004-mineral")
 >>> round(oil.nu(40.0), 6), round(oil.nu(100.0), 6)
@@ -27,6 +33,7 @@ Data: ``materials/lubricants/<name>.toml`` (see :func:`lubricant_names`).
 """
 from __future__ import annotations
 
+import copy
 import math
 
 import numpy as np
@@ -34,7 +41,7 @@ import numpy as np
 
 from thermobear.files import data_dir, lookup, names_in
 from thermobear.errors import ExtrapolationWarning, InputError
-from thermobear.schema import Field, check_table
+from thermobear.schema import Field, check_table, check_uncertainty
 from thermobear.validity import T_LUBRICANT_REFUSE_C, T_LUBRICANT_WARN_C, check as check_limit
 from thermobear.units import ZERO_C_K
 
@@ -65,6 +72,11 @@ def _xp(x):
 def _num(x):
     """``x`` unchanged if a Python float, else as a float array."""
     return x if type(x) is float else np.asarray(x, dtype=float)
+
+
+def _scalar(x):
+    """A 0-d value as a Python float, an array unchanged."""
+    return float(x) if np.ndim(x) == 0 else np.asarray(x, dtype=float)
 
 
 # ---------------------------------------------------------------------------
@@ -119,12 +131,12 @@ def walther_fit(nu1_cSt, T1_K, nu2_cSt, T2_K):
 
     Parameters
     ----------
-    nu1_cSt, nu2_cSt : float  kinematic viscosities [cSt] at T1_K, T2_K
-    T1_K, T2_K : float        absolute temperatures [K]
+    nu1_cSt, nu2_cSt : array_like  kinematic viscosities [cSt] at T1_K, T2_K
+    T1_K, T2_K : float             absolute temperatures [K]
 
     Returns
     -------
-    (A, B)  constants of log10 log10 Z = A − B log10 T  (T in K) [-]
+    (A, B)  constants of log10 log10 Z = A − B log10 T  (T in K) [-]: floats, or arrays for array input
 
     Notes
     -----
@@ -141,7 +153,7 @@ def walther_fit(nu1_cSt, T1_K, nu2_cSt, T2_K):
     ll2 = np.log10(np.log10(walther_Z(nu2_cSt)))
     B = (ll1 - ll2) / (np.log10(T2_K) - np.log10(T1_K))
     A = ll1 + B * np.log10(T1_K)
-    return float(A), float(B)
+    return _scalar(A), _scalar(B)
 
 
 def walther_nu(A, B, T_K):
@@ -201,7 +213,8 @@ def density_api(rho15, T_C, K1=_K1_API_LUBE):
     rho15 = _num(rho15)
     a = K1 / rho15
     dT = _num(T_C) - 15.0
-    return rho15 * _xp(dT).exp(-a * dT * (1.0 + 0.8 * a * dT))
+    x = -a * dT * (1.0 + 0.8 * a * dT)
+    return rho15 * _xp(x).exp(x)
 
 
 def gold_alpha_p(nu_cSt, s, t):
@@ -292,10 +305,10 @@ def cragoe_cp(rho15, T_C):
 # Lubricant
 # ---------------------------------------------------------------------------
 def _out(x, like):
-    """Return a float for scalar input, else an ndarray."""
+    """Return a float for scalar input (and scalar properties), else an ndarray."""
     if type(x) is float:
         return x
-    return float(x) if np.ndim(like) == 0 else np.asarray(x, dtype=float)
+    return float(x) if np.ndim(like) == 0 and np.ndim(x) == 0 else np.asarray(x, dtype=float)
 
 
 def _plain(T_C) -> bool:
@@ -305,9 +318,10 @@ def _plain(T_C) -> bool:
 
 
 def _positive(field, v):
-    if v is None or not np.isfinite(v) or v <= 0:
+    """A finite positive value (or array of them, one per operating point)."""
+    if v is None or not (np.all(np.isfinite(v)) and np.all(np.asarray(v) > 0)):
         raise InputError(field, v, "must be finite and > 0")
-    return float(v)
+    return _scalar(v)
 
 
 class Lubricant:
@@ -325,6 +339,10 @@ class Lubricant:
                                  heat [J/(kg K)]; default: Cragoe (1929) correlations
     name, kind, base_oil, thickener, description : str
                                  labels; kind is "oil" or "grease"
+    uncertainty : dict           data-file key → :class:`~thermobear.schema.Uncertainty` of its
+                                 estimated values
+
+    Every number may also be an array (B,), one value per operating point (:meth:`per_point`).
 
     Methods (T_C scalar or array [°C]; scalar in → float out)
     -------
@@ -345,26 +363,26 @@ class Lubricant:
 
     def __init__(self, nu40_cSt, nu100_cSt, rho15, alpha_p=None, *, gold_s=None, gold_t=None,
                  k_th=None, cp=None, name="custom", kind="oil", base_oil="mineral",
-                 thickener=None, description="", estimated=()):
+                 thickener=None, description="", estimated=(), uncertainty=None):
         nu40 = _positive(f"lubricant[{name}].nu40_cSt", nu40_cSt)
         nu100 = _positive(f"lubricant[{name}].nu100_cSt", nu100_cSt)
-        if not nu100 < nu40:
+        if not np.all(nu100 < nu40):
             raise InputError(f"lubricant[{name}].nu100_cSt", nu100_cSt,
                              f"must be < nu40_cSt = {nu40_cSt} (viscosity falls with temperature)")
         A, B = walther_fit(nu40, _T40_K, nu100, _T100_K)
         self._setup(A, B, rho15, alpha_p, gold_s, gold_t, k_th, cp, name, kind, base_oil,
-                    thickener, description, estimated)
+                    thickener, description, estimated, uncertainty)
 
     # shared by __init__ and from_single_point
     def _setup(self, A, B, rho15, alpha_p, gold_s, gold_t, k_th, cp, name, kind, base_oil,
-               thickener, description, estimated):
+               thickener, description, estimated, uncertainty=None):
         self.name, self.description = str(name), str(description)
         if kind not in ("oil", "grease"):
             raise InputError(f"lubricant[{name}].kind", kind, 'must be "oil" or "grease"')
         self.kind, self.base_oil, self.thickener = kind, base_oil, thickener
-        self.walther_A, self.walther_B = float(A), float(B)
+        self.walther_A, self.walther_B = _scalar(A), _scalar(B)
         self.rho15 = _positive(f"lubricant[{name}].rho15", rho15)
-        if not 500.0 < self.rho15 < 2500.0:
+        if not np.all((500.0 < self.rho15) & (self.rho15 < 2500.0)):
             raise InputError(f"lubricant[{name}].rho15", rho15, "density at 15 °C must lie in 500-2500 kg/m^3")
         self.alpha_p = None if alpha_p is None else _positive(f"lubricant[{name}].alpha_p", alpha_p)
         if (gold_s is None) != (gold_t is None):
@@ -375,6 +393,59 @@ class Lubricant:
         self._k_th = None if k_th is None else _positive(f"lubricant[{name}].k_th", k_th)
         self._cp = None if cp is None else _positive(f"lubricant[{name}].cp", cp)
         self.estimated = tuple(estimated)
+        self.uncertainty = dict(uncertainty or {})
+        sizes = {np.size(v) for v in self._numbers().values() if np.ndim(v)}
+        if len(sizes) > 1:
+            raise InputError(f"lubricant[{name}]", sorted(sizes), "per-point values must share one length B")
+        self.points = sizes.pop() if sizes else None     # B when values are given per operating point
+        self.table = {}                                   # the data-file values it was built from (from_dict)
+
+    def _numbers(self) -> dict:
+        return {"walther_A": self.walther_A, "walther_B": self.walther_B, "rho15": self.rho15, "alpha_p": self.alpha_p,
+                "gold_s": self.gold_s, "gold_t": self.gold_t, "_k_th": self._k_th, "_cp": self._cp}
+
+    def per_point(self, values: dict) -> "Lubricant":
+        """This lubricant with data-file values given per operating point.
+
+        Parameters
+        ----------
+        values : dict   data-file key (``rho15_kg_m3``, ``nu40_cSt``, ``k_W_mK``, ``walther_B``, …; a
+                        numeric key of :data:`FIELDS` the lubricant was built from) → array (B,)
+
+        Returns
+        -------
+        Lubricant   built by the same constructor from its data values with ``values`` replaced: every
+                    property broadcasts those arrays against temperatures whose last axis is B (or
+                    use :meth:`aligned`)
+
+        >>> oil = lubricant("seed002-mg1").per_point({"rho15_kg_m3": np.array([880.0, 900.0, 920.0])})
+        >>> oil.points, np.round(oil.rho(np.array([40.0, 40.0, 40.0])), 1).tolist()
+        (3, [864.2, 884.2, 904.2])
+        """
+        if not values:
+            return self
+        if not self.table:
+            raise InputError(f"lubricant[{self.name}]", None, "per-point values need a lubricant built from data "
+                             "values (lubricant(name) or Lubricant.from_dict)")
+        for key, v in values.items():
+            if key not in self.table or FIELDS[key].kind != "number":
+                raise InputError(f"lubricant[{self.name}].{key}", None, "a numeric value of this lubricant; it has: "
+                                 + ", ".join(k for k in self.table if FIELDS[k].kind == "number"))
+        t = {**self.table, **{k: np.asarray(v, dtype=float) for k, v in values.items()}}
+        return _build(t, f"lubricant[{self.name}]")
+
+    def aligned(self, trailing: int) -> "Lubricant":
+        """The same lubricant with its per-point values shaped (B, 1, …) with ``trailing`` unit axes,
+        for temperatures whose operating-point axis has ``trailing`` axes after it (e.g. (…, B, 2, Z)
+        per contact: ``aligned(2)``); itself when its values are not per point."""
+        if self.points is None or trailing == 0:
+            return self
+        obj = copy.copy(self)
+        shape = (self.points,) + (1,) * trailing
+        for k, v in self._numbers().items():
+            if np.ndim(v):
+                setattr(obj, k, np.reshape(v, shape))
+        return obj
 
     @classmethod
     def from_single_point(cls, eta_Pa_s, T_C, rho15, walther_B=3.7, alpha_p=None, **kw):
@@ -409,19 +480,20 @@ class Lubricant:
         """
         name = kw.get("name", "custom")
         eta = _positive(f"lubricant[{name}].eta_Pa_s", eta_Pa_s)
-        if not np.isfinite(T_C) or not T_VALID_C[0] <= T_C <= T_VALID_C[1]:
+        if not (np.all(np.isfinite(T_C)) and np.all((T_VALID_C[0] <= np.asarray(T_C)) & (np.asarray(T_C) <= T_VALID_C[1]))):
             raise InputError(f"lubricant[{name}].T_C", T_C,
                                   f"reference temperature must lie in {T_VALID_C[0]}...{T_VALID_C[1]} °C")
-        if walther_B is None or not np.isfinite(walther_B) or not 0.0 <= walther_B <= 10.0:
+        if walther_B is None or not (np.all(np.isfinite(walther_B))
+                                     and np.all((0.0 <= np.asarray(walther_B)) & (np.asarray(walther_B) <= 10.0))):
             raise InputError(f"lubricant[{name}].walther_B", walther_B,
                              "D341 slope must lie in 0...10 (typical mineral oils 3-4)")
         rho15 = _positive(f"lubricant[{name}].rho15", rho15)
-        nu_ref = eta / (float(density_api(rho15, T_C)) * 1e-6)
-        A = float(np.log10(np.log10(walther_Z(nu_ref)))) + walther_B * np.log10(T_C + ZERO_C_K)
+        nu_ref = eta / (_scalar(density_api(rho15, T_C)) * 1e-6)
+        A = _scalar(np.log10(np.log10(walther_Z(nu_ref)))) + walther_B * np.log10(T_C + ZERO_C_K)
         obj = cls.__new__(cls)
         obj._setup(A, walther_B, rho15, alpha_p, kw.get("gold_s"), kw.get("gold_t"), kw.get("k_th"),
                    kw.get("cp"), name, kw.get("kind", "oil"), kw.get("base_oil", "mineral"),
-                   kw.get("thickener"), kw.get("description", ""), kw.get("estimated", ()))
+                   kw.get("thickener"), kw.get("description", ""), kw.get("estimated", ()), kw.get("uncertainty"))
         return obj
 
     @classmethod
@@ -443,14 +515,16 @@ class Lubricant:
     @property
     def nu40_cSt(self) -> float:
         """Kinematic viscosity at 40 °C [cSt] (input, or derived from a single point)."""
-        return float(walther_nu(self.walther_A, self.walther_B, _T40_K))
+        return _scalar(walther_nu(self.walther_A, self.walther_B, _T40_K))
 
     @property
     def nu100_cSt(self) -> float:
         """Kinematic viscosity at 100 °C [cSt]."""
-        return float(walther_nu(self.walther_A, self.walther_B, _T100_K))
+        return _scalar(walther_nu(self.walther_A, self.walther_B, _T100_K))
 
     def __repr__(self):
+        if self.points is not None:
+            return f"Lubricant(name={self.name!r}, kind={self.kind!r}, values per point: {self.points})"
         return (f"Lubricant(name={self.name!r}, kind={self.kind!r}, nu40_cSt={self.nu40_cSt:.4g}, "
                 f"nu100_cSt={self.nu100_cSt:.4g}, rho15={self.rho15:.5g})")
 
@@ -466,14 +540,14 @@ class Lubricant:
     # needs no check: the formulas run on the float (with ``math``); anything else is checked first.
     def nu(self, T_C):
         """Kinematic viscosity [cSt] at T_C [°C], ASTM D341 (see :func:`walther_nu`)."""
-        if _plain(T_C):
+        if _plain(T_C) and self.points is None:
             return walther_nu(self.walther_A, self.walther_B, float(T_C) + ZERO_C_K)
         T = self._T(T_C, "nu")
         return _out(walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K), T_C)
 
     def rho(self, T_C):
         """Density [kg/m³] at T_C [°C] (see :func:`density_api`)."""
-        if _plain(T_C):
+        if _plain(T_C) and self.points is None:
             return density_api(self.rho15, float(T_C))
         T = self._T(T_C, "rho")
         return _out(density_api(self.rho15, T), T_C)
@@ -489,7 +563,9 @@ class Lubricant:
 
     def _const(self, v, T, T_C):
         """A constant property ``v`` shaped like the temperatures."""
-        return v if type(T) is float else _out(np.full(np.shape(T), v), T_C)
+        if type(T) is float:
+            return v
+        return _out(np.broadcast_to(v, np.broadcast_shapes(np.shape(T), np.shape(v))).astype(float), T_C)
 
     def alpha_p_at(self, T_C):
         """Pressure–viscosity coefficient [1/Pa] at T_C [°C].
@@ -555,6 +631,7 @@ FIELDS = {
     "T_ref_C": Field.number("°C", -60.0, 250.0, doc="temperature of eta_ref_Pa_s"),
     "walther_B": Field.number("-", 0.0, 10.0, lo_open=True, doc="ASTM D341 slope (one-point lubricants)"),
     "estimated": Field.names("keys whose values are estimates"),
+    "uncertainty": Field.table("ranges of estimated values (thermobear.schema.check_uncertainty)"),
     "grease_T_min_C": Field.number("°C", -100.0, 300.0, doc="grease operating range (maker)"),
     "grease_T_max_C": Field.number("°C", -100.0, 300.0, doc="grease operating range (maker)"),
 }
@@ -567,11 +644,24 @@ def _from_mapping(d: dict, where: str) -> Lubricant:
     d = check_table(d, FIELDS, where)
     if d.get("thermal", "cragoe") != "cragoe" and ("k_W_mK" not in d or "cp_J_kgK" not in d):
         raise InputError(f"{where}.thermal", d.get("thermal"), '"cragoe", or give k_W_mK and cp_J_kgK')
+    d["uncertainty"] = check_uncertainty(d.get("uncertainty", {}),
+                                         {k: FIELDS[k] for k in d if FIELDS[k].kind == "number"}, where)
+    return _build(d, where)
+
+
+def _build(d: dict, where: str) -> Lubricant:
+    """The Lubricant of typed data-file values (numbers, or arrays (B,) per operating point)."""
     common = dict(alpha_p=d.get("alpha_p_1_Pa"), gold_s=d.get("gold_s_1_GPa"), gold_t=d.get("gold_t"),
                   k_th=d.get("k_W_mK"), cp=d.get("cp_J_kgK"), name=d.get("name", "custom"),
                   kind=d.get("kind", "oil"), base_oil=d.get("base_oil", "mineral"),
                   thickener=d.get("thickener"), description=d.get("description", ""),
-                  estimated=d.get("estimated", ()))
+                  estimated=d.get("estimated", ()), uncertainty=d.get("uncertainty"))
+    lub = _construct(d, where, common)
+    lub.table = {k: v for k, v in d.items() if k != "uncertainty"}
+    return lub
+
+
+def _construct(d: dict, where: str, common: dict) -> Lubricant:
     if "eta_ref_Pa_s" in d:
         for key in ("T_ref_C", "rho15_kg_m3"):
             if key not in d:
