@@ -51,18 +51,19 @@ class LocalSources:
     diagonal = True
 
     def __init__(self, fam: Family, contacts: ContactSet):
-        self.fam, self.contacts = fam, contacts
+        self.fam, self.contacts, self.lubricant = fam, contacts, fam.lubricant
         sc = fam.scene
         flow = fam.values("oil_flow")
         flow = float(flow[0]) if np.all(flow == flow[0]) else flow      # one value when the points share it
-        self.kw = dict(supply=sc.supply, oil_flow_m3_s=flow, Rq_ball=sc.Rq_ball, Rq_ring=sc.Rq_ring,
-                       mu_boundary=sc.mu_boundary, mu_full_film=sc.mu_full_film,
+        per = {k: fam.values(k) for k in ("Rq_ball", "Rq_ring", "mu_boundary", "mu_full_film")}
+        per = {k: float(v[0]) if np.all(v == v[0]) else v[:, None, None] for k, v in per.items()}  # per contact
+        self.kw = dict(supply=sc.supply, oil_flow_m3_s=flow, **per,
                        rolling_model=fam.models["rolling"][0], drag=bool(fam.models["drag"][0]))
 
     def result(self, x_C) -> LossResult:
         """Losses at coupled temperatures x (B, 3) [°C] (inner contact, outer contact, oil)."""
         x = _clip(np.asarray(x_C, float))
-        return evaluate_losses(self.contacts, self.fam.scene.lubricant, x[..., 2], T_inner_C=x[..., 0],
+        return evaluate_losses(self.contacts, self.lubricant, x[..., 2], T_inner_C=x[..., 0],
                                T_outer_C=x[..., 1], T_oil_C=x[..., 2], **self.kw)
 
     def parts(self, x_C) -> np.ndarray:
@@ -93,7 +94,7 @@ class SKFSources:
     diagonal = False
 
     def __init__(self, fam: Family, contacts=None):
-        self.fam = fam
+        self.fam, self.lubricant = fam, fam.lubricant
         sc = fam.scene
         if sc.bearing.kind == "thrust" and not np.all(fam.values("Fa") > 0):
             refuse_unloaded_thrust(float(np.min(fam.values("Fa"))))
@@ -102,7 +103,8 @@ class SKFSources:
         """Losses at coupled temperatures x (B, 3) [°C]: the model at ½(x_inner + x_outer)."""
         x = _clip(np.asarray(x_C, float))
         return skf_losses(self.fam.scene, 0.5 * (x[..., 0] + x[..., 1]), self.fam.models,
-                          n_rpm=self.fam.values("n_rpm"), Fa=self.fam.values("Fa"), Fr=self.fam.values("Fr"))
+                          n_rpm=self.fam.values("n_rpm"), Fa=self.fam.values("Fa"), Fr=self.fam.values("Fr"),
+                          lubricant=self.lubricant)
 
     def parts(self, x_C) -> np.ndarray:
         x = np.asarray(x_C, float)
@@ -113,9 +115,10 @@ class SKFSources:
         return np.stack([self.parts(xk) for xk in x])
 
 
-def skf_losses(scene: Scene, T_C, models: dict, *, n_rpm=None, Fa=None, Fr=None) -> SKFLosses:
+def skf_losses(scene: Scene, T_C, models: dict, *, n_rpm=None, Fa=None, Fr=None, lubricant=None) -> SKFLosses:
     """SKF 2004 global model for a scene at bearing temperature ``T_C`` [°C] (viscosity of the (base)
-    oil there); ``n_rpm``, ``Fa``, ``Fr`` may override the scene's with arrays.  Calibrated constants
+    oil there); ``n_rpm``, ``Fa``, ``Fr`` may override the scene's with arrays, ``lubricant`` its
+    lubricant (values per point: :attr:`~thermobear.coupled.pipeline.Family.lubricant`).  Calibrated constants
     from ``[models] skf_R1, skf_S1, skf_mu_EHL``.  Heat split for the network: ½ to the balls, ¼ to
     each ring (the equal split of the contact losses); drag to the oil."""
     m = scene.models
@@ -125,7 +128,8 @@ def skf_losses(scene: Scene, T_C, models: dict, *, n_rpm=None, Fa=None, Fr=None)
         refuse_unloaded_thrust(float(np.min(Fa)))
     lub = "grease" if scene.supply == "grease" else scene.supply
     base = _SKF_MU_EHL.get(getattr(scene.lubricant, "base_oil", "mineral"), "mineral")
-    r = skf_friction(scene.bearing, scene.lubricant.nu(T_C), n, Fa, Fr, lubrication=lub, R1=m.get("skf_R1"),
+    oil = scene.lubricant if lubricant is None else lubricant
+    r = skf_friction(scene.bearing, oil.nu(T_C), n, Fa, Fr, lubrication=lub, R1=m.get("skf_R1"),
                      S1=m.get("skf_S1"), mu_EHL=m.get("skf_mu_EHL"), base_oil=base)
     w = np.asarray(n, float) * np.pi / 30.0
     bd = {"rolling": r.M_rr * w, "sliding": r.M_sl * w, "drag": r.M_drag * w, "seal": r.M_seal * w}
@@ -174,9 +178,10 @@ def network_context(fam: Family, contacts: ContactSet | None = None) -> dict:
     for key in sc.network_parameters:
         if "." not in key:
             scene[key] = np.array([s.network_parameters[key] for s in fam.scenes], float)
-    ctx = {"bearing": sc.bearing, "scene": scene, "oil": sc.lubricant,
+    ctx = {"bearing": sc.bearing, "scene": scene, "oil": fam.lubricant,
            "fixed": {f"n{k}": np.array([s.T_fixed_C[node] for s in fam.scenes], float)
-                     for k, node in enumerate(sorted(sc.T_fixed_C))}}
+                     for k, node in enumerate(sorted(sc.T_fixed_C))},
+           "sample": {k: v for k, v in fam.samples().items() if not k.startswith("lubricant.")}}
     omega = n * np.pi / 30.0
     inner = sc.rotating == "inner"
     op = {"omega_rad_s": omega, "omega_inner_rad_s": omega if inner else 0.0 * omega,
@@ -206,7 +211,8 @@ def _oil_fraction(fam: Family, n_rpm) -> np.ndarray:
 
 def family_network(fam: Family, template: NetworkTemplate, contacts: ContactSet | None) -> ThermalNetwork:
     """The family's network at its B operating points."""
-    return template.at(network_context(fam, contacts), oil=fam.scene.lubricant, batch=fam.B)
+    ctx = network_context(fam, contacts)
+    return template.at(ctx, oil=ctx["oil"], batch=fam.B)
 
 
 #: The coupled temperatures the loss models read, each the mean of role nodes (role → weight): a contact

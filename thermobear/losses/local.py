@@ -340,10 +340,11 @@ def _temperatures(cs, T_C, T_inner_C, T_outer_C, T_oil_C, dragged):
 _FEW = 8        # up to this many temperatures, properties are asked one Python float at a time
 
 
-def _at(prop, T):
+def _at(prop, T, per_point=False):
     """``prop(T)`` on a temperature array [°C]: one Python float at a time when there are a few
-    (the lubricant's and drag's formulas on floats: no array overhead), else one array call."""
-    if T.size > _FEW:
+    (the lubricant's and drag's formulas on floats: no array overhead), else one array call (always
+    for a lubricant with values per operating point)."""
+    if T.size > _FEW or per_point:
         return prop(T)
     return np.array([prop(t) for t in T.ravel().tolist()]).reshape(T.shape)
 
@@ -386,7 +387,9 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     Parameters
     ----------
     cs : ContactSet               from :func:`prepare_contacts` (operating points ``cs.batch``)
-    oil : Lubricant               any object with ``eta``, ``alpha_p_at`` and ``rho`` methods of T [°C]
+    oil : Lubricant               any object with ``eta``, ``alpha_p_at`` and ``rho`` methods of T [°C]; a
+                                  lubricant with values per operating point (``Lubricant.per_point``, B =
+                                  ``cs.batch``) gives each point its own properties
     T_C : array_like              temperature of contacts and oil where the next three are not given [°C]
     T_inner_C, T_outer_C : array_like, optional
                                   inner / outer contact temperatures [°C]: broadcast to ``cs.batch``,
@@ -394,7 +397,8 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     T_oil_C : array_like, optional  oil–air mixture temperature for drag [°C] (per operating point)
     supply, oil_flow_m3_s, Rq_ball, Rq_ring, mu_boundary, mu_full_film, rolling_model, drag
                                   as :func:`bearing_losses`; ``oil_flow_m3_s`` [m³/s] may have the shape
-                                  of ``cs.batch``
+                                  of ``cs.batch``, the roughnesses and friction coefficients the shape
+                                  ``cs.batch + (1, 1)`` (one value per operating point)
 
     Returns
     -------
@@ -436,12 +440,14 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     dragged = drag and supply not in ("oil_bath", "dry_film") and bool(cs.n_rpm.any())
     Tall, lead, per_ball = _temperatures(cs, T_C, T_inner_C, T_outer_C, T_oil_C, dragged)
     T2 = Tall[..., :2, :]                           # the raceways' contact temperatures
-    eta_all = _at(oil.eta, Tall)                    # contacts and (drag) the oil–air mixture in one call
-    eta2, alpha2 = eta_all[..., :2, :], _at(oil.alpha_p_at, T2)
+    pp = getattr(oil, "points", None) is not None   # values per operating point: against (…, B, 2|3, Z|1)
+    oil_c = oil.aligned(2) if pp else oil
+    eta_all = _at(oil_c.eta, Tall, pp)              # contacts and (drag) the oil–air mixture in one call
+    eta2, alpha2 = eta_all[..., :2, :], _at(oil_c.alpha_p_at, T2, pp)
     h_min, h_c = cs.ehl.film_thickness(eta2, alpha2, kind=("min", "central"))
     reg = cs.ehl.regime(eta2, alpha2)
     F_R = cs.rolling.force(eta2, _ROLLING_FORCE_MODEL.get(rolling_model, rolling_model), alpha_p=alpha2, regime=reg)
-    if Rq_ball or Rq_ring:
+    if np.any(Rq_ball) or np.any(Rq_ring):
         Lam = specific_film_thickness(h_min, Rq_ball, Rq_ring)
     else:                                           # smooth surfaces: Λ = ∞, full-film friction
         Lam = np.full(h_min.shape, np.inf)

@@ -434,6 +434,17 @@ class Lubricant:
         t = {**self.table, **{k: np.asarray(v, dtype=float) for k, v in values.items()}}
         return _build(t, f"lubricant[{self.name}]")
 
+    def sampled(self, draws: dict) -> "Lubricant":
+        """This lubricant with drawn values per operating point: data-file key → draws (B,), each moved
+        by the key's :class:`~thermobear.schema.Uncertainty` (factor × value, value + offset, or the
+        drawn value) — :meth:`per_point` of the moved values."""
+        for key in draws:
+            if key not in self.uncertainty:
+                raise InputError(f"sample.lubricant.{key}", None, f"lubricant {self.name} gives no uncertainty for "
+                                 f"it; it has: {', '.join(self.uncertainty) or 'none'}")
+        return self.per_point({k: self.uncertainty[k].apply(self.table[k], np.asarray(v, float))
+                               for k, v in draws.items()})
+
     def aligned(self, trailing: int) -> "Lubricant":
         """The same lubricant with its per-point values shaped (B, 1, …) with ``trailing`` unit axes,
         for temperatures whose operating-point axis has ``trailing`` axes after it (e.g. (…, B, 2, Z)
