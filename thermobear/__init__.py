@@ -23,7 +23,7 @@ from thermobear.scene import Scene, load_scene  # noqa: F401
 from thermobear.rating import rating_life, RatingLife  # noqa: F401
 from thermobear.models import choose_models, open_contacts  # noqa: F401
 from thermobear.coupled import (solve, steady_state, steady_states, transient, scene_losses, prepare,  # noqa: F401
-                                Prepared, RunResult, SteadyState, TransientRun)
+                                Prepared, RunResult, SteadyState, TransientRun, UncertaintyResult)
 from thermobear.app.sweep import run_sweep  # noqa: F401
 from thermobear.app.rig import read_log, compare, calibrate, RigLog  # noqa: F401
 

@@ -13,7 +13,8 @@ Ranking of the inputs, for each output y over the draws X (n samples × d inputs
   2008, *Global Sensitivity Analysis: The Primer*, §1.2.5).  Each entry also has the slope
   ∂y/∂x_j = SRC_j s_y / s_{x_j} (output unit per draw unit: per factor, per K of offset …) and
   Spearman's rank correlation (monotonic, not only linear, dependence).  With fewer samples than
-  d + 2 the regression is not defined and the inputs are ranked by |rank correlation|.
+  2 (d + 1) (two per coefficient) the regression is not trusted and the inputs are ranked by
+  |rank correlation|.
 * ``"sobol"``: first-order Sobol' indices S1 estimated on the same samples by RBD-FAST (Tarantola,
   Gatelli & Mara 2006; Plischke 2010), from the optional SALib (``pip install thermobear[sensitivity]``);
   the SRC entries are kept beside them.
@@ -84,7 +85,7 @@ def ranking(inputs, X, outputs: dict, method: str = "src") -> dict:
     live = sx > 0
     SRC = np.zeros((len(names), len(keys)))
     r2 = [None] * len(keys)
-    if n >= live.sum() + 2:
+    if n >= 2 * (live.sum() + 1):           # at least two samples per coefficient
         beta = np.linalg.lstsq(Zx[:, live], Zy, rcond=None)[0]
         SRC[live] = beta
         res = np.sum((Zy - Zx[:, live] @ beta) ** 2, axis=0)
@@ -122,3 +123,53 @@ def _rbd_fast(names, X, y, live):
                    "bounds": [[float(X[:, k].min()), float(X[:, k].max())] for k in idx]}
         S1[idx] = np.asarray(rbd_fast.analyze(problem, X[:, idx], y, print_to_console=False)["S1"], float)
     return S1
+
+
+def summary_lines(res, top: int = 8) -> list:
+    """The text table of an :class:`~thermobear.coupled.uncertainty.UncertaintyResult`: the bands of
+    every node temperature, the power and its breakdown (at the last output time of a heat-up), the
+    failed samples, and the inputs ranked for the power and the result's ``focus`` nodes."""
+    last = (lambda v: v if np.ndim(v) == 0 else v[-1])  # noqa: E731
+    nom = res.nominal
+    t = "" if res.t_s is None else f" at t = {res.t_s[-1]:g} s"
+    lines = [f"Uncertainty: {res.n} samples ({'Latin hypercube' if res.method == 'lhs' else 'scrambled Sobol'}, "
+             f"seed {res.seed}; {len(res.inputs)} estimated inputs; bearing geometry in {res.groups} "
+             f"famil{'y' if res.groups == 1 else 'ies'}){t}", "",
+             f"  {'':26s} {'nominal':>9s} {'p5':>9s} {'p50':>9s} {'p95':>9s}"]
+    for key, b in res.bands.items():
+        kind, _, name = key.partition(".")
+        unit = "°C" if kind == "T_C" else "W"
+        v = _nominal_value(nom, key)
+        lines.append(f"  {(name or key) + ' [' + unit + ']':26s} {'' if v is None else f'{v:9.2f}':>9s} "
+                     f"{last(b['p5']):9.2f} {last(b['p50']):9.2f} {last(b['p95']):9.2f}")
+    fc = res.failed_count
+    lines += ["", f"Failed samples: {len(res.failed)} of {res.n}" + (
+        " (" + ", ".join(f"{k} {v}" for k, v in sorted(fc.items())) + ")" if fc else "")]
+    for key in [k for k in ("P_W", *(f"T_C.{n}" for n in res.focus)) if k in res.sensitivity]:
+        r = res.sensitivity[key]
+        how = {"src": "standardised regression coefficient", "spearman": "rank correlation",
+               "S1": "first-order Sobol index"}[r["ranked_by"]]
+        r2 = "" if r["r2"] is None else f", R² {r['r2']:.2f}"
+        lines += ["", f"Inputs ranked for {key} (by {how}{r2}" + ("; slope per draw unit)" if r2 else ")")]
+        for e in r["inputs"][:top]:
+            s1 = f"  S1 {e['S1']:6.3f}" if "S1" in e else ""
+            reg = "" if r["r2"] is None else f"SRC {e['src']:+6.3f}  "
+            slope = "" if r["r2"] is None else f"  slope {e['slope']:+.4g}"
+            lines.append(f"  {e['address']:44s} {reg}rho {e['spearman']:+6.3f}{slope}{s1}")
+        if r["r2"] is None:
+            lines.append(f"  (fewer than two samples per input: ranked by rank correlation, no regression)")
+    return lines
+
+
+def _nominal_value(nom, key):
+    """The nominal answer's value of an output (the last time of a heat-up)."""
+    kind, _, name = key.partition(".")
+    if kind == "T_C":
+        v = nom.T_C.get(name)
+    elif kind == "P_W":
+        v = nom.P_W
+    else:
+        v = (nom.losses.breakdown_W if hasattr(nom, "losses") else nom.breakdown_W).get(name)
+    if v is None:
+        return None
+    return float(np.ravel(v)[-1])

@@ -46,10 +46,12 @@ from scipy.stats import qmc
 from thermobear.contact.geometry import bearing_values
 from thermobear.contact.materials import PROPERTIES, material
 from thermobear.coupled.pipeline import Family, family_contacts, family_loads
-from thermobear.coupled.sensitivity import SENSITIVITY, bands, ranking
+from thermobear.coupled.sensitivity import SENSITIVITY, bands, ranking, summary_lines
 from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepared_for
-from thermobear.coupled.steady import SteadyState, steady_state, steady_states
-from thermobear.coupled.transient import PointModel, heat_sources, transient
+from thermobear.coupled import steady as _steady
+from thermobear.coupled import transient as _transient
+from thermobear.coupled.steady import SteadyState, steady_states
+from thermobear.coupled.transient import PointModel, heat_sources
 from thermobear.errors import InputError, OutsideValidity, SolverError
 from thermobear.models import plan
 from thermobear.scene import Scene
@@ -58,7 +60,7 @@ from thermobear.schema import Uncertainty, check_value
 from thermobear.thermal import solve_transient
 
 __all__ = ["Input", "UncertaintyResult", "uncertain_inputs", "design", "sample_scenes", "steady_uncertainty",
-           "transient_uncertainty", "METHODS"]
+           "transient_uncertainty", "steady_state", "transient", "METHODS"]
 
 METHODS = ("lhs", "sobol")
 _GROUPS = 8
@@ -291,6 +293,8 @@ class UncertaintyResult:
     failed : dict                           sample index → error name and message
     n, seed, method, groups                 the sample design
     t_s : ndarray                           output times of a transient [s] (None for a steady state)
+    focus : tuple                           nodes the text table ranks the inputs for (the rig's
+                                            measured nodes, else the balls)
     """
 
     nominal: object
@@ -307,6 +311,11 @@ class UncertaintyResult:
     sensitivity_method: str = "src"
     t_s: np.ndarray | None = None
     group: np.ndarray = field(default=None, repr=False)
+    focus: tuple = ()
+
+    def summary(self, top: int = 8) -> str:
+        """A text table: bands, failed samples, inputs ranked (:func:`~thermobear.coupled.sensitivity.summary_lines`)."""
+        return "\n".join(summary_lines(self, top))
 
     @property
     def failed_count(self) -> dict:
@@ -327,6 +336,12 @@ class UncertaintyResult:
                 "sensitivity": self.sensitivity,
                 "failed": {"count": len(self.failed), "by_error": self.failed_count,
                            "samples": {str(k): v for k, v in sorted(self.failed.items())}}}
+
+
+def _focus(scene: Scene, nodes) -> tuple:
+    """The rig's measured nodes (``[rig] map``), else the ball node."""
+    mapped = tuple(dict.fromkeys(t for t in scene.rig_map.values() if t in nodes))
+    return mapped or tuple(n for n in ("balls", "bearing") if n in nodes)[:1]
 
 
 def _fail(exc) -> dict:
@@ -379,7 +394,7 @@ def steady_uncertainty(scene: Scene, n: int, *, seed=None, method: str = "lhs", 
     >>> bool(b["p5"] < r.nominal.T_C["inner_ring"] < b["p95"]), len(r.failed)
     (True, 0)
     """
-    nominal = nominal if nominal is not None else steady_state(scene, tol_K=tol_K, prepared=prepared)
+    nominal = nominal if nominal is not None else _steady.steady_state(scene, tol_K=tol_K, prepared=prepared)
     sm = _samples(scene, n, seed, method, groups, inputs, prepared, sensitivity)
     runnable = [k for k, s in enumerate(sm.scenes) if isinstance(s, Scene)]
     results: list = list(sm.scenes)
@@ -391,7 +406,8 @@ def steady_uncertainty(scene: Scene, n: int, *, seed=None, method: str = "lhs", 
     outputs = _outputs_steady(results)
     return UncertaintyResult(nominal=nominal, inputs=sm.inputs, X=sm.X, outputs=outputs, bands=bands(outputs),
                              sensitivity=ranking(sm.inputs, sm.X, outputs, sensitivity), failed=failed, n=sm.X.shape[0],
-                             seed=seed, method=method, groups=sm.groups, sensitivity_method=sensitivity, group=sm.group)
+                             seed=seed, method=method, groups=sm.groups, sensitivity_method=sensitivity, group=sm.group,
+                             focus=_focus(scene, nominal.T_C))
 
 
 def _samples(scene, n, seed, method, groups, inputs, prepared, sensitivity) -> Samples:
@@ -437,8 +453,8 @@ def transient_uncertainty(scene: Scene, t_end_s: float, n: int, *, t_eval=None, 
     operating point).  A family whose integration fails counts all its samples as failed.
     """
     t_eval = np.linspace(0.0, t_end_s, 51)[1:] if t_eval is None else np.asarray(t_eval, float)
-    nominal = nominal if nominal is not None else transient(scene, t_end_s, t_eval=t_eval, T0_C=T0_C, rtol=rtol,
-                                                            atol=atol, stop=stop)
+    nominal = nominal if nominal is not None else _transient.transient(scene, t_end_s, t_eval=t_eval, T0_C=T0_C,
+                                                                       rtol=rtol, atol=atol, stop=stop)
     sm = _samples(scene, n, seed, method, groups, inputs, None, sensitivity)
     failed = {k: _fail(s) for k, s in enumerate(sm.scenes) if not isinstance(s, Scene)}
     outputs: dict = {}
@@ -460,4 +476,48 @@ def transient_uncertainty(scene: Scene, t_end_s: float, n: int, *, t_eval=None, 
     return UncertaintyResult(nominal=nominal, inputs=sm.inputs, X=sm.X, outputs=outputs, bands=bands(outputs),
                              sensitivity=ranking(sm.inputs, sm.X, {k: v[:, -1] for k, v in outputs.items()}, sensitivity),
                              failed=failed, n=sm.X.shape[0], seed=seed, method=method, groups=sm.groups,
-                             sensitivity_method=sensitivity, t_s=t_eval, group=sm.group)
+                             sensitivity_method=sensitivity, t_s=t_eval, group=sm.group, focus=_focus(scene, nominal.T_C))
+
+
+# --------------------------------------------------------------------------- the public entry points
+def steady_state(scene: Scene, *, uncertainty: int | None = None, seed=0, method: str = "lhs",
+                 groups: int | None = None, sensitivity: str = "src", tol_K: float = 1e-6, load=None, prepared=None):
+    """Coupled steady state of a scene (:func:`thermobear.coupled.steady.steady_state`); with
+    ``uncertainty=N`` its bands over N samples of the estimated inputs (:func:`steady_uncertainty`,
+    design ``method``, ``seed`` — default 0, so a run repeats —, ``groups``, ``sensitivity``).
+
+    Returns a :class:`~thermobear.coupled.steady.SteadyState`, or with ``uncertainty`` an
+    :class:`UncertaintyResult` whose ``nominal`` is the steady state.
+
+    >>> import thermobear as tb
+    >>> r = tb.steady_state(tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml")), uncertainty=16)
+    >>> r.n, r.seed, sorted(r.bands["P_W"])
+    (16, 0, ['n', 'p5', 'p50', 'p95'])
+    """
+    if uncertainty is None:
+        return _steady.steady_state(scene, tol_K=tol_K, load=load, prepared=prepared)
+    if load is not None:
+        raise InputError("load", "LoadDistribution", "injected loads hold one bearing: not with uncertainty (its "
+                         "geometry is sampled)")
+    return steady_uncertainty(scene, uncertainty, seed=seed, method=method, groups=groups, sensitivity=sensitivity,
+                              tol_K=tol_K, prepared=prepared)
+
+
+def transient(scene: Scene, t_end_s: float, *, uncertainty: int | None = None, seed=0, method: str = "lhs",
+              groups: int | None = None, sensitivity: str = "src", schedule=None, T0_C=None, t_eval=None,
+              rtol: float = 1e-5, atol: float = 1e-3, load=None, stop=None, prepared=None):
+    """Heat-up of a scene (:func:`thermobear.coupled.transient.transient`); with ``uncertainty=N`` its
+    bands over N samples of the estimated inputs (:func:`transient_uncertainty`; one operating point:
+    no schedule, no injected loads).
+
+    Returns a :class:`~thermobear.coupled.transient.TransientRun`, or with ``uncertainty`` an
+    :class:`UncertaintyResult` whose ``nominal`` is the heat-up and whose bands run over ``t_s``.
+    """
+    if uncertainty is None:
+        return _transient.transient(scene, t_end_s, schedule=schedule, T0_C=T0_C, t_eval=t_eval, rtol=rtol, atol=atol,
+                                    load=load, stop=stop, prepared=prepared)
+    if schedule or load is not None:
+        raise InputError("schedule" if schedule else "load", "given", "a heat-up with uncertainty runs one operating "
+                         "point: no schedule, no injected loads")
+    return transient_uncertainty(scene, t_end_s, uncertainty, t_eval=t_eval, seed=seed, method=method, groups=groups,
+                                 sensitivity=sensitivity, T0_C=T0_C, rtol=rtol, atol=atol, stop=stop)
