@@ -60,7 +60,7 @@ from thermobear.schema import Uncertainty, check_value
 from thermobear.thermal import solve_transient
 
 __all__ = ["Input", "UncertaintyResult", "uncertain_inputs", "design", "sample_scenes", "steady_uncertainty",
-           "transient_uncertainty", "steady_state", "transient", "METHODS"]
+           "transient_uncertainty", "steady_state", "transient", "steady_outputs", "METHODS"]
 
 METHODS = ("lhs", "sobol")
 _GROUPS = 8
@@ -210,10 +210,12 @@ def sample_scenes(scene: Scene, n: int, *, seed=None, method: str = "lhs", group
                   inputs=None, prepared=None) -> Samples:
     """``n`` sampled operating points of a scene: every uncertain input drawn (module docstring).
 
-    ``inputs``: the inputs to sample (default :func:`uncertain_inputs`); ``groups``: the number of
-    bearing-geometry families (default min(n, 8); 1 with no bearing input)."""
+    ``inputs``: the inputs to sample (default :func:`uncertain_inputs`; given ones may narrow, widen
+    or reshape the data's ranges, each at an address the data ranges, with its kind of draw);
+    ``groups``: the number of bearing-geometry families (default min(n, 8); 1 with no bearing input)."""
     n = _count(n, "uncertainty.n")
-    ins = list(uncertain_inputs(scene, prepared) if inputs is None else inputs)
+    data = uncertain_inputs(scene, prepared)
+    ins = list(data if inputs is None else _checked(inputs, data))
     pts = [k for k, i in enumerate(ins) if i.level == "point"]
     fams = [k for k, i in enumerate(ins) if i.level == "family"]
     G = 1 if not fams else min(n, _GROUPS if groups is None else _count(groups, "uncertainty.groups"))
@@ -230,6 +232,21 @@ def sample_scenes(scene: Scene, n: int, *, seed=None, method: str = "lhs", group
         brgs = [_bearing_at(scene, [ins[k] for k in fams], Xg[g]) for g in range(G)]
     scenes = [_scene_at(scene, ins, pts, X[i], brgs[group[i]]) for i in range(n)]
     return Samples(scenes=scenes, inputs=ins, X=X, group=group, seed=seed, method=method, groups=G)
+
+
+def _checked(inputs, data) -> list:
+    """Given inputs, each at an address the scene's data range, with the data's kind of draw (the
+    solver moves a value by its data entry: factor, offset or value)."""
+    known = {i.address: i for i in data}
+    for i in inputs:
+        d = known.get(i.address)
+        if d is None:
+            raise InputError("uncertainty.inputs", i.address, "no estimated value with a range at this address; the "
+                             f"scene has: {', '.join(known)}")
+        if d.uncertainty.kind != i.uncertainty.kind or d.level != i.level:
+            raise InputError(f"uncertainty.inputs.{i.address}", i.uncertainty.kind, f"its data draws a "
+                             f"{d.uncertainty.kind} ({d.level} level): give the same kind")
+    return list(inputs)
 
 
 def _bearing_at(scene: Scene, ins, draws):
@@ -348,7 +365,7 @@ def _fail(exc) -> dict:
     return {"error": type(exc).__name__, "message": str(exc)}
 
 
-def _outputs_steady(results) -> dict:
+def steady_outputs(results) -> dict:
     """Output name → (n,) values of the samples' SteadyStates (NaN for a failed sample)."""
     ok = [r for r in results if isinstance(r, SteadyState)]
     if not ok:
@@ -400,14 +417,27 @@ def steady_uncertainty(scene: Scene, n: int, *, seed=None, method: str = "lhs", 
     results: list = list(sm.scenes)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OutsideValidity)    # the samples' validity is the nominal's question
-        for k, r in zip(runnable, steady_states([sm.scenes[k] for k in runnable], tol_K=tol_K, prepared=prepared)):
+        for k, r in zip(runnable, _solve_split([sm.scenes[k] for k in runnable], tol_K, prepared)):
             results[k] = r
     failed = {k: _fail(r) for k, r in enumerate(results) if isinstance(r, Exception)}
-    outputs = _outputs_steady(results)
+    outputs = steady_outputs(results)
     return UncertaintyResult(nominal=nominal, inputs=sm.inputs, X=sm.X, outputs=outputs, bands=bands(outputs),
                              sensitivity=ranking(sm.inputs, sm.X, outputs, sensitivity), failed=failed, n=sm.X.shape[0],
                              seed=seed, method=method, groups=sm.groups, sensitivity_method=sensitivity, group=sm.group,
                              focus=_focus(scene, nominal.T_C))
+
+
+def _solve_split(scenes, tol_K, prepared) -> list:
+    """:func:`steady_states` of the samples; a drawn value the network refuses (e.g. a conductance
+    drawn negative) stops its whole batch, so a refused batch is halved until that sample stands alone
+    with its InputError."""
+    try:
+        return steady_states(scenes, tol_K=tol_K, prepared=prepared)
+    except InputError as exc:
+        if len(scenes) == 1:
+            return [exc]
+    h = len(scenes) // 2
+    return _solve_split(scenes[:h], tol_K, prepared) + _solve_split(scenes[h:], tol_K, prepared)
 
 
 def _samples(scene, n, seed, method, groups, inputs, prepared, sensitivity) -> Samples:
