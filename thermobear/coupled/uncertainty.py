@@ -16,6 +16,9 @@ address                   where the range lives                        how it va
 ``bearing.<key>``         the bearing catalogue (or [bearing] table)   per **family** (see below)
 ========================  ===========================================  =====================
 
+Ranges the thermal solution does not read are not sampled: a rig's inertia (``rig.J_kg_m2``, the
+spin-down's), a bearing's load ratings (``C0_kN``, ``C_kN``: life and static safety).
+
 The samples are a Latin hypercube (default) or a scrambled Sobol' sequence of
 :mod:`scipy.stats.qmc`, seeded: the same seed gives the same draws.  Each draw u ∈ (0, 1) becomes a
 value by its input's distribution (:meth:`~thermobear.schema.Uncertainty.quantile`).  The sampled
@@ -28,7 +31,8 @@ The bearing's internal geometry (ball diameter, osculations, number of balls, cl
 within a family: the loads, contact ellipses and kinematics are solved for one bearing.  Its inputs
 are drawn at ``groups`` levels (a Latin hypercube of their own, default 8 groups), and every sample is
 assigned to one group by a further balanced column of the design: the samples form ``groups``
-families of about n / groups points each.
+families of about n / groups points each.  Their sensitivities rest on those ``groups`` distinct
+geometries (more groups resolve them better, at one load solve and one network template per group).
 
 A sample whose solve fails (no equilibrium, thermal runaway, an input the models refuse) is counted
 with its error's name (:attr:`UncertaintyResult.failed`), never dropped silently; the bands are those
@@ -75,6 +79,7 @@ _SCENE_KEYS = {
     "lubricant.mu_full_film": ("mu_full_film", 1.0, "mu_full_film"),
     "thermal.T_ambient_C": ("T_ambient_C", 1.0, "T_ambient_C"),
 }
+_RATINGS = ("C0_kN", "C_kN")
 #: bearing table key → (BallBearing attribute, scale to the key's unit)
 _BEARING_KEYS = {"D_mm": ("D", 1e3), "dm_mm": ("dm", 1e3), "Pd_mm": ("Pd", 1e3), "Z": ("Z", 1.0), "fi": ("fi", 1.0),
                  "fo": ("fo", 1.0), "C0_kN": ("C0", 1e-3), "C_kN": ("C", 1e-3), "bore_mm": ("bore", 1e3),
@@ -142,7 +147,7 @@ def uncertain_inputs(scene: Scene, prepared=None) -> list:
     >>> import thermobear as tb
     >>> ins = uncertain_inputs(tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml")))
     >>> ins[0].address, ins[-1].address, ins[-1].level
-    ('lubricant.Rq_ball_um', 'bearing.C0_kN', 'family')
+    ('lubricant.Rq_ball_um', 'bearing.fo', 'family')
     """
     out = []
     for addr, u in scene.uncertainty.items():
@@ -160,6 +165,8 @@ def uncertain_inputs(scene: Scene, prepared=None) -> list:
             out.append(Input(addr, u, _nominal_draw(u, _network_nominal(template, addr))))
     brg = scene.bearing
     for key, u in brg.uncertainty.items():
+        if key in _RATINGS:
+            continue                        # load ratings: read by the life and safety checks, not by the solve
         attr, scale = _BEARING_KEYS.get(key, (None, 1.0))
         v = getattr(brg, attr) if attr else None
         out.append(Input(f"bearing.{key}", u, _nominal_draw(u, None if v is None else v * scale), level="family"))
@@ -452,12 +459,26 @@ def _samples(scene, n, seed, method, groups, inputs, prepared, sensitivity) -> S
 
 
 # --------------------------------------------------------------------------- heat-up
+def _pointwise_transient(scenes, t_end_s, t_eval, T0_C, rtol, atol, stop):
+    """The heat-ups of sampled points one by one (:func:`thermobear.coupled.transient.transient`, whose
+    one-point family applies the draws): for the film load model, whose loads follow the film
+    temperature along the run.  (node → (B, n_t) °C, report)."""
+    runs = [_transient.transient(sc, t_end_s, t_eval=t_eval, T0_C=T0_C, rtol=rtol, atol=atol, stop=stop)
+            for sc in scenes]
+    if not all(r.completed for r in runs):
+        raise SolverError("the heat-up was stopped before its end")
+    T = {n: np.array([np.interp(t_eval, r.t_s, r.T_C[n]) for r in runs]) for n in runs[0].T_C}
+    rep = {"P_W": np.array([np.interp(t_eval, r.t_s, r.P_W) for r in runs])}
+    rep.update({f"P_{k}": np.array([np.interp(t_eval, r.t_s, r.breakdown_W[k]) for r in runs])
+                for k in runs[0].breakdown_W})
+    return T, rep
+
+
 def _family_transient(scenes, t_end_s, t_eval, T0_C, rtol, atol, stop):
     """One batched heat-up of sampled points of one family: (node → (B, n_t) °C, report) or an exception."""
     models, _ = plan(scenes[0])
     if models["load_model"][0] == "film":
-        raise InputError("models.load_model", "film", "the heat-up with uncertainty holds one load distribution per "
-                         "family: the film load model re-solves its loads along the run (not batched yet)")
+        return _pointwise_transient(scenes, t_end_s, t_eval, T0_C, rtol, atol, stop)
     fam = Family(scenes=tuple(scenes), index=tuple(range(len(scenes))), models=models, dry=(None,) * len(scenes))
     pre = prepared_for(scenes[0])
     contacts = family_contacts(fam, family_loads(fam))
@@ -476,7 +497,8 @@ def transient_uncertainty(scene: Scene, t_end_s: float, n: int, *, t_eval=None, 
                           atol: float = 1e-3, stop=None, inputs=None, nominal=None) -> UncertaintyResult:
     """The heat-up of a scene over ``n`` samples of its uncertain inputs: each family of samples (one
     per bearing-geometry group) integrated as one batched system (:func:`thermobear.thermal.solve_transient`,
-    block-diagonal Jacobian), bands over the output times.
+    block-diagonal Jacobian), bands over the output times.  A family on the film load model (its loads
+    follow the film temperature along the run) is integrated point by point.
 
     ``t_eval`` [s] the output times (default 50 points over [0, t_end_s]); the other parameters as
     :func:`steady_uncertainty` and :func:`thermobear.coupled.transient.transient` (no schedule: one
