@@ -257,3 +257,14 @@ def test_cli_run_uncertainty_json_and_table(capsys):
     out = capsys.readouterr().out
     assert "p95" in out and "Failed samples: 0 of 8" in out and "Inputs ranked for P_W" in out
     assert main(["run", SEED004, "--uncertainty", "0"]) == 2
+
+
+def test_cli_compare_shows_the_measured_points_against_the_band(capsys):
+    logs = tb.example_path("seed004_oil_jet_7210.toml").rsplit("/", 1)[0] + "/logs/"
+    assert main(["compare", logs + "synthetic_heatup_scene.toml", logs + "synthetic_heatup_7210.csv",
+                 "--uncertainty", "8", "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    b = d["bands"]["T_bearing_C"]
+    assert len(b["p5"]) == len(d["x"]) and all(lo <= hi for lo, hi in zip(b["p5"], b["p95"]))
+    k, m = d["inside_band"]["T_bearing_C"]
+    assert 0 <= k <= m == len(d["x"]) and d["uncertainty"]["n"] == 8

@@ -55,7 +55,6 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from thermobear.coupled import solve, transient
-from thermobear.coupled.uncertainty import steady_uncertainty, transient_uncertainty
 from thermobear.errors import InputError, NoConvergence
 from thermobear.losses.skf import skf_constants
 from thermobear.scene import Scene
@@ -64,7 +63,7 @@ from thermobear.scene.network import network_spec
 
 __all__ = ["RigLog", "read_log", "channel_map", "metrics", "simulate_log", "compare", "Comparison",
            "calibrate", "Calibration", "network_nodes", "parameter_names",
-           "parse_map", "SPECIAL_TARGETS", "log_bands"]
+           "parse_map", "SPECIAL_TARGETS"]
 
 SPECIAL_TARGETS = ("input", "ignore")
 IMPOSE = "impose:"
@@ -405,9 +404,8 @@ class Comparison:
     simulated : dict      channel → simulated array
     metrics : dict        channel → :func:`metrics` dict
     mapping : dict        channel → node
-    bands : dict          with ``uncertainty``: channel → dict(p5, p50, p95) arrays over x (the
-                          model's 5–95 % band over the estimated inputs, :func:`log_bands`)
-    inside : dict         channel → measured points inside [p5, p95] and their number
+    bands, inside         channel → the model's band over the estimated inputs, dict(p5, p50, p95) over x,
+                          and (measured points inside it, their number) (:mod:`thermobear.app.bands`)
     uncertainty : dict    the sample design and failed samples of the bands
     """
 
@@ -423,11 +421,9 @@ class Comparison:
     uncertainty: dict = field(default_factory=dict)
 
     def as_dict(self) -> dict:
-        d = {"kind": self.kind, "log": self.log.path, "mapping": self.mapping, "metrics": self.metrics,
-             "x": self.x, "measured": self.measured, "simulated": self.simulated}
-        if self.bands:
-            d.update(bands=self.bands, inside_band=self.inside, uncertainty=self.uncertainty)
-        return d
+        return {"kind": self.kind, "log": self.log.path, "mapping": self.mapping, "metrics": self.metrics,
+                "x": self.x, "measured": self.measured, "simulated": self.simulated,
+                **({"bands": self.bands, "inside_band": self.inside, "uncertainty": self.uncertainty} if self.bands else {})}
 
     def summary(self) -> str:
         unit = {"torque_Nm": "N m"}
@@ -450,48 +446,14 @@ class Comparison:
         if self.bands:
             u = self.uncertainty
             lines += ["", f"Model band over the estimated inputs ({u['n']} samples, seed {u['seed']}, {u['failed']} "
-                          "failed): measured points inside the 5-95 % band"]
-            for ch, (k, m) in self.inside.items():
-                lines.append(f"  {ch:14s} {k:4d} of {m:4d}")
+                      "failed): measured points inside the 5-95 % band"] + [
+                f"  {ch:14s} {k:4d} of {m:4d}" for ch, (k, m) in self.inside.items()]
         return "\n".join(lines)
 
 
-def log_bands(scene: Scene, log: RigLog, mapping: dict, n: int, *, T0_C=None, seed=0, method: str = "lhs",
-              groups: int | None = None):
-    """The model's 5/50/95 % band of every mapped temperature channel over ``n`` samples of the
-    estimated inputs (:mod:`thermobear.coupled.uncertainty`): a transient log by the sampled heat-up
-    at the log's times (one operating point: no speed steps), a steady log (or a quasi-steady one with
-    imposed channels) row by row.  Returns (channel → dict(p5, p50, p95) over the rows, design dict)."""
-    quasi = any(nd.startswith(IMPOSE) for nd in mapping.values())
-    chans = {ch: nd for ch, nd in mapping.items() if not _special(nd)}
-    if log.kind == "transient" and not quasi:
-        steps, n0 = _schedule_from_log(log)
-        if steps:
-            raise InputError("--uncertainty", n, "bands of a transient log need one operating point (this log "
-                             "steps its speed)")
-        sc = scene.with_(n_rpm=n0) if n0 is not None else scene
-        r = transient_uncertainty(sc, float(log.t_s[-1]), n, t_eval=log.t_s, T0_C=T0_C, seed=seed, method=method,
-                                  groups=groups)
-        out = {ch: {q: r.bands[f"T_C.{nd}"][q] for q in ("p5", "p50", "p95")} for ch, nd in chans.items()}
-        return out, {"n": n, "seed": seed, "method": method, "failed": len(r.failed), "by_error": r.failed_count}
-    out = {ch: {q: np.full(log.n_rows, np.nan) for q in ("p5", "p50", "p95")} for ch in chans}
-    failed, by = 0, {}
-    for i in range(log.n_rows):
-        r = steady_uncertainty(_row_scene(scene, log, i, mapping), n, seed=seed, method=method, groups=groups)
-        failed += len(r.failed)
-        for k, v in r.failed_count.items():
-            by[k] = by.get(k, 0) + v
-        for ch, nd in chans.items():
-            for q in ("p5", "p50", "p95"):
-                out[ch][q][i] = r.bands[f"T_C.{nd}"][q] if f"T_C.{nd}" in r.bands else np.nan
-    return out, {"n": n, "seed": seed, "method": method, "failed": failed, "by_error": by}
-
-
-def compare(scene: Scene, log: RigLog, mapping: dict, *, T0_C=None, uncertainty: int | None = None, seed=0,
-            method: str = "lhs", groups: int | None = None) -> Comparison:
-    """Simulate a rig log and measure the agreement of every mapped channel (and torque); with
-    ``uncertainty=N`` also the model's band over N samples of the estimated inputs (:func:`log_bands`)
-    and how many measured points lie inside it."""
+def compare(scene: Scene, log: RigLog, mapping: dict, *, T0_C=None) -> Comparison:
+    """Simulate a rig log and measure the agreement of every mapped channel (and torque) (the model's
+    band over the estimated inputs: :func:`thermobear.app.bands.compare_bands`)."""
     sim = simulate_log(scene, log, mapping, T0_C=T0_C)
     x = log.t_s if log.kind == "transient" else log["n_rpm"]
     meas, simd, met = {}, {}, {}
@@ -506,16 +468,8 @@ def compare(scene: Scene, log: RigLog, mapping: dict, *, T0_C=None, uncertainty:
     if not met:
         raise InputError(f"{Path(log.path).name}", None, "nothing to compare: no mapped temperature channel "
                          "and no torque_Nm column")
-    comp = Comparison(kind=log.kind, x=np.asarray(x, float), measured=meas, simulated=simd, metrics=met,
+    return Comparison(kind=log.kind, x=np.asarray(x, float), measured=meas, simulated=simd, metrics=met,
                       mapping=mapping, log=log)
-    if uncertainty is not None:
-        comp.bands, comp.uncertainty = log_bands(scene, log, mapping, uncertainty, T0_C=T0_C, seed=seed,
-                                                 method=method, groups=groups)
-        for ch, b in comp.bands.items():
-            m = np.asarray(meas[ch], float)
-            ok = np.isfinite(m) & np.isfinite(b["p5"])
-            comp.inside[ch] = (int(np.sum(ok & (m >= b["p5"]) & (m <= b["p95"]))), int(ok.sum()))
-    return comp
 
 
 # --------------------------------------------------------------------------- calibration

@@ -16,6 +16,7 @@ import numpy as np
 
 from thermobear.app.output import (Progress, RowWriter, check_out_dir, check_out_file, csv_text, flatten,
                                    print_json, write_text, wrote)
+from thermobear.app.bands import compare_bands
 from thermobear.app.rig import calibrate, channel_map, compare, parse_map, read_log
 from thermobear.app.spindown import spin_down_runs
 from thermobear.app.sweep import run_sweep, sweep_points
@@ -455,8 +456,9 @@ def cmd_compare(args):
     T0 = _T0(args.T0_C)
     kw = _uncertainty_kw(args)
     scene, log, mapping = _rig_inputs(args)
-    comp = compare(scene, log, mapping, T0_C=T0, uncertainty=args.uncertainty,
-                   **{k: v for k, v in kw.items() if k != "sensitivity"})
+    comp = compare(scene, log, mapping, T0_C=T0)
+    if args.uncertainty is not None:
+        compare_bands(comp, scene, args.uncertainty, T0_C=T0, **{k: v for k, v in kw.items() if k != "sensitivity"})
     if out_csv:
         chans = list(comp.measured)
         q = ("_p5", "_p95")

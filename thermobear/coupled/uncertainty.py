@@ -414,8 +414,8 @@ def steady_uncertainty(scene: Scene, n: int, *, seed=None, method: str = "lhs", 
 
     >>> import thermobear as tb
     >>> r = steady_uncertainty(tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml")), 16, seed=1)
-    >>> b = r.bands["T_C.inner_ring"]
-    >>> bool(b["p5"] < r.nominal.T_C["inner_ring"] < b["p95"]), len(r.failed)
+    >>> b = r.bands["T_C.balls"]
+    >>> bool(b["p5"] < r.nominal.T_C["balls"] < b["p95"]), len(r.failed)
     (True, 0)
     """
     nominal = nominal if nominal is not None else _steady.steady_state(scene, tol_K=tol_K, prepared=prepared)

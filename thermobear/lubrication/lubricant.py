@@ -574,9 +574,7 @@ class Lubricant:
 
     def _const(self, v, T, T_C):
         """A constant property ``v`` shaped like the temperatures."""
-        if type(T) is float:
-            return v
-        return _out(np.broadcast_to(v, np.broadcast_shapes(np.shape(T), np.shape(v))).astype(float), T_C)
+        return v if type(T) is float else _out(np.broadcast_to(v, np.broadcast_shapes(np.shape(T), np.shape(v))) * 1.0, T_C)
 
     def alpha_p_at(self, T_C):
         """Pressure–viscosity coefficient [1/Pa] at T_C [°C].
