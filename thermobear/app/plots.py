@@ -340,8 +340,8 @@ def plot_bands(unc, outdir, title: str = "") -> list:
 
     Steady state: one interval per node (5–95 % bar, median tick, nominal dot), and the power with
     its breakdown (``bands_T.png``, ``bands_P.png``).  Heat-up: shaded 5–95 % bands over time around
-    the nominal heat-up of each node whose temperature changes, and of the power (``bands_heatup.png``,
-    ``bands_P_heatup.png``)."""
+    the nominal heat-up of the rig's measured nodes (``unc.focus``) and the balls, mixture and housing,
+    and of the power (``bands_heatup.png``, ``bands_P_heatup.png``)."""
     d = Path(outdir)
     d.mkdir(parents=True, exist_ok=True)
     Tk = [k for k in unc.bands if k.startswith("T_C.")]
@@ -349,7 +349,8 @@ def plot_bands(unc, outdir, title: str = "") -> list:
     nom = unc.nominal
     if unc.t_s is not None:
         t = np.asarray(unc.t_s, float)
-        free = [k for k in Tk if np.ptp(np.asarray(unc.bands[k]["p95"], float)) > 0]
+        shown = tuple(unc.focus) + ("balls", "oil_air", "housing", "bearing")   # the rig's nodes and the loss nodes
+        free = [k for k in Tk if k[4:] in shown and np.ptp(np.asarray(unc.bands[k]["p95"], float)) > 0]
         sim = {k[4:]: np.interp(t, nom.t_s, nom.T_C[k[4:]]) for k in free}
         paths = [plot_heatup(t, sim, d / "bands_heatup.png", title=title,
                              bands={k[4:]: (unc.bands[k]["p5"], unc.bands[k]["p95"]) for k in free})]

@@ -484,8 +484,8 @@ def _family_transient(scenes, t_end_s, t_eval, T0_C, rtol, atol, stop):
     contacts = family_contacts(fam, family_loads(fam))
     pm = PointModel(family=fam, network=family_network(fam, pre.template, contacts),
                     source=loss_sources(fam, contacts), coupling=Coupling.of(pre.template))
-    tr = solve_transient(pm.network, heat_sources(pm), t_end_s, T0_C=scenes[0].T_ambient_C if T0_C is None else T0_C,
-                         t_eval=t_eval, rtol=rtol, atol=atol, stop=stop)
+    T0 = np.array([s.T_ambient_C for s in scenes]) if T0_C is None else T0_C    # each sample from its own ambient
+    tr = solve_transient(pm.network, heat_sources(pm), t_end_s, T0_C=T0, t_eval=t_eval, rtol=rtol, atol=atol, stop=stop)
     if not tr.completed:
         raise SolverError("the heat-up was stopped before its end")
     two = (lambda v: np.asarray(v, float).reshape(len(tr.t), -1).T)  # noqa: E731   (n_t[, B]) → (B, n_t)
