@@ -57,7 +57,7 @@ def test_every_estimated_number_has_a_range():
     for name in tb.lubricant_names():
         lub = tb.lubricant(name)
         missing += [f"lubricants/{name}.{k}" for k in lub.estimated if k not in lub.uncertainty]
-    for name in ("6210", "7210", "51107", "51205"):
+    for name in ("6210", "7210", "51107", "51205", *tb.bearing_names()):
         b = tb.bearing(name)
         missing += [f"bearings[{name}].{k}" for k in b.estimated if k not in b.uncertainty]
     for net in ("oil_jet_ball_bearing", "grease_thrust_four_ball", "one_node"):
