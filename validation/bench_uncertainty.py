@@ -3,19 +3,26 @@
 ``tb.steady_state(scene, uncertainty=1000)`` on examples/seed004_oil_jet_7210.toml: the nominal
 steady state, 1 000 Latin-hypercube samples of its 45 estimated inputs (scene, network, material and
 bearing geometry in 8 families), solved by the batched steady solver, then the bands and the ranking.
-Timed on one core (the process pinned to one CPU while it runs, where the OS allows it), median of
-``repeat`` runs after one warm-up run; the stages (sampling, solving, statistics) are timed apart on
-one run.  Never asserted in tests.
+Timed on one core: a child process with single-threaded BLAS (``OPENBLAS_NUM_THREADS=1`` … set before
+numpy loads — BLAS threads sharing one pinned core slow the least-squares ranking tenfold) pinned to one
+CPU where the OS allows it; median of ``repeat`` runs after one warm-up run; the stages (sampling,
+solving, statistics) are timed apart on one run.  Never asserted in tests.
 
 Run:  python validation/bench_uncertainty.py [N]      (``bench(n)`` returns the numbers as a dict)
 """
 from __future__ import annotations
 
+import json
 import os
+import subprocess
 import sys
 import time
 from contextlib import contextmanager
 from pathlib import Path
+
+if __name__ == "__main__":                  # the timing child: one BLAS thread, set before numpy loads
+    for _v in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+        os.environ[_v] = "1"
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from _common import median_time  # noqa: E402
@@ -62,7 +69,16 @@ def _stages(scene, n) -> dict:
 
 
 def bench(n: int = 1000, repeat: int = 3) -> dict:
-    """Time ``tb.steady_state(seed-004 scene, uncertainty=n)``; returns the numbers (seconds)."""
+    """Time ``tb.steady_state(seed-004 scene, uncertainty=n)`` in a one-core child process (module
+    docstring); returns the numbers (seconds)."""
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1", MKL_NUM_THREADS="1")
+    r = subprocess.run([sys.executable, str(Path(__file__).resolve()), str(n), str(repeat), "--json"], env=env,
+                       capture_output=True, text=True, check=True)
+    return json.loads(r.stdout)
+
+
+def _bench_here(n: int, repeat: int) -> dict:
+    """The timing itself, in this process."""
     scene = tb.load_scene(tb.example_path(SCENE))
     with one_core() as cpu:
         holder = {}
@@ -88,5 +104,6 @@ def report(d: dict) -> str:
 
 
 if __name__ == "__main__":
-    n = int(sys.argv[1]) if len(sys.argv) > 1 else 1000
-    print(report(bench(n)))
+    args = [a for a in sys.argv[1:] if a != "--json"]
+    d = _bench_here(int(args[0]) if args else 1000, int(args[1]) if len(args) > 1 else 3)
+    print(json.dumps(d) if "--json" in sys.argv else report(d))
