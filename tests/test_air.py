@@ -26,7 +26,7 @@ def test_range():
 
 
 def test_shipped_table_is_coolprop_at_every_node():
-    """materials/air_1atm.toml (written by thermobear.lubrication.air.write_table from CoolProp 8.0.0) against the installed
+    """materials/air_1atm.toml (written by validation/air_table.py from CoolProp 8.0.0) against the installed
     CoolProp: equal with 8.0.0; another release may move the air model slightly, so 1e-4 — beyond that the
     table is stale and must be regenerated."""
     from thermobear.files import data_dir, read_toml
@@ -35,6 +35,17 @@ def test_shipped_table_is_coolprop_at_every_node():
     assert T[0] == 200.0 and T[-1] == 600.0 and np.all(np.diff(T) == 1.0) and d["p_Pa"] == 101325.0
     for key, code in (("rho_kg_m3", "D"), ("mu_Pa_s", "V"), ("k_W_mK", "L"), ("cp_J_kgK", "C")):
         np.testing.assert_allclose(d[key], PropsSI(code, "T", T, "P", 101325.0, "Air"), rtol=1e-4)
+
+
+def test_shipped_spline_pieces_are_scipys_not_a_knot_spline():
+    """The pieces the module evaluates are scipy's CubicSpline through the shipped values (to round-off)."""
+    from scipy.interpolate import CubicSpline
+    from thermobear.files import data_dir, read_toml
+    d = read_toml(str(data_dir("materials") / "air_1atm.toml"))
+    T = np.asarray(d["T_K"], float)
+    for key in ("rho_kg_m3", "mu_Pa_s", "k_W_mK", "cp_J_kgK"):
+        np.testing.assert_allclose(np.asarray(d["spline_" + key]).reshape(-1, 4), CubicSpline(T, d[key]).c.T,
+                                   rtol=1e-12, atol=1e-15 * np.max(d[key]))
 
 
 def test_a_steady_state_does_not_import_coolprop():
@@ -48,13 +59,15 @@ def test_a_steady_state_does_not_import_coolprop():
     assert out == ["False", "True"]
 
 
-@pytest.mark.parametrize("broken", [{"T_K": [200.0]}, "short", "nan"])
+@pytest.mark.parametrize("broken", [{"T_K": [200.0]}, "short", "nan", "pieces"])
 def test_a_broken_table_is_a_named_input_error(monkeypatch, broken):
     import thermobear.files as data
     import thermobear.lubrication.air as air
     good = data.read_toml(str(data.data_dir("materials") / "air_1atm.toml"))
     if broken == "short":
         bad = {**good, "k_W_mK": good["k_W_mK"][:-1]}
+    elif broken == "pieces":                       # pieces that miss the tabulated values
+        bad = {**good, "spline_rho_kg_m3": [1.0] * len(good["spline_rho_kg_m3"])}
     elif broken == "nan":
         bad = {**good, "cp_J_kgK": [float("nan")] * len(good["cp_J_kgK"])}
     else:

@@ -166,7 +166,6 @@ def test_transient_refuses_prescribed_temperature(capsys):
 
 # ------------------------------------------------------------------ sweep
 def test_sweep_csv(capsys, tmp_path):
-    pytest.importorskip("thermobear.app.sweep")          # helper G's engine (issue 6)
     out_csv = tmp_path / "sw.csv"
     code, _, err = run(capsys, "sweep", SEED000, "--n-rpm", "100:300:3", "--T-C", "23.5,40", "--csv", out_csv,
                        "--processes", 1)

@@ -13,7 +13,7 @@ Z, D, DM, ALPHA = 15, 12.7e-3, 70e-3, np.radians(40.0)
 
 
 def omega_cage(n_rpm):
-    """Outer ring fixed: ω_c = ω_i (1 − γ)/2, γ = D cos α / dm (PHYSICS.md §4)."""
+    """Outer ring fixed: ω_c = ω_i (1 − γ)/2, γ = D cos α / dm (Harris 2001 eq 8.20)."""
     return n_rpm * np.pi / 30 * (1 - D / DM * np.cos(ALPHA)) / 2
 
 

@@ -1,7 +1,7 @@
 """Film thickness, Moes/NVM, regime and Λ.
 
-References: PHYSICS.md §5 (209 example, Moes boundaries — "computed here"
-regression values), seed 000 Table 1 (h_min, Λ), seed 004 §3.2 (regimes of the
+References: Hamrock & Dowson 1977 with their 209 bearing example inputs (values computed here: regression
+values), Nijenbanning, Venner & Moes 1994 (NVM, the Moes boundaries), seed 000 Table 1 (h_min, Λ), seed 004 §3.2 (regimes of the
 7210 ACBB and 6210 DGBB).  Independent hand computations use the math module.
 """
 import math
@@ -17,7 +17,7 @@ from thermobear.lubrication.film import (composite_roughness, film_thickness, fi
                              specific_film_thickness)
 from thermobear.lubrication.lubricant import lubricant
 
-# 209 deep groove example (PHYSICS.md §1, §5.1): Q_max 4527 N, u_e 6.25 m/s
+# 209 deep groove example (Harris 2001 ch. 2 geometry; Hamrock & Dowson's inputs): Q_max 4527 N, u_e 6.25 m/s
 E209 = 228e9
 ETA209, ALPHA209, U209, Q209 = 0.04, 2.3e-8, 6.25, 4527.0
 RXI, RXO, RY209 = 5.109e-3, 7.591e-3, 165.1e-3
@@ -86,7 +86,7 @@ def test_nvm_209_inner_contact():
     assert hc * 1e6 == pytest.approx(0.92, abs=0.006)
     assert film_thickness(Q209, RXI, RY209, U209, ETA209, ALPHA209, E209, kind="central",
                           method="nvm") == hc
-    # NVM exceeds Hamrock–Dowson by 20-35 % for narrow ellipses (PHYSICS §5.2)
+    # NVM exceeds Hamrock–Dowson for narrow ellipses: 0.92 vs 0.69 µm at the 209 inner contact
     hd = film_thickness(Q209, RXI, RY209, U209, ETA209, ALPHA209, E209, kind="central")
     assert 1.2 < hc / hd < 1.35
 
@@ -174,7 +174,7 @@ def _eq15_by_hand(n, eta):
 
 @pytest.mark.parametrize("i", range(4))
 def test_seed000_table1_hmin_and_lambda(i):
-    """Seed 000 Table 1 against eq 15, with η = 0.089 Pa s (PHYSICS §0).
+    """Seed 000 Table 1 against eq 15, with η = 0.089 Pa s (the viscosity its printed FR imply: validation/report/seed000_table1.md, E5).
 
     Eq 15 is reproduced exactly by the labelled variant and within 1.3 % by
     Hamrock–Dowson.  The table's h_min column is 14-20 % ABOVE eq 15, while its

@@ -92,7 +92,7 @@ def test_steady_state_settles_the_film_temperature(scene, high_speed):
 def test_long_transient_ends_at_the_film_steady_state(scene):
     """The transient re-solves the film loads piece by piece (film temperature drifting ≈ 2 K per
     piece); run long enough it reaches the steady state of the same model."""
-    s = scene.with_(n_rpm=3200.0, Fr=325.0)
+    s = scene.with_(n_rpm=3200.0, Fr=325.0, models={"load_model": "film", "high_speed": True})   # one model
     tr = tb.transient(s, t_end_s=30000.0, t_eval=[0.0, 1000.0, 30000.0])
     st = steady_state(s)
     assert tr.T_C["inner_ring"][-1] == pytest.approx(st.T_C["inner_ring"], abs=0.05)

@@ -30,14 +30,20 @@ def free(scene):
     return steady_state(scene)
 
 
-def test_imposing_the_free_solution_reproduces_it(scene, free):
+@pytest.mark.parametrize("models", [{"high_speed": True, "load_model": "jones_harris"}, {}])
+def test_imposing_the_free_solution_reproduces_it(scene, models):
     """The free steady state is also the solution when its own ring temperatures are imposed:
-    same balls, mixture and power (one fixed point, two ways of reaching it)."""
+    same balls, mixture and power (one fixed point, two ways of reaching it).  With one model to the
+    solver's tolerance; the shipped scene lies in a switch band (three alternatives blended): the
+    blend of solutions is the solution of no single model, to within 1e-3 K here."""
+    sc = scene.with_(models=models) if models else scene
+    free = steady_state(sc)
     fixed = {"inner_ring": free.T_C["inner_ring"], "outer_ring": free.T_C["outer_ring"]}
-    st = steady_state(scene.with_(T_fixed_C=fixed))
+    st = steady_state(sc.with_(T_fixed_C=fixed))
+    tol = 1e-4 if models else 1e-3
     for node in ("balls", "oil_air", "inner_race", "outer_race"):
-        assert st.T_C[node] == pytest.approx(free.T_C[node], abs=1e-4)
-    assert st.P_W == pytest.approx(free.P_W, rel=1e-6)
+        assert st.T_C[node] == pytest.approx(free.T_C[node], abs=tol)
+    assert st.P_W == pytest.approx(free.P_W, rel=1e-6 if models else 1e-4)
 
 
 def test_imposed_nodes_hold_and_energy_closes(scene):
@@ -138,7 +144,15 @@ _COOL_3200 = pytest.mark.xfail(strict=True, raises=AssertionError, reason=(
     "bound reaches 52 °C (seed004_heatup_sensitivity.md): needs a logged heat-up of the rig"))
 
 
-@pytest.mark.parametrize("n, ref", [pytest.param(3200.0, 55.0, marks=_COOL_3200), (8070.0, 90.0)])
+_COOL_8070 = pytest.mark.xfail(strict=True, raises=AssertionError, reason=(
+    "known gap (issue 4) at 8070 rpm too since issue 17: inlet shear heating (Gupta φ_T) and oil-jet "
+    "replenishment (SKF Φ_rs) lower the high-speed losses — which brings seed 004's measured P(6500)/P(3200) "
+    "≈ 3 within reach (validation/report/seed002_local_diagnosis.md) — and the same cool network then gives "
+    "65 °C against ≈ 90 °C (rise 38 % low; it was 29 % low with the isothermal, flooded films)"))
+
+
+@pytest.mark.parametrize("n, ref", [pytest.param(3200.0, 55.0, marks=_COOL_3200),
+                                    pytest.param(8070.0, 90.0, marks=_COOL_8070)])
 def test_inner_ring_heat_up_of_the_right_order(scene, n, ref):
     """Seed 004 §5.3.1, Fig. 8: inner ring ≈ 55 °C at 3200 rpm and ≈ 90 °C at 8070 rpm after 1000 s
     (oil 10 L/h at 30 °C); 'of the right order' read as within 30 % of the rise above ambient."""
@@ -177,7 +191,7 @@ def test_radial_load_effect_of_the_dry_load_model_is_moderate_and_falls(scene):
     """The dry contact law forced (rings imposed at 50 °C): more radial load concentrates the load on
     fewer balls; the inner contacts it opens lose nothing, so the power falls, by less than 15 %."""
     P = [steady_state(scene.with_(n_rpm=4800.0, Fr=Fr, T_fixed_C={"inner_ring": 50.0, "outer_ring": 50.0},
-                                  models={"load_model": "jones_harris"})).P_W
+                                  models={"load_model": "jones_harris", "high_speed": True})).P_W
          for Fr in (25.0, 325.0, 750.0)]
     assert np.all(np.diff(P) < 0) and (P[0] - P[-1]) / P[0] < 0.15, P
 

@@ -16,7 +16,7 @@ def make(**kw):
 
 
 def test_209_radii_match_physics_reference():
-    # PHYSICS.md §1: 209 bearing, D 12.7, f 0.52, dm 64.9985 mm: Rx,i 5.109, Rx,o 7.591, Ry 165.1 mm
+    # 209 bearing (Harris 2001 ch. 2), D 12.7, f 0.52, dm 64.9985 mm: Rx,i 5.109, Rx,o 7.591, Ry 165.1 mm
     b = make(D=12.7e-3, dm=64.9985e-3, Z=9, fi=0.52, fo=0.52, Pd=15e-6)
     assert b.gamma(0.0) == pytest.approx(0.1954, abs=1e-4)
     assert b.Rx_i(0.0) == pytest.approx(5.109e-3, rel=2e-4)
@@ -110,3 +110,8 @@ def test_an_edited_material_file_is_read_again(tmp_path, monkeypatch):
         assert mats.material("aisi-52100").E == 1.5e11 != E0
     finally:
         mats._solids_dir.cache_clear()
+
+
+def test_a_bore_that_leaves_no_ring_wall_is_refused():
+    with pytest.raises(InputError, match="bore"):
+        tb.bearing("6210").with_(bore=69e-3)

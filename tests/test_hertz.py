@@ -1,5 +1,7 @@
 """Hertz point contact: exact solution against published/tabulated values and the
 approximations' error over Ry/Rx = 1…50 (issue 2 acceptance)."""
+import warnings
+
 import numpy as np
 import pytest
 from scipy.special import ellipe, ellipk
@@ -21,7 +23,7 @@ def test_circular_contact_is_classical_hertz():
 
 
 def test_exact_matches_harris_209_table():
-    # PHYSICS.md §2.3, exact solution of the 209 bearing at Q = 4527 N (independent script)
+    # exact solution (Hertz 1881; Harris 2001 ch. 6) of the 209 bearing at Q = 4527 N (independent script)
     inner = hertz(4527.0, 5.109e-3, 165.1e-3, 228e9)
     outer = hertz(4527.0, 7.591e-3, 165.1e-3, 228e9)
     assert inner.kappa == pytest.approx(9.285, abs=2e-3)
@@ -81,7 +83,7 @@ APPROX_TOL = {  # max |relative error| over Ry/Rx = 1…50: measured maxima (pri
 
 
 def test_hamrock_brewe_within_1_5_percent_in_ball_bearing_range():
-    # PHYSICS.md §2.3: within about 1.5 % for ball–race contacts (Ry/Rx ≈ 8–40); measured max 1.52 %
+    # Hamrock & Brewe 1983: within about 1.5 % for ball–race contacts (Ry/Rx ≈ 8–40); measured max 1.52 %
     ratio = np.linspace(8, 40, 30)
     ex = hertz(500.0, 5e-3, 5e-3 * ratio, 2.31e11)
     ap = hertz(500.0, 5e-3, 5e-3 * ratio, 2.31e11, method="hamrock_brewe")
@@ -108,7 +110,7 @@ def test_approximation_error_table(method, capsys):
 
 
 def test_houpert_close_at_seed000_contact():
-    # PHYSICS.md §2.3: seed 000 contact (k = 17.7): Houpert a within 0.4 %, b within 1.3 %
+    # Houpert's a, b (seed 000 eqs 9–10) at seed 000's contact (k = 17.7): a within 0.4 %, b within 1.3 %
     Rx = 7.938e-3 / 2
     Ry = 0.53 * 7.938e-3 / (2 * 0.53 - 1)
     ex, ho = hertz(1.42, Rx, Ry, 2.3e11), hertz(1.42, Rx, Ry, 2.3e11, method="houpert")
@@ -130,3 +132,32 @@ def test_bad_input(kw):
 def test_unknown_method():
     with pytest.raises(InputError, match="method"):
         hertz(1.0, 1e-3, 1e-2, 2e11, method="magic")
+
+
+def test_nearly_circular_contact_takes_the_leading_order_ellipticity():
+    # Ry/Rx − 1 = 2e-8: F(ρ) cancels 0/0 in floating point; κ = (Ry/Rx)^(2/3) to O((Ry/Rx − 1)²)
+    c = hertz(10.0, 5e-3, 5.0000001e-3, 2.3e11)
+    assert c.kappa == pytest.approx(1.0 + (2 / 3) * 2e-8, abs=1e-12)
+
+
+def test_a_contact_beyond_its_radii_or_the_float_range_is_refused_by_name():
+    # hertz(100, 1e-300, 1e-2, 228e9) returned a = inf (with overflow warnings)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        with pytest.raises(InputError, match=r"^Rx, Ry = 1e\+298 — the larger over the smaller radius must be <= 1e\+10"):
+            hertz(100.0, 1e-300, 1e-2, 228e9)
+        with pytest.raises(InputError, match=r"Hertz contact size / radius of curvature must lie in \[0, 1\]"):
+            hertz(58605.0, 0.015625, 0.0078125, 1e9)            # a soft, heavily loaded contact: a > Ry
+        with pytest.raises(InputError, match="Hertz contact size"):
+            hertz(1.7e308, 1e-30, 1e-30, 1.7e308)               # beyond the float range
+        with pytest.raises(InputError, match=r"^Q, Rx, Ry, E_prime = 'shapes \(4,\), \(3,\), \(\), \(\)' — must broadcast"):
+            hertz(np.ones(4), np.full(3, 1e-3), 1e-2, 2e11)
+
+
+def test_a_vanishing_load_gives_a_vanishing_contact_not_zero_times_infinity():
+    # a = c Q^(1/3): a subnormal load keeps the ellipse's shape and a finite pressure
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        tiny, one = hertz(5e-324, 1e-3, 1e-2, 2e11), hertz(1.0, 1e-3, 1e-2, 2e11)
+    assert tiny.a / one.a == pytest.approx(np.cbrt(5e-324), rel=1e-12)
+    assert tiny.p_max / one.p_max == pytest.approx(np.cbrt(5e-324), rel=1e-12) and tiny.p_max > 0

@@ -23,7 +23,7 @@ def test_alpha_zero_reduces_to_textbook():
 
 
 def test_equal_angles_beta_equal_alpha_identity():
-    # PHYSICS.md §4: with αi = αo = β = α, ω_m = ω(1 − γ)/2 and ω_R = −(dm/2D)(1 − γ²) ω
+    # Harris 2001 ch. 8: with αi = αo = β = α, ω_m = ω(1 − γ)/2 and ω_R = −(dm/2D)(1 − γ²) ω
     a = np.deg2rad(40.0)
     g = D * np.cos(a) / DM
     k = ball_kinematics(500.0, 0.0, a, a, D, DM, beta=a)
@@ -67,6 +67,12 @@ def test_seed000_table1_speeds():
 def test_bad_control():
     with pytest.raises(InputError, match="control"):
         ball_kinematics(1.0, 0.0, 0.0, 0.0, D, DM, control="cage")
+
+
+def test_radial_control_at_zero_contact_angle_is_refused():
+    # a radial ball axis at α = 0 is normal to both contacts: no rolling solution
+    with pytest.raises(InputError, match="control"):
+        ball_kinematics(500.0, 0.0, 0.0, 0.0, D, DM, control="radial")
 
 
 def test_caged_ball_without_inner_load_rolls_on_the_outer_race():

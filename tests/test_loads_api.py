@@ -1,5 +1,7 @@
 """The entry point thermobear.loads.load_distribution: the form it chooses, equal to the form's own
 function, the film law, mixed batches and loud input errors."""
+import warnings
+
 import numpy as np
 import pytest
 
@@ -82,3 +84,36 @@ def test_bad_input(kw, field):
     with pytest.raises(InputError) as e:
         load_distribution(B, 450.0, 325.0, **kw)
     assert e.value.field == field
+
+
+def test_loads_no_set_of_balls_can_carry_are_refused_before_solving():
+    # load_distribution(7210, Fa=1e5, Fr=1e6) returned ball loads of 300 kN at contact angles of 170°
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        with pytest.raises(InputError, match=r"^Fr = 1000000.0 — maximum contact pressure 6\d{3} MPa must lie in "
+                                             r"\[0, 5292\] \[MPa\] \(at least: the load shared by all 15 balls"):
+            load_distribution(B, Fa=1e5, Fr=1e6)
+        with pytest.raises(InputError, match="^Fa = 1e\\+30 — maximum contact pressure"):
+            load_distribution(B, Fa=1e30)                       # solved before, through overflows
+        with pytest.raises(InputError, match="^M = 1.7e\\+308 — maximum contact pressure inf MPa"):
+            load_distribution(B, 450.0, 325.0, M=1.7e308)
+
+
+def test_a_contact_ellipse_past_its_groove_equator_is_refused_naming_the_loads():
+    with pytest.raises(InputError, match=r"^Fa, Fr, M = 'Fa 61379.7 N, Fr 0 N, M 0.182 N m' — contact angle \+ half the "
+                                         r"contact ellipse, from the groove bottom 95.\d+ deg must be <= 90 \[deg\] "
+                                         r"\(inner contacts\)"):
+        load_distribution(bearing("7302B"), 61379.7, 0.0, 0.182)
+
+
+def test_sub_physical_loads_and_speeds_are_refused_and_zero_is_not():
+    with pytest.raises(InputError, match=r"^Fa = 1e-09 — load .* must be >= 1e-06 \[N\]"):
+        load_distribution(B, Fa=1e-9)
+    with pytest.raises(InputError, match=r"^n_rpm = 1e-09 — speed, when not 0 must be >= 1e-06 \[rpm\]"):
+        load_distribution(B, 450.0, 325.0, n_rpm=1e-9)
+    assert load_distribution(bearing("6210"), Fa=0.0, Fr=1e-6).Q_i.max() == pytest.approx(1e-6, rel=1e-6)
+
+
+def test_inputs_that_do_not_broadcast_are_refused_by_name():
+    with pytest.raises(InputError, match=r"^Fa, Fr, M, n_rpm = 'shapes \(2,\), \(3,\), \(\), \(\)' — must broadcast"):
+        load_distribution(B, [450.0, 500.0], [100.0, 200.0, 300.0])

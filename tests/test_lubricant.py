@@ -74,11 +74,11 @@ def test_viscosity_density_alpha_fall_with_temperature():
         if lub.gold_s is not None:   # Gold: alpha(100)/alpha(40) = (nu100/nu40)^t exactly
             ratio = lub.alpha_p_at(100.0) / lub.alpha_p_at(40.0)
             assert ratio == pytest.approx((lub.nu100_cSt / lub.nu40_cSt) ** lub.gold_t, rel=1e-12)
-            assert 0.5 < ratio < 0.85   # PHYSICS §6 says "roughly 30-50 %" drop; Gold gives 20-31 % here
+            assert 0.5 < ratio < 0.85   # α_p falls with ν: Gold et al. 2001 give a 20-31 % drop here
 
 
 def test_mol_liton_00_base_oil_at_23_5C_honest_value():
-    """PHYSICS.md §0: η ≈ 0.089 Pa s at 23-24 °C reproduces seed 000 Table 1.
+    """η ≈ 0.089 Pa s at 23-24 °C reproduces seed 000 Table 1 (its printed FR imply 0.087-0.090 Pa s: validation/report/seed000_table1.md, E5).
 
     Our ν100 = 6.185 cSt is the VI-100 mineral-oil estimate, not a fit; it gives
     η(23.5 °C) = 0.0808 Pa s, 9 % below 0.089.  Documented in the data file.
@@ -145,7 +145,7 @@ def test_density_api_form():
     h = 1e-3
     slope = (density_api(rho15, 15 + h) - density_api(rho15, 15 - h)) / (2 * h)
     assert slope == pytest.approx(-0.34878 * 1.8, rel=1e-6)
-    # expansion coefficient inside PHYSICS §6's 6.5-7.5e-4 1/K for mineral oils
+    # expansion coefficient inside the 6.5-7.5e-4 1/K of mineral oils (API MPMS ch. 11.1, lubricating oils)
     assert 6.5e-4 < -slope / rho15 < 7.5e-4
     assert lubricant("seed004-mineral").rho(15.0) == pytest.approx(864.6)
 
@@ -158,7 +158,7 @@ def test_cragoe_hand_computation_in_imperial_units():
     cp_imp = (0.388 + 0.00045 * t_F) / math.sqrt(d)   # Btu/(lb °F)
     assert cragoe_k_th(864.6, T_C) == pytest.approx(k_imp * 0.1442279, rel=1e-5)
     assert cragoe_cp(864.6, T_C) == pytest.approx(cp_imp * 4186.8, rel=1e-5)
-    # PHYSICS §8: mineral oil cp 1.9-2.1 kJ/kg K
+    # mineral oil cp 1.9-2.1 kJ/kg K at 50 °C (Cragoe 1929)
     assert 1900 < lubricant("seed004-mineral").cp(50.0) < 2100
 
 

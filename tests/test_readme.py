@@ -1,15 +1,19 @@
-"""The README's Python example runs as written (from the repository root, as the README shows it)."""
+"""The README says what the code does: its Python example runs as written (from the repository root, as
+the README shows it), its table of limits is thermobear.validity.LIMITS, its exit codes the command line's."""
 from __future__ import annotations
 
 import re
 from pathlib import Path
 
+from thermobear.app.cli import EXIT_BAD_INPUT, EXIT_INTERRUPTED, EXIT_SOLVER
+from thermobear.validity import limits_table
+
 ROOT = Path(__file__).resolve().parents[1]
+README = (ROOT / "README.md").read_text(encoding="utf-8")
 
 
 def test_readme_python_example_runs(monkeypatch):
-    text = (ROOT / "README.md").read_text(encoding="utf-8")
-    blocks = re.findall(r"```python\n(.*?)```", text, re.S)
+    blocks = re.findall(r"```python\n(.*?)```", README, re.S)
     assert blocks, "README has no python example"
     monkeypatch.chdir(ROOT)                       # its paths are relative to the repository root
     ns: dict = {}
@@ -20,3 +24,16 @@ def test_readme_python_example_runs(monkeypatch):
     assert ns["rig"].T_C["inner_ring"] == 52.0                      # imposed ring temperatures hold
     assert tb.choose_models(ns["lifted"])["load_model"][0] == "film"
     assert ns["dry"].models_used["load_model"][0] == "jones_harris"
+
+
+def test_readme_table_of_limits_is_the_limits_the_code_checks():
+    got = re.search(r"<!-- limits: [^\n]*-->\n(.*?)\n<!-- /limits -->", README, re.S)
+    assert got, "README has no generated table of limits"
+    assert got.group(1) == limits_table(), ("the README's table of limits differs from thermobear.validity.LIMITS: "
+                                           "paste thermobear.validity.limits_table() between the markers")
+
+
+def test_readme_exit_codes_are_the_command_lines():
+    section = README.split("## Command line: exit codes", 1)[1].split("\n## ", 1)[0]
+    codes = [int(c) for c in re.findall(r"^\| (\d+) \|", section, re.M)]
+    assert codes == sorted({0, 1, EXIT_BAD_INPUT, EXIT_SOLVER, EXIT_INTERRUPTED})

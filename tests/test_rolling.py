@@ -13,6 +13,7 @@ from scipy.integrate import quad
 
 from thermobear.errors import InputError
 from thermobear.losses import rolling as R
+from thermobear.lubrication.film import lubrication_regime
 
 E = 2.3e11
 D = 7.938e-3
@@ -20,7 +21,7 @@ RX = D / 2                                  # thrust race: flat in the rolling d
 RY = 0.53 * D / (2 * 0.53 - 1)              # 70.12 mm
 K_RATIO = RY / RX                           # 17.67 = 2f/(2f-1), seed 000 eq 12
 Q = 1.42
-ETA = 0.089                                 # PHYSICS.md §0: reproduces seed 000 Table 1
+ETA = 0.089                                 # reproduces seed 000 Table 1 (validation/report/seed000_table1.md, E5)
 DM = 0.036
 
 
@@ -94,7 +95,7 @@ def test_houpert_ehl_hand_with_given_semi_axes():
     hand = 0.674 * kap**-0.043 * (2 * a / RX) * G**0.022 * (kap * W) ** 0.133 * U2**0.656 * E * RX**2
     got = R.rolling_force_houpert_ehl(Q, RX, RY, u, ETA, E, ap, a=a, b=b)
     assert got == pytest.approx(hand, rel=1e-12)
-    # exact Hertz semi-axes (default) within ~1.5 % of Houpert's approximation (PHYSICS.md §2.3)
+    # exact Hertz semi-axes (default) within ~1.5 % of Houpert's approximation (seed 000 eqs 9–10)
     assert R.rolling_force_houpert_ehl(Q, RX, RY, u, ETA, E, ap) == pytest.approx(hand, rel=0.015)
     with pytest.raises(InputError, match="alpha_p"):
         R.rolling_force(Q, RX, RY, u, ETA, E, model="houpert_ehl")
@@ -222,9 +223,8 @@ def test_auto_regime_jumps_are_quantified():
     Seed 000 contact, u = 0.0942 m/s, η 0.089, α_p 2.5e-8: F drops by ~47 % entering
     PVR (c_Bib ≈ 0.5 there) and by ~16 % entering EHL (values in the seed 001 report).
     """
-    film = pytest.importorskip("thermobear.lubrication.film")
     q = np.logspace(-4, 4, 20001)
-    reg = film.lubrication_regime(q, RX, RY, 0.0942, ETA, 2.5e-8, E).code
+    reg = lubrication_regime(q, RX, RY, 0.0942, ETA, 2.5e-8, E).code
     f = R.rolling_force(q, RX, RY, 0.0942, ETA, E, model="auto", alpha_p=2.5e-8)
     edges = np.nonzero(reg[1:] != reg[:-1])[0]
     jumps = {f"{reg[i]}->{reg[i + 1]}": f[i + 1] / f[i] for i in edges}
@@ -262,9 +262,8 @@ def test_prepared_contacts_at_several_viscosities_equal_the_module_functions():
 
 
 def test_smooth_selection_equals_the_sharp_one_away_from_boundaries_and_is_continuous():
-    film = pytest.importorskip("thermobear.lubrication.film")
     q = np.logspace(-4, 4, 4001)
-    reg = film.lubrication_regime(q, RX, RY, 0.0942, ETA, 2.5e-8, E)
+    reg = lubrication_regime(q, RX, RY, 0.0942, ETA, 2.5e-8, E)
     smooth = R.rolling_force(q, RX, RY, 0.0942, ETA, E, model="auto_smooth", alpha_p=2.5e-8, regime=reg)
     sharp = R.rolling_force(q, RX, RY, 0.0942, ETA, E, model="auto", alpha_p=2.5e-8, regime=reg)
     far = np.minimum.reduce([np.abs(reg.ln_iso_over_piezo), np.abs(reg.ln_RI_over_EI) + (reg.ln_iso_over_piezo < 0) * 9,

@@ -14,6 +14,7 @@ from thermobear.scene.scene import load_scene, scene_from_dict
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = sorted((ROOT / "examples").glob("*.toml")) + sorted((ROOT / "examples" / "logs").glob("*.toml"))
+S004 = load_scene(ROOT / "examples" / "seed004_oil_jet_7210.toml")
 
 
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.name)
@@ -244,3 +245,21 @@ def test_a_rig_map_to_an_unknown_node_is_refused_when_the_scene_is_read():
     d["rig"] = {"map": {"T_IR_C": "inner_rng"}}
     with pytest.raises(InputError, match="rig.map.T_IR_C = 'inner_rng' — unknown node"):
         scene_from_dict(d)
+
+
+
+@pytest.mark.parametrize("kw, field", [
+    (dict(M=float("nan")), "M"), (dict(oil_flow_L_h=-5.0), "oil_flow_L_h"), (dict(Fa="abc"), "Fa"),
+    (dict(bearing=42), "bearing"), (dict(models={"film": "x"}), "models.film"),
+    (dict(models={"kinematics": "cage"}), "models.kinematics"),
+    (dict(network_parameters={"x.G_W_K": "big"}), "thermal.parameters"),
+])
+def test_with_validates_like_a_scene_file(kw, field):
+    with pytest.raises(InputError) as e:
+        S004.with_(**kw)
+    assert field in str(e.value)
+
+
+def test_with_accepts_names_and_tables():
+    s = S004.with_(lubricant={"name": "seed002-mg1"}, bearing="7210")
+    assert s.lubricant.name == "seed002-mg1" and s.bearing.name == "7210"

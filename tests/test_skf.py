@@ -162,7 +162,7 @@ def test_skf_friction_with_catalog_bearing():
 # ------------------------------------------------------------------ bad input
 @pytest.mark.parametrize("kw, field", [
     (dict(nu_cSt=-1.0), "nu_cSt"), (dict(n_rpm=-5.0), "n_rpm"), (dict(Fa=-1.0), "Fa"),
-    (dict(Fr=10.0), "Fr"), (dict(lubrication="mist"), "lubrication"), (dict(lubrication="oil_bath"), "V_M"),
+    (dict(Fr=10.0), "Fr"), (dict(lubrication="mist"), "lubrication"), (dict(lubrication="oil_bath"), "oil_level_mm"),
     (dict(kind="roller"), "kind"), (dict(R1=None), "R1"), (dict(mu_bl=1.5), "mu_bl"),
 ])
 def test_bad_input_names_the_field(kw, field):

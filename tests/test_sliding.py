@@ -62,7 +62,7 @@ def test_pivoting_moment_k_form_vs_exact_ellipse_integral(k):
     MP/(μQa) = (3/2π) ∫ρ²√(1-ρ²)dρ ∫√(sin²θ + (b/a)²cos²θ)dθ = (3/2π)(π/16)·4E(1-b²/a²)
              = (3/8) E(1 - b²/a²); checked once more by direct 2-D quadrature at k = 4.22.
     """
-    c = hertz(1.0, 1.0, k, 1.0)
+    c = hertz(1e-6, 1.0, k, 1.0)          # a small contact: only its shape b/a is used
     a, b = float(c.a), float(c.b)
     exact = 3 / 8 * ellipe(1 - (b / a) ** 2)
     assert S.pivoting_moment(1.0, 1.0, 1.0, k) == pytest.approx(exact, rel=3e-3)

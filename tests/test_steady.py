@@ -36,7 +36,8 @@ def _picard_path(pm, T_limit_K=523.15):
     return solve_coupled(update, x0, method="picard", damping=0.7, tol_K=1e-9, max_iter=2000, T_limit_K=T_limit_K)
 
 
-@pytest.mark.parametrize("name,kw", [("seed004_oil_jet_7210.toml", {}),
+@pytest.mark.parametrize("name,kw", [("seed004_oil_jet_7210.toml", {"models": {"high_speed": True,
+                                                                               "load_model": "jones_harris"}}),
                                      ("seed004_oil_jet_7210.toml", {"n_rpm": 8070.0, "Fr": 750.0,
                                                                     "models": {"load_model": "jones_harris"}}),
                                      ("seed002_grease_thrust_51107.toml", {})])
@@ -72,7 +73,7 @@ def test_loss_slopes_are_those_of_one_temperature_at_a_time(kw):
 
 
 def test_transient_report_equals_the_losses_at_its_states():
-    s = _scene()
+    s = _scene(models={"high_speed": True, "load_model": "jones_harris"})      # one model: its point model
     tr = transient(s, 1800.0, t_eval=[0.0, 60.0, 600.0, 1800.0])
     pm = point_model(s)
     ro = tr.roles

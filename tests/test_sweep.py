@@ -113,12 +113,14 @@ def test_planned_dry_loads_equal_single_solves(seed004):
     scenes = [seed004.with_(n_rpm=n, Fr=Fr) for n in (1500.0, 2500.0, 5000.0, 8000.0) for Fr in (100.0, 325.0)]
     plans = plan_many(scenes)
     forms = set()
-    for sc, (models, dry) in zip(scenes, plans):
-        hs = models["high_speed"][0] == "yes"
-        forms.add(hs)
-        ref = dry_load(sc, hs)
-        for f in ("Q_i", "Q_o", "alpha_i", "alpha_o"):
-            assert np.allclose(getattr(dry, f), getattr(ref, f), rtol=1e-11, atol=1e-12 * 450.0), f
+    for sc, alts in zip(scenes, plans):
+        assert sum(a.weight for a in alts) == pytest.approx(1.0, rel=1e-14)
+        for a in alts:
+            hs = a.models["high_speed"][0] == "yes"
+            forms.add(hs)
+            ref = dry_load(sc, hs)
+            for f in ("Q_i", "Q_o", "alpha_i", "alpha_o"):
+                assert np.allclose(getattr(a.dry.load(), f), getattr(ref, f), rtol=1e-11, atol=1e-12 * 450.0), f
     assert forms == {True, False}                                   # both forms in the grid
 
 
@@ -127,7 +129,7 @@ def test_a_failing_load_batch_leaves_each_point_to_its_own_solve(seed004):
     around it, and the sweep reports the failure on that point only."""
     pts = [seed004.with_(Fa=Fa, n_rpm=n) for Fa in (0.0, 450.0) for n in (5000.0, 5500.0, 6000.0, 6500.0)]
     plans = plan_many(pts)
-    assert all(p[1] is not None for p in plans[4:])
+    assert all(a.dry is not None for p in plans[4:] for a in p)
     rows = run_sweep(seed004, {"Fa": [0.0, 450.0], "n_rpm": [5000.0, 6000.0]}, processes=1)
     assert [r["status"] for r in rows] == ["NoEquilibrium", "NoEquilibrium", "ok", "ok"]
     for r in rows[2:]:

@@ -26,7 +26,7 @@ C0 = 273.15
 
 @dataclass
 class StubBearing:
-    """Just the attributes a thermal network reads (SI), formulas of PHYSICS.md §1."""
+    """Just the attributes a thermal network reads (SI), formulas of Harris 2001 ch. 2."""
 
     D: float = 12.7e-3
     dm: float = 70e-3
@@ -62,7 +62,7 @@ class StubBearing:
 
 
 class StubOil:
-    """Mineral oil of seed 004 (ν40 36.6, ν100 7.8 cSt, ρ15 864.6) with Walther ν(T) (PHYSICS.md §6)."""
+    """Mineral oil of seed 004 (ν40 36.6, ν100 7.8 cSt, ρ15 864.6) with Walther ν(T) (ASTM D341)."""
 
     def __init__(self, nu40=36.6, nu100=7.8, rho15=864.6):
         ll = lambda nu: math.log10(math.log10(nu + 0.7))

@@ -168,7 +168,8 @@ def test_lubricant_draws_per_point_equal_one_lubricant_each():
     rho = [880.0, 905.0]
     res = tb.steady_states([s.with_(samples={"lubricant.rho15_kg_m3": v}) for v in rho])
     for v, r in zip(rho, res):
-        lub = tb.lubricant("seed002-mg1").per_point({"rho15_kg_m3": np.array([v])})
+        lub = tb.lubricant("seed002-mg1").per_point({"rho15_kg_m3": v})        # one number: a plain lubricant
+        assert lub.points is None
         alone = tb.steady_state(s.with_(lubricant=lub))
         assert r.P_W == pytest.approx(alone.P_W, rel=1e-9)
         assert r.T_C["balls"] == pytest.approx(alone.T_C["balls"], rel=1e-9)

@@ -48,17 +48,27 @@ def test_the_solvers_and_the_scene_share_the_speed_limit():
     # a scene refuses 1e6 rpm on a 7210 (n dm = 7e7 mm/min), as every solver entry point does
     with pytest.raises(InputError, match="speed n·dm"):
         S004.with_(n_rpm=1e6)
+    with pytest.raises(InputError, match=r"^n_rpm = 1000000.0 — speed n·dm 7e\+07 mm/min must lie in \[0, 4e\+06\]"):
+        tb.bearing_losses(S004.bearing, S004.lubricant, 450.0, 325.0, n_rpm=1e6, T_C=50.0)
+    with pytest.raises(InputError, match=r"^n_rpm = 1000000.0 — speed n·dm"):
+        tb.load_distribution(S004.bearing, 450.0, 325.0, n_rpm=1e6)
     with pytest.warns(OutsideValidity, match="speed n·dm"):
         st = tb.steady_state(S004.with_(n_rpm=16000.0))          # 1.1e6: computed, but outside the validated
     assert any(w.quantity == "n_dm" for w in st.warnings)
 
 
 def test_a_load_the_contacts_cannot_carry_is_refused_naming_the_loads():
-    with pytest.raises(InputError) as e:
+    # far beyond (even shared by all balls): refused before any solve, naming the scene's key
+    with pytest.raises(InputError, match=r"^operation\.Fa_N = 1000000.0 — maximum contact pressure \d+ MPa must lie "
+                                         r"in \[0, 5292\] \[MPa\]"):
         tb.steady_state(S004.with_(Fa=1e6))
-    assert "operation (Fa_N, Fr_N, M_Nm)" in str(e.value) and "Fa 1e+06 N" in str(e.value)
-    with pytest.raises(InputError, match="twice the ISO 76"):
+    with pytest.raises(InputError, match=r"^Fa = 1000000.0 — .*twice the rated contact load"):
         tb.solve(S004.with_(Fa=1e6, T_C=50.0))
+    # beyond at the most loaded ball only: refused on the solved contacts, naming the loads
+    with pytest.raises(InputError) as e:
+        tb.solve(S004.with_(Fa=5000.0, Fr=70000.0, T_C=50.0))
+    assert str(e.value).startswith("operation (Fa_N, Fr_N, M_Nm) = 'Fa 5000 N, Fr 70000 N (7210)' — maximum contact "
+                                   "pressure 5464 MPa must lie in [0, 5292] [MPa] (inner contacts)")
 
 
 def test_osculation_outside_its_range_is_refused():

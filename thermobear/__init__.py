@@ -25,6 +25,7 @@ from thermobear.models import choose_models, open_contacts  # noqa: F401
 from thermobear.coupled import (solve, steady_state, steady_states, transient, scene_losses, prepare,  # noqa: F401
                                 Prepared, RunResult, SteadyState, TransientRun, UncertaintyResult)
 from thermobear.app.sweep import run_sweep  # noqa: F401
-from thermobear.app.rig import read_log, compare, calibrate, RigLog  # noqa: F401
+from thermobear.app.rig import read_log, compare, RigLog  # noqa: F401
+from thermobear.app.calibration import calibrate  # noqa: F401
 
 __version__ = "0.1.0"

@@ -10,20 +10,23 @@ Two levels, for every quantity below:
   which the solvers collect into their results (``warnings``) and the command line prints one line
   each.
 
-========================  ==============  =====================  ====================  ==========
-quantity                  unit            refused beyond          warned beyond         source
-========================  ==============  =====================  ====================  ==========
-osculation f_i, f_o       –               outside (0.5, 2]        outside [0.505, 1.4]  [1]
-speed n·d_m               mm/min          > 4.0e6                 > 1.0e6               [2], [3]
-max. contact pressure     MPa             > 5 290                 > 4 200               [4], [5]
-contact angle + ellipse   °               beyond 90°              –                     [1]
-Hertz ellipse / radius    –               b/R_x or a/R_y > 1      > 0.2                 [6]
-lubricant temperature     °C              outside [−40, 250]      outside [−20, 150]    [7]
-static safety s0          –               (by the pressure)       < 1                   [4]
-SKF Φ_bl                  –               –                       > 0.5                 [8]
-========================  ==============  =====================  ====================  ==========
+The limits (the README's table is :func:`limits_table`, with the reasoning and source of each):
 
-Reasoning per limit is in :data:`LIMITS`.
+>>> print(limits_table(sources=False))
+| quantity | unit | refused | warned |
+|---|---|---|---|
+| osculation | – | outside (0.5, 2] | outside [0.505, 1.4] |
+| speed n·dm | mm/min | outside [0, 4e+06] | > 1e+06 |
+| maximum contact pressure | MPa | outside [0, 5292] | > 4200 |
+| contact angle + half the contact ellipse, from the groove bottom | deg | > 90 | – |
+| Hertz contact size / radius of curvature | – | outside [0, 1] | > 0.2 |
+| lubricant temperature | °C | outside [-40, 250] | outside [-20, 150] |
+| static safety s0 | – | – | < 1 |
+| load (Fa, Fr or M/ℜ_i), when not 0 | N | < 1e-06 | – |
+| speed, when not 0 | rpm | < 1e-06 | – |
+| SKF weighting factor Φ_bl | – | – | > 0.5 |
+
+Reasoning per limit is in :data:`LIMITS`; the sources are [1]_–[8]_.
 
 References
 ----------
@@ -70,8 +73,8 @@ import numpy as np
 
 from thermobear.errors import InputError, OutsideValidity
 
-__all__ = ["Limit", "LIMITS", "check", "collect", "P_MAX_REFUSE_PA", "P_MAX_WARN_PA", "T_LUBRICANT_REFUSE_C",
-           "T_LUBRICANT_WARN_C", "warning_lines"]
+__all__ = ["Limit", "LIMITS", "check", "collect", "limits_table", "P_MAX_REFUSE_PA", "P_MAX_WARN_PA",
+           "T_LUBRICANT_REFUSE_C", "T_LUBRICANT_WARN_C", "warning_lines"]
 
 
 @dataclass(frozen=True)
@@ -122,9 +125,10 @@ LIMITS = {
                "load, 4200·2^(1/3) MPa, where the permanent deformation (Palmgren 1959, ∝ Q²) is 4× "
                "ISO 76's and Hertz's elastic contact no longer holds"),
     "contact_angle": Limit(
-        "contact angle + half the contact ellipse", "deg", (None, math.pi / 2), (None, None), scale=180 / math.pi,
-        source="the contact must stay on the race side of the groove (Harris 2001 ch. 2): beyond 90° the "
-               "ellipse passes the groove's equator, over any shoulder"),
+        "contact angle + half the contact ellipse, from the groove bottom", "deg", (None, math.pi / 2), (None, None), scale=180 / math.pi,
+        source="the contact must stay on the race side of the groove (Harris 2001 ch. 2): beyond 90° from the "
+               "groove bottom (the radial plane; a thrust bearing's axis) the ellipse, a/(f D) wide on the groove "
+               "(Harris 2001 ch. 6), passes the groove's equator, over any shoulder"),
     "hertz_size": Limit(
         "Hertz contact size / radius of curvature", "-", (0.0, 1.0), (None, 0.2),
         source="Hertz's theory assumes contact dimensions small against the radii (Johnson 1985 §4.1)"),
@@ -135,10 +139,45 @@ LIMITS = {
     "s0": Limit(
         "static safety s0", "-", (None, None), (1.0, None),
         source="ISO 76:2006: s0 < 1 means permanent deformation above 1e-4 D (refused by the contact pressure)"),
+    "load": Limit(
+        "load (Fa, Fr or M/ℜ_i), when not 0", "N", (1e-6, None), (None, None),
+        source="below 1 µN the Hertz approach of a ball, (Q/K)^(2/3) with K ≈ 1e10 N/m^1.5, is below a tenth of "
+               "an atomic spacing, where continuum contact (Hertz; Johnson 1985 §4.2) has no meaning (0: unloaded)"),
+    "speed": Limit(
+        "speed, when not 0", "rpm", (1e-6, None), (None, None),
+        source="below 1e-6 rpm (one turn in 1.9 years) the bearing is at rest for every model here, and their "
+               "powers of the speed underflow the floating-point range (0: at rest)"),
     "skf_phi_bl": Limit(
         "SKF weighting factor Φ_bl", "-", (None, None), (None, 0.5),
         source="SKF 2004: mostly boundary lubrication, μ_bl an estimated constant"),
 }
+
+
+def _bound_text(lim: Limit, which: str) -> str:
+    """A limit's refused or warned values, as a reader of a table reads them."""
+    lo, hi = getattr(lim, which)
+    f = (lambda v: f"{v * lim.scale:.4g}")  # noqa: E731
+    open_lo = lim.lo_open and which == "refuse"
+    if lo is None and hi is None:
+        return "–"
+    if lo is not None and hi is not None:
+        return f"outside {'(' if open_lo else '['}{f(lo)}, {f(hi)}]"
+    if hi is not None:
+        return f"> {f(hi)}"
+    return f"{'<=' if open_lo else '<'} {f(lo)}"
+
+
+def limits_table(sources: bool = True) -> str:
+    """:data:`LIMITS` as a Markdown table: quantity, unit, refused and warned values (and the source).
+
+    The README's table of the limits is this table (tests/test_readme.py checks it).
+    """
+    cols = ["quantity", "unit", "refused", "warned"] + (["source"] if sources else [])
+    rows = ["| " + " | ".join(cols) + " |", "|" + "---|" * len(cols)]
+    for lim in LIMITS.values():
+        cells = [lim.quantity, "–" if lim.unit == "-" else lim.unit, _bound_text(lim, "refuse"), _bound_text(lim, "warn")]
+        rows.append("| " + " | ".join(cells + ([lim.source] if sources else [])) + " |")
+    return "\n".join(rows)
 
 
 def _minmax(value):
@@ -149,7 +188,7 @@ def _minmax(value):
         if a.size == 0:
             return None
         lo, hi = (float(a), float(a)) if a.ndim == 0 else (float(a.min()), float(a.max()))
-    if not (math.isfinite(lo) and math.isfinite(hi)):
+    if math.isnan(lo) or math.isnan(hi):
         return "nan"
     return lo, hi
 
@@ -167,7 +206,7 @@ def _show(value, scale):
 
 
 def check(name: str, value, field: str, *, what: str = "", category=OutsideValidity,
-          warn: bool = True) -> list:
+          warn: bool = True, given=None) -> list:
     """Check ``value`` (scalar or array, SI) against limit ``name`` of :data:`LIMITS`.
 
     Raises InputError(field, value, accepted range + source) when any element is outside the
@@ -182,12 +221,16 @@ def check(name: str, value, field: str, *, what: str = "", category=OutsideValid
     what : str          optional context for the message (e.g. "inner contact of ball 3")
     category : type     the warning class (an OutsideValidity subclass, e.g. ExtrapolationWarning)
     warn : bool         False: refuse only (e.g. while reading a scene; solvers warn when they run)
+    given : optional    the input as the user gave it, shown as the field's value when the quantity is
+                        computed from it (e.g. the loads whose contact pressure is refused); the
+                        quantity's offending value then goes into the message
     """
     lim = LIMITS[name]
     mm = _minmax(value)
     if mm is None:
         return []
-    if mm != "nan" and _inside(mm, lim.refuse, lim.lo_open) and (not warn or _inside(mm, lim.warn, False)):
+    finite = mm != "nan" and -math.inf < mm[0] and mm[1] < math.inf
+    if finite and _inside(mm, lim.refuse, lim.lo_open) and (not warn or _inside(mm, lim.warn, False)):
         return []                                      # the common case, without building messages
     shown = _show(value, lim.scale) if mm != "nan" else value
     ctx = f" ({what})" if what else ""
@@ -195,9 +238,16 @@ def check(name: str, value, field: str, *, what: str = "", category=OutsideValid
         raise InputError(field, shown, f"{lim.quantity} must be finite{ctx}")
     lo, hi = mm
     rlo, rhi = lim.refuse
-    if (rlo is not None and (lo < rlo or (lim.lo_open and lo <= rlo))) or (rhi is not None and hi > rhi):
-        raise InputError(field, shown, f"{lim.quantity} must lie in {lim.range_text('refuse')} [{lim.unit}]{ctx} "
+    below = rlo is not None and (lo < rlo or (lim.lo_open and lo <= rlo))
+    if below or (rhi is not None and hi > rhi):
+        quantity = lim.quantity
+        if given is not None:
+            shown, quantity = given, f"{lim.quantity} {(lo if below else hi) * lim.scale:.4g} {lim.unit}"
+        verb = "lie in" if rlo is not None and rhi is not None else "be"
+        raise InputError(field, shown, f"{quantity} must {verb} {lim.range_text('refuse')} [{lim.unit}]{ctx} "
                                        f"({lim.source})")
+    if not finite:                                     # infinite on a side without a bound
+        raise InputError(field, shown, f"{lim.quantity} must be finite{ctx}")
     wlo, whi = lim.warn
     out = []
     if not warn:

@@ -9,6 +9,9 @@ Cases, on the seed-004 scene (7210 ACBB, 15 balls, oil jet; contacts of
 * ``batch 1000``   bearing_losses over 1000 operating points (loads, Hertz, kinematics and losses), per point;
 * ``prepare 1000`` prepare_contacts over 1000 operating points, per point.
 
+Every case runs the scene's model choices (``choose_models``), including the film physics of
+issue 17 (Eyring traction, inlet shear heating, replenishment) where the tree has them.
+
 Run ``python validation/bench_losses.py`` for this tree's numbers, or with ``--against REV`` to time
 a git revision as well, in the same run (exported with ``git archive`` to a temporary directory;
 the two trees are timed in alternating fresh interpreters, best of ``--rounds``), and print the
@@ -72,6 +75,11 @@ def measure() -> dict:
     oil = s.lubricant
     kw = dict(supply=s.supply, oil_flow_m3_s=s.oil_flow, Rq_ball=s.Rq_ball, Rq_ring=s.Rq_ring,
               mu_boundary=s.mu_boundary, mu_full_film=s.mu_full_film, rolling_model=models["rolling"][0])
+    try:                                                  # the film choices (traction, inlet heating, replenishment)
+        from thermobear.models import film_options
+        kw.update(film_options(models))
+    except ImportError:                                   # a tree from before issue 17: constant μ, isothermal, flooded
+        pass
     old = hasattr(local, "_repeat_contacts")          # before the batched interface
     out = {}
     out["point"] = _best(lambda: evaluate_losses(cs, oil, 45.0, T_inner_C=60.0, T_outer_C=55.0, T_oil_C=45.0, **kw))

@@ -19,6 +19,13 @@ Levels (each a function of a scene and operating points; importable):
   centrifugal force and gyroscopic moment inside the load distribution), exact Hertz and per-ball
   stiffness.  Thrust bearings: per-ball Jones–Harris (the high-speed model is radial/angular only).
 
+The local levels L1–L4 run the film physics that :func:`thermobear.models.choose_models` picks for the
+scene (issue 17): the base oil's Eyring / limiting-shear-stress traction instead of a constant μ_e
+(:mod:`thermobear.losses.traction`; τ0 and τ_L/p by base-oil family from
+``materials/lubricant_traction.toml``), the inlet shear heating of Gupta et al. 1992
+(:mod:`thermobear.lubrication.thermal_film`) and SKF's replenishment factor Φ_rs on the rolling force
+(K_rs of the supply).  None of their parameters comes from the scored cases.
+
 Case families and references (all copied under ``validation/data``; the levels never see them):
 
 * ``seed001 torque`` — 12 spin-down torques T_exp = K* ω^n at the initial speed (seed 001 Tables 1–2),
@@ -66,8 +73,9 @@ LEVELS = ("L0", "L0-cal", "L1", "L2", "L3", "L4")
 LEVEL_INFO = {
     "L0": "SKF 2004, catalogue constants, μ_bl 0.15, μ_EHL by base oil, at a given T",
     "L0-cal": "SKF 2004, R1, S1 backed out of seed 002 MG1 @ 1000 rpm (held-out scoring)",
-    "L1": "local losses, nominal ball loads (axial share + Stribeck), Hamrock–Brewe Hertz, given T",
-    "L2": "local losses, Jones–Harris, Hamrock–Brewe Hertz, given T",
+    "L1": "local losses (film traction, inlet heating, replenishment as chosen), nominal ball loads (axial share "
+          "+ Stribeck), Hamrock–Brewe Hertz, given T",
+    "L2": "local losses (as L1), Jones–Harris, Hamrock–Brewe Hertz, given T",
     "L3": "L2 + thermal network (fixed point / heat-up)",
     "L4": "L3 + high-speed ball dynamics, exact Hertz, per-ball stiffness",
 }

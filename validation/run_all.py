@@ -29,7 +29,8 @@ import numpy as np
 HERE = Path(__file__).resolve().parent
 REPORT = HERE / "report"
 sys.path.insert(0, str(HERE))
-OWN = {"run_all.py", "fidelity.py", "stability.py", "bench_all.py"}
+OWN = {"run_all.py", "fidelity.py", "stability.py", "bench_all.py",
+       "air_table.py"}        # air_table.py regenerates a data file from CoolProp: run it by hand
 LEVEL_COLORS = {"L0": "#1f77b4", "L0-cal": "#17becf", "L1": "#ff7f0e", "L2": "#2ca02c", "L3": "#d62728",
                 "L4": "#9467bd"}
 FAMILY_MARKERS = {"seed001 torque": "o", "seed002 torque": "s", "seed002 temperature": "D",

@@ -191,7 +191,7 @@ def main():
       f"η(23.5 °C) = {eta:.4f} Pa s (ν40 = 40 cSt, VI 100 assumed for the unpublished ν100).  The η that "
       "reproduces each printed FR (diagnostic only, not used): " + ", ".join(f"{v:.4f}" for v in eta_impl) +
       " Pa s (FR is printed to 2 digits).  FR ∝ η^(2/3…3/4), so our FR and T_z sit "
-      f"{(m['FR'][3] / paper['FR'][3] - 1) * 100:+.0f} % from the table at 400 rpm; PHYSICS.md §0 quotes "
+      f"{(m['FR'][3] / paper['FR'][3] - 1) * 100:+.0f} % from the table at 400 rpm; the printed FR imply "
       "≈ 0.089 Pa s, which would need a lower-VI base oil (VI 60 gives 0.087).\n")
     # E6: MER
     w("**E6 — MER is +6 % above the printed 1.75e-7 N m** with eq 25 as printed "

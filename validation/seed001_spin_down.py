@@ -30,7 +30,7 @@ from thermobear.app.spindown import fit_from_stop, stop_time, total_angle
 
 HERE = Path(__file__).resolve().parent
 E_PRIME = 2.3e11          # seed 001 §2: E* ≈ 2.3e11 Pa for steel on steel
-R_TRACK = 0.018           # PHYSICS.md §0: pitch radius of the 51205
+R_TRACK = 0.018           # pitch radius of the 51205: dm 36 mm (seed 000 §3)
 GROOVE = 4.16e-3          # seed 001 §3.1
 SIGMA = math.hypot(0.06e-6, 0.03e-6)
 

@@ -91,7 +91,7 @@ def main() -> int:
           "close to the measured ones at 1000 rpm by construction; its temperature predictions test the network.",
           "* The local path predicts the powers from the contact model (no torque data used): its errors combine "
           "loss-model and network errors. It does not know grease-specific friction (seed 002's μ_EHD differ per grease) "
-          "nor starvation after run-in, which lowers grease-bearing losses (PHYSICS.md §6).",
+          "nor starvation after run-in, which lowers grease-bearing losses (seed 002 §5).",
           "* Ambient temperature, the machine temperature (taken as ambient), fan air speed and the housing geometry are not given by seed 002; one coefficient is "
           "calibrated, everything else in networks/grease_thrust_four_ball.toml stays at its a-priori estimate.", ""]
     write_report(OUT.name, L)

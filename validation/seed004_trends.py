@@ -60,8 +60,9 @@ def main() -> int:
     L += ["", f"Model: hydrodynamic rolling is the largest term ({rng('rolling')}), sliding {rng('sliding')} — the "
           f"paper's ordering — but drag is {rng('drag')} rather than ≈ 5 % and pivoting + hysteresis (not in seed "
           f"004's model) add {min(ph):.0f}–{max(ph):.0f} %. Drag uses Pouly's structure with Parker's oil fraction read as a fraction (the reading "
-          "that reproduces seed 004's +16 % drag for ×1.5 flow); with D = 12.7 mm estimated and A_c = πD²/4 "
-          "(no cage shielding; Pouly's A_c not recovered) it is likely overestimated. Reported, not tuned.", ""]
+          "that reproduces seed 004's +16 % drag for ×1.5 flow) of the flow through the bearing (β = 0.4 of the "
+          "injected flow, seed 004 §4.5); D = 12.7 mm is estimated and A_c = πD²/4 (Pouly's A_c not recovered): "
+          "seed004_drag.md. Reported, not tuned.", ""]
 
     # 2. regimes
     L += ["## 2. Lubrication regime per ball (seed 004 §3.2, Fig. 3)", ""]
@@ -92,7 +93,7 @@ def main() -> int:
     for j in order[::-1]:
         L.append(f"| {j} | {ci['Q'][j]:.1f} | {ci['regime'][j]} | {r.contacts['outer']['Q'][j]:.1f} | "
                  f"{r.contacts['outer']['regime'][j]} |")
-    L += ["", "The PVR→EHL boundary of this model (NVM dominant terms, PHYSICS.md §5.3) lies at a few hundred newtons "
+    L += ["", "The PVR→EHL boundary of this model (dominant terms of the Nijenbanning–Venner–Moes 1994 film formula) lies at a few hundred newtons "
           "for this contact, above the paper's ≈ 60 N; the paper's exact map criterion is not available.", ""]
 
     # 3. trends
@@ -175,8 +176,8 @@ def main() -> int:
         for Tsb in (25.0, 45.0, 65.0):
             t = transient(SCENE.with_(n_rpm=n, T_fixed_C={"support_block": Tsb}), 1000.0, t_eval=[1000.0])
             sens.append(f"{n:g} rpm, support block {Tsb:g} °C: {float(t.T_C['inner_ring'][-1]):.1f} °C")
-    # the 10x ambiguity of the mixture convection coefficient (PHYSICS.md sec. 8 item 4: Harris 0.0332 vs
-    # laminar flat-plate 0.332, the network's choice): does the other reading warm the inner ring?
+    # the 10x ambiguity of the mixture convection coefficient (Harris 2001 ch. 15: 0.0332, vs laminar
+    # flat-plate 0.332 of Bergman et al. 2011 eq 7.23, the network's choice): does the other reading warm the inner ring?
     import dataclasses
     import tempfile
     from thermobear.files import data_dir
@@ -239,7 +240,7 @@ def main() -> int:
           "oil-bath DGBBs and lip seals heat it and, through the shaft, the inner ring. Sensitivity (inner ring at "
           "1000 s): " + "; ".join(sens) + " (the blocks modelled as heat sources, a-priori estimates: "
           "validation/report/seed004_support_heat.md, +1.2 / +4.0 K). Energy budget: " + "; ".join(budget) + ". "
-          "With Harris's mixture convection coefficient 0.0332 (PHYSICS.md §8 item 4) instead of the laminar "
+          "With Harris's mixture convection coefficient 0.0332 (Harris 2001 ch. 15) instead of the laminar "
           "0.332 the inner ring at 1000 s is " + "; ".join(conv) + f" ({conv_dT[0]:+.1f} / {conv_dT[1]:+.1f} K: the "
           "weaker convection to the mixture keeps more heat in the rings, and hotter balls lower the viscosity and "
           "the power — the two nearly cancel; neither reading closes the gap). Most of the inner ring's inertia is the shaft share's (an estimate, 0.18 m of Ø50 "

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from thermobear.app.rig import IMPOSE, Comparison, RigLog, _row_scene, _schedule_from_log, _special
+from thermobear.app.rig import Comparison, RigLog, _log_inputs, _row_scene, special_target
 from thermobear.coupled.uncertainty import steady_uncertainty, transient_uncertainty
 from thermobear.errors import InputError
 from thermobear.scene import Scene
@@ -15,18 +15,20 @@ def log_bands(scene: Scene, log: RigLog, mapping: dict, n: int, *, T0_C=None, se
               groups: int | None = None):
     """The model's 5/50/95 % band of every mapped temperature channel over ``n`` samples of the
     estimated inputs (:mod:`thermobear.coupled.uncertainty`): a transient log by the sampled heat-up
-    at the log's times (one operating point: no speed steps), a steady log (or a quasi-steady one with
-    imposed channels) row by row.  Returns (channel → dict(p5, p50, p95) over the rows, design dict)."""
-    quasi = any(nd.startswith(IMPOSE) for nd in mapping.values())
-    chans = {ch: nd for ch, nd in mapping.items() if not _special(nd)}
-    if log.kind == "transient" and not quasi:
-        steps, n0 = _schedule_from_log(log)
+    at the log's times (one operating point: no speed steps; its ``impose:<node>`` channels the logged
+    boundary of every sample, as :func:`~thermobear.app.rig.simulate_log` runs it), a steady log row by
+    row.  Returns (channel → dict(p5, p50, p95) over the rows, design dict)."""
+    chans = {ch: nd for ch, nd in mapping.items() if not special_target(nd)}
+    if log.kind == "transient":
+        sc, steps, bnd = _log_inputs(scene, log, mapping)
         if steps:
             raise InputError("--uncertainty", n, "bands of a transient log need one operating point (this log "
                              "steps its speed)")
-        sc = scene.with_(n_rpm=n0) if n0 is not None else scene
-        r = transient_uncertainty(sc, float(log.t_s[-1]), n, t_eval=log.t_s, T0_C=T0_C, seed=seed, method=method,
-                                  groups=groups)
+        t = np.asarray(log.t_s, float) - float(log.t_s[0])
+        if T0_C is None and bnd is not None and "ambient" in bnd.T_C:
+            T0_C = float(bnd.T_C["ambient"][0])           # as simulate_log: from the logged room
+        r = transient_uncertainty(sc, float(t[-1]), n, t_eval=t, T0_C=T0_C, seed=seed, method=method, groups=groups,
+                                  boundary=bnd)
         out = {ch: {q: r.bands[f"T_C.{nd}"][q] for q in ("p5", "p50", "p95")} for ch, nd in chans.items()}
         return out, {"n": n, "seed": seed, "method": method, "failed": len(r.failed), "by_error": r.failed_count}
     out = {ch: {q: np.full(log.n_rows, np.nan) for q in ("p5", "p50", "p95")} for ch in chans}

@@ -80,9 +80,12 @@ def _rig_args(sp):
     sp.add_argument("scene")
     sp.add_argument("log", help="rig log CSV (t_s / n_rpm, T_<name>_C, torque_Nm, ...)")
     sp.add_argument("--map", action="append", metavar="CHANNEL=NODE",
-                    help="map a log channel to a network node (or 'input' / 'ignore')")
+                    help="map a log channel to a network node, or 'impose:<node>' (the logged temperature imposed "
+                    "on the node; in a transient log a time-varying boundary, linear between rows), 'input' (the "
+                    "operating temperature of a steady row) or 'ignore'")
     sp.add_argument("--T0-C", dest="T0_C", type=float, default=None,
-                    help="start temperature of a transient log [°C] (default ambient)")
+                    help="start temperature of a transient log [°C] (default: the logged ambient of an imposed "
+                    "'ambient' node, else the scene's ambient)")
 
 
 def build_parser() -> argparse.ArgumentParser:

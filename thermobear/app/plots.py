@@ -303,20 +303,26 @@ def plot_sweep(rows: list, grid: dict, outdir, title: str = "") -> list:
 
 
 def plot_comparison(comp, outdir, title, prefix="compare") -> list:
-    """Plots of a rig-log comparison (:class:`thermobear.app.rig.Comparison`): the heat-up with the
-    measured points (transient logs), torque and temperatures vs speed (steady logs)."""
+    """Plots of a rig-log comparison (:class:`thermobear.app.rig.Comparison`).
+
+    Transient logs: the temperatures (and the torque) vs time, the model drawn continuously along
+    its integrated trajectory, the measurements as points, the imposed (boundary) channels dashed,
+    and below a residual panel (model − measured at the logged rows, per channel); the mode in the
+    title.  Steady logs: torque and temperatures vs speed."""
     d = Path(outdir)
     d.mkdir(parents=True, exist_ok=True)
     paths = []
-    temps = {k: v for k, v in comp.simulated.items() if k != "torque_Nm"}
+    temps = [k for k in comp.simulated if k != "torque_Nm"]
     if comp.kind == "transient":
-        if temps:
-            meas = {k: (comp.x, comp.measured[k]) for k in temps}
-            paths.append(plot_heatup(comp.x, temps, d / f"{prefix}_heatup.png", meas, title=title, mapping=comp.mapping,
-                                     bands=_band_pairs(comp)))
+        mx = comp.model_x if comp.model_x is not None else comp.x
+        model = comp.model or comp.simulated
+        sub = f"{title}\n{comp.mode}" if comp.mode else title
+        if temps or comp.imposed:
+            paths.append(_log_vs_time(mx, {k: model[k] for k in temps}, comp, temps, d / f"{prefix}_heatup.png",
+                                      "temperature [°C]", sub, imposed=comp.imposed, bands=_band_pairs(comp)))
         if "torque_Nm" in comp.simulated:
-            paths.append(plot_vs_speed(comp.x, {"torque": comp.simulated["torque_Nm"]}, d / f"{prefix}_torque.png",
-                                       {"torque": comp.measured["torque_Nm"]}, "friction torque [N mm]", title, 1e3))
+            paths.append(_log_vs_time(mx, {"torque_Nm": model["torque_Nm"]}, comp, ["torque_Nm"],
+                                      d / f"{prefix}_torque.png", "friction torque [N mm]", sub, yscale=1e3))
         return paths
     labels = comp.log.columns.get("lubricant")
     if "torque_Nm" in comp.simulated:
@@ -324,7 +330,7 @@ def plot_comparison(comp, outdir, title, prefix="compare") -> list:
                                    {"torque": comp.measured["torque_Nm"]}, "friction torque [N mm]",
                                    f"Torque vs speed — {title}", 1e3, labels=labels))
     if temps:
-        paths.append(plot_vs_speed(comp.x, temps, d / f"{prefix}_temperature.png",
+        paths.append(plot_vs_speed(comp.x, {k: comp.simulated[k] for k in temps}, d / f"{prefix}_temperature.png",
                                    {k: comp.measured[k] for k in temps}, "temperature [°C]",
                                    f"Temperature vs speed — {title}", labels=labels, bands=_band_pairs(comp)))
     return paths
@@ -388,3 +394,30 @@ def _nominal_of(nom, key):
     if kind == "P_W":
         return nom.P_W
     return float(nom.losses.breakdown_W[name])
+def _log_vs_time(t_model, model: dict, comp, channels, path, ylabel, title, yscale=1.0, imposed=None,
+                 bands=None) -> str:
+    """Model (continuous) and measured points vs time, with the residual panel below; ``bands``: channel →
+    (low, high) at the logged rows, shaded (the 5–95 % band over the estimated inputs)."""
+    fig, (ax, axr) = plt.subplots(2, 1, figsize=(8, 6), sharex=True, gridspec_kw={"height_ratios": [3, 1.3]})
+    tm, t = np.asarray(t_model, float), np.asarray(comp.x, float)
+    unit, scale = ("min", 60.0) if t.max() > 600 else ("s", 1.0)
+    for i, k in enumerate(channels):
+        col = f"C{i % 10}"
+        lab = k + (f" → {comp.mapping[k]}" if k in comp.mapping else "")
+        ax.plot(tm / scale, np.asarray(model[k], float) * yscale, "-", color=col, lw=1.4, label=f"{lab} (model)")
+        if bands and k in bands:
+            ax.fill_between(t / scale, np.asarray(bands[k][0], float) * yscale, np.asarray(bands[k][1], float) * yscale,
+                            color=col, alpha=0.2, lw=0, label=f"{k} 5–95 % band")
+        m = np.asarray(comp.measured[k], float) * yscale
+        ax.plot(t / scale, m, "o", ms=3.5, color=col, alpha=0.7, label=f"{k} (measured)")
+        r = np.asarray(comp.simulated[k], float) * yscale - m
+        axr.plot(t / scale, r, "o-", ms=3, lw=0.6, color=col, label=k)
+    for j, (k, v) in enumerate((imposed or {}).items()):
+        ax.plot(t / scale, np.asarray(v, float) * yscale, "--", lw=1.0, color=f"C{(len(channels) + j) % 10}",
+                label=f"{k} → {comp.mapping[k][len('impose:'):]} (logged, imposed)")
+    axr.axhline(0.0, color="k", lw=0.8)
+    ax.set_ylabel(ylabel), ax.grid(alpha=0.3), ax.legend(fontsize=7, ncol=2)
+    axr.set_ylabel("model − measured" + (" [K]" if ylabel.startswith("temp") else " [N mm]"), fontsize=8)
+    axr.set_xlabel(f"time [{unit}]"), axr.grid(alpha=0.3)
+    ax.set_title(title, fontsize=9)
+    return _save(fig, path)

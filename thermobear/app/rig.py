@@ -22,28 +22,28 @@ channel is mapped to a thermal-network node in the scene's ``[rig.map]`` table
 Two special targets: ``"input"`` makes the channel the operating temperature
 of its row (``operation.T_C``: the losses are evaluated at the measured
 temperature, no network needed — the way seed 002 evaluates its models) and
-``"ignore"`` skips it.  ``"impose:<node>"`` imposes the channel's value on that node in its row
-(``thermal.fixed_C``): with the ring thermocouples imposed, the balls and the
-mixture are solved and the torque is compared at the measured bearing temperature
-— how seed 004 (§4.5) runs its model against its rig.  In a transient log this
-makes every row a quasi-steady point (balls and mixture at equilibrium with the
-measured rings), the way to compare a heat-up's torque without modelling the rig.
+``"ignore"`` skips it.  ``"impose:<node>"`` imposes the logged temperature on that node
+(``thermal.fixed_C``): the room on ``ambient``, the oil inlet on ``oil_inlet``, the ring
+thermocouples on ``inner_ring``/``outer_ring`` (then the balls and the mixture are solved and
+the torque is compared at the measured bearing temperature — how seed 004 (§4.5) runs its model
+against its rig).  A steady log imposes each row's value on its equilibrium.  A transient log
+runs the heat-up with the channel as a *time-varying boundary*: linear between the logged rows
+(an empty cell is bridged linearly from its neighbours; the first and last rows must be given),
+never extrapolated — the run covers the log's rows only.  The speed steps of ``n_rpm`` and the
+imposed channels reach the integrator the same way (:func:`thermobear.coupled.transient`,
+``schedule`` and ``boundary``).  The run starts at the log's first row, at ``T0_C`` (default:
+the logged value of an imposed ``ambient`` node at that row, else the scene's ambient
+temperature).  A node can be imposed by one channel only, and an imposed node is not compared.
 
 Metrics per channel (:func:`metrics`): RMSE, maximum absolute error, bias,
 steady-state error (mean error over the last 10 % of a transient log) and the
 time to 90 % of the rise, measured and simulated.
 
-Calibration (:func:`calibrate`) fits named parameters by
-:func:`scipy.optimize.least_squares` and reports each with its standard
-uncertainty from the Jacobian, covariance = s² (JᵀJ)⁻¹ with
-s² = Σ r²/(m − p) (m residuals, p parameters; Bates & Watts 1988, §2.3).
-Residuals are weighted so that 1 unit ≈ 1 K for a temperature channel and
-1 % of the mean measured torque for the torque channel.
+Calibration of uncertain parameters on a log: :mod:`thermobear.app.calibration`.
 """
 from __future__ import annotations
 
 import csv
-import dataclasses
 import io
 import math
 import re
@@ -52,30 +52,26 @@ from pathlib import Path
 
 import numpy as np
 
-from scipy.optimize import least_squares
-
 from thermobear.coupled import solve, transient
-from thermobear.errors import InputError, NoConvergence
-from thermobear.losses.skf import skf_constants
+from thermobear.errors import InputError
 from thermobear.scene import Scene
 from thermobear.scene.network import network_nodes as scene_network_nodes
-from thermobear.scene.network import network_spec
+from thermobear.thermal.solve import LinearBoundary
 
 __all__ = ["RigLog", "read_log", "channel_map", "metrics", "simulate_log", "compare", "Comparison",
-           "calibrate", "Calibration", "network_nodes", "parameter_names",
-           "parse_map", "SPECIAL_TARGETS"]
+           "network_nodes", "parse_map", "special_target", "SPECIAL_TARGETS"]
 
 SPECIAL_TARGETS = ("input", "ignore")
 IMPOSE = "impose:"
 
 
-def _special(target: str) -> bool:
+def special_target(target: str) -> bool:
     """A target that is not a simulated node (an input of the model, or skipped)."""
     return target in SPECIAL_TARGETS or target.startswith(IMPOSE)
+
+
 _T_RE = re.compile(r"^T_[A-Za-z0-9_]+_C$")
 _NUMERIC = ("t_s", "n_rpm", "torque_Nm", "Fa_N", "Fr_N")
-_SCENE_SCALARS = ("T_ambient_C", "T_oil_in_C", "oil_flow_L_h", "mu_boundary", "mu_full_film")
-_SKF = ("skf_R1", "skf_S1", "skf_mu_EHL")
 
 
 # --------------------------------------------------------------------------- reading
@@ -240,7 +236,17 @@ def channel_map(scene: Scene, log: RigLog, overrides: dict | None = None) -> dic
     if len(inputs) > 1:
         raise InputError("rig.map", ", ".join(inputs), "only one channel can be the operating temperature (input)")
     if inputs and log.kind == "transient":
-        raise InputError(f"rig.map.{inputs[0]}", "input", "an input temperature needs a steady log (no t_s)")
+        raise InputError(f"rig.map.{inputs[0]}", "input", "an input temperature needs a steady log (no t_s); "
+                         'a heat-up log imposes a logged temperature on a node: "impose:<node>"')
+    imposed = {}
+    for ch, node in m.items():
+        if node.startswith(IMPOSE):
+            if node[len(IMPOSE):] in imposed:
+                raise InputError(f"rig.map.{ch}", node, f"the node is imposed by {imposed[node[len(IMPOSE):]]} already")
+            imposed[node[len(IMPOSE):]] = ch
+    for ch, node in m.items():
+        if node in imposed:
+            raise InputError(f"rig.map.{ch}", node, f"the node is imposed by {imposed[node]}: nothing to compare")
     for ch, node in m.items():
         if node in SPECIAL_TARGETS:
             continue
@@ -342,54 +348,115 @@ def _row_scene(scene: Scene, log: RigLog, i: int, mapping: dict) -> Scene:
     return scene.with_(**ch)
 
 
-def _schedule_from_log(log: RigLog):
-    if "n_rpm" not in log.columns:
-        return [], None
-    n, t = log["n_rpm"], log.t_s
-    if np.any(np.isnan(n)):
-        raise InputError(f"{Path(log.path).name}: column n_rpm", None, "speed missing in some rows")
-    steps = [(float(t[k]), {"n_rpm": float(n[k])}) for k in range(1, n.size) if n[k] != n[k - 1]]
-    return steps, float(n[0])
+def _imposed(mapping: dict) -> dict:
+    """Channel → node of the ``"impose:<node>"`` channels."""
+    return {ch: n[len(IMPOSE):] for ch, n in mapping.items() if n.startswith(IMPOSE)}
 
 
-def simulate_log(scene: Scene, log: RigLog, mapping: dict, *, rtol: float = 1e-6, T0_C=None) -> dict:
+def _log_inputs(scene: Scene, log: RigLog, mapping: dict):
+    """What a transient log drives, on the run's clock (0 at the log's first row): the scene at the
+    first row, the schedule of speed steps, the logged boundary (None without imposed channels)."""
+    name, t = Path(log.path).name, log.t_s
+    t0 = float(t[0])
+    steps, sc = [], scene
+    if "n_rpm" in log.columns:
+        n = log["n_rpm"]
+        if np.any(np.isnan(n)):
+            raise InputError(f"{name}: column n_rpm", None, "speed missing in some rows")
+        steps = [(float(t[k]) - t0, {"n_rpm": float(n[k])}) for k in range(1, n.size) if n[k] != n[k - 1]]
+        sc = scene.with_(n_rpm=float(n[0]))
+    imposed = _imposed(mapping)
+    if not imposed:
+        return sc, steps, None
+    values = {}
+    for ch, node in imposed.items():
+        y = log[ch]
+        ok = ~np.isnan(y)
+        if not (ok[0] and ok[-1]):
+            raise InputError(f"{name}: column {ch}", None, "an imposed (boundary) temperature needs its first and "
+                             "last rows: the run covers the logged times, a boundary is not extrapolated")
+        values[node] = np.interp(t, t[ok], y[ok])          # empty cells bridged linearly
+    src = f"{name}: imposed {', '.join(imposed)}"
+    return sc, steps, LinearBoundary.of(t - t0, values, source=src)
+
+
+def _mode(log: RigLog, mapping: dict, steps=()) -> str:
+    """How the log is simulated, in words (shown by ``compare`` and ``calibrate``)."""
+    imposed = _imposed(mapping)
+    arrows = ", ".join(f"{ch} → {node}" for ch, node in imposed.items())
+    inputs = [ch for ch, n in mapping.items() if n == "input"]
+    if log.kind == "steady":
+        out = "steady points (one equilibrium per row)"
+        if inputs:
+            out += f"; operating temperature per row: {inputs[0]}"
+        return out + (f"; imposed per row: {arrows}" if arrows else "")
+    out = (f"transient with logged boundary {arrows} (linear between rows)" if arrows
+           else "transient (heat-up from the start temperature)")
+    return out + (f"; {len(steps)} speed step{'s' * (len(steps) != 1)} from n_rpm" if steps else "")
+
+
+def simulate_log(scene: Scene, log: RigLog, mapping: dict, *, rtol: float = 1e-6, T0_C=None, dense: int = 0) -> dict:
     """Simulate what the log measured: channel → simulated array (and ``torque_Nm``).
 
-    Transient logs run :func:`thermobear.coupled.transient` at the log's times
-    (speed steps in ``n_rpm`` become the schedule; start at ``T0_C``, default the
-    scene's ambient temperature); steady logs run :func:`thermobear.coupled.solve`
-    once per row (speed, loads, lubricant and input temperature of that row).  A transient
-    log with ``"impose:<node>"`` channels is run row by row the same way, quasi-steadily: the
-    imposed (measured) temperatures of the row are boundaries and the remaining nodes — balls,
-    mixture, with time constants of seconds — are taken at equilibrium with them.
+    Transient logs run :func:`thermobear.coupled.transient` from the log's first row to its last,
+    the speed steps of ``n_rpm`` as its schedule and the ``"impose:<node>"`` channels as its
+    logged boundary (time-varying, linear between rows; see the module docstring); the start
+    temperature ``T0_C`` [°C] defaults to the logged ambient (an imposed ``ambient`` node), else
+    the scene's ambient temperature.  Steady logs run :func:`thermobear.coupled.solve` once per
+    row (speed, loads, lubricant, input and imposed temperatures of that row).
+
+    ``dense`` > 0 (transient logs) adds the integrated trajectory at that many evenly spaced times
+    besides the log's: ``"_model_t"`` [s] and ``"_model"`` (channel → values), to draw the model
+    continuously.  ``"_mode"`` says how the log was simulated.
     """
     out = {}
-    if log.kind == "transient" and not any(n.startswith(IMPOSE) for n in mapping.values()):
-        steps, n0 = _schedule_from_log(log)
-        sc = scene.with_(n_rpm=n0) if n0 is not None else scene
+    if log.kind == "transient":
+        sc, steps, bnd = _log_inputs(scene, log, mapping)
         t = log.t_s
-        run = transient(sc, float(t[-1]), schedule=steps, t_eval=t, T0_C=T0_C, rtol=rtol, atol=rtol * 10)
+        t0 = float(t[0])
+        if T0_C is None and bnd is not None and "ambient" in bnd.T_C:
+            T0_C = float(bnd.T_C["ambient"][0])
+        t_run = _output_times(t, dense)
+        run = transient(sc, float(t[-1]) - t0, schedule=steps, t_eval=t_run - t0, T0_C=T0_C, rtol=rtol,
+                        atol=rtol * 10, boundary=bnd)
+        at_log = np.searchsorted(t_run, t)
+        tm = run.t_s + t0
+        curves = {}
         for ch, node in mapping.items():
-            if not _special(node):
-                out[ch] = np.asarray(run.T_C[node], float)
+            if not special_target(node):
+                curves[ch] = np.asarray(run.T_C[node], float)
         if "torque_Nm" in log.columns:
-            n_rpm = _speed_at(log, run.t_s)
-            w = n_rpm * np.pi / 30.0
-            out["torque_Nm"] = np.where(w > 0, run.P_W / np.where(w > 0, w, 1.0), 0.0)
-        out["_run"] = run
+            w = (_speed_at(log, tm) if "n_rpm" in log.columns else np.full(tm.shape, sc.n_rpm)) * np.pi / 30.0
+            curves["torque_Nm"] = np.where(w > 0, run.P_W / np.where(w > 0, w, 1.0), 0.0)
+        out.update({ch: v[at_log] for ch, v in curves.items()})
+        if dense:
+            out["_model_t"], out["_model"] = tm, curves
+        out["_run"], out["_mode"] = run, _mode(log, mapping, steps)
         return out
     res = [solve(_row_scene(scene, log, i, mapping)) for i in range(log.n_rows)]
     for ch, node in mapping.items():
-        if not _special(node):
+        if not special_target(node):
             out[ch] = np.array([r.T_C[node] for r in res])
     out["torque_Nm"] = np.array([r.torque_Nm for r in res])
     out["P_W"] = np.array([r.P_W for r in res])
-    out["_runs"] = res
+    out["_runs"], out["_mode"] = res, _mode(log, mapping)
     return out
 
 
+def _output_times(t, dense: int):
+    """The log's times and ``dense`` evenly spaced ones between its first and last (none closer to a
+    log time than 1e-6 of the span)."""
+    if dense <= 0:
+        return np.asarray(t, float)
+    t = np.asarray(t, float)
+    grid = np.linspace(t[0], t[-1], int(dense))
+    k = np.clip(np.searchsorted(t, grid), 1, t.size - 1)
+    near = np.minimum(np.abs(grid - t[k - 1]), np.abs(grid - t[k])) < 1e-6 * float(t[-1] - t[0])
+    return np.union1d(t, grid[~near])
+
+
 def _speed_at(log: RigLog, t):
-    return np.asarray(log["n_rpm"], float)[np.searchsorted(log.t_s, t, side="right") - 1]
+    return np.asarray(log["n_rpm"], float)[np.clip(np.searchsorted(log.t_s, t, side="right") - 1, 0, None)]
 
 
 @dataclass
@@ -404,6 +471,11 @@ class Comparison:
     simulated : dict      channel → simulated array
     metrics : dict        channel → :func:`metrics` dict
     mapping : dict        channel → node
+    mode : str            how the log was simulated (steady points; transient; transient with a logged
+                          boundary, naming its channels and nodes)
+    model_x : ndarray     times [s] of the integrated trajectory (transient logs; else None)
+    model : dict          channel → the model along ``model_x`` (continuous curve)
+    imposed : dict        channel → logged values imposed on a node (the boundary)
     bands, inside         channel → the model's band over the estimated inputs, dict(p5, p50, p95) over x,
                           and (measured points inside it, their number) (:mod:`thermobear.app.bands`)
     uncertainty : dict    the sample design and failed samples of the bands
@@ -416,18 +488,27 @@ class Comparison:
     metrics: dict
     mapping: dict
     log: RigLog = field(repr=False)
+    mode: str = ""
+    model_x: np.ndarray | None = None
+    model: dict = field(default_factory=dict)
+    imposed: dict = field(default_factory=dict)
     bands: dict = field(default_factory=dict)
     inside: dict = field(default_factory=dict)
     uncertainty: dict = field(default_factory=dict)
 
     def as_dict(self) -> dict:
-        return {"kind": self.kind, "log": self.log.path, "mapping": self.mapping, "metrics": self.metrics,
-                "x": self.x, "measured": self.measured, "simulated": self.simulated,
-                **({"bands": self.bands, "inside_band": self.inside, "uncertainty": self.uncertainty} if self.bands else {})}
+        out = {"kind": self.kind, "mode": self.mode, "log": self.log.path, "mapping": self.mapping,
+               "metrics": self.metrics, "x": self.x, "measured": self.measured, "simulated": self.simulated}
+        if self.model_x is not None:
+            out["model"] = {"t_s": self.model_x, **self.model}
+        if self.bands:
+            out.update(bands=self.bands, inside_band=self.inside, uncertainty=self.uncertainty)
+        return out
 
     def summary(self) -> str:
         unit = {"torque_Nm": "N m"}
-        lines = [f"compare {Path(self.log.path).name} ({self.kind}, {self.log.n_rows} rows)", "",
+        lines = [f"compare {Path(self.log.path).name} ({self.kind}, {self.log.n_rows} rows)",
+                 f"mode: {self.mode}", "",
                  f"{'channel':14s} {'node':14s} {'n':>4s} {'RMSE':>10s} {'max err':>10s} {'bias':>10s}"
                  + (f" {'SS err':>9s} {'t90 meas':>9s} {'t90 sim':>9s}" if self.kind == "transient" else "")]
         for ch, m in self.metrics.items():
@@ -451,14 +532,16 @@ class Comparison:
         return "\n".join(lines)
 
 
-def compare(scene: Scene, log: RigLog, mapping: dict, *, T0_C=None) -> Comparison:
-    """Simulate a rig log and measure the agreement of every mapped channel (and torque) (the model's
+def compare(scene: Scene, log: RigLog, mapping: dict, *, T0_C=None, dense: int = 400) -> Comparison:
+    """Simulate a rig log (:func:`simulate_log`) and measure the agreement of every mapped channel
+    (and torque) at the logged rows; a transient log also keeps the integrated trajectory at
+    ``dense`` evenly spaced times (``model_x``, ``model``) to draw the model continuously (the model's
     band over the estimated inputs: :func:`thermobear.app.bands.compare_bands`)."""
-    sim = simulate_log(scene, log, mapping, T0_C=T0_C)
+    sim = simulate_log(scene, log, mapping, T0_C=T0_C, dense=dense if log.kind == "transient" else 0)
     x = log.t_s if log.kind == "transient" else log["n_rpm"]
     meas, simd, met = {}, {}, {}
     for ch, node in mapping.items():
-        if _special(node):
+        if special_target(node):
             continue
         meas[ch], simd[ch] = log[ch], sim[ch]
         met[ch] = metrics(log[ch], sim[ch], log.t_s)
@@ -469,231 +552,5 @@ def compare(scene: Scene, log: RigLog, mapping: dict, *, T0_C=None) -> Compariso
         raise InputError(f"{Path(log.path).name}", None, "nothing to compare: no mapped temperature channel "
                          "and no torque_Nm column")
     return Comparison(kind=log.kind, x=np.asarray(x, float), measured=meas, simulated=simd, metrics=met,
-                      mapping=mapping, log=log)
-
-
-# --------------------------------------------------------------------------- calibration
-def _network_numeric_parameters(scene: Scene) -> dict:
-    """``"<element or node>.<parameter>"`` → numeric value, for every number in the scene's network."""
-    if not scene.network:
-        return {}
-    spec = network_spec(scene.network, scene.path, parameters=scene.network_parameters, fixed_C=scene.T_fixed_C)
-    out = {}
-    tables = [(e.get("name"), e) for e in spec.get("elements", [])] + list(spec.get("nodes", {}).items())
-    for name, tbl in tables:
-        if not name or not isinstance(tbl, dict):
-            continue
-        for k, v in tbl.items():
-            if isinstance(v, (int, float)) and not isinstance(v, bool):
-                out[f"{name}.{k}"] = float(v)
-    return out
-
-
-def parameter_names(scene: Scene) -> list:
-    """Parameters :func:`calibrate` can fit for this scene.
-
-    Network parameters (``[thermal.parameters]`` keys and every numeric
-    ``<element or node>.<parameter>`` of the network), the scene scalars
-    T_ambient_C, T_oil_in_C, oil_flow_L_h, mu_boundary, mu_full_film, and —
-    for scenes on the SKF global model (``[models] losses = "skf"``) — skf_R1,
-    skf_S1, skf_mu_EHL.
-    """
-    names = list(scene.network_parameters)
-    names += [k for k in _network_numeric_parameters(scene) if k not in names]
-    names += list(_SCENE_SCALARS)
-    if scene.models.get("losses") == "skf":
-        names += list(_SKF)
-    return names
-
-
-def _parse_param(scene: Scene, spec: str):
-    name, _, start = spec.partition("=")
-    name = name.strip()
-    if name in _SKF and scene.models.get("losses") != "skf":
-        raise InputError("--param", name, 'SKF constants need a scene on the SKF model: [models] losses = "skf"')
-    known = parameter_names(scene)
-    if name not in known:
-        raise InputError("--param", name, f"unknown parameter; this scene offers: {', '.join(known)}")
-    if start.strip():
-        try:
-            x0 = float(start)
-        except ValueError:
-            raise InputError(f"--param {name}", start, "start value must be a number") from None
-    elif name in scene.network_parameters:
-        x0 = scene.network_parameters[name]
-    elif "." in name:
-        x0 = _network_numeric_parameters(scene)[name]
-    elif name in _SKF:
-        x0 = scene.models.get(name)
-        if x0 is None:
-            x0 = 0.05 if name == "skf_mu_EHL" else _skf_table(scene)[name.split("_")[1]]
-    elif name == "oil_flow_L_h":
-        x0 = scene.oil_flow * 3.6e6
-    else:
-        x0 = getattr(scene, name)
-    if x0 is None or isinstance(x0, bool) or not isinstance(x0, (int, float)) or not math.isfinite(x0):
-        raise InputError(f"--param {name}", x0, "needs a finite numeric start value (give NAME=START)")
-    return name, float(x0)
-
-
-def _skf_table(scene):
-    b = scene.bearing
-    return skf_constants(b.kind, b.series)
-
-
-def _apply(scene: Scene, values: dict) -> Scene:
-    net = {k: v for k, v in values.items() if k in scene.network_parameters or "." in k}
-    sc = scene.with_(network_parameters=net) if net else scene
-    skf = {k: v for k, v in values.items() if k in _SKF}
-    if skf:
-        sc = sc.with_(models=skf)
-    w = {k: v for k, v in values.items() if k in ("T_ambient_C", "T_oil_in_C", "oil_flow_L_h")}
-    if w:
-        sc = sc.with_(**w)
-    rep = {k: v for k, v in values.items() if k in ("mu_boundary", "mu_full_film")}
-    for k, v in rep.items():
-        if not 0.0 <= v <= 1.0:
-            raise InputError(k, v, "friction coefficient must lie in [0, 1]")
-    if rep:
-        sc = dataclasses.replace(sc, **rep)
-    return sc
-
-
-@dataclass
-class Calibration:
-    """Fitted parameters with standard uncertainties.
-
-    Attributes
-    ----------
-    values : dict          name → fitted value
-    std : dict             name → standard uncertainty (None if the data do not determine it)
-    start : dict           name → start value
-    cov : ndarray          covariance of the parameters (in the order of ``values``)
-    rms_residual : float   RMS weighted residual (≈ K for temperatures) at the optimum
-    dof : int              residuals − parameters
-    nfev : int             model evaluations
-    comparison : Comparison  the log against the calibrated scene
-    scene : Scene          the calibrated scene
-    """
-
-    values: dict
-    std: dict
-    start: dict
-    cov: np.ndarray
-    rms_residual: float
-    dof: int
-    nfev: int
-    comparison: Comparison | None = None
-    scene: Scene | None = field(default=None, repr=False)
-    message: str = ""
-
-    def as_dict(self) -> dict:
-        return {"values": self.values, "std": self.std, "start": self.start, "cov": self.cov,
-                "rms_residual": self.rms_residual, "dof": self.dof, "nfev": self.nfev, "message": self.message,
-                "metrics": self.comparison.metrics if self.comparison else None}
-
-    def summary(self) -> str:
-        w = max([18] + [len(k) for k in self.values])
-        lines = [f"calibration: {self.nfev} model evaluations, RMS residual {self.rms_residual:.4g} "
-                 f"(K, or % of torque), {self.dof} degrees of freedom", "",
-                 f"{'parameter':{w}s} {'start':>12s} {'fitted':>12s} {'std':>12s}"]
-        for k, v in self.values.items():
-            s = self.std[k]
-            lines.append(f"{k:{w}s} {self.start[k]:12.5g} {v:12.5g} " + (f"{s:12.3g}" if s is not None else f"{'n/a':>12s}"))
-        if self.message:
-            lines += ["", self.message]
-        if self.comparison is not None:
-            lines += ["", self.comparison.summary()]
-        return "\n".join(lines)
-
-
-def calibrate(scene: Scene, log: RigLog, params: list, mapping: dict, *, T0_C=None, max_nfev: int = 60,
-              diff_step: float = 1e-3) -> Calibration:
-    r"""Fit named parameters of a scene to a rig log (nonlinear least squares).
-
-    Parameters
-    ----------
-    scene : Scene
-    log : RigLog
-    params : list[str]     names (``NAME`` or ``NAME=START``, see :func:`parameter_names`): network
-                           parameters (``"bearing_to_ambient.G_W_K"``, ``"oil_stream.beta"``, or a
-                           ``[thermal.parameters]`` key), T_ambient_C, T_oil_in_C, oil_flow_L_h,
-                           mu_boundary, mu_full_film, or on an SKF scene skf_R1, skf_S1, skf_mu_EHL
-                           (seed 002 re-calibrates R1, S1 for the 51107 this way)
-    mapping : dict         channel → node (:func:`channel_map`)
-    T0_C : float           start temperature of transient logs [°C] (default ambient)
-    max_nfev : int         budget of model evaluations
-    diff_step : float      relative finite-difference step of the Jacobian
-
-    Returns
-    -------
-    Calibration
-
-    Notes
-    -----
-    Positive parameters are fitted as ln p (p stays positive; the standard
-    uncertainty is σ_p = p σ_ln p).  Covariance = s² (JᵀJ)⁻¹, s² = Σ r²/(m − p);
-    with m = p (no degrees of freedom) the uncertainty is not determined (None).
-    """
-    if not params:
-        raise InputError("--param", None, "name at least one parameter to fit")
-    specs = [_parse_param(scene, p) for p in params]
-    names = [n for n, _ in specs]
-    if len(set(names)) != len(names):
-        raise InputError("--param", ", ".join(names), "each parameter once")
-    x0 = np.array([v for _, v in specs])
-    logsp = np.array([v > 0 and not n.endswith("_C") for n, v in specs])
-
-    def values_of(x):
-        return {n: float(np.exp(xi) if lg else xi) for n, xi, lg in zip(names, x, logsp)}
-
-    weights = {}
-    if "torque_Nm" in log.columns:
-        tq = log["torque_Nm"]
-        if np.any(~np.isnan(tq)):
-            weights["torque_Nm"] = 100.0 / max(float(np.nanmean(np.abs(tq))), 1e-300)
-    fit_channels = [c for c, n in mapping.items() if not _special(n)]
-    nfev = [0]
-
-    def resid(x):
-        nfev[0] += 1
-        sim = simulate_log(_apply(scene, values_of(x)), log, mapping, T0_C=T0_C)
-        chans = fit_channels + (["torque_Nm"] if "torque_Nm" in weights else [])
-        r = []
-        for c in chans:
-            y = log[c]
-            ok = ~np.isnan(y)
-            r.append((sim[c][ok] - y[ok]) * weights.get(c, 1.0))
-        return np.concatenate(r) if r else np.zeros(0)
-
-    xs0 = np.where(logsp, np.log(np.where(logsp, x0, 1.0)), x0)
-    r0 = resid(xs0)
-    m, p = r0.size, len(names)
-    if m < p:
-        raise InputError("--param", ", ".join(names), f"{p} parameters but only {m} measured values")
-    res = least_squares(resid, xs0, method="trf", diff_step=diff_step, max_nfev=max_nfev, x_scale=1.0)
-    rms = float(np.sqrt(np.mean(res.fun**2))) if m else 0.0
-    if res.status <= 0:
-        raise NoConvergence(f"calibration did not converge: {res.message}", iterations=int(res.nfev),
-                            residual=rms, last=values_of(res.x))
-    J = res.jac
-    dof = m - p
-    JTJ = J.T @ J
-    vals = values_of(res.x)
-    std = {n: None for n in names}
-    cov = np.full((p, p), np.nan)
-    msg = ""
-    if np.linalg.cond(JTJ) > 1e14:
-        msg = "the data do not determine these parameters independently (singular Jacobian): no uncertainty"
-    elif dof == 0:
-        msg = "as many parameters as measured values: exact fit, uncertainty not determined"
-    else:
-        s2 = float(res.fun @ res.fun) / dof
-        cov_x = s2 * np.linalg.inv(JTJ)
-        scale = np.array([vals[n] if lg else 1.0 for n, lg in zip(names, logsp)])
-        cov = cov_x * np.outer(scale, scale)
-        std = {n: float(np.sqrt(cov[i, i])) for i, n in enumerate(names)}
-    cal_scene = _apply(scene, vals)
-    comp = compare(cal_scene, log, mapping, T0_C=T0_C)
-    return Calibration(values=vals, std=std, start=dict(zip(names, x0.tolist())), cov=cov, rms_residual=rms,
-                       dof=dof, nfev=nfev[0], comparison=comp, scene=cal_scene, message=msg)
+                      mapping=mapping, log=log, mode=sim["_mode"], model_x=sim.get("_model_t"),
+                      model=sim.get("_model", {}), imposed={ch: log[ch] for ch in _imposed(mapping)})

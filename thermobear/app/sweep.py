@@ -89,8 +89,7 @@ def _row(point: dict, sc: Scene, st=None, exc=None) -> dict:
                    iterations=getattr(exc, "iterations", None), residual_K=_finite_or_none(getattr(exc, "residual", None)),
                    warnings=[])
         return row
-    row.update(P_W=float(st.P_W), torque_Nm=float(st.losses.torque_Nm),
-               breakdown_W={k: float(v) for k, v in st.losses.breakdown_W.items()},
+    row.update(P_W=float(st.P_W), torque_Nm=float(st.torque_Nm), breakdown_W=dict(st.breakdown_W),
                temperatures_C={k: float(v) for k, v in st.T_C.items()}, T_ball_C=float(st.T_ball_C),
                models=_choices(st.models_used), status="ok", reason=str(st.models_used["thermal"][1]),
                iterations=int(st.iterations), residual_K=float(st.residual_K),
@@ -145,27 +144,56 @@ def _prescribed_group(scenes, points, models, members):
 
 
 def _prescribed(scenes, points, idx, emit):
-    """Rows of the prescribed-temperature points, by groups of one vectorised evaluation."""
+    """Rows of the prescribed-temperature points, by groups of one vectorised evaluation; a point in a
+    switch band (:data:`thermobear.models.BLEND_BANDS`) is evaluated with each alternative and its row
+    is their blend."""
     groups: dict = {}
-    for i, p in zip(idx, plan_many([scenes[i] for i in idx])):
-        if isinstance(p, Exception):
-            emit(i, _row(points[i], scenes[i], exc=p))
+    for i, alts in zip(idx, plan_many([scenes[i] for i in idx])):
+        if isinstance(alts, Exception):
+            emit(i, _row(points[i], scenes[i], exc=alts))
             continue
-        key = (tuple((k, repr(v)) for k, v in points[i].items() if k not in _VECTOR_KEYS),
-               tuple(sorted((k, repr(v[0])) for k, v in p[0].items() if k != "thermal")))
-        groups.setdefault(key, (p[0], []))[1].append(i)
+        for a in alts:
+            key = (tuple((k, repr(v)) for k, v in points[i].items() if k not in _VECTOR_KEYS),
+                   tuple(sorted((k, repr(v[0])) for k, v in a.models.items() if k != "thermal")))
+            groups.setdefault(key, (a.models, []))[1].append((i, a.weight))
+    parts: dict = {}
     for models, members in groups.values():
+        ids = [i for i, _ in members]
         try:
-            rows = _prescribed_group(scenes, points, models, members)
+            rows = _prescribed_group(scenes, points, models, ids)
         except (SolverError, InputError):     # each point alone: a failure stays on its own row
             rows = {}
-            for i in members:
+            for i in ids:
                 try:
                     rows.update(_prescribed_group(scenes, points, models, [i]))
                 except (SolverError, InputError) as exc:
                     rows[i] = _row(points[i], scenes[i], exc=exc)
-        for i in members:
-            emit(i, rows[i])
+        for i, w in members:
+            parts.setdefault(i, []).append((w, rows[i]))
+    for i in sorted(parts):
+        emit(i, _blend_rows(parts[i]))
+
+
+def _blend_rows(parts) -> dict:
+    """One row from the rows of a point's model alternatives (weights sum to 1): power, torque and
+    breakdown weighted (:mod:`thermobear.coupled.blend`); a failed alternative leaves the others."""
+    if len(parts) == 1:
+        return parts[0][1]
+    ok = [(w, r) for w, r in parts if r["status"] == "ok"]
+    if not ok:
+        return max(parts, key=lambda p: p[0])[1]
+    total = sum(w for w, _ in ok)
+    ok = [(w / total, r) for w, r in ok]
+    row = dict(max(ok, key=lambda p: p[0])[1])
+    keys = list(dict.fromkeys(k for _, r in ok for k in r["breakdown_W"]))
+    row.update(P_W=sum(w * r["P_W"] for w, r in ok), torque_Nm=sum(w * r["torque_Nm"] for w, r in ok),
+               breakdown_W={k: sum(w * r["breakdown_W"].get(k, 0.0) for w, r in ok) for k in keys},
+               reason="blend of " + " + ".join(f"{w:.3f} × ({r['models'].get('high_speed')}, "
+                                               f"{r['models'].get('load_model')})" for w, r in ok))
+    if len(ok) < len(parts):
+        row["warnings"] = list(row["warnings"]) + ["model blend: an alternative across a model switch failed; "
+                                                   "the answer is that of the others and may step here"]
+    return row
 
 
 def _worker_signals():

@@ -17,7 +17,8 @@ import numpy as np
 from thermobear.app.output import (Progress, RowWriter, check_out_dir, check_out_file, csv_text, flatten,
                                    print_json, write_text, wrote)
 from thermobear.app.bands import compare_bands
-from thermobear.app.rig import calibrate, channel_map, compare, parse_map, read_log
+from thermobear.app.calibration import calibrate
+from thermobear.app.rig import channel_map, compare, parse_map, read_log
 from thermobear.app.spindown import spin_down_runs
 from thermobear.app.sweep import run_sweep, sweep_points
 from thermobear.contact.geometry import bearing_names
@@ -29,6 +30,7 @@ from thermobear.files import data_dir, names_in, read_toml
 from thermobear.loads import load_distribution
 from thermobear.loads.highspeed import load_distribution_high_speed
 from thermobear.losses import BREAKDOWN_KEYS
+from thermobear.losses.skf import SKF_BREAKDOWN_KEYS
 from thermobear.lubrication.lubricant import lubricant_names
 from thermobear.models import plan
 from thermobear.scene import load_scene
@@ -363,7 +365,8 @@ def _transient_bands(args, scene, schedule, T0, out_csv, out_dir):
 
 
 # --------------------------------------------------------------------------- sweep
-_MODEL_COLUMNS = ("thermal", "load_model", "high_speed", "drag", "losses", "rolling", "kinematics", "hertz")
+_MODEL_COLUMNS = ("thermal", "load_model", "high_speed", "drag", "churning", "seals", "cage", "losses", "rolling",
+                  "kinematics", "hertz")
 
 
 def _sweep_header(scene, grid) -> list:
@@ -379,7 +382,7 @@ def _sweep_header(scene, grid) -> list:
         nodes += network_nodes(scene.network, scene.path)
     if prescribed:
         nodes.append("contacts (prescribed)")
-    bd = ("rolling", "sliding", "drag", "seal") if scene.models.get("losses") == "skf" else BREAKDOWN_KEYS
+    bd = SKF_BREAKDOWN_KEYS if scene.models.get("losses") == "skf" else BREAKDOWN_KEYS
     return (list(grid) + ["status", "reason", "P_W", "torque_Nm", "T_ball_C", "iterations", "residual_K"]
             + [f"breakdown_W.{k}" for k in bd] + [f"temperatures_C.{n}" for n in nodes]
             + [f"models.{k}" for k in _MODEL_COLUMNS] + ["warnings"])
@@ -466,7 +469,8 @@ def cmd_compare(args):
                   + [f"{c}_model{s}" for c in comp.bands for s in q])
         rows = [[comp.x[i]] + [v for c in chans for v in (comp.measured[c][i], comp.simulated[c][i])]
                 + [comp.bands[c][s[1:]][i] for c in comp.bands for s in q] for i in range(comp.x.size)]
-        write_text(out_csv, csv_text(header, rows, [f"thermobear compare: {args.log} vs {scene.name}"]))
+        note = f"thermobear compare: {args.log} vs {scene.name}; mode: {comp.mode}"
+        write_text(out_csv, csv_text(header, rows, [note]))
         wrote([out_csv])
     print_json(comp.as_dict()) if args.json else print(comp.summary())
     if out_dir is not None:

@@ -542,8 +542,25 @@ def bearing(name: str) -> BallBearing:
     >>> bearing("7205 B").name, bearing("6208").clearance_group
     ('7205B', 'CN')
     """
-    cat = _catalog()
+    cat = _likely_catalog(name)
     key = _resolve(name, cat)
+    if key is None:
+        cat = _catalog()
+        key = _resolve(name, cat)
     if key is None:
         raise InputError("bearing", name, _unknown_message(name, cat))
     return bearing_from_dict(cat[key], name=key, where=f"bearings[{key}]")
+
+
+def _likely_catalog(name: str) -> dict:
+    """The entries of the files that can hold a designation: the seed file and the series files whose
+    digits begin the designation's ("6208" → 62.toml, "7014C" → 70C.toml and 70E.toml); a name not
+    found there is looked up in the whole catalogue (:func:`_catalog`: aliases, duplicates)."""
+    base = data_dir("materials")
+    out = dict(read_toml(str(base / "bearings.toml")))
+    digits = canonical_designation(name)
+    for path in sorted((base / "bearings").glob("*.toml")):
+        stem = path.stem.rstrip("ABCDEFGHIJKLMNOPQRSTUVWXYZ")
+        if stem and digits.startswith(stem):
+            out.update((k, v) for k, v in read_toml(str(path)).items() if isinstance(v, dict))
+    return out

@@ -19,11 +19,15 @@ from thermobear.arrays import out as _f
 from scipy.special import ellipe, ellipk
 
 from thermobear.errors import InputError, NoConvergence
+from thermobear.validity import check
 
 __all__ = ["HertzContact", "hertz", "ellipticity", "contact_stiffness", "series_stiffness",
-           "METHODS"]
+           "METHODS", "RATIO_MAX"]
 
 METHODS = ("exact", "hamrock_brewe", "brewe_hamrock", "houpert")
+#: Largest Ry/Rx of a contact [-]: beyond it the curvature difference F(ρ) = (Ry/Rx − 1)/(Ry/Rx + 1) is
+#: within 2e-10 of 1, the ellipticity iteration's tolerance on F (:func:`ellipticity`).
+RATIO_MAX = 1e10
 
 
 @dataclass(frozen=True)
@@ -122,8 +126,10 @@ def ellipticity(ratio_RyRx, tol: float = 1e-13, maxiter: int = 50):
     9.285
     """
     r = np.asarray(ratio_RyRx, dtype=float)
-    if r.size and not (r.min() >= 1.0 - 1e-12 and r.max() < np.inf):       # NaN fails both
-        raise InputError("Ry/Rx", r, "must be finite and >= 1 (swap axes for Ry < Rx)")
+    if r.size and not (r.min() >= 1.0 - 1e-12 and r.max() <= RATIO_MAX):    # NaN fails both
+        raise InputError("Ry/Rx", r, f"must be >= 1 (swap axes for Ry < Rx) and <= {RATIO_MAX:g}: beyond, "
+                         f"F(rho) = (Ry/Rx - 1)/(Ry/Rx + 1) lies within 2e-10 of 1, the iteration's tolerance, "
+                         f"and kappa is not determined in double precision")
     target = (r - 1.0) / (r + 1.0)
     # nearly circular (Ry/Rx − 1 < 1e-4): F(ρ) cancels 0/0 in floating point; κ = (Ry/Rx)^(2/3)
     # is the leading-order solution there (relative error O((r − 1)²) < 1e-8)
@@ -164,6 +170,12 @@ def _check(name, v, positive=True):
     if v.size and not ((v.min() > 0 if positive else v.min() > -np.inf) and v.max() < np.inf):   # NaN fails
         raise InputError(name, v, "must be finite and > 0")
     return v
+
+
+def _size(a_Ry, b_Rx):
+    """The Hertz size limit (:data:`thermobear.validity.LIMITS` ``hertz_size``): a/Ry and b/Rx."""
+    rel = np.maximum(a_Ry, b_Rx)
+    check("hertz_size", rel, "Q, Rx, Ry, E_prime", what="semi-axes a/Ry, b/Rx")
 
 
 def hertz(Q, Rx, Ry, E_prime, method: str = "exact") -> HertzContact:
@@ -212,11 +224,20 @@ def hertz(Q, Rx, Ry, E_prime, method: str = "exact") -> HertzContact:
     if Q.size and not (Q.min() >= 0 and Q.max() < np.inf):                  # NaN fails both
         raise InputError("Q", Q, "normal load must be finite and >= 0 [N]")
     Rx, Ry, E_prime = _check("Rx", Rx), _check("Ry", Ry), _check("E_prime", E_prime)
+    try:
+        np.broadcast_shapes(Q.shape, Rx.shape, Ry.shape, E_prime.shape)
+    except ValueError:
+        raise InputError("Q, Rx, Ry, E_prime", f"shapes {Q.shape}, {Rx.shape}, {Ry.shape}, {E_prime.shape}",
+                         "must broadcast together (numpy rules)") from None
     swap = Ry < Rx
     any_swap = bool(swap.any())
     r_big, r_small = (np.where(swap, Rx, Ry), np.where(swap, Ry, Rx)) if any_swap else (Ry, Rx)
-    ratio = r_big / r_small
-    R = 1.0 / (1.0 / Rx + 1.0 / Ry)
+    with np.errstate(over="ignore"):
+        ratio = r_big / r_small                           # inf: refused next
+    if ratio.size and not ratio.max() <= RATIO_MAX:
+        raise InputError("Rx, Ry", ratio, f"the larger over the smaller radius must be <= {RATIO_MAX:g} "
+                         "(beyond, the ellipticity is not determined in double precision: ellipticity)")
+    R = r_small / (1.0 + 1.0 / ratio)                     # 1/(1/Rx + 1/Ry), without overflow
     if method == "exact":
         kappa = ellipticity(ratio)
         m = 1.0 - 1.0 / kappa**2
@@ -229,20 +250,28 @@ def hertz(Q, Rx, Ry, E_prime, method: str = "exact") -> HertzContact:
         kappa = ratio ** (2.0 / np.pi)
         Ee = 1.0 + (np.pi / 2.0 - 1.0) / ratio
         Ek = np.pi / 2.0 + (np.pi / 2.0 - 1.0) * np.log(ratio)
-    a_big = np.cbrt(6.0 * kappa**2 * Ee * Q * R / (np.pi * E_prime))
-    a_small = np.cbrt(6.0 * Ee * Q * R / (np.pi * kappa * E_prime))
-    if method == "houpert":
-        W = Q / (E_prime * r_small**2)
-        a_big = 1.3085 * r_small * ratio**0.4091 * np.cbrt(W)
-        a_small = 1.1502 * r_small * ratio**-0.1876 * np.cbrt(W)
-    K = np.pi * kappa * E_prime * np.sqrt(2.0 * Ee * R / (9.0 * Ek**3))
-    delta = (Q / K) ** (2.0 / 3.0)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        p_max = np.where(Q > 0, 1.5 * Q / (np.pi * a_big * a_small), 0.0)
+    # a = c Q^(1/3) with the load-free coefficients c, each factor a cube root of its own: a load near
+    # zero or a modulus at the edge of the float range gives a tiny or huge contact, never 0 × ∞
+    q = np.cbrt(Q)
+    with np.errstate(over="ignore", divide="ignore", invalid="ignore"):    # beyond the float range: refused below
+        if method == "houpert":                       # W^(1/3) = (Q/(E' r_small²))^(1/3)
+            w = r_small / (np.cbrt(E_prime) * np.cbrt(r_small) ** 2)
+            c_big, c_small = 1.3085 * ratio**0.4091 * w, 1.1502 * ratio**-0.1876 * w
+        else:
+            rE = np.cbrt(R / np.pi) / np.cbrt(E_prime)
+            c_big, c_small = np.cbrt(6.0 * kappa**2 * Ee) * rE, np.cbrt(6.0 * Ee / kappa) * rE
+        a_big, a_small = c_big * q, c_small * q
+        K = np.pi * kappa * E_prime * np.sqrt(2.0 * Ee * R / (9.0 * Ek**3))
+        delta = (q / np.cbrt(K)) ** 2                 # (Q/K)^(2/3)
+        p_max = 1.5 / np.pi * (q / c_big) / c_small   # 3Q/(2π a b)
     if any_swap:
         a, b, kappa = np.where(swap, a_small, a_big), np.where(swap, a_big, a_small), np.where(swap, 1.0 / kappa, kappa)
     else:
         a, b = a_big, a_small
+    _size(a / Ry, b / Rx)
+    if not all(np.all(np.isfinite(v)) for v in (K, delta, p_max)):
+        raise InputError("Q, Rx, Ry, E_prime", E_prime, "the contact's stiffness, approach or pressure exceeds "
+                         "the floating-point range: the modulus or the radii are beyond any solid's")
     return HertzContact(*(_f(v) for v in (a, b, delta, p_max, kappa,
                                           K, Ek, Ee, R)))
 

@@ -12,6 +12,7 @@ import numpy as np
 
 from thermobear.errors import ExtrapolationWarning, InputError
 from thermobear.arrays import take
+from thermobear.loads.api import check_contacts, groove_angle, loads_text
 from thermobear.validity import LIMITS, P_MAX_REFUSE_PA, check, collect
 
 __all__ = ["p_max_Pa", "contact_pressure", "overloads", "point_warnings", "family_warnings", "emit"]
@@ -44,19 +45,27 @@ def contact_pressure(contacts, field: str = "operation (Fa_N, Fr_N, M_Nm)", warn
 
 
 def overloads(scenes, contacts) -> dict:
-    """Points whose loads the contacts cannot carry: index → InputError naming the loads (the
-    maximum contact pressure beyond :data:`thermobear.validity.P_MAX_REFUSE_PA`, twice the ISO 76
-    static rating load), for a contact set over the points of ``scenes``."""
-    p = np.stack([np.asarray(p_max_Pa(contacts.sides[s]["Q"], contacts.sides[s]["a"], contacts.sides[s]["b"]), float)
-                  .reshape(len(scenes), -1).max(axis=1) for s in ("inner", "outer")])
+    """Points whose loads the contacts cannot carry: index → InputError naming the loads, for a contact
+    set over the points of ``scenes``: the maximum contact pressure beyond
+    :data:`thermobear.validity.P_MAX_REFUSE_PA` (twice the ISO 76 static rating load) or a contact ellipse
+    past its groove's equator (:func:`thermobear.loads.check_contacts`, the messages made only for the
+    points outside)."""
+    B, brg = len(scenes), scenes[0].bearing
+    sides = {s: contacts.sides[s] for s in ("inner", "outer")}
+    p = np.stack([np.asarray(p_max_Pa(sides[s]["Q"], sides[s]["a"], sides[s]["b"]), float).reshape(B, -1).max(axis=1)
+                  for s in sides])
+    theta = np.stack([np.reshape(np.where(np.asarray(sides[s]["Q"]) > 0,
+                                          groove_angle(brg, sides[s]["alpha"], sides[s]["a"], f), 0.0), (B, -1)).max(axis=1)
+                      for s, f in (("inner", brg.fi), ("outer", brg.fo))])
     out = {}
-    for b in np.flatnonzero(p.max(axis=0) > P_MAX_REFUSE_PA):
-        sc, side = scenes[b], ("inner", "outer")[int(np.argmax(p[:, b]))]
-        loads = f"Fa {sc.Fa:g} N, Fr {sc.Fr:g} N" + (f", M {sc.M:g} N m" if sc.M is not None else "")
-        out[int(b)] = InputError("operation (Fa_N, Fr_N, M_Nm)", loads,
-                                 f"more than the contacts can carry: maximum contact pressure {p[:, b].max() / 1e6:.4g} MPa "
-                                 f"at the {side} contacts > {P_MAX_REFUSE_PA / 1e6:.4g} MPa, twice the ISO 76 static "
-                                 f"rating load ({sc.bearing.name})")
+    for b in np.flatnonzero((p.max(axis=0) > P_MAX_REFUSE_PA) | (theta.max(axis=0) > LIMITS["contact_angle"].refuse[1])):
+        sc = scenes[b]
+        one = {s: {k: np.reshape(sides[s][k], (B, -1))[b] for k in ("Q", "alpha", "a", "b")} for s in sides}
+        try:
+            check_contacts(sc.bearing, one, "operation (Fa_N, Fr_N, M_Nm)", given=loads_text(sc.Fa, sc.Fr, sc.M)
+                           + f" ({sc.bearing.name})")
+        except InputError as exc:
+            out[int(b)] = exc
     return out
 
 

@@ -25,10 +25,10 @@ from thermobear.loads import LoadDistribution, axial_contact_angle, load_distrib
 from thermobear.loads.film import film_load_distribution
 from thermobear.loads.highspeed import load_distribution_high_speed
 from thermobear.losses import ContactSet, prepare_contacts
-from thermobear.models import plan, refuse_unloaded_thrust
+from thermobear.models import DryRow, plan, refuse_unloaded_thrust
 from thermobear.scene import Scene
 
-__all__ = ["Family", "families", "film_temperature_C", "closed_form_axial", "stack_loads", "family_loads",
+__all__ = ["Family", "families", "dry_loads", "film_temperature_C", "closed_form_axial", "stack_loads", "family_loads",
            "family_contacts", "scene_load", "scene_contacts", "film_scene_load"]
 
 
@@ -83,6 +83,14 @@ def stack_loads(loads) -> LoadDistribution:
     return LoadDistribution(**fields)
 
 
+def dry_loads(dry) -> LoadDistribution:
+    """The batched dry load distribution of points whose model choice solved it (:class:`DryRow` s
+    of one batch: one slice; otherwise stacked point by point)."""
+    if all(isinstance(d, DryRow) for d in dry) and len({id(d.batch) for d in dry}) == 1:
+        return take(dry[0].batch, np.array([d.row for d in dry]), dry[0].B)
+    return stack_loads([d.load() if isinstance(d, DryRow) else d for d in dry])
+
+
 @dataclass(frozen=True)
 class Family:
     """Operating points that share everything but numbers (see the module docstring).
@@ -92,7 +100,8 @@ class Family:
     scenes : tuple           the B scenes
     index : tuple            their positions in the caller's list
     models : dict            the shared model choices (model → (choice, reason) of the first point)
-    dry : tuple              per point, the dry load distribution the model choice solved (or None)
+    dry : tuple              per point, the dry load distribution the model choice solved
+                             (:class:`~thermobear.models.DryRow`, a LoadDistribution or None)
     """
 
     scenes: tuple
@@ -206,7 +215,7 @@ def family_loads(fam: Family, T_film_C=None) -> LoadDistribution:
         T = np.array([film_temperature_C(s) for s in fam.scenes]) if T_film_C is None else np.asarray(T_film_C, float)
         return film_loads(sc, m, Fa, Fr, M, fam.values("n_rpm"), T, fam.lubricant)
     if all(d is not None for d in fam.dry):
-        return stack_loads(fam.dry)
+        return dry_loads(fam.dry)
     stiff = sc.models.get("stiffness", "nominal")
     if m["high_speed"][0] == "yes":
         return load_distribution_high_speed(sc.bearing, Fa=Fa, Fr=Fr, M=M, n_rpm=fam.values("n_rpm"), stiffness=stiff)

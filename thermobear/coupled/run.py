@@ -6,11 +6,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from thermobear.coupled.blend import blend_losses
 from thermobear.coupled.limits import emit, point_warnings
 from thermobear.coupled.sources import scene_losses
 from thermobear.coupled.steady import SteadyState, steady_state
-from thermobear.scene import Scene
 from thermobear.errors import OutsideValidity
+from thermobear.models import plan_many
+from thermobear.scene import Scene
 
 __all__ = ["RunResult", "solve"]
 
@@ -90,9 +92,14 @@ def solve(scene: Scene) -> RunResult:
     (True, True)
     """
     if scene.T_C is not None:
+        alts = plan_many([scene])[0]
+        if isinstance(alts, Exception):
+            raise alts
         with warnings.catch_warnings():        # the answer's validity: point_warnings below
             warnings.simplefilter("ignore", OutsideValidity)
-            r = scene_losses(scene)         # the model choice's dry loads are the loads (solved once)
+            # the model choice's dry loads are the loads (solved once); across a switch, the blend
+            r = blend_losses([(a.weight, scene_losses(scene, models=a.models, dry=None if a.dry is None else a.dry.load()))
+                              for a in alts])
         T = float(scene.T_C)
         ws = point_warnings(scene, r, [T, T, T])
         emit(ws)
@@ -101,6 +108,5 @@ def solve(scene: Scene) -> RunResult:
                          T_C={"contacts (prescribed)": T}, models_used=r.models_used, losses=r,
                          warnings=ws)
     st = steady_state(scene)
-    return RunResult(scene=scene, P_W=st.P_W, torque_Nm=float(st.losses.torque_Nm),
-                     breakdown_W={k: float(v) for k, v in st.losses.breakdown_W.items()}, T_C=st.T_C,
+    return RunResult(scene=scene, P_W=st.P_W, torque_Nm=st.torque_Nm, breakdown_W=dict(st.breakdown_W), T_C=st.T_C,
                      models_used=st.models_used, losses=st.losses, steady=st, warnings=st.warnings)

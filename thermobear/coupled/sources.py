@@ -1,17 +1,21 @@
 r"""The losses as heat sources of the thermal network, and the network at a family's operating points.
 
-The losses of a bearing depend on three temperatures only — the inner and the outer contact
-temperature, each the mean of the ball and race nodes (seed 004 §4.5), and the oil–air mixture
-temperature (drag).  A loss source gives, at these coupled temperatures x [°C] of B operating
-points, the three parts P = (inner contacts, outer contacts, drag) [W]; the network receives ½ of
-each contact loss at the ball node and ½ at the race node (Pouly et al. 2010), drag at the
-mixture node (:func:`thermobear.thermal.split_losses`).  Two sources:
+The losses of a bearing depend on a few temperatures only — the inner and the outer contact
+temperature, each the mean of the ball and race nodes (seed 004 §4.5), the oil–air mixture
+temperature (drag) and, where a scene has them, the bath (churning) and the cage (land friction)
+temperatures.  A loss source gives, at these coupled temperatures x [°C] of B operating points, its
+loss **parts** [W] — (inner contacts, outer contacts, drag) and, where chosen, churning, seal and cage
+(:data:`PARTS`, :func:`loss_parts`); the network receives ½ of each contact loss at the ball node and
+½ at the race node (Pouly et al. 2010), drag at the mixture node, churning at the bath, seal friction
+at the seal (or the inner ring), cage losses at the cage (or the mixture) (:class:`Coupling`).  Two
+sources:
 
 * :class:`LocalSources` — the local contact model (:func:`thermobear.losses.evaluate_losses`);
-  each part depends on its own temperature only (the inner contacts on x_inner, …), so ∂P/∂x is
-  diagonal;
+  each part depends on its own temperature only (the inner contacts on x_inner, …; the seal on
+  none), so ∂P/∂x is diagonal;
 * :class:`SKFSources` — the SKF 2004 global model at the mean bearing temperature ½(x_inner +
-  x_outer) (¼ of the contact losses to each race, ½ to the balls), drag to the mixture.
+  x_outer) (¼ of the contact losses to each race, ½ to the balls), its oil-bath drag (SKF 2018 form)
+  as churning, its seal moment as the seal part.
 """
 from __future__ import annotations
 
@@ -22,9 +26,12 @@ import numpy as np
 
 from thermobear.errors import InputError
 from thermobear.losses import ContactSet, LossResult, evaluate_losses
+from thermobear.losses.cage import CageLand
 from thermobear.losses.drag import oil_volume_fraction_parker
-from thermobear.losses.skf import skf_friction
-from thermobear.models import plan, refuse_unloaded_thrust
+from thermobear.losses.seals import seal_friction
+from thermobear.losses.skf import SKF_BREAKDOWN_KEYS, skf_friction
+from thermobear.models import (added_losses, cage_land, film_options, oil_level, plan, refuse_unloaded_thrust,
+                               seal_diameter_mm)
 from thermobear.coupled.limits import overloads
 from thermobear.coupled.pipeline import Family, scene_contacts
 from thermobear.scene import Scene
@@ -32,17 +39,56 @@ from thermobear.scene.network import network_spec
 from thermobear.thermal import ROLES, NetworkTemplate, ThermalNetwork, prepare_network
 from thermobear.validity import T_LUBRICANT_REFUSE_C
 
-__all__ = ["LocalSources", "SKFSources", "SKFLosses", "Coupling", "PARTS", "TEMPERATURES", "DEFAULT_PARTS", "loss_sources", "network_template",
-           "family_network", "network_context", "scene_losses", "skf_losses", "Prepared", "prepare",
-           "prepared_for"]
+__all__ = ["LocalSources", "SKFSources", "SKFLosses", "Coupling", "PARTS", "TEMPERATURES", "DEFAULT_PARTS",
+           "loss_parts", "coupled_temperatures", "loss_sources", "network_template", "family_network",
+           "network_context", "scene_losses", "skf_losses", "Prepared", "prepare", "prepared_for"]
 
 _SKF_MU_EHL = {"mineral": "mineral", "PAO": "synthetic", "ester": "synthetic", "ester+vegetal": "synthetic"}
+#: part → the loss family (``breakdown_W`` key) that a source reports for it (contact parts aside)
+_PART_FAMILY = {"drag": "drag", "churning": "churning", "seal": "seal", "cage": "cage"}
 
 
 def _clip(x_C):
     """Coupled temperatures [°C] held inside the lubricant's accepted range: an iterate may overshoot;
     an equilibrium beyond the limit is reported as runaway by the solver."""
     return np.clip(x_C, *T_LUBRICANT_REFUSE_C)
+
+
+def _through_flow(fam: Family) -> np.ndarray:
+    """(B,) oil flow through the bearing [m³/s]: the supplied jet flow × the share that enters it
+    (``lubricant.jet_penetration``, seed 004 §4.5's β) — the W of Parker's oil fraction
+    (:func:`thermobear.losses.drag.oil_volume_fraction_parker`)."""
+    return fam.values("oil_flow") * fam.values("jet_penetration")
+
+
+def _one(values: np.ndarray):
+    """One float when every point shares the value, else the (B,) array."""
+    return float(values[0]) if np.all(values == values[0]) else values
+
+
+def _chosen(models: dict, key: str) -> bool:
+    return bool(models.get(key, (False,))[0])
+
+
+def _added_local(scenes, models: dict) -> dict:
+    """:func:`~thermobear.losses.evaluate_losses` keywords of the churning, seal and cage terms the models
+    chose, per point of ``scenes`` (one value when they share it)."""
+    sc, kw = scenes[0], {}
+    if _chosen(models, "churning"):
+        kw["oil_level_m"] = _one(np.array([oil_level(s)[0] for s in scenes], float))
+    if _chosen(models, "seals"):
+        kw["seal_torque_Nm"] = _one(np.array([_seal(s).M_Nm for s in scenes], float))
+    if _chosen(models, "cage"):
+        land = cage_land(sc)[0]
+        kw["cage"] = CageLand(mu_pocket=_one(np.array([s.mu_full_film for s in scenes], float)),
+                              guide_rotates=sc.cage == f"{sc.rotating}_ring", **land)
+    return kw
+
+
+def _seal(scene: Scene):
+    """The scene's seal friction (SKF 2004; :func:`thermobear.losses.seals.seal_friction`) at 1 rpm (its moment)."""
+    b = scene.bearing
+    return seal_friction(scene.seals, b.kind, b.outer_diameter * 1e3, seal_diameter_mm(scene)[0], 1.0, scene.seal_sides)
 
 
 class LocalSources:
@@ -53,26 +99,33 @@ class LocalSources:
     def __init__(self, fam: Family, contacts: ContactSet):
         self.fam, self.contacts, self.lubricant = fam, contacts, fam.lubricant
         sc = fam.scene
-        flow = fam.values("oil_flow")
-        flow = float(flow[0]) if np.all(flow == flow[0]) else flow      # one value when the points share it
-        per = {k: fam.values(k) for k in ("Rq_ball", "Rq_ring", "mu_boundary", "mu_full_film")}
-        per = {k: float(v[0]) if np.all(v == v[0]) else v[:, None, None] for k, v in per.items()}  # per contact
-        self.kw = dict(supply=sc.supply, oil_flow_m3_s=flow, **per,
-                       rolling_model=fam.models["rolling"][0], drag=bool(fam.models["drag"][0]))
+        per = {k: _one(fam.values(k)) for k in ("Rq_ball", "Rq_ring", "mu_boundary", "mu_full_film")}
+        per = {k: v if np.ndim(v) == 0 else v[:, None, None] for k, v in per.items()}   # per point: (B, 1, 1)
+        self.kw = dict(supply=sc.supply, oil_flow_m3_s=_one(_through_flow(fam)), **per,
+                       rolling_model=fam.models["rolling"][0], drag=bool(fam.models["drag"][0]),
+                       **film_options(fam.models), **_added_local(fam.scenes, fam.models))
+        self.parts_ = loss_parts(fam.models)
+        temps = coupled_temperatures(self.parts_)
+        self.k_bath = temps.index("bath") if "bath" in temps else 2
+        self.k_cage = temps.index("cage") if "cage" in temps else 2
 
     def result(self, x_C) -> LossResult:
-        """Losses at coupled temperatures x (B, 3) [°C] (inner contact, outer contact, oil)."""
+        """Losses at coupled temperatures x (B, n_x) [°C] (inner contact, outer contact, oil, then bath
+        and cage where the parts read them)."""
         x = _clip(np.asarray(x_C, float))
         return evaluate_losses(self.contacts, self.lubricant, x[..., 2], T_inner_C=x[..., 0],
-                               T_outer_C=x[..., 1], T_oil_C=x[..., 2], **self.kw)
+                               T_outer_C=x[..., 1], T_oil_C=x[..., 2], T_bath_C=x[..., self.k_bath],
+                               T_cage_C=x[..., self.k_cage], **self.kw)
 
     def parts(self, x_C) -> np.ndarray:
-        """(..., B, 3) inner contacts, outer contacts, drag [W] at coupled temperatures (..., B, 3) [°C]
-        (every leading state in one evaluation)."""
-        r = self.result(x_C)
-        shape = np.shape(x_C)[:-1]
-        return np.stack([np.broadcast_to(r.contact_W["inner"], shape), np.broadcast_to(r.contact_W["outer"], shape),
-                         np.broadcast_to(r.breakdown_W["drag"], shape)], axis=-1)
+        """(..., B, n_parts) loss parts [W] (:func:`loss_parts`, in that order) at coupled temperatures
+        (..., B, n_x) [°C] (every leading state in one evaluation)."""
+        return self.parts_of(self.result(x_C), np.shape(x_C)[:-1])
+
+    def parts_of(self, r: LossResult, shape) -> np.ndarray:
+        """The loss parts (``shape`` + (n_parts,)) [W] of a result of :meth:`result`."""
+        cols = [r.contact_W[p] if p in ("inner", "outer") else r.breakdown_W[_PART_FAMILY[p]] for p in self.parts_]
+        return np.stack([np.broadcast_to(c, shape) for c in cols], axis=-1)
 
 
 @dataclass
@@ -88,6 +141,18 @@ class SKFLosses:
     contacts: dict = field(default_factory=dict)
 
 
+def _added_skf(scenes, models: dict) -> dict:
+    """:func:`skf_losses` keywords: the oil level [mm] (churning chosen) and the seal moment [N mm]."""
+    kw = {}
+    if _chosen(models, "churning"):
+        kw["H_mm"] = _one(np.array([oil_level(s)[0] * 1e3 for s in scenes], float))
+    elif scenes[0].supply == "oil_bath":          # level 0, not given or churning switched off: no drag term
+        kw["H_mm"] = 0.0
+    if _chosen(models, "seals"):
+        kw["M_seal_Nmm"] = _one(np.array([_seal(s).M_Nm * 1e3 for s in scenes], float))
+    return kw
+
+
 class SKFSources:
     """The SKF 2004 global model as the network's heat sources (see the module docstring)."""
 
@@ -98,44 +163,62 @@ class SKFSources:
         sc = fam.scene
         if sc.bearing.kind == "thrust" and not np.all(fam.values("Fa") > 0):
             refuse_unloaded_thrust(float(np.min(fam.values("Fa"))))
+        self.parts_ = loss_parts(fam.models)
+        self.added = _added_skf(fam.scenes, fam.models)
 
     def result(self, x_C) -> SKFLosses:
-        """Losses at coupled temperatures x (B, 3) [°C]: the model at ½(x_inner + x_outer)."""
+        """Losses at coupled temperatures x (B, n_x) [°C]: the model at ½(x_inner + x_outer)."""
         x = _clip(np.asarray(x_C, float))
         return skf_losses(self.fam.scene, 0.5 * (x[..., 0] + x[..., 1]), self.fam.models,
                           n_rpm=self.fam.values("n_rpm"), Fa=self.fam.values("Fa"), Fr=self.fam.values("Fr"),
-                          lubricant=self.lubricant)
+                          lubricant=self.lubricant, **self.added)
 
     def parts(self, x_C) -> np.ndarray:
         x = np.asarray(x_C, float)
         if x.ndim == 2:
-            r = self.result(x)
-            c = np.asarray(r.P_W, float) - np.asarray(r.breakdown_W["drag"], float)
-            return np.stack([0.5 * c, 0.5 * c, np.asarray(r.breakdown_W["drag"], float) + 0.0 * c], axis=-1)
+            return self.parts_of(self.result(x), x.shape[:-1])
         return np.stack([self.parts(xk) for xk in x])
 
+    def parts_of(self, r: SKFLosses, shape) -> np.ndarray:
+        """The loss parts (``shape`` + (n_parts,)) [W] of a result of :meth:`result`: ½ of the rolling and
+        sliding moments' power to each contact side, the other terms to their parts."""
+        bd = {k: np.asarray(v, float) for k, v in r.breakdown_W.items()}
+        c = bd["rolling"] + bd["sliding"]
+        cols = [0.5 * c if p in ("inner", "outer") else bd[_PART_FAMILY[p]] + 0.0 * c for p in self.parts_]
+        return np.stack([np.broadcast_to(v, shape) for v in cols], axis=-1)
 
-def skf_losses(scene: Scene, T_C, models: dict, *, n_rpm=None, Fa=None, Fr=None, lubricant=None) -> SKFLosses:
+
+def skf_losses(scene: Scene, T_C, models: dict, *, n_rpm=None, Fa=None, Fr=None, H_mm=None, M_seal_Nmm=None,
+               lubricant=None) -> SKFLosses:
     """SKF 2004 global model for a scene at bearing temperature ``T_C`` [°C] (viscosity of the (base)
-    oil there); ``n_rpm``, ``Fa``, ``Fr`` may override the scene's with arrays, ``lubricant`` its
-    lubricant (values per point: :attr:`~thermobear.coupled.pipeline.Family.lubricant`).  Calibrated constants
-    from ``[models] skf_R1, skf_S1, skf_mu_EHL``.  Heat split for the network: ½ to the balls, ¼ to
-    each ring (the equal split of the contact losses); drag to the oil."""
+    oil there); ``n_rpm``, ``Fa``, ``Fr`` may override the scene's with arrays, ``H_mm`` [mm] and
+    ``M_seal_Nmm`` [N mm] the oil level and seal moment (default: the scene's, as the models chose),
+    ``lubricant`` its lubricant (values per point: :attr:`~thermobear.coupled.pipeline.Family.lubricant`).
+    Calibrated constants from ``[models] skf_R1, skf_S1, skf_mu_EHL``.  Breakdown: rolling, sliding,
+    drag (0: no oil–air term in the model), churning (its oil-bath drag, SKF 2018 form with V_M at
+    H/dm), seal.  Heat split for the network: ½ of rolling + sliding to the balls, ¼ to each ring;
+    churning to the bath, seal friction to the seal."""
     m = scene.models
     n = scene.n_rpm if n_rpm is None else n_rpm
     Fa, Fr = (scene.Fa if Fa is None else Fa), (scene.Fr if Fr is None else Fr)
     if scene.bearing.kind == "thrust" and not np.all(np.asarray(Fa) > 0):
         refuse_unloaded_thrust(float(np.min(Fa)))
+    if H_mm is None and M_seal_Nmm is None:
+        added = _added_skf([scene], models)
+        H_mm, M_seal_Nmm = added.get("H_mm"), added.get("M_seal_Nmm")
     lub = "grease" if scene.supply == "grease" else scene.supply
     base = _SKF_MU_EHL.get(getattr(scene.lubricant, "base_oil", "mineral"), "mineral")
     oil = scene.lubricant if lubricant is None else lubricant
     r = skf_friction(scene.bearing, oil.nu(T_C), n, Fa, Fr, lubrication=lub, R1=m.get("skf_R1"),
-                     S1=m.get("skf_S1"), mu_EHL=m.get("skf_mu_EHL"), base_oil=base)
+                     S1=m.get("skf_S1"), mu_EHL=m.get("skf_mu_EHL"), base_oil=base, H_mm=H_mm,
+                     M_seal_Nmm=0.0 if M_seal_Nmm is None else M_seal_Nmm)
     w = np.asarray(n, float) * np.pi / 30.0
-    bd = {"rolling": r.M_rr * w, "sliding": r.M_sl * w, "drag": r.M_drag * w, "seal": r.M_seal * w}
+    bd = {"rolling": r.M_rr * w, "sliding": r.M_sl * w, "drag": 0.0 * r.M_drag * w, "churning": r.M_drag * w,
+          "seal": r.M_seal * w}
     P = r.P_W
-    contact = P - bd["drag"]
-    heat = {"inner_ring": 0.25 * contact, "outer_ring": 0.25 * contact, "balls": 0.5 * contact, "oil": bd["drag"]}
+    contact = bd["rolling"] + bd["sliding"]
+    heat = {"inner_ring": 0.25 * contact, "outer_ring": 0.25 * contact, "balls": 0.5 * contact, "oil": bd["drag"],
+            "bath": bd["churning"], "seal": bd["seal"]}
     used = dict(models)
     used["losses"] = ("skf", f"SKF 2004 global model (R1 {m.get('skf_R1', 'catalogue')}, S1 {m.get('skf_S1', 'catalogue')})")
     return SKFLosses(P_W=P, torque_Nm=r.M_total, breakdown_W=bd, heat_W=heat, skf=r, models_used=used)
@@ -174,7 +257,7 @@ def network_context(fam: Family, contacts: ContactSet | None = None) -> dict:
     T_in = fam.values("T_oil_in_C")
     scene = {"n_rpm": n, "T_ambient_C": fam.values("T_ambient_C"),
              "T_oil_in_C": np.where(np.isnan(T_in), fam.values("T_ambient_C"), T_in),
-             "oil_flow_m3_s": fam.values("oil_flow")}
+             "oil_flow_m3_s": fam.values("oil_flow"), "jet_penetration": fam.values("jet_penetration")}
     for key in sc.network_parameters:
         if "." not in key:
             scene[key] = np.array([s.network_parameters[key] for s in fam.scenes], float)
@@ -200,7 +283,7 @@ def _oil_fraction(fam: Family, n_rpm) -> np.ndarray:
     0 otherwise (the drag model's choices, :func:`thermobear.losses.evaluate_losses`)."""
     sc = fam.scene
     if sc.supply == "oil_jet":
-        W = fam.values("oil_flow") * 1e6 * 60.0
+        W = _through_flow(fam) * 1e6 * 60.0
         run = n_rpm > 0
         X = np.zeros(n_rpm.shape)
         if run.any():
@@ -216,21 +299,48 @@ def family_network(fam: Family, template: NetworkTemplate, contacts: ContactSet 
 
 
 #: The coupled temperatures the loss models read, each the mean of role nodes (role → weight): a contact
-#: reads the mean of its ball and race nodes (seed 004 §4.5), drag the oil–air mixture.  A new loss
-#: part that reads another temperature adds its entry here (after these three: their order is fixed).
+#: reads the mean of its ball and race nodes (seed 004 §4.5), drag the oil–air mixture, churning the
+#: bath, the cage's land friction the cage.  A new loss part that reads another temperature adds its
+#: entry here (after the first three: their order is fixed).
 TEMPERATURES = {"inner": {"ball": 0.5, "inner": 0.5},
                 "outer": {"ball": 0.5, "outer": 0.5},
-                "oil": {"oil": 1.0}}
+                "oil": {"oil": 1.0},
+                "bath": {"bath": 1.0},
+                "cage": {"cage": 1.0}}
 
 #: The loss parts a source reports: part → (heat split, role → fraction summing to 1; the coupled
 #: temperature it reads).  Each contact loss goes ½ to the ball and ½ to its race (Pouly et al.
-#: 2010), drag to the oil–air mixture.
+#: 2010), drag to the oil–air mixture, churning to the bath, seal friction to the seal (SKF's moment
+#: is temperature independent: it "reads" the inner contact temperature, with a zero slope), the cage
+#: loss to the cage.
 PARTS = {"inner": ({"ball": 0.5, "inner": 0.5}, "inner"),
          "outer": ({"ball": 0.5, "outer": 0.5}, "outer"),
-         "drag": ({"oil": 1.0}, "oil")}
+         "drag": ({"oil": 1.0}, "oil"),
+         "churning": ({"bath": 1.0}, "bath"),
+         "seal": ({"seal": 1.0}, "inner"),
+         "cage": ({"cage": 1.0}, "cage")}
 
 #: The parts every source reports, in this order.
 DEFAULT_PARTS = ("inner", "outer", "drag")
+#: The parts a scene may add (its model choice → part), in this order.
+_ADDED_PARTS = (("churning", "churning"), ("seals", "seal"), ("cage", "cage"))
+
+
+def loss_parts(models: dict) -> tuple:
+    """The loss parts of a scene family: :data:`DEFAULT_PARTS`, then churning, seal and cage where
+    :func:`thermobear.models.choose_models` chose them (``models[...]`` truthy).
+
+    >>> loss_parts({"churning": ("pouly_immersed", ""), "seals": (False, ""), "cage": (False, "")})
+    ('inner', 'outer', 'drag', 'churning')
+    """
+    return DEFAULT_PARTS + tuple(part for key, part in _ADDED_PARTS if _chosen(models, key))
+
+
+def coupled_temperatures(parts: tuple) -> tuple:
+    """The coupled temperatures that ``parts`` read, in the order of x: the first three of
+    :data:`TEMPERATURES`, then the others in the order the parts need them."""
+    first = tuple(TEMPERATURES)[:3]
+    return first + tuple(dict.fromkeys(PARTS[p][1] for p in parts if PARTS[p][1] not in first))
 
 
 @dataclass(frozen=True)
@@ -259,8 +369,7 @@ class Coupling:
         unknown = [p for p in parts if p not in PARTS]
         if unknown:
             raise InputError("parts", unknown, f"loss parts among {', '.join(PARTS)}")
-        temps = tuple(TEMPERATURES)[:3] + tuple(dict.fromkeys(PARTS[p][1] for p in parts
-                                                               if PARTS[p][1] not in tuple(TEMPERATURES)[:3]))
+        temps = coupled_temperatures(tuple(parts))
         needed = dict.fromkeys(r for t in temps for r in TEMPERATURES[t])
         needed.update(dict.fromkeys(r for p in parts for r in PARTS[p][0]))
         free = ~template.fixed
@@ -295,12 +404,13 @@ class Coupling:
 
 
 def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oil_C=None, load=None,
-                 models: dict | None = None, contacts: ContactSet | None = None, n_rpm=None):
+                 models: dict | None = None, contacts: ContactSet | None = None, n_rpm=None, dry=None):
     """Losses of a scene at given temperatures [W] (default: the scene's prescribed T_C): the local
     model (:func:`thermobear.losses.evaluate_losses`) or the SKF model, as the scene's models say.
 
     ``n_rpm`` and the temperatures may be arrays (one operating point each, vectorised; the loads
-    of the scene); ``load`` / ``contacts`` inject a load distribution / prepared contacts.
+    of the scene); ``load`` / ``contacts`` inject a load distribution / prepared contacts; ``dry``
+    is the dry load distribution the model choice ``models`` solved (:func:`~thermobear.models.plan_many`).
 
     >>> import thermobear as tb
     >>> s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
@@ -308,7 +418,6 @@ def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oi
     >>> max(r.breakdown_W, key=r.breakdown_W.get), r.models_used["load_distribution"][0]
     ('rolling', 'Jones–Harris high-speed (centrifugal, gyroscopic)')
     """
-    dry = None
     if models is None:
         models, dry = plan(scene)
     if T_C is None:
@@ -327,9 +436,10 @@ def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oi
         if over:
             raise over[0]
     r = evaluate_losses(cs, scene.lubricant, T_C, T_inner_C=T_inner_C, T_outer_C=T_outer_C, T_oil_C=T_oil_C,
-                        supply=scene.supply, oil_flow_m3_s=scene.oil_flow, Rq_ball=scene.Rq_ball,
+                        supply=scene.supply, oil_flow_m3_s=scene.oil_flow * scene.jet_penetration, Rq_ball=scene.Rq_ball,
                         Rq_ring=scene.Rq_ring, mu_boundary=scene.mu_boundary, mu_full_film=scene.mu_full_film,
-                        rolling_model=models["rolling"][0], drag=bool(models["drag"][0]))
+                        rolling_model=models["rolling"][0], drag=bool(models["drag"][0]), **film_options(models),
+                        **_added_local([scene], models))
     used = dict(r.models_used)
     used.update(models)
     lm, hs = models["load_model"][0], models["high_speed"][0]
@@ -347,10 +457,11 @@ def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oi
 class Prepared:
     """What the thermal solution of a scene family computes once, prepared explicitly and reused for
     any number of operating points (:func:`prepare`): the checked network template with its
-    bearing-level values, and the coupling of losses and nodes.
+    bearing-level values, and the coupling of losses and nodes (with the loss parts the scene's models
+    add: churning, seal, cage; :func:`loss_parts`).
 
-    It serves the scenes that share its network file, parameter overrides, imposed node names and
-    bearing (:meth:`serves`); the solvers refuse it for another scene.
+    It serves the scenes that share its network file, parameter overrides, imposed node names, loss
+    parts and bearing (:meth:`serves`); the solvers refuse it for another scene.
     """
 
     key: tuple
@@ -365,7 +476,7 @@ class Prepared:
 
 def _prepared_key(scene: Scene) -> tuple:
     return (scene.network, scene.path, tuple(sorted((k, v) for k, v in scene.network_parameters.items() if "." in k)),
-            tuple(sorted(scene.T_fixed_C)))
+            tuple(sorted(scene.T_fixed_C)), loss_parts(added_losses(scene)))
 
 
 def prepare(scene: Scene) -> Prepared:
@@ -380,7 +491,8 @@ def prepare(scene: Scene) -> Prepared:
     if scene.network is None:
         raise InputError("thermal.network", None, "a scene with a thermal network (no network: nothing to prepare)")
     template = network_template(scene, fixed_placeholders=True)
-    return Prepared(key=_prepared_key(scene), bearing=scene.bearing, template=template, coupling=Coupling.of(template))
+    return Prepared(key=_prepared_key(scene), bearing=scene.bearing, template=template,
+                    coupling=Coupling.of(template, parts=loss_parts(added_losses(scene))))
 
 
 def prepared_for(scene: Scene, prepared=None) -> Prepared:

@@ -30,12 +30,14 @@ closes to machine precision, and their coupled temperatures are checked against 
 """
 from __future__ import annotations
 
+import dataclasses
 import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from thermobear.arrays import take
+from thermobear.coupled.blend import blend_states
 from thermobear.coupled.fixedpoint import solve_coupled
 from thermobear.coupled.pipeline import (Family, families, family_contacts, family_loads, film_temperature_C,
                                         split_failures)
@@ -43,6 +45,7 @@ from thermobear.coupled.limits import emit, family_warnings, overloads
 from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepared_for
 from thermobear.errors import (ExtrapolationWarning, InputError, NoConvergence, OutsideValidity, SolverError,
                                ThermalRunaway)
+from thermobear.loads.api import check_loads, contact_bounds
 from thermobear.models import plan_many
 from thermobear.scene import Scene
 from thermobear.thermal.solve import batched_solve, solve_linear
@@ -54,6 +57,7 @@ _C0 = 273.15
 T_LIMIT_K = T_LUBRICANT_REFUSE_C[1] + _C0     #: an equilibrium beyond the lubricant's limit is runaway
 _FILM_TOL_K = 0.1                              #: film temperature fixed point tolerance [K]
 _FILM_MAXITER = 10
+_SCENE_LOADS = ("operation.Fa_N", "operation.Fr_N", "operation.M_Nm", "operation.n_rpm")
 
 
 @dataclass
@@ -65,7 +69,10 @@ class SteadyState:
     T_C : dict                node → temperature [°C]
     T_ball_C : float          ball temperature [°C]
     P_W : float               total power loss [W]
-    losses : LossResult       losses at equilibrium (the SKF model: its result)
+    losses : LossResult       losses at equilibrium (the SKF model: its result), a property
+    torque_Nm : float         friction torque on the rotating ring [N m]
+    breakdown_W : dict        loss family → power [W]
+    T_contacts_C : float      mean contact temperature [°C] (ball with each race)
     iterations : int          fixed-point iterations
     residual_K : float        last temperature change [K]
     energy_balance_W : float  Σ sources − Σ heat to fixed nodes and the oil stream [W]
@@ -79,7 +86,6 @@ class SteadyState:
     T_C: dict
     T_ball_C: float
     P_W: float
-    losses: object
     iterations: int
     residual_K: float
     energy_balance_W: float
@@ -88,6 +94,40 @@ class SteadyState:
     history: list = field(default_factory=list)
     roles: dict = field(default_factory=dict)
     warnings: list = field(default_factory=list)
+    torque_Nm: float = 0.0
+    breakdown_W: dict = field(default_factory=dict)
+    T_contacts_C: float = 0.0
+    batch_losses: object = field(default=None, repr=False)
+    row: int | None = None
+
+    @property
+    def losses(self):
+        """The losses at equilibrium (:class:`~thermobear.losses.LossResult`; the SKF model: its
+        result): this point's slice of its family's batched result, taken when asked for."""
+        if self.row is None:
+            return self.batch_losses
+        return take(self.batch_losses, self.row, np.shape(self.batch_losses.P_W)[0])
+
+
+class _Histories:
+    """Per-point convergence histories of the batched Newton iteration, kept as arrays per iteration
+    and turned into a point's list of dicts only when asked for (most points never are)."""
+
+    def __init__(self, B: int):
+        self.records: list = []            # per iteration: (iteration, points, x [K], step, mean step, P [W])
+        self.explicit: dict = {}           # point → a history given whole (the heating path)
+        self.B = B
+
+    def add(self, it, idx, x, s, mean, P):
+        pos = np.full(self.B, -1)
+        pos[idx] = np.arange(idx.size)
+        self.records.append((it, pos.tolist(), x, s.tolist(), mean.tolist(), P.tolist()))
+
+    def __getitem__(self, b: int) -> list:
+        if b in self.explicit:
+            return self.explicit[b]
+        return [dict(iteration=it, T_K=x[pos[b]].copy(), residual_K=s[pos[b]], mean_residual_K=mean[pos[b]],
+                     P_W=P[pos[b]], step="newton") for it, pos, x, s, mean, P in self.records if pos[b] >= 0]
 
 
 @dataclass
@@ -100,7 +140,7 @@ class _Newton:
     its: np.ndarray          # (B,) iterations
     step: np.ndarray         # (B,) last step [K]
     gain: np.ndarray         # (B,) loop gain
-    history: list            # per point, list of dicts
+    history: object          # per point (indexable), list of dicts
     method: tuple = ()       # per point, how it converged
 
 
@@ -117,9 +157,10 @@ def _slopes(src, cp: Coupling, x_C, h=0.05):
     return Pm[0], np.stack([(Pm[k + 1] - Pm[0]) / h for k in range(n)], axis=-1)
 
 
-def _loop_gain(Aff, S, dP, C):
-    """Largest real eigenvalue of C A_ff⁻¹ S ∂P/∂x per point (B,); NaN where it is not defined."""
-    M = np.einsum("ki,bil->bkl", C, batched_solve(Aff, np.einsum("ik,bkl->bil", S, dP)))
+def _loop_gain(Aff, SdP, C):
+    """Largest real eigenvalue of C A_ff⁻¹ S ∂P/∂x per point (B,) (``SdP`` = S ∂P/∂x, (B, n_free, n_x));
+    NaN where it is not defined."""
+    M = C @ batched_solve(Aff, SdP)
     ok = np.isfinite(M).all(axis=(1, 2))
     out = np.full(M.shape[0], np.nan)
     if ok.any():
@@ -137,7 +178,7 @@ def _newton(net, src, cp: Coupling, tol_K, T0=None, maxiter: int = 30, h: float 
     Tb = T[:, fixed]
     done, bad = np.zeros(B, bool), np.zeros(B, bool)
     its, step, gain = np.zeros(B, int), np.full(B, np.inf), np.full(B, np.nan)
-    hist = [[] for _ in range(B)]
+    hist = _Histories(B)
     dG = None
     for it in range(1, maxiter + 1):
         live = ~(done | bad)
@@ -153,8 +194,9 @@ def _newton(net, src, cp: Coupling, tol_K, T0=None, maxiter: int = 30, h: float 
             G = net.conductances(T)
         Aff, Afb = net.blocks(G)
         Tf = T[:, free]
-        R = np.einsum("bij,bj->bi", Aff, Tf) + np.einsum("bij,bj->bi", Afb, Tb) - P @ cp.S.T
-        J = Aff + net.dAT_free(T, dG) - np.einsum("ik,bkl,lj->bij", cp.S, dP, cp.C)
+        SdP = cp.S @ dP                                          # (B, n_free, n_x)
+        R = (Aff @ Tf[..., None] + Afb @ Tb[..., None])[..., 0] - P @ cp.S.T
+        J = Aff + net.dAT_free(T, dG) - SdP @ cp.C
         dT = batched_solve(J, -R)
         finite = np.isfinite(dT).all(axis=1)
         bad |= live & ~finite
@@ -164,12 +206,11 @@ def _newton(net, src, cp: Coupling, tol_K, T0=None, maxiter: int = 30, h: float 
         # the loop gain at the first iterate, whenever the step does not shrink, and at the answer
         check = live & ((it == 1) | (s >= step) | (s <= tol_K))
         if check.any():
-            gain = np.where(check, _loop_gain(Aff, cp.S, dP, cp.C), gain)
+            gain = np.where(check, _loop_gain(Aff, SdP, cp.C), gain)
         step = np.where(live, s, step)
         dT *= np.minimum(1.0, 50.0 / np.maximum(np.abs(dT).max(axis=1, initial=0.0), 1e-300))[:, None]
-        for b in np.flatnonzero(live):
-            hist[b].append(dict(iteration=it, T_K=x[b].copy(), residual_K=float(s[b]),
-                                mean_residual_K=float(np.mean(cp.C @ dT[b])), P_W=float(P[b].sum()), step="newton"))
+        idx = np.flatnonzero(live)
+        hist.add(it, idx, x[idx], s[idx], (dT[idx] @ cp.C.T).mean(axis=1), P[idx].sum(axis=1))
         T[:, free] = Tf + dT
         its = np.where(live, it, its)
         conv = live & (s <= tol_K)
@@ -208,11 +249,15 @@ def _physical_path(net, src, cp: Coupling, tol_K) -> _Newton:
         res = solve_coupled(update, (state["T"][:, free] @ cp.C.T)[0], tol_K=tol_K, T_limit_K=T_LIMIT_K)
     x = res.T_K[None]
     T = state["T"]
+    hist = _Histories(1)
+    hist.explicit[0] = res.history
     return _Newton(T=T, x=x, done=np.array([True]), its=np.array([res.iterations]), step=np.array([res.residual_K]),
-                   gain=np.array([res.loop_gain]), history=[res.history], method=(res.method,))
+                   gain=np.array([res.loop_gain]), history=hist, method=(res.method,))
 
 
-def _models_used(fam: Family, r, template, cp: Coupling, nw: _Newton, b: int) -> dict:
+def _models_used(fam: Family, r, template, cp: Coupling) -> dict:
+    """The models a family's answers used (shared by its points; the thermal entry per point:
+    :func:`_point_models_used`)."""
     used = dict(getattr(r, "models_used", {}))
     used.update(fam.models)
     lm, hs = fam.models["load_model"][0], fam.models["high_speed"][0]
@@ -225,10 +270,16 @@ def _models_used(fam: Family, r, template, cp: Coupling, nw: _Newton, b: int) ->
                                ("F_c/cos α on the outer contact", "balls outside the load zone ride on the outer race"))
     else:
         used["centrifugal"] = ("none", "thrust bearing")
-    used["thermal"] = (f"network {template.name}", f"fixed point on 3 coupled temperatures: {nw.method[b]}, "
-                                                   f"{int(nw.its[b])} iterations, loop gain {nw.gain[b]:.2f}")
+    used["thermal"] = (f"network {template.name}", "")
     used["node_roles"] = (cp.roles, "contact temperature = mean of ball and race nodes (seed 004 §4.5)")
     return used
+
+
+def _point_models_used(used: dict, nw: _Newton, b: int) -> dict:
+    out = dict(used)
+    out["thermal"] = (used["thermal"][0], f"fixed point on {nw.x.shape[1]} coupled temperatures: {nw.method[b]}, "
+                                          f"{int(nw.its[b])} iterations, loop gain {nw.gain[b]:.2f}")
+    return out
 
 
 def _finish(fam: Family, net, src, cp: Coupling, template, nw: _Newton, tol_K) -> list:
@@ -239,18 +290,27 @@ def _finish(fam: Family, net, src, cp: Coupling, template, nw: _Newton, tol_K) -
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ExtrapolationWarning)
         r = src.result(x_C)
-    parts = src.parts(x_C)
+    parts = src.parts_of(r, x_C.shape[:-1])
     st = solve_linear(net, _sources_matrix(net, cp, parts), nw.T)
     gap = np.abs(st.T_K[:, free] @ cp.C.T - nw.x).max(axis=1)
     bal = np.atleast_1d(st.balance_W)
     flows = {k: np.atleast_1d(v) for k, v in st.flows_W.items()}
     warned = family_warnings(fam.scenes, r, x_C, nw.done & (nw.x.max(axis=1) <= T_LIMIT_K))
+    B = fam.B
+    P_all, M_all = (np.broadcast_to(np.asarray(v, float), (B,)) for v in (r.P_W, r.torque_Nm))
+    bd_all = {k: np.broadcast_to(np.asarray(v, float), (B,)) for k, v in r.breakdown_W.items()}
+    T_all = st.T_K - _C0
+    used = _models_used(fam, r, template, cp)
+    contacts = getattr(r, "contacts", None)
+    T_cont = (0.5 * (np.asarray(contacts["inner"]["T_C"], float).mean(axis=-1)
+                     + np.asarray(contacts["outer"]["T_C"], float).mean(axis=-1)) if contacts else
+              0.5 * (x_C[:, 0] + x_C[:, 1]))
     out = []
-    for b in range(fam.B):
+    for b in range(B):
         if not nw.done[b]:
             out.append(None)
             continue
-        T_C = {n: float(st.T_K[b, k] - _C0) for k, n in enumerate(net.nodes)}
+        T_C = dict(zip(net.nodes, T_all[b].tolist()))
         hot = {k: v for k, v in T_C.items() if v + _C0 > T_LIMIT_K}
         if hot:
             node = max(hot, key=hot.get)
@@ -265,14 +325,13 @@ def _finish(fam: Family, net, src, cp: Coupling, template, nw: _Newton, tol_K) -
                                      f"by {gap[b]:.3g} K", iterations=int(nw.its[b]), residual=float(gap[b]),
                                      last=T_C, history=nw.history[b]))
             continue
-        rb = take(r, b, fam.B)
-        P = float(np.asarray(r.P_W, float).reshape(-1)[b])
         out.append(SteadyState(
-            T_C=T_C, T_ball_C=T_C[cp.roles["ball"]], P_W=P, losses=rb, iterations=int(nw.its[b]),
+            T_C=T_C, T_ball_C=T_C[cp.roles["ball"]], P_W=float(P_all[b]), iterations=int(nw.its[b]),
             residual_K=max(float(nw.step[b]), float(gap[b])), energy_balance_W=float(bal[b]),
             heat_flows_W={k: float(v[b]) for k, v in flows.items()},
-            models_used=_models_used(fam, rb, template, cp, nw, b), history=nw.history[b], roles=dict(cp.roles),
-            warnings=warned[b]))
+            models_used=_point_models_used(used, nw, b), history=nw.history[b], roles=dict(cp.roles),
+            warnings=warned[b], torque_Nm=float(M_all[b]), breakdown_W={k: float(v[b]) for k, v in bd_all.items()},
+            T_contacts_C=float(np.broadcast_to(T_cont, (B,))[b]), batch_losses=r, row=b))
     return out
 
 
@@ -336,12 +395,6 @@ def _solve_family(fam: Family, tol_K, load=None, prepared=None) -> list:
     return out
 
 
-def _mean_contact_C(st: SteadyState) -> float:
-    """Mean contact temperature [°C] of a state (ball with each race, seed 004 §4.5)."""
-    c = st.losses.contacts
-    return float(np.mean(np.concatenate([np.ravel(c["inner"]["T_C"]), np.ravel(c["outer"]["T_C"])])))
-
-
 def _node_T(st: SteadyState, template) -> np.ndarray:
     return np.array([st.T_C[n] + _C0 for n in template.nodes])
 
@@ -360,7 +413,7 @@ def _film_family(fam: Family, template, cp: Coupling, tol_K) -> list:
             continue          # no dry equilibrium to start from: the film model decides on its own
         for i, st in zip(sub.index, _solve_loaded(sub, ld, template, cp, max(tol_K, 1e-3))):
             if isinstance(st, SteadyState):
-                T_ref[pos[i]], start[pos[i]] = _mean_contact_C(st), _node_T(st, template)
+                T_ref[pos[i]], start[pos[i]] = st.T_contacts_C, _node_T(st, template)
     out, hist = [None] * B, [[] for _ in range(B)]
     live = np.arange(B)
     for k in range(1, _FILM_MAXITER + 1):
@@ -380,7 +433,7 @@ def _film_family(fam: Family, template, cp: Coupling, tol_K) -> list:
             if not isinstance(st, SteadyState):
                 out[j] = st
                 continue
-            T_new = _mean_contact_C(st)
+            T_new = st.T_contacts_C
             hist[j].append(dict(iteration=k, T_film_C=float(T_ref[j]), T_contacts_C=T_new, P_W=st.P_W))
             if abs(T_new - T_ref[j]) <= _FILM_TOL_K:
                 st.models_used["load_distribution"] = (
@@ -431,18 +484,42 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> l
             raise InputError("operation.T_C", sc.T_C, "the scene prescribes its temperature: use solve() "
                              "or remove operation.T_C to solve the thermal network")
     out: list = [None] * len(scenes)
-    fams, failed = families(scenes, plan_many(scenes))
-    for i, exc in failed.items():
-        out[i] = exc
+    alternatives = plan_many(scenes)
+    bounds: dict = {}
+    for k, sc in enumerate(scenes):          # loads no answer exists for, named as the scene names them
+        if sc.bearing not in bounds:
+            bounds[sc.bearing] = contact_bounds(sc.bearing)
+        try:
+            check_loads(sc.bearing, sc.Fa, sc.Fr, sc.M, sc.n_rpm, names=_SCENE_LOADS, bounds=bounds[sc.bearing])
+        except InputError as exc:
+            alternatives[k] = exc
+    jobs, plans, owner = [], [], []           # one job per model alternative of a point
+    for i, (sc, alts) in enumerate(zip(scenes, alternatives)):
+        if isinstance(alts, Exception):
+            out[i] = alts
+            continue
+        if load is not None:                  # injected loads: one model, the dominant one
+            alts = [dataclasses.replace(max(alts, key=lambda a: a.weight), weight=1.0)]
+        for a in alts:
+            jobs.append(sc)
+            plans.append((a.models, a.dry))
+            owner.append((i, a.weight))
+    fams, _ = families(jobs, plans)
     if load is not None and len(fams) != 1:
         raise InputError("load", "LoadDistribution", "injected loads need the scenes of one family")
+    res: list = [None] * len(jobs)
     with warnings.catch_warnings():
         # property calls at intermediate iterates may lie beyond a correlation's data: only the answer
         # counts, and its validity is checked on its own (SteadyState.warnings, limits.point_warnings)
         warnings.simplefilter("ignore", OutsideValidity)
         for fam in fams:
-            for i, r in zip(fam.index, _solve_family(fam, tol_K, None if load is None else _batched(load), prepared)):
-                out[i] = r
+            for j, r in zip(fam.index, _solve_family(fam, tol_K, None if load is None else _batched(load), prepared)):
+                res[j] = r
+    parts: dict = {}
+    for (i, w), r in zip(owner, res):
+        parts.setdefault(i, []).append((w, r))
+    for i, p in parts.items():
+        out[i] = blend_states(p, SteadyState)
     seen: set = set()
     emit([w for r in out if isinstance(r, SteadyState) for w in r.warnings if not (str(w) in seen or seen.add(str(w)))])
     return out

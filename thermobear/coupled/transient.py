@@ -10,6 +10,12 @@ step may change boundary temperatures, convection and contact ellipses, not only
 With the film load model the loads depend on the film temperature: each segment is run in
 pieces, the loads re-solved at the start of each at its mean contact temperature, the pieces sized
 for ≈ 2 K of drift.
+
+A logged boundary (``boundary``: node → temperatures sampled at times, e.g. the room, an outer
+ring, the oil inlet as a rig logged them) imposes those nodes, linear between the samples
+(:class:`thermobear.thermal.solve.LinearBoundary`), and varies them continuously through every
+segment and piece: the schedule and the boundary reach the integrator through the same
+``fixed_C(t)`` of :func:`thermobear.thermal.solve_transient`.
 """
 from __future__ import annotations
 
@@ -19,13 +25,17 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from thermobear.coupled.limits import emit, point_warnings
-from thermobear.coupled.pipeline import Family, family_contacts, family_loads, film_temperature_C
-from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepared_for
+from thermobear.coupled.pipeline import Family, family_contacts, family_loads, film_temperature_C, stack_loads
+from thermobear.coupled.sources import Coupling, family_network, loss_parts, loss_sources, prepared_for
 from thermobear.coupled.steady import T_LIMIT_K, _batched
 from thermobear.errors import ExtrapolationWarning, InputError, OutsideValidity, ThermalRunaway
-from thermobear.models import plan
+from thermobear.losses import prepare_contacts
+from thermobear.arrays import take
+from thermobear.coupled.blend import StackedBlend
+from thermobear.models import Alternative, plan, plan_many
 from thermobear.scene import Scene
 from thermobear.thermal import solve_transient
+from thermobear.thermal.solve import LinearBoundary
 
 __all__ = ["TransientRun", "transient", "PointModel", "point_model", "heat_sources"]
 
@@ -87,19 +97,21 @@ class PointModel:
 
 
 def point_model(scene: Scene, models: dict | None = None, *, T_film_C=None, load=None, template=None,
-                prepared=None) -> PointModel:
+                prepared=None, dry=None) -> PointModel:
     """Loads, contacts, network and loss source of one operating point.
 
     ``models`` default :func:`~thermobear.models.choose_models`; ``T_film_C`` [°C] the film
     temperature of the film load model; ``load`` loads to use instead of the model's; ``template`` a
-    network template instead of the scene's (what-if studies); ``prepared`` the :func:`prepare` of its family."""
-    models = models if models is not None else plan(scene)[0]
-    fam = Family(scenes=(scene,), index=(0,), models=models, dry=(None,))
+    network template instead of the scene's (what-if studies); ``prepared`` the :func:`prepare` of its
+    family; ``dry`` the dry load distribution its model choice solved (:class:`~thermobear.models.DryRow`)."""
+    if models is None:
+        models, dry = plan(scene)
+    fam = Family(scenes=(scene,), index=(0,), models=models, dry=(dry,))
     if load is None:
         load = family_loads(fam, None if T_film_C is None else [T_film_C])
     cs = family_contacts(fam, _batched(load))
     if template is not None:
-        cp = Coupling.of(template)
+        cp = Coupling.of(template, parts=loss_parts(models))
     else:
         pre = prepared_for(scene, prepared)
         template, cp = pre.template, pre.coupling
@@ -148,7 +160,7 @@ def _pieces(scenes, t_end_s):
 
 
 def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=None, rtol: float = 1e-5,
-              atol: float = 1e-3, load=None, stop=None, prepared=None) -> TransientRun:
+              atol: float = 1e-3, load=None, stop=None, prepared=None, boundary=None) -> TransientRun:
     """Heat-up of a scene on its thermal network, losses re-evaluated as temperatures change.
 
     Parameters
@@ -165,6 +177,12 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
     stop : callable          ``stop() -> bool``, checked during the integration: True ends the run
                              early, keeping what was integrated (``completed`` False)
     prepared : Prepared      :func:`~thermobear.coupled.sources.prepare` of the scene's family, reused
+                             (with ``boundary``: of the scene with those nodes imposed)
+    boundary : LinearBoundary  logged temperatures of nodes [°C] at times [s] on the run's clock
+                             (:class:`~thermobear.thermal.solve.LinearBoundary`, or a pair
+                             ``(t_s, {node: T_C})``): the nodes are imposed (``T_fixed_C``, a node
+                             receiving loss heat is refused) and follow the samples, linear between
+                             them; the samples must cover [0, t_end_s] (no extrapolation)
 
     Returns
     -------
@@ -183,11 +201,29 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
         if t_eval.ndim != 1 or np.any(~np.isfinite(t_eval)) or np.any((t_eval < 0) | (t_eval > t_end_s)) \
                 or np.any(np.diff(t_eval) <= 0):
             raise InputError("t_eval", t_eval, f"output times must increase within [0, {t_end_s}] s")
+    if boundary is not None:
+        boundary, scene = _imposed(boundary, scene, t_end_s)
     pre = prepared_for(scene, prepared)
-    return _run(_pieces(_segments(scene, schedule, t_end_s), t_end_s), scene, T0_C, t_eval, rtol, atol, load, stop, pre)
+    return _run(_pieces(_segments(scene, schedule, t_end_s), t_end_s), scene, T0_C, t_eval, rtol, atol, load, stop, pre,
+                boundary)
 
 
-def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre) -> TransientRun:
+def _imposed(boundary, scene: Scene, t_end_s):
+    """The boundary, checked to cover [0, t_end_s], and the scene with its nodes imposed at t = 0."""
+    if not isinstance(boundary, LinearBoundary):
+        try:
+            t_s, T_C = boundary
+        except (TypeError, ValueError):
+            raise InputError("boundary", type(boundary).__name__, "a LinearBoundary or (t_s, {node: T_C})") from None
+        boundary = LinearBoundary.of(t_s, T_C)
+    t0, t1 = boundary.span_s
+    if t0 > 0.0 or t1 < t_end_s:
+        raise InputError(boundary.source, f"[{t0:g}, {t1:g}] s", f"the logged boundary must cover the run [0, "
+                         f"{t_end_s:g}] s (a log is not extrapolated)")
+    return boundary, scene.with_(T_fixed_C={**scene.T_fixed_C, **boundary(0.0)})
+
+
+def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None) -> TransientRun:
     T_state = scene.T_ambient_C if T0_C is None else T0_C
     out_t, out_T, out_rep, first, seg_changes, seen = [], {}, {}, None, {}, set()
     film_dt, completed, i = None, True, -1
@@ -198,8 +234,9 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre) -> TransientR
         while i + 1 < len(pieces):
             i += 1
             ts, te, sc, last_seg = pieces[i]
-            models = plan(sc)[0]
-            film = load is None and models["load_model"][0] == "film"
+            alts = _alternatives(sc, load)
+            models = max(alts, key=lambda a: a.weight).models
+            film = load is None and any(a.models["load_model"][0] == "film" for a in alts)
             T_film = None
             if film:
                 T_film = _film_of(T_state, first[1] if first else None, sc)
@@ -207,7 +244,7 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre) -> TransientR
                 if ts + film_dt < te - 1e-9 * te:
                     pieces.insert(i + 1, (ts + film_dt, te, sc, last_seg))
                     te, last_seg = ts + film_dt, False
-            pm = point_model(sc, models, T_film_C=T_film, load=load, prepared=pre if pre.serves(sc) else None)
+            pm = _blended_point_model(sc, alts, T_film, load, pre if pre.serves(sc) else None)
             net, cp = pm.network, pm.coupling
             first = first or (models, cp.roles, list(net.nodes))
             changed = {k: v for k, v in models.items() if first[0].get(k, (None,))[0] != v[0]}
@@ -221,7 +258,8 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre) -> TransientR
                 want = t_eval[(t_eval >= ts) & ((t_eval < te) | (last_seg & (t_eval <= te)))]
                 seg = np.union1d(want - ts, [te - ts])
             tr = solve_transient(net, heat_sources(pm), te - ts, T0_C=_T0(T_state, net), t_eval=seg,
-                                 rtol=rtol, atol=atol, stop=stop)
+                                 rtol=rtol, atol=atol, stop=stop,
+                                 fixed_C=None if boundary is None else boundary.shifted(ts))
             t_abs = np.asarray(tr.t) + ts
             keep = np.ones(t_abs.size, bool) if t_eval is None else np.isin(np.round(t_abs, 9), np.round(t_eval, 9))
             if not last_seg and tr.completed:
@@ -249,6 +287,45 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre) -> TransientR
             got += [w for w in point_warnings(sc, None, np.concatenate(x)) if str(w) not in map(str, got)]
     emit(got)
     return _assemble(out_t, out_T, out_rep, first, seg_changes, got, completed)
+
+
+def _alternatives(sc: Scene, load) -> list:
+    """The model alternatives of a piece (:func:`~thermobear.models.plan_many`); injected loads: the
+    dominant one alone."""
+    alts = plan_many([sc])[0]
+    if isinstance(alts, Exception):
+        raise alts
+    if load is not None or len(alts) == 1:
+        a = max(alts, key=lambda a: a.weight)
+        return [Alternative(a.models, a.dry, 1.0)]
+    return alts
+
+
+def _blended_point_model(sc: Scene, alts, T_film, load, prepared) -> PointModel:
+    """The point model of a piece: across a switch band its heat sources are the weighted losses of
+    the alternatives, evaluated as stacked points of one batch
+    (:class:`~thermobear.coupled.blend.StackedBlend`) on the network of the dominant one, so that a
+    heat-up ends at the blended steady state."""
+    if len(alts) == 1:
+        a = alts[0]
+        return point_model(sc, a.models, T_film_C=T_film, load=load, prepared=prepared, dry=a.dry)
+    if alts[0].models["losses"][0] != "local":         # the global model reads no loads: one source
+        a = max(alts, key=lambda a: a.weight)
+        return point_model(sc, a.models, T_film_C=T_film, load=load, prepared=prepared, dry=a.dry)
+    k_dom = int(np.argmax([a.weight for a in alts]))
+    dom = alts[k_dom]
+    loads = [take(family_loads(Family(scenes=(sc,), index=(0,), models=a.models, dry=(a.dry,)),
+                               [T_film] if a.models["load_model"][0] == "film" else None), 0, 1) for a in alts]
+    pm = point_model(sc, dom.models, load=loads[k_dom], prepared=prepared)
+    K = len(alts)
+    fam = Family(scenes=(sc,) * K, index=tuple(range(K)), models=dom.models, dry=(None,) * K)
+    m = dom.models
+    cs = prepare_contacts(sc.bearing, fam.values("Fa"), fam.values("Fr"), fam.values("n_rpm"),
+                          M=None if sc.M is None else fam.values("M"), rotating=sc.rotating,
+                          hertz_method=m["hertz"][0], load=stack_loads(loads), control=m["kinematics"][0],
+                          centrifugal=np.array([a.models["high_speed"][0] != "yes" for a in alts]))
+    return PointModel(family=pm.family, network=pm.network, coupling=pm.coupling,
+                      source=StackedBlend(loss_sources(fam, cs), [a.weight for a in alts]))
 
 
 def _T0(T_state, net):

@@ -49,15 +49,15 @@ from scipy.stats import qmc
 
 from thermobear.contact.geometry import bearing_values
 from thermobear.contact.materials import PROPERTIES, material
-from thermobear.coupled.pipeline import Family, family_contacts, family_loads
+from thermobear.coupled.pipeline import Family, families, family_contacts, family_loads
 from thermobear.coupled.sensitivity import SENSITIVITY, bands, ranking, summary_lines
-from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepared_for
+from thermobear.coupled.sources import family_network, loss_sources, prepared_for
 from thermobear.coupled import steady as _steady
 from thermobear.coupled import transient as _transient
 from thermobear.coupled.steady import SteadyState, steady_states
 from thermobear.coupled.transient import PointModel, heat_sources
 from thermobear.errors import InputError, OutsideValidity, SolverError
-from thermobear.models import plan
+from thermobear.models import plan_many
 from thermobear.scene import Scene
 from thermobear.scene.scene import SECTIONS
 from thermobear.schema import Uncertainty, check_value
@@ -77,6 +77,7 @@ _SCENE_KEYS = {
     "lubricant.Rq_ball_um": ("Rq_ball_um", 1e6, "Rq_ball"), "lubricant.Rq_ring_um": ("Rq_ring_um", 1e6, "Rq_ring"),
     "lubricant.mu_boundary": ("mu_boundary", 1.0, "mu_boundary"),
     "lubricant.mu_full_film": ("mu_full_film", 1.0, "mu_full_film"),
+    "lubricant.jet_penetration": ("jet_penetration", 1.0, "jet_penetration"),
     "thermal.T_ambient_C": ("T_ambient_C", 1.0, "T_ambient_C"),
 }
 _RATINGS = ("C0_kN", "C_kN")
@@ -459,54 +460,84 @@ def _samples(scene, n, seed, method, groups, inputs, prepared, sensitivity) -> S
 
 
 # --------------------------------------------------------------------------- heat-up
-def _pointwise_transient(scenes, t_end_s, t_eval, T0_C, rtol, atol, stop):
-    """The heat-ups of sampled points one by one (:func:`thermobear.coupled.transient.transient`, whose
-    one-point family applies the draws): for the film load model, whose loads follow the film
-    temperature along the run.  (node → (B, n_t) °C, report)."""
-    runs = [_transient.transient(sc, t_end_s, t_eval=t_eval, T0_C=T0_C, rtol=rtol, atol=atol, stop=stop)
-            for sc in scenes]
-    if not all(r.completed for r in runs):
+def _series(run) -> dict:
+    """Output name → values over the run's times of a heat-up (a TransientRun)."""
+    return {**{f"T_C.{n}": v for n, v in run.T_C.items()}, "P_W": run.P_W,
+            **{f"breakdown_W.{k}": v for k, v in run.breakdown_W.items()}}
+
+
+def _point_heatup(scene, t_end_s, t_eval, T0_C, rtol, atol, stop, boundary) -> dict:
+    """One sampled point's heat-up (:func:`thermobear.coupled.transient.transient`, whose one-point family
+    applies the draws; a point across a model switch blends its alternatives there, the film load model
+    follows the film temperature): output name → (1, n_t)."""
+    run = _transient.transient(scene, t_end_s, t_eval=t_eval, T0_C=T0_C, rtol=rtol, atol=atol, stop=stop,
+                               boundary=boundary)
+    if not run.completed:
         raise SolverError("the heat-up was stopped before its end")
-    T = {n: np.array([np.interp(t_eval, r.t_s, r.T_C[n]) for r in runs]) for n in runs[0].T_C}
-    rep = {"P_W": np.array([np.interp(t_eval, r.t_s, r.P_W) for r in runs])}
-    rep.update({f"P_{k}": np.array([np.interp(t_eval, r.t_s, r.breakdown_W[k]) for r in runs])
-                for k in runs[0].breakdown_W})
-    return T, rep
+    return {k: np.interp(t_eval, run.t_s, v)[None] for k, v in _series(run).items()}
 
 
-def _family_transient(scenes, t_end_s, t_eval, T0_C, rtol, atol, stop):
-    """One batched heat-up of sampled points of one family: (node → (B, n_t) °C, report) or an exception."""
-    models, _ = plan(scenes[0])
-    if models["load_model"][0] == "film":
-        return _pointwise_transient(scenes, t_end_s, t_eval, T0_C, rtol, atol, stop)
-    fam = Family(scenes=tuple(scenes), index=tuple(range(len(scenes))), models=models, dry=(None,) * len(scenes))
-    pre = prepared_for(scenes[0])
+def _family_heatup(fam: Family, t_end_s, t_eval, T0_C, rtol, atol, stop, boundary) -> dict:
+    """One batched heat-up of the sampled points of a family (one model choice each): output name →
+    (B, n_t)."""
+    pre = prepared_for(fam.scene)
     contacts = family_contacts(fam, family_loads(fam))
     pm = PointModel(family=fam, network=family_network(fam, pre.template, contacts),
-                    source=loss_sources(fam, contacts), coupling=Coupling.of(pre.template))
-    T0 = np.array([s.T_ambient_C for s in scenes]) if T0_C is None else T0_C    # each sample from its own ambient
-    tr = solve_transient(pm.network, heat_sources(pm), t_end_s, T0_C=T0, t_eval=t_eval, rtol=rtol, atol=atol, stop=stop)
+                    source=loss_sources(fam, contacts), coupling=pre.coupling)
+    T0 = fam.values("T_ambient_C") if T0_C is None else T0_C       # each sample from its own ambient
+    tr = solve_transient(pm.network, heat_sources(pm), t_end_s, T0_C=T0, t_eval=t_eval, rtol=rtol, atol=atol, stop=stop,
+                         fixed_C=None if boundary is None else boundary.shifted(0.0))
     if not tr.completed:
         raise SolverError("the heat-up was stopped before its end")
     two = (lambda v: np.asarray(v, float).reshape(len(tr.t), -1).T)  # noqa: E731   (n_t[, B]) → (B, n_t)
-    return {n: two(v) for n, v in tr.T_C.items()}, {k: two(v) for k, v in tr.report.items()}
+    return {**{f"T_C.{n}": two(v) for n, v in tr.T_C.items()}, "P_W": two(tr.report["P_W"]),
+            **{f"breakdown_W.{k[2:]}": two(v) for k, v in tr.report.items() if k.startswith("P_") and k != "P_W"}}
+
+
+def _heatups(scenes, t_end_s, t_eval, T0_C, rtol, atol, stop, boundary):
+    """The heat-ups of sampled points: (output name → (B, n_t), NaN where a point failed; point → its
+    exception).  The points whose model choice has one alternative are integrated in batches, one per
+    family of model choices (:func:`thermobear.thermal.solve_transient`, block-diagonal Jacobian); a
+    point inside a model-switch band (its alternatives blended as stacked points of one source,
+    :func:`~thermobear.coupled.transient.transient`) or on the film load model (its loads follow the film
+    temperature along the run) is integrated on its own.  A failing batch fails its points."""
+    plans, out, failed = plan_many(scenes), {}, {}
+    one = [k for k, a in enumerate(plans) if not isinstance(a, Exception) and len(a) == 1
+           and a[0].models["load_model"][0] != "film"]
+    failed.update({k: a for k, a in enumerate(plans) if isinstance(a, Exception)})
+    fams, _ = families([scenes[k] for k in one], [(plans[k][0].models, plans[k][0].dry) for k in one])
+    runs = [([one[j] for j in f.index], lambda f=f: _family_heatup(f, t_end_s, t_eval, T0_C, rtol, atol, stop,
+                                                                   boundary)) for f in fams]
+    runs += [([k], lambda k=k: _point_heatup(scenes[k], t_end_s, t_eval, T0_C, rtol, atol, stop, boundary))
+             for k in range(len(scenes)) if k not in failed and k not in one]
+    for idx, run in runs:
+        try:
+            series = run()
+        except (InputError, SolverError) as exc:
+            failed.update({k: exc for k in idx})
+            continue
+        for name, v in series.items():
+            out.setdefault(name, np.full((len(scenes), t_eval.size), np.nan))[idx] = v
+    return out, failed
 
 
 def transient_uncertainty(scene: Scene, t_end_s: float, n: int, *, t_eval=None, seed=None, method: str = "lhs",
                           groups: int | None = None, sensitivity: str = "src", T0_C=None, rtol: float = 1e-5,
-                          atol: float = 1e-3, stop=None, inputs=None, nominal=None) -> UncertaintyResult:
-    """The heat-up of a scene over ``n`` samples of its uncertain inputs: each family of samples (one
-    per bearing-geometry group) integrated as one batched system (:func:`thermobear.thermal.solve_transient`,
-    block-diagonal Jacobian), bands over the output times.  A family on the film load model (its loads
-    follow the film temperature along the run) is integrated point by point.
+                          atol: float = 1e-3, stop=None, inputs=None, nominal=None, boundary=None) -> UncertaintyResult:
+    """The heat-up of a scene over ``n`` samples of its uncertain inputs: the samples integrated in
+    batches (:func:`_heatups`: one per bearing-geometry group and model choice), bands over the output
+    times.
 
-    ``t_eval`` [s] the output times (default 50 points over [0, t_end_s]); the other parameters as
-    :func:`steady_uncertainty` and :func:`thermobear.coupled.transient.transient` (no schedule: one
-    operating point).  A family whose integration fails counts all its samples as failed.
+    ``t_eval`` [s] the output times (default 50 points over [0, t_end_s]); ``boundary`` a logged boundary
+    (:class:`~thermobear.thermal.solve.LinearBoundary`, measured: the same for every sample); the other
+    parameters as :func:`steady_uncertainty` and :func:`thermobear.coupled.transient.transient` (no
+    schedule: one operating point).  A batch whose integration fails counts all its samples as failed.
     """
     t_eval = np.linspace(0.0, t_end_s, 51)[1:] if t_eval is None else np.asarray(t_eval, float)
     nominal = nominal if nominal is not None else _transient.transient(scene, t_end_s, t_eval=t_eval, T0_C=T0_C,
-                                                                       rtol=rtol, atol=atol, stop=stop)
+                                                                       rtol=rtol, atol=atol, stop=stop, boundary=boundary)
+    if boundary is not None:            # the samples of the scene with the logged nodes imposed
+        boundary, scene = _transient._imposed(boundary, scene, t_end_s)
     sm = _samples(scene, n, seed, method, groups, inputs, None, sensitivity)
     failed = {k: _fail(s) for k, s in enumerate(sm.scenes) if not isinstance(s, Scene)}
     outputs: dict = {}
@@ -514,15 +545,10 @@ def transient_uncertainty(scene: Scene, t_end_s: float, n: int, *, t_eval=None, 
         idx = [k for k in range(len(sm.scenes)) if sm.group[k] == g and k not in failed]
         if not idx:
             continue
-        try:
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore", OutsideValidity)
-                T, rep = _family_transient([sm.scenes[k] for k in idx], t_end_s, t_eval, T0_C, rtol, atol, stop)
-        except (InputError, SolverError) as exc:
-            failed.update({k: _fail(exc) for k in idx})
-            continue
-        series = {**{f"T_C.{k}": v for k, v in T.items()}, **{"P_W": rep["P_W"]},
-                  **{f"breakdown_W.{k[2:]}": v for k, v in rep.items() if k.startswith("P_") and k != "P_W"}}
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", OutsideValidity)
+            series, bad = _heatups([sm.scenes[k] for k in idx], t_end_s, t_eval, T0_C, rtol, atol, stop, boundary)
+        failed.update({idx[j]: _fail(e) for j, e in bad.items()})
         for name, v in series.items():
             outputs.setdefault(name, np.full((len(sm.scenes), t_eval.size), np.nan))[idx] = v
     return UncertaintyResult(nominal=nominal, inputs=sm.inputs, X=sm.X, outputs=outputs, bands=bands(outputs),
@@ -557,19 +583,19 @@ def steady_state(scene: Scene, *, uncertainty: int | None = None, seed=0, method
 
 def transient(scene: Scene, t_end_s: float, *, uncertainty: int | None = None, seed=0, method: str = "lhs",
               groups: int | None = None, sensitivity: str = "src", schedule=None, T0_C=None, t_eval=None,
-              rtol: float = 1e-5, atol: float = 1e-3, load=None, stop=None, prepared=None):
+              rtol: float = 1e-5, atol: float = 1e-3, load=None, stop=None, prepared=None, boundary=None):
     """Heat-up of a scene (:func:`thermobear.coupled.transient.transient`); with ``uncertainty=N`` its
     bands over N samples of the estimated inputs (:func:`transient_uncertainty`; one operating point:
-    no schedule, no injected loads).
+    no schedule, no injected loads; a logged ``boundary`` the same for every sample).
 
     Returns a :class:`~thermobear.coupled.transient.TransientRun`, or with ``uncertainty`` an
     :class:`UncertaintyResult` whose ``nominal`` is the heat-up and whose bands run over ``t_s``.
     """
     if uncertainty is None:
         return _transient.transient(scene, t_end_s, schedule=schedule, T0_C=T0_C, t_eval=t_eval, rtol=rtol, atol=atol,
-                                    load=load, stop=stop, prepared=prepared)
+                                    load=load, stop=stop, prepared=prepared, boundary=boundary)
     if schedule or load is not None:
         raise InputError("schedule" if schedule else "load", "given", "a heat-up with uncertainty runs one operating "
                          "point: no schedule, no injected loads")
     return transient_uncertainty(scene, t_end_s, uncertainty, t_eval=t_eval, seed=seed, method=method, groups=groups,
-                                 sensitivity=sensitivity, T0_C=T0_C, rtol=rtol, atol=atol, stop=stop)
+                                 sensitivity=sensitivity, T0_C=T0_C, rtol=rtol, atol=atol, stop=stop, boundary=boundary)

@@ -16,7 +16,9 @@ definitions found nothing beyond seed 004's wording):
 * ρ_mix = X ρ_oil + (1 − X) ρ_air and μ_mix = X μ_oil + (1 − X) μ_air (linear
   rules, unconfirmed – textbook).
 * X from Parker (1984, NASA TP-2275, as quoted by Harris), X = 1e5 W^0.37 / (n dm^1.7)
-  with W in cm³/min, n in r/min, dm in mm.  The number is used as the volume
+  with W in cm³/min, n in r/min, dm in mm; W is the flow *through the bearing*: of an oil jet only a
+  share β passes (seed 004 §4.5: β ≈ 0.4, Brossier et al. 2021; the scene's
+  ``lubricant.jet_penetration``; validation/report/seed004_drag.md).  The number is used as the volume
   *fraction* (default ``convention="fraction"``), not as a percent: this is what
   seed 004 §6 implies — "multiplying the oil flow rate by 1.5 leads to an increase
   of drag losses equal to 16 %" — since 1.5^0.37 = 1.162 only if ρ_mix is dominated
@@ -41,7 +43,8 @@ from thermobear.errors import ExtrapolationWarning, InputError
 from thermobear.lubrication.air import air_properties as _air
 
 __all__ = ["oil_volume_fraction_parker", "mixture_density", "mixture_viscosity", "air_properties",
-           "drag_coefficient_sphere", "drag_power_pouly", "drag_loss", "DragLoss"]
+           "drag_coefficient_sphere", "drag_power_pouly", "drag_loss", "DragLoss", "immersed_fraction",
+           "churning_loss", "ChurningLoss"]
 
 _P_ATM = 101325.0
 
@@ -324,3 +327,131 @@ def drag_loss(Z, D, dm, omega_c, X, rho_oil, mu_oil, T_K, p_Pa=_P_ATM, cd_method
     Xb = X if isinstance(P, float) else X + np.zeros_like(P)      # the fraction of each operating point
     return DragLoss(P_W=_out(P), v=_out(v), X=_out(Xb), rho_mix=_out(rho_mix), mu_mix=_out(mu_mix), Re=_out(Re),
                     c_d=_out(c_d), rho_air=_out(rho_air), mu_air=_out(mu_air))
+
+
+# --------------------------------------------------------------------------- oil bath
+_PSI = np.linspace(0.0, np.pi, 721)          # ball positions from the lowest point (the path is symmetric)
+
+
+def _segment_below(t):
+    """Fraction of a unit disk on the side x <= t of a chord at distance t from its centre."""
+    t = np.clip(t, -1.0, 1.0)
+    return 1.0 - (np.arccos(t) - t * np.sqrt(1.0 - t * t)) / np.pi
+
+
+def immersed_fraction(H, dm, D):
+    r"""Share of the balls' drag that acts in an oil bath of level H [-] (horizontal shaft).
+
+    Parameters
+    ----------
+    H : array_like    oil level above the lowest point of the outer-ring raceway (the lowest point a
+                      ball reaches) [m], >= 0
+    dm : float        pitch diameter [m]
+    D : float         ball diameter [m]
+
+    Returns
+    -------
+    ndarray  w in [0, 1]: the immersed share of each ball's frontal disk, averaged over the ball
+             path (0 for H = 0, 1 once H >= dm + D)
+
+    Notes
+    -----
+    A ball at angle ψ from the lowest point has its centre at height y_c = −(dm/2) cos ψ; the oil
+    surface is at y_s = −(dm + D)/2 + H.  Its frontal disk (radius D/2, normal to the orbital motion)
+    spans heights y_c ± (D/2)|cos ψ|; the share of the disk below the surface is the circular segment
+
+    .. math::
+
+        a(\psi) = 1 - \frac{\arccos \tau - \tau\sqrt{1-\tau^2}}{\pi},\qquad
+        \tau = \frac{y_s - y_c}{(D/2)\,|\cos\psi|}\ \text{clipped to } [-1, 1],
+
+    and :math:`w = \frac{1}{\pi}\int_0^{\pi} a(\psi)\, d\psi` (trapezoidal rule, 721 points).
+    Geometry only: the bath is taken flat and at rest (no level drop or splash with speed).
+
+    Examples
+    --------
+    6208 (dm 60 mm, D 11.9 mm): level at the lowest ball centre, at the shaft axis, over the top:
+
+    >>> [round(float(immersed_fraction(H, 60e-3, 11.9e-3)), 3) for H in (5.95e-3, 35.95e-3, 80e-3)]
+    [0.059, 0.501, 1.0]
+    """
+    H = np.asarray(H, dtype=float)
+    if H.size and not (H.min() >= 0 and H.max() < np.inf):
+        raise InputError("oil_level_mm", H, "oil level must be finite and >= 0")
+    R = 0.5 * D
+    h = (-(0.5 * (dm + D)) + H[..., None] + 0.5 * dm * np.cos(_PSI)) / R
+    k = np.abs(np.cos(_PSI))
+    tau = np.where(k > 1e-12, h / np.where(k > 1e-12, k, 1.0), np.sign(h) * 2.0)
+    a = _segment_below(tau)
+    w = (a.sum(axis=-1) - 0.5 * (a[..., 0] + a[..., -1])) / (_PSI.size - 1)     # trapezoidal mean, uniform ψ
+    return _out(np.clip(w, 0.0, 1.0))
+
+
+@dataclass(frozen=True)
+class ChurningLoss:
+    """Churning loss of the balls in an oil bath and the quantities behind it (arrays over operating points).
+
+    P_W [W], immersion [-] (:func:`immersed_fraction`), v [m/s] ball pitch-line speed, Re [-], c_d [-]
+    (in the oil)."""
+
+    P_W: np.ndarray
+    immersion: np.ndarray
+    v: np.ndarray
+    Re: np.ndarray
+    c_d: np.ndarray
+
+
+def churning_loss(Z, D, dm, omega_c, immersion, rho_oil, mu_oil, cd_method="Clift_Gauvin", A_c=None):
+    r"""Churning loss of the balls passing through an oil bath: Pouly's drag in oil, weighted by immersion [W].
+
+    Parameters
+    ----------
+    Z : int                  number of balls
+    D, dm : float            ball and pitch diameter [m]
+    omega_c : array_like     cage angular speed [rad/s], >= 0
+    immersion : array_like   share of the ball path in the oil [-] (:func:`immersed_fraction`)
+    rho_oil, mu_oil : array_like  density [kg/m³] and dynamic viscosity [Pa s] of the bath oil
+    cd_method : str          sphere-drag correlation (:func:`drag_coefficient_sphere`)
+    A_c : float              ball cross-section [m²]; default πD²/4
+
+    Returns
+    -------
+    ChurningLoss   P_W and the quantities behind it
+
+    Notes
+    -----
+    .. math::
+
+        P = w\, \rho_{oil}\, c_d(Re)\, Z\, \frac{A_c}{2} \left(\omega_c \frac{d_m}{2}\right)^3,\qquad
+        Re = \frac{\rho_{oil} v D}{\mu_{oil}}
+
+    Seed 004 eq 21 (Pouly et al. 2010) for balls in pure oil (X = 1), weighted by the immersed share w
+    of the ball path: each ball feels the sphere drag of the bath while it crosses it.  The bath is at
+    rest; the rings' and cage's churning and the pumping through the bearing are not in it (SKF's
+    empirical drag term lumps them, :func:`thermobear.losses.skf.drag_moment_skf2018_Nmm`).  0 at
+    standstill (Stokes drag: P ∝ ω_c²) and for an empty bath (w = 0).
+
+    Examples
+    --------
+    6208 (Z 9, D 11.9 mm, dm 60 mm) at a cage speed of 130 rad/s, level at the lowest ball centre,
+    oil at 40 °C (ρ 860 kg/m³, μ 0.032 Pa s):
+
+    >>> w = immersed_fraction(5.95e-3, 60e-3, 11.9e-3)
+    >>> r = churning_loss(9, 11.9e-3, 60e-3, 130.0, w, 860.0, 0.032)
+    >>> round(float(r.P_W), 3), round(float(r.Re)), round(float(r.c_d), 3)
+    (0.662, 1247, 0.442)
+    """
+    if int(Z) != Z or Z < 1:
+        raise InputError("Z", Z, "number of balls must be an integer >= 1")
+    _pos("D", D)
+    _pos("dm", dm)
+    wc = _pos("omega_c", omega_c, allow_zero=True)
+    w = _fraction(immersion)
+    rho, mu = _pos("rho_oil", rho_oil), _pos("mu_oil", mu_oil)
+    v = np.asarray(wc, dtype=float) * dm / 2.0
+    moving = v > 0
+    Re = np.where(moving, rho * v * D / mu, 1.0)
+    c_d = np.where(moving, _cd(Re, cd_method), 0.0)
+    P = np.where(moving, w * _pouly(rho, c_d, Z, D, v, A_c), 0.0)
+    return ChurningLoss(P_W=_out(P), immersion=_out(w + 0.0 * P), v=_out(v), Re=_out(np.where(moving, Re, 0.0)),
+                        c_d=_out(c_d))

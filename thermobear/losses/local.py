@@ -14,6 +14,11 @@ step by the public function of its module:
   integral of μ q |ω_s x| for the Hertz strip load)
 * hysteresis  P = MER |ω_roll|  (seed 000 eq 25)
 * drag of the balls in the oil–air mixture (Pouly et al. 2010, seed 004 eq 21)
+* churning of the balls through an oil bath: the same drag in oil, weighted by the immersed share of
+  the ball path at the oil level (:func:`~thermobear.losses.drag.churning_loss`)
+* seal friction, SKF 2004 (:func:`~thermobear.losses.seals.seal_friction`, given as a torque)
+* cage: Petroff land friction of a ring-guided cage and ball–pocket sliding
+  (:func:`~thermobear.losses.cage.cage_loss`)
 
 with μ from the film parameter Λ (seed 000 eq 18), the Hamrock–Dowson film (1977) and the
 Nijenbanning–Venner–Moes regime (1994) at the viscosity of the contact temperature.  Sliding
@@ -29,7 +34,8 @@ regime (seed 004 §6.2).
 
 Heat sources (for the thermal network): each contact's loss goes ½ to the
 ball and ½ to the ring (the convention of Pouly et al. 2010), drag to the
-oil–air mixture.  The split conserves energy exactly (tested).
+oil–air mixture, churning to the bath, seal friction to the seal, cage losses to the cage.
+The split conserves energy exactly (tested).
 
 Shapes: a :class:`ContactSet` holds ``batch`` operating points (per-contact arrays
 ``(*batch, 2, Z)``, inner then outer raceway); temperatures broadcast to the batch, or carry extra
@@ -47,19 +53,28 @@ from thermobear.contact.geometry import BallBearing
 from thermobear.contact.hertz import hertz
 from thermobear.contact.kinematics import ball_kinematics, caged_ball_kinematics, common_cage_speed
 from thermobear.errors import InputError
+from thermobear.loads.api import check_contacts, check_loads, loads_text
 from thermobear.loads.static import LoadDistribution, load_distribution
-from thermobear.losses.drag import drag_loss, oil_volume_fraction_parker
+from thermobear.losses.cage import CageLand, cage_loss
+from thermobear.losses.drag import churning_loss, drag_loss, immersed_fraction, oil_volume_fraction_parker
 from thermobear.losses.rolling import RollingContacts, rolling_contacts, rolling_power
-from thermobear.losses.sliding import (deformed_radius, hysteresis_moment, mixed_friction_ianus, pivoting_moment,
-                                       sliding_power_heathcote)
+from thermobear.losses.skf import K_RS, phi_rs, skf_K_z
+from thermobear.losses.sliding import (XI0_HEATHCOTE, deformed_radius, hysteresis_moment, mixed_friction_ianus,
+                                       pivoting_moment, sliding_power_heathcote)
+from thermobear.losses.traction import STRIP_NODES, strip_traction_coefficient
 from thermobear.lubrication.film import REGIMES, EHLContacts, ehl_contacts, specific_film_thickness
+from thermobear.lubrication.thermal_film import (thermal_inlet_viscosity, thermal_loading_parameter,
+                                                 thermal_reduction_gupta)
+from thermobear.validity import check as check_limit
 
 __all__ = ["LossResult", "ContactSet", "ContactArrays", "bearing_losses", "prepare_contacts", "evaluate_losses",
-           "BREAKDOWN_KEYS", "ROLLING_MODELS"]
+           "BREAKDOWN_KEYS", "ROLLING_MODELS", "TRACTION_MODELS"]
 
-BREAKDOWN_KEYS = ("sliding", "rolling", "pivoting", "hysteresis", "drag")
+BREAKDOWN_KEYS = ("sliding", "rolling", "pivoting", "hysteresis", "drag", "churning", "seal", "cage")
 ROLLING_MODELS = ("auto", "auto_sharp", "biboulet_ivr", "biboulet_ehl", "biboulet_transition", "houpert_ivr",
                   "houpert_ehl", "biboulet_pvr")
+#: full-film traction: a constant μ_e (seed 000 eq 18), or the oil's Eyring / limiting-shear-stress law
+TRACTION_MODELS = ("constant", "eyring")
 #: rolling_model of this module → model of :func:`~thermobear.losses.rolling.rolling_force`
 _ROLLING_FORCE_MODEL = {"auto": "auto_smooth", "auto_sharp": "auto"}
 SUPPLIES = ("oil_jet", "grease", "oil_bath", "oil_air", "dry_film")
@@ -74,13 +89,14 @@ class LossResult:
     ----------
     P_W : float or ndarray              total power loss [W]
     torque_Nm : float or ndarray        friction torque on the rotating ring, P/ω [N m]
-    breakdown_W : dict                  sliding, rolling, pivoting, hysteresis, drag [W]
+    breakdown_W : dict                  sliding, rolling, pivoting, hysteresis, drag, churning, seal, cage [W]
     contacts : ContactArrays            per contact arrays (a mapping), ``"inner"``/``"outer"`` → dict of
                                         Q [N], alpha [rad], a, b [m], u [m/s], T_C, eta [Pa s],
                                         h_min, h_c [m], Lambda, regime (str), mu, F_R [N],
                                         P_rolling, P_sliding, P_pivoting, P_hysteresis [W], spin [rad/s],
                                         M, L (Moes parameters) [-]
-    heat_W : dict                       heat sources: ``inner_ring``, ``outer_ring``, ``balls``, ``oil`` [W]
+    heat_W : dict                       heat sources: ``inner_ring``, ``outer_ring``, ``balls``, ``oil``
+                                        (drag), ``bath`` (churning), ``seal``, ``cage`` [W]
     load : LoadDistribution
     omega_c : cage speed [rad/s]
     models_used : dict                  model per sub-problem with the reason
@@ -130,6 +146,11 @@ class ContactSet:
     P_sliding_mu : ndarray        Heathcote sliding power per unit friction coefficient [W]
     P_pivoting_mu : ndarray       pivoting power per unit friction coefficient [W]
     P_hysteresis : ndarray        hysteresis power [W]
+    slips : ndarray               |slip speed| of Heathcote micro-slip and of pivoting at the strip nodes
+                                  ξ_k of :data:`thermobear.losses.traction.STRIP_NODES` [m/s], (*batch, 2, Z, 2, k)
+    p_strip : ndarray             mean pressure across the rolling direction there, (π/4) p_max √(1 − ξ_k²) [Pa],
+                                  (*batch, 2, Z, 1, k)
+    K_z : float or None           SKF bearing-type constant of the replenishment factor (None: bore/OD or kind unknown)
     ehl : EHLContacts             the contacts prepared for the film and regime formulas
                                   (:func:`thermobear.lubrication.film.ehl_contacts`)
     rolling : RollingContacts     the contacts prepared for the rolling-force formulas
@@ -159,6 +180,9 @@ class ContactSet:
     P_sliding_mu: np.ndarray
     P_pivoting_mu: np.ndarray
     P_hysteresis: np.ndarray
+    slips: np.ndarray
+    p_strip: np.ndarray
+    K_z: float | None
     ehl: EHLContacts
     rolling: RollingContacts
 
@@ -195,7 +219,7 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
     rotating : str               ``"inner"`` or ``"outer"``
     hertz_method : str           ``"exact"`` or an approximation (``thermobear.contact.hertz.METHODS``)
     control : str, optional      ball spin control; default ``"radial"`` (thrust), ``"outer"`` otherwise
-    centrifugal : bool           add F_c/cos α to the outer contact load
+    centrifugal : bool           add F_c/cos α to the outer contact load (or one flag per operating point)
     load : LoadDistribution, optional
                                  a solved load distribution (must match Fa, Fr, M); with a leading
                                  batch axis B when solved for array loads
@@ -253,10 +277,11 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
     free = ball_kinematics(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, control=control).omega_c
     w_cage = np.asarray(common_cage_speed(np.broadcast_to(free, sh), Qi), float)
     omega_c = np.broadcast_to(w_cage[ex], sh)
-    if centrifugal and brg.kind != "thrust":
+    cf = np.asarray(centrifugal, bool)
+    if cf.any() and brg.kind != "thrust":
         Fc = 0.5 * brg.ball_mass * brg.dm * omega_c**2
         ca = np.cos(ao)
-        Qo = Qo + np.where(ca > np.cos(np.deg2rad(80.0)), Fc / np.maximum(ca, 1e-3), 0.0)
+        Qo = Qo + np.where(cf[..., None] & (ca > np.cos(np.deg2rad(80.0))), Fc / np.maximum(ca, 1e-3), 0.0)
     kin = caged_ball_kinematics(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, omega_c, Qi, Qo, control=control)
     # both raceways at once, stacked on an axis before the balls (inner, outer): (*batch, 2, Z)
     col = (2, 1)                                                # per-raceway constants against (*batch, 2, Z)
@@ -274,24 +299,49 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
     P_sl = sliding_power_heathcote(1.0, Q2, a2, Ra2, omega_roll2)
     P_piv = np.asarray(pivoting_moment(1.0, Q2, a2)) * np.abs(spin2)
     P_hys = np.asarray(hysteresis_moment(Q2, brg.D, np.maximum(Ry2 / Rx2, 1.0))) * np.abs(omega_roll2)
+    slips, p_strip = _strip_slips(Q2, a2, b2, Ra2, spin2, omega_roll2)
+    try:
+        K_z = skf_K_z(brg.kind) if brg.bore is not None and brg.outer_diameter is not None else None
+    except InputError:
+        K_z = None
     models = {
         "load_distribution": ("Jones–Harris low-speed, rigid rings" + (", tilt free" if M is not None else ""),
                               "quasi-static ball loads and angles (seed 004 eqs 6–8)"),
         "hertz": (hertz_method, "exact elliptic integrals" if hertz_method == "exact" else "approximation chosen"),
         "kinematics": (f"no-slip at contact centres, {control} control, one cage speed",
                        "thrust: symmetric radial ball axis (seed 000)" if control == "radial" else "Jones outer-race control"),
-        "centrifugal": ("F_c/cos α on the outer contact" if centrifugal and brg.kind != "thrust" else "none",
+        "centrifugal": ("F_c/cos α on the outer contact" if cf.all() and brg.kind != "thrust" else
+                        "F_c/cos α on the outer contact of some points" if cf.any() and brg.kind != "thrust" else "none",
                         "balls outside the load zone ride on the outer race"),
     }
     f = _frozen
     Q2, Rx2, Ry2, u2, a2, b2 = (f(v) for v in (Q2, Rx2, Ry2, u2, a2, b2))
-    inv_omega = np.where(omega > 0, 1.0 / np.where(omega > 0, omega, 1.0), 0.0)
+    inv_omega = np.where(omega > 0, 1.0 / np.maximum(omega, np.finfo(float).tiny), 0.0)     # (subnormal ω: finite)
     return ContactSet(brg=brg, n_rpm=f(nb), omega=f(omega), inv_omega=f(inv_omega), load=load, omega_c=f(omega_c),
                       omega_cage=f(w_cage), omega_ball=f(np.abs(np.broadcast_to(kin.omega_R, omega_c.shape))),
                       models_used=models, Q=f(Q2), alpha=f(al2), Rx=f(Rx2), Ry=f(Ry2),
                       a=f(a2), b=f(b2), u=f(u2), spin=f(spin2), omega_roll=f(omega_roll2), P_sliding_mu=f(P_sl),
-                      P_pivoting_mu=f(P_piv), P_hysteresis=f(P_hys), ehl=ehl_contacts(Q2, Rx2, Ry2, u2, brg.E_prime),
+                      P_pivoting_mu=f(P_piv), P_hysteresis=f(P_hys), slips=f(slips), p_strip=f(p_strip), K_z=K_z,
+                      ehl=ehl_contacts(Q2, Rx2, Ry2, u2, brg.E_prime),
                       rolling=rolling_contacts(Q2, Rx2, Ry2, u2, brg.E_prime, a2, b2))
+
+
+def _strip_slips(Q, a, b, Ra, spin, omega_roll):
+    """Slip speeds of Heathcote micro-slip (|ω_roll| |B(ξ0 a) − B(ξ a)|, seed 000 eq 7) and pivoting
+    (|ω_s| a ξ) at the strip nodes ξ of :data:`~thermobear.losses.traction.STRIP_NODES`, stacked
+    (*contacts, 2, nodes) [m/s], and the slice mean pressure (π/4) p_max √(1 − ξ²) of the Hertz contact
+    there, (*contacts, 1, nodes) [Pa]."""
+    xi = STRIP_NODES[0]
+    a_ = a[..., None]
+    x = xi * a_
+    slip_spin = np.abs(spin)[..., None] * x
+    Ra2 = np.broadcast_to(Ra, a.shape)[..., None] ** 2
+    dB = np.sqrt(np.maximum(Ra2 - x * x, 0.0)) - np.sqrt(np.maximum(Ra2 - (XI0_HEATHCOTE * a_) ** 2, 0.0))
+    slip_heath = np.abs(omega_roll)[..., None] * np.abs(dB)
+    ab = a * b
+    p_max = np.where(ab > 0, 1.5 * Q / (np.pi * np.where(ab > 0, ab, 1.0)), 0.0)
+    p_strip = (0.25 * np.pi) * p_max[..., None] * np.sqrt(1.0 - xi**2)
+    return np.stack((slip_heath, slip_spin), axis=-2), p_strip[..., None, :]
 
 
 # --------------------------------------------------------------------------- temperatures
@@ -362,7 +412,7 @@ def _drag_power(cs, oil, T_oil, eta_oil, supply, oil_flow_m3_s):
         P = [drag_loss(brg.Z, brg.D, brg.dm, wc, X, oil.rho(t), e, t + 273.15).P_W
              for t, e in zip(T_oil.ravel().tolist(), eta_oil.ravel().tolist())]
         return np.array(P).reshape(T_oil.shape)
-    run = cs.n_rpm > 0
+    run = cs.omega_cage > 0                       # (a subnormal speed: a cage speed of 0)
     all_run = bool(run.all())
     if supply == "oil_jet":
         W = np.asarray(oil_flow_m3_s, float) * 1e6 * 60.0                             # [cm³/min]
@@ -378,10 +428,50 @@ def _drag_power(cs, oil, T_oil, eta_oil, supply, oil_flow_m3_s):
     return P if all_run else np.where(run, P, 0.0)
 
 
+def _inlet_viscosity(cs, oil, T2, eta2, per_point=False):
+    """Inlet viscosity lowered by inlet shear heating [Pa s]: Gupta et al. (1992) φ_T at the contacts'
+    thermal loading (pure rolling at the centre, u_s = 2u), read as the viscosity of the thermal film
+    (:mod:`thermobear.lubrication.thermal_film`)."""
+    L = thermal_loading_parameter(_at(oil.beta_at, T2, per_point), eta2, 2.0 * cs.u, _at(oil.k_th, T2, per_point))
+    return thermal_inlet_viscosity(eta2, thermal_reduction_gupta(L))
+
+
+def _replenishment(cs, oil, T2, supply, per_point=False):
+    """SKF's kinematic replenishment factor Φ_rs (:func:`~thermobear.losses.skf.phi_rs`) of the
+    bearing at each contact's viscosity [-] (bore, OD in mm; K_z of the bearing kind, K_rs of the supply)."""
+    brg = cs.brg
+    if cs.K_z is None or supply not in K_RS:
+        raise InputError("models.starvation", True, "the replenishment factor needs the bearing's bore and outside "
+                         "diameter, an SKF bearing kind and an oil or grease supply (" + ", ".join(K_RS) + ")")
+    n = np.asarray(cs.n_rpm, float)[(...,) + (None,) * 2]
+    return phi_rs(n, _at(oil.nu, T2, per_point), brg.bore * 1e3, brg.outer_diameter * 1e3, cs.K_z, K_RS[supply])
+
+
+def _added(cs, oil, lead, T_bath_C, T_cage_C, oil_level_m, seal_torque_Nm, cage, per_point=False):
+    """Churning, seal and cage powers [W] (each (*lead, *batch)) of :func:`evaluate_losses` (``oil`` with
+    values per point against the batch axis last: ``per_point``)."""
+    brg, shape = cs.brg, lead + cs.batch
+    zero = np.zeros(shape)
+    out = {"churning": zero, "seal": zero + np.asarray(seal_torque_Nm, float) * cs.omega, "cage": zero}
+    if oil_level_m is not None:
+        T = np.broadcast_to(np.asarray(T_bath_C, float), shape)
+        w = immersed_fraction(np.broadcast_to(np.asarray(oil_level_m, float), cs.batch), brg.dm, brg.D)
+        out["churning"] = zero + churning_loss(brg.Z, brg.D, brg.dm, cs.omega_cage, w, _at(oil.rho, T, per_point),
+                                               _at(oil.eta, T, per_point)).P_W
+    if cage is not None:
+        T = np.broadcast_to(np.asarray(T_cage_C, float), shape)
+        w_rel = (cs.omega if cage.guide_rotates else 0.0) - cs.omega_cage
+        out["cage"] = zero + cage_loss(_at(oil.eta, T, per_point), brg.Z, brg.D, brg.dm, w_rel, cs.omega_ball, cage.mu_pocket,
+                                       cage.d_land, cage.b_land, cage.c_land).P_W
+    return out
+
+
 def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=None, T_oil_C=None,
                     supply: str = "oil_jet", oil_flow_m3_s=0.0, Rq_ball: float = 0.05e-6,
                     Rq_ring: float = 0.1e-6, mu_boundary: float = 0.11, mu_full_film: float = 0.05,
-                    rolling_model: str = "auto", drag: bool = True) -> LossResult:
+                    rolling_model: str = "auto", drag: bool = True, traction: str = "constant",
+                    inlet_heating: bool = False, starvation: bool = False, oil_level_m=None, T_bath_C=None,
+                    seal_torque_Nm=0.0, cage: CageLand | None = None, T_cage_C=None) -> LossResult:
     r"""Temperature-dependent part of the local model on prepared contacts [W].
 
     Parameters
@@ -399,6 +489,22 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
                                   as :func:`bearing_losses`; ``oil_flow_m3_s`` [m³/s] may have the shape
                                   of ``cs.batch``, the roughnesses and friction coefficients the shape
                                   ``cs.batch + (1, 1)`` (one value per operating point)
+    traction : str                ``"constant"``: full-film μ = ``mu_full_film`` (seed 000 eq 18);
+                                  ``"eyring"``: the film's Eyring / limiting-shear-stress traction on the slip
+                                  of each contact (:func:`~thermobear.losses.traction.strip_traction_coefficient`,
+                                  the oil's ``eyring_stress`` and ``limiting_shear``)
+    inlet_heating : bool          thermal reduction of film and rolling force by inlet shear heating
+                                  (Gupta et al. 1992, :mod:`thermobear.lubrication.thermal_film`)
+    starvation : bool             kinematic replenishment: the rolling force times SKF's Φ_rs of the supply
+                                  (:func:`~thermobear.losses.skf.phi_rs`; needs the bearing's bore and OD)
+    oil_level_m : array_like, optional  oil-bath level above the lowest point of the outer-ring raceway
+                                  [m] (``cs.batch``): churning of the balls through the bath; None: none
+    T_bath_C : array_like, optional  bath temperature [°C] (default T_oil_C, else T_C)
+    seal_torque_Nm : array_like   friction torque of the seals [N m] (``cs.batch``; SKF's model is
+                                  temperature independent: :func:`~thermobear.losses.seals.seal_friction`)
+    cage : CageLand, optional     a ring-guided cage (:class:`~thermobear.losses.cage.CageLand`): land
+                                  friction and ball–pocket sliding; None: no cage loss
+    T_cage_C : array_like, optional  temperature of the oil at the cage land [°C] (default T_oil_C, else T_C)
 
     Returns
     -------
@@ -418,7 +524,9 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
         P = 2 u F_R + \mu\,(P_{sl}/\mu + P_{piv}/\mu) + P_{hys}
 
     with the μ = 1 sliding and pivoting powers and the hysteresis power of the ContactSet; the drag
-    of the balls is :func:`~thermobear.losses.drag.drag_loss` (Pouly et al. 2010).  Temperatures
+    of the balls is :func:`~thermobear.losses.drag.drag_loss` (Pouly et al. 2010), their churning in
+    a bath :func:`~thermobear.losses.drag.churning_loss`, the seal power the seal torque × ω, the cage
+    loss :func:`~thermobear.losses.cage.cage_loss`.  Temperatures
     with leading axes (e.g. shape (2, *batch): two states per operating point, for finite
     differences) evaluate every state in one pass.
 
@@ -437,43 +545,75 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
         raise InputError("rolling_model", rolling_model, f"must be one of {', '.join(ROLLING_MODELS)}")
     if supply not in SUPPLIES:
         raise InputError("supply", supply, "must be " + ", ".join(SUPPLIES[:-1]) + " or " + SUPPLIES[-1])
-    dragged = drag and supply not in ("oil_bath", "dry_film") and bool(cs.n_rpm.any())
+    if traction not in TRACTION_MODELS:
+        raise InputError("traction", traction, f"must be one of {', '.join(TRACTION_MODELS)}")
+    dragged = drag and supply not in ("oil_bath", "dry_film") and bool(cs.omega_cage.any())
     Tall, lead, per_ball = _temperatures(cs, T_C, T_inner_C, T_outer_C, T_oil_C, dragged)
     T2 = Tall[..., :2, :]                           # the raceways' contact temperatures
     pp = getattr(oil, "points", None) is not None   # values per operating point: against (…, B, 2|3, Z|1)
     oil_c = oil.aligned(2) if pp else oil
     eta_all = _at(oil_c.eta, Tall, pp)              # contacts and (drag) the oil–air mixture in one call
     eta2, alpha2 = eta_all[..., :2, :], _at(oil_c.alpha_p_at, T2, pp)
-    h_min, h_c = cs.ehl.film_thickness(eta2, alpha2, kind=("min", "central"))
-    reg = cs.ehl.regime(eta2, alpha2)
-    F_R = cs.rolling.force(eta2, _ROLLING_FORCE_MODEL.get(rolling_model, rolling_model), alpha_p=alpha2, regime=reg)
+    eta_in = _inlet_viscosity(cs, oil_c, T2, eta2, pp) if inlet_heating else eta2
+    h_min, h_c = cs.ehl.film_thickness(eta_in, alpha2, kind=("min", "central"))
+    reg = cs.ehl.regime(eta_in, alpha2)
+    F_R = cs.rolling.force(eta_in, _ROLLING_FORCE_MODEL.get(rolling_model, rolling_model), alpha_p=alpha2, regime=reg)
+    if starvation:
+        F_R = F_R * _replenishment(cs, oil_c, T2, supply, pp)
     if np.any(Rq_ball) or np.any(Rq_ring):
         Lam = specific_film_thickness(h_min, Rq_ball, Rq_ring)
     else:                                           # smooth surfaces: Λ = ∞, full-film friction
         Lam = np.full(h_min.shape, np.inf)
-    mu = mixed_friction_ianus(Lam, mu_full_film, mu_boundary)
+    if traction == "eyring":
+        oil_s = oil.aligned(4) if pp else oil       # per point against (…, B, 2, Z, 2, nodes)
+        mu_f = strip_traction_coefficient(cs.slips, cs.p_strip, h_c[..., None], eta2[..., None], alpha2[..., None],
+                                          oil_s.eyring_stress, oil_s.limiting_shear)  # (..., 2, Z, 2): micro-slip, spin
+        mu = mixed_friction_ianus(Lam, mu_f[..., 0], mu_boundary)
+        mu_piv = mixed_friction_ianus(Lam, mu_f[..., 1], mu_boundary)
+    else:
+        mu = mu_piv = mixed_friction_ianus(Lam, mu_full_film, mu_boundary)
     P = np.empty((4,) + h_min.shape)                # rolling, sliding, pivoting, hysteresis per contact
     P[0] = rolling_power(cs.u, F_R)
     np.multiply(mu, cs.P_sliding_mu, out=P[1])
-    np.multiply(mu, cs.P_pivoting_mu, out=P[2])
+    np.multiply(mu_piv, cs.P_pivoting_mu, out=P[2])
     P[3] = cs.P_hysteresis
     if dragged:
         P_drag = _drag_power(cs, oil, Tall[..., 2, 0], eta_all[..., 2, 0], supply, oil_flow_m3_s)
     else:
         P_drag = np.zeros(lead + cs.batch)
-    per_contact = dict(T_C=T2, eta=eta2, h_min=h_min, h_c=h_c, Lambda=Lam, regime=reg.code, mu=mu, F_R=F_R,
+    T_aux = T_C if T_oil_C is None else T_oil_C
+    added = _added(cs, oil, lead, T_aux if T_bath_C is None else T_bath_C, T_aux if T_cage_C is None else T_cage_C,
+                   oil_level_m, seal_torque_Nm, cage, pp)
+    per_contact = dict(T_C=T2, eta=eta2, h_min=h_min, h_c=h_c, Lambda=Lam, regime=reg.code, mu=mu,
+                       mu_pivoting=np.broadcast_to(mu_piv, h_min.shape), F_R=F_R,
                        P_rolling=P[0], P_sliding=P[1], P_pivoting=P[2], P_hysteresis=P[3], M=reg.M, L=reg.L)
     models = dict(cs.models_used)
     seen = ", ".join(REGIMES[i] for i in np.flatnonzero(np.bincount(reg.index.ravel(), minlength=4)))
     models.update({
         "rolling": (rolling_model, "per-contact regime: " + seen if rolling_model == "auto" else "chosen explicitly"),
         "film": ("Hamrock–Dowson h_min, h_c; regime by NVM dominant terms", "seed 000 eq 15, seed 004 §3"),
-        "friction": ("mixed μ(Λ) seed 000 eq 18", f"μ_e {mu_full_film}, μ_a {mu_boundary}"),
+        "friction": ("mixed μ(Λ) seed 000 eq 18", f"μ_e {_shown(mu_full_film)}, μ_a {_shown(mu_boundary)}"
+                     if traction != "eyring" else
+                     f"μ_e from the film's traction (Eyring τ0 {_shown(oil.eyring_stress, '.3g')} Pa, Λ_L "
+                     f"{_shown(oil.limiting_shear)}; Johnson & Tevaarwerk 1977, Bair & Winer 1979), "
+                     f"μ_a {_shown(mu_boundary)}"),
+        "inlet_heating": ("Gupta et al. 1992 φ_T on the inlet viscosity" if inlet_heating else "isothermal inlet", ""),
+        "starvation": (f"SKF Φ_rs (K_rs {K_RS.get(supply, 0):g}) on the rolling force" if starvation
+                       else "fully flooded", ""),
         "drag": ("Pouly 2010 sphere drag" if drag and supply not in ("oil_bath", "dry_film") else "none",
                  {"oil_jet": "Parker oil fraction", "oil_air": "oil fraction 1 %", "grease": "air only"}.get(
                      supply, "not modelled for this supply")),
     })
-    return _result(cs, P, P_drag, per_contact, models)
+    if oil_level_m is not None:
+        models["churning"] = ("Pouly drag in oil × immersed share of the ball path", "oil level given")
+    if cage is not None:
+        models["cage"] = ("Petroff land + ball–pocket sliding", "ring-guided cage")
+    return _result(cs, P, P_drag, per_contact, models, added)
+
+
+def _shown(v, fmt="g") -> str:
+    """A model parameter as the reasons show it: its value, or "per point" (values per operating point)."""
+    return format(float(v), fmt) if np.ndim(v) == 0 else "per point"
 
 
 def _as(x):
@@ -506,18 +646,20 @@ class ContactArrays(Mapping):
         return len(_SIDES)
 
 
-def _result(cs, P, P_drag, per_contact, models):
-    """The LossResult of the per-contact powers ``P`` (4, *lead, *batch, 2, Z) and the drag (*lead, *batch)."""
+def _result(cs, P, P_drag, per_contact, models, added):
+    """The LossResult of the per-contact powers ``P`` (4, *lead, *batch, 2, Z), the drag (*lead, *batch) and
+    the churning, seal and cage powers ``added`` (each (*lead, *batch))."""
     S = P.sum(-1)                                   # (4, *lead, *batch, 2): summed over the balls
     fam = S.sum(-1)                                 # each family summed over both raceways
     per_side = S.sum(0)                             # contact power of each raceway
     P_in, P_out = per_side[..., 0], per_side[..., 1]
     per_contact.update(Q=cs.Q, alpha=cs.alpha, a=cs.a, b=cs.b, u=cs.u, spin=cs.spin)
     breakdown = {"sliding": _as(fam[1]), "rolling": _as(fam[0]), "pivoting": _as(fam[2]),
-                 "hysteresis": _as(fam[3]), "drag": _as(P_drag)}
-    total = fam[1] + fam[0] + fam[2] + fam[3] + P_drag
+                 "hysteresis": _as(fam[3]), "drag": _as(P_drag), "churning": _as(added["churning"]),
+                 "seal": _as(added["seal"]), "cage": _as(added["cage"])}
+    total = fam[1] + fam[0] + fam[2] + fam[3] + P_drag + added["churning"] + added["seal"] + added["cage"]
     heat = {"inner_ring": _as(0.5 * P_in), "outer_ring": _as(0.5 * P_out), "balls": _as(0.5 * (P_in + P_out)),
-            "oil": _as(P_drag)}
+            "oil": _as(P_drag), "bath": _as(added["churning"]), "seal": _as(added["seal"]), "cage": _as(added["cage"])}
     return LossResult(P_W=_as(total), torque_Nm=_as(total * cs.inv_omega), breakdown_W=breakdown,
                       contacts=ContactArrays(per_contact), heat_W=heat, load=cs.load,
                       omega_c=_as(cs.omega_cage), models_used=models, contact_W={"inner": _as(P_in), "outer": _as(P_out)})
@@ -528,8 +670,9 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
                    supply: str = "oil_jet", oil_flow_m3_s=0.0, Rq_ball: float = 0.05e-6,
                    Rq_ring: float = 0.1e-6, mu_boundary: float = 0.11, mu_full_film: float = 0.05,
                    rolling_model: str = "auto", hertz_method: str = "exact", control: str | None = None,
-                   centrifugal: bool = True, drag: bool = True, load: LoadDistribution | None = None
-                   ) -> LossResult:
+                   centrifugal: bool = True, drag: bool = True, load: LoadDistribution | None = None,
+                   traction: str = "constant", inlet_heating: bool = False, starvation: bool = False,
+                   oil_level_m=None, seal_torque_Nm=0.0, cage: CageLand | None = None) -> LossResult:
     r"""Power loss of a ball bearing by the local contact model.
 
     Parameters
@@ -558,6 +701,10 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
     centrifugal : bool              add F_c/cos α to the outer contact load
     drag : bool                     include the drag term
     load : LoadDistribution         reuse a load distribution (must match Fa, Fr, M)
+    traction, inlet_heating, starvation
+                                    full-film traction law, inlet shear heating, kinematic replenishment
+                                    (see :func:`evaluate_losses`)
+    oil_level_m, seal_torque_Nm, cage  churning, seal and cage terms, as :func:`evaluate_losses`
 
     Returns
     -------
@@ -579,10 +726,19 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
     >>> max(r.breakdown_W, key=r.breakdown_W.get), bool(abs(r.torque_Nm * 4800 * np.pi / 30 / r.P_W - 1) < 1e-12)
     ('rolling', True)
     """
-    batch = np.broadcast_shapes(np.shape(Fa), np.shape(Fr), np.shape(n_rpm), np.shape(T_C),
-                                np.shape(T_oil_C) if T_oil_C is not None else ())
+    shapes = [np.shape(v) for v in (Fa, Fr, n_rpm, T_C)] + [np.shape(T_oil_C) if T_oil_C is not None else ()]
+    try:
+        batch = np.broadcast_shapes(*shapes)
+    except ValueError:
+        raise InputError("Fa, Fr, n_rpm, T_C, T_oil_C", "shapes " + ", ".join(map(str, shapes)),
+                         "must broadcast together (numpy rules)") from None
+    check_loads(brg, Fa, Fr, M, n_rpm)                    # before any solve: what no answer exists for
+    check_limit("n_dm", np.asarray(n_rpm, float) * brg.dm * 1e3, "n_rpm")    # warns beyond the validated speed
     cs = prepare_contacts(brg, Fa, Fr, np.broadcast_to(np.asarray(n_rpm, float), batch), M=M, rotating=rotating,
                           hertz_method=hertz_method, control=control, centrifugal=centrifugal, load=load)
+    check_contacts(brg, cs.sides, "Fa, Fr, M", warn=True, given=loads_text(Fa, Fr, M))
     return evaluate_losses(cs, oil, T_C, T_inner_C=T_inner_C, T_outer_C=T_outer_C, T_oil_C=T_oil_C, supply=supply,
                            oil_flow_m3_s=oil_flow_m3_s, Rq_ball=Rq_ball, Rq_ring=Rq_ring, mu_boundary=mu_boundary,
-                           mu_full_film=mu_full_film, rolling_model=rolling_model, drag=drag)
+                           mu_full_film=mu_full_film, rolling_model=rolling_model, drag=drag, traction=traction,
+                           inlet_heating=inlet_heating, starvation=starvation, oil_level_m=oil_level_m,
+                           seal_torque_Nm=seal_torque_Nm, cage=cage)

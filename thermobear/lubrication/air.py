@@ -5,17 +5,18 @@ CoolProp's ``PropsSI`` (Lemmon et al. 2000 pseudo-pure air; Lemmon & Jacobsen
 about 1.7 s per process.  At the cavity pressure (1 atm) this module reads
 density, viscosity, conductivity and c_p on 200–600 K at 1 K steps from
 ``materials/air_1atm.toml`` — a table written from ``PropsSI`` by
-:func:`write_table` (its header names the CoolProp version) — and interpolates
-with cubic splines (relative error < 1e-6 against ``PropsSI``; tests/test_air.py
-checks the shipped table against the installed CoolProp).  Other pressures go
-to ``PropsSI`` directly (CoolProp is imported only then: its import costs ~1.7 s).
+``validation/air_table.py`` (its header names the CoolProp version), with the
+pieces of a not-a-knot cubic spline through each column — and evaluates the
+pieces (relative error < 1e-6 against ``PropsSI``; tests/test_air.py checks the
+shipped table against the installed CoolProp and the pieces against scipy).
+Other pressures go to ``PropsSI`` directly (CoolProp is imported only then: its
+import costs ~1.7 s).
 """
 from __future__ import annotations
 
 from functools import lru_cache
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 
 from thermobear.errors import InputError
 from thermobear.files import data_dir, read_toml
@@ -44,43 +45,31 @@ def _grid_K() -> np.ndarray:
 def _table():
     """The spline's cubic pieces, read once per process from ``materials/air_1atm.toml``: an array
     (4, n_intervals, 4 properties) of coefficients c0..c3 of v = c3 + s (c2 + s (c1 + s c0)),
-    s = T − T_i, and the same as nested tuples of Python floats (one temperature: no arrays)."""
+    s = T − T_i, and the same as nested tuples of Python floats (one temperature: no arrays).
+    The pieces must pass through the tabulated values at the knots (checked)."""
     d = read_toml(str(data_dir("materials") / "air_1atm.toml"))
-    where, fix = "materials/air_1atm.toml", " (regenerate it with thermobear.lubrication.air.write_table)"
-    cols = []
+    where, fix = "materials/air_1atm.toml", " (regenerate it with validation/air_table.py)"
+    vals, pieces = [], []
     try:
         T = np.asarray(d["T_K"], float)
         for k in _KEYS:
-            cols.append(np.asarray(d[_TABLE_KEYS[k]], float))
+            vals.append(np.asarray(d[_TABLE_KEYS[k]], float))
+            pieces.append(np.asarray(d["spline_" + _TABLE_KEYS[k]], float))
     except (KeyError, TypeError, ValueError) as exc:
-        raise InputError(where, str(exc), "columns T_K, " + ", ".join(_TABLE_KEYS.values()) + " of numbers" + fix) from None
+        raise InputError(where, str(exc), "columns T_K, " + ", ".join(_TABLE_KEYS.values()) + " and their spline_ "
+                         "pieces, of numbers" + fix) from None
     if not np.array_equal(T, _grid_K()) or d.get("p_Pa") != P_ATM:
         raise InputError(where, d.get("p_Pa"), f"a 1 K grid on {T_RANGE_K} K at {P_ATM} Pa" + fix)
-    if any(c.shape != T.shape or not np.all(np.isfinite(c) & (c > 0)) for c in cols):
-        raise InputError(where, None, f"{T.size} finite, positive values per column" + fix)
-    c = CubicSpline(T, np.column_stack(cols)).c                 # one spline, 4 columns
-    return c, [tuple(tuple(float(c[m, i, q]) for m in range(4)) for q in range(4)) for i in range(c.shape[1])]
-
-
-def write_table(path) -> None:
-    """Write the 1 atm air table (``materials/air_1atm.toml``) from CoolProp's ``PropsSI``.
-
-    Run it when CoolProp's air model changes: ``python -c "import thermobear.lubrication.air as a;
-    a.write_table('materials/air_1atm.toml')"``; tests/test_air.py compares the shipped table with the
-    installed CoolProp."""
-    import CoolProp
-    T = _grid_K()
-    props = _propssi(T, P_ATM)
-    lines = ["# Dry air at 1 atm, 200-600 K in 1 K steps: thermobear.lubrication.air interpolates it with cubic splines.",
-             f"# Source: CoolProp {CoolProp.__version__} PropsSI(\"D\"|\"V\"|\"L\"|\"C\", \"T\", T, \"P\", 101325, \"Air\")",
-             "# (Lemmon et al. 2000 pseudo-pure air; Lemmon & Jacobsen 2004 viscosity and conductivity).",
-             "# Written by thermobear.lubrication.air.write_table; checked against the installed CoolProp by tests/test_air.py.",
-             'name = "air_1atm"', f"p_Pa = {P_ATM!r}",
-             "T_K = [" + ", ".join(f"{t:.1f}" for t in T) + "]"]
-    for k in _KEYS:
-        lines.append(f"{_TABLE_KEYS[k]} = [" + ", ".join(repr(float(v)) for v in np.asarray(props[k], float)) + "]")
-    with open(path, "w", encoding="utf-8") as fh:
-        fh.write("\n".join(lines) + "\n")
+    n = T.size - 1
+    if any(v.shape != T.shape or not np.all(np.isfinite(v) & (v > 0)) for v in vals) or \
+            any(p.shape != (4 * n,) or not np.all(np.isfinite(p)) for p in pieces):
+        raise InputError(where, None, f"{T.size} finite, positive values and {4 * n} spline coefficients per column" + fix)
+    c = np.stack([p.reshape(n, 4).T for p in pieces], axis=-1)      # (4, n, 4 properties)
+    knots = np.stack(vals, axis=-1)
+    if not (np.allclose(c[3], knots[:-1], rtol=1e-12, atol=0.0)
+            and np.allclose(_cubic(*c, 1.0), knots[1:], rtol=1e-9, atol=0.0)):
+        raise InputError(where, None, "spline pieces through the tabulated values" + fix)
+    return c, [tuple(tuple(float(c[m, i, q]) for m in range(4)) for q in range(4)) for i in range(n)]
 
 
 def _cubic(c0, c1, c2, c3, s):

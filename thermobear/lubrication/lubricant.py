@@ -39,7 +39,7 @@ import math
 import numpy as np
 
 
-from thermobear.files import data_dir, lookup, names_in
+from thermobear.files import data_dir, lookup, names_in, read_toml
 from thermobear.errors import ExtrapolationWarning, InputError
 from thermobear.schema import Field, check_table, check_uncertainty
 from thermobear.validity import T_LUBRICANT_REFUSE_C, T_LUBRICANT_WARN_C, check as check_limit
@@ -48,7 +48,8 @@ from thermobear.units import ZERO_C_K
 __all__ = [
     "Lubricant", "lubricant", "lubricant_names",
     "walther_Z", "walther_nu_from_Z", "walther_fit", "walther_nu",
-    "density_api", "gold_alpha_p", "cragoe_k_th", "cragoe_cp",
+    "density_api", "gold_alpha_p", "cragoe_k_th", "cragoe_cp", "walther_temperature_coefficient",
+    "traction_defaults",
     "T_WARN_C", "T_VALID_C",
 ]
 
@@ -174,9 +175,45 @@ def walther_nu(A, B, T_K):
     >>> round(float(walther_nu(A, B, 333.15)), 2)
     19.51
     """
+    return walther_nu_from_Z(_walther_Z_at(A, B, T_K))
+
+
+def _walther_Z_at(A, B, T_K):
+    """D341 Z = 10^(10^(A − B log10 T)) at T_K [K]."""
     T = _num(T_K)
-    Z = 10.0 ** (10.0 ** (A - B * _xp(T).log10(T)))
-    return walther_nu_from_Z(Z)
+    return 10.0 ** (10.0 ** (A - B * _xp(T).log10(T)))
+
+
+def walther_temperature_coefficient(A, B, T_K):
+    r"""Temperature–viscosity coefficient of the kinematic viscosity, −d ln ν/dT, from ASTM D341 [1/K].
+
+    Parameters
+    ----------
+    A, B : float       Walther constants (see :func:`walther_fit`) [-]
+    T_K : array_like   absolute temperature [K]
+
+    Returns
+    -------
+    ndarray  −d ln ν/dT [1/K]
+
+    Notes
+    -----
+    Differentiating log10 log10 Z = A − B log10 T:
+
+    .. math::
+
+        -\frac{d\ln\nu}{dT} = \frac{B\, Z \ln Z}{\nu\, T},\qquad Z = 10^{10^{A - B\log_{10}T}}
+
+    with dν/dZ = 1 (the exponential correction of :func:`walther_Z` matters below 2 cSt only).
+
+    Examples
+    --------
+    >>> A, B = walther_fit(36.6, 313.15, 7.8, 373.15)
+    >>> round(float(walther_temperature_coefficient(A, B, 333.15)), 4)
+    0.028
+    """
+    Z = _walther_Z_at(A, B, T_K)
+    return B * Z * _xp(Z).log(Z) / (walther_nu_from_Z(Z) * _num(T_K))
 
 
 # ---------------------------------------------------------------------------
@@ -301,6 +338,29 @@ def cragoe_cp(rho15, T_C):
     return (1684.8 + 3.391 * _num(T_C)) / _xp(d).sqrt(d)
 
 
+_TRACTION_KEYS = ("eyring_stress_Pa", "limiting_shear_coefficient")
+
+
+def traction_defaults(base_oil: str) -> dict:
+    """Eyring stress [Pa] and limiting shear stress–pressure coefficient [-] of a base-oil family
+    (``materials/lubricant_traction.toml``, sources there): keys ``eyring_stress_Pa``,
+    ``limiting_shear_coefficient``, and ``uncertainty`` (key → :class:`~thermobear.schema.Uncertainty`,
+    their ranges).
+
+    >>> d = traction_defaults("mineral")
+    >>> d["eyring_stress_Pa"], d["uncertainty"]["eyring_stress_Pa"].lo
+    (5000000.0, 2000000.0)
+    """
+    table = read_toml(str(data_dir("materials") / "lubricant_traction.toml"))
+    if base_oil not in table or not isinstance(table[base_oil], dict):
+        raise InputError("lubricant.base_oil", base_oil, "traction data exist for "
+                         + ", ".join(k for k, v in table.items() if isinstance(v, dict)))
+    out = dict(table[base_oil])
+    out["uncertainty"] = check_uncertainty(out.get("uncertainty", {}), {k: FIELDS[k] for k in _TRACTION_KEYS},
+                                           f"lubricant_traction.{base_oil}")
+    return out
+
+
 # ---------------------------------------------------------------------------
 # Lubricant
 # ---------------------------------------------------------------------------
@@ -347,7 +407,10 @@ class Lubricant:
     Methods (T_C scalar or array [°C]; scalar in → float out)
     -------
     nu(T_C) [cSt], eta(T_C) [Pa s], rho(T_C) [kg/m³], alpha_p_at(T_C) [1/Pa],
-    k_th(T_C) [W/(m K)], cp(T_C) [J/(kg K)]
+    k_th(T_C) [W/(m K)], cp(T_C) [J/(kg K)], beta_at(T_C) [1/K]
+
+    Attributes ``eyring_stress`` [Pa] and ``limiting_shear`` [-]: the base oil's traction properties
+    (arguments ``eyring_stress``, ``limiting_shear``; default :func:`traction_defaults` of ``base_oil``).
 
     Notes
     -----
@@ -363,7 +426,8 @@ class Lubricant:
 
     def __init__(self, nu40_cSt, nu100_cSt, rho15, alpha_p=None, *, gold_s=None, gold_t=None,
                  k_th=None, cp=None, name="custom", kind="oil", base_oil="mineral",
-                 thickener=None, description="", estimated=(), uncertainty=None):
+                 thickener=None, description="", estimated=(), eyring_stress=None, limiting_shear=None,
+                 uncertainty=None):
         nu40 = _positive(f"lubricant[{name}].nu40_cSt", nu40_cSt)
         nu100 = _positive(f"lubricant[{name}].nu100_cSt", nu100_cSt)
         if not np.all(nu100 < nu40):
@@ -371,11 +435,11 @@ class Lubricant:
                              f"must be < nu40_cSt = {nu40_cSt} (viscosity falls with temperature)")
         A, B = walther_fit(nu40, _T40_K, nu100, _T100_K)
         self._setup(A, B, rho15, alpha_p, gold_s, gold_t, k_th, cp, name, kind, base_oil,
-                    thickener, description, estimated, uncertainty)
+                    thickener, description, estimated, eyring_stress, limiting_shear, uncertainty)
 
     # shared by __init__ and from_single_point
     def _setup(self, A, B, rho15, alpha_p, gold_s, gold_t, k_th, cp, name, kind, base_oil,
-               thickener, description, estimated, uncertainty=None):
+               thickener, description, estimated, eyring_stress=None, limiting_shear=None, uncertainty=None):
         self.name, self.description = str(name), str(description)
         if kind not in ("oil", "grease"):
             raise InputError(f"lubricant[{name}].kind", kind, 'must be "oil" or "grease"')
@@ -393,6 +457,11 @@ class Lubricant:
         self._k_th = None if k_th is None else _positive(f"lubricant[{name}].k_th", k_th)
         self._cp = None if cp is None else _positive(f"lubricant[{name}].cp", cp)
         self.estimated = tuple(estimated)
+        fam = traction_defaults(base_oil) if eyring_stress is None or limiting_shear is None else {}
+        self.eyring_stress = _positive(f"lubricant[{name}].eyring_stress_Pa",
+                                       fam["eyring_stress_Pa"] if eyring_stress is None else eyring_stress)
+        self.limiting_shear = _positive(f"lubricant[{name}].limiting_shear_coefficient",
+                                        fam["limiting_shear_coefficient"] if limiting_shear is None else limiting_shear)
         self.uncertainty = dict(uncertainty or {})
         sizes = {np.size(v) for v in self._numbers().values() if np.ndim(v)}
         if len(sizes) > 1:
@@ -402,7 +471,8 @@ class Lubricant:
 
     def _numbers(self) -> dict:
         return {"walther_A": self.walther_A, "walther_B": self.walther_B, "rho15": self.rho15, "alpha_p": self.alpha_p,
-                "gold_s": self.gold_s, "gold_t": self.gold_t, "_k_th": self._k_th, "_cp": self._cp}
+                "gold_s": self.gold_s, "gold_t": self.gold_t, "_k_th": self._k_th, "_cp": self._cp,
+                "eyring_stress": self.eyring_stress, "limiting_shear": self.limiting_shear}
 
     def per_point(self, values: dict) -> "Lubricant":
         """This lubricant with data-file values given per operating point.
@@ -504,7 +574,8 @@ class Lubricant:
         obj = cls.__new__(cls)
         obj._setup(A, walther_B, rho15, alpha_p, kw.get("gold_s"), kw.get("gold_t"), kw.get("k_th"),
                    kw.get("cp"), name, kw.get("kind", "oil"), kw.get("base_oil", "mineral"),
-                   kw.get("thickener"), kw.get("description", ""), kw.get("estimated", ()), kw.get("uncertainty"))
+                   kw.get("thickener"), kw.get("description", ""), kw.get("estimated", ()),
+                   kw.get("eyring_stress"), kw.get("limiting_shear"), kw.get("uncertainty"))
         return obj
 
     @classmethod
@@ -571,6 +642,15 @@ class Lubricant:
             T = self._T(T_C, "eta")
         nu = walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K)
         return _out(nu * 1e-6 * density_api(self.rho15, T), T_C)
+
+    def beta_at(self, T_C):
+        """Temperature–viscosity coefficient −d ln η/dT [1/K] at T_C [°C]: ASTM D341
+        (:func:`walther_temperature_coefficient`) plus the density's thermal expansion (:func:`density_api`)."""
+        T = float(T_C) if _plain(T_C) else self._T(T_C, "beta_at")
+        a = _K1_API_LUBE / self.rho15
+        dT = T - 15.0
+        return _out(walther_temperature_coefficient(self.walther_A, self.walther_B, T + ZERO_C_K)
+                    + a * (1.0 + 1.6 * a * dT), T_C)
 
     def _const(self, v, T, T_C):
         """A constant property ``v`` shaped like the temperatures."""
@@ -643,6 +723,10 @@ FIELDS = {
     "uncertainty": Field.table("ranges of estimated values (thermobear.schema.check_uncertainty)"),
     "grease_T_min_C": Field.number("°C", -100.0, 300.0, doc="grease operating range (maker)"),
     "grease_T_max_C": Field.number("°C", -100.0, 300.0, doc="grease operating range (maker)"),
+    "eyring_stress_Pa": Field.number("Pa", 0.0, None, lo_open=True,
+                                     doc="Eyring stress of the base oil (traction; default by base_oil family)"),
+    "limiting_shear_coefficient": Field.number("-", 0.0, 1.0, lo_open=True,
+                                               doc="limiting shear stress / pressure (traction; default by family)"),
 }
 _ALIASES = {"eta_Pa_s": "eta_ref_Pa_s", "T_C": "T_ref_C"}
 
@@ -655,7 +739,19 @@ def _from_mapping(d: dict, where: str) -> Lubricant:
         raise InputError(f"{where}.thermal", d.get("thermal"), '"cragoe", or give k_W_mK and cp_J_kgK')
     d["uncertainty"] = check_uncertainty(d.get("uncertainty", {}),
                                          {k: FIELDS[k] for k in d if FIELDS[k].kind == "number"}, where)
-    return _build(d, where)
+    return _build(_with_traction_defaults(d), where)
+
+
+def _with_traction_defaults(d: dict) -> dict:
+    """The data values with the base-oil family's traction values (:func:`traction_defaults`) where the
+    lubricant gives none: listed as estimated, with the family's ranges (so that they are sampled)."""
+    missing = [k for k in _TRACTION_KEYS if k not in d]
+    if not missing:
+        return d
+    fam = traction_defaults(d.get("base_oil", "mineral"))
+    return {**d, **{k: fam[k] for k in missing}, "estimated": tuple(d.get("estimated", ())) + tuple(missing),
+            "uncertainty": {**{k: fam["uncertainty"][k] for k in missing if k in fam["uncertainty"]},
+                            **d["uncertainty"]}}
 
 
 def _build(d: dict, where: str) -> Lubricant:
@@ -664,7 +760,8 @@ def _build(d: dict, where: str) -> Lubricant:
                   k_th=d.get("k_W_mK"), cp=d.get("cp_J_kgK"), name=d.get("name", "custom"),
                   kind=d.get("kind", "oil"), base_oil=d.get("base_oil", "mineral"),
                   thickener=d.get("thickener"), description=d.get("description", ""),
-                  estimated=d.get("estimated", ()), uncertainty=d.get("uncertainty"))
+                  estimated=d.get("estimated", ()), eyring_stress=d.get("eyring_stress_Pa"),
+                  limiting_shear=d.get("limiting_shear_coefficient"), uncertainty=d.get("uncertainty"))
     lub = _construct(d, where, common)
     lub.table = {k: v for k, v in d.items() if k != "uncertainty"}
     return lub

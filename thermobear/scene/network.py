@@ -1,21 +1,29 @@
 """The scene's thermal network: which file, with the scene's overrides and imposed temperatures.
 
 A scene names a bundled network (``networks/<name>.toml``) or a path (absolute, relative to the
-scene file, or — for a scene built in code — to the working directory).  :func:`network_spec`
-returns its table with ``[thermal.parameters]`` applied and the ``[thermal] fixed_C`` nodes
-turned into fixed-temperature boundaries; every name the scene uses (parameters, imposed nodes,
-``[rig.map]`` targets) is checked against the network here, when the scene is read.
+scene file, or — for a scene built in code — to the working directory), or describes its machine
+(``[shaft]``, ``[housing]`` and the lubrication keys of ``[lubricant]``): the network is then
+built from those dimensions (:func:`machine_from_sections` → a
+:class:`~thermobear.thermal.builders.Machine`, ``scene.network``; :func:`thermobear.thermal.builders.build_network`).
+:func:`network_spec` returns its table with ``[thermal.parameters]`` applied and the ``[thermal]
+fixed_C`` nodes turned into fixed-temperature boundaries; every name the scene uses (parameters,
+imposed nodes, ``[rig.map]`` targets) is checked against the network here, when the scene is read.
 """
 from __future__ import annotations
 
 import copy
 from pathlib import Path
 
+from thermobear.contact.materials import material_names
 from thermobear.errors import InputError
 from thermobear.files import data_dir, names_in, read_toml
+from thermobear.thermal.builders import Housing, Lubrication, Machine, Shaft, build_network
 from thermobear.thermal.network import ROLES
 
-__all__ = ["network_path", "network_spec", "network_nodes", "heat_receiving_nodes"]
+__all__ = ["network_path", "network_spec", "network_nodes", "network_table", "heat_receiving_nodes",
+           "machine_from_sections", "lubrication_of", "check_lubrication_keys", "PARAMETRIC"]
+
+PARAMETRIC = "parametric"     #: the network name of a network built from the scene's dimensions
 
 _KEEP_ON_IMPOSE = ("description", "measured_by", "source")
 
@@ -106,13 +114,107 @@ def network_spec(network: str, scene_path: str | None = None, *, parameters: dic
     >>> spec["elements"][0]["G_W_K"]
     0.8
     """
-    path = network_path(str(network), scene_path)
-    spec = copy.deepcopy(read_toml(str(path)))
+    spec = network_table(network, scene_path)
     _impose(spec, dict(fixed_C or {}), str(network))
     _override(spec, dict(parameters or {}), str(network))
     return spec
 
 
-def network_nodes(network: str, scene_path: str | None = None) -> list:
+def network_table(network, scene_path: str | None = None) -> dict:
+    """A fresh copy of a network's table: a file's (bundled name or path), or built from a
+    :class:`~thermobear.thermal.builders.Machine`."""
+    if isinstance(network, Machine):
+        return build_network(network).spec
+    return copy.deepcopy(read_toml(str(network_path(str(network), scene_path))))
+
+
+def network_nodes(network, scene_path: str | None = None) -> list:
     """Node names of a network (no overrides applied)."""
+    if isinstance(network, Machine):
+        return list(build_network(network).spec["nodes"])
     return list(read_toml(str(network_path(str(network), scene_path))).get("nodes", {}))
+
+
+def _material(v, where):
+    if v is not None and v not in material_names():
+        raise InputError(where, v, f"one of the bundled materials: {', '.join(material_names())}")
+    return v
+
+
+def _only_for(sec: dict, where: str, keys: tuple, ok: bool, why: str):
+    for k in keys:
+        if k in sec and not ok:
+            raise InputError(f"{where}.{k}", sec[k], why)
+
+
+def _housing(h: dict, seals: str = "none") -> Housing:
+    """``seals``: the bearing's closures (``bearing.seals``: none, shields or contact seals)."""
+    t = h.get("type", "block")
+    _only_for(h, "housing", ("height_mm", "depth_mm"), t == "block", f"applies to block housings (type = {t!r})")
+    _only_for(h, "housing", ("outer_diameter_mm",), t != "block", "applies to pillow and flange housings (a block "
+              "takes height_mm and depth_mm)")
+    _only_for(h, "housing", ("base_length_mm",), t == "pillow", f"applies to pillow blocks (type = {t!r})")
+    _only_for(h, "housing", ("centre_height_mm",), t != "flange", "a flange housing has no centre height")
+    _only_for(h, "housing", ("air_speed_m_s",), h.get("air") == "forced", 'give air = "forced" with an air speed')
+    if h.get("air") == "forced" and not h.get("air_speed_m_s", 0.0) > 0:
+        raise InputError("housing.air_speed_m_s", h.get("air_speed_m_s"), 'forced air needs a speed > 0 [m/s]')
+    mm = {k: (h[f"{k}_mm"] * 1e-3 if f"{k}_mm" in h else None)
+          for k in ("axial_length", "height", "depth", "outer_diameter", "centre_height", "base_length")}
+    return Housing(type=t, material=_material(h.get("material", "cast-iron-gjl-250"), "housing.material"),
+                   offset=h.get("offset_mm", 0.0) * 1e-3, end_left=h.get("end_left"), end_right=h.get("end_right", "air"),
+                   mounting=h.get("mounting", "frame"), mounting_h_W_m2K=h.get("mounting_h_W_m2K"),
+                   frame_material=_material(h.get("frame_material", "steel-c45"), "housing.frame_material"),
+                   air=h.get("air", "still"), air_speed=h.get("air_speed_m_s", 0.0),
+                   emissivity=h.get("emissivity", 0.8),
+                   interference=h["interference_um"] * 1e-6 if "interference_um" in h else None,
+                   fit_h_W_m2K=h.get("fit_h_W_m2K"), seals=seals, **mm)
+
+
+def _shaft(s: dict) -> Shaft:
+    for side in ("left", "right"):
+        _only_for(s, "shaft", (f"T_end_{side}_C",), s.get(f"end_{side}") == "fixed",
+                  f'applies to a fixed end (end_{side} = "fixed")')
+    return Shaft(diameter=s["diameter_mm"] * 1e-3 if "diameter_mm" in s else None, bore=s.get("bore_mm", 0.0) * 1e-3,
+                 length_left=s["length_left_mm"] * 1e-3 if "length_left_mm" in s else None,
+                 length_right=s["length_right_mm"] * 1e-3 if "length_right_mm" in s else None,
+                 material=_material(s.get("material", "steel-c45"), "shaft.material"),
+                 end_left=s.get("end_left", "free"), end_right=s.get("end_right", "free"),
+                 T_end_left_C=s.get("T_end_left_C"), T_end_right_C=s.get("T_end_right_C"),
+                 surface=s.get("surface", "air"),
+                 interference=s["interference_um"] * 1e-6 if "interference_um" in s else None,
+                 fit_h_W_m2K=s.get("fit_h_W_m2K"))
+
+
+def check_lubrication_keys(lub: dict, supply: str) -> None:
+    """InputError when a lubrication key of ``[lubricant]`` does not apply to the supply."""
+    _only_for(lub, "lubricant", ("oil_level_mm", "sump_volume_L"), supply == "oil_bath", f"applies to supply = "
+              f'"oil_bath" (supply = {supply!r})')
+    _only_for(lub, "lubricant", ("grease_fill",), supply == "grease", f'applies to supply = "grease" (supply = {supply!r})')
+    _only_for(lub, "lubricant", ("air_flow_L_min",), supply == "oil_air", f'applies to supply = "oil_air" (supply = '
+              f"{supply!r})")
+    _only_for(lub, "lubricant", ("oil_feed",), supply == "oil_jet", f'applies to supply = "oil_jet" (supply = {supply!r})')
+
+
+def lubrication_of(lub: dict, lubricant, supply: str) -> Lubrication:
+    """The network's view of the lubrication (``[lubricant]`` keys already typed): the lubricant's
+    volumetric heat capacity and conductivity at 40 °C (capacities and grease conduction are fixed
+    per network)."""
+    check_lubrication_keys(lub, supply)
+    T = 40.0
+    return Lubrication(supply=supply, feed=lub.get("oil_feed", "jet"), beta=lub.get("jet_penetration"),
+                       oil_level=lub["oil_level_mm"] * 1e-3 if "oil_level_mm" in lub else None,
+                       sump_volume=lub["sump_volume_L"] * 1e-3 if "sump_volume_L" in lub else None,
+                       grease_fill=lub.get("grease_fill"), air_flow=lub.get("air_flow_L_min", 0.0) * 1e-3 / 60.0,
+                       rho_cp=float(lubricant.rho(T) * lubricant.cp(T)), k=float(lubricant.k_th(T)))
+
+
+def machine_from_sections(shaft: dict, housing: dict, lub: dict, *, bearing, lubricant, supply: str, rotating: str,
+                          n_rpm: float, T_ambient_C: float, Fa: float, Fr: float, name: str = PARAMETRIC,
+                          seals: str = "none") -> Machine:
+    """The machine of a scene from its typed ``[shaft]``, ``[housing]`` and ``[lubricant]`` tables
+    (edge units converted to SI here, once).  ``n_rpm``, ``T_ambient_C``, ``Fa``, ``Fr``: the scene's
+    operating point, at which the discretisation rule estimates the convection and a clearance fit's
+    seat pressure (the network reads every operating point's own speed and temperatures)."""
+    return Machine(bearing=bearing, shaft=_shaft(shaft), housing=_housing(housing, seals),
+                   lubrication=lubrication_of(lub, lubricant, supply), rotating=rotating, n_rpm=float(n_rpm),
+                   T_ambient_C=float(T_ambient_C), Fa=float(Fa), Fr=float(Fr), name=name)

@@ -7,11 +7,15 @@ every boolean a TOML boolean, every choice one of its listed values.  Sections (
 :data:`SECTIONS`; ``examples/README.md`` has the table)::
 
     [scene]      name, description, source
-    [bearing]    catalog = "7210" and/or inline geometry (thermobear.contact.geometry keys)
+    [bearing]    catalog = "7210" and/or inline geometry (thermobear.contact.geometry keys); seals,
+                 seal_sides, seal_diameter_mm; cage, cage_land_width_mm, cage_land_clearance_mm
     [lubricant]  name = "seed004-mineral" or inline properties (thermobear.lubrication.lubricant keys);
-                 supply, flow_L_h, T_in_C, Rq_ball_um, Rq_ring_um, mu_boundary, mu_full_film
+                 supply, flow_L_h, T_in_C, Rq_ball_um, Rq_ring_um, mu_boundary, mu_full_film, oil_level_mm
     [operation]  n_rpm, Fa_N, Fr_N, M_Nm (tilt free), rotating, T_C (prescribed temperature)
     [thermal]    network, T_ambient_C, [thermal.parameters], fixed_C = { node = °C }
+    [shaft]      the shaft, [housing] the housing: the thermal network built from these dimensions
+                 (network = "parametric", implied by either section; lubricant keys oil_level_mm,
+                 sump_volume_L, grease_fill, air_flow_L_min, oil_feed)
     [models]     overrides of the model choice (thermobear.models.choose_models)
     [rig]        J_kg_m2, [rig.map] channel = "node" | "input" | "ignore" | "impose:<node>"
 
@@ -36,13 +40,18 @@ from thermobear.contact.geometry import BallBearing, bearing, bearing_from_dict,
 from thermobear.contact.hertz import METHODS as HERTZ_METHODS
 from thermobear.errors import InputError
 from thermobear.files import read_toml
-from thermobear.losses.local import ROLLING_MODELS
+from thermobear.losses.cage import GUIDANCE
+from thermobear.losses.local import ROLLING_MODELS, TRACTION_MODELS
+from thermobear.losses.seals import CONTACT_SEALS, SEAL_TYPES, seal_constants
 from thermobear.lubrication.lubricant import FIELDS as LUBRICANT_FIELDS
 from thermobear.lubrication.lubricant import Lubricant, lubricant
 from thermobear.schema import Field, check_table, check_uncertainty, check_value
-from thermobear.scene.network import network_nodes, network_spec
+from thermobear.scene.network import (PARAMETRIC, check_lubrication_keys, lubrication_of, machine_from_sections,
+                                     network_nodes, network_spec)
+from thermobear.thermal.builders import Machine
 
-__all__ = ["Scene", "load_scene", "scene_from_dict", "SUPPLIES", "SECTIONS", "MODEL_FIELDS", "RIG_TARGETS"]
+__all__ = ["Scene", "load_scene", "scene_from_dict", "SUPPLIES", "SECTIONS", "MODEL_FIELDS", "RIG_TARGETS",
+           "SHAFT_FIELDS", "HOUSING_FIELDS"]
 
 SUPPLIES = ("oil_jet", "grease", "oil_bath", "oil_air", "dry_film")
 _T_LO, _T_HI = validity.T_LUBRICANT_REFUSE_C
@@ -62,9 +71,15 @@ MODEL_FIELDS = {
     "stiffness": Field.choice("nominal", "per_ball", doc="contact stiffness at the nominal or each ball's angle"),
     "high_speed": Field.flag("Jones high-speed ball equilibrium"),
     "losses": Field.choice("local", "skf", doc="per-contact local model or SKF 2004 global model"),
+    "churning": Field.flag("churning of the balls in an oil bath (needs an oil level)"),
+    "seals": Field.flag("friction of contact seals (SKF 2004)"),
+    "cage": Field.flag("cage land and ball-pocket friction (ring-guided cage)"),
     "skf_R1": Field.number("-", 0.0, None, lo_open=True, doc="SKF rolling constant R1"),
     "skf_S1": Field.number("-", 0.0, None, lo_open=True, doc="SKF sliding constant S1"),
     "skf_mu_EHL": Field.number("-", 0.0, 1.0, lo_open=True, doc="SKF full-film sliding friction"),
+    "traction": Field.choice(*TRACTION_MODELS, doc="full-film traction: constant mu_full_film or the oil's Eyring law"),
+    "inlet_heating": Field.flag("thermal film reduction by inlet shear heating (Gupta et al. 1992)"),
+    "starvation": Field.flag("kinematic replenishment: SKF phi_rs on the rolling force"),
 }
 
 _UNCERTAINTY = Field.table("ranges of estimated values: uncertainty.<key> = { range | factor | offset = [lo, hi], "
@@ -78,6 +93,76 @@ _SUPPLY_FIELDS = {
     "Rq_ring_um": Field.number("µm", 0.0, 10.0, doc="RMS roughness of the races"),
     "mu_boundary": Field.number("-", 0.0, 1.0, doc="boundary friction coefficient (seed 000 eq 18)"),
     "mu_full_film": Field.number("-", 0.0, 1.0, doc="full-film friction coefficient (seed 000 eq 18)"),
+    "oil_level_mm": Field.number("mm", 0.0, 1e4, doc="oil-bath level above the lowest point of the outer-ring "
+                                 "raceway (SKF's H), horizontal shaft; not given: no churning (a parametric housing "
+                                 "with an oil bath needs it)"),
+    "jet_penetration": Field.number("-", 0.0, 1.0, lo_open=True, doc="share of the supplied jet flow that passes "
+                                    "through the bearing (seed 004 §4.5 β); default 1: flow_L_h passes whole"),
+    "sump_volume_L": Field.number("L", 0.0, 1e5, lo_open=True, doc="oil bath: volume of the bath (default: the oil "
+                                  "in the housing's bore below the level)"),
+    "grease_fill": Field.number("-", 0.0, 1.0, lo_open=True, doc="grease: fill of the bearing's free volume "
+                                "(default 0.3)"),
+    "air_flow_L_min": Field.number("L/min", 0.0, 1e5, doc="oil–air / oil mist: carrier air flow (at 20 °C, 1 atm)"),
+    "oil_feed": Field.choice("jet", "circulating", doc="oil_jet: a jet (penetration 0.4) or circulating oil through "
+                             "the bearing (all of it)"),
+}
+
+_LENGTH = dict(unit="mm", lo=0.0, hi=1e4, lo_open=True)
+#: ``[shaft]``: the shaft of a parametric network (thermobear.thermal.builders; defaults there).
+SHAFT_FIELDS = {
+    "diameter_mm": Field.number(**_LENGTH, doc="shaft diameter (the bearing bore; a stepped shaft is not modelled)"),
+    "bore_mm": Field.number("mm", 0.0, 1e4, doc="bore of a hollow shaft (default 0: solid)"),
+    "length_left_mm": Field.number("mm", 0.0, 1e4, doc="from the bearing's side face to the shaft end (default 2.5 d)"),
+    "length_right_mm": Field.number("mm", 0.0, 1e4, doc="the same on the right"),
+    "material": Field.text("material name (default steel-c45)"),
+    "end_left": Field.choice("free", "fixed", "adiabatic", doc="free: convection; fixed: held at T_end_left_C; "
+                             "adiabatic: a symmetry plane"),
+    "end_right": Field.choice("free", "fixed", "adiabatic", doc="the same on the right"),
+    "T_end_left_C": _temperature("temperature of a fixed left end (default ambient)"),
+    "T_end_right_C": _temperature("temperature of a fixed right end (default ambient)"),
+    "surface": Field.choice("air", "enclosed", doc="the shaft outside the housing in the room's air, or enclosed"),
+    "interference_um": Field.number("µm", -1e3, 1e3, doc="diametral interference of the inner ring's seat, negative: "
+                                    "clearance (default: probable k5/m5 fit, g6 for a rotating outer ring)"),
+    "fit_h_W_m2K": Field.number("W/(m² K)", 0.0, 1e8, lo_open=True, doc="the seat's joint conductance, given"),
+}
+#: ``[housing]``: the housing of a parametric network.
+HOUSING_FIELDS = {
+    "type": Field.choice("block", "pillow", "flange", doc="rectangular block, pillow block, flanged housing"),
+    "material": Field.text("material name (default cast-iron-gjl-250)"),
+    "axial_length_mm": Field.number(**_LENGTH, doc="length along the shaft (default 2 × bearing width)"),
+    "height_mm": Field.number(**_LENGTH, doc="block: outer height (default 2 × bearing OD)"),
+    "depth_mm": Field.number(**_LENGTH, doc="block: outer depth across the shaft (default 2 × bearing OD)"),
+    "outer_diameter_mm": Field.number(**_LENGTH, doc="pillow / flange: body diameter (default 2 × bearing OD)"),
+    "centre_height_mm": Field.number(**_LENGTH, doc="shaft axis above the mounting face (block: half the height; "
+                                     "pillow: 0.7 × body diameter)"),
+    "base_length_mm": Field.number(**_LENGTH, doc="pillow: length of the foot across the shaft (default 2.5 × body "
+                                   "diameter)"),
+    "offset_mm": Field.number("mm", -1e4, 1e4, doc="axial position of the housing's centre from the bearing's (default 0)"),
+    "end_left": Field.choice("air", "mounted", "adiabatic", doc="left end face (flange: mounted by default)"),
+    "end_right": Field.choice("air", "mounted", "adiabatic", doc="right end face (default air)"),
+    "mounting": Field.choice("frame", "none", doc="bolted to a frame at ambient (default) or not"),
+    "mounting_h_W_m2K": Field.number("W/(m² K)", 0.0, 1e7, lo_open=True, doc="mounting joint (default 3600, "
+                                     "Bergman Table 3.2)"),
+    "frame_material": Field.text("material of the frame (default steel-c45)"),
+    "air": Field.choice("still", "forced", doc="air around the housing"),
+    "air_speed_m_s": Field.number("m/s", 0.0, 100.0, lo_open=True, doc="forced air speed"),
+    "emissivity": Field.number("-", 0.0, 1.0, lo_open=True, doc="of the housing's outside (default 0.8)"),
+    "interference_um": Field.number("µm", -1e3, 1e3, doc="diametral interference of the outer ring's seat, negative: "
+                                    "clearance (default: probable H7 fit, N7 for a rotating outer ring)"),
+    "fit_h_W_m2K": Field.number("W/(m² K)", 0.0, 1e8, lo_open=True, doc="the seat's joint conductance, given"),
+}
+
+#: ``[bearing]`` keys besides the geometry: seals and cage (defaults: no seal; a ball-centred cage).
+_BEARING_FIELDS = {
+    "seals": Field.choice(*SEAL_TYPES, doc="seal type: none, shield (non-contact) or an SKF contact seal"),
+    "seal_sides": Field.integer("-", 0, 2, doc="number of seals (default 2 with seals, 0 without)"),
+    "seal_diameter_mm": Field.number("mm", 0.0, None, lo_open=True, doc="seal counterface diameter d_s (SKF "
+                                     "product table d1/d2); default estimated d + 0.25 (D - d)"),
+    "cage": Field.choice(*GUIDANCE, doc="cage centring: balls (default), inner_ring or outer_ring land"),
+    "cage_land_width_mm": Field.number("mm", 0.0, None, lo_open=True, doc="axial width of the cage lands, "
+                                       "summed; default estimated B/4"),
+    "cage_land_clearance_mm": Field.number("mm", 0.0, None, lo_open=True, doc="radial cage-land clearance; "
+                                           "default estimated 0.5 % of the land diameter"),
 }
 
 #: Every section's keys (``bearing``: ``catalog`` plus the geometry keys of
@@ -85,7 +170,7 @@ _SUPPLY_FIELDS = {
 #: keys plus :data:`thermobear.lubrication.lubricant.FIELDS`).
 SECTIONS = {
     "scene": {"name": Field.text("scene name"), "description": Field.text(), "source": Field.text()},
-    "bearing": {"catalog": Field.text("catalogue designation (thermobear list bearings)")},
+    "bearing": {"catalog": Field.text("catalogue designation (thermobear list bearings)"), **_BEARING_FIELDS},
     "lubricant": {**_SUPPLY_FIELDS, **LUBRICANT_FIELDS},
     "operation": {
         "uncertainty": _UNCERTAINTY,
@@ -98,12 +183,14 @@ SECTIONS = {
     },
     "thermal": {
         "uncertainty": _UNCERTAINTY,
-        "network": Field.text("bundled network name or a .toml path"),
+        "network": Field.text('bundled network name, a .toml path, or "parametric" (built from [shaft], [housing])'),
         "T_ambient_C": _temperature("ambient temperature"),
         "parameters": Field.table('"<element or node>.<parameter>" = value overrides'),
         "fixed_C": Field.table("node = measured temperature [°C], imposed"),
     },
     "models": MODEL_FIELDS,
+    "shaft": SHAFT_FIELDS,
+    "housing": HOUSING_FIELDS,
     "rig": {"uncertainty": _UNCERTAINTY,
             "J_kg_m2": Field.number("kg m^2", 0.0, None, lo_open=True, doc="rotating inertia (spin-down)"),
             "map": Field.table('log channel = "node" | "input" | "ignore" | "impose:<node>"')},
@@ -130,15 +217,26 @@ class Scene:
     M : float | None              tilting moment [N m]; None holds the tilt
     T_C : float | None            prescribed contact temperature [°C] (None: solve the thermal network)
     oil_flow : float              supplied oil flow [m^3/s] (oil jet)
+    jet_penetration : float       share of it that passes through the bearing [-] (seed 004 §4.5 β;
+                                  default 1): the flow of Parker's oil fraction (drag)
+    oil_level : float | None      oil-bath level above the lowest point of the outer-ring raceway [m]
+                                  (SKF's H; horizontal shaft); None: not given (no churning)
     T_oil_in_C : float | None     oil inlet temperature [°C]
     T_ambient_C : float           ambient temperature [°C]
     Rq_ball, Rq_ring : float      RMS roughness [m]
     mu_boundary, mu_full_film : float   friction coefficients of seed 000 eq 18 [-]
-    network : str | None          thermal network name or path
+    network : str | Machine | None  thermal network name or path, or the machine a network is built
+                                  from (``[shaft]``, ``[housing]``; ``str(network) == "parametric"``)
     network_parameters : dict     overrides of the network's parameters
     T_fixed_C : dict              node → imposed temperature [°C] (measured rig temperatures; the
                                   node becomes a fixed-temperature boundary of the network)
     models : dict                 model overrides (see thermobear.models.choose_models)
+    seals : str                   seal type (``none``, ``shield`` or an SKF contact seal)
+    seal_sides : int              number of seals, 0–2
+    seal_diameter : float | None  seal counterface diameter [m] (None: estimated)
+    cage : str                    cage centring: ``balls``, ``inner_ring`` or ``outer_ring``
+    cage_land_width, cage_land_clearance : float | None   cage land width and radial clearance [m]
+                                  (None: estimated)
     rig_J_kg_m2 : float | None    rotating inertia of a spin-down rig [kg m²]
     rig_map : dict                log channel → node or special target (``[rig.map]``)
     uncertainty : dict            ``"<section>.<key>"`` → :class:`~thermobear.schema.Uncertainty` of the
@@ -165,16 +263,24 @@ class Scene:
     M: float | None = None
     T_C: float | None = None
     oil_flow: float = 0.0
+    jet_penetration: float = 1.0
     T_oil_in_C: float | None = None
     T_ambient_C: float = 20.0
     Rq_ball: float = 0.05e-6
     Rq_ring: float = 0.1e-6
     mu_boundary: float = 0.11
     mu_full_film: float = 0.05
-    network: str | None = None
+    network: str | Machine | None = None
     network_parameters: dict = field(default_factory=dict)
     T_fixed_C: dict = field(default_factory=dict)
     models: dict = field(default_factory=dict)
+    oil_level: float | None = None
+    seals: str = "none"
+    seal_sides: int = 0
+    seal_diameter: float | None = None
+    cage: str = "balls"
+    cage_land_width: float | None = None
+    cage_land_clearance: float | None = None
     rig_J_kg_m2: float | None = None
     rig_map: dict = field(default_factory=dict)
     uncertainty: dict = field(default_factory=dict)
@@ -202,10 +308,11 @@ class Scene:
         """Copy with values changed, in the scene's own edge units, each checked as in a scene file.
 
         Accepted keys: n_rpm, Fa (or Fa_N), Fr (Fr_N), M (M_Nm; None holds the tilt), T_C (None: solve
-        the network), T_oil_in_C, T_ambient_C, oil_flow_L_h, Rq_ball_um, Rq_ring_um, mu_boundary,
-        mu_full_film, rotating, supply, lubricant (name, table or Lubricant), bearing (catalogue name,
-        table or BallBearing), network, network_parameters (merged), T_fixed_C (node → °C, replaces;
-        ``{}`` clears), models (merged) and samples (address → number, replaces).
+        the network), T_oil_in_C, T_ambient_C, oil_flow_L_h, jet_penetration, oil_level_mm (None: not
+        given), Rq_ball_um, Rq_ring_um, mu_boundary, mu_full_film, rotating, supply, lubricant (name, table
+        or Lubricant), bearing (catalogue name, table or BallBearing), seals, seal_sides, cage, network,
+        network_parameters (merged), T_fixed_C (node → °C, replaces; ``{}`` clears), models (merged) and
+        samples (address → number, replaces).
 
         >>> from thermobear.scene import load_scene
         >>> import thermobear
@@ -214,13 +321,18 @@ class Scene:
         1500.0
         """
         kw = {}
-        for k, v in changes.items():
+        for k, v in sorted(changes.items(), key=lambda kv: kv[0] == "seal_sides"):   # sides after seals
             k = _ALIASES.get(k, k)
             if k not in _WITH:
                 raise InputError(f"scene.with_({k})", v, f"unknown override; accepted: {', '.join(_WITH)}")
             kw.update(_WITH[k](self, v, k))
         new = dataclasses.replace(self, **kw)
-        _check_scene(new, network_changed=bool({"network", "network_parameters", "T_fixed_C"} & set(kw)))
+        if new.network == PARAMETRIC:                                   # named now: build it from the sections
+            new = dataclasses.replace(new, network=_machine(new))
+        elif isinstance(new.network, Machine) and {"bearing", "lubricant", "supply", "rotating"} & set(kw):
+            new = dataclasses.replace(new, network=_machine(new))       # the machine follows its bearing
+        _check_scene(new, network_changed=bool({"network", "network_parameters", "T_fixed_C", "bearing", "lubricant",
+                                                "supply", "rotating"} & set(kw)))
         return new
 
 
@@ -275,6 +387,12 @@ _WITH = {
     "mu_boundary": _with_number("lubricant", "mu_boundary", "mu_boundary"),
     "mu_full_film": _with_number("lubricant", "mu_full_film", "mu_full_film"),
     "samples": lambda s, v, name: {"samples": check_table(v, {}, name, extra=lambda k: Field.number(doc="drawn value"))},
+    "oil_level_mm": _with_number("lubricant", "oil_level_mm", "oil_level", scale=1e-3, nullable=True),
+    "jet_penetration": _with_number("lubricant", "jet_penetration", "jet_penetration"),
+    "seals": lambda s, v, name: {"seals": check_value(v, SECTIONS["bearing"]["seals"], name),
+                                 "seal_sides": _default_sides(check_value(v, SECTIONS["bearing"]["seals"], name))},
+    "seal_sides": lambda s, v, name: {"seal_sides": check_value(v, SECTIONS["bearing"]["seal_sides"], name)},
+    "cage": lambda s, v, name: {"cage": check_value(v, SECTIONS["bearing"]["cage"], name)},
     "rotating": lambda s, v, name: {"rotating": check_value(v, SECTIONS["operation"]["rotating"], name)},
     "supply": lambda s, v, name: {"supply": check_value(v, SECTIONS["lubricant"]["supply"], name)},
     "network": lambda s, v, name: {"network": check_value(v, SECTIONS["thermal"]["network"], name)},
@@ -305,8 +423,15 @@ def _lubricant_of(sec: dict, where: str):
     return Lubricant.from_dict(props, where=where)
 
 
+def _default_sides(seals: str) -> int:
+    """Seals on the bearing when the scene does not say: 2 for a sealed or shielded bearing (…-2RS1,
+    …-2Z), 0 without seals."""
+    return 0 if seals == "none" else 2
+
+
 def _bearing_of(sec: dict) -> BallBearing:
     check_value(sec, Field.table(), "bearing")
+    sec = {k: v for k, v in sec.items() if k not in _BEARING_FIELDS}
     if "catalog" in sec:
         name = check_value(sec["catalog"], SECTIONS["bearing"]["catalog"], "bearing.catalog")
         base = bearing(name)
@@ -354,12 +479,49 @@ def _rig_map(v) -> dict:
     return check_table(v, {}, "rig.map", extra=lambda k: Field.text("node name, input, ignore or impose:<node>"))
 
 
+def _default_penetration(supply: str, lsec: dict) -> float:
+    """Share of the supplied oil that passes through the bearing when the scene does not say: 0.4 for a
+    jet (estimated: seed 004 §4.5's β after Brossier et al. 2021), all of it for circulating oil and the
+    other supplies."""
+    return 0.4 if supply == "oil_jet" and lsec.get("oil_feed", "jet") == "jet" else 1.0
+
+
+def _machine(s: Scene) -> Machine:
+    """The machine of a parametric scene, from its ``[shaft]``, ``[housing]`` and ``[lubricant]`` tables
+    (at the scene's own operating point: what the discretisation rule reads)."""
+    d = s.raw or {}
+    sh = check_table(d.get("shaft", {}), SHAFT_FIELDS, "shaft")
+    ho = check_table(d.get("housing", {}), HOUSING_FIELDS, "housing")
+    lub = check_table(d.get("lubricant", {}), SECTIONS["lubricant"], "lubricant") if "lubricant" in d else {}
+    old = s.network if isinstance(s.network, Machine) else None
+    if old is not None and not d:
+        return dataclasses.replace(old, bearing=s.bearing, rotating=s.rotating,
+                                   lubrication=lubrication_of({}, s.lubricant, s.supply))
+    closure = "contact" if s.seals in CONTACT_SEALS else "shields" if s.seals == "shield" else "none"
+    if s.supply == "oil_jet":
+        lub = {**lub, "jet_penetration": s.jet_penetration}       # the drag's and the network's share alike
+    return machine_from_sections(sh, ho, lub, bearing=s.bearing, lubricant=s.lubricant, supply=s.supply,
+                                 rotating=s.rotating, n_rpm=s.n_rpm, T_ambient_C=s.T_ambient_C, Fa=s.Fa, Fr=s.Fr,
+                                 seals=closure)
+
+
+def _network_of(d: dict, th: dict):
+    """The scene's network: a name or path, or ``"parametric"`` when it describes its machine."""
+    described = [k for k in ("shaft", "housing") if k in d]
+    net = th.get("network")
+    if described and net not in (None, PARAMETRIC):
+        raise InputError("thermal.network", net, f"[{'], ['.join(described)}] describe the machine of a parametric "
+                         'network: remove them, or the network name (or write network = "parametric")')
+    return PARAMETRIC if described else net
+
+
 def _check_scene(s: Scene, network_changed: bool = True):
     """Checks that involve more than one key (and the network's names)."""
     if s.supply == "oil_jet" and s.T_C is None and s.network is not None and s.T_oil_in_C is None:
         raise InputError("lubricant.T_in_C", None, "an oil-jet scene solved thermally needs the oil inlet temperature [°C]")
     if s.bearing.dm is not None:
         validity.check("n_dm", s.n_rpm * s.bearing.dm * 1e3, "operation.n_rpm", warn=False)
+    _check_added(s)
     if s.network is None:
         if s.T_fixed_C:
             raise InputError("thermal.fixed_C", s.T_fixed_C, "imposed node temperatures need a thermal network")
@@ -375,6 +537,26 @@ def _check_scene(s: Scene, network_changed: bool = True):
                                  f"{', '.join(nodes)} (or input, ignore, impose:<node>)")
 
 
+def _check_added(s: Scene):
+    """Oil level, seals and cage against the supply and the bearing."""
+    if s.oil_level is not None and s.supply in ("grease", "dry_film"):
+        raise InputError("lubricant.oil_level_mm", s.oil_level * 1e3, f"an oil level needs an oil supply "
+                         f"(oil_bath, oil_jet or oil_air), not {s.supply}")
+    if s.seals == "none" and s.seal_sides:
+        raise InputError("bearing.seal_sides", s.seal_sides, "0 without seals (bearing.seals = 'none')")
+    if s.seals != "none" and not s.seal_sides:
+        raise InputError("bearing.seal_sides", s.seal_sides, f"1 or 2 with bearing.seals = '{s.seals}' "
+                         "(or seals = 'none')")
+    if s.seals in CONTACT_SEALS:
+        if s.bearing.outer_diameter is None:
+            raise InputError("bearing.outer_diameter_mm", None, "SKF's seal constants are chosen by the outside "
+                             "diameter: give it")
+        seal_constants(s.seals, s.bearing.kind, s.bearing.outer_diameter * 1e3)     # refuses what SKF does not cover
+    if s.cage != "balls" and (s.bearing.bore is None or s.bearing.outer_diameter is None or s.bearing.width is None):
+        raise InputError("bearing.cage", s.cage, "a ring-guided cage's land is estimated from the bore, outside "
+                         "diameter and width: give them")
+
+
 def scene_from_dict(d: dict, path: str | None = None) -> Scene:
     """Validate a parsed scene table and convert it to SI (see the module docstring)."""
     check_table(d, {k: Field.table() for k in SECTIONS}, "scene file")
@@ -388,18 +570,29 @@ def scene_from_dict(d: dict, path: str | None = None) -> Scene:
     th = check_table(d.get("thermal", {}), SECTIONS["thermal"], "thermal")
     models = check_table(d.get("models", {}), MODEL_FIELDS, "models")
     rig = check_table(d.get("rig", {}), SECTIONS["rig"], "rig")
+    bx = check_table({k: v for k, v in d["bearing"].items() if k in _BEARING_FIELDS}, _BEARING_FIELDS, "bearing") \
+        if isinstance(d["bearing"], dict) else {}
+    mm = (lambda v: None if v is None else v * 1e-3)  # noqa: E731
     s = Scene(
         name=meta.get("name", Path(path).stem if path else "scene"),
         bearing=_bearing_of(d["bearing"]), lubricant=_lubricant_of(d["lubricant"], "lubricant"),
         supply=lsec.get("supply", "oil_jet"), n_rpm=op["n_rpm"], rotating=op.get("rotating", "inner"),
         Fa=op.get("Fa_N", 0.0), Fr=op.get("Fr_N", 0.0), M=op.get("M_Nm"), T_C=op.get("T_C"),
-        oil_flow=lsec.get("flow_L_h", 0.0) * 1e-3 / 3600.0, T_oil_in_C=lsec.get("T_in_C"),
+        oil_flow=lsec.get("flow_L_h", 0.0) * 1e-3 / 3600.0, jet_penetration=lsec.get("jet_penetration", _default_penetration(lsec.get("supply", "oil_jet"), lsec)),
+        T_oil_in_C=lsec.get("T_in_C"),
         T_ambient_C=th.get("T_ambient_C", 20.0), Rq_ball=lsec.get("Rq_ball_um", 0.05) * 1e-6,
         Rq_ring=lsec.get("Rq_ring_um", 0.1) * 1e-6, mu_boundary=lsec.get("mu_boundary", 0.11),
-        mu_full_film=lsec.get("mu_full_film", 0.05), network=th.get("network"),
+        mu_full_film=lsec.get("mu_full_film", 0.05), network=_network_of(d, th),
         network_parameters=_parameters(th.get("parameters", {})), T_fixed_C=_fixed(th.get("fixed_C")),
-        models=models, rig_J_kg_m2=rig.get("J_kg_m2"), rig_map=_rig_map(rig.get("map", {})),
+        models=models, oil_level=mm(lsec.get("oil_level_mm")), seals=bx.get("seals", "none"),
+        seal_sides=bx.get("seal_sides", _default_sides(bx.get("seals", "none"))),
+        seal_diameter=mm(bx.get("seal_diameter_mm")), cage=bx.get("cage", "balls"),
+        cage_land_width=mm(bx.get("cage_land_width_mm")), cage_land_clearance=mm(bx.get("cage_land_clearance_mm")),
+        rig_J_kg_m2=rig.get("J_kg_m2"), rig_map=_rig_map(rig.get("map", {})),
         uncertainty=_scene_uncertainty(d), source=meta.get("source", ""), path=path, raw=d)
+    check_lubrication_keys(lsec, s.supply)
+    if s.network == PARAMETRIC:
+        s = dataclasses.replace(s, network=_machine(s))
     _check_scene(s)
     return s
 

@@ -95,8 +95,7 @@ class ThermalNetwork:
     def blocks(self, G):
         """(A_ff, A_fb): the free × free (B, nf, nf) and free × fixed (B, nf, nb) blocks [W/K]."""
         s = self.structure
-        A = G @ s.pattern
-        return A[:, s.ff].reshape(self.B, s.nf, s.nf), A[:, s.fb].reshape(self.B, s.nf, s.nb)
+        return (G @ s.pattern_ff).reshape(self.B, s.nf, s.nf), (G @ s.pattern_fb).reshape(self.B, s.nf, s.nb)
 
     def dAT_free(self, T_K, dG) -> np.ndarray:
         """Free × free block of ∂(A(T) T)/∂T from the conductances' temperature dependence (B, nf, nf)."""
@@ -152,6 +151,8 @@ class Structure:
     users: dict               # free node → elements depending on it
     G0: np.ndarray            # (B, n_el) conductances of the other elements (dep columns 0)
 
+    pattern_ff: np.ndarray = None   # (n_el, nf*nf): the free × free block of the pattern
+    pattern_fb: np.ndarray = None   # (n_el, nf*nb): the free × fixed block
     i: np.ndarray = None      # element → its first node (flows)
     j: np.ndarray = None      # element → its second node
     adv: np.ndarray = None    # element → advective
@@ -179,10 +180,11 @@ class Structure:
             for m in elements[k].depends_on():
                 if not fixed[m]:
                     users.setdefault(m, []).append(k)
-        for a in (pattern,):
+        ff, fb = (free_i[:, None] * n + free_i[None, :]).ravel(), (free_i[:, None] * n + fixed_i[None, :]).ravel()
+        p_ff, p_fb = np.ascontiguousarray(pattern[:, ff]), np.ascontiguousarray(pattern[:, fb])
+        for a in (pattern, p_ff, p_fb):
             a.setflags(write=False)
-        return cls(pattern=pattern, ff=(free_i[:, None] * n + free_i[None, :]).ravel(),
-                   fb=(free_i[:, None] * n + fixed_i[None, :]).ravel(), nf=free_i.size, nb=fixed_i.size,
+        return cls(pattern=pattern, ff=ff, fb=fb, nf=free_i.size, nb=fixed_i.size, pattern_ff=p_ff, pattern_fb=p_fb,
                    fpos=tuple(fpos.tolist()), dep=dep, users=users, G0=None,
                    i=np.array([e.i for e in elements]), j=np.array([e.j for e in elements]),
                    adv=np.array([e.advective for e in elements]))

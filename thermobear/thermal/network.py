@@ -72,10 +72,16 @@ __all__ = ["NetworkTemplate", "ThermalNetwork", "prepare_network", "load_network
 #: Nodes that receive the losses, by role, each with its candidate node names in order of
 #: preference: each contact's loss ½ to the ball and ½ to the race (Pouly et al. 2010), drag to the
 #: oil–air mixture (seed 004 §4.5); the contact temperature is the mean of ball and race nodes.
+#: Churning heats the oil bath (``bath``: a sump node where the network has one), seal friction the
+#: seal (else the inner ring its lip runs on: its race node, so that a measured inner-ring node stays
+#: imposable), cage losses the cage (else the mixture around it).
 ROLES = {"inner": ("inner_race", "shaft_washer", "inner_ring", "bearing"),
          "outer": ("outer_race", "housing_washer", "outer_ring", "bearing"),
          "ball": ("balls", "bearing"),
-         "oil": ("oil_air", "balls", "bearing")}
+         "oil": ("oil_air", "balls", "bearing"),
+         "bath": ("oil_sump", "sump", "oil_bath", "oil_air", "balls", "bearing"),
+         "seal": ("seal", "inner_race", "shaft_washer", "inner_ring", "bearing"),
+         "cage": ("cage", "oil_air", "balls", "bearing")}
 
 #: Context roots whose values do not change with the operating point: expressions reading only
 #: these (and numbers) are evaluated once, by :func:`prepare_network`.
@@ -83,7 +89,7 @@ STATIC_ROOTS = frozenset({"bearing"})
 
 # unit suffix → (lower bound, strict) checked on every numeric key
 _POSITIVE = ("_m", "_m2", "_m3", "_kg", "_W_mK", "_W_m2K", "_J_K", "_kg_m3", "_J_kgK", "_W_K", "_K_W", "_N")
-_NONNEG = ("_m3_s", "_m_s", "_kg_s")
+_NONNEG = ("_m3_s", "_m_s", "_kg_s", "_rad_s")
 _DIMENSIONLESS = ("beta", "emissivity", "oil_fraction", "n_balls")
 _NODE_KEYS = {"C_J_K", "mass_kg", "volume_m3", "material", "T_C", "description", "estimated", "measured_by",
               "source", "uncertainty"}
@@ -306,7 +312,8 @@ def _instantiate(e: ElementTemplate, ctx, B, oil, sample=None) -> Element:
         p["a_m"], p["b_m"], p["semi_axes_from"] = _semi_axes(e, p, ctx, B)
     if e.type in ("convection", "advection") and oil is None:
         needs = (e.type == "advection" and not ("rho_kg_m3" in p and "cp_J_kgK" in p)) or (
-            e.type == "convection" and p["correlation"] in HARRIS_COEFFICIENTS and p.get("fluid", "oil_air") != "air")
+            e.type == "convection" and p["correlation"] in HARRIS_COEFFICIENTS and p.get("fluid", "oil_air") != "air"
+        ) or (e.type == "convection" and p.get("fluid") == "oil")
         if needs:
             key = "correlation" if e.type == "convection" else "rho_kg_m3"
             raise InputError(f"{e.field}.{key}", p.get(key), "needs the lubricant 'oil' in the context (or give "

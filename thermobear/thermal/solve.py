@@ -41,7 +41,7 @@ from thermobear.errors import InputError, NoConvergence
 from thermobear.thermal.network import ThermalNetwork
 
 __all__ = ["SteadyResult", "TransientResult", "solve_steady", "solve_linear", "solve_transient", "split_losses",
-           "sources_matrix", "batched_solve", "heat_out"]
+           "sources_matrix", "batched_solve", "heat_out", "LinearBoundary"]
 
 _C0 = 273.15
 
@@ -267,11 +267,44 @@ class TransientResult:
     network: ThermalNetwork = field(default=None, repr=False)
 
 
-def _start(net, T0_C):
-    """(B, n) start temperatures: fixed nodes at theirs, free nodes at ``T0_C`` (°C, a number, a
-    (B,) array, or node → °C), default the fixed node ``ambient`` (else the mean fixed T)."""
+@dataclass(frozen=True)
+class _Boundary:
+    """The fixed nodes of a network at time t [K]: their own temperatures, those named by a
+    ``fixed_C(t)`` callable replaced by its values."""
+
+    net: ThermalNetwork
+    fixed_C: Callable | None
+    names: tuple
+    index: np.ndarray
+
+    @classmethod
+    def of(cls, net, fixed_C):
+        if fixed_C is None:
+            return cls(net, None, (), np.zeros(0, int))
+        names = tuple(fixed_C(0.0))
+        for name in names:
+            if name not in net.index or not net.fixed[net.index[name]]:
+                raise InputError("fixed_C", name, f"a fixed node name ({', '.join(np.asarray(net.nodes)[net.fixed])})")
+        return cls(net, fixed_C, names, np.array([net.index[n] for n in names], int))
+
+    def values_K(self, t) -> np.ndarray:
+        """(B, k) temperatures [K] of the nodes named by fixed_C at time t [s]."""
+        d = self.fixed_C(t)
+        return np.stack([np.broadcast_to(np.asarray(d[n], float), (self.net.B,)) for n in self.names], axis=-1) + _C0
+
+    def T_K(self, t) -> np.ndarray:
+        """(B, n) temperatures [K] with the fixed nodes at their values at t (free nodes: undefined)."""
+        T = self.net.T_fixed_K.copy()
+        if self.fixed_C is not None:
+            T[:, self.index] = self.values_K(t)
+        return T
+
+
+def _start(net, T0_C, bnd=None):
+    """(B, n) start temperatures: fixed nodes at theirs (at t = 0), free nodes at ``T0_C`` (°C, a
+    number, a (B,) array, or node → °C), default the fixed node ``ambient`` (else the mean fixed T)."""
     free, fixed = ~net.fixed, net.fixed
-    T = net.T_fixed_K.copy()
+    T = net.T_fixed_K.copy() if bnd is None else bnd.T_K(0.0)
     if T0_C is None:
         a = net.index.get("ambient")
         T[:, free] = (T[:, [a]] if a is not None and fixed[a] else T[:, fixed].mean(axis=1, keepdims=True))
@@ -307,7 +340,12 @@ def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_
                                 segment [a, b) the callbacks see t < b; reported series are
                                 right-continuous
     fixed_C : callable          optional ``fixed_C(t) -> dict`` fixed node → °C (numbers or (B,)
-                                arrays), piecewise constant between breakpoints
+                                arrays): time-varying boundary temperatures, evaluated wherever the
+                                integrator evaluates the balance (inside a segment [a, b), like the
+                                sources).  One mechanism for steps (a function stepping at
+                                breakpoints) and for continuous boundaries (a logged temperature,
+                                linear between its samples: :class:`LinearBoundary`); the fixed nodes
+                                of the result hold its values at the output times
     t_eval : array_like         output times [s] (default: the integrator's steps)
     rtol, atol : float          integrator tolerances (atol in K)
     method : str                ``"BDF"`` or ``"Radau"``
@@ -338,7 +376,7 @@ def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_
         raise InputError("method", method, "a stiff integrator: BDF or Radau")
     if not (math.isfinite(t_end) and t_end > 0):
         raise InputError("t_end", t_end, "must be > 0 [s]")
-    free, fixed = ~net.fixed, net.fixed
+    free = ~net.fixed
     C = net.C_J_K[..., free]                      # (nf,), or (B, nf) when the capacities differ per point
     if np.any(~np.isfinite(C) | (C <= 0)):
         bad = [n for n, c in zip(net.free_nodes, np.atleast_2d(C).min(axis=0)) if not (np.isfinite(c) and c > 0)]
@@ -349,24 +387,19 @@ def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_
         sources = (lambda t, T_K: (np.broadcast_to(const, np.shape(T_K)), {}))  # noqa: E731
     B, nf = net.B, int(free.sum())
     edges = [0.0, *sorted({float(b) for b in breakpoints if 0 < float(b) < t_end}), float(t_end)]
-    T = _start(net, T0_C)
+    bnd = _Boundary.of(net, fixed_C)
+    T = _start(net, T0_C, bnd)
     t_eval = None if t_eval is None else np.asarray(t_eval, dtype=float)
     nfev, pieces, completed = [0], [], True
     y = T[:, free].ravel()
     for a, b in zip(edges[:-1], edges[1:]):
-        Tb = net.T_fixed_K.copy()
-        if fixed_C is not None:
-            for name, v in fixed_C(0.5 * (a + b)).items():
-                if name not in net.index or not fixed[net.index[name]]:
-                    raise InputError("fixed_C", name, "a fixed node name")
-                Tb[:, net.index[name]] = np.asarray(v, float) + _C0
-        sol, ok = _segment(net, sources, C, Tb, a, b, y, t_eval, nfev, rtol, atol, method, max_step, stop)
+        sol, ok = _segment(net, sources, C, bnd, a, b, y, t_eval, nfev, rtol, atol, method, max_step, stop)
         y = sol.y[:, -1].copy()
-        pieces.append((sol, Tb, a, b))
+        pieces.append((sol, a, b))
         if not ok:
             completed = False
             break
-    t_all, T_all = _collect(pieces, net, t_eval, B, nf)
+    t_all, T_all = _collect(pieces, net, t_eval, B, nf, bnd)
     P, report = sources(t_all, T_all) if t_all.size else (None, {})
     squeeze = (lambda v: v[:, 0] if B == 1 else v)  # noqa: E731
     return TransientResult(t=t_all, T_K=T_all, T_C={n: squeeze(T_all[..., k] - _C0) for k, n in enumerate(net.nodes)},
@@ -374,25 +407,31 @@ def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_
                            completed=completed, network=net)
 
 
-def _segment(net, sources, C, Tb, a, b, y0, t_eval, nfev, rtol, atol, method, max_step, stop):
+def _segment(net, sources, C, bnd, a, b, y0, t_eval, nfev, rtol, atol, method, max_step, stop):
     """One segment [a, b] of a transient: (solution, finished)."""
     free, fixed = ~net.fixed, net.fixed
     B, nf = net.B, C.shape[-1]
-    Tfull = Tb.copy()
     t_hi = np.nextafter(b, a)             # inputs of [a, b): the step at b belongs to the next segment
+    Tfull = bnd.T_K(a)
     Cb = np.broadcast_to(C, (B, nf))
     Cinv = (1.0 / Cb).ravel()
+    varying = bnd.fixed_C is not None
 
     def rhs(t, yf):
         nfev[0] += 1
+        tc = min(max(t, a), t_hi)
         Tfull[:, free] = yf.reshape(B, nf)
+        if varying:
+            Tfull[:, bnd.index] = bnd.values_K(tc)
         Aff, Afb = net.blocks(net.conductances(Tfull))
-        P, _ = sources(min(max(t, a), t_hi), Tfull)
+        P, _ = sources(tc, Tfull)
         q = (P[:, free] - np.einsum("bij,bj->bi", Aff, Tfull[:, free]) - np.einsum("bij,bj->bi", Afb, Tfull[:, fixed]))
         return q.ravel() * Cinv
 
     def jac(t, yf):
         Tfull[:, free] = yf.reshape(B, nf)
+        if varying:
+            Tfull[:, bnd.index] = bnd.values_K(min(max(t, a), t_hi))
         Aff, _ = net.blocks(net.conductances(Tfull))
         Jb = -Aff / Cb[:, :, None]
         return Jb[0] if B == 1 else sp.block_diag(list(Jb), format="csc")
@@ -424,6 +463,62 @@ def _segment(net, sources, C, Tb, a, b, y0, t_eval, nfev, rtol, atol, method, ma
     return _Segment(np.array(ts), np.array(ys).T), True
 
 
+@dataclass(frozen=True)
+class LinearBoundary:
+    r"""Logged temperatures of fixed nodes as a ``fixed_C(t)`` of :func:`solve_transient`: linear
+    between the samples, refused outside them (a log is not extrapolated).
+
+    .. math:: T(t) = T_k + (T_{k+1} - T_k) \frac{t - t_k}{t_{k+1} - t_k}, \quad t_k \le t \le t_{k+1}
+
+    Attributes
+    ----------
+    t_s : ndarray       sample times [s], strictly increasing
+    T_C : dict          node → temperatures at t_s [°C]
+    source : str        what the samples are (named in errors, e.g. the log's column)
+
+    Examples
+    --------
+    >>> b = LinearBoundary.of([0.0, 60.0], {"ambient": [20.0, 26.0]})
+    >>> b(15.0)
+    {'ambient': 21.5}
+    """
+
+    t_s: np.ndarray
+    T_C: dict
+    source: str = "boundary"
+
+    @classmethod
+    def of(cls, t_s, T_C: dict, source: str = "boundary") -> "LinearBoundary":
+        """Checked: times finite and strictly increasing (at least two), values finite [°C]."""
+        t = np.asarray(t_s, float)
+        if t.ndim != 1 or t.size < 2 or not np.all(np.isfinite(t)) or np.any(np.diff(t) <= 0):
+            raise InputError(f"{source}: t_s", None, "at least two times, finite and strictly increasing [s]")
+        vals = {}
+        for node, v in T_C.items():
+            a = np.asarray(v, float)
+            if a.shape != t.shape or not np.all(np.isfinite(a)):
+                raise InputError(f"{source}: {node}", None, f"{t.size} finite temperatures, one per time [°C]")
+            vals[node] = a
+        return cls(t_s=t, T_C=vals, source=source)
+
+    @property
+    def span_s(self) -> tuple:
+        """(first, last) sample time [s]."""
+        return float(self.t_s[0]), float(self.t_s[-1])
+
+    def shifted(self, dt_s: float) -> "LinearBoundary":
+        """The same samples with times t_s − dt_s (a run that starts at dt_s on the samples' clock)."""
+        return LinearBoundary(t_s=self.t_s - dt_s, T_C=self.T_C, source=self.source)
+
+    def __call__(self, t) -> dict:
+        t0, t1 = self.span_s
+        tol = 1e-9 * max(t1 - t0, 1.0)
+        if not (t0 - tol <= t <= t1 + tol):
+            raise InputError(self.source, float(t), f"outside the logged times [{t0:g}, {t1:g}] s: "
+                             "a logged boundary is not extrapolated")
+        return {n: float(np.interp(t, self.t_s, v)) for n, v in self.T_C.items()}
+
+
 @dataclass
 class _Segment:
     """Times and states (n_free·B, n_t) of one integrated segment."""
@@ -435,16 +530,21 @@ class _Segment:
 _METHODS = {"BDF": BDF, "Radau": Radau}
 
 
-def _collect(pieces, net, t_eval, B, nf):
-    """Output times and (n_t, B, n) temperatures of the segments (each step reported once)."""
+def _collect(pieces, net, t_eval, B, nf, bnd):
+    """Output times and (n_t, B, n) temperatures of the segments (each step reported once; the
+    fixed nodes at their values at the output times, as the segment's integration saw them)."""
     free = ~net.fixed
     ts, Ts = [], []
-    for sol, Tb, a, b in pieces:
+    for sol, a, b in pieces:
         keep = np.ones(sol.t.size, bool) if t_eval is None else np.isin(sol.t, t_eval)
         tt, ys = sol.t[keep], sol.y[:, keep]
         if ts and ts[-1].size and tt.size and tt[0] == ts[-1][-1]:
             tt, ys = tt[1:], ys[:, 1:]
-        T = np.broadcast_to(Tb, (tt.size, B, Tb.shape[1])).copy()
+        T = np.broadcast_to(net.T_fixed_K, (tt.size, B, len(net.nodes))).copy()
+        if bnd.fixed_C is not None:
+            t_hi = np.nextafter(b, a)
+            for k, t in enumerate(tt):
+                T[k][:, bnd.index] = bnd.values_K(min(max(float(t), a), t_hi))
         T[:, :, free] = ys.T.reshape(tt.size, B, nf)
         ts.append(tt)
         Ts.append(T)

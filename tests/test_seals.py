@@ -1,0 +1,60 @@
+"""Seal friction, SKF 2004 (thermobear.losses.seals): the printed equation and table rows, one/two seals, limits."""
+import numpy as np
+import pytest
+
+from thermobear.errors import InputError
+from thermobear.losses.seals import seal_constants, seal_counterface_estimate_mm, seal_friction, seal_moment_Nmm
+
+
+def test_rs1_deep_groove_hand_value_of_the_printed_equation():
+    """6208-2RS1: D 80 mm (row 62 < D <= 80: K_S1 0.018, K_S2 20, β 2.25), d_s = d1 = 52.6 mm."""
+    M_Nmm = 0.018 * 52.6 ** 2.25 + 20.0                 # SKF 6000 EN table 4, by hand
+    r = seal_friction("RS1", "deep_groove", 80.0, 52.6, 3000.0)
+    assert r.M_Nm == pytest.approx(M_Nmm * 1e-3, rel=1e-12)
+    assert r.P_W == pytest.approx(M_Nmm * 1e-3 * 3000 * np.pi / 30, rel=1e-12)
+    assert float(seal_moment_Nmm(52.6, 0.018, 20.0, 2.25)) == pytest.approx(M_Nmm, rel=1e-12)
+
+
+@pytest.mark.parametrize("seal, kind, D, row", [
+    ("RSL", "deep_groove", 52.0, (0.0018, 0.0, 2.25)), ("RSL", "deep_groove", 22.0, (0.0, 0.0, 0.0)),
+    ("RSH", "deep_groove", 47.0, (0.028, 2.0, 2.25)), ("RS1", "deep_groove", 62.0, (0.023, 2.0, 2.25)),
+    ("RS1", "deep_groove", 90.0, (0.018, 15.0, 2.25)), ("RS1", "deep_groove", 150.0, (0.018, 0.0, 2.25)),
+    ("RS1", "angular_contact", 90.0, (0.014, 10.0, 2.0)),
+])
+def test_table_rows_by_outside_diameter(seal, kind, D, row):
+    c = seal_constants(seal, kind, D)
+    assert (c["K_S1"], c["K_S2"], c["beta"]) == row
+
+
+def test_one_seal_is_half_except_rsl_above_25_mm():
+    two = seal_friction("RS1", "deep_groove", 80.0, 52.6, 1000.0, n_seals=2)
+    one = seal_friction("RS1", "deep_groove", 80.0, 52.6, 1000.0, n_seals=1)
+    assert one.M_Nm == pytest.approx(0.5 * two.M_Nm, rel=1e-14)
+    rsl2 = seal_friction("RSL", "deep_groove", 52.0, 30.0, 1000.0, n_seals=2)
+    rsl1 = seal_friction("RSL", "deep_groove", 52.0, 30.0, 1000.0, n_seals=1)
+    assert rsl1.M_Nm == rsl2.M_Nm == pytest.approx(0.0018 * 30.0 ** 2.25 * 1e-3, rel=1e-12)
+
+
+def test_no_seal_no_loss_and_standstill():
+    for seal, n in (("none", 2), ("shield", 2), ("RS1", 0)):
+        r = seal_friction(seal, "deep_groove", 80.0, 52.6, np.array([0.0, 3000.0]), n_seals=n)
+        assert np.all(r.P_W == 0.0) and r.M_Nm == 0.0
+    r = seal_friction("RS1", "deep_groove", 80.0, 52.6, np.array([0.0, 1000.0, 2000.0]))
+    assert r.P_W[0] == 0.0 and r.P_W[2] == pytest.approx(2 * r.P_W[1], rel=1e-14)   # constant moment: P ∝ n
+
+
+def test_counterface_estimate_near_the_catalogue_values():
+    """6208: d2 = 49.1 (-2RSH), d1 = 52.6; 6210: d1 = 62.5 mm (SKF product tables): within 5 %."""
+    assert seal_counterface_estimate_mm(40.0, 80.0) == pytest.approx(np.mean([49.1, 52.6]), rel=0.02)
+    assert seal_counterface_estimate_mm(50.0, 90.0) == pytest.approx(62.5, rel=0.05)
+
+
+@pytest.mark.parametrize("args, field", [
+    (("LS", "deep_groove", 80.0), "bearing.seals"),          # a roller-bearing seal
+    (("RSH", "deep_groove", 62.0), "bearing.seals"),         # outside SKF's RSH rows (D <= 52)
+    (("felt", "deep_groove", 80.0), "bearing.seals"),
+])
+def test_bad_seal_names_the_field(args, field):
+    with pytest.raises(InputError) as e:
+        seal_friction(*args, 52.6, 1000.0)
+    assert e.value.field == field

@@ -1,0 +1,270 @@
+r"""Calibration: fit uncertain parameters of a scene to a rig log (:mod:`thermobear.app.rig`).
+
+:func:`calibrate` fits named parameters by :func:`scipy.optimize.least_squares`
+and reports each with its standard uncertainty from the Jacobian, covariance =
+s² (JᵀJ)⁻¹ with s² = Σ r²/(m − p) (m residuals, p parameters; Bates & Watts
+1988, §2.3).  Residuals are weighted so that 1 unit ≈ 1 K for a temperature
+channel and 1 % of the mean measured torque for the torque channel.  The log is
+simulated as :func:`thermobear.app.rig.simulate_log` does (logged boundaries
+included).
+
+References
+----------
+.. [1] Bates, D. M., Watts, D. G., 1988, *Nonlinear Regression Analysis and Its
+   Applications*, Wiley, §2.3.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.optimize import least_squares
+
+from thermobear.app.rig import Comparison, RigLog, compare, simulate_log, special_target
+from thermobear.errors import InputError, NoConvergence
+from thermobear.losses.skf import skf_constants
+from thermobear.scene import Scene
+from thermobear.scene.network import network_spec
+
+__all__ = ["calibrate", "Calibration", "parameter_names"]
+
+_SCENE_SCALARS = ("T_ambient_C", "T_oil_in_C", "oil_flow_L_h", "mu_boundary", "mu_full_film")
+_SKF = ("skf_R1", "skf_S1", "skf_mu_EHL")
+
+
+def _network_numeric_parameters(scene: Scene) -> dict:
+    """``"<element or node>.<parameter>"`` → numeric value, for every number in the scene's network."""
+    if not scene.network:
+        return {}
+    spec = network_spec(scene.network, scene.path, parameters=scene.network_parameters, fixed_C=scene.T_fixed_C)
+    out = {}
+    tables = [(e.get("name"), e) for e in spec.get("elements", [])] + list(spec.get("nodes", {}).items())
+    for name, tbl in tables:
+        if not name or not isinstance(tbl, dict):
+            continue
+        for k, v in tbl.items():
+            if isinstance(v, (int, float)) and not isinstance(v, bool):
+                out[f"{name}.{k}"] = float(v)
+    return out
+
+
+def parameter_names(scene: Scene) -> list:
+    """Parameters :func:`calibrate` can fit for this scene.
+
+    Network parameters (``[thermal.parameters]`` keys and every numeric
+    ``<element or node>.<parameter>`` of the network), the scene scalars
+    T_ambient_C, T_oil_in_C, oil_flow_L_h, mu_boundary, mu_full_film, and —
+    for scenes on the SKF global model (``[models] losses = "skf"``) — skf_R1,
+    skf_S1, skf_mu_EHL.
+    """
+    names = list(scene.network_parameters)
+    names += [k for k in _network_numeric_parameters(scene) if k not in names]
+    names += list(_SCENE_SCALARS)
+    if scene.models.get("losses") == "skf":
+        names += list(_SKF)
+    return names
+
+
+def _parse_param(scene: Scene, spec: str):
+    name, _, start = spec.partition("=")
+    name = name.strip()
+    if name in _SKF and scene.models.get("losses") != "skf":
+        raise InputError("--param", name, 'SKF constants need a scene on the SKF model: [models] losses = "skf"')
+    known = parameter_names(scene)
+    if name not in known:
+        raise InputError("--param", name, f"unknown parameter; this scene offers: {', '.join(known)}")
+    if start.strip():
+        try:
+            x0 = float(start)
+        except ValueError:
+            raise InputError(f"--param {name}", start, "start value must be a number") from None
+    elif name in scene.network_parameters:
+        x0 = scene.network_parameters[name]
+    elif "." in name:
+        x0 = _network_numeric_parameters(scene)[name]
+    elif name in _SKF:
+        x0 = scene.models.get(name)
+        if x0 is None:
+            x0 = 0.05 if name == "skf_mu_EHL" else _skf_table(scene)[name.split("_")[1]]
+    elif name == "oil_flow_L_h":
+        x0 = scene.oil_flow * 3.6e6
+    else:
+        x0 = getattr(scene, name)
+    if x0 is None or isinstance(x0, bool) or not isinstance(x0, (int, float)) or not math.isfinite(x0):
+        raise InputError(f"--param {name}", x0, "needs a finite numeric start value (give NAME=START)")
+    return name, float(x0)
+
+
+def _skf_table(scene):
+    b = scene.bearing
+    return skf_constants(b.kind, b.series)
+
+
+def _apply(scene: Scene, values: dict) -> Scene:
+    net = {k: v for k, v in values.items() if k in scene.network_parameters or "." in k}
+    sc = scene.with_(network_parameters=net) if net else scene
+    skf = {k: v for k, v in values.items() if k in _SKF}
+    if skf:
+        sc = sc.with_(models=skf)
+    w = {k: v for k, v in values.items() if k in ("T_ambient_C", "T_oil_in_C", "oil_flow_L_h")}
+    if w:
+        sc = sc.with_(**w)
+    rep = {k: v for k, v in values.items() if k in ("mu_boundary", "mu_full_film")}
+    for k, v in rep.items():
+        if not 0.0 <= v <= 1.0:
+            raise InputError(k, v, "friction coefficient must lie in [0, 1]")
+    if rep:
+        sc = dataclasses.replace(sc, **rep)
+    return sc
+
+
+@dataclass
+class Calibration:
+    """Fitted parameters with standard uncertainties.
+
+    Attributes
+    ----------
+    values : dict          name → fitted value
+    std : dict             name → standard uncertainty (None if the data do not determine it)
+    start : dict           name → start value
+    cov : ndarray          covariance of the parameters (in the order of ``values``)
+    rms_residual : float   RMS weighted residual (≈ K for temperatures) at the optimum
+    dof : int              residuals − parameters
+    nfev : int             model evaluations
+    comparison : Comparison  the log against the calibrated scene
+    scene : Scene          the calibrated scene
+    """
+
+    values: dict
+    std: dict
+    start: dict
+    cov: np.ndarray
+    rms_residual: float
+    dof: int
+    nfev: int
+    comparison: Comparison | None = None
+    scene: Scene | None = field(default=None, repr=False)
+    message: str = ""
+
+    def as_dict(self) -> dict:
+        return {"values": self.values, "std": self.std, "start": self.start, "cov": self.cov,
+                "rms_residual": self.rms_residual, "dof": self.dof, "nfev": self.nfev, "message": self.message,
+                "metrics": self.comparison.metrics if self.comparison else None,
+                "mode": self.comparison.mode if self.comparison else None}
+
+    def summary(self) -> str:
+        w = max([18] + [len(k) for k in self.values])
+        lines = [f"calibration: {self.nfev} model evaluations, RMS residual {self.rms_residual:.4g} "
+                 f"(K, or % of torque), {self.dof} degrees of freedom", "",
+                 f"{'parameter':{w}s} {'start':>12s} {'fitted':>12s} {'std':>12s}"]
+        for k, v in self.values.items():
+            s = self.std[k]
+            lines.append(f"{k:{w}s} {self.start[k]:12.5g} {v:12.5g} " + (f"{s:12.3g}" if s is not None else f"{'n/a':>12s}"))
+        if self.message:
+            lines += ["", self.message]
+        if self.comparison is not None:
+            lines += ["", self.comparison.summary()]
+        return "\n".join(lines)
+
+
+def calibrate(scene: Scene, log: RigLog, params: list, mapping: dict, *, T0_C=None, max_nfev: int = 60,
+              diff_step: float = 1e-3) -> Calibration:
+    r"""Fit named parameters of a scene to a rig log (nonlinear least squares).
+
+    Parameters
+    ----------
+    scene : Scene
+    log : RigLog
+    params : list[str]     names (``NAME`` or ``NAME=START``, see :func:`parameter_names`): network
+                           parameters (``"bearing_to_ambient.G_W_K"``, ``"oil_stream.beta"``, or a
+                           ``[thermal.parameters]`` key), T_ambient_C, T_oil_in_C, oil_flow_L_h,
+                           mu_boundary, mu_full_film, or on an SKF scene skf_R1, skf_S1, skf_mu_EHL
+                           (seed 002 re-calibrates R1, S1 for the 51107 this way)
+    mapping : dict         channel → node (:func:`channel_map`)
+    T0_C : float           start temperature of transient logs [°C] (default ambient)
+    max_nfev : int         budget of model evaluations
+    diff_step : float      finite-difference step of the Jacobian, relative to the start value
+                           (a step in ln p for positive parameters, diff_step·|p0| — or diff_step
+                           when p0 = 0 — for the others)
+
+    Returns
+    -------
+    Calibration
+
+    Notes
+    -----
+    Positive parameters are fitted as ln p (p stays positive; the standard
+    uncertainty is σ_p = p σ_ln p).  Covariance = s² (JᵀJ)⁻¹, s² = Σ r²/(m − p);
+    with m = p (no degrees of freedom) the uncertainty is not determined (None).
+    The optimiser sees every parameter as u = 1 at its start value (ln p = ln p0 + u − 1,
+    or p = p0 + (u − 1)·|p0|), so that its finite-difference step is ``diff_step`` of the
+    start value whatever that value (a start at p0 = 1 would put ln p at 0, where a relative
+    step degenerates to the rounding level and the integrator's tolerance noise swamps it).
+    """
+    if not params:
+        raise InputError("--param", None, "name at least one parameter to fit")
+    specs = [_parse_param(scene, p) for p in params]
+    names = [n for n, _ in specs]
+    if len(set(names)) != len(names):
+        raise InputError("--param", ", ".join(names), "each parameter once")
+    x0 = np.array([v for _, v in specs])
+    logsp = np.array([v > 0 and not n.endswith("_C") for n, v in specs])
+    lin = np.where(x0 != 0.0, np.abs(x0), 1.0)          # scale of a parameter fitted as itself
+
+    def values_of(u):
+        u = np.asarray(u, float) - 1.0
+        return {n: float(p0 * np.exp(ui) if lg else p0 + ui * sc)
+                for n, p0, ui, lg, sc in zip(names, x0, u, logsp, lin)}
+
+    weights = {}
+    if "torque_Nm" in log.columns:
+        tq = log["torque_Nm"]
+        if np.any(~np.isnan(tq)):
+            weights["torque_Nm"] = 100.0 / max(float(np.nanmean(np.abs(tq))), 1e-300)
+    fit_channels = [c for c, n in mapping.items() if not special_target(n)]
+    nfev = [0]
+
+    def resid(x):
+        nfev[0] += 1
+        sim = simulate_log(_apply(scene, values_of(x)), log, mapping, T0_C=T0_C)
+        chans = fit_channels + (["torque_Nm"] if "torque_Nm" in weights else [])
+        r = []
+        for c in chans:
+            y = log[c]
+            ok = ~np.isnan(y)
+            r.append((sim[c][ok] - y[ok]) * weights.get(c, 1.0))
+        return np.concatenate(r) if r else np.zeros(0)
+
+    xs0 = np.ones(len(names))
+    r0 = resid(xs0)
+    m, p = r0.size, len(names)
+    if m < p:
+        raise InputError("--param", ", ".join(names), f"{p} parameters but only {m} measured values")
+    res = least_squares(resid, xs0, method="trf", diff_step=diff_step, max_nfev=max_nfev, x_scale=1.0)
+    rms = float(np.sqrt(np.mean(res.fun**2))) if m else 0.0
+    if res.status <= 0:
+        raise NoConvergence(f"calibration did not converge: {res.message}", iterations=int(res.nfev),
+                            residual=rms, last=values_of(res.x))
+    J = res.jac
+    dof = m - p
+    JTJ = J.T @ J
+    vals = values_of(res.x)
+    std = {n: None for n in names}
+    cov = np.full((p, p), np.nan)
+    msg = ""
+    if np.linalg.cond(JTJ) > 1e14:
+        msg = "the data do not determine these parameters independently (singular Jacobian): no uncertainty"
+    elif dof == 0:
+        msg = "as many parameters as measured values: exact fit, uncertainty not determined"
+    else:
+        s2 = float(res.fun @ res.fun) / dof
+        cov_x = s2 * np.linalg.inv(JTJ)
+        scale = np.array([vals[n] if lg else sc for n, lg, sc in zip(names, logsp, lin)])
+        cov = cov_x * np.outer(scale, scale)
+        std = {n: float(np.sqrt(cov[i, i])) for i, n in enumerate(names)}
+    cal_scene = _apply(scene, vals)
+    comp = compare(cal_scene, log, mapping, T0_C=T0_C)
+    return Calibration(values=vals, std=std, start=dict(zip(names, x0.tolist())), cov=cov, rms_residual=rms,
+                       dof=dof, nfev=nfev[0], comparison=comp, scene=cal_scene, message=msg)

@@ -1,0 +1,152 @@
+r"""Answers across a model switch: the weighted blend of the answers of each alternative.
+
+Where a point lies in a switch band (:data:`thermobear.models.BLEND_BANDS`) its model choice has
+two alternatives (four where two bands meet), each solved in full; the point's answer is
+
+.. math:: y = \sum_k w_k\, y_k, \qquad \sum_k w_k = 1
+
+for every number of the answer that both alternatives have on the same footing — node
+temperatures, power, torque, loss breakdown, heat flows and the energy balance (a sum of flows:
+the blend of balanced states is balanced to round-off).  Per-contact data (loads, films, regimes)
+belongs to one contact model and is reported from the alternative of the largest weight.  The
+``blend`` entry of ``models_used`` gives the weights and how far the alternatives differ at the
+point: the size of the switch that the blend removes.
+
+If an alternative fails (a named SolverError) the others carry the answer, renormalised, and an
+:class:`~thermobear.errors.OutsideValidity` warning says that the answer may step there.
+"""
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+
+from thermobear.errors import OutsideValidity
+
+__all__ = ["blend_states", "blend_losses", "switch_label", "StackedBlend"]
+
+_SWITCHED = ("high_speed", "load_model")
+
+
+def switch_label(models: dict, others: list) -> str:
+    """What distinguishes one alternative's models from the others' (e.g. ``load_model=film``)."""
+    keys = [k for k in _SWITCHED if any(o.get(k, (None,))[0] != models.get(k, (None,))[0] for o in others)]
+    return ", ".join(f"{k}={models[k][0]}" for k in keys) or "same models"
+
+
+def _ok(parts, kind):
+    """The parts that delivered (weights renormalised), and the failures as warnings."""
+    ok = [(w, r) for w, r in parts if isinstance(r, kind)]
+    bad = [(w, r) for w, r in parts if not isinstance(r, kind)]
+    total = sum(w for w, _ in ok)
+    ws = []
+    if bad and ok:
+        names = ", ".join(f"{type(r).__name__} (weight {w:.2f})" for w, r in bad)
+        ws.append(OutsideValidity(f"model blend: an alternative across a model switch failed ({names}); the answer "
+                                  "is that of the others and may step here", quantity="model_blend",
+                                  value=sum(w for w, _ in bad), limit="both alternatives solved",
+                                  source="thermobear.models.BLEND_BANDS", field="models"))
+    return [(w / total, r) for w, r in ok], ws
+
+
+def _label(parts, models_of):
+    labels = []
+    for w, r in parts:
+        others = [models_of(o) for v, o in parts if o is not r]
+        labels.append(f"{w:.3f} × ({switch_label(models_of(r), others)})")
+    return " + ".join(labels)
+
+
+def _weighted(parts, get):
+    v = sum(w * np.asarray(get(r), float) for w, r in parts)
+    return float(v) if np.ndim(v) == 0 else v
+
+
+def blend_states(parts, state_type):
+    """The blend of steady states ``[(weight, SteadyState or SolverError), ...]`` (module docstring):
+    a SteadyState, or the failure of the alternative of the largest weight when none delivered."""
+    if len(parts) == 1:
+        return parts[0][1]
+    ok, ws = _ok(parts, state_type)
+    if not ok:
+        return max(parts, key=lambda p: p[0])[1]
+    if len(ok) == 1:
+        st = ok[0][1]
+        return dataclasses.replace(st, warnings=list(st.warnings) + ws)
+    dom = max(ok, key=lambda p: p[0])[1]
+    nodes = list(dom.T_C)
+    T = _weighted(ok, lambda s: [s.T_C[n] for n in nodes])
+    P = np.array([s.P_W for _, s in ok])
+    dT = max(abs(a - b) for _, s in ok for _, o in ok for a, b in zip([s.T_C[n] for n in nodes],
+                                                                       [o.T_C[n] for n in nodes]))
+    spread = (P.max() - P.min()) / max(float(np.mean(P)), 1e-300)
+    used = dict(dom.models_used)
+    used["blend"] = (_label(ok, lambda s: s.models_used),
+                     f"across a model switch (thermobear.models.BLEND_BANDS): the alternatives differ here by "
+                     f"{spread:.2%} in power and {dT:.3g} K at most in a node temperature")
+    seen, warned = set(), []
+    for w in [w for _, s in ok for w in s.warnings] + ws:
+        if str(w) not in seen:
+            seen.add(str(w))
+            warned.append(w)
+    keys = list(dict.fromkeys(k for _, s in ok for k in s.breakdown_W))
+    flows = list(dom.heat_flows_W)
+    return dataclasses.replace(
+        dom, T_C=dict(zip(nodes, T.tolist())), T_ball_C=float(_weighted(ok, lambda s: s.T_ball_C)),
+        P_W=float(_weighted(ok, lambda s: s.P_W)), torque_Nm=float(_weighted(ok, lambda s: s.torque_Nm)),
+        breakdown_W={k: float(_weighted(ok, lambda s: s.breakdown_W.get(k, 0.0))) for k in keys},
+        heat_flows_W={k: float(_weighted(ok, lambda s: s.heat_flows_W[k])) for k in flows},
+        energy_balance_W=float(_weighted(ok, lambda s: s.energy_balance_W)),
+        T_contacts_C=float(_weighted(ok, lambda s: s.T_contacts_C)),
+        iterations=max(s.iterations for _, s in ok), residual_K=max(s.residual_K for _, s in ok),
+        models_used=used, warnings=warned)
+
+
+def blend_losses(parts):
+    """The blend of loss results at prescribed temperatures ``[(weight, LossResult), ...]``: power,
+    torque and breakdown weighted; per-contact data and the rest from the largest weight."""
+    if len(parts) == 1:
+        return parts[0][1]
+    dom = max(parts, key=lambda p: p[0])[1]
+    keys = list(dict.fromkeys(k for _, r in parts for k in r.breakdown_W))
+    P = np.array([np.asarray(r.P_W, float) for _, r in parts])
+    spread = float(np.max((P.max(axis=0) - P.min(axis=0)) / np.maximum(np.abs(P.mean(axis=0)), 1e-300)))
+    used = dict(dom.models_used)
+    used["blend"] = (_label(parts, lambda r: r.models_used),
+                     f"across a model switch (thermobear.models.BLEND_BANDS): the alternatives differ here by "
+                     f"{spread:.2%} in power")
+    return dataclasses.replace(
+        dom, P_W=_weighted(parts, lambda r: r.P_W), torque_Nm=_weighted(parts, lambda r: r.torque_Nm),
+        breakdown_W={k: _weighted(parts, lambda r: r.breakdown_W.get(k, 0.0)) for k in keys}, models_used=used)
+
+
+class StackedBlend:
+    """One operating point's model alternatives as one loss source: ``source`` evaluates the K
+    alternatives as K stacked points of one batch (one call: their contact sets differ, their loss
+    options do not), and the parts and results are weighted with ``weights`` (K,).  The transient's
+    heat sources across a switch band (the steady state blends whole answers)."""
+
+    def __init__(self, source, weights):
+        self.source, self.w = source, np.asarray(weights, float)
+        self.diagonal = source.diagonal
+        self.K = self.w.size
+
+    def _stack(self, x_C):
+        x = np.asarray(x_C, float)
+        return np.repeat(x[..., None, :], self.K, axis=-2)        # (..., n_x) → (..., K, n_x)
+
+    def parts(self, x_C):
+        """Weighted loss parts (..., n_parts) [W] at coupled temperatures (..., n_x) [°C]."""
+        return np.einsum("k,...kp->...p", self.w, self.source.parts(self._stack(x_C)))
+
+    def result(self, x_C):
+        """The alternatives' results with power, torque, breakdown and contact powers weighted (the
+        per-contact arrays keep the alternatives' axis)."""
+        r = self.source.result(self._stack(x_C))
+
+        def wsum(v):
+            v = np.asarray(v, float)
+            return np.tensordot(v, self.w, axes=([-1], [0])) if v.shape[-1:] == (self.K,) else v
+        return dataclasses.replace(r, P_W=wsum(r.P_W), torque_Nm=wsum(r.torque_Nm),
+                                   breakdown_W={k: wsum(v) for k, v in r.breakdown_W.items()},
+                                   contact_W={k: wsum(v) for k, v in r.contact_W.items()})

@@ -1,0 +1,118 @@
+r"""Ring seats as thermal joints: the probable fit of a ring and the joint conductance it gives.
+
+A rotating ring sits with an interference, a stationary ring with a small clearance (the
+usual recommendation for ball bearings under a rotating inner-ring load: shaft k5 (m5 above
+100 mm), housing H7; with a rotating outer ring: shaft g6, housing N7 — SKF 2018, *Rolling
+bearings* catalogue 17000 EN, "Selecting fits").  The probable (mean) diametral interference is
+the difference of the mid-tolerances of the seat (ISO 286-2) and of the ring (ISO 492 normal
+tolerance class).  The joint conductance (:func:`seat_conductance`):
+
+* interference δ > 0: Lamé contact pressure (:func:`~thermobear.thermal.conduction.fit_pressure`)
+  and the plastic-contact joint conductance with air in the gaps
+  (:func:`~thermobear.thermal.conduction.joint_conductance`);
+* clearance c ≥ 0: the loaded half of the seat presses with the radial load over its projected area,
+  p = F_r/(B D) (estimated distribution), the other half is a gap of c/2: h = ½ h_j(p) + ½ k_air/(c/2 + M).
+
+Surface data (estimated): ground shaft and housing seats Ra 0.8 µm (shaft) and 1.6 µm (housing),
+the tolerances the SKF catalogue lists for IT6/IT7 seats; ring bore and outside surface Ra 0.4 µm
+(ground); RMS σ = 1.25 Ra (a Gaussian profile).  Microhardness of the softer member 3 GPa (an
+unhardened C45 shaft or a grey-iron housing: Vickers 200–250 HV ≈ 2–2.5 GPa, the microhardness of
+a ground surface about 1.3× that).  Air in the gaps at 60 °C, k = 0.029 W/(m K), rarefaction
+parameter M ≈ 0.3 µm (accommodation coefficient ≈ 0.9, Yovanovich 2005).  Thermal expansion of
+the parts (which tightens or loosens a fit as they warm) is not modelled.
+"""
+from __future__ import annotations
+
+import math
+
+from thermobear.contact.materials import Material
+from thermobear.errors import InputError
+from thermobear.thermal.conduction import fit_pressure, joint_conductance
+
+__all__ = ["probable_interference", "seat_conductance", "SIGMA_SHAFT_SEAT_M", "SIGMA_HOUSING_SEAT_M",
+           "H_MICRO_PA", "K_AIR_GAP_W_MK", "M_AIR_M"]
+
+_RQ = 1.25                                              # RMS / Ra of a Gaussian profile
+SIGMA_SHAFT_SEAT_M = math.hypot(_RQ * 0.8e-6, _RQ * 0.4e-6)     #: shaft seat Ra 0.8 µm + ring bore Ra 0.4 µm
+SIGMA_HOUSING_SEAT_M = math.hypot(_RQ * 1.6e-6, _RQ * 0.4e-6)   #: housing seat Ra 1.6 µm + ring OD Ra 0.4 µm
+H_MICRO_PA = 3.0e9           #: microhardness of the softer member (estimated, see the module docstring)
+K_AIR_GAP_W_MK = 0.029       #: air at 60 °C (materials/air_1atm.toml: 0.0287 W/m K at 333 K)
+M_AIR_M = 0.3e-6             #: gas rarefaction parameter of air at 1 atm (estimated, Yovanovich 2005)
+
+# Diameter steps [mm] (upper bounds) and deviations [µm] (ISO 286-2 tables; ISO 492 normal class).
+_STEPS = (18, 30, 50, 80, 120, 180, 250)
+_SHAFT = {   # (lower, upper) deviations of the shaft seat
+    "k5": ((1, 9), (2, 11), (2, 13), (2, 15), (3, 18), (3, 21), (4, 24)),
+    "m5": ((7, 15), (8, 17), (9, 20), (11, 24), (13, 28), (15, 33), (17, 37)),
+    "g6": ((-17, -6), (-20, -7), (-25, -9), (-29, -10), (-34, -12), (-39, -14), (-44, -15)),
+}
+_HOUSING = {  # (lower, upper) deviations of the housing bore
+    "H7": ((0, 18), (0, 21), (0, 25), (0, 30), (0, 35), (0, 40), (0, 46)),
+    "N7": ((-23, -5), (-28, -7), (-33, -8), (-39, -9), (-45, -10), (-52, -12), (-60, -14)),
+}
+_BORE_LOW = (-8, -10, -12, -15, -20, -25, -30)    # ISO 492 normal: Δdmp lower deviation (upper 0)
+_OD_LOW = (-8, -9, -11, -13, -15, -18, -30)       # ISO 492 normal: ΔDmp lower deviation (upper 0)
+
+
+def _step(d_m, what):
+    d = d_m * 1e3
+    for i, hi in enumerate(_STEPS):
+        if d <= hi:
+            return i
+    raise InputError(what, d_m, f"the fit tables cover diameters up to {_STEPS[-1]} mm; give the interference")
+
+
+def probable_interference(d_m: float, seat: str) -> float:
+    """Mean diametral interference of a ring on its seat [m] (negative: clearance).
+
+    Parameters
+    ----------
+    d_m : float   seat diameter [m] (bearing bore for a shaft seat, outside diameter for a housing)
+    seat : str    shaft ``"k5"``, ``"m5"``, ``"g6"`` or housing ``"H7"``, ``"N7"``
+
+    >>> round(probable_interference(0.040, "k5") * 1e6, 1)     # k5 +2/+13, bore 0/-12
+    13.5
+    >>> round(probable_interference(0.080, "H7") * 1e6, 1)     # H7 0/+30, OD 0/-13
+    -21.5
+    """
+    i = _step(d_m, "bearing.bore_mm" if seat in _SHAFT else "bearing.outer_diameter_mm")
+    if seat in _SHAFT:
+        lo, hi = _SHAFT[seat][i]
+        return 1e-6 * (0.5 * (lo + hi) - 0.5 * _BORE_LOW[i])
+    if seat in _HOUSING:
+        lo, hi = _HOUSING[seat][i]
+        return 1e-6 * (0.5 * _OD_LOW[i] - 0.5 * (lo + hi))
+    raise InputError("seat", seat, f"one of {', '.join([*_SHAFT, *_HOUSING])}")
+
+
+def seat_conductance(delta_m: float, d_m: float, d_inner_m: float, d_outer_m: float, inner: Material,
+                     outer: Material, sigma_m: float, *, F_r_N: float = 0.0, width_m: float = 0.0) -> tuple:
+    """Joint conductance of a ring seat [W/(m² K)] and the contact pressure [Pa].
+
+    Parameters
+    ----------
+    delta_m : float         diametral interference (negative: clearance) [m]
+    d_m : float             seat diameter [m]
+    d_inner_m, d_outer_m : float  bore of the inner member (0: solid) and outside diameter of the
+                            outer member [m]
+    inner, outer : Material the inner member (shaft or ring) and the outer (ring or housing)
+    sigma_m : float         RMS roughness of the pair [m]
+    F_r_N, width_m : float  radial load and seat width (a clearance fit's loaded half) [N], [m]
+
+    Returns
+    -------
+    (h [W/(m² K)], p [Pa])
+
+    >>> from thermobear.contact.materials import material
+    >>> s = material("aisi-52100")
+    >>> h, p = seat_conductance(13.5e-6, 0.04, 0.0, 0.0473, material("steel-c45"), s, SIGMA_SHAFT_SEAT_M)
+    >>> round(p / 1e6, 1), round(h, -3)
+    (10.1, 38000.0)
+    """
+    if delta_m > 0:
+        p = float(fit_pressure(delta_m, d_m, d_inner_m, d_outer_m, inner.E, inner.nu, outer.E, outer.nu))
+        return float(joint_conductance(inner.k, outer.k, p, sigma_m, H_MICRO_PA, K_AIR_GAP_W_MK, M_AIR_M)), p
+    p = F_r_N / (width_m * d_m) if F_r_N > 0 and width_m > 0 else 0.0
+    h_loaded = float(joint_conductance(inner.k, outer.k, p, sigma_m, H_MICRO_PA, K_AIR_GAP_W_MK, M_AIR_M))
+    h_gap = K_AIR_GAP_W_MK / (0.5 * (-delta_m) + M_AIR_M)
+    return 0.5 * (h_loaded + h_gap), p
