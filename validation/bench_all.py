@@ -1,183 +1,234 @@
-"""Benchmark suite (not tests): the five speed targets of issue 6, met or missed, and the hot spots.
+"""Benchmark suite (not tests): the speed targets of issue 14, each measured on this tree and on a
+previous revision in the same run, reported as the ratio of the two and against its target.
 
-Run ``python validation/bench_all.py [--full]``; ``run_all.py`` calls :func:`run` and puts the
-text in ``validation/report/report.md``.  Times are medians of repeats after one warm-up call
-(imports, caches), on whatever machine runs it; they are never asserted in tests.
+Run ``python validation/bench_all.py [--ref REV] [--ref-python PYTHON] [--no-profile]``;
+``run_all.py`` calls :func:`run` and puts the text in ``validation/report/report.md``.
 
-Targets (per operating point unless stated):
+The previous revision (default :data:`REF`, the last one before the one-pipeline redesign) is
+exported with ``git archive`` into a temporary folder and timed by the same workload functions in a
+child process with ``PYTHONPATH`` on it (``--ref-python``: that revision's own interpreter, e.g.
+one with numba, its optional compiled kernels).  Each tree is timed in its own child process,
+single-threaded BLAS, alternately, so both see the same machine load; CPU time of the process
+(``time.process_time``) is reported for the in-process workloads, wall time for the whole
+``thermobear run`` process.  Times are never asserted in tests.
 
-1. load distribution in a batch of 1000 combined-load cases      ≤ 100 µs per case
-2. local losses in a batch of 1000 operating points              ≤ 200 µs per point
-3. one coupled steady point (seed 004 scene, its network)        ≤ 5 ms
-   (median over 20 new operating points, each solved once: no operating-point cache is warm)
-4. 1000-point coupled sweep on one core                          ≤ 2 s
-   (default: timed on ``N_SWEEP`` points and scaled, stated as such; ``--full`` runs all 1000)
-5. 3600 s heat-up transient (seed 004 scene)                     ≤ 0.5 s
+Targets (issue 14):
 
-Each target is profiled with cProfile; the report lists the functions that dominate.
+1. one coupled steady point (seed 004 scene)                 ≤ 1.5 ms (median of 20 new points)
+2. 1000-point coupled sweep, 2000–8000 rpm × Fa, one core    ≤ 0.3 s
+3. ``thermobear run examples/seed004_oil_jet_7210.toml``     ≤ 0.7 s (whole process)
+4. 3600 s heat-up transient (seed 004)                       no slower than the previous revision
+5. local losses of 1000 operating points (batch)             (reported, no target)
+6. load distribution of 1000 combined-load cases (batch)     (reported, no target)
+7. 1000 uncertainty samples of the seed-004 steady state     ≤ 2 s (issue 17; this tree only)
 """
 from __future__ import annotations
 
 import cProfile
 import io
+import json
+import os
 import pstats
+import subprocess
 import sys
+import tarfile
+import tempfile
 import time
+import tomllib
 import warnings
+from pathlib import Path
 
 import numpy as np
 
-from _common import median_time
-
-import thermobear as tb
-from thermobear.errors import ExtrapolationWarning
-from thermobear.loads import load_distribution
-from thermobear.losses.local import bearing_losses
-from thermobear.coupled import steady_state, transient
-from thermobear.app.sweep import run_sweep
-
-N_SWEEP = 200     # enough points for the batched loads of a sweep to count as they do in a real one
-_TB_FILES = {str(p.relative_to(p.parents[1] if p.parent.name != "thermobear" else p.parent)).replace("\\", "/")
-             for p in __import__("pathlib").Path(tb.__file__).parent.rglob("*.py")}
-
-
-def _median(fn, repeat):
-    return median_time(fn, repeat)
+#: the revision before the one-pipeline redesign (issue 14): numba kernels, solver.py
+REF = "601717d"
+ROOT = Path(__file__).resolve().parents[1]
+SCENE = "seed004_oil_jet_7210.toml"
+TARGETS = {"steady_point": 1.5e-3, "sweep_1000": 0.3, "run_process": 0.7, "transient_3600": None,
+           "losses_1000": None, "loads_1000": None}
+LABELS = {"steady_point": "coupled steady point (seed 004; median of 20 new points)",
+          "sweep_1000": "1000-point coupled sweep, 2000–8000 rpm × 10 Fa, one core",
+          "run_process": "`thermobear run examples/seed004_oil_jet_7210.toml` (whole process, best of 3)",
+          "transient_3600": "3600 s heat-up transient (seed 004; median of 3)",
+          "losses_1000": "local losses, batch of 1000 points (loads, speeds, temperatures differ)",
+          "loads_1000": "load distribution, batch of 1000 combined-load cases (7210)"}
+_SINGLE = {k: "1" for k in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")}
 
 
-def _profile(fn, n=12) -> str:
+# ----------------------------------------------------------------- workloads (run in a child process)
+def _api():
+    """The few entry points the workloads need, from whichever revision is on the path."""
+    import thermobear as tb
+    try:
+        from thermobear.app.sweep import run_sweep
+    except ImportError:                                  # before the app/ package
+        from thermobear.sweep import run_sweep
+    return tb, run_sweep
+
+
+def _cpu(fn, repeat: int) -> float:
+    fn()                                                 # warm-up: imports, bearing-level preparation
+    ts = []
+    for _ in range(repeat):
+        t0 = time.process_time()
+        fn()
+        ts.append(time.process_time() - t0)
+    return float(np.median(ts))
+
+
+def measure(which: str) -> float:
+    """CPU time [s] of one workload on the thermobear found on ``sys.path``."""
+    tb, run_sweep = _api()
+    s = tb.load_scene(tb.example_path(SCENE))
+    if which == "steady_point":
+        # the machine prepared once, as for any series of points: explicitly where the API has it
+        # (tb.prepare), by the hidden caches of the revisions before it
+        kw = {"prepared": tb.prepare(s)} if hasattr(tb, "prepare") else {}
+        tb.steady_state(s, **kw)
+        ts = []
+        for k in range(1, 21):                            # each timed call a new operating point
+            sc = s.with_(n_rpm=s.n_rpm * (1.0 + k * 1e-4))
+            t0 = time.process_time()
+            tb.steady_state(sc, **kw)
+            ts.append(time.process_time() - t0)
+        return float(np.median(ts))
+    if which == "sweep_1000":
+        grid = {"n_rpm": list(np.linspace(2000.0, 8000.0, 100)), "Fa_N": list(np.linspace(300.0, 750.0, 10))}
+        t0 = time.process_time()
+        run_sweep(s, grid, processes=1)
+        return time.process_time() - t0
+    if which == "transient_3600":
+        return _cpu(lambda: tb.transient(s, 3600.0), 3)
+    rng = np.random.default_rng(6)
+    b, n = s.bearing, 1000
+    Fr = rng.uniform(50, 1500, n)
+    Fa = Fr * np.tan(b.alpha0) * 1.05 + rng.uniform(50, 700, n)
+    if which == "loads_1000":
+        return _cpu(lambda: tb.load_distribution(b, Fa=Fa, Fr=Fr), 5)
+    if which == "losses_1000":
+        nn, TT = rng.uniform(1000, 8000, n), rng.uniform(30, 70, n)
+        return _cpu(lambda: tb.bearing_losses(b, s.lubricant, Fa=Fa, Fr=Fr, n_rpm=nn, T_C=TT,
+                                              oil_flow_m3_s=s.oil_flow), 3)
+    raise ValueError(which)
+
+
+# ----------------------------------------------------------------- the two trees
+def export(rev: str, into: Path) -> Path:
+    """The source tree of ``rev`` (``git archive``) in ``into``; returns its root."""
+    data = subprocess.run(["git", "-C", str(ROOT), "archive", rev], check=True, capture_output=True).stdout
+    with tarfile.open(fileobj=io.BytesIO(data)) as tar:
+        tar.extractall(into, filter="data")
+    return into
+
+
+def _child(python: str, tree: Path, which: str) -> float:
+    env = {**os.environ, **_SINGLE, "PYTHONPATH": str(tree)}
+    if which == "run_process":             # the tree's own console script (its module moved between revisions)
+        mod, func = tomllib.loads((tree / "pyproject.toml").read_text())["project"]["scripts"]["thermobear"].split(":")
+        script = f"import sys; from {mod} import {func}; sys.exit({func}())"
+        ts = []
+        for _ in range(3):
+            t0 = time.perf_counter()
+            subprocess.run([python, "-c", script, "run", str(tree / "examples" / SCENE)], env=env, check=True,
+                           capture_output=True, cwd=tree)
+            ts.append(time.perf_counter() - t0)
+        return min(ts)
+    code = (f"import sys, warnings; sys.path.insert(0, {str(Path(__file__).parent)!r}); "
+            f"warnings.simplefilter('ignore'); import bench_all, json; "
+            f"print(json.dumps(bench_all.measure({which!r})))")
+    out = subprocess.run([python, "-c", code], env=env, check=True, capture_output=True, text=True, cwd=tree)
+    return float(json.loads(out.stdout.strip().splitlines()[-1]))
+
+
+def compare(ref: str = REF, ref_python: str | None = None) -> list:
+    """``[(key, this tree [s], previous revision [s]), ...]`` measured alternately in one run."""
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        old = export(ref, Path(tmp))
+        for key in TARGETS:
+            new_t = _child(sys.executable, ROOT, key)
+            old_t = _child(ref_python or sys.executable, old, key)
+            rows.append((key, new_t, old_t))
+    return rows
+
+
+def _fmt(x: float) -> str:
+    return f"{x * 1e3:.1f} ms" if x < 1.0 else f"{x:.2f} s"
+
+
+def table(rows, ref: str) -> list:
+    L = [f"| benchmark | this tree | previous ({ref}) | ratio (this / previous) | target | verdict |",
+         "|---|---|---|---|---|---|"]
+    for key, new_t, old_t in rows:
+        target = TARGETS[key]
+        if target is None and key == "transient_3600":
+            verdict = "met" if new_t <= old_t else f"**missed ×{new_t / old_t:.3g}**"
+            tgt = "≤ previous"
+        elif target is None:
+            verdict, tgt = "–", "–"
+        else:
+            verdict, tgt = ("met" if new_t <= target else f"**missed ×{new_t / target:.3g}**"), _fmt(target)
+        L.append(f"| {LABELS[key]} | {_fmt(new_t)} | {_fmt(old_t)} | {new_t / old_t:.2f} | {tgt} | {verdict} |")
+    return L
+
+
+def _profile(fn, n: int = 14) -> str:
     pr = cProfile.Profile()
     pr.enable()
     fn()
     pr.disable()
-    s = io.StringIO()
-    st = pstats.Stats(pr, stream=s)
-    total = st.total_tt
-    rows = []
-    for (file, line, func), (cc, nc, tt, ct, _) in st.stats.items():
-        short = file.split("/thermobear/")[-1] if "/thermobear/" in file else file.split("/")[-1]
-        rows.append((tt, ct, nc, f"{short}:{line}({func})"))
-    rows.sort(reverse=True)
-    lines = [f"total {total:.3f} s; top by own time (own s, cumulative s, calls):"]
-    lines += [f"  {tt:7.3f} {ct:7.3f} {nc:7d}  {name}" for tt, ct, nc, name in rows[:n]]
-    own = sorted((r for r in rows if r[3].split(":")[0] in _TB_FILES), key=lambda r: -r[1])[:n]
-    lines += ["top thermobear functions by cumulative time (cumulative s, share, calls):"]
-    lines += [f"  {ct:7.3f} {100 * ct / total:5.1f} % {nc:7d}  {name}" for tt, ct, nc, name in own]
-    return "\n".join(lines)
+    st = pstats.Stats(pr)
+    rows = sorted(((tt, ct, nc, f"{f.split('/thermobear/')[-1]}:{line}({func})")
+                   for (f, line, func), (cc, nc, tt, ct, _) in st.stats.items()), reverse=True)
+    lines = [f"total {st.total_tt:.3f} s; top by own time (own s, cumulative s, calls):"]
+    return "\n".join(lines + [f"  {tt:7.3f} {ct:7.3f} {nc:7d}  {name}" for tt, ct, nc, name in rows[:n]])
 
 
-def _scene():
-    return tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
+def profiles() -> list:
+    """cProfile hot spots of the steady point and the transient on this tree."""
+    tb, _ = _api()
+    s = tb.load_scene(tb.example_path(SCENE))
+    tb.steady_state(s)
+    pts = [s.with_(n_rpm=s.n_rpm * (1.0 + k * 1e-4)) for k in range(101, 121)]
+    out = ["Hot spots (cProfile, this tree):", ""]
+    for name, fn in (("20 coupled steady points (seed 004)", lambda: [tb.steady_state(p) for p in pts]),
+                     ("3600 s transient (seed 004)", lambda: tb.transient(s, 3600.0))):
+        out += [f"**{name}**", "", "```", _profile(fn), "```", ""]
+    return out
 
 
-def run(full: bool = False, profile: bool = True) -> str:
-    warnings.simplefilter("ignore", ExtrapolationWarning)
-    rng = np.random.default_rng(6)
-    s = _scene()
-    b = s.bearing
-    res = []
-    prof = {}
-    # 1. load distribution
-    n = 1000
-    Fr = rng.uniform(50, 1500, n)
-    Fa = Fr * np.tan(b.alpha0) * 1.05 + rng.uniform(50, 700, n)
-    f1 = lambda: load_distribution(b, Fa=Fa, Fr=Fr)                        # noqa: E731
-    t = _median(f1, 5) / n
-    res.append(("load distribution, batch of 1000 (7210, Fa+Fr)", t, 100e-6, "per case"))
+def uncertainty_line() -> list:
+    """The issue-17 benchmark (1000 uncertainty samples), when this tree has it."""
+    try:
+        sys.path.insert(0, str(Path(__file__).parent))
+        import bench_uncertainty
+    except ImportError:
+        return []
+    r = bench_uncertainty.bench(1000)
+    t = r["seconds"] if isinstance(r, dict) else float(r)
+    return ["", f"1000 uncertainty samples of the seed-004 steady state (issue 17; one core): {t:.2f} s "
+                f"(target ≤ 2 s: {'met' if t <= 2.0 else 'missed'})."]
+
+
+def run(full: bool = False, profile: bool = True, ref: str = REF, ref_python: str | None = None) -> str:
+    """The benchmark section of the validation report (``full`` is accepted for run_all's interface:
+    the sweep is always the full 1000 points)."""
+    warnings.simplefilter("ignore")
+    rows = compare(ref, ref_python)
+    L = table(rows, ref)
+    L += ["", f"Both trees timed in child processes of one run, alternately (single-threaded BLAS; CPU time "
+              f"of the process for in-process workloads, wall time for the whole `thermobear run`); the previous "
+              f"revision {ref} run by `{ref_python or sys.executable}`."]
+    L += uncertainty_line()
     if profile:
-        prof["1. load distribution"] = _profile(f1)
-    # 2. losses
-    nn = rng.uniform(1000, 8000, n)
-    TT = rng.uniform(30, 70, n)
-    f2 = lambda: bearing_losses(b, s.lubricant, Fa=Fa, Fr=Fr, n_rpm=nn, T_C=TT,              # noqa: E731
-                                oil_flow_m3_s=s.oil_flow)
-    t = _median(f2, 3) / n
-    res.append(("local losses, batch of 1000 (loads, speeds, temperatures differ)", t, 200e-6, "per point"))
-    f2b = lambda: run_sweep(s, {"n_rpm": list(np.linspace(1000, 8000, 100)),                  # noqa: E731
-                                "T_C": list(np.linspace(30, 70, 10))})
-    t = _median(f2b, 3) / 1000
-    res.append(("run_sweep prescribed T, 1000 points (one load group)", t, 200e-6, "per point"))
-    if profile:
-        prof["2. losses (bearing_losses batch)"] = _profile(f2)
-        prof["2b. run_sweep prescribed"] = _profile(f2b)
-    # 3. coupled single point: every timed call a NEW operating point (n_rpm = n0 (1 + k 1e-4), k = 1..20,
-    # each solved once) after one warm-up solve of the scene: bearing-level caches (network values that
-    # read only the bearing, stiffness constants, the network table) are warm as in any sweep or repeated
-    # use; everything keyed on the operating point (the dry loads the solver caches) is cold
-    def new_points(scene, k0=0, n=20):
-        return [scene.with_(n_rpm=scene.n_rpm * (1.0 + k * 1e-4)) for k in range(k0 + 1, k0 + n + 1)]
-
-    def per_point(scene):
-        steady_state(scene)                                   # warm-up (imports, bearing-level caches)
-        ts = []
-        for sc in new_points(scene):
-            t0 = time.perf_counter()
-            steady_state(sc)
-            ts.append(time.perf_counter() - t0)
-        return float(np.median(ts))
-    t = per_point(s)
-    res.append(("coupled steady point (seed 004, oil_jet_ball_bearing network; 20 new points, median)", t, 5e-3,
-                "per point"))
-    s2 = tb.load_scene(tb.example_path("seed002_grease_thrust_51107.toml"))
-    t = per_point(s2)
-    res.append(("coupled steady point (seed 002, grease_thrust_four_ball network; 20 new points, median)", t, 5e-3,
-                "per point"))
-    if profile:
-        pts = new_points(s, k0=100)
-        prof["3. coupled steady point (seed 004, 20 new points)"] = _profile(lambda: [steady_state(p) for p in pts], 16)
-    # 4. coupled sweep on one core
-    npts = 1000 if full else N_SWEEP
-    grid = {"n_rpm": list(np.linspace(2000, 8000, npts))}
-    t0 = time.perf_counter()
-    rows = run_sweep(s, grid, processes=1)
-    t = (time.perf_counter() - t0) * 1000 / npts
-    ok = sum(r["status"] == "ok" for r in rows)
-    res.append((f"1000-point coupled sweep, one core ({'run' if full else f'timed on {npts} points, scaled'};"
-                f" {ok}/{npts} ok)", t, 2.0, "total"))
-    # 5. transient
-    f5 = lambda: transient(s, 3600.0)                                       # noqa: E731
-    t = _median(f5, 2)
-    res.append(("3600 s heat-up transient (seed 004)", t, 0.5, "total"))
-    if profile:
-        prof["5. transient 3600 s"] = _profile(f5, 16)
-
-    L = ["| benchmark | measured | target | verdict |", "|---|---|---|---|"]
-    for name, t, target, unit in res:
-        fmt = (lambda x: f"{x * 1e6:.0f} µs") if target < 1e-3 else (lambda x: f"{x * 1e3:.1f} ms") \
-            if target < 0.1 else (lambda x: f"{x:.2f} s")
-        verdict = "met" if t <= target else f"**missed ×{t / target:.3g}**"
-        L.append(f"| {name} | {fmt(t)} {unit} | {fmt(target)} | {verdict} |")
-    L += ["", "**Where the time goes, and the miss.** A coupled seed 004 point (each timed call a new operating "
-          "point, n = 3200 (1 + k 1e-4) rpm: what the solver caches per operating point — the dry loads — is "
-          "cold; what depends only on the bearing — the network's volumes, areas, lengths and materials, the "
-          "stiffness constants — is warm, as in any sweep) measured 3.7–4.4 ms on a quiet machine (7.1–9.9 ms "
-          "before the numba kernels, since removed, and the thermal trims of this work). Split (200 points, mean): the dry "
-          "high-speed ball equilibrium ≈ 0.9 ms — the static Jones start ≈ 0.2 ms, the per-ball start ≈ 0.1 ms, "
-          "7 Newton steps ≈ 0.45 ms (those with numba-compiled kernels, since removed: the loads now run on numpy, "
-          "one shared damped Newton, thermobear/loads/newton.py, timed by validation/bench_loads.py"
-          "); the contact set ≈ 0.45 ms (Hertz ellipticity iteration, kinematics); the network "
-          "build ≈ 0.3 ms (the bearing-only values shared between points); Newton on the free node "
-          "temperatures ≈ 1.3 ms for 5 iterations (one fused loss pass at two temperature states per iteration — "
-          "the loss slopes are diagonal —, conductances and their slopes, LAPACK solves); the final losses and "
-          "network solve ≈ 0.4 ms. What is left is spread over many small numpy calls (≈ 0.3–1 µs each). The "
-          "seed 002 point (closed-form loads) is at ≈ 2.3 ms. "
-          "The 1000-point coupled sweep (2000–8000 rpm) misses its 2 s: its dry loads are solved in batched "
-          "calls first, so a dry point costs its thermal coupling, ≈ 3.0 ms, point by point; the points below "
-          "≈ 3200 rpm (17 %), where the low-speed form applies and lifts two balls, run the film load model "
-          "(a dry steady state for the start, then film load distributions — batched over those points, each "
-          "round of their fixed points one call — each followed by a "
-          "steady state), ≈ 8 ms per point. Rows equal single solves to 1e-12. The levers left: a thermal "
-          "network batched over operating points (the elements are written for scalars), and fewer numpy calls "
-          "per load-distribution step. The prescribed-temperature sweep solves each load group in one batched call (dry "
-          "high-speed or film). The transient is ≈ 100 loss evaluations of the BDF right-hand side with the "
-          "output losses in one vectorised call. Timings vary by ±30–50 % between runs on the 2-core CI "
-          "machine."]
-    if profile:
-        L += ["", "Hot spots (cProfile):", ""]
-        for k, v in prof.items():
-            L += [f"**{k}**", "", "```", v, "```", ""]
+        L += [""] + profiles()
     return "\n".join(L)
 
 
+def _arg(argv, name, default=None):
+    return argv[argv.index(name) + 1] if name in argv else default
+
+
 if __name__ == "__main__":
-    print(run(full="--full" in sys.argv))
+    a = sys.argv
+    print(run(profile="--no-profile" not in a, ref=_arg(a, "--ref", REF), ref_python=_arg(a, "--ref-python")))

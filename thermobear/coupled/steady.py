@@ -42,7 +42,7 @@ from thermobear.coupled.fixedpoint import solve_coupled
 from thermobear.coupled.pipeline import (Family, families, family_contacts, family_loads, film_temperature_C,
                                         split_failures)
 from thermobear.coupled.limits import emit, family_warnings, overloads
-from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepared_for
+from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepare, prepared_for
 from thermobear.errors import (ExtrapolationWarning, InputError, NoConvergence, OutsideValidity, SolverError,
                                ThermalRunaway)
 from thermobear.loads.api import check_loads, contact_bounds
@@ -512,8 +512,16 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> l
         # property calls at intermediate iterates may lie beyond a correlation's data: only the answer
         # counts, and its validity is checked on its own (SteadyState.warnings, limits.point_warnings)
         warnings.simplefilter("ignore", OutsideValidity)
+        shared: list = [prepared] if prepared is not None else []   # one prepare per machine of this call
         for fam in fams:
-            for j, r in zip(fam.index, _solve_family(fam, tol_K, None if load is None else _batched(load), prepared)):
+            pre = next((p for p in shared if p.serves(fam.scene)), None)
+            if pre is None and fam.scene.network is not None:
+                try:
+                    pre = prepare(fam.scene)
+                    shared.append(pre)
+                except InputError:
+                    pre = None              # the family's own solve names the error per point
+            for j, r in zip(fam.index, _solve_family(fam, tol_K, None if load is None else _batched(load), pre)):
                 res[j] = r
     parts: dict = {}
     for (i, w), r in zip(owner, res):

@@ -226,7 +226,7 @@ def _imposed(boundary, scene: Scene, t_end_s):
 def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None) -> TransientRun:
     T_state = scene.T_ambient_C if T0_C is None else T0_C
     out_t, out_T, out_rep, first, seg_changes, seen = [], {}, {}, None, {}, set()
-    film_dt, completed, i = None, True, -1
+    film_dt, completed, i, plans = None, True, -1, {}
     with warnings.catch_warnings():
         # property calls at the integrator's trial states may lie beyond a correlation's data; the
         # validity of the states reported is checked once, on the series (limits.point_warnings)
@@ -234,7 +234,9 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
         while i + 1 < len(pieces):
             i += 1
             ts, te, sc, last_seg = pieces[i]
-            alts = _alternatives(sc, load)
+            if id(sc) not in plans:           # film pieces of one step share its scene: planned once
+                plans[id(sc)] = _alternatives(sc, load)
+            alts = plans[id(sc)]
             models = max(alts, key=lambda a: a.weight).models
             film = load is None and any(a.models["load_model"][0] == "film" for a in alts)
             T_film = None
