@@ -99,6 +99,18 @@ def test_list_and_loads(capsys):
     assert code == 0 and len(d["Q_inner_N"]) == len(d["psi_deg"]) and d["form"].startswith("high-speed")
 
 
+def test_list_bearings_of_a_series(capsys):
+    code, out, _ = run(capsys, "list", "bearings", "--series", "62", "--json")
+    rows = json.loads(out)
+    assert code == 0 and [r["designation"] for r in rows][:3] == ["6200", "6201", "6202"]
+    r = next(r for r in rows if r["designation"] == "6208")
+    assert (r["d_mm"], r["D_mm"], r["B_mm"]) == (40.0, 80.0, 18.0) and "D_mm" in r["estimated"] and r["C0_kN"] > 0
+    code, out, _ = run(capsys, "list", "bearings", "--series", "72 B")
+    assert code == 0 and "7205B" in out and "40.00" in out
+    code, _, err = run(capsys, "list", "bearings", "--series", "99")
+    assert code == 2 and "known series" in err
+
+
 def test_solver_error_exit_3(capsys, monkeypatch):
     import thermobear.app.verbs as verbs
     from thermobear.errors import ThermalRunaway
@@ -330,3 +342,17 @@ def test_every_models_key_can_be_forced_on_the_command_line(capsys):
     assert code == 0 and d["models_used"]["drag"]["choice"] is False and d["models_used"]["hertz"]["choice"] == "houpert"
     code, _, err = run(capsys, "run", s004, "--set", 'models.drag="false"')
     assert_bad_input(code, err, "models.drag")
+
+
+def test_run_and_transient_plots_of_a_machine_show_its_network_and_power(capsys, tmp_path):
+    scene = str(Path(__file__).parents[1] / "examples" / "block_6208_oil_bath.toml")
+    code, _, _ = run(capsys, "run", scene, "--plot", tmp_path / "run")
+    assert code == 0 and (tmp_path / "run" / "network.png").stat().st_size > 50_000
+    code, _, _ = run(capsys, "transient", scene, "--t-end", "600", "--plot", tmp_path / "tr")
+    assert code == 0 and (tmp_path / "tr" / "heatup.png").stat().st_size > 20_000
+
+
+def test_node_families_group_a_machines_parts():
+    from thermobear.app.plots import node_family
+    assert [node_family(n) for n in ("inner_race", "shaft_seat_3_r2", "housing_foot", "balls", "oil_sump", "frame")] \
+        == ["inner", "shaft", "housing", "ball", "oil", ""]

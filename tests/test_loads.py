@@ -167,7 +167,7 @@ def test_per_ball_stiffness_close_to_nominal():
     np.testing.assert_allclose(p.Q, a.Q, rtol=2e-3, atol=1e-6)
 
 
-@pytest.mark.parametrize("kw", [dict(Fa=-1.0), dict(Fr=-5.0), dict(Fa=np.nan), dict(M=np.inf)])
+@pytest.mark.parametrize("kw", [dict(Fa=-1.0), dict(Fz=np.nan), dict(Fa=np.nan), dict(M=np.inf), dict(My=np.inf)])
 def test_bad_loads(kw):
     with pytest.raises(InputError):
         load_distribution(bearing("6210"), **({"Fa": 10.0} | kw))

@@ -90,8 +90,8 @@ def test_loads_no_set_of_balls_can_carry_are_refused_before_solving():
     # load_distribution(7210, Fa=1e5, Fr=1e6) returned ball loads of 300 kN at contact angles of 170°
     with warnings.catch_warnings():
         warnings.simplefilter("error", RuntimeWarning)
-        with pytest.raises(InputError, match=r"^Fr = 1000000.0 — maximum contact pressure 6\d{3} MPa must lie in "
-                                             r"\[0, 5292\] \[MPa\] \(at least: the load shared by all 15 balls"):
+        with pytest.raises(InputError, match=r"^Fr = 1000000.0 — maximum contact pressure \d{4} MPa must lie in "
+                                             r"\[0, 5292\] \[MPa\] \(at least: the largest ball load of 7210"):
             load_distribution(B, Fa=1e5, Fr=1e6)
         with pytest.raises(InputError, match="^Fa = 1e\\+30 — maximum contact pressure"):
             load_distribution(B, Fa=1e30)                       # solved before, through overflows

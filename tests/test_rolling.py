@@ -271,3 +271,54 @@ def test_smooth_selection_equals_the_sharp_one_away_from_boundaries_and_is_conti
     np.testing.assert_allclose(smooth[far], sharp[far], rtol=1e-4)
     step = np.max(np.abs(np.diff(np.log(smooth))))                          # Δ ln q = 0.0046 per step
     assert step < 0.05 and np.max(np.abs(np.diff(np.log(sharp)))) > 0.3     # the sharp selection jumps
+
+
+# ----------------------------------------------------------------------------- mixed lubrication (load sharing)
+# Seed 001 Table 1 contact: 3 mm ball on the 4.16 mm groove, 0.633 N, η 0.05 Pa s, v = ω r/2 at r = 18 mm.
+_MIXED = (0.633, 1.5e-3, 4.16e-3 * 1.5e-3 / (4.16e-3 - 1.5e-3), 2 * math.pi * 0.018 / 2, 0.05, 2.3e11)
+
+
+@pytest.mark.parametrize("model", ["biboulet_ivr", "biboulet_transition", "houpert_ivr", "biboulet_pvr"])
+def test_mixed_rolling_force_is_the_film_force_at_the_film_borne_load(model):
+    # seed 001 App. A share at Λ = 0.5: Q_a/Q = 1 - 1.21·0.5^0.64/(1 + 0.37·0.5^1.26) = 0.327
+    Q = _MIXED[0]
+    s = 1.0 - 1.21 * 0.5**0.64 / (1.0 + 0.37 * 0.5**1.26)
+    assert s == pytest.approx(0.327, abs=5e-4)
+    film = R.rolling_force((1 - s) * Q, *_MIXED[1:], model=model)
+    assert R.rolling_force_mixed(*_MIXED, 0.5, model=model) == pytest.approx(film, rel=1e-12)
+    assert R.rolling_force_mixed(*_MIXED, 0.5, model=model, c_rr_asperity=1e-3) == pytest.approx(
+        film + 1e-3 * s * Q, rel=1e-12)
+
+
+def test_mixed_rolling_force_limits_full_film_and_boundary():
+    full = R.rolling_force(*_MIXED)
+    # Λ ≥ 2.258 (and the smooth limit Λ = ∞): the full-film force, exactly
+    for lam in (2.2582, 3.0, 10.0, math.inf):
+        assert float(R.rolling_force_mixed(*_MIXED, lam)) == full
+    # Λ = 0: every newton on asperities, no film force; only the asperity rolling resistance remains
+    assert float(R.rolling_force_mixed(*_MIXED, 0.0)) == 0.0
+    assert float(R.rolling_force_mixed(*_MIXED, 0.0, c_rr_asperity=2e-4)) == pytest.approx(2e-4 * _MIXED[0])
+
+
+def test_mixed_rolling_force_is_continuous_and_monotonic_in_lambda():
+    lam = np.linspace(0.0, 4.0, 4001)
+    F = R.rolling_force_mixed(*_MIXED, lam)
+    assert np.all(np.diff(F) >= 0.0)                               # more film, more film force
+    # no step (dΛ = 1e-3); near Λ = 0 the film force rises as ((1 - s) Q)^(1/3) ∝ Λ^0.21, steep but continuous
+    assert np.max(np.abs(np.diff(F[50:]))) < 2e-3 * R.rolling_force(*_MIXED)
+    assert float(R.rolling_force_mixed(*_MIXED, 1e-12)) < 0.01 * R.rolling_force(*_MIXED)
+    # a large asperity coefficient makes it fall with Λ instead, still without a step
+    G = R.rolling_force_mixed(*_MIXED, lam, c_rr_asperity=0.02)
+    assert np.all(np.diff(G) <= 0.0)
+
+
+def test_mixed_rolling_force_vectorised_and_checked():
+    lam = np.array([[0.3, 0.6], [1.0, np.inf]])
+    F = R.rolling_force_mixed(*_MIXED, lam)
+    assert F.shape == (2, 2)
+    for i, j in np.ndindex(2, 2):
+        assert F[i, j] == pytest.approx(float(R.rolling_force_mixed(*_MIXED, lam[i, j])), rel=1e-13)
+    with pytest.raises(InputError):
+        R.rolling_force_mixed(*_MIXED, -0.1)
+    with pytest.raises(InputError):
+        R.rolling_force_mixed(*_MIXED, float("nan"))

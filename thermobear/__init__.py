@@ -14,13 +14,15 @@ from thermobear.lubrication.film import film_thickness, lubrication_regime  # no
 from thermobear.loads import load_distribution, LoadDistribution, needs_high_speed  # noqa: F401
 from thermobear.loads.highspeed import load_distribution_high_speed, FilmInputs  # noqa: F401
 from thermobear.loads.film import film_load_distribution, FilmLoadDistribution  # noqa: F401
+from thermobear.loads.sets import Support, ShaftLoads, bearing_set, shaft_on_two_supports, shaft_loads  # noqa: F401
+from thermobear.contact.fits import operating_clearance, OperatingClearance  # noqa: F401
 from thermobear.losses import bearing_losses, LossResult, prepare_contacts, evaluate_losses  # noqa: F401
 from thermobear.losses.rolling import rolling_force  # noqa: F401
 from thermobear.losses.skf import skf_friction  # noqa: F401
 from thermobear.losses.drag import drag_loss  # noqa: F401
 from thermobear.thermal import load_network, prepare_network, solve_steady, solve_transient  # noqa: F401
 from thermobear.scene import Scene, load_scene  # noqa: F401
-from thermobear.rating import rating_life, RatingLife  # noqa: F401
+from thermobear.rating import rating_life, RatingLife, iso16281_life  # noqa: F401
 from thermobear.models import choose_models, open_contacts  # noqa: F401
 from thermobear.coupled import (solve, steady_state, steady_states, transient, scene_losses, prepare,  # noqa: F401
                                 Prepared, RunResult, SteadyState, TransientRun, UncertaintyResult)

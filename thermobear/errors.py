@@ -11,7 +11,7 @@ import numpy as np
 
 __all__ = [
     "ThermobearError", "InputError", "SolverError", "NoEquilibrium",
-    "NoConvergence", "ThermalRunaway", "OutsideValidity", "ExtrapolationWarning",
+    "NoConvergence", "ThermalRunaway", "NoSpeedRoot", "OutsideValidity", "ExtrapolationWarning",
 ]
 
 
@@ -74,6 +74,11 @@ class NoConvergence(SolverError):
 
 class ThermalRunaway(SolverError):
     """Heat generation grows faster with temperature than dissipation: no thermal equilibrium."""
+
+
+class NoSpeedRoot(SolverError):
+    """A speed search found no speed that meets its condition in the speeds it may search: the
+    message says which ("the limit is reached at no speed up to …", "exceeded already at …")."""
 
 
 class OutsideValidity(UserWarning):

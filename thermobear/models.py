@@ -80,7 +80,7 @@ BLEND_BANDS = {"high_speed": (0.035, 0.07), "film": (0.0, 0.1)}
 #: less than 1e-3 of the difference between the models (≤ 1e-4 of the power for models 10 % apart).
 MIN_WEIGHT = 1e-3
 
-__all__ = ["choose_models", "plan", "plan_many", "open_contacts", "dry_load", "is_symmetric", "FLOODED",
+__all__ = ["choose_models", "plan", "plan_many", "open_contacts", "dry_load", "is_symmetric", "moments", "FLOODED",
            "BLEND_BANDS", "Alternative", "DryRow", "smooth_weight", "film_options", "added_losses", "oil_level",
            "seal_diameter_mm", "cage_land"]
 
@@ -89,7 +89,8 @@ FLOODED = ("oil_jet", "oil_bath")
 
 def is_symmetric(scene: Scene) -> bool:
     """Pure axial load, tilt held, nominal stiffness: every ball carries the same load."""
-    return scene.Fr == 0.0 and scene.M is None and scene.models.get("stiffness", "nominal") == "nominal"
+    return (scene.Fr == 0.0 and scene.Fz == 0.0 and scene.M is None and scene.My is None
+            and scene.models.get("stiffness", "nominal") == "nominal")
 
 
 def _high_speed_choice(scene: Scene) -> tuple:
@@ -116,7 +117,7 @@ def refuse_unloaded_thrust(Fa):
 
 def _dry_key(scene: Scene, hs: bool):
     """The dry load distribution the model choice of ``scene`` needs with the high-speed form ``hs`` —
-    (bearing, Fa, Fr, M, stiffness, n_rpm or None) — or None when it needs none (closed form, film
+    (bearing, Fa, Fr, M, stiffness, n_rpm or None, Fz, My) — or None when it needs none (closed form, film
     chosen in the scene, no choice to make, or an invalid scene: :func:`choose_models` will say why)."""
     m = scene.models
     if m.get("load_model") in ("closed_form", "film") or (scene.T_C is None and not scene.network):
@@ -125,22 +126,32 @@ def _dry_key(scene: Scene, hs: bool):
         return None         # the SKF global model reads F_a, F_r only: no film test, no dry loads needed
     if is_symmetric(scene) and not hs and "load_model" not in m:
         return None
-    return (scene.bearing, float(scene.Fa), float(scene.Fr), None if scene.M is None else float(scene.M),
-            m.get("stiffness", "nominal"), float(scene.n_rpm) if hs else None)
+    M, My = moments(scene)
+    return (scene.bearing, float(scene.Fa), float(scene.Fr), M, m.get("stiffness", "nominal"),
+            float(scene.n_rpm) if hs else None, float(scene.Fz), My)
 
 
-def _solve_dry(brg, Fa, Fr, M, stiffness, n_rpm, *, continuation=True) -> LoadDistribution:
+def moments(scene: Scene) -> tuple:
+    """(M, M_y) of a scene for the load solvers [N m]: both None (tilts held) unless either is given, then the
+    other 0 (:func:`thermobear.loads.load_distribution`)."""
+    if scene.M is None and scene.My is None:
+        return None, None
+    return float(scene.M or 0.0), float(scene.My or 0.0)
+
+
+def _solve_dry(brg, Fa, Fr, M, stiffness, n_rpm, *, continuation=True, Fz=0.0, My=None) -> LoadDistribution:
     """Dry Jones–Harris load distribution (high-speed form when ``n_rpm`` is given); arrays batch."""
     if n_rpm is None:
-        return load_distribution(brg, Fa=Fa, Fr=Fr, M=M, stiffness=stiffness, continuation=continuation)
-    return load_distribution_high_speed(brg, Fa=Fa, Fr=Fr, M=M, n_rpm=n_rpm, stiffness=stiffness)
+        return load_distribution(brg, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, stiffness=stiffness, continuation=continuation,
+                                 refuse_overload=False)      # the contact set refuses overloads per point
+    return load_distribution_high_speed(brg, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, n_rpm=n_rpm, stiffness=stiffness)
 
 
 def dry_load(scene: Scene, high_speed: bool) -> LoadDistribution:
     """The scene's dry Jones–Harris load distribution (high-speed form when ``high_speed``)."""
-    M = None if scene.M is None else float(scene.M)
+    M, My = moments(scene)
     return _solve_dry(scene.bearing, float(scene.Fa), float(scene.Fr), M, scene.models.get("stiffness", "nominal"),
-                      float(scene.n_rpm) if high_speed else None)
+                      float(scene.n_rpm) if high_speed else None, Fz=float(scene.Fz), My=My)
 
 
 def open_contacts(scene: Scene, high_speed: bool, dry: LoadDistribution | None = None) -> int:
@@ -186,7 +197,7 @@ def _high_speed_alternatives(scene: Scene) -> list:
     b, m = scene.bearing, scene.models
     if "high_speed" in m or b.kind == "thrust":
         return [(_high_speed_choice(scene), 1.0)]
-    Qtyp = max(scene.Fa / (b.Z * max(np.sin(b.alpha0), 1e-3)), scene.Fr * 5.0 / b.Z, 1e-9)
+    Qtyp = max(scene.Fa / (b.Z * max(np.sin(b.alpha0), 1e-3)), float(np.hypot(scene.Fr, scene.Fz)) * 5.0 / b.Z, 1e-9)
     ratio = float(needs_high_speed(b, scene.n_rpm, Qtyp, rotating=scene.rotating)[1])
     lo, hi = BLEND_BANDS["high_speed"]
     w = float(smooth_weight(ratio, lo, hi))
@@ -529,8 +540,9 @@ def _batch_dry(brg, no_M, stiff, low, keys, dry):
     Fa, Fr = np.array([k[1] for k in keys]), np.array([k[2] for k in keys])
     M = None if no_M else np.array([k[3] for k in keys])
     n = None if low else np.array([k[5] for k in keys])
+    Fz, My = np.array([k[6] for k in keys]), None if no_M else np.array([k[7] for k in keys])
     try:               # no continuation inside a batch: a case that needs it is left to its own solve
-        ld = _solve_dry(brg, Fa, Fr, M, stiff, n, continuation=len(keys) == 1)
+        ld = _solve_dry(brg, Fa, Fr, M, stiff, n, continuation=len(keys) == 1, Fz=Fz, My=My)
     except (SolverError, InputError) as exc:     # loads the contacts cannot carry: said by the load step
         if len(keys) == 1:
             dry[keys[0]] = exc

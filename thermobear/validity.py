@@ -21,7 +21,9 @@ The limits (the README's table is :func:`limits_table`, with the reasoning and s
 | contact angle + half the contact ellipse, from the groove bottom | deg | > 90 | – |
 | Hertz contact size / radius of curvature | – | outside [0, 1] | > 0.2 |
 | lubricant temperature | °C | outside [-40, 250] | outside [-20, 150] |
-| static safety s0 | – | – | < 1 |
+| static safety s0 | – | < 0.5 | < 1 |
+| viscosity ratio κ = ν/ν1 | – | – | outside [0.1, 4] |
+| operating radial clearance | µm | – | < 0 |
 | load (Fa, Fr or M/ℜ_i), when not 0 | N | < 1e-06 | – |
 | speed, when not 0 | rpm | < 1e-06 | – |
 | SKF weighting factor Φ_bl | – | – | > 0.5 |
@@ -137,8 +139,18 @@ LIMITS = {
         source="ASTM D341 two-point fit at 40 and 100 °C: warned 60 K below / 50 K above the data, refused "
                "below −40 °C (bearing oils at or past their pour point) and above 250 °C (past their flash point)"),
     "s0": Limit(
-        "static safety s0", "-", (None, None), (1.0, None),
-        source="ISO 76:2006: s0 < 1 means permanent deformation above 1e-4 D (refused by the contact pressure)"),
+        "static safety s0", "-", (0.5, None), (1.0, None),
+        source="ISO 76:2006: s0 < 1 means permanent deformation above 1e-4 D; refused below 0.5, a static "
+               "equivalent load twice C0: the refused contact pressure (4200·2^(1/3) MPa, p ∝ Q^(1/3)) at the "
+               "standard's load distribution, where the deformation (Palmgren 1959, ∝ Q²) is 4× ISO 76's"),
+    "kappa": Limit(
+        "viscosity ratio κ = ν/ν1", "-", (None, None), (0.1, 4.0),
+        source="ISO 281:2007 §9.3.3: a_ISO is defined for 0.1 <= κ <= 4 (evaluated at the bound outside; below "
+               "0.1 the film no longer separates the surfaces, a_ISO does not apply)"),
+    "operating_clearance": Limit(
+        "operating radial clearance", "µm", (None, None), (0.0, None), scale=1e6,
+        source="clearance consumed by the fits, the temperatures and the speed: a radial preload (Harris & "
+               "Kotzalas 2007 ch. 3), whose load and heat grow as the inner ring warms"),
     "load": Limit(
         "load (Fa, Fr or M/ℜ_i), when not 0", "N", (1e-6, None), (None, None),
         source="below 1 µN the Hertz approach of a ball, (Q/K)^(2/3) with K ≈ 1e10 N/m^1.5, is below a tenth of "

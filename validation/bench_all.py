@@ -40,6 +40,8 @@ from pathlib import Path
 
 import numpy as np
 
+from _common import median_time
+
 #: the revision before the one-pipeline redesign (issue 14): numba kernels, solver.py
 REF = "601717d"
 ROOT = Path(__file__).resolve().parents[1]
@@ -67,13 +69,7 @@ def _api():
 
 
 def _cpu(fn, repeat: int) -> float:
-    fn()                                                 # warm-up: imports, bearing-level preparation
-    ts = []
-    for _ in range(repeat):
-        t0 = time.process_time()
-        fn()
-        ts.append(time.process_time() - t0)
-    return float(np.median(ts))
+    return median_time(fn, repeat, clock=time.process_time)   # warm-up call first: imports, preparation
 
 
 def measure(which: str) -> float:

@@ -55,6 +55,54 @@ def local_exponent(model, d, Q, eta, omega, h=1e-4):
         / math.log(1 + h)
 
 
+def mixed_section(w, rows, alpha_p):
+    """Mixed lubrication: the load-sharing rolling resistance (rolling_force_mixed) against Tables 1-2."""
+    w("## Mixed lubrication: the asperity share of the rolling resistance (load sharing)\n")
+    w("`thermobear.losses.rolling.rolling_force_mixed`: the film carries (1 − Q_a/Q) Q (Johnson, Greenwood & Poon "
+      "1972 load sharing; Q_a/Q(Λ) of seed 001 App. A), the asperities Q_a.  The film's force is the transition "
+      "model at the film-borne load; the asperity term c_rr,a Q_a is 0 here (the asperities' hysteresis and micro-slip "
+      "are the local model's MER and μ(Λ) terms).  'bound' adds the largest asperity rolling resistance seed 001 "
+      "allows: its dry torque (all load on asperities) is at most 12 % of the lubricated torque (§4.3), so the "
+      "asperity share adds at most Q_a/Q × 12 % of T_exp.\n")
+    w("| table | rpm | Λ | Q_a/Q | T_exp [N m] | T transition (err) | T mixed (err) | T mixed + bound (err) |")
+    w("|---|---|---|---|---|---|---|---|")
+    errs = {"transition": [], "mixed": [], "bound": []}
+    for r in rows:
+        d, Q, eta = r["d_mm"] * 1e-3, r["Q_N"], r["eta_Pa_s"]
+        om = r["initial_rpm"] * math.pi / 30
+        t_exp = r["K"] * om ** r["n"]
+        Rx, Ry = radii(d)
+        u = om * R_TRACK / 2
+        lam = film_thickness(Q, Rx, Ry, u, eta, alpha_p, E_PRIME, kind="min") / SIGMA
+        s = float(S.asperity_load_share(lam))
+        t_tr = torque("biboulet_transition", d, Q, eta, om)
+        t_mx = 6 * R_TRACK * float(R.rolling_force_mixed(Q, Rx, Ry, u, eta, E_PRIME, lam))
+        t_bd = t_mx + 0.12 * s * t_exp
+        e = {"transition": t_tr / t_exp - 1, "mixed": t_mx / t_exp - 1, "bound": t_bd / t_exp - 1}
+        for k, v in e.items():
+            errs[k].append(v)
+        w(f"| {r['table']} | {r['initial_rpm']:.0f} | {lam:.2f} | {s:.2f} | {t_exp:.3g} | {t_tr:.3g} "
+          f"({100 * e['transition']:+.0f} %) | {t_mx:.3g} ({100 * e['mixed']:+.0f} %) | {t_bd:.3g} "
+          f"({100 * e['bound']:+.0f} %) |")
+    rms = {k: 100 * math.sqrt(np.mean(np.square(v))) for k, v in errs.items()}
+    w(f"\nRMS over both tables: transition {rms['transition']:.1f} %, mixed {rms['mixed']:.1f} %, mixed + bound "
+      f"{rms['bound']:.1f} %.\n")
+    w("* The film share *lowers* the rolling force: every hydrodynamic force here is load controlled "
+      "(F_R ∝ Q^(1/3) at a given partition), so taking load off the film lowers it (−13 % at Λ = 0.27, partly offset "
+      "by the lighter film leaning towards the larger IVR force).  Load sharing moves the prediction away from the "
+      "measurements at every point.")
+    w("* The asperity share cannot close the gap either: even the whole dry torque of seed 001 §4.3 on the "
+      "asperity share leaves Table 1 at 60 rpm far below the measurement, because the gap there (≈ 35–40 % of "
+      "T_exp) is three times the largest dry torque (12 %).")
+    w("* What the data ask for is a resistance nearly independent of speed (Table 1 n = 0.12–0.37) and 3× the dry "
+      "rolling resistance at Λ ≈ 0.3, fading by Λ ≈ 0.6.  Candidates not in the model: the roughness effect on the "
+      "inlet Poiseuille flow itself (Patir & Cheng 1978 average flow model: pressure-flow factor φ_x < 1 for "
+      "h/σ ≲ 3 raises the inlet pressure gradient and hence F_R, more as Λ falls) — that needs an average-Reynolds "
+      "IVR/EHL solution (φ_x varies across the inlet, where h runs from h_min to many σ), not a rescaling of the "
+      "smooth closed forms; and α_p of the oil (estimated) which sets Λ.  Table 2's deficit is the model choice, not mixing: "
+      "Biboulet's IVR force (the paper's recommendation for EHL partition < 50 %, §4.5) is within 11 % RMS.\n")
+
+
 def main():
     out = []
     w = out.append
@@ -129,6 +177,8 @@ def main():
       "the measured Table 1 torque rises much more slowly with speed than any of the models, so the "
       "transition model is 40 % low at 60 rpm and within 10 % at 210 rpm.  A Λ of 0.3–0.6 "
       "(mixed lubrication, asperity contact) for these runs is a plausible cause the model does not contain.\n")
+
+    mixed_section(w, rows, alpha_p)
 
     # ------------------------------------------------------------- neglected terms (App. A)
     w("## Terms the paper neglects (App. A), at 60 and 210 rpm, relative to T_FR = 6 r F_R (transition)\n")

@@ -6,7 +6,7 @@
 Verbs: ``run`` (steady state), ``transient`` (heat-up, optional speed/load schedule), ``sweep``
 (grid over speed, load, temperature, lubricant), ``compare`` (a rig log against a simulation),
 ``calibrate`` (fit uncertain parameters to a rig log), ``spin-down`` (seed 001 coast-down rig),
-``loads`` and ``list``.  ``--json`` prints JSON, ``--plot DIR`` writes PNGs.
+``loads``, ``init`` (a commented scene for a catalogue bearing) and ``list``.  ``--json`` prints JSON, ``--plot DIR`` writes PNGs.
 
 Exit codes:
 
@@ -31,7 +31,9 @@ import signal
 import sys
 import warnings
 
-from thermobear.app.verbs import (EXIT_INTERRUPTED, cmd_calibrate, cmd_compare, cmd_list, cmd_loads, cmd_run,
+from thermobear.app.scaffold import HOUSINGS, METHODS
+from thermobear.app.speed import cmd_speed
+from thermobear.app.verbs import (EXIT_INTERRUPTED, cmd_calibrate, cmd_compare, cmd_init, cmd_list, cmd_loads, cmd_run,
                                   cmd_spin_down, cmd_sweep, cmd_transient)
 from thermobear import __version__
 from thermobear.errors import InputError, NoEquilibrium, SolverError, ThermobearError
@@ -151,12 +153,40 @@ def build_parser() -> argparse.ArgumentParser:
     _common(sd)
     sd.set_defaults(func=cmd_spin_down)
 
-    lo = sub.add_parser("loads", help="load distribution of a scene's bearing (per ball loads and angles)")
+    lo = sub.add_parser("loads", help="load distribution of a scene's bearing (static or high-speed; per ball loads "
+                                      "and angles; --plot: the ball loads around the bearing)")
     lo.add_argument("scene")
-    _common(lo, plot=False)
+    _common(lo)
     lo.set_defaults(func=cmd_loads)
 
+    spd = sub.add_parser("speed", help="thermal reference speed (ISO 15312, model), thermally safe speed of the "
+                         "scene's cooling (model) and DIN 732's, with the hottest ring at each")
+    spd.add_argument("scene")
+    spd.add_argument("--limit-C", dest="limit_C", type=float, default=70.0, metavar="T",
+                     help="limit temperature of the hottest ring or --node [°C] (default 70)")
+    spd.add_argument("--node", default=None, help="a network node instead of the hottest ring")
+    _common(spd, plot=False)
+    spd.set_defaults(func=cmd_speed)
+    it = sub.add_parser("init", help="write a commented scene for a catalogue bearing in a shaft and housing "
+                        "(every default named with its source); thermobear run solves it")
+    it.add_argument("bearing", help='catalogue designation, e.g. 6208, "7205 B", 51107 (thermobear list bearings)')
+    it.add_argument("--lubrication", required=True, choices=list(METHODS), help="lubrication method")
+    it.add_argument("--oil", metavar="NAME", help="lubricant (default: ISO 15312's reference oil or grease)")
+    it.add_argument("--housing", choices=list(HOUSINGS), default="block", help="housing type (default block)")
+    it.add_argument("--speed-rpm", dest="speed_rpm", type=float, metavar="N",
+                    help="speed [r/min] (default: half the thermal reference speed, ISO 15312)")
+    it.add_argument("--Fr-N", dest="Fr_N", type=float, metavar="F", help="radial load [N] (default: ISO 15312 "
+                    "reference load, 0.05 C0)")
+    it.add_argument("--Fa-N", dest="Fa_N", type=float, metavar="F", help="axial load [N] (default: 0.05 C0 for "
+                    "angular contact, 0.02 C0 for thrust bearings)")
+    it.add_argument("--out", metavar="FILE", help="write the scene to FILE (default: print it)")
+    it.set_defaults(func=cmd_init)
+
     li = sub.add_parser("list", help="list bundled bearings, lubricants, materials, networks, examples")
+    li.add_argument("what", nargs="?", choices=["bearings", "lubricants", "materials", "networks", "examples"],
+                    help="one category (default: all, names only)")
+    li.add_argument("--series", metavar="S", help='bearings of one series as a table (d x D x B, Z, D_w, alpha0, C, '
+                    'C0, estimated values), e.g. 62, "72 B", 70')
     li.add_argument("--json", action="store_true")
     li.set_defaults(func=cmd_list)
     return p

@@ -3,10 +3,13 @@ r"""Plots of results (matplotlib, Agg backend: files only, no display needed).
 Every function writes one PNG and returns its path:
 
 * :func:`plot_ball_loads`         per-ball contact load and lubrication regime (polar)
+* :func:`plot_load_distribution`  per-ball inner / outer loads of a load distribution, both radial directions (polar)
 * :func:`plot_regime_map`         the Moes (M, L) map with its regime boundaries and every contact
 * :func:`plot_loss_breakdown`     loss families of one operating point (bar)
 * :func:`plot_losses_vs_speed`    loss breakdown vs speed (stacked)
-* :func:`plot_heatup`             node temperatures vs time, with measured points
+* :func:`plot_heatup`             node temperatures vs time (a colour family per machine part), with measured
+                                  points, and the power loss in a second panel
+* :func:`plot_network`            the thermal network: node temperatures and heat flows over its graph
 * :func:`plot_vs_speed`           torque or temperature vs speed, with measured points
 * :func:`plot_spin_down`          coast-down speed vs time
 
@@ -22,18 +25,34 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import networkx as nx  # noqa: E402
 import numpy as np  # noqa: E402
 
+from thermobear.coupled.sources import prepare  # noqa: E402
 from thermobear.lubrication.film import moes_map_boundaries  # noqa: E402
 
-__all__ = ["plot_result", "plot_ball_loads", "plot_regime_map", "plot_loss_breakdown", "plot_losses_vs_speed",
+__all__ = ["plot_result", "plot_ball_loads", "plot_load_distribution", "plot_regime_map", "plot_loss_breakdown", "plot_losses_vs_speed",
            "plot_sweep", "plot_comparison",
-           "plot_heatup", "plot_vs_speed", "plot_spin_down", "REGIME_COLORS"]
+           "plot_heatup", "plot_network", "plot_vs_speed", "plot_spin_down", "REGIME_COLORS", "node_family"]
 
 REGIME_COLORS = {"IVR": "tab:blue", "IVE": "tab:cyan", "PVR": "tab:orange", "EHL": "tab:red",
                  "unloaded": "lightgrey", "none": "lightgrey"}
 FAMILY_COLORS = {"rolling": "tab:blue", "sliding": "tab:orange", "pivoting": "tab:green",
                  "hysteresis": "tab:purple", "drag": "tab:brown"}
+#: machine part of a node (first matching prefix) → colour map of its family in heat-up plots
+NODE_FAMILIES = (("inner", "Reds"), ("shaft", "Oranges"), ("ball", "Purples"), ("cage", "Purples"),
+                 ("seal", "Greys"), ("outer", "Blues"), ("housing", "Greens"), ("oil", "YlOrBr"),
+                 ("sump", "YlOrBr"), ("", "Greys"))
+
+
+def node_family(name: str) -> str:
+    """The machine part a node belongs to, by its name's prefix (``shaft_left_3`` → ``shaft``;
+    ``inner_race`` → ``inner``; anything else → ``""``).
+
+    >>> node_family("housing_seat_1_r2"), node_family("oil_sump"), node_family("frame")
+    ('housing', 'oil', '')
+    """
+    return next(f for f, _ in NODE_FAMILIES if name.startswith(f))
 
 
 def _save(fig, path) -> str:
@@ -73,6 +92,40 @@ def plot_ball_loads(losses, path, title: str = "") -> str:
             ax.bar([0], [0], color=REGIME_COLORS.get(r, "black"), label=r)
         ax.legend(loc="lower left", bbox_to_anchor=(-0.15, -0.15), fontsize=8, title="regime")
     fig.suptitle(title or "Ball loads and lubrication regimes")
+    return _save(fig, path)
+
+
+def plot_load_distribution(ld, path, title: str = "") -> str:
+    """Ball loads around the bearing (polar): inner and outer contact load [N] at each ball's azimuth ψ, with the
+    radial load (F_r along y at ψ = 0, F_z along z at ψ = 90°) and the ring's radial displacement (δr, δz) as
+    arrows in the same plane, so a load in either radial direction shows where it loads the balls.
+
+    Parameters
+    ----------
+    ld : LoadDistribution   one load case (per-ball arrays of shape (Z,))
+    path : str              PNG to write
+    """
+    psi = np.asarray(ld.psi, float)
+    Qi, Qo = np.asarray(ld.Q_i, float).reshape(-1), np.asarray(ld.Q_o, float).reshape(-1)
+    if Qi.size != psi.size:
+        raise ValueError("plot_load_distribution draws one load case")
+    fig, ax = plt.subplots(subplot_kw={"projection": "polar"}, figsize=(6, 6))
+    width = 2 * np.pi / max(psi.size, 1) * 0.35
+    ax.bar(psi - width / 2, Qi, width=width, color="tab:blue", edgecolor="k", linewidth=0.5, label="inner Q_i [N]")
+    ax.bar(psi + width / 2, Qo, width=width, color="tab:orange", edgecolor="k", linewidth=0.5, label="outer Q_o [N]")
+    top = max(float(np.max(Qo)), float(np.max(Qi)), 1e-12)
+    for (u, v), style, name in (((float(ld.Fr), float(ld.Fz)), "-", "radial load (Fr, Fz)"),
+                                ((float(ld.delta_r), float(ld.delta_z)), "--", "ring displacement (δr, δz)")):
+        if np.hypot(u, v) > 0:
+            ax.annotate("", xy=(np.arctan2(v, u), 0.9 * top), xytext=(0.0, 0.0),
+                        arrowprops=dict(arrowstyle="->", linestyle=style, color="k", lw=1.5))
+            ax.plot([], [], style, color="k", label=name)
+    ax.set_theta_zero_location("N")
+    ax.set_theta_direction(-1)
+    ax.set_title("ψ from y (ψ = 0) towards z (ψ = 90°)", fontsize=9)
+    ax.legend(loc="lower left", bbox_to_anchor=(-0.15, -0.15), fontsize=8)
+    fig.suptitle(title or "Ball loads")
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
     return _save(fig, path)
 
 
@@ -163,9 +216,25 @@ def plot_losses_vs_speed(n_rpm, breakdown_W: dict, path, title: str = "", measur
     return _save(fig, path)
 
 
+def _family_colours(names) -> dict:
+    """A colour per node: the family's colour map, members spread over its darker two thirds."""
+    cmaps = dict(NODE_FAMILIES)
+    groups: dict = {}
+    for n in names:
+        groups.setdefault(node_family(n), []).append(n)
+    out = {}
+    for fam, members in groups.items():
+        cmap = plt.get_cmap(cmaps[fam])
+        for k, n in enumerate(members):
+            out[n] = cmap(0.9 - 0.55 * k / max(len(members) - 1, 1))
+    return out
+
+
 def plot_heatup(t_s, simulated: dict, path, measured: dict | None = None, title: str = "",
-                mapping: dict | None = None, bands: dict | None = None) -> str:
-    """Temperatures vs time [°C]: simulated lines, measured points in the same colour.
+                mapping: dict | None = None, power_W=None, bands: dict | None = None) -> str:
+    """Temperatures vs time [°C]: simulated lines (one colour family per machine part:
+    :func:`node_family`), measured points in the same colour; the power loss [W] in a second panel
+    when ``power_W`` is given.
 
     Parameters
     ----------
@@ -173,14 +242,19 @@ def plot_heatup(t_s, simulated: dict, path, measured: dict | None = None, title:
     simulated : dict       name → temperatures [°C] (same length as t_s)
     measured : dict        name → (t_s, T_C) measured points, keyed like ``simulated``
     mapping : dict         optional name → label suffix (e.g. channel → node)
+    power_W : array_like   optional total power loss over t_s [W]
     bands : dict           optional name → (low, high) temperatures [°C] at t_s, shaded (the 5–95 %
                            band over the estimated inputs)
     """
     t = np.asarray(t_s, float)
-    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    if power_W is None:
+        fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    else:
+        fig, (ax, axp) = plt.subplots(2, 1, figsize=(7.5, 6.0), sharex=True, height_ratios=(3, 1))
     unit, scale = ("min", 60.0) if t.max() > 600 else ("s", 1.0)
-    for i, (k, T) in enumerate(simulated.items()):
-        col = f"C{i % 10}"
+    colours = _family_colours([mapping.get(k, k) if mapping else k for k in simulated])
+    for k, T in simulated.items():
+        col = colours[mapping.get(k, k) if mapping else k]
         lab = k + (f" → {mapping[k]}" if mapping and k in mapping else "")
         ax.plot(t / scale, np.asarray(T, float), "-", color=col, label=f"{lab} (model)")
         if bands and k in bands:
@@ -190,10 +264,71 @@ def plot_heatup(t_s, simulated: dict, path, measured: dict | None = None, title:
             tm, Tm = measured[k]
             ax.plot(np.asarray(tm, float) / scale, np.asarray(Tm, float), "o", ms=3.5, color=col, alpha=0.7,
                     label=f"{k} (measured)")
-    ax.set_xlabel(f"time [{unit}]"), ax.set_ylabel("temperature [°C]")
-    ax.legend(fontsize=7, ncol=2)
+    ax.set_ylabel("temperature [°C]")
+    if len(simulated) > 12:                     # many nodes: the legend beside the axes
+        ax.legend(fontsize=6, ncol=2, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    else:
+        ax.legend(fontsize=7, ncol=2)
     ax.grid(alpha=0.3)
     ax.set_title(title or "Heat-up")
+    if power_W is not None:
+        axp.plot(t / scale, np.asarray(power_W, float), "k-")
+        axp.set_ylabel("power loss [W]")
+        axp.grid(alpha=0.3)
+    (axp if power_W is not None else ax).set_xlabel(f"time [{unit}]")
+    return _save(fig, path)
+
+
+def plot_network(template, steady, path, title: str = "", label_share: float = 0.02) -> str:
+    """The thermal network at a steady state: nodes coloured by temperature [°C] (imposed nodes
+    square), edges as wide as the heat they carry, the flows above ``label_share`` of the power
+    labelled [W] with an arrow from the warmer node, heat sources [W] next to their nodes.
+
+    Parameters
+    ----------
+    template : NetworkTemplate     the network (its graph: :meth:`NetworkTemplate.graph`)
+    steady : SteadyState           temperatures ``T_C``, element flows ``heat_flows_W``, ``heat_sources_W``
+    """
+    g = nx.Graph()
+    g.add_nodes_from(template.nodes)
+    flows = steady.heat_flows_W
+    for e in template.elements:
+        a, b = e.nodes
+        w = abs(flows.get(e.name, 0.0))
+        g.add_edge(a, b, weight=g.edges[a, b]["weight"] + w if g.has_edge(a, b) else w)
+    pos = nx.kamada_kawai_layout(g, weight=None)          # graph distances (the flows only draw the edges)
+    T = {n: steady.T_C.get(n, np.nan) for n in template.nodes}
+    fig, ax = plt.subplots(figsize=(11, 8.5))
+    P = max(steady.P_W, 1e-12)
+    for a, b, d in g.edges(data=True):
+        (xa, ya), (xb, yb) = pos[a], pos[b]
+        ax.plot([xa, xb], [ya, yb], "-", color="0.55", lw=0.6 + 8.0 * d["weight"] / P, zorder=1)
+        if d["weight"] >= label_share * P:
+            hot, cold = (a, b) if T[a] >= T[b] else (b, a)
+            (xh, yh), (xc, yc) = pos[hot], pos[cold]
+            ax.annotate("", xy=(0.45 * xh + 0.55 * xc, 0.45 * yh + 0.55 * yc), xytext=(0.55 * xh + 0.45 * xc,
+                        0.55 * yh + 0.45 * yc), arrowprops=dict(arrowstyle="-|>", color="0.2", lw=0.8), zorder=3)
+            ax.text(0.5 * (xa + xb), 0.5 * (ya + yb), f"{d['weight']:.2g} W", fontsize=6, color="0.15",
+                    ha="center", va="bottom", zorder=4)
+    free = [n for n, f in zip(template.nodes, template.fixed) if not f]
+    fixed = [n for n, f in zip(template.nodes, template.fixed) if f]
+    vals = [T[n] for n in template.nodes]
+    norm = plt.Normalize(np.nanmin(vals), np.nanmax(vals))
+    for nodes, marker in ((free, "o"), (fixed, "s")):
+        if nodes:
+            sc = ax.scatter([pos[n][0] for n in nodes], [pos[n][1] for n in nodes], c=[T[n] for n in nodes],
+                            cmap="inferno", norm=norm, marker=marker, s=160, edgecolors="k", zorder=5)
+    heat: dict = {}
+    for part in (steady.heat_sources_W or {}).values():
+        for n, w in part.items():
+            heat[n] = heat.get(n, 0.0) + w
+    for n in template.nodes:
+        src = heat.get(n, 0.0)
+        ax.text(pos[n][0], pos[n][1] + 0.035, f"{n}\n{T[n]:.1f} °C" + (f"  +{src:.2g} W" if src > 0 else ""),
+                fontsize=6, ha="center", va="bottom", zorder=6)
+    fig.colorbar(sc, ax=ax, label="temperature [°C]", shrink=0.7)
+    ax.set_axis_off()
+    ax.set_title(title or f"Thermal network — {template.name} (total loss {steady.P_W:.3g} W; squares: imposed)")
     return _save(fig, path)
 
 
@@ -262,15 +397,20 @@ def plot_spin_down(runs: list, path, title: str = "") -> str:
 
 
 def plot_result(res, outdir) -> list:
-    """Plots of a ``thermobear run`` result: ball loads, regime map, loss breakdown. Returns the paths."""
+    """Plots of a ``thermobear run`` result: ball loads, regime map, loss breakdown and, for a
+    coupled steady state, the thermal network with its temperatures and heat flows. Returns the paths."""
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
     s = res.scene
     tag = f"{s.bearing.name}, {s.n_rpm:g} rpm, Fa {s.Fa:g} N, Fr {s.Fr:g} N"
-    return [plot_ball_loads(res.losses, out / "ball_loads.png", f"Ball loads and regimes — {tag}"),
-            plot_regime_map(res.losses, s.bearing, out / "regime_map.png"),
-            plot_loss_breakdown(res.breakdown_W, out / "loss_breakdown.png",
-                                f"Loss breakdown — {tag} (total {res.P_W:.3g} W)")]
+    paths = [plot_ball_loads(res.losses, out / "ball_loads.png", f"Ball loads and regimes — {tag}"),
+             plot_regime_map(res.losses, s.bearing, out / "regime_map.png"),
+             plot_loss_breakdown(res.breakdown_W, out / "loss_breakdown.png",
+                                 f"Loss breakdown — {tag} (total {res.P_W:.3g} W)")]
+    if res.steady is not None:
+        paths.append(plot_network(prepare(s).template, res.steady, out / "network.png",
+                                  f"Thermal network — {s.name}: {tag}, total loss {res.P_W:.3g} W (squares: imposed)"))
+    return paths
 
 
 def plot_sweep(rows: list, grid: dict, outdir, title: str = "") -> list:

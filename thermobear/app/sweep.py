@@ -41,7 +41,7 @@ from thermobear.errors import InputError, SolverError
 from thermobear.loads.highspeed import load_distribution_high_speed
 from thermobear.arrays import take
 from thermobear.coupled.pipeline import film_scene_load
-from thermobear.models import plan, plan_many
+from thermobear.models import moments, plan, plan_many
 from thermobear.scene import Scene
 
 __all__ = ["run_sweep", "sweep_points", "CHUNK"]
@@ -127,7 +127,8 @@ def _prescribed_group(scenes, points, models, members):
             load = film_scene_load(sc, models, T, n_rpm=n)
         elif models["high_speed"][0] == "yes":   # high-speed ball loads depend on speed: one batched solve
             n_u, back = np.unique(n, return_inverse=True)
-            load = take(load_distribution_high_speed(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, M=sc.M, n_rpm=n_u,
+            M, My = moments(sc)
+            load = take(load_distribution_high_speed(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, M=M, Fz=sc.Fz, My=My, n_rpm=n_u,
                                                      stiffness=sc.models.get("stiffness", "nominal")),
                         back, n_u.size)
         r = _losses_batch(sc, n, T, models, load=load)

@@ -18,26 +18,27 @@ from thermobear.app.output import (Progress, RowWriter, check_out_dir, check_out
                                    print_json, write_text, wrote)
 from thermobear.app.bands import compare_bands
 from thermobear.app.calibration import calibrate
+from thermobear.app.scaffold import scaffold
 from thermobear.app.rig import channel_map, compare, parse_map, read_log
 from thermobear.app.spindown import spin_down_runs
 from thermobear.app.sweep import run_sweep, sweep_points
-from thermobear.contact.geometry import bearing_names
+from thermobear.contact.geometry import bearing, bearing_names
 from thermobear.contact.materials import material_names
 from thermobear.coupled import solve, transient
 from thermobear.coupled.uncertainty import steady_uncertainty, transient_uncertainty
 from thermobear.errors import InputError
 from thermobear.files import data_dir, names_in, read_toml
 from thermobear.loads import load_distribution
-from thermobear.loads.highspeed import load_distribution_high_speed
 from thermobear.losses import BREAKDOWN_KEYS
 from thermobear.losses.skf import SKF_BREAKDOWN_KEYS
 from thermobear.lubrication.lubricant import lubricant_names
-from thermobear.models import plan
+from thermobear.coupled.ratings import check_static_safety
+from thermobear.models import moments, plan
 from thermobear.scene import load_scene
 from thermobear.scene.network import network_nodes
 from thermobear.validity import T_LUBRICANT_REFUSE_C
 
-__all__ = ["cmd_run", "cmd_loads", "cmd_list", "cmd_transient", "cmd_sweep", "cmd_compare", "cmd_calibrate",
+__all__ = ["cmd_run", "cmd_loads", "cmd_list", "cmd_init", "cmd_transient", "cmd_sweep", "cmd_compare", "cmd_calibrate",
            "cmd_spin_down", "read_schedule", "EXIT_INTERRUPTED"]
 
 EXIT_SOLVER = 3
@@ -185,44 +186,120 @@ def cmd_run(args):
 
 
 def cmd_loads(args):
+    """``thermobear loads``: the scene bearing's load distribution — which form (static or high-speed), the ring
+    displacements with the axial one split into the free travel through the clearance and the elastic part,
+    per-ball loads and angles; ``--plot DIR`` draws the ball loads around the bearing."""
     scene = load_scene_with(args.scene, args.set)
+    out = _plot_dir(getattr(args, "plot", None))
+    check_static_safety(scene)                              # before any solve
     hs = plan(scene)[0]["high_speed"][0] == "yes"
-    M = scene.M
-    if hs:
-        ld = load_distribution_high_speed(scene.bearing, Fa=scene.Fa, Fr=scene.Fr, M=M, n_rpm=scene.n_rpm,
-                                          stiffness=scene.models.get("stiffness", "nominal"))
-    else:
-        ld = load_distribution(scene.bearing, Fa=scene.Fa, Fr=scene.Fr, M=M,
-                               stiffness=scene.models.get("stiffness", "nominal"))
-    form = (f"high-speed (Jones 1960: centrifugal force and gyroscopic moment at {scene.n_rpm:g} rpm)" if hs
-            else "static (low-speed Jones–Harris, rigid rings)")
-    d = {"bearing": scene.bearing.name, "form": form, "Fa_N": scene.Fa, "Fr_N": scene.Fr,
-         "delta_a_um": ld.delta_a * 1e6, "delta_r_um": ld.delta_r * 1e6, "theta_mrad": ld.theta * 1e3,
-         "Q_inner_N": ld.Q_i, "Q_outer_N": ld.Q_o, "alpha_inner_deg": np.rad2deg(ld.alpha_i),
-         "alpha_outer_deg": np.rad2deg(ld.alpha_o), "psi_deg": np.rad2deg(ld.psi), "residual": ld.residual,
-         "iterations": ld.iterations}
+    brg, stiff = scene.bearing, scene.models.get("stiffness", "nominal")
+    M, My = moments(scene)
+    ld = load_distribution(brg, Fa=scene.Fa, Fr=scene.Fr, M=M, Fz=scene.Fz, My=My, n_rpm=scene.n_rpm if hs else 0.0,
+                           form="high_speed" if hs else "static", stiffness=stiff)
+    form = (f"high-speed solution (Jones 1960: ball centrifugal force and gyroscopic moment at {scene.n_rpm:g} rpm, "
+            "inner and outer contacts apart)" if hs else
+            "static solution (low-speed Jones–Harris, rigid rings: no centrifugal force, one load per ball)")
+    # the axial displacement from the centred rings: the rigid-body travel through the clearance to first contact
+    # (A sin alpha0, taken when the bearing carries an axial load), then the rest — the elastic approach of the
+    # contacts (and at speed the balls' outward shift)
+    free = brg.A * np.sin(brg.alpha0) * np.sign(ld.delta_a) if (scene.Fa > 0 or brg.kind != "deep_groove") else 0.0
+    free_txt = ("free axial play taken up through the clearance" if brg.kind == "deep_groove" else
+                "rigid-body travel to first contact")
+    rest_txt = "elastic approach and the balls' outward shift at speed" if hs else "elastic approach"
+    d = {"bearing": brg.name, "form": form, "high_speed": hs, "Fa_N": scene.Fa, "Fr_N": scene.Fr, "M_Nm": scene.M,
+         "Fz_N": scene.Fz, "My_Nm": scene.My,
+         "n_rpm": scene.n_rpm, "delta_a_um": ld.delta_a * 1e6, "delta_a_free_um": free * 1e6,
+         "delta_a_elastic_um": (ld.delta_a - free) * 1e6,
+         "axial_end_play_um": brg.free_end_play * 1e6 if brg.kind == "deep_groove" else None,
+         "delta_r_um": ld.delta_r * 1e6, "delta_z_um": ld.delta_z * 1e6, "theta_mrad": ld.theta * 1e3,
+         "theta_y_mrad": ld.theta_y * 1e3, "Q_inner_N": ld.Q_i, "Q_outer_N": ld.Q_o,
+         "alpha_inner_deg": np.rad2deg(ld.alpha_i), "alpha_outer_deg": np.rad2deg(ld.alpha_o),
+         "psi_deg": np.rad2deg(ld.psi), "residual": ld.residual, "iterations": ld.iterations}
     if args.json:
         print_json(d)
-        return 0
-    print(f"{scene.bearing.name}: Fa = {scene.Fa:g} N, Fr = {scene.Fr:g} N — {form}")
-    print(f"  delta_a = {d['delta_a_um']:.3f} um, delta_r = {d['delta_r_um']:.3f} um (residual {ld.residual:.1e}, "
-          f"{ld.iterations} iterations)")
-    print(f"{'ball':>4s} {'psi [deg]':>10s} {'Q_i [N]':>10s} {'Q_o [N]':>10s} {'alpha_i [deg]':>14s} {'alpha_o [deg]':>14s}")
-    for j in range(scene.bearing.Z):
-        print(f"{j:4d} {d['psi_deg'][j]:10.1f} {ld.Q_i[j]:10.2f} {ld.Q_o[j]:10.2f} {d['alpha_inner_deg'][j]:14.2f} "
-              f"{d['alpha_outer_deg'][j]:14.2f}")
+    else:
+        m = "" if scene.M is None else f", M = {scene.M:g} N m"
+        m += "" if not scene.Fz else f", Fz = {scene.Fz:g} N"
+        m += "" if scene.My is None else f", My = {scene.My:g} N m"
+        print(f"{brg.name}: Fa = {scene.Fa:g} N, Fr = {scene.Fr:g} N{m} — {form}")
+        print(f"  delta_a = {d['delta_a_um']:.3f} um from the centred rings = {d['delta_a_free_um']:.3f} um {free_txt} "
+              f"(A sin alpha0) {'+' if d['delta_a_elastic_um'] >= 0 else '-'} {abs(d['delta_a_elastic_um']):.3f} um "
+              f"{rest_txt}" + (f"; the bearing's axial end play 2 A sin alpha0 = {d['axial_end_play_um']:.3f} um"
+                                 if brg.kind == "deep_groove" else ""))
+        print(f"  delta_r = {d['delta_r_um']:.3f} um, theta = {d['theta_mrad']:.4f} mrad (residual {ld.residual:.1e}, "
+              f"{ld.iterations} iterations)")
+        print(f"{'ball':>4s} {'psi [deg]':>10s} {'Q_i [N]':>10s} {'Q_o [N]':>10s} {'alpha_i [deg]':>14s} "
+              f"{'alpha_o [deg]':>14s}")
+        for j in range(brg.Z):
+            print(f"{j:4d} {d['psi_deg'][j]:10.1f} {ld.Q_i[j]:10.2f} {ld.Q_o[j]:10.2f} {d['alpha_inner_deg'][j]:14.2f} "
+                  f"{d['alpha_outer_deg'][j]:14.2f}")
+    if out is not None:
+        wrote([_plots().plot_load_distribution(ld, out / "load_distribution.png",
+                                               f"{brg.name}: {'high-speed' if hs else 'static'} solution")])
     return 0
 
 
+def cmd_init(args):
+    out = check_out_file(args.out, "--out")
+    cmd = " ".join(["thermobear init", args.bearing, "--lubrication", args.lubrication]
+                   + [f"{flag} {v:g}" if isinstance(v, float) else f"{flag} {v}" for flag, v in
+                      (("--oil", args.oil), ("--housing", args.housing), ("--speed-rpm", args.speed_rpm),
+                       ("--Fr-N", args.Fr_N), ("--Fa-N", args.Fa_N)) if v is not None])
+    text = scaffold(args.bearing, args.lubrication, oil=args.oil, housing=args.housing, n_rpm=args.speed_rpm,
+                    Fr_N=args.Fr_N, Fa_N=args.Fa_N, command=cmd)
+    if out is None:
+        print(text, end="")
+    else:
+        write_text(out, text)
+        wrote([out])
+    return 0
+
+
+def bearing_rows(series: str) -> list:
+    """One row per catalogue bearing of a series: designation, boundary dimensions [mm], Z, D_w [mm],
+    alpha0 [deg], C and C0 [kN], the estimated values."""
+    rows = []
+    for name in bearing_names(series=series):
+        b = bearing(name)
+        rows.append({"designation": name, "kind": b.kind, "d_mm": round(b.bore * 1e3, 6),
+                     "D_mm": round(b.outer_diameter * 1e3, 6), "B_mm": round(b.width * 1e3, 6), "Z": b.Z,
+                     "Dw_mm": round(b.D * 1e3, 6), "alpha0_deg": round(float(np.rad2deg(b.alpha0)), 6),
+                     "C_kN": None if b.C is None else b.C / 1e3, "C0_kN": None if b.C0 is None else b.C0 / 1e3,
+                     "estimated": list(b.estimated)})
+    return rows
+
+
+def _print_bearing_rows(series, rows):
+    print(f"series {series}: {len(rows)} bearings (alpha0 of a deep groove bearing: its free contact angle from the "
+          "mid clearance; C, C0 by ISO 281 / ISO 76 from the geometry)")
+    print(f"{'designation':12s} {'d x D x B [mm]':>18s} {'Z':>3s} {'D_w [mm]':>9s} {'alpha0':>7s} {'C [kN]':>8s} "
+          f"{'C0 [kN]':>8s}  estimated")
+    for r in rows:
+        dims = f"{r['d_mm']:g} x {r['D_mm']:g} x {r['B_mm']:g}"
+        C, C0 = (f"{v:8.2f}" if v is not None else f"{'-':>8s}" for v in (r["C_kN"], r["C0_kN"]))
+        print(f"{r['designation']:12s} {dims:>18s} {r['Z']:3d} {r['Dw_mm']:9.4f} {r['alpha0_deg']:7.2f} {C} {C0}  "
+              f"{', '.join(r['estimated']) or '-'}")
+
+
 def cmd_list(args):
-    what = {"bearings": bearing_names(), "lubricants": lubricant_names(), "materials": material_names(),
-            "networks": names_in(data_dir("networks")),
-            "examples": sorted(p.name for p in data_dir("examples").glob("*.toml"))}
+    if args.series is not None:
+        if args.what not in (None, "bearings"):
+            raise InputError("--series", args.series, "applies to thermobear list bearings")
+        rows = bearing_rows(args.series)
+        print_json(rows) if args.json else _print_bearing_rows(args.series, rows)
+        return 0
+    what = {"bearings": bearing_names, "lubricants": lubricant_names, "materials": material_names,
+            "networks": lambda: names_in(data_dir("networks")),
+            "examples": lambda: sorted(p.name for p in data_dir("examples").glob("*.toml"))}
+    what = {k: f() for k, f in what.items() if args.what in (None, k)}
     if args.json:
         print_json(what)
     else:
         for k, v in what.items():
             print(f"{k}: {', '.join(v)}")
+    if args.what is None and not args.json:
+        print("(thermobear list bearings --series 62: a series as a table)")
     return 0
 
 
@@ -335,7 +412,8 @@ def cmd_transient(args):
         plots = _plots()
         out_dir.mkdir(parents=True, exist_ok=True)
         free = {n: run.T_C[n] for n in nodes if np.ptp(run.T_C[n]) > 0}
-        wrote([plots.plot_heatup(run.t_s, free, out_dir / "heatup.png", title=f"Heat-up — {scene.name}")])
+        wrote([plots.plot_heatup(run.t_s, free, out_dir / "heatup.png", title=f"Heat-up — {scene.name}",
+                                 power_W=run.P_W)])
     return 0
 
 

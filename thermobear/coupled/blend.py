@@ -96,10 +96,22 @@ def blend_states(parts, state_type):
         P_W=float(_weighted(ok, lambda s: s.P_W)), torque_Nm=float(_weighted(ok, lambda s: s.torque_Nm)),
         breakdown_W={k: float(_weighted(ok, lambda s: s.breakdown_W.get(k, 0.0))) for k in keys},
         heat_flows_W={k: float(_weighted(ok, lambda s: s.heat_flows_W[k])) for k in flows},
+        heat_out_W={k: float(_weighted(ok, lambda s: s.heat_out_W.get(k, 0.0))) for k in dom.heat_out_W},
+        heat_sources_W=_weighted_sources(ok),
         energy_balance_W=float(_weighted(ok, lambda s: s.energy_balance_W)),
         T_contacts_C=float(_weighted(ok, lambda s: s.T_contacts_C)),
         iterations=max(s.iterations for _, s in ok), residual_K=max(s.residual_K for _, s in ok),
         models_used=used, warnings=warned)
+
+
+def _weighted_sources(ok) -> dict:
+    """Loss part → {node: W} weighted over the alternatives (a part an alternative lacks: 0)."""
+    parts = list(dict.fromkeys(p for _, s in ok for p in s.heat_sources_W))
+    out = {}
+    for p in parts:
+        nodes = list(dict.fromkeys(n for _, s in ok for n in s.heat_sources_W.get(p, {})))
+        out[p] = {n: float(_weighted(ok, lambda s: s.heat_sources_W.get(p, {}).get(n, 0.0))) for n in nodes}
+    return out
 
 
 def blend_losses(parts):

@@ -62,8 +62,8 @@ def overloads(scenes, contacts) -> dict:
         sc = scenes[b]
         one = {s: {k: np.reshape(sides[s][k], (B, -1))[b] for k in ("Q", "alpha", "a", "b")} for s in sides}
         try:
-            check_contacts(sc.bearing, one, "operation (Fa_N, Fr_N, M_Nm)", given=loads_text(sc.Fa, sc.Fr, sc.M)
-                           + f" ({sc.bearing.name})")
+            check_contacts(sc.bearing, one, "operation (Fa_N, Fr_N, M_Nm)",
+                           given=loads_text(sc.Fa, sc.Fr, sc.M, sc.Fz, sc.My) + f" ({sc.bearing.name})")
         except InputError as exc:
             out[int(b)] = exc
     return out

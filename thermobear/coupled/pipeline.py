@@ -25,7 +25,7 @@ from thermobear.loads import LoadDistribution, axial_contact_angle, load_distrib
 from thermobear.loads.film import film_load_distribution
 from thermobear.loads.highspeed import load_distribution_high_speed
 from thermobear.losses import ContactSet, prepare_contacts
-from thermobear.models import DryRow, plan, refuse_unloaded_thrust
+from thermobear.models import DryRow, moments, plan, refuse_unloaded_thrust
 from thermobear.scene import Scene
 
 __all__ = ["Family", "families", "dry_loads", "film_temperature_C", "closed_form_axial", "stack_loads", "family_loads",
@@ -75,7 +75,8 @@ def stack_loads(loads) -> LoadDistribution:
     """One batched load distribution (leading axis) from single-point ones of the same bearing."""
     first = loads[0]
     fields = {}
-    for name in ("delta_a", "delta_r", "theta", "Q_i", "Q_o", "alpha_i", "alpha_o", "delta_n", "Fa", "Fr", "M"):
+    for name in ("delta_a", "delta_r", "theta", "Q_i", "Q_o", "alpha_i", "alpha_o", "delta_n", "Fa", "Fr", "M",
+                 "delta_z", "theta_y", "Fz", "My"):
         fields[name] = np.stack([np.asarray(getattr(ld, name), float) for ld in loads])
     fields["residual"] = max(float(np.max(ld.residual)) for ld in loads)
     fields["iterations"] = max(int(np.max(ld.iterations)) for ld in loads)
@@ -136,13 +137,22 @@ class Family:
         lub = self.scene.lubricant
         return lub.sampled({k[len("lubricant."):]: v for k, v in draws.items()}) if draws else lub
 
+    def loads(self) -> dict:
+        """The points' loads as the load solvers take them: Fa, Fr, M, Fz, My, (B,) arrays (M, My: None when
+        the tilts are held, :func:`thermobear.models.moments`)."""
+        out = {k: self.values(k) for k in ("Fa", "Fr", "Fz")}
+        held = moments(self.scene)[0] is None
+        for i, k in enumerate(("M", "My")):
+            out[k] = None if held else np.array([moments(s)[i] for s in self.scenes], float)
+        return out
+
 
 def _key(scene: Scene, models: dict):
     """What a family shares: every choice, the bearing and lubricant objects, the network, the names
     of imposed nodes and context values, the element overrides and every non-numeric scene value."""
     params = scene.network_parameters
     return (id(scene.bearing), id(scene.lubricant), scene.supply, scene.network, scene.path, scene.rotating,
-            scene.M is None, scene.T_C is None, scene.T_oil_in_C is None, tuple(sorted(scene.samples)),
+            moments(scene)[0] is None, scene.T_C is None, scene.T_oil_in_C is None, tuple(sorted(scene.samples)),
             tuple(sorted(scene.T_fixed_C)),
             tuple(sorted((k, v if "." in k else None) for k, v in params.items())),
             tuple(sorted((k, repr(v)) for k, v in scene.models.items())),
@@ -186,7 +196,8 @@ def _film_inputs(scene: Scene, n_rpm, T_film_C, lubricant=None):
     return u, np.asarray(lub.eta(T), float), np.asarray(lub.alpha_p_at(T), float)
 
 
-def film_loads(scene: Scene, models: dict, Fa, Fr, M, n_rpm, T_film_C, lubricant=None) -> LoadDistribution:
+def film_loads(scene: Scene, models: dict, Fa, Fr, M, n_rpm, T_film_C, Fz=0.0, My=None, lubricant=None
+               ) -> LoadDistribution:
     """Film load model (:mod:`thermobear.loads.film`, or :mod:`thermobear.loads.highspeed` with
     ``film=`` in the high-speed form), films at ``T_film_C`` [°C]; arrays: one load case each
     (``lubricant`` per point: :attr:`Family.lubricant`)."""
@@ -195,31 +206,33 @@ def film_loads(scene: Scene, models: dict, Fa, Fr, M, n_rpm, T_film_C, lubricant
     batch = np.ndim(Fa) > 0
     val = (lambda v: np.asarray(v, float)) if batch else float     # noqa: E731
     if models["high_speed"][0] == "yes":
-        return load_distribution_high_speed(scene.bearing, Fa=Fa, Fr=Fr, M=M, n_rpm=val(n_rpm), stiffness=stiff,
-                                            film=dict(eta=val(eta), alpha_p=val(ap)))
+        return load_distribution_high_speed(scene.bearing, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, n_rpm=val(n_rpm),
+                                            stiffness=stiff, film=dict(eta=val(eta), alpha_p=val(ap)))
     uu = u[:, None] if batch else float(u)
-    return film_load_distribution(scene.bearing, Fa=Fa, Fr=Fr, M=M, u_i=uu, u_o=uu, eta=val(eta), alpha_p=val(ap),
-                                  stiffness=stiff)
+    return film_load_distribution(scene.bearing, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, u_i=uu, u_o=uu, eta=val(eta),
+                                  alpha_p=val(ap), stiffness=stiff)
 
 
 def family_loads(fam: Family, T_film_C=None) -> LoadDistribution:
     """The batched load distribution of a family (leading axis B) by its load model; ``T_film_C``
     (B,) [°C] the film temperatures of the film load model (default :func:`film_temperature_C`)."""
     sc, m = fam.scene, fam.models
-    Fa, Fr = fam.values("Fa"), fam.values("Fr")
-    M = None if sc.M is None else fam.values("M")
+    F = fam.loads()
+    Fa, Fr, M, F5 = F["Fa"], F["Fr"], F["M"], dict(Fz=F["Fz"], My=F["My"])
     lm = m["load_model"][0]
     if lm == "closed_form":
         return closed_form_axial(sc.bearing, Fa)
     if lm == "film":
         T = np.array([film_temperature_C(s) for s in fam.scenes]) if T_film_C is None else np.asarray(T_film_C, float)
-        return film_loads(sc, m, Fa, Fr, M, fam.values("n_rpm"), T, fam.lubricant)
+        return film_loads(sc, m, Fa, Fr, M, fam.values("n_rpm"), T, **F5, lubricant=fam.lubricant)
     if all(d is not None for d in fam.dry):
         return dry_loads(fam.dry)
     stiff = sc.models.get("stiffness", "nominal")
     if m["high_speed"][0] == "yes":
-        return load_distribution_high_speed(sc.bearing, Fa=Fa, Fr=Fr, M=M, n_rpm=fam.values("n_rpm"), stiffness=stiff)
-    return load_distribution(sc.bearing, Fa=Fa, Fr=Fr, M=M, stiffness=stiff)
+        return load_distribution_high_speed(sc.bearing, Fa=Fa, Fr=Fr, M=M, n_rpm=fam.values("n_rpm"), stiffness=stiff,
+                                            **F5)
+    # overloads are refused per point by coupled/limits.py (on the contact set), not for the whole batch
+    return load_distribution(sc.bearing, Fa=Fa, Fr=Fr, M=M, stiffness=stiff, refuse_overload=False, **F5)
 
 
 def family_contacts(fam: Family, load: LoadDistribution) -> ContactSet:
@@ -253,11 +266,12 @@ def film_scene_load(scene: Scene, models: dict, T_film_C, n_rpm=None) -> LoadDis
     ``T_film_C`` one batched solve over those operating points (loads of the scene)."""
     T = np.asarray(T_film_C, float)
     n = np.asarray(scene.n_rpm if n_rpm is None else n_rpm, float)
+    M, My = moments(scene)
     if T.ndim == 0 and n.ndim == 0:
-        return film_loads(scene, models, scene.Fa, scene.Fr, scene.M, float(n), float(T))
+        return film_loads(scene, models, scene.Fa, scene.Fr, M, float(n), float(T), Fz=scene.Fz, My=My)
     n, T = (a.ravel() for a in np.broadcast_arrays(n, T))
-    M = None if scene.M is None else np.full(n.size, scene.M)
-    return film_loads(scene, models, np.full(n.size, scene.Fa), np.full(n.size, scene.Fr), M, n, T)
+    full = (lambda v: None if v is None else np.full(n.size, v))  # noqa: E731
+    return film_loads(scene, models, full(scene.Fa), full(scene.Fr), full(M), n, T, Fz=full(scene.Fz), My=full(My))
 
 
 def scene_contacts(scene: Scene, models: dict | None = None, load: LoadDistribution | None = None,

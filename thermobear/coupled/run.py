@@ -1,6 +1,7 @@
 """``thermobear run``: a scene with the least model it needs, and what it reports."""
 from __future__ import annotations
 
+import re
 import warnings
 from dataclasses import dataclass
 
@@ -8,13 +9,65 @@ import numpy as np
 
 from thermobear.coupled.blend import blend_losses
 from thermobear.coupled.limits import emit, point_warnings
+from thermobear.coupled.ratings import Ratings, check_static_safety, scene_ratings
 from thermobear.coupled.sources import scene_losses
-from thermobear.coupled.steady import SteadyState, steady_state
+from thermobear.coupled.steady import SCENE_LOADS, SteadyState, steady_state
+from thermobear.loads import check_loads
 from thermobear.errors import OutsideValidity
 from thermobear.models import plan_many
 from thermobear.scene import Scene
 
-__all__ = ["RunResult", "solve"]
+__all__ = ["RunResult", "solve", "heat_flows", "heat_flow_table"]
+
+#: the sign convention of the heat-flow table
+HEAT_FLOW_SIGN = ("W leaving the machine through each path into a fixed-temperature boundary (ambient air, frame, "
+                  "a held shaft end, an imposed node) or the oil stream; positive: out; the paths sum to the power loss")
+
+
+def heat_flows(st: SteadyState) -> dict:
+    """Where the heat goes at a steady state: per loss part the nodes it heats, per path the W leaving.
+
+    Returns ``{"sign": ..., "sources_W": {part: {node: W}}, "out_W": {path: W}, "out_to": {path: boundary},
+    "out_by_group_W": {group: W}}`` (groups: :func:`path_group`)."""
+    groups: dict = {}
+    for k, v in st.heat_out_W.items():
+        g = path_group(k, st.heat_out_to.get(k, ""))
+        groups[g] = groups.get(g, 0.0) + v
+    return {"sign": HEAT_FLOW_SIGN, "sources_W": {p: n for p, n in st.heat_sources_W.items() if any(n.values())},
+            "out_W": st.heat_out_W, "out_to": st.heat_out_to, "out_by_group_W": groups}
+
+
+def path_group(path: str, boundary: str) -> str:
+    """A readable group of a path: the body its cell belongs to (cell suffixes of the builders'
+    discretisation dropped: ``housing_left_1_r5`` → ``housing_left``) and the surface it leaves by
+    (``ambient_sides``, ``frame_mounting``, ``ambient_end``); the oil stream by its name.
+
+    >>> path_group("housing_left_1_r5--ambient_sides", "ambient"), path_group("oil_stream", "stream")
+    ('housing → ambient_sides', 'oil_stream → stream')
+    """
+    if "--" not in path:
+        return f"{path} → {boundary}"
+    src, surface = path.split("--", 1)
+    body = re.sub(r"(_seat)?(_\d+)?(_r\d+)?$", "", src) or src
+    if re.fullmatch(r"housing_(left|right)", body):       # axial slices of one housing
+        body = "housing"
+    return f"{body} → {surface}"
+
+
+def heat_flow_table(st: SteadyState, P_W: float) -> list:
+    """Lines of the text table of :func:`heat_flows` (paths grouped by body and surface)."""
+    hf = heat_flows(st)
+    lines = ["Heat sources (loss part → node, W)"]
+    for part, nodes in hf["sources_W"].items():
+        lines.append(f"  {part:18s} " + ", ".join(f"{n} {w:.3f}" for n, w in nodes.items() if w))
+    lines += ["", "Heat leaving (W out of the machine into a fixed-temperature boundary or the oil stream; the paths "
+              "sum to the power loss)", f"  {'path (body → surface)':44s} {'W':>10s} {'share':>7s}"]
+    total = 0.0
+    for g, w in sorted(hf["out_by_group_W"].items(), key=lambda kv: -abs(kv[1])):
+        total += w
+        lines.append(f"  {g:44s} {w:10.4f} {100 * w / P_W if P_W > 0 else 0.0:6.1f} %")
+    lines.append(f"  {'total':44s} {total:10.4f} (power loss {P_W:.4f} W)")
+    return lines
 
 
 @dataclass
@@ -31,7 +84,10 @@ class RunResult:
     models_used : dict         model → (choice, reason)
     losses : LossResult        the loss result (per contact)
     steady : SteadyState       the coupled solution (None when the temperature is prescribed)
-    warnings : list            OutsideValidity warnings of the answer
+    warnings : list            OutsideValidity warnings of the answer (the ratings' included)
+    ratings : Ratings          C0, C, s0, p_max, κ, a_ISO, lives, clearance at the steady state
+                               (:func:`~thermobear.coupled.ratings.scene_ratings`; None at a prescribed
+                               temperature or at rest)
     """
 
     scene: Scene
@@ -43,6 +99,7 @@ class RunResult:
     losses: object
     steady: SteadyState | None = None
     warnings: list = None
+    ratings: Ratings | None = None
 
     def as_dict(self) -> dict:
         r = self.losses
@@ -58,7 +115,15 @@ class RunResult:
         if self.steady is not None:
             d["solver"] = {"iterations": self.steady.iterations, "residual_K": self.steady.residual_K,
                            "energy_balance_W": self.steady.energy_balance_W}
+            d["T_contacts_C"] = self.steady.T_contacts_C
             d["heat_flows_W"] = self.steady.heat_flows_W
+            d["heat_flows"] = heat_flows(self.steady)
+        if self.ratings is not None:
+            r = self.ratings.as_dict()
+            del r["warnings"]                   # in the answer's warnings
+            d["ratings"] = r
+            d.update(s0=r["s0"], kappa=r["kappa"], a_ISO=r["a_ISO"], L10m_h=r["L10m_h"],
+                     clearance_um={k: r["clearance_um"][k] for k in ("mounted", "operating")})
         return d
 
     def summary(self) -> str:
@@ -77,8 +142,11 @@ class RunResult:
                 continue
             lines.append(f"  {k:18s} {str(v[0]):40s} {v[1]}")
         if self.steady is not None:
+            lines += ["", *heat_flow_table(self.steady, self.P_W)]
             lines += ["", f"Fixed point: {self.steady.iterations} iterations, residual {self.steady.residual_K:.1e} K, "
                           f"energy balance {self.steady.energy_balance_W:.1e} W"]
+        if self.ratings is not None:
+            lines += [""] + self.ratings.lines()
         return "\n".join(lines)
 
 
@@ -91,6 +159,9 @@ def solve(scene: Scene) -> RunResult:
     >>> r.P_W > 0, r.steady.iterations < 10
     (True, True)
     """
+    check_loads(scene.bearing, scene.Fa, scene.Fr, scene.M, scene.n_rpm, Fz=scene.Fz, My=scene.My,
+                names=SCENE_LOADS)             # before any solve, as steady_states
+    check_static_safety(scene)
     if scene.T_C is not None:
         alts = plan_many([scene])[0]
         if isinstance(alts, Exception):
@@ -108,5 +179,10 @@ def solve(scene: Scene) -> RunResult:
                          T_C={"contacts (prescribed)": T}, models_used=r.models_used, losses=r,
                          warnings=ws)
     st = steady_state(scene)
+    rt = None
+    if scene.n_rpm > 0:
+        rt = scene_ratings(scene, st)
+        emit(rt.warnings)
     return RunResult(scene=scene, P_W=st.P_W, torque_Nm=st.torque_Nm, breakdown_W=dict(st.breakdown_W), T_C=st.T_C,
-                     models_used=st.models_used, losses=st.losses, steady=st, warnings=st.warnings)
+                     models_used=st.models_used, losses=st.losses, steady=st,
+                     warnings=list(st.warnings) + (rt.warnings if rt else []), ratings=rt)

@@ -170,7 +170,8 @@ class SKFSources:
         """Losses at coupled temperatures x (B, n_x) [°C]: the model at ½(x_inner + x_outer)."""
         x = _clip(np.asarray(x_C, float))
         return skf_losses(self.fam.scene, 0.5 * (x[..., 0] + x[..., 1]), self.fam.models,
-                          n_rpm=self.fam.values("n_rpm"), Fa=self.fam.values("Fa"), Fr=self.fam.values("Fr"),
+                          n_rpm=self.fam.values("n_rpm"), Fa=self.fam.values("Fa"),
+                          Fr=np.hypot(self.fam.values("Fr"), self.fam.values("Fz")),
                           lubricant=self.lubricant, **self.added)
 
     def parts(self, x_C) -> np.ndarray:
@@ -200,7 +201,7 @@ def skf_losses(scene: Scene, T_C, models: dict, *, n_rpm=None, Fa=None, Fr=None,
     churning to the bath, seal friction to the seal."""
     m = scene.models
     n = scene.n_rpm if n_rpm is None else n_rpm
-    Fa, Fr = (scene.Fa if Fa is None else Fa), (scene.Fr if Fr is None else Fr)
+    Fa, Fr = (scene.Fa if Fa is None else Fa), (float(np.hypot(scene.Fr, scene.Fz)) if Fr is None else Fr)
     if scene.bearing.kind == "thrust" and not np.all(np.asarray(Fa) > 0):
         refuse_unloaded_thrust(float(np.min(Fa)))
     if H_mm is None and M_seal_Nmm is None:

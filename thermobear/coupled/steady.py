@@ -42,13 +42,14 @@ from thermobear.coupled.fixedpoint import solve_coupled
 from thermobear.coupled.pipeline import (Family, families, family_contacts, family_loads, film_temperature_C,
                                         split_failures)
 from thermobear.coupled.limits import emit, family_warnings, overloads
+from thermobear.coupled.ratings import check_static_safety
 from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepare, prepared_for
 from thermobear.errors import (ExtrapolationWarning, InputError, NoConvergence, OutsideValidity, SolverError,
                                ThermalRunaway)
 from thermobear.loads.api import check_loads, contact_bounds
 from thermobear.models import plan_many
 from thermobear.scene import Scene
-from thermobear.thermal.solve import batched_solve, solve_linear
+from thermobear.thermal.solve import batched_solve, heat_paths, solve_linear
 from thermobear.validity import T_LUBRICANT_REFUSE_C
 
 __all__ = ["SteadyState", "steady_state", "steady_states", "T_LIMIT_K"]
@@ -57,7 +58,7 @@ _C0 = 273.15
 T_LIMIT_K = T_LUBRICANT_REFUSE_C[1] + _C0     #: an equilibrium beyond the lubricant's limit is runaway
 _FILM_TOL_K = 0.1                              #: film temperature fixed point tolerance [K]
 _FILM_MAXITER = 10
-_SCENE_LOADS = ("operation.Fa_N", "operation.Fr_N", "operation.M_Nm", "operation.n_rpm")
+SCENE_LOADS = ("operation.Fa_N", "operation.Fr_N", "operation.M_Nm", "operation.n_rpm")
 
 
 @dataclass
@@ -77,6 +78,10 @@ class SteadyState:
     residual_K : float        last temperature change [K]
     energy_balance_W : float  Σ sources − Σ heat to fixed nodes and the oil stream [W]
     heat_flows_W : dict       element → heat flow [W] (signed along the element's ``between``)
+    heat_sources_W : dict     loss part → {node: W}: where each part of the loss heats the network
+    heat_out_W : dict         path (element) → W leaving the network through it into a fixed-temperature
+                              node or the oil stream (positive: out); sums to the heat of the sources
+    heat_out_to : dict        path → the boundary it leads to (a fixed node, or ``"stream"``)
     models_used : dict        model → (choice, reason)
     history : list            convergence history
     roles : dict              role → node (ball, inner, outer, oil)
@@ -97,6 +102,9 @@ class SteadyState:
     torque_Nm: float = 0.0
     breakdown_W: dict = field(default_factory=dict)
     T_contacts_C: float = 0.0
+    heat_sources_W: dict = field(default_factory=dict)
+    heat_out_W: dict = field(default_factory=dict)
+    heat_out_to: dict = field(default_factory=dict)
     batch_losses: object = field(default=None, repr=False)
     row: int | None = None
 
@@ -295,6 +303,8 @@ def _finish(fam: Family, net, src, cp: Coupling, template, nw: _Newton, tol_K) -
     gap = np.abs(st.T_K[:, free] @ cp.C.T - nw.x).max(axis=1)
     bal = np.atleast_1d(st.balance_W)
     flows = {k: np.atleast_1d(v) for k, v in st.flows_W.items()}
+    paths = heat_paths(net, np.column_stack([np.broadcast_to(flows[e.name], (fam.B,)) for e in net.elements]))
+    free_nodes = [n for n, f in zip(net.nodes, free) if f]
     warned = family_warnings(fam.scenes, r, x_C, nw.done & (nw.x.max(axis=1) <= T_LIMIT_K))
     B = fam.B
     P_all, M_all = (np.broadcast_to(np.asarray(v, float), (B,)) for v in (r.P_W, r.torque_Nm))
@@ -331,7 +341,19 @@ def _finish(fam: Family, net, src, cp: Coupling, template, nw: _Newton, tol_K) -
             heat_flows_W={k: float(v[b]) for k, v in flows.items()},
             models_used=_point_models_used(used, nw, b), history=nw.history[b], roles=dict(cp.roles),
             warnings=warned[b], torque_Nm=float(M_all[b]), breakdown_W={k: float(v[b]) for k, v in bd_all.items()},
-            T_contacts_C=float(np.broadcast_to(T_cont, (B,))[b]), batch_losses=r, row=b))
+            T_contacts_C=float(np.broadcast_to(T_cont, (B,))[b]), batch_losses=r, row=b,
+            heat_sources_W=_part_sources(cp, parts[b], free_nodes),
+            heat_out_W={k: float(q[b]) for k, (_, q) in paths.items()},
+            heat_out_to={k: to for k, (to, _) in paths.items()}))
+    return out
+
+
+def _part_sources(cp: Coupling, parts_b, free_nodes) -> dict:
+    """Loss part → {node: W} of one point: the split of each part over the network's free nodes."""
+    out = {}
+    for j, name in enumerate(cp.parts):
+        q = cp.S[:, j] * float(parts_b[j])
+        out[name] = {free_nodes[i]: float(q[i]) for i in np.flatnonzero(cp.S[:, j])}
     return out
 
 
@@ -392,6 +414,22 @@ def _solve_family(fam: Family, tol_K, load=None, prepared=None) -> list:
         res = [ld] * sub.B if isinstance(ld, Exception) else _solve_loaded(sub, ld, template, cp, tol_K)
         for i, r in zip(sub.index, res):
             out[pos[i]] = r
+    return out
+
+
+def _points_apart(fam: Family, tol_K, load, prepared) -> list:
+    """:func:`_solve_family`; when a point's iterate leaves what the models can represent (an
+    InputError, e.g. a lubricant past its refusal temperature), each point again on its own, so
+    that the error is that point's and the others are solved."""
+    try:
+        return _solve_family(fam, tol_K, load, prepared)
+    except InputError as exc:
+        if fam.B == 1:
+            return [exc]
+    out = []
+    for b in range(fam.B):
+        one = Family(scenes=(fam.scenes[b],), index=(fam.index[b],), models=fam.models, dry=(fam.dry[b],))
+        out += _points_apart(one, tol_K, None if load is None else _batched(take(load, b, fam.B)), prepared)
     return out
 
 
@@ -484,15 +522,20 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> l
             raise InputError("operation.T_C", sc.T_C, "the scene prescribes its temperature: use solve() "
                              "or remove operation.T_C to solve the thermal network")
     out: list = [None] * len(scenes)
-    alternatives = plan_many(scenes)
+    alternatives: list = [None] * len(scenes)
     bounds: dict = {}
-    for k, sc in enumerate(scenes):          # loads no answer exists for, named as the scene names them
+    for k, sc in enumerate(scenes):          # before any solve: loads no answer exists for, named as the scene does
         if sc.bearing not in bounds:
             bounds[sc.bearing] = contact_bounds(sc.bearing)
         try:
-            check_loads(sc.bearing, sc.Fa, sc.Fr, sc.M, sc.n_rpm, names=_SCENE_LOADS, bounds=bounds[sc.bearing])
+            check_loads(sc.bearing, sc.Fa, sc.Fr, sc.M, sc.n_rpm, Fz=sc.Fz, My=sc.My, names=SCENE_LOADS,
+                        bounds=bounds[sc.bearing])
+            check_static_safety(sc)
         except InputError as exc:
             alternatives[k] = exc
+    todo = [k for k, a in enumerate(alternatives) if a is None]
+    for k, alts in zip(todo, plan_many([scenes[k] for k in todo])):
+        alternatives[k] = alts
     jobs, plans, owner = [], [], []           # one job per model alternative of a point
     for i, (sc, alts) in enumerate(zip(scenes, alternatives)):
         if isinstance(alts, Exception):
@@ -521,7 +564,7 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> l
                     shared.append(pre)
                 except InputError:
                     pre = None              # the family's own solve names the error per point
-            for j, r in zip(fam.index, _solve_family(fam, tol_K, None if load is None else _batched(load), pre)):
+            for j, r in zip(fam.index, _points_apart(fam, tol_K, None if load is None else _batched(load), pre)):
                 res[j] = r
     parts: dict = {}
     for (i, w), r in zip(owner, res):

@@ -25,6 +25,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from thermobear.coupled.limits import emit, point_warnings
+from thermobear.coupled.ratings import check_static_safety
 from thermobear.coupled.pipeline import Family, family_contacts, family_loads, film_temperature_C, stack_loads
 from thermobear.coupled.sources import Coupling, family_network, loss_parts, loss_sources, prepared_for
 from thermobear.coupled.steady import T_LIMIT_K, _batched
@@ -203,6 +204,7 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
             raise InputError("t_eval", t_eval, f"output times must increase within [0, {t_end_s}] s")
     if boundary is not None:
         boundary, scene = _imposed(boundary, scene, t_end_s)
+    check_static_safety(scene)                                  # before any solve
     pre = prepared_for(scene, prepared)
     return _run(_pieces(_segments(scene, schedule, t_end_s), t_end_s), scene, T0_C, t_eval, rtol, atol, load, stop, pre,
                 boundary)

@@ -72,7 +72,8 @@ _GROUPS = 8
 #: scene address → (Scene.with_ key, scale from the file's unit to the scene attribute's, attribute)
 _SCENE_KEYS = {
     "operation.n_rpm": ("n_rpm", 1.0, "n_rpm"), "operation.Fa_N": ("Fa", 1.0, "Fa"),
-    "operation.Fr_N": ("Fr", 1.0, "Fr"), "operation.M_Nm": ("M", 1.0, "M"), "operation.T_C": ("T_C", 1.0, "T_C"),
+    "operation.Fr_N": ("Fr", 1.0, "Fr"), "operation.M_Nm": ("M", 1.0, "M"), "operation.Fz_N": ("Fz", 1.0, "Fz"),
+    "operation.My_Nm": ("My", 1.0, "My"), "operation.T_C": ("T_C", 1.0, "T_C"),
     "lubricant.flow_L_h": ("oil_flow_L_h", 3.6e6, "oil_flow"), "lubricant.T_in_C": ("T_oil_in_C", 1.0, "T_oil_in_C"),
     "lubricant.Rq_ball_um": ("Rq_ball_um", 1e6, "Rq_ball"), "lubricant.Rq_ring_um": ("Rq_ring_um", 1e6, "Rq_ring"),
     "lubricant.mu_boundary": ("mu_boundary", 1.0, "mu_boundary"),

@@ -78,9 +78,10 @@ import numpy as np
 from thermobear.contact.geometry import BallBearing
 from thermobear.errors import InputError, NoConvergence, NoEquilibrium
 from thermobear.loads.filmlaw import _FilmAt, _NVMFixed, _carry, _invert, invert_error
-from thermobear.loads.newton import NewtonOptions, newton
-from thermobear.loads.rings import LoadDistribution, azimuths, batch_loads, check_stiffness, unbatch
-from thermobear.loads.static import _StaticProblem, load_distribution_static, ring_direction
+from thermobear.loads.newton import NewtonOptions, RowState, newton
+from thermobear.loads.rings import (LoadDistribution, arm_length, azimuths, check_stiffness, levers, ring_direction,
+                                    ring_loads, unbatch)
+from thermobear.loads.static import _StaticProblem, load_distribution_static
 from thermobear.lubrication.film import film_thickness_nvm
 
 __all__ = ["FilmLoadDistribution", "film_load_distribution", "film_contact_law"]
@@ -201,21 +202,11 @@ def _nonneg(name, v):
 
 
 
-class _FilmState:
+class _FilmState(RowState):
     """Residual, Jacobian and per-ball film data at one iterate (leading axis: the load cases)."""
 
     FIELDS = ("y", "res", "J", "norm", "Q", "d_el", "h_i", "h_o", "s", "alpha", "Qs", "GQ", "Ga", "nit", "rel",
               "fail", "codes")
-
-    def take(self, idx):
-        new = _FilmState.__new__(_FilmState)
-        for k in self.FIELDS:
-            setattr(new, k, getattr(self, k)[idx])
-        return new
-
-    def put(self, idx, other):
-        for k in self.FIELDS:
-            getattr(self, k)[idx] = getattr(other, k)
 
 
 class _FilmProblem:
@@ -228,12 +219,11 @@ class _FilmProblem:
     def __init__(self, ring, law, Q0):
         self.ring, self.law, self.Q0, self.prev = ring, law, Q0, None
         Z, A = ring.Z, ring.A
-        c = np.cos(azimuths(Z))
-        # dW/dg per ball (constant): Wt (3×2) maps (fa, fr) to the ring residuals, P (2×3) = d(A1, A2)/dy
-        self.Wt = np.zeros((1, Z, 3, 2))
-        self.Wt[0, :, 0, 0], self.Wt[0, :, 1, 1], self.Wt[0, :, 2, 0] = 1.0, c, c
-        self.P = np.zeros((1, Z, 2, 3))
-        self.P[0, :, 0, 0], self.P[0, :, 0, 2], self.P[0, :, 1, 1] = A, A * c, A * c
+        W = levers(Z, ring.ndof)                                   # (2, ndof, Z)
+        # per ball (constant): Wt (ndof×2) maps (fa, fr) to the ring residuals, P (2×ndof) = d(A1, A2)/dy
+        self.Wt = W.transpose(2, 1, 0)[None]
+        self.P = A * W.transpose(2, 0, 1)[None]
+        self.Wa, self.Wr = W[0].T, W[1].T
 
     def rows(self, idx):
         new = _FilmProblem.__new__(_FilmProblem)
@@ -257,8 +247,7 @@ class _FilmProblem:
         Q, d_el, h, GQ, Ga, _, nit, rel, fail = _invert(self.law.at(al), s, al, Q0)
         sa, ca = A1 / Aj, A2 / Aj
         fa, fr = Q * sa, Q * ca
-        c = self.Wt[0, :, 1, 1]
-        Fm = np.stack([fa.sum(1), (fr * c).sum(1), (fa * c).sum(1)], axis=1)
+        Fm = fa @ self.Wa + fr @ self.Wr
         st = _FilmState.__new__(_FilmState)
         st.res = (Fm - ring.F_app) * ring.inv_scale
         # per-ball derivatives: Q(s, α), ∂Q/∂s = 1/G_Q = Q/G_lnQ, ∂Q/∂α = −G_α/G_Q
@@ -282,28 +271,30 @@ class _FilmProblem:
         return st
 
     def direction(self, st):
-        return ring_direction(st.J, st.res, self.ring.tilt_free)
+        return ring_direction(st.J, st.res, self.ring.free)
 
 
-def film_load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, *, u_i, u_o, eta, alpha_p,
+def film_load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, *, u_i, u_o, eta, alpha_p, Fz=0.0, My=None,
                            stiffness: str = "nominal", tol: float = _TOL,
-                           maxiter: int = _MAXIT) -> FilmLoadDistribution:
+                           maxiter: int = _MAXIT, tilt_arm: str = "groove") -> FilmLoadDistribution:
     r"""Low-speed, rigid-ring load distribution with the EHL/IVR film in each ball's contact law.
 
     Parameters
     ----------
     brg : BallBearing
     Fa : array_like      axial load on the inner ring [N], ≥ 0
-    Fr : array_like      radial load on the inner ring [N], ≥ 0, acting towards ψ = 0
-    M : array_like       tilting moment [N m]; ``None`` holds the tilt at θ = 0
+    Fr : array_like      radial load on the inner ring along y (towards ψ = 0) [N]
+    M : array_like       moment in the x–y plane [N m]; ``M`` and ``My`` ``None`` hold the tilts at 0
     u_i, u_o : array_like  mean entrainment speed of the inner / outer contacts [m/s], > 0;
                          broadcast to batch + (Z,) (a scalar, one value per ball, or per case and ball),
                          e.g. :func:`thermobear.contact.kinematics.entrainment_speed` at the nominal angle
     eta : array_like     dynamic viscosity [Pa s], > 0, broadcast to the batch (one temperature per case)
     alpha_p : array_like pressure–viscosity coefficient [1/Pa], ≥ 0, broadcast to the batch
     stiffness : str      ``"nominal"`` (K_n at the nominal angle, default) or ``"per_ball"``
+    Fz, My : array_like  radial load along z [N] and moment about +y [N m] (:mod:`thermobear.loads.rings`)
     tol : float          relative equilibrium residual at which Newton stops [-]
     maxiter : int        Newton iterations at most
+    tilt_arm : str       ``"groove"`` (ℜ_i, default) or ``"pitch"`` (d_m/2): :data:`thermobear.loads.rings.TILT_ARMS`
 
     Returns
     -------
@@ -338,24 +329,26 @@ def film_load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, *, u_i, u_o
     (3, 15, True)
     """
     check_stiffness(stiffness)
-    shape, Fa_b, Fr_b, M_b, Mv = batch_loads(brg, Fa, Fr, M)
-    tilt_free = M_b is not None
-    Z, A, R = brg.Z, brg.A, brg.R_inner_locus
-    nb = Fa_b.size
-    F_app = np.stack([Fa_b, Fr_b, Mv / R], axis=1)
+    loads = ring_loads(brg, Fa, Fr, M, Fz, My)
+    shape, nb, nd = loads.shape, loads.nb, loads.ndof
+    Z, A, R = brg.Z, brg.A, arm_length(brg, tilt_arm)
+    F_app = loads.applied(R)
     zero = np.max(np.abs(F_app), axis=1) == 0.0
     if np.any(zero):
-        raise InputError("Fa, Fr, M", (float(Fa_b[zero][0]), float(Fr_b[zero][0]), float(Mv[zero][0])),
+        raise InputError("Fa, Fr, M", loads.case(int(np.argmax(zero))),
                          "the film load distribution needs a load (every ball carries a film force)")
     scale = np.max(np.abs(F_app), axis=1)
     law = _Film(brg, _per_ball("u_i", u_i, _pos, shape, Z), _per_ball("u_o", u_o, _pos, shape, Z),
                 _per_case("eta", eta, _pos, shape), _per_case("alpha_p", alpha_p, _nonneg, shape), stiffness)
     # start: the dry solution (ring displacements scaled by A, as in thermobear.loads.static)
-    dry = load_distribution_static(brg, Fa=Fa_b, Fr=Fr_b, M=M_b, stiffness=stiffness)
+    F = loads.F
+    dry = load_distribution_static(brg, Fa=F[:, 0], Fr=F[:, 1], M=F[:, 2] if loads.tilt_free else None, Fz=F[:, 3],
+                                   My=F[:, 4] if loads.tilt_free else None, stiffness=stiffness, tilt_arm=tilt_arm)
     y = np.stack([(np.asarray(dry.delta_a) - A * np.sin(brg.alpha0)) / A, np.asarray(dry.delta_r) / A,
-                  np.asarray(dry.theta) * R / A], axis=1)
+                  np.asarray(dry.theta) * R / A, np.asarray(dry.delta_z) / A,
+                  np.asarray(dry.theta_y) * R / A][:nd], axis=1)
     Qw = np.maximum(np.asarray(dry.Q_i).reshape(nb, Z), 1e-6 * (scale[:, None] / Z))   # warm start
-    pb = _FilmProblem(_StaticProblem(brg, F_app, scale, tilt_free, stiffness), law, Qw)
+    pb = _FilmProblem(_StaticProblem(brg, F_app, scale, loads.free(), stiffness), law, Qw)
     r = newton(pb, y, NewtonOptions(tol=tol, maxiter=maxiter))
     y, norm, st, its = r.z, r.norm, r.state, r.iterations
     bad = ~(norm <= max(tol, 1e-9))
@@ -364,9 +357,9 @@ def film_load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, *, u_i, u_o
         if st.fail[k]:
             raise invert_error(st.codes[k:k + 1], st.s[k:k + 1], st.alpha[k:k + 1], st.nit[k])
         raise NoConvergence(
-            f"film load distribution did not reach equilibrium for Fa = {Fa_b[k]:g} N, Fr = {Fr_b[k]:g} N, "
-            f"M = {Mv[k]:g} N m: relative residual {norm[k]:.3g} after {its[k]} Newton iterations",
-            iterations=int(its[k]), residual=float(norm[k]), last=y[k] * np.array([A, A, A / R]))
+            f"film load distribution did not reach equilibrium for {loads.case(k)}: relative residual "
+            f"{norm[k]:.3g} after {its[k]} Newton iterations",
+            iterations=int(its[k]), residual=float(norm[k]), last=y[k] * np.array([A, A, A / R, A, A / R])[:nd])
     Q, al = st.Q, st.alpha
     if brg.kind == "angular_contact" and np.any(al <= 0):
         raise NoEquilibrium("angular contact bearing: a ball would need a contact angle <= 0 (contact over the "
@@ -376,12 +369,13 @@ def film_load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, *, u_i, u_o
         raise NoConvergence("film load distribution: a ball load is not finite and positive",
                             iterations=int(its.max()), residual=float(norm.max()))
     da = y[:, 0] * A + A * np.sin(brg.alpha0)
+    dz, thy = (y[:, 3] * A, y[:, 4] * A / R) if nd == 5 else (np.zeros(nb), np.zeros(nb))
     return FilmLoadDistribution(
         delta_a=unbatch(shape, da), delta_r=unbatch(shape, y[:, 1] * A), theta=unbatch(shape, y[:, 2] * A / R),
+        delta_z=unbatch(shape, dz), theta_y=unbatch(shape, thy),
         Q_i=unbatch(shape, Q, True), Q_o=unbatch(shape, Q.copy(), True), alpha_i=unbatch(shape, al, True),
         alpha_o=unbatch(shape, al.copy(), True), psi=azimuths(Z), delta_n=unbatch(shape, st.d_el, True),
-        residual=float(norm.max()), iterations=int(its.max()), Fa=np.asarray(Fa, dtype=float),
-        Fr=np.asarray(Fr, dtype=float), M=unbatch(shape, Mv),
+        residual=float(norm.max()), iterations=int(its.max()), **loads.result_fields(Fa, Fr),
         delta_geo=unbatch(shape, st.s, True), h_i=unbatch(shape, st.h_i, True), h_o=unbatch(shape, st.h_o, True),
         stiffness_n=unbatch(shape, st.Qs, True), law_residual=float(st.rel.max()),
         inversion_iterations=int(st.nit.max()))

@@ -3,14 +3,14 @@ r"""High-speed quasi-static load distribution of a ball bearing (Jones 1960; Har
 At speed each ball carries a centrifugal force F_c and a gyroscopic moment M_g,
 so the inner and outer contacts no longer share one line of action: α_o falls,
 α_i rises and Q_o > Q_i.  Rigid rings, outer ring fixed, inner ring rotating at
-n [rpm] and displaced by (δa, δr, θ) exactly as in :mod:`thermobear.loads.static`
+n [rpm] and displaced by (δa, δr, θ, δz, θ_y) exactly as in :mod:`thermobear.loads.static`
 (ISO/TS 16281 convention: δa measured from the centred position).
 
 Geometry of ball j (Jones 1960 [1]; Harris 2001 [2] §8.2).  x axial (the direction in which F_a
 pushes the inner ring), r radial outward through the ball centre; O_o and O_i
 the outer and inner groove curvature centres, C the ball centre:
 
-    O_i − O_o = (A1_j, A2_j) = (δa + ℜ_i θ cos ψ_j,  A cos α0 + δr cos ψ_j)
+    O_i − O_o = (A1_j, A2_j) = (δa + ℜ (θ cos ψ_j + θ_y sin ψ_j),  A cos α0 + δr cos ψ_j + δz sin ψ_j)
     C − O_o   = (X1_j, X2_j) = ((f_o − ½)D + δo_j)(sin αo_j, cos αo_j)
     O_i − C   = (A1_j − X1_j, A2_j − X2_j) = ((f_i − ½)D + δi_j)(sin αi_j, cos αi_j)
 
@@ -50,10 +50,10 @@ each ball; the friction force acts at the contact point, a distance f_i D from
 O_i, hence the couple term):
 
     F_a   = Σ (Q_i sin αi + λ_i (M_g/D) cos αi)
-    F_r   = Σ (Q_i cos αi − λ_i (M_g/D) sin αi) cos ψ
-    M     = Σ [(Q_i sin αi + λ_i (M_g/D) cos αi) ℜ_i − λ_i f_i M_g] cos ψ
+    F_r   = Σ (Q_i cos αi − λ_i (M_g/D) sin αi) cos ψ,        F_z = the same with sin ψ
+    M     = Σ [(Q_i sin αi + λ_i (M_g/D) cos αi) ℜ − λ_i f_i M_g] cos ψ,   M_y = the same with sin ψ
 
-(Harris 2001 §8.2; Harris & Kotzalas 2007 [3] ch. 3; global equations with M_g,Harris = −M_g).  With
+(ℜ the tilt arm, ℜ_i by default, :mod:`thermobear.loads.rings`; Harris 2001 §8.2; Harris & Kotzalas 2007 [3] ch. 3; global equations with M_g,Harris = −M_g).  With
 outer-raceway control every M_g term leaves the global equations.
 
 Kinematics: one rigid cage.  Every ball orbits at the cage speed ω_c, the Q_i-weighted mean of
@@ -65,13 +65,14 @@ and more, and a ball outside the load zone would orbit at the speed its gap's "c
 implies (with a centrifugal force to match).  Every residual is evaluated with the kinematics
 recomputed at the iterate, so a converged residual is the fixed point of the coupled problem.
 
-Solver: Newton on the 2Z + 3 unknowns (X per ball, δa, δr, θ) — the 4Z + 3 of Harris with
+Solver: Newton on the 2Z + ndof unknowns (X per ball; δa, δr, θ, and δz, θ_y when a load leaves the x–y
+plane: ndof = 3 or 5) — the 4Z + ndof of Harris with
 δi, δo eliminated exactly — vectorised over the balls and a batch of load cases.  The
 Jacobian is exact and analytic: contact stiffness matrices, and the derivatives of β, the
 balls' own orbital speeds, ω_R, F_c and M_g with respect to α_i, α_o, Q_i, Q_o and the cage
 speed (:meth:`thermobear.loads.highspeed_model._HSProblem.direction`); the cage speed, a load-weighted mean over all balls, enters
-as a fourth global unknown whose residual is zero at every iterate, so the per-ball 2×2 blocks
-are eliminated in closed form (Schur complement) and one 4×4 system is solved per case.
+as one more global unknown whose residual is zero at every iterate, so the per-ball 2×2 blocks
+are eliminated in closed form (Schur complement) and one (ndof + 1)² system is solved per case.
 Convergence is quadratic.  The iteration is the shared damped Newton of
 :mod:`thermobear.loads.newton`; this form's safeguards: a ball's step follows the polar path about the outer
 groove centre (a ball resting on the outer race rolls along it instead of being pushed into
@@ -158,7 +159,7 @@ from thermobear.loads.highspeed_model import _HSProblem
 from thermobear.loads.highspeed_start import start as _start
 from thermobear.loads.highspeed_start import static_start
 from thermobear.loads.newton import NewtonOptions, continuation, newton
-from thermobear.loads.rings import LoadDistribution, azimuths, batch_loads, check_stiffness, unbatch
+from thermobear.loads.rings import LoadDistribution, arm_length, azimuths, check_stiffness, ring_loads, unbatch
 from thermobear.loads.static import load_distribution_static
 
 __all__ = ["HighSpeedExtras", "FilmInputs", "load_distribution_high_speed", "load_distribution_high_speed_full",
@@ -272,18 +273,21 @@ def _check_options(control, stiffness, tol, maxiter):
         raise InputError("maxiter", maxiter, "must be an integer >= 1")
 
 
-def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *,
+def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, Fz=0.0, My=None,
                                       control: str = "outer", stiffness: str = "nominal",
-                                      tol: float = 1e-10, maxiter: int = _MAXIT, film=None):
+                                      tol: float = 1e-10, maxiter: int = _MAXIT, film=None,
+                                      tilt_arm: str = "groove"):
     r"""High-speed quasi-static load distribution with the per-ball details.
 
     Parameters
     ----------
     brg : BallBearing
     Fa : array_like      axial load on the inner ring [N], ≥ 0
-    Fr : array_like      radial load on the inner ring [N], ≥ 0, towards ψ = 0
-    M : array_like       tilting moment [N m]; ``None`` holds the tilt at θ = 0
+    Fr : array_like      radial load on the inner ring along y (towards ψ = 0) [N]
+    M : array_like       moment in the x–y plane [N m]; ``M`` and ``My`` ``None`` hold the tilts at 0
     n_rpm : array_like   inner-ring speed [rpm], ≥ 0 (outer ring fixed); broadcast with the loads
+    Fz, My : array_like  radial load along z (ψ = 90°) [N] and moment about +y [N m]
+                         (:func:`thermobear.loads.load_distribution_static`; axes in :mod:`thermobear.loads.rings`)
     control : str       raceway control of the gyroscopic moment: ``"outer"`` (Jones: λ_o = 2,
                         λ_i = 0, β from zero spin at the outer contact), ``"inner"`` (λ_i = 2,
                         λ_o = 0, β from the inner contact) or ``"both"`` (alias ``"none"``:
@@ -298,6 +302,7 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
                         the lubricant film in each contact's law, δ_c = δ_el,c(Q_c) − h_c(Q_c)
                         (module docstring, "Film contact law"); needs n_rpm > 0.  ``None`` (default):
                         dry Hertz contacts.
+    tilt_arm : str      ``"groove"`` (ℜ_i, default) or ``"pitch"`` (d_m/2): :data:`thermobear.loads.rings.TILT_ARMS`
 
     Returns
     -------
@@ -349,7 +354,9 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
     n_in = np.asarray(n_rpm, dtype=float)
     if np.any(~np.isfinite(n_in)) or np.any(n_in < 0):
         raise InputError("n_rpm", n_rpm, "inner-ring speed must be finite and >= 0 [rpm] (outer ring fixed)")
-    shape, Fa_b, Fr_b, M_b, Mv, n_b = batch_loads(brg, Fa, Fr, M, n_in)
+    loads = ring_loads(brg, Fa, Fr, M, Fz, My, extra=(n_in,))
+    shape, n_b = loads.shape, loads.extra[0]
+    arm_length(brg, tilt_arm)                    # (checks tilt_arm before any solve)
     if film is not None:
         f_eta, f_ap = _film_inputs(film, shape)
         if np.any(n_b <= 0):
@@ -357,27 +364,31 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
                              "at n = 0 the contacts are dry: film=None)")
     if film is None:
         f_eta = f_ap = None
-    nb = Fa_b.size
+    nb = loads.nb
     if nb <= _CHUNK:
-        ld, ex = _solve(brg, Fa_b, Fr_b, M_b, Mv, n_b, f_eta, f_ap, stiffness, control, tol, maxiter)
+        ld, ex = _solve(brg, loads, n_b, f_eta, f_ap, stiffness, control, tol, maxiter, tilt_arm)
     else:       # independent cases: solved a chunk at a time (numpy's temporaries stay small and in the cache)
-        parts = [_solve(brg, Fa_b[k:k + _CHUNK], Fr_b[k:k + _CHUNK], None if M_b is None else M_b[k:k + _CHUNK],
-                        Mv[k:k + _CHUNK], n_b[k:k + _CHUNK], None if film is None else f_eta[k:k + _CHUNK],
-                        None if film is None else f_ap[k:k + _CHUNK], stiffness, control, tol, maxiter)
+        parts = [_solve(brg, loads.rows(np.arange(k, min(k + _CHUNK, nb))), n_b[k:k + _CHUNK],
+                        None if film is None else f_eta[k:k + _CHUNK], None if film is None else f_ap[k:k + _CHUNK],
+                        stiffness, control, tol, maxiter, tilt_arm)
                  for k in range(0, nb, _CHUNK)]
         ld, ex = (_merge([p[j] for p in parts]) for j in (0, 1))
     return _reshape(ld, shape, Fa, Fr), _reshape(ex, shape)
 
 
-def _solve(brg, Fa_b, Fr_b, M_b, Mv, n_b, f_eta, f_ap, stiffness, control, tol, maxiter):
-    """The solution of a flat batch of cases: (LoadDistribution, HighSpeedExtras) with a leading axis."""
+def _solve(brg, loads, n_b, f_eta, f_ap, stiffness, control, tol, maxiter, tilt_arm):
+    """The solution of a flat batch of cases (:class:`thermobear.loads.rings.RingLoads`, speeds ``n_b``):
+    (LoadDistribution, HighSpeedExtras) with a leading axis."""
     # low-speed solution: NoEquilibrium cases, and the start
-    ls = load_distribution_static(brg, Fa_b, Fr_b, M_b, stiffness=stiffness)
-    pb, z0 = _problem(brg, ls, Fa_b, Fr_b, M_b, Mv, n_b, stiffness, control)
+    F = loads.F
+    ls = load_distribution_static(brg, F[:, 0], F[:, 1], F[:, 2] if loads.tilt_free else None, Fz=F[:, 3],
+                                  My=F[:, 4] if loads.tilt_free else None, stiffness=stiffness, tilt_arm=tilt_arm)
+    pb, z0 = _problem(brg, ls, loads, n_b, stiffness, control, arm_length(brg, tilt_arm))
     opt = NewtonOptions(tol=tol, maxiter=maxiter, step_cap=_STEP_CAP, window=_NONMONOTONE, polish=_POLISH)
-    z, st, norm, its = _solve_dry(pb, z0, opt, Fa_b, Fr_b, Mv, n_b, control)
+    Fa_b, Fr_b = loads.Fa, loads.Fr
+    z, st, norm, its = _solve_dry(pb, z0, opt, loads, n_b, control)
     if f_eta is not None:
-        z, st, norm, its = _film_stage(pb, z, st, its, f_eta, f_ap, opt, Fa_b, Fr_b, Mv, n_b)
+        z, st, norm, its = _film_stage(pb, z, st, its, f_eta, f_ap, opt, loads, n_b)
     lam_i = pb.lam_i
     if lam_i != 0.0:
         # a converged point where the gyroscopic friction alone carries F_a has every inner contact
@@ -391,7 +402,7 @@ def _solve(brg, Fa_b, Fr_b, M_b, Mv, n_b, f_eta, f_ap, stiffness, control, tol, 
                 f"friction the inner raceway must supply pushes the inner ring axially with {gyro[k]:.4g} N >= Fa; "
                 "no positive contact loads balance it. Use control = 'outer' or a larger axial load",
                 iterations=int(its[k]), residual=float(norm[k]))
-    return _results(pb, z, st, norm, its, (Fa_b, Fr_b, Mv, n_b), control, f_eta is not None)
+    return _results(pb, z, st, norm, its, loads, n_b, control, f_eta is not None)
 
 
 def _merge(parts):
@@ -422,35 +433,32 @@ def _reshape(res, shape, Fa=None, Fr=None):
     return replace(res, **out)
 
 
-def _problem(brg, ls, Fa_b, Fr_b, M_b, Mv, n_b, stiffness, control):
+def _problem(brg, ls, loads, n_b, stiffness, control, R):
     """The high-speed problem of a batch and its unknowns at the static solution ``ls`` (rings there, balls
-    on the lines of groove centres)."""
+    on the lines of groove centres); ``R`` the tilt arm [m]."""
     lam_i, lam_o, kin_control = HS_CONTROLS[control]
-    A, R = brg.A, brg.R_inner_locus
-    nb = Fa_b.size
-    F_app = np.stack([Fa_b, Fr_b, Mv / R], axis=1)
+    A, nb, ng = brg.A, loads.nb, loads.ndof
+    F_app = loads.applied(R)
     omega = n_b * np.pi / 30.0
     w_c0 = 0.5 * omega * (1.0 - brg.gamma(brg.alpha0))
     Fc0 = 0.5 * brg.ball_mass * brg.dm * w_c0**2
     load_max = np.max(np.abs(F_app), axis=1)
     zero = load_max == 0.0
     scale = np.maximum(np.maximum(load_max, Fc0), 1e-300)
-    free_g = np.ones((nb, 3))
-    if M_b is None:
-        free_g[:, 2] = 0.0
+    free_g = np.tile(loads.free(), (nb, 1))
     if brg.kind == "thrust":
         # the shaft washer is located radially by the shaft (Fr = 0 is enforced): hold δr = 0.
         # At speed the balls thrown outwards give the washer a negative radial stiffness, so a
         # free δr would only find the symmetric solution by accident.
-        free_g[:, 1] = 0.0
+        free_g[:, 1::2] = 0.0                                           # δr (and δz)
         if np.any(zero & (n_b > 0)):
             k = int(np.argmax(zero & (n_b > 0)))
             raise NoEquilibrium(
                 f"a thrust ball bearing at n = {n_b[k]:g} rpm needs an axial load (minimum load): with Fa = 0 the "
                 "centrifugal force throws the balls outwards and nothing holds them between the washers")
     free_g[zero] = 0.0                       # no load: the rings stay centred, only the balls move
-    pb = _HSProblem(brg, F_app, scale, omega, free_g, stiffness, lam_i, lam_o, kin_control)
-    g0 = np.zeros((nb, 3))
+    pb = _HSProblem(brg, F_app, scale, omega, free_g, stiffness, lam_i, lam_o, kin_control, R)
+    g0 = np.zeros((nb, ng))
     g0[:, 0] = np.reshape(ls.delta_a, nb) / A
     if brg.kind == "thrust":
         # unloaded thrust bearing: washers just touching the balls (the centred position
@@ -458,10 +466,13 @@ def _problem(brg, ls, Fa_b, Fr_b, M_b, Mv, n_b, stiffness, control):
         g0[zero, 0] = np.sin(brg.alpha0)
     g0[:, 1] = np.reshape(ls.delta_r, nb) / A
     g0[:, 2] = np.reshape(ls.theta, nb) * R / A
+    if ng == 5:
+        g0[:, 3] = np.reshape(ls.delta_z, nb) / A
+        g0[:, 4] = np.reshape(ls.theta_y, nb) * R / A
     return pb, static_start(pb, g0)
 
 
-def _solve_dry(pb, z0, opt, Fa_b, Fr_b, Mv, n_b, control):
+def _solve_dry(pb, z0, opt, loads, n_b, control):
     """Dry contacts: Newton from the placed start; the cases that fail again by continuation in speed from
     the static solution.  Returns (z, state, residual, iterations) or raises (NoEquilibrium where the
     branch of equilibria ends, NoConvergence)."""
@@ -469,7 +480,7 @@ def _solve_dry(pb, z0, opt, Fa_b, Fr_b, Mv, n_b, control):
     r = newton(pb, zs, opt)
     z, st, norm, its, done = r.z, r.state, r.norm, r.iterations, r.converged
     if not np.all(done):
-        _diagnose(pb, z, done, Fa_b, Fr_b, n_b, its, norm, zs)
+        _diagnose(pb, z, done, loads, n_b, its, norm, zs)
     if not np.all(done) and np.any(n_b[~done] > 0):
         # continuation in speed for the failed cases, warm-started from the static solution; a case that
         # fails at some speed fraction stops there (its branch of equilibria ends)
@@ -495,24 +506,24 @@ def _solve_dry(pb, z0, opt, Fa_b, Fr_b, Mv, n_b, control):
             k = int(idx[j])
             A = pb.A
             raise NoEquilibrium(
-                f"no high-speed equilibrium at n = {n_b[k]:g} rpm for Fa = {Fa_b[k]:g} N, Fr = {Fr_b[k]:g} N, "
-                f"M = {Mv[k]:g} N m (control = '{control}'): continuation in speed found equilibria up to "
+                f"no high-speed equilibrium at n = {n_b[k]:g} rpm for {loads.case(k)} "
+                f"(control = '{control}'): continuation in speed found equilibria up to "
                 f"{_SPEED_STEPS[c.reached[j]] * n_b[k]:.4g} rpm, then none — the centrifugal and gyroscopic loads "
                 "outgrow what the contacts can balance (e.g. the cage speed runs away when a raceway-control "
                 "hypothesis no longer fits the contact angles); raise the axial load or preload, or check the "
                 "control hypothesis", iterations=int(its[k]), residual=float(c.norm[j]), last=c.z[j] * A)
     if not np.all(done):
-        _diagnose(pb, z, done, Fa_b, Fr_b, n_b, its, norm)
+        _diagnose(pb, z, done, loads, n_b, its, norm)
         k = int(np.argmax(np.where(done, -np.inf, np.nan_to_num(norm, nan=np.inf))))
         raise NoConvergence(
-            f"high-speed load distribution did not reach equilibrium for Fa = {Fa_b[k]:g} N, Fr = {Fr_b[k]:g} N, "
-            f"M = {Mv[k]:g} N m, n = {n_b[k]:g} rpm: relative residual {norm[k]:.3g} after {its[k]} Newton "
+            f"high-speed load distribution did not reach equilibrium for {loads.case(k)}, "
+            f"n = {n_b[k]:g} rpm: relative residual {norm[k]:.3g} after {its[k]} Newton "
             "iterations (direct and with continuation in speed)",
             iterations=int(its[k]), residual=float(norm[k]), last=z[k] * pb.A)
     return z, st, norm, its
 
 
-def _film_stage(pb, z, st0, its, eta, ap, opt, Fa_b, Fr_b, Mv, n_b):
+def _film_stage(pb, z, st0, its, eta, ap, opt, loads, n_b):
     r"""Film stage: Newton on the film contact law, started from the dry solution (z, state ``st0``).
 
     The warm-start loads are the dry ones (an open contact starts at 1e-9 of the force scale; the
@@ -553,7 +564,7 @@ def _film_stage(pb, z, st0, its, eta, ap, opt, Fa_b, Fr_b, Mv, n_b):
         k = int(np.argmax(np.where(done, -np.inf, np.nan_to_num(norm, nan=np.inf))))
         raise NoConvergence(
             f"high-speed load distribution with the film contact law did not reach equilibrium for "
-            f"Fa = {Fa_b[k]:g} N, Fr = {Fr_b[k]:g} N, M = {Mv[k]:g} N m, n = {n_b[k]:g} rpm: relative residual "
+            f"{loads.case(k)}, n = {n_b[k]:g} rpm: relative residual "
             f"{norm[k]:.3g} after {its[k]} Newton iterations (from the dry solution, then by continuation in "
             "viscosity)" + ("; with this raceway-control hypothesis every ball, also one across a film-bridged "
                            "gap, must take gyroscopic friction at the inner race — try control = 'outer'"
@@ -562,13 +573,14 @@ def _film_stage(pb, z, st0, its, eta, ap, opt, Fa_b, Fr_b, Mv, n_b):
     return z, st, norm, its
 
 
-def _diagnose(pb, z, done, Fa_b, Fr_b, n_b, its, norm, z_start=None):
+def _diagnose(pb, z, done, loads, n_b, its, norm, z_start=None):
     """Raise NoEquilibrium for an unconverged case whose load cannot balance the friction the
     control hypothesis demands from the inner raceway (the inner ring receives Σ λ_i (M_g/D) cos α_i
     axially from the gyroscopic friction; when that reaches F_a — at the last iterate or at the start
     ``z_start`` — Q_i sin α_i would have to be < 0: checked first, it is the cause), or whose loaded balls
     were driven over the low shoulder of an angular contact bearing (α_i ≤ 0)."""
     st = pb.evaluate(z)
+    Fa_b, Fr_b = loads.Fa, loads.Fr
     if pb.lam_i != 0.0:
         Z = pb.Z
         gyro = (pb.lam_i * st.Mg / pb.brg.D * st.n[:, 2 * Z:3 * Z]).sum(1)
@@ -594,10 +606,10 @@ def _diagnose(pb, z, done, Fa_b, Fr_b, n_b, its, norm, z_start=None):
                 "raise the axial load or preload", iterations=int(its[k]), residual=float(norm[k]))
 
 
-def _results(pb, z, st, norm, its, loads, control, with_film):
+def _results(pb, z, st, norm, its, loads, n_b, control, with_film):
     """LoadDistribution and HighSpeedExtras at the solution, flat (leading axis: the cases; ``loads``: the
-    flat Fa, Fr, M, n of the batch)."""
-    Fa_b, Fr_b, Mv, n_b = loads
+    :class:`thermobear.loads.rings.RingLoads` of the batch, ``n_b`` its speeds [rpm])."""
+    Fa_b, Fr_b = loads.Fa, loads.Fr
     brg, A, R, Z = pb.brg, pb.A, pb.R, pb.Z
     zero = np.max(np.abs(pb.F_app), axis=1) == 0.0
     Z2 = 2 * Z
@@ -621,7 +633,8 @@ def _results(pb, z, st, norm, its, loads, control, with_film):
         a_i, a_o = np.where(zero[:, None] & free, 0.0, a_i), np.where(zero[:, None] & free, 0.0, a_o)
     dl = st.d_el if with_film else np.maximum(st.dl, 0.0)
     dn = dl[:, :Z] + dl[:, Z:]
-    g = z[:, :3]
+    g = np.zeros((z.shape[0], 5))
+    g[:, :pb.ng] = z[:, :pb.ng]
     ones = np.ones((z.shape[0], Z))
 
     def sh(v):
@@ -632,7 +645,9 @@ def _results(pb, z, st, norm, its, loads, control, with_film):
         delta_a=sh(np.where(zero, 0.0, g[:, 0] * A)), delta_r=sh(np.where(zero, 0.0, g[:, 1] * A)),
         theta=sh(np.where(zero, 0.0, g[:, 2] * A / R)), Q_i=shz(Qi), Q_o=shz(Qo), alpha_i=shz(a_i),
         alpha_o=shz(a_o), psi=azimuths(Z), delta_n=shz(dn), residual=float(norm.max()) if norm.size else 0.0,
-        iterations=int(its.max()) if its.size else 0, Fa=Fa_b, Fr=Fr_b, M=sh(Mv))
+        iterations=int(its.max()) if its.size else 0, Fa=Fa_b, Fr=Fr_b, M=sh(loads.M),
+        delta_z=sh(np.where(zero, 0.0, g[:, 3] * A)), theta_y=sh(np.where(zero, 0.0, g[:, 4] * A / R)),
+        Fz=sh(loads.F[:, 3]), My=sh(loads.F[:, 4]))
     ex = HighSpeedExtras(
         Fc=shz(st.Fc * ones), Mg=shz(st.Mg), omega_c=shz(st.W * ones), omega_R=shz(st.wR),
         beta=shz(np.arctan2(-st.msb, st.cb)), X1=shz(st.X1), X2=shz(st.X2),
@@ -648,9 +663,10 @@ def _results(pb, z, st, norm, its, loads, control, with_film):
     return ld, ex
 
 
-def load_distribution_high_speed(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *,
+def load_distribution_high_speed(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, Fz=0.0, My=None,
                                  control: str = "outer", stiffness: str = "nominal",
-                                 tol: float = 1e-10, maxiter: int = _MAXIT, film=None) -> LoadDistribution:
+                                 tol: float = 1e-10, maxiter: int = _MAXIT, film=None,
+                                 tilt_arm: str = "groove") -> LoadDistribution:
     r"""High-speed quasi-static load distribution (Jones 1960; Harris 2001 ch. 8).
 
     Same parameters as :func:`load_distribution_high_speed_full`; returns only the
@@ -668,5 +684,6 @@ def load_distribution_high_speed(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm
     >>> bool(np.allclose(hs.Q_o, ls.Q, rtol=1e-8, atol=1e-9 * 450) and np.allclose(hs.Q_i, hs.Q_o, rtol=1e-8))
     True
     """
-    return load_distribution_high_speed_full(brg, Fa, Fr, M, n_rpm, control=control, stiffness=stiffness,
-                                             tol=tol, maxiter=maxiter, film=film)[0]
+    return load_distribution_high_speed_full(brg, Fa, Fr, M, n_rpm, Fz=Fz, My=My, control=control,
+                                             stiffness=stiffness, tol=tol, maxiter=maxiter, film=film,
+                                             tilt_arm=tilt_arm)[0]

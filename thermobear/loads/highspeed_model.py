@@ -1,14 +1,16 @@
 r"""The high-speed ball equilibrium as a problem of the shared Newton: residual, exact Jacobian, path.
 
 Equations and conventions: :mod:`thermobear.loads.highspeed` (Jones 1960 [1]; Harris 2001 [2] ch. 8;
-Harris & Kotzalas 2007 [3] ch. 3).  Unknowns of a load case, one row of z (nb, 3 + 2Z):
+Harris & Kotzalas 2007 [3] ch. 3).  Unknowns of a load case, one row of z (nb, ndof + 2Z):
 
-    z = (δa/A, δr/A, θℜ_i/A,  X1_0/A … X1_{Z−1}/A,  X2_0/A … X2_{Z−1}/A)
+    z = (g_0 … g_{ndof−1},  X1_0/A … X1_{Z−1}/A,  X2_0/A … X2_{Z−1}/A)
 
-the ring unknowns g first (the lever map of :mod:`thermobear.loads.rings`), then the ball centres from
-their outer groove curvature centres, axial components of every ball, then radial ones.  Residual rows
-in the same order: the inner ring's (F_a, F_r, M/ℜ_i) balance, then each ball's axial and radial force
-balance, all divided by the case's force scale.
+the ring unknowns g = (δa/A, δr/A, θℜ/A[, δz/A, θ_yℜ/A]) first (the lever map of
+:mod:`thermobear.loads.rings`: ndof = 3 for in-plane loads, 5 otherwise), then the ball centres from their
+outer groove curvature centres, axial components of every ball, then radial ones.  Residual rows in the
+same order: the inner ring's (F_a, F_r, M/ℜ[, F_z, M_y/ℜ]) balance, then each ball's axial and radial
+force balance, all divided by the case's force scale.  Each ball's equations live in its own radial
+plane (the plane of the axis and ψ_j), so the ring's second radial direction only adds lever rows.
 
 Layout.  A load case is a few hundred numpy operations on Z-element rows: their call overhead, not the
 arithmetic, sets the cost.  So every per-ball quantity is a flat row, the two contacts of a ball side by
@@ -32,7 +34,7 @@ import numpy as np
 
 from thermobear.loads.filmlaw import _carry, _invert
 from thermobear.loads.highspeed_start import relax as _relax
-from thermobear.loads.rings import azimuths, lever_matrix
+from thermobear.loads.rings import COMPONENT, lever_matrix, levers
 
 _EPS_TENSION = 1e-12    # linear stiffness of an open contact, relative to K √A (numerical regularisation)
 LAG_SKIP = 0.05         # film refresh: keep the iterate when the cage-speed lag is below this fraction of its residual
@@ -47,34 +49,34 @@ def _stiffness_constants(brg):
 
 
 @lru_cache(maxsize=32)
-def _constants(brg):
-    """Fixed arrays of a bearing (read-only): cos ψ (Z,), the lever matrix (3, 2Z) [m], the ring sums of the
-    ball forces (4Z, 3), and the sums of the Jacobian's per-ball terms (14 Z, 16) (see :meth:`_HSProblem._blocks`)."""
+def _constants(brg, ndof):
+    """Fixed arrays of a bearing (read-only): the lever matrix (ndof, 2Z) [m], the ring sums of the ball forces
+    (4Z, ndof), the sums of the Jacobian's per-ball terms ((2 ndof + 2) Z, ndof² + ndof), and each ring row's
+    contact component comp_k (0 axial, 1 radial) and lever w_k ∈ {1, cos ψ, sin ψ} (ndof, Z): the ring sums
+    S[m, k] = Σ_j P[m, comp_k] w_k of the per-ball rows P[m] = d r_g,m/dp and the cage row in one product."""
     Z = brg.Z
-    c = np.cos(azimuths(Z))
-    L = lever_matrix(brg)
-    Sg = np.zeros((4 * Z, 3))                 # (f_i,a | f_o,a | f_i,r | f_o,r) -> (F_a, F_r, M/ℜ_i)
-    Sg[:Z, 0], Sg[2 * Z:3 * Z, 1], Sg[:Z, 2] = 1.0, c, c
-    # per-ball rows (L_aa, L_ar, L_ra, L_rr, L_ta, L_tr, b_a, b_r, m0..m5 unused) -> S entries:
-    # (L W_t)[m, k] with L the ring rows (a, r, t = tilt) of d r_g/dp and W_t = [[1, 0, c], [0, c, 0]]
-    one, _c2 = np.ones(Z), c * c
-    M = np.zeros((8, Z, 12))
-    for row, col, w in ((0, 0, one), (1, 1, c), (0, 2, c),            # row a of r_g: d/dg0, dg1, dg2
-                        (2, 3, one), (3, 4, c), (2, 5, c),            # row r
-                        (4, 6, one), (5, 7, c), (4, 8, c),            # row t
-                        (6, 9, one), (7, 10, c), (6, 11, c)):         # cage: Σ b W_t
-        M[row, :, col] = w
-    out = (c, L, Sg, M.reshape(8 * Z, 12))
+    L = lever_matrix(brg, ndof)
+    W = levers(Z, ndof)                                        # (2, ndof, Z)
+    comp = np.array(COMPONENT[:ndof])
+    lev = np.stack([W[comp[k], k] for k in range(ndof)])
+    Sg = np.zeros((4 * Z, ndof))              # (f_i,a | f_o,a | f_i,r | f_o,r) -> (F_a, F_r, M/ℜ, F_z, M_y/ℜ)
+    Sg[:Z], Sg[2 * Z:3 * Z] = W[0].T, W[1].T
+    M = np.zeros((2 * ndof + 2, Z, ndof * ndof + ndof))
+    for m in range(ndof + 1):                 # ring rows, then the cage row (columns ndof² …)
+        for k in range(ndof):
+            M[2 * m + comp[k], :, m * ndof + k] = lev[k]
+    out = (L, Sg, M.reshape((2 * ndof + 2) * Z, ndof * ndof + ndof), comp, lev)
     for a in out:
         a.setflags(write=False)
     return out
 
 
 @lru_cache(maxsize=64)
-def _fixed(brg, lam_i, lam_o, kin_control):
-    """The fixed attributes of a :class:`_HSProblem` (cached per bearing and raceway control; arrays read-only)."""
+def _fixed(brg, lam_i, lam_o, kin_control, ndof, arm):
+    """The fixed attributes of a :class:`_HSProblem` (cached per bearing, raceway control, ring unknowns and tilt
+    arm ℜ [m]; arrays read-only)."""
     Z, A = brg.Z, brg.A
-    c, L, Sg, Msum = _constants(brg)
+    L, Sg, Msum, comp, lev = _constants(brg, ndof)
     Ki, Ko, k_eps = _stiffness_constants(brg)
     gp = brg.D / brg.dm
     outer = kin_control == "outer"          # the contact whose zero spin sets β
@@ -85,7 +87,8 @@ def _fixed(brg, lam_i, lam_o, kin_control):
 
     m = brg.ball_mass
     f = dict(
-        brg=brg, Z=Z, A=A, R=brg.R_inner_locus, c=c, L=L, Sg=Sg, Msum=Msum, cr=c[None, :],
+        brg=brg, Z=Z, A=A, R=arm, L=L, Sg=Sg, Msum=Msum, ng=ndof, comp=comp, lev=lev,
+        rows_k=tuple((k, int(comp[k]), lev[k][None, :]) for k in range(1, ndof)),   # rows after δa, levers (1, Z)
         off=row(0.0, A * np.cos(brg.alpha0)),
         c0=row((brg.fi - 0.5) * brg.D, (brg.fo - 0.5) * brg.D),      # |O_i − C|, |C − O_o| unloaded [m]
         lam_i=lam_i, lam_o=lam_o, kin_control=kin_control, Ki0=Ki, Ko0=Ko, k_eps=k_eps,
@@ -98,12 +101,15 @@ def _fixed(brg, lam_i, lam_o, kin_control):
         m=m, J=m * brg.D**2 / 10.0, mdm2=0.5 * m * brg.dm, has_lam=bool(lam_i or lam_o),
         LAMD=row(lam_i / brg.D, lam_o / brg.D),
         LP=row(lam_i / brg.D, -lam_o / brg.D),                          # ∂r_b/∂M_g = Σ_c LP_c e_c
-        mom=lam_i * brg.fi / brg.R_inner_locus * c,                     # moment of the inner friction per M_g
+        # the couple of the inner friction per M_g, in the tilt rows (M/ℜ, M_y/ℜ): −λ_i f_i M_g w / ℜ
+        mom=tuple((k, lam_i * brg.fi / arm * lev[k]) for k in range(2, ndof, 2)),
         PM=row(1.0, -1.0),                      # the inner contact pushes the ball, the outer holds it
         onesZ=np.ones((Z, 1)))
     for v in f.values():
         if isinstance(v, np.ndarray):
             v.setflags(write=False)
+    for _, v in f["mom"]:
+        v.setflags(write=False)
     return f
 
 
@@ -151,8 +157,8 @@ class _HSProblem:
     Constants are held as (1, n) rows: numpy's fast path for operands of one shape then serves a single
     load case, and a batch broadcasts them."""
 
-    def __init__(self, brg, F_app, scale, omega, free_g, stiffness, lam_i, lam_o, kin_control):
-        self.__dict__.update(_fixed(brg, lam_i, lam_o, kin_control))
+    def __init__(self, brg, F_app, scale, omega, free_g, stiffness, lam_i, lam_o, kin_control, arm):
+        self.__dict__.update(_fixed(brg, lam_i, lam_o, kin_control, F_app.shape[1], arm))
         self.stiffness, self.per_ball = stiffness, stiffness == "per_ball"
         self.film = None
         self.fz = None
@@ -172,12 +178,13 @@ class _HSProblem:
         self.wrsZ = np.repeat((self.w_ref / scale)[:, None], Z, axis=1)
         self.Aw = (self.A / self.w_ref)[:, None]
         self.AwZ = np.repeat(self.Aw, Z, axis=1)
-        self.mask = np.ones((nb, 3 + 2 * Z))
-        self.mask[:, :3] = free_g
-        act = np.ones((nb, 4))
-        act[:, :3] = free_g
+        ng = self.ng
+        self.mask = np.ones((nb, ng + 2 * Z))
+        self.mask[:, :ng] = free_g
+        act = np.ones((nb, ng + 1))
+        act[:, :ng] = free_g
         self.act, self.act2 = act, act[:, :, None] * act[:, None, :]
-        self.eye_fix = np.eye(4)[None] * (1.0 - act)[:, :, None]
+        self.eye_fix = np.eye(ng + 1)[None] * (1.0 - act)[:, :, None]
 
     def rows(self, idx):
         new = _HSProblem.__new__(_HSProblem)
@@ -189,12 +196,12 @@ class _HSProblem:
         return new
 
     def centres(self, g):
-        """Inner groove-centre offsets (A1 | A2) per ball (nb, 2Z) [m] at the ring unknowns g (nb, 3)."""
+        """Inner groove-centre offsets (A1 | A2) per ball (nb, 2Z) [m] at the ring unknowns g (nb, ndof)."""
         return g @ self.L + self.off
 
     # ------------------------------------------------------------------ residual
     def evaluate(self, z):
-        r"""Everything at the unknowns z (nb, 3 + 2Z).
+        r"""Everything at the unknowns z (nb, ndof + 2Z).
 
         Contacts: n_c = (sin α_c, cos α_c) the unit vectors O_i − C (inner) and C − O_o (outer),
         δ_c = |·| − (f_c − ½)D, Q_c = K_c δ_c^1.5 (an open contact: the tension stiffness k_ε δ).
@@ -206,13 +213,13 @@ class _HSProblem:
         ω_R = −[Q_o E_o R_o ω_cage + Q_i E_i R_i (ω − ω_cage)] / (Q_o E_o² + Q_i E_i²)
         (:func:`thermobear.contact.kinematics.caged_ball_kinematics`; own no-slip −ω R_o R_i / det when
         both contacts are open); F_c = ½ m dm ω_cage², M_g = J ω_R ω_cage sin β."""
-        nb, Z, A = z.shape[0], self.Z, self.A
+        nb, Z, A, ng = z.shape[0], self.Z, self.A, self.ng
         Z2, Z3 = 2 * Z, 3 * Z
         st = _HSState.__new__(_HSState)
         V = np.empty((nb, 4 * Z))                          # [p | X1 | q | X2]: O_i − C and C − O_o
-        np.multiply(z[:, 3:3 + Z], A, out=V[:, Z:Z2])
-        np.multiply(z[:, 3 + Z:], A, out=V[:, Z3:])
-        Ac = self.centres(z[:, :3])
+        np.multiply(z[:, ng:ng + Z], A, out=V[:, Z:Z2])
+        np.multiply(z[:, ng + Z:], A, out=V[:, Z3:])
+        Ac = self.centres(z[:, :ng])
         np.subtract(Ac[:, :Z], V[:, Z:Z2], out=V[:, :Z])
         np.subtract(Ac[:, Z:], V[:, Z3:], out=V[:, Z2:Z3])
         sq = V * V
@@ -251,14 +258,15 @@ class _HSProblem:
             T = np.concatenate((st.Mg, st.Mg), axis=1) * self.LAMD
             F[:, :Z2] += T * n[:, Z2:]
             F[:, Z2:] -= T * n[:, :Z2]
-        res = np.empty((nb, 3 + Z2))
-        np.subtract(F[:, :Z], F[:, Z:Z2], out=res[:, 3:3 + Z])
-        np.subtract(F[:, Z2:Z3], F[:, Z3:], out=res[:, 3 + Z:])
-        res[:, 3 + Z:] += st.Fc
+        res = np.empty((nb, ng + Z2))
+        np.subtract(F[:, :Z], F[:, Z:Z2], out=res[:, ng:ng + Z])
+        np.subtract(F[:, Z2:Z3], F[:, Z3:], out=res[:, ng + Z:])
+        res[:, ng + Z:] += st.Fc
         r_g = F @ self.Sg
         if self.lam_i:
-            r_g[:, 2] -= st.Mg @ self.mom
-        np.subtract(r_g, self.F_app, out=res[:, :3])
+            for k, mom in self.mom:
+                r_g[:, k] -= st.Mg @ mom
+        np.subtract(r_g, self.F_app, out=res[:, :ng])
         res *= self.inv_s
         norm = np.abs(res * self.mask).max(axis=1)
         if not norm.max() < np.inf:                  # an overflow: a residual too large to accept (continue)
@@ -371,11 +379,11 @@ class _HSProblem:
         with the residual r_W = (ω_cage − Σ Q_i ω_c,j / Σ Q_i)/ω_ref, zero at every iterate: its row
         carries the dependence of the cage speed on every ball (a rank-one coupling), so the Newton
         step of the augmented system is that of the reduced one.  The per-ball 2×2 blocks are
-        eliminated in closed form (Schur complement; a 4×4 system per case).  All kinematic
+        eliminated in closed form (Schur complement; an (ndof + 1)² system per case).  All kinematic
         derivatives (of β, the contact radii, ω_c,j, ω_R, F_c and M_g with respect to α_i, α_o, Q_i,
         Q_o and ω_cage) are analytic; dα_i/d(A − X) = e_i/d_i, dα_o/dX = e_o/d_o."""
         B, C, Rr, S = self._blocks(st)
-        nb, Z = st.res.shape[0], self.Z
+        nb, Z, ng = st.res.shape[0], self.Z, self.ng
         # per-ball 2×2 inverse [[d, −b], [−c, a]] / det of B = [[B00, B01], [B10, B11]] (rows of B (nb, 4, Z))
         B00, B01, B10, B11 = B[:, 0], B[:, 1], B[:, 2], B[:, 3]
         det2 = B00 * B11 - B01 * B10
@@ -386,29 +394,29 @@ class _HSProblem:
             B00, B11 = B00 - bad, B11 - bad
             det2 = B00 * B11 - B01 * B10
         idet = 1.0 / det2
-        # Y = B⁻¹ [∂r_b/∂(g, ω_cage) | r_b]: rows (nb, 5, Z) of its two components
+        # Y = B⁻¹ [∂r_b/∂(g, ω_cage) | r_b]: rows (nb, ndof + 2, Z) of its two components
         Y0 = (B11 * idet)[:, None] * C[:, 0] - (B01 * idet)[:, None] * C[:, 1]
         Y1 = (B00 * idet)[:, None] * C[:, 1] - (B10 * idet)[:, None] * C[:, 0]
-        T = Rr[:, 0] @ Y0.transpose(0, 2, 1) + Rr[:, 1] @ Y1.transpose(0, 2, 1)       # (nb, 4, 5)
-        S -= T[..., :4]
-        rhs = T[..., 4]
-        rhs[:, :3] -= st.res[:, :3]
+        T = Rr[:, 0] @ Y0.transpose(0, 2, 1) + Rr[:, 1] @ Y1.transpose(0, 2, 1)       # (nb, ndof + 1, ndof + 2)
+        S -= T[..., :ng + 1]
+        rhs = T[..., ng + 1]
+        rhs[:, :ng] -= st.res[:, :ng]
         rhs *= self.act
         S *= self.act2
         S += self.eye_fix
         try:
-            dG = np.linalg.solve(S, rhs[..., None])        # (nb, 4, 1)
+            dG = np.linalg.solve(S, rhs[..., None])        # (nb, ndof + 1, 1)
         except np.linalg.LinAlgError:                       # a singular case: regularise it
             sd = np.abs(np.linalg.det(S))
-            S = np.where((sd < 1e-300)[:, None, None], S + 1e-6 * np.eye(4)[None], S)
+            S = np.where((sd < 1e-300)[:, None, None], S + 1e-6 * np.eye(ng + 1)[None], S)
             dG = np.linalg.solve(S, rhs[..., None])
-        ext = np.empty((nb, 1, 5))
-        ext[:, 0, :4] = dG[:, :, 0]
-        ext[:, 0, 4] = 1.0
-        dz = np.empty((nb, 3 + 2 * Z))
-        dz[:, :3] = dG[:, :3, 0]
-        np.negative((ext @ Y0)[:, 0], out=dz[:, 3:3 + Z])
-        np.negative((ext @ Y1)[:, 0], out=dz[:, 3 + Z:])
+        ext = np.empty((nb, 1, ng + 2))
+        ext[:, 0, :ng + 1] = dG[:, :, 0]
+        ext[:, 0, ng + 1] = 1.0
+        dz = np.empty((nb, ng + 2 * Z))
+        dz[:, :ng] = dG[:, :ng, 0]
+        np.negative((ext @ Y0)[:, 0], out=dz[:, ng:ng + Z])
+        np.negative((ext @ Y1)[:, 0], out=dz[:, ng + Z:])
         return dz
 
     def _pair(self, a, b):
@@ -496,13 +504,13 @@ class _HSProblem:
 
     def _blocks(self, st):
         """The scaled blocks of the augmented Jacobian: per ball B = ∂r_b/∂X (nb, 4, Z) (entries aa, ar, ra, rr:
-        r_b axial, radial × X axial, radial), C = [∂r_b/∂g, ∂r_b/∂ω_cage, r_b] (nb, 2, 5, Z), R = the balls'
-        part of ∂(r_g, r_W)/∂X (nb, 2, 4, Z) (by component of X), and the global block
-        ∂(r_g, r_W)/∂(g, ω_cage) before the elimination (nb, 4, 4)."""
+        r_b axial, radial × X axial, radial), C = [∂r_b/∂g, ∂r_b/∂ω_cage, r_b] (nb, 2, ndof + 2, Z), R = the
+        balls' part of ∂(r_g, r_W)/∂X (nb, 2, ndof + 1, Z) (by component of X), and the global block
+        ∂(r_g, r_W)/∂(g, ω_cage) before the elimination (nb, ndof + 1, ndof + 1)."""
         Mg_m, Mg_Q, Mg_W, W_m, W_Q = self._kinematic_derivatives(st)
         nb, Z = st.res.shape[0], self.Z
         Z2 = 2 * Z
-        n, d, Q, dQ, c = st.n, st.d, st.Q, st.dQ, self.cr
+        n, d, Q, dQ = st.n, st.d, st.Q, st.dQ
         sn, cs = n[:, :Z2], n[:, Z2:]
         if self.film is not None:
             # film law: Q_c(δ_c, α_c), ∂Q/∂α = −(∂G/∂α) dQ/dδ, so dQ/dp = dQ/dδ n + ∂Q/∂α e/d
@@ -559,53 +567,59 @@ class _HSProblem:
         for e in range(4):
             np.subtract(H[e][:, Z:], H[e][:, :Z], out=B[:, e])
         B *= As[:, None]
-        C = np.empty((nb, 2, 5, Z))
+        ng, rows_k = self.ng, self.rows_k
+        C = np.empty((nb, 2, ng + 2, Z))
         for row in range(2):
-            hx, hy = H[2 * row][:, :Z] * As, H[2 * row + 1][:, :Z] * As
-            C[:, row, 0] = hx
-            np.multiply(hy, c, out=C[:, row, 1])
-            np.multiply(hx, c, out=C[:, row, 2])
+            h = (H[2 * row][:, :Z] * As, H[2 * row + 1][:, :Z] * As)
+            C[:, row, 0] = h[0]
+            for k, ck, wk in rows_k:
+                np.multiply(h[ck], wk, out=C[:, row, k])
         wrs = self.wrsZ
         FcW = st.WZ * (2.0 * self.mdm2)
         if self.has_lam:
-            np.multiply(vA * Mg_W, wrs, out=C[:, 0, 3])
-            np.multiply(vR * Mg_W + FcW, wrs, out=C[:, 1, 3])
+            np.multiply(vA * Mg_W, wrs, out=C[:, 0, ng])
+            np.multiply(vR * Mg_W + FcW, wrs, out=C[:, 1, ng])
         else:
-            C[:, 0, 3] = 0.0
-            np.multiply(FcW, wrs, out=C[:, 1, 3])
-        C[:, 0, 4] = st.res[:, 3:3 + Z]
-        C[:, 1, 4] = st.res[:, 3 + Z:]
-        # ring rows: d r_g/dp_i = L = W_tᵀ G_i + u m_iᵀ per ball, u = W_tᵀ (λ_i/D) e_i − (λ_i f_i/ℜ_i) c (tilt
-        # row), W_tᵀ = [[1, 0], [0, c], [c, 0]]; by X (p_i = A_c − X, p_o = X through M_g): u m_oᵀ − L
-        P = np.empty((nb, 8, Z))                      # L rows (F_a, F_r, M/ℜ_i) × (axial, radial), b_i
-        P[:, 0], P[:, 1] = Gaa[:, :Z], Gar[:, :Z]
-        np.multiply(Gra[:, :Z], c, out=P[:, 2])
-        np.multiply(Grr[:, :Z], c, out=P[:, 3])
-        np.multiply(Gaa[:, :Z], c, out=P[:, 4])
-        np.multiply(Gar[:, :Z], c, out=P[:, 5])
-        P[:, 6], P[:, 7] = bA[:, :Z], bR[:, :Z]
-        Rr = np.empty((nb, 2, 4, Z))
+            C[:, 0, ng] = 0.0
+            np.multiply(FcW, wrs, out=C[:, 1, ng])
+        C[:, 0, ng + 1] = st.res[:, ng:ng + Z]
+        C[:, 1, ng + 1] = st.res[:, ng + Z:]
+        # ring rows: d r_g/dp_i = L = W_tᵀ G_i + u m_iᵀ per ball, u = W_tᵀ (λ_i/D) e_i − (λ_i f_i/ℜ) w (tilt
+        # rows), W_tᵀ the levers (row k: w_k in component comp_k); by X (p_i = A_c − X, p_o = X through M_g):
+        # u m_oᵀ − L
+        P = np.empty((nb, 2 * ng + 2, Z))             # L rows (F_a, F_r, M/ℜ[, F_z, M_y/ℜ]) × (axial, radial), b_i
+        G = ((Gaa[:, :Z], Gar[:, :Z]), (Gra[:, :Z], Grr[:, :Z]))
+        P[:, 0], P[:, 1] = G[0]
+        for k, ck, wk in rows_k:
+            np.multiply(G[ck][0], wk, out=P[:, 2 * k])
+            np.multiply(G[ck][1], wk, out=P[:, 2 * k + 1])
+        P[:, 2 * ng], P[:, 2 * ng + 1] = bA[:, :Z], bR[:, :Z]
+        Rr = np.empty((nb, 2, ng + 1, Z))
         if self.lam_i:
             li = self.LAMD[0, 0]
-            u = (li * cs[:, :Z], li * -sn[:, :Z] * c, li * cs[:, :Z] * c - self.mom)
-            for m in range(3):
+            u = [li * cs[:, :Z]] + [li * cs[:, :Z] * wk if ck == 0 else li * -sn[:, :Z] * wk for _, ck, wk in rows_k]
+            for k, mom in self.mom:
+                u[k] = u[k] - mom
+            for m in range(ng):
                 P[:, 2 * m] += u[m] * mA[:, :Z]
                 P[:, 2 * m + 1] += u[m] * mR[:, :Z]
                 np.multiply(u[m] * mA[:, Z:] - P[:, 2 * m], As, out=Rr[:, 0, m])
                 np.multiply(u[m] * mR[:, Z:] - P[:, 2 * m + 1], As, out=Rr[:, 1, m])
             S_W = np.stack([(um * Mg_W).sum(1) for um in u], axis=1) * (self.w_ref / self.scale)[:, None]
         else:
-            np.multiply(P[:, :6].reshape(nb, 3, 2, Z).transpose(0, 2, 1, 3), -As[:, None, None], out=Rr[:, :, :3])
+            np.multiply(P[:, :2 * ng].reshape(nb, ng, 2, Z).transpose(0, 2, 1, 3), -As[:, None, None],
+                        out=Rr[:, :, :ng])
             S_W = 0.0
-        np.multiply(bA[:, :Z] - bA[:, Z:], self.AwZ, out=Rr[:, 0, 3])
-        np.multiply(bR[:, :Z] - bR[:, Z:], self.AwZ, out=Rr[:, 1, 3])
+        np.multiply(bA[:, :Z] - bA[:, Z:], self.AwZ, out=Rr[:, 0, ng])
+        np.multiply(bR[:, :Z] - bR[:, Z:], self.AwZ, out=Rr[:, 1, ng])
         # global block: Σ_j L W_t, and the cage row −Σ b_i W_t A/ω_ref
-        sums = P.reshape(nb, 8 * Z) @ self.Msum                  # (nb, 12)
-        S = np.empty((nb, 4, 4))
-        np.multiply(sums[:, :9].reshape(nb, 3, 3), self.As[:, :, None], out=S[:, :3, :3])
-        S[:, :3, 3] = S_W
-        np.multiply(sums[:, 9:], -self.Aw, out=S[:, 3, :3])
-        S[:, 3, 3] = 1.0
+        sums = P.reshape(nb, (2 * ng + 2) * Z) @ self.Msum         # (nb, ndof² + ndof)
+        n2 = ng * ng
+        S = np.empty((nb, ng + 1, ng + 1))
+        np.multiply(sums[:, :n2].reshape(nb, ng, ng), self.As[:, :, None], out=S[:, :ng, :ng])
+        S[:, :ng, ng] = S_W
+        np.multiply(sums[:, n2:], -self.Aw, out=S[:, ng, :ng])
+        S[:, ng, ng] = 1.0
         return B, C, Rr, S
 
     # ------------------------------------------------------------------ safeguards and path
@@ -620,17 +634,17 @@ class _HSProblem:
         F = max(F_c, |r_b|) — the next step then sees the contact."""
         if st.allpos:
             return dz
-        nb, Z, A = dz.shape[0], self.Z, self.A
+        nb, Z, A, ng = dz.shape[0], self.Z, self.A, self.ng
         Z2, Z3 = 2 * Z, 3 * Z
         dV = np.empty((nb, 4 * Z))
-        np.multiply(dz[:, 3:3 + Z], A, out=dV[:, Z:Z2])
-        np.multiply(dz[:, 3 + Z:], A, out=dV[:, Z3:])
-        dAc = dz[:, :3] @ self.L
+        np.multiply(dz[:, ng:ng + Z], A, out=dV[:, Z:Z2])
+        np.multiply(dz[:, ng + Z:], A, out=dV[:, Z3:])
+        dAc = dz[:, :ng] @ self.L
         np.subtract(dAc[:, :Z], dV[:, Z:Z2], out=dV[:, :Z])
         np.subtract(dAc[:, Z:], dV[:, Z3:], out=dV[:, Z2:Z3])
         nd = st.n * dV
         dd = nd[:, :Z2] + nd[:, Z2:]                                         # predicted change of δ_c
-        rb = np.abs(st.res[:, 3:])
+        rb = np.abs(st.res[:, ng:])
         F = np.maximum(st.Fc, np.maximum(rb[:, :Z], rb[:, Z:]) * self.scale[:, None])
         d_eta = (self._pair(F, F) / self.K0) ** (2.0 / 3.0)
         over = (st.dl < 0) & (st.dl + dd > d_eta)
@@ -639,15 +653,15 @@ class _HSProblem:
         kap = np.where(over, (d_eta - st.dl) / np.where(over, dd, 1.0), 1.0)
         kap = np.minimum(kap[:, :Z], kap[:, Z:])
         dz = dz.copy()
-        dz[:, 3:3 + Z] *= kap
-        dz[:, 3 + Z:] *= kap
+        dz[:, ng:ng + Z] *= kap
+        dz[:, ng + Z:] *= kap
         return dz
 
     def path(self, z, dz):
         """A step in polar form about the outer groove centre for each ball: radius ρ, angle α_o,
         dρ = n_o·dx, dα = e_o·dx/ρ (n_o = (sin α_o, cos α_o), e_o = (cos α_o, −sin α_o)); the rings linear."""
-        Z = self.Z
-        x1, x2, d1, d2 = z[:, 3:3 + Z], z[:, 3 + Z:], dz[:, 3:3 + Z], dz[:, 3 + Z:]
+        Z, ng = self.Z, self.ng
+        x1, x2, d1, d2 = z[:, ng:ng + Z], z[:, ng + Z:], dz[:, ng:ng + Z], dz[:, ng + Z:]
         r2 = x1 * x1
         r2 += x2 * x2
         rho = np.sqrt(r2)
@@ -666,17 +680,17 @@ class _HSProblem:
         into the race by ≈ step²/2ρ, far more than the δ_o of a lightly loaded ball).  ``lam=None``: the
         full step."""
         z, dz, rho, a, drho, da = path
-        Z = self.Z
+        Z, ng = self.Z, self.ng
         out = np.empty(z.shape)
         if lam is None:
-            np.add(z[:, :3], dz[:, :3], out=out[:, :3])
+            np.add(z[:, :ng], dz[:, :ng], out=out[:, :ng])
             r, t = rho + drho, a + da
         else:
             lc = lam[:, None]
-            np.add(z[:, :3], lc * dz[:, :3], out=out[:, :3])
+            np.add(z[:, :ng], lc * dz[:, :ng], out=out[:, :ng])
             r, t = rho + lc * drho, a + lc * da
-        np.multiply(r, np.sin(t), out=out[:, 3:3 + Z])
-        np.multiply(r, np.cos(t), out=out[:, 3 + Z:])
+        np.multiply(r, np.sin(t), out=out[:, ng:ng + Z])
+        np.multiply(r, np.cos(t), out=out[:, ng + Z:])
         return out
 
     def relax(self, z, st, todo):

@@ -8,7 +8,7 @@ rings held: the loaded ones pushed out by their centrifugal force (Jones 1960 [1
 §8.2 start), the light ones at the minimum of their potential energy (:func:`place`).
 
 All functions take the problem ``pb`` and states of :mod:`thermobear.loads.highspeed_model`; unknowns
-z (nb, 3 + 2Z) as there.
+z (nb, ndof + 2Z) as there (ndof = ``pb.ng`` ring unknowns).
 
 References
 ----------
@@ -30,10 +30,10 @@ _START_TOL = 0.3        # the start places a ball to this share of its external 
 
 
 def static_start(pb, g):
-    """Unknowns z (nb, 3 + 2Z) with the rings at g (nb, 3) and the balls of the static solution: on the
+    """Unknowns z (nb, ndof + 2Z) with the rings at g (nb, ndof) and the balls of the static solution: on the
     line of groove centres, the approach A_j − A split between the contacts so that K_i δi^1.5 = K_o δo^1.5
     (equal split for an open contact, where the regularising stiffness is the same on both sides)."""
-    nb, Z = g.shape[0], pb.Z
+    nb, Z, ng = g.shape[0], pb.Z, pb.ng
     Ac = pb.centres(g)
     A1, A2 = Ac[:, :Z], Ac[:, Z:]
     Aj = np.sqrt(A1 * A1 + A2 * A2)
@@ -44,10 +44,10 @@ def static_start(pb, g):
         Ki, Ko = pb.brg.K_i(al), pb.brg.K_o(al)
     share_o = np.where(s > 0, Ki ** (2.0 / 3.0) / (Ki ** (2.0 / 3.0) + Ko ** (2.0 / 3.0)), 0.5)
     r = (pb.c0[0, Z] + share_o * s) / Aj / pb.A
-    z = np.empty((nb, 3 + 2 * Z))
-    z[:, :3] = g
-    np.multiply(A1, r, out=z[:, 3:3 + Z])
-    np.multiply(A2, r, out=z[:, 3 + Z:])
+    z = np.empty((nb, ng + 2 * Z))
+    z[:, :ng] = g
+    np.multiply(A1, r, out=z[:, ng:ng + Z])
+    np.multiply(A2, r, out=z[:, ng + Z:])
     return z
 
 
@@ -55,7 +55,7 @@ def _external(pb, st):
     """The force on each ball besides its contact loads (centrifugal force and gyroscopic friction) at the
     state ``st``: (f1, f2) axial, radial (nb, Z) [N], r_b·scale − (Q_i n_i − Q_o n_o)."""
     Z = pb.Z
-    rb = st.res[:, 3:] * pb.scale[:, None]
+    rb = st.res[:, pb.ng:] * pb.scale[:, None]
     F = np.concatenate((st.Q, st.Q), axis=1) * st.n                 # [Q sin α | Q cos α] of both contacts
     return rb[:, :Z] - (F[:, :Z] - F[:, Z:2 * Z]), rb[:, Z:] - (F[:, 2 * Z:3 * Z] - F[:, 3 * Z:])
 
@@ -101,7 +101,7 @@ def start(pb, z):
     # light and unloaded balls: placed (flattened over the batch)
     k = np.flatnonzero((Qs <= fn) & (fn > 0))
     if k.size:
-        Ac = pb.centres(z[:, :3])
+        Ac = pb.centres(z[:, :pb.ng])
         X1, X2 = X1.ravel(), X2.ravel()
         ki = Ki if np.ndim(Ki) == 0 else Ki.ravel()[k]
         ko = Ko if np.ndim(Ko) == 0 else Ko.ravel()[k]
@@ -110,8 +110,8 @@ def start(pb, z):
                              f1.ravel()[k], f2.ravel()[k], ki, ko, mu, _START_TOL * fn.ravel()[k],
                              pb.c0[0, 0], pb.c0[0, Z], _BALL_CAP * A)
     out = z.copy()
-    out[:, 3:3 + Z] = X1.reshape(nb, Z) / A
-    out[:, 3 + Z:] = X2.reshape(nb, Z) / A
+    out[:, pb.ng:pb.ng + Z] = X1.reshape(nb, Z) / A
+    out[:, pb.ng + Z:] = X2.reshape(nb, Z) / A
     return out
 
 
@@ -202,9 +202,9 @@ def relax(pb, z, st, todo):
     gyroscopic friction at the iterate, frozen) is placed again by :func:`place` with the rings
     held; the case keeps the new positions if its residual falls.  Near the solution no ball
     qualifies, so the quadratic convergence of Newton is untouched.  Returns (z, st)."""
-    _nb, Z, A = z.shape[0], pb.Z, pb.A
+    Z, A, ng = pb.Z, pb.A, pb.ng
     s = pb.scale[:, None]
-    ar = np.abs(st.res[:, 3:])
+    ar = np.abs(st.res[:, ng:])
     rb = np.maximum(ar[:, :Z], ar[:, Z:])
     f1, f2 = _external(pb, st)
     fn = np.hypot(f1, f2)
@@ -213,13 +213,13 @@ def relax(pb, z, st, todo):
     if not light.any():
         return z, st
     k = np.flatnonzero(light)
-    Ac = pb.centres(z[:, :3])
+    Ac = pb.centres(z[:, :ng])
     X1, X2 = place(st.X1.ravel()[k], st.X2.ravel()[k], Ac[:, :Z].ravel()[k], Ac[:, Z:].ravel()[k],
                    f1.ravel()[k], f2.ravel()[k], pb.Ki0, pb.Ko0, (1e-9 / A) * np.repeat(pb.scale, Z)[k],
                    _BALL_TOL * fn.ravel()[k], pb.c0[0, 0], pb.c0[0, Z], _BALL_CAP * A)
     zn = z.copy()
     i, j = np.divmod(k, Z)
-    zn[i, 3 + j], zn[i, 3 + Z + j] = X1 / A, X2 / A
+    zn[i, ng + j], zn[i, ng + Z + j] = X1 / A, X2 / A
     cases = np.flatnonzero(light.any(axis=1))
     st2 = pb.rows(cases).evaluate(zn[cases])
     better = st2.norm < st.norm[cases]

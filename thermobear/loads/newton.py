@@ -50,7 +50,24 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["NewtonOptions", "NewtonResult", "newton", "ContinuationResult", "continuation"]
+__all__ = ["NewtonOptions", "NewtonResult", "newton", "ContinuationResult", "continuation", "RowState"]
+
+
+class RowState:
+    """A problem state whose arrays (named in ``FIELDS``) all have the load cases as leading axis: ``take`` and
+    ``put`` read and write rows of them (the state protocol of :func:`newton`)."""
+
+    FIELDS: tuple = ()
+
+    def take(self, idx):
+        new = type(self).__new__(type(self))
+        for k in self.FIELDS:
+            setattr(new, k, getattr(self, k)[idx])
+        return new
+
+    def put(self, idx, other):
+        for k in self.FIELDS:
+            getattr(self, k)[idx] = getattr(other, k)
 
 
 @dataclass(frozen=True)

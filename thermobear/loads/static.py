@@ -1,10 +1,11 @@
 r"""Low-speed quasi-static load distribution of a ball bearing with rigid rings.
 
 Equal inner and outer contact angles, no centrifugal force or gyroscopic moment: Jones (1960) [1]
-at low speed, Harris (2001) [2] §7.4, seed 004 eqs 6–8 [3] (there without tilt), generalised to a
-tilt θ and a moment M as the rigid-ring model of ISO/TS 16281 [4].
+at low speed, Harris (2001) [2] §7.4, seed 004 eqs 6–8 [3] (there without tilt), generalised to radial loads in both directions, tilts
+and moments about both radial axes: the five-degree-of-freedom rigid-ring model of ISO/TS 16281 [4].
 
-With the groove-centre offsets A1_j, A2_j of :mod:`thermobear.loads.rings`, ball j carries
+With the groove-centre offsets A1_j, A2_j of :mod:`thermobear.loads.rings` (five ring unknowns: δa, δr, θ
+in the x–y plane, δz, θ_y in the x–z plane), ball j carries
 
 .. math::
 
@@ -16,11 +17,13 @@ ring is in equilibrium when
 
 .. math::
 
-    F_a = Σ_j Q_j \sin α_j, \quad F_r = Σ_j Q_j \cos α_j \cos ψ_j, \quad
-    M = Σ_j Q_j \sin α_j ℜ_i \cos ψ_j .
+    F_a = Σ_j Q_j \sin α_j, \quad F_r = Σ_j Q_j \cos α_j \cos ψ_j, \quad F_z = Σ_j Q_j \cos α_j \sin ψ_j,
 
-Unknowns y = (δa'/A, δr/A, θℜ_i/A), δa' the axial displacement from the position where the balls
-just touch at α0 (δa = δa' + A sin α0).  The approach A_j − A is formed without cancellation,
+    M = Σ_j Q_j \sin α_j ℜ \cos ψ_j, \quad M_y = Σ_j Q_j \sin α_j ℜ \sin ψ_j .
+
+Unknowns y = (δa'/A, δr/A, θℜ/A, δz/A, θ_yℜ/A), δa' the axial displacement from the position where
+the balls just touch at α0 (δa = δa' + A sin α0); in-plane loads (F_z = M_y = 0) solve the first three
+(δz = θ_y = 0 by symmetry).  The approach A_j − A is formed without cancellation,
 s = [2A(sin α0 d1 + cos α0 d2) + d1² + d2²]/(A_j + A) with (d1, d2) = y·L, so that tiny loads
 (|s| ≪ A) keep full relative precision.  The Jacobian is the stiffness matrix, exact and symmetric:
 per ball dQ n nᵀ + (Q/A_j) e eᵀ (n = (sin α, cos α), e = (cos α, −sin α)), summed with the lever
@@ -41,17 +44,19 @@ References
 """
 from __future__ import annotations
 
+from dataclasses import replace
 from functools import lru_cache
 
 import numpy as np
 
 from thermobear.contact.geometry import BallBearing
 from thermobear.errors import InputError, NoConvergence, NoEquilibrium
-from thermobear.loads.newton import NewtonOptions, continuation, newton
-from thermobear.loads.rings import (STIFFNESS_MODES, LoadDistribution, azimuths, batch_loads, check_stiffness, lever_matrix,
-                                    unbatch)
+from thermobear.loads.newton import NewtonOptions, RowState, continuation, newton
+from thermobear.loads.rings import (STIFFNESS_MODES, LoadDistribution, RingLoads, arm_length, azimuths,
+                                    check_stiffness, lever_matrix, ring_direction, ring_loads, ring_sums, unbatch)
 
-__all__ = ["load_distribution_static", "axial_contact_angle", "needs_high_speed", "LoadDistribution", "STIFFNESS_MODES"]
+__all__ = ["load_distribution_static", "ring_reaction", "reaction_problem", "reaction_of", "axial_contact_angle", "needs_high_speed", "LoadDistribution",
+           "STIFFNESS_MODES"]
 
 _TOL = 1e-12          # relative equilibrium residual at which Newton stops
 _MAXIT = 60
@@ -146,58 +151,46 @@ def needs_high_speed(brg: BallBearing, n_rpm, Q_typical, threshold: float = 0.05
 
 
 @lru_cache(maxsize=32)
-def _constants(brg):
-    """Fixed arrays of a bearing (read-only): the lever matrix L (3, 2Z) [m], the groove-centre offsets at
-    first touch (A sin α0 | A cos α0) (2Z,) and twice them, K_n at the nominal angle [N/m^1.5], and the sum
-    matrix (5 Z, 12) turning per-ball rows (g11, g12, g22, Q sin α, Q cos α) into the Jacobian's nine entries
-    Σ g11, Σ g12 c, Σ g11 c / Σ g12 c, Σ g22 c², Σ g12 c² / Σ g11 c, Σ g12 c², Σ g11 c² and the ring forces
-    Σ Q sin α, Σ Q cos α c, Σ Q sin α c (c = cos ψ: the lever arms of L)."""
+def _constants(brg, ndof):
+    """Fixed arrays of a bearing (read-only): the lever matrix L (ndof, 2Z) [m], the groove-centre offsets at
+    first touch (A sin α0 | A cos α0) (2Z,) and twice them, the sum matrix (5 Z, ndof² + ndof) turning per-ball
+    rows (g_aa, g_ar, g_rr, Q sin α, Q cos α) into the Jacobian and the ring forces
+    (:func:`thermobear.loads.rings.ring_sums`), and K_n at the nominal angle [N/m^1.5]."""
     Z, A = brg.Z, brg.A
-    c = np.cos(azimuths(Z))
-    M = np.zeros((5, Z, 12))
-    one, c2 = np.ones(Z), c * c
-    for row, cols, w in ((0, (0,), one), (1, (1, 3), c), (0, (2, 6), c), (2, (4,), c2), (1, (5, 7), c2),
-                         (0, (8,), c2), (3, (9,), one), (4, (10,), c), (3, (11,), c)):
-        for col in cols:
-            M[row, :, col] = w
+    L = lever_matrix(brg, ndof)
+    sums = ring_sums(Z, ndof)
     A0 = np.concatenate([np.full(Z, A * np.sin(brg.alpha0)), np.full(Z, A * np.cos(brg.alpha0))])
-    out = (lever_matrix(brg), A0, 2.0 * A0, M.reshape(5 * Z, 12))
+    out = (L, A0, 2.0 * A0, sums)
     for v in out:
         v.setflags(write=False)
     return out + (float(brg.Kn()),)
 
 
-class _StaticState:
+class _StaticState(RowState):
     """Residual, Jacobian and ball geometry at one iterate (leading axis: the load cases)."""
 
     FIELDS = ("y", "AA", "Aj", "s", "res", "J", "norm")
-
-    def take(self, idx):
-        new = _StaticState.__new__(_StaticState)
-        for k in self.FIELDS:
-            setattr(new, k, getattr(self, k)[idx])
-        return new
-
-    def put(self, idx, other):
-        for k in self.FIELDS:
-            getattr(self, k)[idx] = getattr(other, k)
 
 
 class _StaticProblem:
     """The low-speed equilibrium of a batch of load cases as a problem of :func:`thermobear.loads.newton.newton`.
 
-    Unknowns y (nb, 3) (module docstring); rows with θ held (M = None) keep y[:, 2] fixed."""
+    Unknowns y (nb, ndof) (module docstring); the unknowns with ``free`` 0 (the tilts when no moment is given)
+    are held."""
 
-    def __init__(self, brg, F_app, scale, tilt_free, stiffness):
+    def __init__(self, brg, F_app, scale, free, stiffness):
         self.brg, self.F_app, self.scale = brg, F_app, scale
+        self.ndof = F_app.shape[1]
         self.inv_scale = 1.0 / scale[:, None]
         self.J_scale = (brg.A / scale)[:, None, None]
         self.zero = np.max(np.abs(F_app), axis=1) == 0.0
         self.any_zero = bool(self.zero.any())
-        self.tilt_free, self.per_ball = tilt_free, stiffness == "per_ball"
+        self.free, self.per_ball = free, stiffness == "per_ball"
+        fi = np.flatnonzero(free)
+        self.all_free = fi.size == free.size
+        self.free_idx = slice(0, fi.size) if fi.size and fi[-1] == fi.size - 1 else fi    # a prefix: a view
         self.Z, self.A = brg.Z, brg.A
-        self.L, self.A0, self.A0x2, self.sums, self.Kn0 = _constants(brg)
-        self.free = np.array([1.0, 1.0, 1.0 if tilt_free else 0.0])
+        self.L, self.A0, self.A0x2, self.sums, self.Kn0 = _constants(brg, self.ndof)
 
     def rows(self, idx):
         new = _StaticProblem.__new__(_StaticProblem)
@@ -220,7 +213,7 @@ class _StaticProblem:
         return AA, Aj, s
 
     def evaluate(self, y):
-        Z, nb = self.Z, y.shape[0]
+        Z, nb, nd = self.Z, y.shape[0], self.ndof
         AA, Aj, s = self.geometry(y)
         sp = np.maximum(s, 0.0)
         if self.per_ball:
@@ -249,50 +242,26 @@ class _StaticProblem:
         out = P.reshape(nb, 5 * Z) @ self.sums
         st = _StaticState.__new__(_StaticState)
         st.y, st.AA, st.Aj, st.s = y, AA, Aj, s
-        st.res = (out[:, 9:] - self.F_app) * self.inv_scale
-        st.J = out[:, :9].reshape(nb, 3, 3) * self.J_scale
-        norm = np.abs(st.res if self.tilt_free else st.res[:, :2]).max(axis=1)
+        n2 = nd * nd
+        st.res = (out[:, n2:] - self.F_app) * self.inv_scale
+        st.J = out[:, :n2].reshape(nb, nd, nd) * self.J_scale
+        norm = np.abs(st.res if self.all_free else st.res[:, self.free_idx]).max(axis=1)
         st.norm = np.where(self.zero, 0.0, norm) if self.any_zero else norm
         return st
 
     def direction(self, st):
-        return ring_direction(st.J, st.res, self.tilt_free)
+        return ring_direction(st.J, st.res, self.free)
 
 
-def ring_direction(J, r, tilt_free):
-    """Newton direction −J⁻¹ r of the ring unknowns (nb, 3), θ held (its row and column dropped) when
-    ``tilt_free`` is False.  A singular case (no ball in contact) is regularised (+1e-3 on the diagonal:
-    a push towards contact); one singular even then gets NaN (it fails)."""
-    if not tilt_free:
-        J = J.copy()
-        J[:, 2, :] = 0.0
-        J[:, :, 2] = 0.0
-        J[:, 2, 2] = 1.0
-        r = r * np.array([1.0, 1.0, 0.0])
-    try:
-        return -np.linalg.solve(J, r[..., None])[..., 0]
-    except np.linalg.LinAlgError:
-        pass
-    J = J + (np.abs(np.linalg.det(J)) <= 1e-300)[:, None, None] * (1e-3 * np.diag([1.0, 1.0, float(tilt_free)]))
-    try:
-        return -np.linalg.solve(J, r[..., None])[..., 0]
-    except np.linalg.LinAlgError:
-        out = np.full(r.shape, np.nan)
-        for k in range(r.shape[0]):
-            try:
-                out[k] = -np.linalg.solve(J[k], r[k])
-            except np.linalg.LinAlgError:
-                pass
-        return out
-
-
-def _start(brg, Fa, Fr, Mv, tilt_free, Kn0):
-    """Scaled unknowns y (nb, 3) to start from: the pure-axial closed form for F_a (plus a share of F_r for
-    an angular contact bearing), Stribeck's Q_max ≈ 5 F_r/(Z cos α) radially, and a tilt carrying a
-    moment larger than the other loads at the balls at ψ = 0 and π."""
-    Z, A, R = brg.Z, brg.A, brg.R_inner_locus
+def _start(brg, F, ndof, tilt_free, arm, Kn0):
+    """Scaled unknowns y (nb, ndof) to start from, the loads F (nb, 5) [N, N m]: the pure-axial closed form for
+    F_a (plus a share of the radial load for an angular contact bearing), Stribeck's Q_max ≈ 5 F_r/(Z cos α)
+    along the radial load, and a tilt carrying a moment larger than the other loads at the balls on its plane."""
+    Z, A = brg.Z, brg.A
+    Fa, Fy, Mv, Fz, My = F.T
     nb = Fa.size
-    y = np.zeros((nb, 3))
+    y = np.zeros((nb, ndof))
+    Fr = np.hypot(Fy, Fz)
     if brg.kind == "thrust":
         y[:, 0] = (Fa / Z / Kn0) ** (2.0 / 3.0) / A
     else:
@@ -303,13 +272,21 @@ def _start(brg, Fa, Fr, Mv, tilt_free, Kn0):
         Qmax = 5.0 * Fr / (Z * np.maximum(ca0, 0.2))
         # the clearance is taken up radially only when no axial load has taken it up already
         dr0 = (Qmax / Kn0) ** (2.0 / 3.0) / np.maximum(ca0, 0.2) + np.where(Fa_eff > 0, 0.0, brg.Pd / 2.0)
-        y[:, 1] = np.where(Fr > 0, dr0 / A, 0.0)
+        nr = np.where(Fr > 0, Fr, 1.0)
+        y[:, 1] = np.where(Fr > 0, dr0 / A * (Fy / nr), 0.0)
+        if ndof == 5:
+            y[:, 3] = np.where(Fr > 0, dr0 / A * (Fz / nr), 0.0)
     if tilt_free:
-        Fm_eq = 4.0 * np.abs(Mv) / (R * Z) * Z          # rough axial load of the most loaded balls
-        mdom = np.abs(Mv) / R > np.maximum(Fa, Fr)
+        Mabs = np.hypot(Mv, My) if ndof == 5 else np.abs(Mv)
+        Fm_eq = 4.0 * Mabs / (arm * Z) * Z              # rough axial load of the most loaded balls
+        mdom = Mabs / arm > np.maximum(Fa, Fr)
         if np.any(mdom) and brg.kind != "thrust":
-            al_m = axial_contact_angle(brg, Fm_eq[mdom], Kn0)
-            y[mdom, 2] = np.sign(Mv[mdom]) * (np.cos(brg.alpha0) * np.tan(al_m))
+            t = np.cos(brg.alpha0) * np.tan(axial_contact_angle(brg, Fm_eq[mdom], Kn0))
+            if ndof == 5:
+                y[mdom, 2] = t * Mv[mdom] / Mabs[mdom]
+                y[mdom, 4] = t * My[mdom] / Mabs[mdom]
+            else:
+                y[mdom, 2] = np.sign(Mv[mdom]) * t
     return y
 
 
@@ -322,31 +299,32 @@ def _over_shoulder(pb, y):
     return np.any((s > 0) & (AA[:, :pb.Z] <= 0), axis=1)
 
 
-def _solve(brg, Fa, Fr, Mv, tilt_free, stiffness, tol, maxiter, y0=None):
-    """Newton from the closed-form start (or ``y0``) on a batch of load cases: NewtonResult."""
-    F_app = np.stack([Fa, Fr, Mv / brg.R_inner_locus], axis=1)           # moment as a force at arm ℜ_i
+def _solve(brg, loads, stiffness, tol, maxiter, arm, y0=None, factor=1.0):
+    """Newton from the closed-form start (or ``y0``) on a batch of load cases (:class:`RingLoads`, scaled by
+    ``factor``): NewtonResult and the problem."""
+    F_app = loads.applied(arm, factor)                                   # moments as forces at the arm ℜ
     scale = np.maximum(np.max(np.abs(F_app), axis=1), 1e-300)
-    pb = _StaticProblem(brg, F_app, scale, tilt_free, stiffness)
-    y = _start(brg, Fa, Fr, Mv, tilt_free, pb.Kn0) if y0 is None else np.array(y0, dtype=float)
-    return newton(pb, y, NewtonOptions(tol=tol, maxiter=maxiter, halvings=_HALVINGS)), pb
+    pb = _StaticProblem(brg, F_app, scale, loads.free(), stiffness)
+    if y0 is None:
+        y0 = _start(brg, loads.F if factor == 1.0 else factor * loads.F, loads.ndof, loads.tilt_free, arm, pb.Kn0)
+    return newton(pb, np.array(y0, dtype=float), NewtonOptions(tol=tol, maxiter=maxiter, halvings=_HALVINGS)), pb
 
 
-def _continue_in_load(brg, Fa, Fr, Mv, tilt_free, stiffness, tol, maxiter):
-    """Continuation in the load magnitude for the cases (Fa, Fr, Mv) that failed from the closed-form
-    start: the same load ratios ×10, ×100, … ×1e6 from the closed-form start until one converges (for
-    each case its first k), then back down in steps of √10 to the given loads, each from the last
-    solution.  Returns a ContinuationResult (unknowns y, ``ok`` per case, iterations)."""
+def _continue_in_load(brg, loads, stiffness, tol, maxiter, arm):
+    """Continuation in the load magnitude for the cases ``loads`` that failed from the closed-form start: the
+    same load ratios ×10, ×100, … ×1e6 from the closed-form start until one converges (for each case its first
+    k), then back down in steps of √10 to the given loads, each from the last solution.  Returns a
+    ContinuationResult (unknowns y, ``ok`` per case, iterations)."""
     thr = max(tol, 1e-9)
-    nc = Fa.size
+    nc = loads.nb
     k_up = np.zeros(nc, int)
-    y_up = np.zeros((nc, 3))
+    y_up = np.zeros((nc, loads.ndof))
     its = np.zeros(nc, int)
     for k in range(1, 7):
         todo = np.flatnonzero(k_up == 0)
         if not todo.size:
             break
-        f = 10.0 ** k
-        r, _ = _solve(brg, f * Fa[todo], f * Fr[todo], f * Mv[todo], tilt_free, stiffness, tol, maxiter)
+        r, _ = _solve(brg, loads.rows(todo), stiffness, tol, maxiter, arm, factor=10.0 ** k)
         its[todo] += r.iterations
         good = r.norm <= thr
         k_up[todo[good]] = k
@@ -358,7 +336,9 @@ def _continue_in_load(brg, Fa, Fr, Mv, tilt_free, stiffness, tol, maxiter):
             path[j, :e.size] = 10.0 ** e
 
     def solve(idx, y, f, stage):
-        r, _ = _solve(brg, f * Fa[idx], f * Fr[idx], f * Mv[idx], tilt_free, stiffness, tol, maxiter, y0=y)
+        sub = loads.rows(idx)
+        sub = RingLoads(sub.shape, f[:, None] * sub.F, sub.tilt_free, sub.ndof)
+        r, _ = _solve(brg, sub, stiffness, tol, maxiter, arm, y0=y)
         r.converged = r.norm <= thr
         return r
 
@@ -368,27 +348,33 @@ def _continue_in_load(brg, Fa, Fr, Mv, tilt_free, stiffness, tol, maxiter):
     return res
 
 
-def load_distribution_static(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, *, stiffness: str = "nominal",
-                             tol: float = _TOL, maxiter: int = _MAXIT, start=None,
-                             continuation: bool = True) -> LoadDistribution:
-    r"""Quasi-static (low-speed) load distribution, rigid rings.
+def load_distribution_static(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, *, Fz=0.0, My=None,
+                             stiffness: str = "nominal", tol: float = _TOL, maxiter: int = _MAXIT, start=None,
+                             continuation: bool = True, tilt_arm: str = "groove") -> LoadDistribution:
+    r"""Quasi-static (low-speed) load distribution, rigid rings, five degrees of freedom.
 
     Parameters
     ----------
     brg : BallBearing
     Fa : array_like    axial load on the inner ring [N], ≥ 0
-    Fr : array_like    radial load on the inner ring [N], ≥ 0, acting towards ψ = 0
-    M : array_like     tilting moment [N m]; ``None`` holds the tilt at θ = 0 (shaft held by two bearings)
+    Fr : array_like    radial load on the inner ring along y (towards ψ = 0) [N]
+    M : array_like     moment in the x–y plane [N m] (loads the balls at ψ = 0 towards +x; = −M_z)
+    Fz : array_like    radial load along z (towards ψ = 90°) [N]
+    My : array_like    moment about +y [N m] (loads the balls at ψ = 90° towards +x); ``M`` and ``My``
+                       ``None`` hold both tilts at 0 (shaft held by two bearings), either given frees both
     stiffness : str    ``"nominal"`` (K_n at the nominal contact angle: ISO/TS 16281 practice, default)
                        or ``"per_ball"`` (K_n re-evaluated at each ball's contact angle)
     tol : float        relative equilibrium residual (forces / largest applied load) at which Newton stops
     maxiter : int      Newton iterations per attempt
     start : LoadDistribution or array_like, optional
-                       ring displacements to start Newton from — a nearby solution, or (δa, δr, θ)
-                       [m, m, rad] per case on a last axis; default: the closed-form start (module docstring)
+                       ring displacements to start Newton from — a nearby solution, or (δa, δr, θ) or
+                       (δa, δr, θ, δz, θ_y) [m, m, rad, m, rad] per case on a last axis; default: the
+                       closed-form start (module docstring)
     continuation : bool
                        solve a case that fails from the start again by continuation in the load
                        magnitude (Notes); ``False``: report it (NoConvergence) at once
+    tilt_arm : str     the tilt arm ℜ (:data:`thermobear.loads.rings.TILT_ARMS`): ``"groove"`` (ℜ_i, default) or
+                       ``"pitch"`` (d_m/2, the ISO/TS 16281 reference examples)
 
     Returns
     -------
@@ -403,71 +389,84 @@ def load_distribution_static(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, *, stiffn
     Notes
     -----
     Seed 004 eqs 6–8; Harris 2001 §7.4; Jones 1960; the module docstring has the equations and
-    conventions.  A case whose Newton iteration fails from the closed-form start is solved again by
-    continuation in the load magnitude: the same load ratios ×10, ×100, ... until it converges, then
-    back down to the given loads in steps of √10, each step started from the last solution (at very
-    light loads the solution is almost pure geometry — the contact angles of the few loaded balls set
-    by Fa/Fr — and the Hertz approach too small to guide Newton there).
+    conventions.  Loads with F_z = 0 and M_y = 0 are solved with δz = θ_y = 0 (the three in-plane
+    unknowns; exact by symmetry, :mod:`thermobear.loads.rings`).  A case whose Newton iteration fails
+    from the closed-form start is solved again by continuation in the load magnitude: the same load
+    ratios ×10, ×100, ... until it converges, then back down to the given loads in steps of √10, each
+    step started from the last solution (at very light loads the solution is almost pure geometry — the
+    contact angles of the few loaded balls set by Fa/Fr — and the Hertz approach too small to guide
+    Newton there).
 
     Examples
     --------
-    ISO/TS 16281 reference case (Fr = 1000 N, no clearance: δr = 15.1101 µm):
+    ISO/TS 16281 reference case (Fr = 1000 N, no clearance: δr = 15.1101 µm); the same load along z, between
+    the balls of this 7-ball bearing, moves the ring a little further and a little off its line:
 
     >>> from thermobear.contact.geometry import bearing
     >>> ld = load_distribution_static(bearing("iso-dgbb"), Fa=0.0, Fr=1000.0)
     >>> round(ld.delta_r * 1e6, 3), ld.residual < 1e-9
     (15.11, True)
+    >>> lz = load_distribution_static(bearing("iso-dgbb"), Fr=0.0, Fz=1000.0)
+    >>> round(lz.delta_z * 1e6, 3), round(lz.delta_r * 1e6, 3)
+    (15.187, 0.4)
     """
     check_stiffness(stiffness)
-    shape, Fa_b, Fr_b, M_b, Mv = batch_loads(brg, Fa, Fr, M)
-    tilt_free = M_b is not None
-    A, R, _Z = brg.A, brg.R_inner_locus, brg.Z
-    y0 = None if start is None else _start_unknowns(brg, start, Fa_b.size)
-    r, pb = _solve(brg, Fa_b, Fr_b, Mv, tilt_free, stiffness, tol, maxiter, y0)
+    loads = ring_loads(brg, Fa, Fr, M, Fz, My)
+    arm = arm_length(brg, tilt_arm)
+    A = brg.A
+    y0 = None if start is None else _start_unknowns(brg, start, loads.nb, loads.ndof, arm)
+    r, pb = _solve(brg, loads, stiffness, tol, maxiter, arm, y0)
     y, norm, its = r.z, r.norm, r.iterations
     thr = max(tol, 1e-9)                # (a NaN residual — a singular step, an overflow — counts as failed)
     bad = ~(norm <= thr)
     if continuation and brg.kind != "thrust" and bad.any():
         k = np.flatnonzero(bad & ~_over_shoulder(pb, y))      # over the shoulder: no equilibrium (below)
         if k.size:
-            c = _continue_in_load(brg, Fa_b[k], Fr_b[k], Mv[k], tilt_free, stiffness, tol, maxiter)
+            c = _continue_in_load(brg, loads.rows(k), stiffness, tol, maxiter, arm)
             its[k] += c.iterations
             ok = k[c.ok]
             y[ok], norm[ok] = c.z[c.ok], c.norm[c.ok]
     bad = ~(norm <= thr)
     if bad.any():
         k = int(np.argmax(np.where(bad, np.nan_to_num(norm, nan=np.inf), -1.0)))
-        last = y[k] * np.array([A, A, A / R])
+        last = y[k] * np.array([A, A, A / arm, A, A / arm])[:loads.ndof]
         if _over_shoulder(pb, y[k:k + 1])[0]:
             raise NoEquilibrium(
-                f"angular contact bearing: Fa = {Fa_b[k]:g} N is too small for Fr = {Fr_b[k]:g} N, "
-                f"M = {Mv[k]:g} N m — the balls would have to run over the low shoulder (contact angle <= 0)",
+                f"angular contact bearing: Fa = {loads.Fa[k]:g} N is too small for the radial load and moment "
+                f"({loads.case(k)}) — the balls would have to run over the low shoulder (contact angle <= 0)",
                 iterations=int(its[k]), residual=float(norm[k]), last=last)
         raise NoConvergence(
-            f"load distribution did not reach equilibrium for Fa = {Fa_b[k]:g} N, Fr = {Fr_b[k]:g} N, "
-            f"M = {Mv[k]:g} N m: relative residual {norm[k]:.3g} after {its[k]} Newton iterations",
-            iterations=int(its[k]), residual=float(norm[k]), last=last)
-    return _result(brg, pb, y, norm, its, shape, Fa, Fr, Mv)
+            f"load distribution did not reach equilibrium for {loads.case(k)}: relative residual {norm[k]:.3g} "
+            f"after {its[k]} Newton iterations", iterations=int(its[k]), residual=float(norm[k]), last=last)
+    return _result(brg, pb, y, norm, its, loads, arm, Fa, Fr)
 
 
-def _start_unknowns(brg, start, nb):
-    """Scaled unknowns y (nb, 3) from a LoadDistribution or (δa, δr, θ) [m, m, rad] on a last axis."""
-    A, R = brg.A, brg.R_inner_locus
+def _start_unknowns(brg, start, nb, ndof, arm):
+    """Scaled unknowns y (nb, ndof) from a LoadDistribution or (δa, δr, θ[, δz, θ_y]) [m, m, rad, m, rad] on a
+    last axis."""
+    A = brg.A
     if isinstance(start, LoadDistribution):
         v = np.stack(np.broadcast_arrays(*(np.asarray(getattr(start, k), float)
-                                           for k in ("delta_a", "delta_r", "theta"))), axis=-1)
+                                           for k in ("delta_a", "delta_r", "theta", "delta_z", "theta_y"))), axis=-1)
     else:
         v = np.asarray(start, dtype=float)
-    v = np.broadcast_to(v, (nb, 3)) if v.size in (3, 3 * nb) and v.shape[-1] == 3 else None
-    if v is None or not np.all(np.isfinite(v)):
-        raise InputError("start", start, "a LoadDistribution of the same batch or finite (delta_a, delta_r, theta) "
-                         "[m, m, rad] per case on a last axis")
-    return np.stack([(v[:, 0] - A * np.sin(brg.alpha0)) / A, v[:, 1] / A, v[:, 2] * R / A], axis=1)
+    n = v.shape[-1] if v.ndim else 0
+    ok = n in (3, 5) and v.size in (n, n * nb) and np.all(np.isfinite(v))
+    if not ok:
+        raise InputError("start", start, "a LoadDistribution of the same batch or finite (delta_a, delta_r, theta"
+                         "[, delta_z, theta_y]) [m, m, rad, m, rad] per case on a last axis")
+    v = np.broadcast_to(v.reshape(-1, n), (nb, n))
+    if n < ndof:
+        v = np.concatenate([v, np.zeros((nb, ndof - n))], axis=1)
+    y = np.stack([(v[:, 0] - A * np.sin(brg.alpha0)) / A, v[:, 1] / A, v[:, 2] * arm / A], axis=1)
+    if ndof == 5:
+        y = np.concatenate([y, np.stack([v[:, 3] / A, v[:, 4] * arm / A], axis=1)], axis=1)
+    return y
 
 
-def _result(brg, pb, y, norm, its, shape, Fa, Fr, Mv):
-    """The LoadDistribution at the solution y (nb, 3)."""
-    A, R, Z = brg.A, brg.R_inner_locus, brg.Z
+def _result(brg, pb, y, norm, its, loads, arm, Fa, Fr):
+    """The LoadDistribution at the solution y (nb, ndof)."""
+    A, Z, shape = brg.A, brg.Z, loads.shape
     zero = pb.zero
     AA, Aj, s = pb.geometry(y)
     sp = np.maximum(s, 0.0)
@@ -484,15 +483,94 @@ def _result(brg, pb, y, norm, its, shape, Fa, Fr, Mv):
                             "(contact over the low shoulder); the axial load is too small for the radial load")
     if brg.kind == "deep_groove" and zero.any():
         alpha = np.where(zero[:, None], 0.0, alpha)
-    da = np.where(zero, 0.0, y[:, 0] * A + A * np.sin(brg.alpha0))   # from the centred position
-    dr = np.where(zero, 0.0, y[:, 1] * A)
-    th = np.where(zero, 0.0, y[:, 2] * A / R)
+    out5 = np.zeros((y.shape[0], 5))
+    out5[:, 0] = np.where(zero, 0.0, y[:, 0] * A + A * np.sin(brg.alpha0))     # from the centred position
+    for k in range(1, y.shape[1]):
+        out5[:, k] = np.where(zero, 0.0, y[:, k] * A if k % 2 else y[:, k] * A / arm)
     return LoadDistribution(
-        delta_a=unbatch(shape, da), delta_r=unbatch(shape, dr), theta=unbatch(shape, th),
+        delta_a=unbatch(shape, out5[:, 0]), delta_r=unbatch(shape, out5[:, 1]), theta=unbatch(shape, out5[:, 2]),
         Q_i=unbatch(shape, Q, True), Q_o=unbatch(shape, Q.copy(), True), alpha_i=unbatch(shape, alpha, True),
         alpha_o=unbatch(shape, alpha.copy(), True), psi=azimuths(Z), delta_n=unbatch(shape, sp, True),
         residual=float(norm.max()) if norm.size else 0.0, iterations=int(its.max()) if its.size else 0,
-        Fa=np.asarray(Fa, dtype=float), Fr=np.asarray(Fr, dtype=float), M=unbatch(shape, Mv))
+        delta_z=unbatch(shape, out5[:, 3]), theta_y=unbatch(shape, out5[:, 4]), **loads.result_fields(Fa, Fr))
+
+
+def ring_reaction(brg: BallBearing, q, *, stiffness: str = "nominal", tilt_arm: str = "groove"):
+    r"""The loads that hold the inner ring at a given displacement, the ring's stiffness matrix there and the
+    load distribution.
+
+    The displacement-controlled static form: one evaluation of the equilibrium of
+    :func:`load_distribution_static` at the ring displacement q instead of a solve for it.
+
+    Parameters
+    ----------
+    brg : BallBearing
+    q : array_like     (δa, δr, θ, δz, θ_y) [m, m, rad, m, rad] on the last axis (leading axes: cases); δa from
+                       the centred position, axes and signs of :mod:`thermobear.loads.rings`
+    stiffness, tilt_arm : as :func:`load_distribution_static`
+
+    Returns
+    -------
+    (P, K, ld)  P (..., 5): the loads (F_a, F_r, M, F_z, M_y) on the inner ring that the balls balance
+                [N, N, N m, N, N m]; K (..., 5, 5): the stiffness dP/dq [N/m, N/rad, N m/m, N m/rad];
+                ld: the LoadDistribution at q (its applied loads are P)
+
+    Raises
+    ------
+    NoEquilibrium   a loaded ball of an angular contact bearing over its low shoulder (contact angle ≤ 0)
+
+    Notes
+    -----
+    K is the exact Jacobian of the equilibrium (symmetric): per ball dQ n nᵀ + (Q/A_j) e eᵀ summed with the
+    levers of :func:`thermobear.loads.rings.lever_matrix` (module docstring), in the physical units of q and P.
+
+    Examples
+    --------
+    At the solution of a load case the reaction is the load itself:
+
+    >>> from thermobear.contact.geometry import bearing
+    >>> b = bearing("7210")
+    >>> ld = load_distribution_static(b, Fa=450.0, Fr=325.0, M=2.0)
+    >>> P, K, at = ring_reaction(b, [ld.delta_a, ld.delta_r, ld.theta, 0.0, 0.0])
+    >>> [round(float(v), 6) + 0.0 for v in P], bool(np.allclose(at.Q, ld.Q, rtol=1e-9))
+    ([450.0, 325.0, 2.0, 0.0, 0.0], True)
+    """
+    check_stiffness(stiffness)
+    arm = arm_length(brg, tilt_arm)
+    q = np.asarray(q, dtype=float)
+    if q.shape[-1:] != (5,) or not np.all(np.isfinite(q)):
+        raise InputError("q", q, "finite (delta_a, delta_r, theta, delta_z, theta_y) [m, m, rad, m, rad] on a last axis")
+    shape = q.shape[:-1]
+    qf = q.reshape(-1, 5)
+    pb = reaction_problem(brg, qf.shape[0], stiffness)
+    P, K, y = reaction_of(pb, qf, arm)
+    loads = RingLoads(shape, P, True, 5)
+    ld = _result(brg, pb, y, np.zeros(qf.shape[0]), np.zeros(qf.shape[0], int), loads, arm, P[:, 0], P[:, 1])
+    if not shape:
+        ld = replace(ld, Fa=np.asarray(float(P[0, 0])), Fr=np.asarray(float(P[0, 1])))
+    else:
+        ld = replace(ld, Fa=P[:, 0].reshape(shape), Fr=P[:, 1].reshape(shape))
+    return P.reshape(shape + (5,)), K.reshape(shape + (5, 5)), ld
+
+
+def reaction_problem(brg: BallBearing, nb: int, stiffness: str = "nominal"):
+    """The five-unknown static problem of ``nb`` cases at prescribed ring displacements (applied loads 0, force
+    scale 1 N, every case loaded): the ring reaction is its residual, the stiffness its Jacobian."""
+    pb = _StaticProblem(brg, np.zeros((nb, 5)), np.ones(nb), np.ones(5), stiffness)
+    pb.zero[:] = False
+    pb.any_zero = False
+    return pb
+
+
+def reaction_of(pb, q, arm):
+    """Loads P (nb, 5) and stiffness K (nb, 5, 5) of the five-unknown problem ``pb`` (applied loads 0, scale 1)
+    at the ring displacements q (nb, 5) [m, rad], and the scaled unknowns y (:func:`ring_reaction`)."""
+    A, brg = pb.A, pb.brg
+    to_y = np.array([1.0 / A, 1.0 / A, arm / A, 1.0 / A, arm / A])
+    y = (q - np.array([A * np.sin(brg.alpha0), 0.0, 0.0, 0.0, 0.0])) * to_y
+    st = pb.evaluate(y)
+    to_P = np.array([1.0, 1.0, arm, 1.0, arm])
+    return st.res * to_P, st.J * to_P[:, None] * to_y[None, :], y
 
 
 #: the static form under its former name (``thermobear.loads.static.load_distribution``, imported by

@@ -25,8 +25,7 @@ from thermobear.rating.iso281 import (A_ISO_MAX, basic_rating_life, contaminatio
                                       dynamic_equivalent_load, dynamic_load_rating, fatigue_load_limit,
                                       life_modification_factor, modified_rating_life, radial_load_factors,
                                       reference_viscosity, viscosity_ratio)
-from thermobear.rating.iso16281 import (ReferenceLife, equivalent_ball_loads, raceway_load_ratings,
-                                        reference_rating_life)
+from thermobear.rating.iso16281 import ReferenceLife, rating_angle, reference_life
 
 __all__ = ["RatingLife", "rating_life", "load_ratings", "equivalent_loads"]
 
@@ -75,11 +74,6 @@ class RatingLife:
     notes: tuple = field(default_factory=tuple)
 
 
-def _rating_angle(brg: BallBearing) -> float:
-    """Nominal contact angle of the ratings [rad]: 0 deep groove, alpha0 otherwise (ISO 76, ISO 281)."""
-    return 0.0 if brg.kind == "deep_groove" else float(brg.alpha0)
-
-
 def load_ratings(brg: BallBearing) -> tuple[float, float]:
     """(C, C0) of a bearing from its internal geometry [N]: ISO 281:2007 and ISO 76:2006.
 
@@ -87,7 +81,7 @@ def load_ratings(brg: BallBearing) -> tuple[float, float]:
     >>> [round(x) for x in load_ratings(bearing("iso-dgbb"))]
     [22381, 11491]
     """
-    a = _rating_angle(brg)
+    a = rating_angle(brg)
     return (dynamic_load_rating(brg.D, brg.dm, brg.Z, a, brg.kind),
             float(static_load_rating(brg.D, brg.dm, brg.Z, a, brg.kind)))
 
@@ -102,7 +96,7 @@ def equivalent_loads(brg: BallBearing, Fr: float, Fa: float, C0: float) -> tuple
     >>> [round(x, 1) for x in equivalent_loads(bearing("iso-dgbb"), 1000.0, 500.0, 11490.0)]
     [1475.6, 1000.0]
     """
-    a = _rating_angle(brg)
+    a = rating_angle(brg)
     P0 = float(static_equivalent_load(Fr, Fa, a, brg.kind))
     if brg.kind == "thrust":
         if abs(np.cos(a)) > 1e-9 or Fr > 0:
@@ -212,10 +206,7 @@ def rating_life(brg: BallBearing, ld: LoadDistribution | None = None, *, Fa=None
         if ratio > 1.0:
             notes.append(f"maximum contact pressure {max(p.values()) / 1e6:.0f} MPa exceeds the ISO 76 "
                          f"reference of 4200 MPa (ratio {ratio:.3g})")
-        a = _rating_angle(brg)
-        gamma = brg.D * np.cos(a) / brg.dm
-        Q_ci, Q_ce = raceway_load_ratings(C, brg.Z, a, gamma, brg.fi, brg.fo, brg.kind)
-        ref = reference_rating_life(C, Q_ci, Q_ce, *equivalent_ball_loads(ld.Q_i, ld.Q_o, rotating))
+        ref = reference_life(brg, ld, C, rotating=rotating)
         kw.update(p_max_Pa=p, pressure_ratio=ratio, L10r_Mrev=float(ref.L10r), reference=ref)
     if n_rpm is not None:
         if isinstance(n_rpm, bool) or not isinstance(n_rpm, (int, float, np.floating)) or not (

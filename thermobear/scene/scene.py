@@ -11,7 +11,8 @@ every boolean a TOML boolean, every choice one of its listed values.  Sections (
                  seal_sides, seal_diameter_mm; cage, cage_land_width_mm, cage_land_clearance_mm
     [lubricant]  name = "seed004-mineral" or inline properties (thermobear.lubrication.lubricant keys);
                  supply, flow_L_h, T_in_C, Rq_ball_um, Rq_ring_um, mu_boundary, mu_full_film, oil_level_mm
-    [operation]  n_rpm, Fa_N, Fr_N, M_Nm (tilt free), rotating, T_C (prescribed temperature)
+    [operation]  n_rpm, Fa_N, Fr_N, M_Nm (tilt free), Fz_N, My_Nm (out of plane; tilt free), rotating,
+                 T_C (prescribed temperature), contamination (ISO 281 e_C level)
     [thermal]    network, T_ambient_C, [thermal.parameters], fixed_C = { node = °C }
     [shaft]      the shaft, [housing] the housing: the thermal network built from these dimensions
                  (network = "parametric", implied by either section; lubricant keys oil_level_mm,
@@ -36,11 +37,13 @@ from pathlib import Path
 import numpy as np
 
 from thermobear import validity
+from thermobear.contact.fits import HOUSING_CLASSES, SHAFT_CLASSES
 from thermobear.contact.geometry import BallBearing, bearing, bearing_from_dict, bearing_table
 from thermobear.contact.hertz import METHODS as HERTZ_METHODS
 from thermobear.errors import InputError
 from thermobear.files import read_toml
 from thermobear.losses.cage import GUIDANCE
+from thermobear.rating.iso281 import CONTAMINATION_LEVELS
 from thermobear.losses.local import ROLLING_MODELS, TRACTION_MODELS
 from thermobear.losses.seals import CONTACT_SEALS, SEAL_TYPES, seal_constants
 from thermobear.lubrication.lubricant import FIELDS as LUBRICANT_FIELDS
@@ -159,6 +162,10 @@ _BEARING_FIELDS = {
     "seal_diameter_mm": Field.number("mm", 0.0, None, lo_open=True, doc="seal counterface diameter d_s (SKF "
                                      "product table d1/d2); default estimated d + 0.25 (D - d)"),
     "cage": Field.choice(*GUIDANCE, doc="cage centring: balls (default), inner_ring or outer_ring land"),
+    "shaft_fit": Field.choice(*SHAFT_CLASSES, doc="ISO 286 tolerance class of the shaft seat (operating clearance); "
+                              "default: the catalogue-typical fit for the load"),
+    "housing_fit": Field.choice(*HOUSING_CLASSES, doc="ISO 286 tolerance class of the housing seat; default: the "
+                                "catalogue-typical fit for the load"),
     "cage_land_width_mm": Field.number("mm", 0.0, None, lo_open=True, doc="axial width of the cage lands, "
                                        "summed; default estimated B/4"),
     "cage_land_clearance_mm": Field.number("mm", 0.0, None, lo_open=True, doc="radial cage-land clearance; "
@@ -178,6 +185,11 @@ SECTIONS = {
         "Fa_N": Field.number("N", 0.0, None, doc="axial load"),
         "Fr_N": Field.number("N", 0.0, None, doc="radial load (towards ψ = 0)"),
         "M_Nm": Field.number("N m", doc="tilting moment (tilt free); absent: tilt held"),
+        "Fz_N": Field.number("N", doc="radial load along z, at ψ = 90° from Fr (five degrees of freedom)"),
+        "My_Nm": Field.number("N m", doc="moment about y, tilting in the x–z plane (tilt free); absent with M_Nm: "
+                              "tilts held"),
+        "contamination": Field.choice(*CONTAMINATION_LEVELS, doc="ISO 281:2007 cleanliness level of the "
+                                      "lubricant (e_C, life modification factor a_ISO); default normal_cleanliness"),
         "rotating": Field.choice("inner", "outer", doc="rotating ring"),
         "T_C": _temperature("prescribed contact temperature (no thermal network)"),
     },
@@ -214,7 +226,12 @@ class Scene:
     omega : float                 its angular speed [rad/s]
     rotating : str                ``"inner"`` or ``"outer"``
     Fa, Fr : float                axial / radial load [N]
-    M : float | None              tilting moment [N m]; None holds the tilt
+    M : float | None              tilting moment [N m]; None holds the tilt (with My None)
+    Fz : float                    radial load along z, at ψ = 90° [N]
+    My : float | None             moment about y [N m]; M and My None hold both tilts, either frees both
+    contamination : str           ISO 281 cleanliness level (e_C of a_ISO)
+    shaft_fit, housing_fit : str | None   ISO 286 tolerance classes of the seats (None: the catalogue-typical
+                                  fit for the load, :func:`thermobear.coupled.ratings.typical_fits`)
     T_C : float | None            prescribed contact temperature [°C] (None: solve the thermal network)
     oil_flow : float              supplied oil flow [m^3/s] (oil jet)
     jet_penetration : float       share of it that passes through the bearing [-] (seed 004 §4.5 β;
@@ -262,6 +279,11 @@ class Scene:
     Fr: float = 0.0
     M: float | None = None
     T_C: float | None = None
+    Fz: float = 0.0
+    My: float | None = None
+    contamination: str = "normal_cleanliness"
+    shaft_fit: str | None = None
+    housing_fit: str | None = None
     oil_flow: float = 0.0
     jet_penetration: float = 1.0
     T_oil_in_C: float | None = None
@@ -372,12 +394,16 @@ def _with_object(attr):
     return f
 
 
-_ALIASES = {"Fa_N": "Fa", "Fr_N": "Fr", "M_Nm": "M"}
+_ALIASES = {"Fa_N": "Fa", "Fr_N": "Fr", "M_Nm": "M", "Fz_N": "Fz", "My_Nm": "My"}
 _WITH = {
     "n_rpm": _with_number("operation", "n_rpm", "n_rpm"),
     "Fa": _with_number("operation", "Fa_N", "Fa"),
     "Fr": _with_number("operation", "Fr_N", "Fr"),
     "M": _with_number("operation", "M_Nm", "M", nullable=True),
+    "Fz": _with_number("operation", "Fz_N", "Fz"),
+    "My": _with_number("operation", "My_Nm", "My", nullable=True),
+    "contamination": lambda s, v, name: {"contamination": check_value(v, SECTIONS["operation"]["contamination"],
+                                                                      name)},
     "T_C": _with_number("operation", "T_C", "T_C", nullable=True),
     "T_oil_in_C": _with_number("lubricant", "T_in_C", "T_oil_in_C", nullable=True),
     "T_ambient_C": _with_number("thermal", "T_ambient_C", "T_ambient_C"),
@@ -501,7 +527,8 @@ def _machine(s: Scene) -> Machine:
     if s.supply == "oil_jet":
         lub = {**lub, "jet_penetration": s.jet_penetration}       # the drag's and the network's share alike
     return machine_from_sections(sh, ho, lub, bearing=s.bearing, lubricant=s.lubricant, supply=s.supply,
-                                 rotating=s.rotating, n_rpm=s.n_rpm, T_ambient_C=s.T_ambient_C, Fa=s.Fa, Fr=s.Fr,
+                                 rotating=s.rotating, n_rpm=s.n_rpm, T_ambient_C=s.T_ambient_C, Fa=s.Fa,
+                                 Fr=float(np.hypot(s.Fr, s.Fz)),
                                  seals=closure)
 
 
@@ -578,6 +605,8 @@ def scene_from_dict(d: dict, path: str | None = None) -> Scene:
         bearing=_bearing_of(d["bearing"]), lubricant=_lubricant_of(d["lubricant"], "lubricant"),
         supply=lsec.get("supply", "oil_jet"), n_rpm=op["n_rpm"], rotating=op.get("rotating", "inner"),
         Fa=op.get("Fa_N", 0.0), Fr=op.get("Fr_N", 0.0), M=op.get("M_Nm"), T_C=op.get("T_C"),
+        Fz=op.get("Fz_N", 0.0), My=op.get("My_Nm"), contamination=op.get("contamination", "normal_cleanliness"),
+        shaft_fit=bx.get("shaft_fit"), housing_fit=bx.get("housing_fit"),
         oil_flow=lsec.get("flow_L_h", 0.0) * 1e-3 / 3600.0, jet_penetration=lsec.get("jet_penetration", _default_penetration(lsec.get("supply", "oil_jet"), lsec)),
         T_oil_in_C=lsec.get("T_in_C"),
         T_ambient_C=th.get("T_ambient_C", 20.0), Rq_ball=lsec.get("Rq_ball_um", 0.05) * 1e-6,

@@ -41,7 +41,7 @@ from thermobear.errors import InputError, NoConvergence
 from thermobear.thermal.network import ThermalNetwork
 
 __all__ = ["SteadyResult", "TransientResult", "solve_steady", "solve_linear", "solve_transient", "split_losses",
-           "sources_matrix", "batched_solve", "heat_out", "LinearBoundary"]
+           "sources_matrix", "batched_solve", "heat_out", "heat_paths", "LinearBoundary"]
 
 _C0 = 273.15
 
@@ -80,19 +80,29 @@ def sources_matrix(net: ThermalNetwork, sources_W) -> np.ndarray:
     return P
 
 
-def heat_out(net: ThermalNetwork, Q) -> dict:
-    """Heat leaving the free part of the network [W] per point (B,): into each fixed node, and
-    into the oil stream (``"stream"``), from element flows Q (B, n_el)."""
+def heat_paths(net: ThermalNetwork, Q) -> dict:
+    """Heat leaving the free part of the network per path [W]: element name → (boundary, (B,) flow)
+    for each element between a free and a fixed node (positive: into the fixed node) and each
+    advective element draining a free node (boundary ``"stream"``: carried away by the oil), from
+    element flows Q (B, n_el)."""
     out: dict = {}
     fixed = net.fixed
     for k, e in enumerate(net.elements):
         fi, fj = fixed[e.i], fixed[e.j]
         if e.advective:
             if not fj:
-                out["stream"] = out.get("stream", 0.0) + Q[:, k]
+                out[e.name] = ("stream", Q[:, k])
         elif fi != fj:
-            node = e.nodes[1] if fj else e.nodes[0]
-            out[node] = out.get(node, 0.0) + (Q[:, k] if fj else -Q[:, k])
+            out[e.name] = (e.nodes[1], Q[:, k]) if fj else (e.nodes[0], -Q[:, k])
+    return out
+
+
+def heat_out(net: ThermalNetwork, Q) -> dict:
+    """Heat leaving the free part of the network [W] per point (B,): into each fixed node, and
+    into the oil stream (``"stream"``): the paths of :func:`heat_paths` summed per boundary."""
+    out: dict = {}
+    for node, q in heat_paths(net, Q).values():
+        out[node] = out.get(node, 0.0) + q
     return out
 
 

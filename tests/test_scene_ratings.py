@@ -1,0 +1,124 @@
+"""Issue 16 in the scene's answers: five-degree-of-freedom loads from the scene (operation.Fz_N, My_Nm), the
+ratings of `thermobear run` (thermobear.coupled.ratings: C0, C, s0, p_max, κ, a_ISO, lives, clearance) and the
+static overload refused before any solve (exit 2, one line naming the load, the limit and C0)."""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+import thermobear as tb
+from thermobear.app.cli import main
+from thermobear.contact.fits import operating_clearance
+from thermobear.coupled.pipeline import scene_load
+from thermobear.coupled.ratings import check_static_safety, scene_ratings, typical_fits
+from thermobear.errors import InputError, OutsideValidity
+from thermobear.rating import load_ratings
+from thermobear.scene.scene import scene_from_dict
+
+EX = Path(__file__).resolve().parents[1] / "examples"
+BATH = str(EX / "oil_bath_6208.toml")
+S = tb.load_scene(BATH)
+
+
+def run(capsys, *argv):
+    code = main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_scene_keys_fz_my_are_strict_and_in_si():
+    s = S.with_(Fz_N=500.0, My_Nm=2.0)
+    assert (s.Fz, s.My) == (500.0, 2.0) and S.Fz == 0.0 and S.My is None
+    with pytest.raises(InputError, match="^Fz = '500' — must be a number"):
+        S.with_(Fz="500")
+    with pytest.raises(InputError, match="contamination"):
+        S.with_(contamination="dusty")
+
+
+def test_a_radial_load_along_z_is_the_radial_load_turned():
+    """Fr along z instead of y: the same power within the difference the 9 balls' positions make, the
+    displacement along z; Fz = 0 leaves the answer exactly as it was (numbers do not move)."""
+    a, b = tb.steady_state(S), tb.steady_state(S.with_(Fr=0.0, Fz=2000.0))
+    assert b.P_W == pytest.approx(a.P_W, rel=0.03)
+    assert tb.steady_state(S.with_(Fz=0.0)).P_W == a.P_W
+    ld = scene_load(S.with_(Fr=0.0, Fz=2000.0))
+    assert abs(float(ld.delta_z)) > 10 * abs(float(ld.delta_r))
+
+
+def test_the_loads_verb_carries_fz_and_my(capsys):
+    code, out, _ = run(capsys, "loads", BATH, "--set", "Fz_N=800", "--set", "My_Nm=1.5", "--json")
+    d = json.loads(out)
+    assert code == 0 and d["Fz_N"] == 800.0 and d["My_Nm"] == 1.5 and d["delta_z_um"] > 0 and d["theta_y_mrad"] != 0
+
+
+def test_overload_exits_2_before_any_solve_naming_load_limit_and_c0(capsys):
+    """6208 at Fr 40 kN (C0 ≈ 19.9 kN): s0 = 0.497 < 0.5, refused in one line, not a thermal runaway."""
+    C0 = load_ratings(tb.bearing("6208"))[1]
+    for verb in (("run",), ("loads",), ("transient", "--t-end", "100")):
+        code, out, err = run(capsys, *verb[:1], BATH, *verb[1:], "--set", "Fr=40000")
+        assert code == 2 and out == "" and len(err.strip().splitlines()) == 1, verb
+        assert "Fr 40000 N" in err and "must be >= 0.5" in err and f"C0 = {C0:.4g} N of 6208" in err
+        assert "ThermalRunaway" not in err
+    check_static_safety(S.with_(Fr=0.49 * 2 * C0))           # s0 just above 0.5: accepted
+
+
+def test_run_answers_ratings_in_text_and_json(capsys):
+    code, out, _ = run(capsys, "run", BATH, "--json")
+    d = json.loads(out)
+    C, C0 = load_ratings(tb.bearing("6208"))
+    r = d["ratings"]
+    assert code == 0 and r["C_N"] == pytest.approx(C) and r["C0_N"] == pytest.approx(C0)
+    assert d["s0"] == pytest.approx(C0 / 2000.0) and {"mounted", "operating"} <= set(d["clearance_um"])
+    assert r["L10_h"] == pytest.approx((C / 2000.0) ** 3 * 1e6 / (60 * 3000.0), rel=1e-12)
+    assert r["L10m_h"] == pytest.approx(r["a_ISO"] * r["L10_h"]) and r["L10r_h"] > 0
+    assert 0 < r["p_max_Pa"]["outer"] < r["p_max_Pa"]["inner"] < 4.2e9
+    assert any(w["quantity"] == "kappa" for w in d["warnings"])          # κ = 5.1 > 4: a_ISO at κ = 4
+    code, out, _ = run(capsys, "run", BATH)
+    assert "Ratings (ISO 76, ISO 281, ISO/TS 16281)" in out and "L10m" in out and "k5 / H7" in out
+
+
+def test_life_falls_with_load_as_the_cube():
+    r1, r2 = (scene_ratings(s, tb.steady_state(s)) for s in (S.with_(Fr=1000.0), S.with_(Fr=2000.0)))
+    assert r1.L10_h / r2.L10_h == pytest.approx(8.0, rel=1e-12)
+    assert r2.L10m_h < r1.L10m_h and r2.s0 == pytest.approx(r1.s0 / 2)
+
+
+def _steady(Ti, To, Q=1000.0):
+    """A steady state as scene_ratings reads it: node temperatures, roles and contacts."""
+    b = S.bearing
+    c = tb.hertz(Q, b.Rx_i(0.0), b.Ry_i, b.E_prime), tb.hertz(Q, b.Rx_o(0.0), b.Ry_o, b.E_prime)
+    side = (lambda h: {"Q": np.full(b.Z, Q), "a": np.full(b.Z, float(h.a)), "b": np.full(b.Z, float(h.b))})  # noqa: E731
+    return SimpleNamespace(T_C={"inner_ring": Ti, "outer_ring": To, "balls": 0.5 * (Ti + To)},
+                           roles={"inner": "inner_ring", "outer": "outer_ring", "ball": "balls"},
+                           losses=SimpleNamespace(contacts={"inner": side(c[0]), "outer": side(c[1])}))
+
+
+def test_kappa_rises_as_the_bearing_cools():
+    k = [scene_ratings(S, _steady(T, T)).kappa for T in (90.0, 70.0, 50.0)]
+    assert k[0] < k[1] < k[2]
+    assert k[2] == pytest.approx(S.lubricant.nu(50.0) * 1e-6 / tb.rating.iso281.reference_viscosity(3000.0, S.bearing.dm))
+
+
+def test_operating_clearance_falls_as_the_inner_ring_warms_and_is_the_fit_formula():
+    cl = [scene_ratings(S, _steady(T, 40.0)).clearance_um for T in (40.0, 60.0, 80.0)]
+    assert cl[0]["operating"] > cl[1]["operating"] > cl[2]["operating"]
+    hand = operating_clearance(S.bearing, shaft="k5", housing="H7", T_inner_C=60.0, T_outer_C=40.0, T_ball_C=50.0,
+                               T_shaft_C=60.0, T_housing_C=40.0, n_rpm=3000.0)
+    assert cl[1]["operating"] == pytest.approx(float(hand.Pd) * 1e6, abs=1e-9)
+    assert cl[2]["operating"] < 0                                   # C0 6208 (13 µm) consumed by 40 K
+    r = scene_ratings(S, _steady(80.0, 40.0))
+    assert any(isinstance(w, OutsideValidity) and w.quantity == "operating_clearance" for w in r.warnings)
+
+
+def test_typical_fits_follow_the_load_and_scene_fits_win():
+    b = tb.bearing("6208")
+    assert typical_fits(b, 1000.0, 30000.0)[:2] == ("j6", "H7")      # P <= 0.05 C: light
+    assert typical_fits(b, 3000.0, 30000.0)[:2] == ("k5", "H7")
+    assert typical_fits(b, 3000.0, 30000.0, "outer")[:2] == ("h6", "N7")
+    raw = {**S.raw, "bearing": {**S.raw["bearing"], "shaft_fit": "m5", "housing_fit": "J7"}}
+    c = scene_ratings(scene_from_dict(raw, path=S.path), _steady(50.0, 50.0)).clearance_um
+    assert (c["shaft_fit"], c["housing_fit"], c["fits_from"]) == ("m5", "J7", "the scene")

@@ -1,0 +1,108 @@
+"""``thermobear speed``: ISO 15312's thermal reference speed (the model's losses at the standard's
+reference conditions), the thermally safe speed of the scene's own cooling (the coupled model) and
+DIN 732's thermally safe speed (the standard's method), each with the scene's hottest-ring
+temperature at that speed."""
+from __future__ import annotations
+
+import warnings
+
+from thermobear.app.output import print_json
+from thermobear.app.verbs import load_scene_with
+from thermobear.coupled.speeds import din732_safe_speed, hottest_ring_C, thermal_reference_speed, thermally_safe_speed
+from thermobear.coupled.steady import steady_states
+from thermobear.errors import InputError, NoSpeedRoot, OutsideValidity, SolverError
+from thermobear.scene import Scene
+
+__all__ = ["speed_report", "cmd_speed", "EXIT_SOLVER"]
+
+EXIT_SOLVER = 3
+
+
+def _at_speeds(scene: Scene, speeds: dict, node) -> dict:
+    """Hottest ring (or ``node``) of the scene's steady state at each named speed [°C], or why there is none."""
+    names = [k for k, v in speeds.items() if v is not None]
+    out = {}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", OutsideValidity)
+        try:
+            res = steady_states([scene.with_(n_rpm=speeds[k]) for k in names])
+        except InputError as exc:           # a point past the lubricant's limit can stop the batch
+            res = [exc] * len(names)
+    for k, r in zip(names, res):
+        out[k] = f"no equilibrium ({type(r).__name__})" if isinstance(r, Exception) else hottest_ring_C(r, node)
+    return out
+
+
+def speed_report(scene: Scene, *, limit_C: float = 70.0, node: str | None = None) -> dict:
+    """The three speeds of a scene as plain data (what ``thermobear speed --json`` prints).
+
+    Each part that has no answer carries ``error`` (its one-line reason) instead of its numbers.
+    """
+    rep = {"scene": scene.name, "bearing": scene.bearing.name, "limit_C": limit_C,
+           "node": node or "hottest ring", "T_ambient_C": scene.T_ambient_C}
+    try:
+        r = thermal_reference_speed(scene.bearing)
+        rep["iso15312"] = {"n_rpm": r.n_rpm, "P_W": r.P_W, "Phi_r_W": r.Phi_r_W, "A_r_mm2": r.A_r_m2 * 1e6,
+                           "q_r_W_m2": r.q_r_W_m2, "load_N": r.load_N, "lubricant": r.lubricant,
+                           "residual_W": r.residual_W, "iterations": r.iterations,
+                           "warnings": [w.as_dict() for w in r.warnings]}
+    except (SolverError, InputError) as exc:
+        rep["iso15312"] = {"error": " ".join(str(exc).split())}
+    try:
+        s = thermally_safe_speed(scene, limit_C=limit_C, node=node)
+        rep["model"] = {"n_rpm": s.n_rpm, "T_C": s.T_C, "residual_K": s.residual_K, "iterations": s.iterations,
+                        "bracket_rpm": list(s.bracket_rpm), "monotonic": s.monotonic, "P_W": s.steady.P_W,
+                        "warnings": [w.as_dict() for w in s.warnings]}
+    except NoSpeedRoot as exc:
+        rep["model"] = {"error": " ".join(str(exc).split())}
+    try:
+        d = din732_safe_speed(scene, limit_C=limit_C)
+        rep["din732"] = {"n_rpm": d.n_rpm, "f_n": d.f_n, "K_L": d.K_L, "K_P": d.K_P,
+                         "n_theta_r_rpm": d.n_theta_r_rpm, "Phi_W": d.Phi_W, "nu_cSt": d.nu_cSt, "P1_N": d.P1_N,
+                         "f0": d.f0, "f1": d.f1}
+    except (SolverError, InputError) as exc:
+        rep["din732"] = {"error": " ".join(str(exc).split())}
+    temps = _at_speeds(scene, {"iso15312": rep["iso15312"].get("n_rpm"), "din732": rep["din732"].get("n_rpm")}, node)
+    for k, T in temps.items():
+        rep[k]["T_C"] = T
+    return rep
+
+
+def _line(label: str, part: dict, what: str) -> str:
+    if "error" in part:
+        return f"  {label:58s} —  {part['error']}"
+    T = part.get("T_C")
+    T = f"{T:7.2f} °C" if isinstance(T, float) else str(T)
+    return f"  {label:58s} {part['n_rpm']:9.0f} rpm   {what} {T}"
+
+
+def summary(rep: dict) -> str:
+    """The text table of :func:`speed_report`."""
+    node = rep["node"]
+    lines = [f"thermobear speed — {rep['scene']}: {rep['bearing']}, ambient {rep['T_ambient_C']:g} °C, "
+             f"limit {rep['limit_C']:g} °C on {node}", ""]
+    iso, mod, din = rep["iso15312"], rep["model"], rep["din732"]
+    lines.append(_line("ISO 15312 thermal reference speed (model, reference cond.)", iso, f"{node} in this scene"))
+    lines.append(_line("thermally safe speed, this scene's cooling (model)", mod, node))
+    lines.append(_line("DIN 732 thermally safe speed (standard's method)", din, f"{node} (model)"))
+    if "error" not in iso:
+        lines.append(f"    ISO 15312: q_r A_r = {iso['Phi_r_W']:.2f} W (A_r {iso['A_r_mm2']:.0f} mm²), load "
+                     f"{iso['load_N']:.0f} N, {iso['lubricant']}; residual {iso['residual_W']:.1e} W, "
+                     f"{iso['iterations']} iterations")
+    if "error" not in mod:
+        lines.append(f"    model: residual {mod['residual_K']:.1e} K, {mod['iterations']} iterations, power "
+                     f"{mod['P_W']:.2f} W" + ("" if mod["monotonic"] else ", temperature not monotonic in speed "
+                                                "below the bracket (first crossing taken)"))
+    if "error" not in din:
+        lines.append(f"    DIN 732: f_n = {din['f_n']:.3f} × n_θr {din['n_theta_r_rpm']:.0f} rpm (ISO 15312's "
+                     f"equations); K_L {din['K_L']:.3f}, K_P {din['K_P']:.3f}; heat dissipated {din['Phi_W']:.2f} W")
+    return "\n".join(lines)
+
+
+def cmd_speed(args):
+    rep = speed_report(load_scene_with(args.scene, args.set), limit_C=args.limit_C, node=args.node)
+    if args.json:
+        print_json(rep)
+    else:
+        print(summary(rep))
+    return EXIT_SOLVER if "error" in rep["model"] else 0

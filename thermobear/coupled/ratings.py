@@ -1,0 +1,240 @@
+r"""The engineering answers of a solved scene: ratings, static safety, contact pressure, κ, a_ISO, lives, clearance.
+
+:func:`check_static_safety` refuses, before any solve, a scene whose static equivalent load is beyond the
+refused static safety (:data:`thermobear.validity.LIMITS` ``s0``: s0 < 0.5, twice the ISO 76 rating — the same
+limit as the refused contact pressure, 4200·2^(1/3) MPa, since p_max ∝ Q^(1/3)).  :func:`scene_ratings` gives the
+answers at the steady state's temperatures (:class:`Ratings`):
+
+* C0 (ISO 76:2006 [1]) and C (ISO 281:2007 [2]) from the internal geometry, P0 and P (F_r the resultant
+  √(F_r² + F_z²); the moments have no term in the standards' equivalent loads), s0 = C0/P0;
+* the largest Hertz pressure of each ring from the solved contacts (Harris 2001 eq 6.47);
+* κ = ν/ν1 (ISO 281 ν1 at the speed and d_m) with ν at the operating temperature — the mean of the inner and outer
+  raceway temperatures of the steady state — e_C of the scene's contamination level (ISO 281 simplified table,
+  :data:`thermobear.rating.iso281.CONTAMINATION_LEVELS`), a_ISO, L10 and L10m in hours, and the ISO/TS 16281 [3] reference life
+  L10r of the solved ball loads (hours);
+* the operating clearance (:func:`thermobear.contact.fits.operating_clearance`) of the mounted bearing at the ring,
+  ball, shaft and housing temperatures, with the scene's fits or the catalogue-typical fit for the load
+  (:func:`typical_fits`), stated.
+
+Outside the standards' domain the answer says so as named OutsideValidity warnings: s0 < 1, κ outside
+0.1 … 4, the clearance consumed (a radial preload).
+
+References
+----------
+.. [1] ISO 76:2006, Rolling bearings — Static load ratings.
+.. [2] ISO 281:2007, Rolling bearings — Dynamic load ratings and rating life (§9.3.3 κ, ν1; Table 11 e_C).
+.. [3] ISO/TS 16281:2008, Rolling bearings — Methods for calculating the modified reference rating life.
+.. [4] SKF Group (2018), *Rolling bearings* (catalogue PUB BU/P1 17000/1 EN), "Tolerances and resultant fits":
+   fits for solid steel shafts (radial ball bearings) and for cast iron and steel housings.
+"""
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field
+
+import numpy as np
+
+from thermobear.contact.fits import operating_clearance
+from thermobear.contact.geometry import BallBearing
+from thermobear.errors import InputError
+from thermobear.loads import loads_text
+from thermobear.rating.iso16281 import reference_life
+from thermobear.rating.iso281 import (basic_rating_life, contamination_factor, fatigue_load_limit,
+                                      life_modification_factor, reference_viscosity, viscosity_ratio)
+from thermobear.rating.life import equivalent_loads, load_ratings
+from thermobear.validity import LIMITS, check, collect
+
+__all__ = ["Ratings", "check_static_safety", "scene_ratings", "typical_fits"]
+
+_LOAD_FIELDS = "operation (Fa_N, Fr_N, Fz_N)"
+
+
+def _static(scene):
+    """(C, C0, P, P0) of a scene's bearing and loads [N] (F_r the radial resultant)."""
+    C, C0 = load_ratings(scene.bearing)
+    P, P0 = equivalent_loads(scene.bearing, float(np.hypot(scene.Fr, scene.Fz)), float(scene.Fa), C0)
+    return C, C0, P, P0
+
+
+def check_static_safety(scene) -> None:
+    """Refuse (InputError, before any solve) a scene whose static safety s0 = C0/P0 is below the refused limit
+    (:data:`thermobear.validity.LIMITS` ``s0``), naming the loads, the limit and the bearing's C0.
+
+    >>> import thermobear as tb
+    >>> s = tb.load_scene(tb.example_path("oil_bath_6208.toml"))
+    >>> check_static_safety(s)
+    >>> try:
+    ...     check_static_safety(s.with_(Fr=40000.0))
+    ... except InputError as e:
+    ...     print(str(e)[:94])
+    operation (Fa_N, Fr_N, Fz_N) = 'Fa 0 N, Fr 40000 N' — static safety s0 0.4971 - must be >= 0.5
+    """
+    b = scene.bearing
+    if b.kind == "thrust" and (scene.Fr or scene.Fz):
+        return                                    # no ISO P0 for it: the load solvers say what is wrong
+    _, C0, _, P0 = _static(scene)
+    if P0 > 0:
+        check("s0", C0 / P0, _LOAD_FIELDS, warn=False, given=loads_text(scene.Fa, scene.Fr, None, scene.Fz),
+              what=f"P0 = {P0:.4g} N against C0 = {C0:.4g} N of {b.name or 'the bearing'}, ISO 76")
+
+
+def typical_fits(brg: BallBearing, P, C, rotating: str = "inner") -> tuple:
+    """(shaft, housing, why): the catalogue-typical ISO 286 fits of a radial ball bearing for its load [4].
+
+    Rotating inner ring load: the shaft by bore and load (P ≤ 0.05 C light: js5 to 17 mm, j6 to 100 mm, k6 to
+    140 mm; P > 0.05 C normal and heavy: js5 to 10 mm, j5 to 17, k5 to 100, m5 to 140, m6 to 200 mm), the housing
+    H7 (stationary outer ring load, loads of all kinds).  Rotating outer ring load: the shaft h6 (the classes
+    tabulated here have no g6), the housing M7 (light), N7 (P > 0.05 C) or P7 (P > 0.1 C).
+
+    >>> from thermobear.contact.geometry import bearing
+    >>> typical_fits(bearing("6208"), 2000.0, 30000.0)[:2]
+    ('k5', 'H7')
+    """
+    d = float(brg.bore or 0.0) * 1e3
+    light = P <= 0.05 * C
+    if rotating == "outer":
+        housing = "M7" if light else ("P7" if P > 0.1 * C else "N7")
+        return "h6", housing, f"rotating outer ring load, P/C = {P / C:.3g}: h6 / {housing} (SKF 2018 fit tables)"
+    steps = ((17, "js5"), (100, "j6"), (140, "k6")) if light else ((10, "js5"), (17, "j5"), (100, "k5"),
+                                                                   (140, "m5"), (200, "m6"))
+    shaft = next((z for top, z in steps if d <= top), steps[-1][1])
+    return shaft, "H7", (f"rotating inner ring load, P/C = {P / C:.3g} ({'light' if light else 'normal/heavy'}), "
+                         f"d = {d:g} mm: {shaft} / H7 (SKF 2018 fit tables)")
+
+
+@dataclass(frozen=True)
+class Ratings:
+    """Ratings, safety, pressures, lives and clearance of one solved operating point (SI; lives in hours).
+
+    Attributes
+    ----------
+    C_N, C0_N, P_N, P0_N, s0 : ratings, equivalent loads [N] and static safety [-]
+    p_max_Pa : ring → largest Hertz pressure [Pa]
+    T_operating_C, nu_m2_s, nu1_m2_s, kappa : the temperature of κ [°C], ν and ν1 [m²/s], κ [-]
+    contamination, e_C, a_ISO : cleanliness level, e_C and the life modification factor [-]
+    L10_h, L10m_h, L10r_h : basic, modified and ISO/TS 16281 reference rating lives [h]
+    clearance_um : mounted and operating diametral clearance [µm], the fits and the temperatures used
+    warnings : the named OutsideValidity warnings of these answers
+    """
+
+    C_N: float
+    C0_N: float
+    P_N: float
+    P0_N: float
+    s0: float
+    p_max_Pa: dict
+    T_operating_C: float
+    nu_m2_s: float
+    nu1_m2_s: float
+    kappa: float
+    contamination: str
+    e_C: float
+    a_ISO: float
+    L10_h: float
+    L10m_h: float
+    L10r_h: float | None
+    clearance_um: dict
+    warnings: list = field(default_factory=list)
+
+    def as_dict(self) -> dict:
+        d = asdict(self)
+        d["warnings"] = [w.as_dict() for w in self.warnings]
+        return d
+
+    def lines(self) -> list:
+        """A short table for the text answer."""
+        c = self.clearance_um
+        p = self.p_max_Pa
+        return ["Ratings (ISO 76, ISO 281, ISO/TS 16281)",
+                f"  C0 {self.C0_N:9.0f} N   P0 {self.P0_N:9.0f} N   s0 {self.s0:7.3g}",
+                f"  C  {self.C_N:9.0f} N   P  {self.P_N:9.0f} N   p_max inner {p['inner'] / 1e6:6.0f} MPa, "
+                f"outer {p['outer'] / 1e6:6.0f} MPa",
+                f"  kappa {self.kappa:.3g} (nu {self.nu_m2_s * 1e6:.3g} cSt at {self.T_operating_C:.1f} °C, "
+                f"nu1 {self.nu1_m2_s * 1e6:.3g} cSt)   e_C {self.e_C:g} ({self.contamination})   a_ISO {self.a_ISO:.3g}",
+                f"  L10 {self.L10_h:.4g} h   L10m {self.L10m_h:.4g} h" +
+                ("" if self.L10r_h is None else f"   L10r {self.L10r_h:.4g} h"),
+                f"  clearance mounted {c['mounted']:.2f} um, operating {c['operating']:.2f} um "
+                f"(fits {c['shaft_fit']} / {c['housing_fit']}: {c['fits_from']})"]
+
+
+def _node_T(steady, names, role):
+    """Temperature of the first node of ``names`` the network has, else of the node of ``role`` [°C]."""
+    T = steady.T_C
+    for n in names:
+        if n in T:
+            return float(T[n]), n
+    node = steady.roles.get(role)
+    return float(T[node]), node
+
+
+def _clearance(scene, P, C, steady) -> dict:
+    """Mounted and operating clearance [µm] with the scene's fits (or the typical ones) at the steady temperatures."""
+    b = scene.bearing
+    typ = typical_fits(b, P, C, scene.rotating)
+    shaft, housing = scene.shaft_fit or typ[0], scene.housing_fit or typ[1]
+    given = scene.shaft_fit is not None and scene.housing_fit is not None
+    out = {"shaft_fit": shaft, "housing_fit": housing, "fits_from": "the scene" if given else typ[2]}
+    if b.bore is None or b.outer_diameter is None:
+        out["fits_from"] = "no fit: the bearing has no bore / outside diameter"
+        shaft = housing = None
+    (Ti, ni), (To, no) = _node_T(steady, ("inner_ring",), "inner"), _node_T(steady, ("outer_ring",), "outer")
+    Tb, nb = _node_T(steady, (), "ball")
+    (Ts, ns), (Th, nh) = _node_T(steady, ("shaft",), "inner"), _node_T(steady, ("housing",), "outer")
+    n_in = scene.n_rpm if scene.rotating == "inner" else 0.0
+    mounted = operating_clearance(b, shaft=shaft, housing=housing)
+    op = operating_clearance(b, shaft=shaft, housing=housing, T_inner_C=Ti, T_outer_C=To, T_ball_C=Tb,
+                             T_shaft_C=Ts, T_housing_C=Th, n_rpm=n_in)
+    out.update(unmounted=b.Pd * 1e6, mounted=float(mounted.Pd) * 1e6, operating=float(op.Pd) * 1e6,
+               temperatures_C={"inner ring": Ti, "outer ring": To, "balls": Tb, "shaft": Ts, "housing": Th},
+               nodes={"inner ring": ni, "outer ring": no, "balls": nb, "shaft": ns, "housing": nh})
+    return out
+
+
+def scene_ratings(scene, steady, losses=None) -> Ratings:
+    """The ratings of a scene at its solved steady state (:class:`~thermobear.coupled.steady.SteadyState`;
+    ``losses``: its loss result, default ``steady.losses``), with the named warnings (module docstring).
+
+    >>> import thermobear as tb
+    >>> s = tb.load_scene(tb.example_path("oil_bath_6208.toml"))
+    >>> r = scene_ratings(s, tb.steady_state(s))
+    >>> round(r.C0_N), round(r.s0, 2), r.clearance_um["shaft_fit"]
+    (19886, 9.94, 'k5')
+    """
+    b = scene.bearing
+    C, C0, P, P0 = _static(scene)
+    r = steady.losses if losses is None else losses
+    c = getattr(r, "contacts", None)
+    p = {}
+    if c:
+        for side in ("inner", "outer"):
+            Q, a, bb = (np.asarray(c[side][k], float) for k in ("Q", "a", "b"))
+            with np.errstate(divide="ignore", invalid="ignore"):
+                p[side] = float(np.max(np.where(Q > 0, 1.5 * Q / (np.pi * a * bb), 0.0)))
+    Tin, _ = _node_T(steady, (), "inner")
+    Tout, _ = _node_T(steady, (), "outer")
+    T_op = 0.5 * (Tin + Tout)
+    nu = float(scene.lubricant.nu(T_op)) * 1e-6          # [cSt] → [m²/s]
+    n = float(scene.n_rpm)
+    if not n > 0:
+        raise InputError("operation.n_rpm", n, "ratings in hours need a speed > 0 [rpm]")
+    nu1 = float(reference_viscosity(n, b.dm))
+    kappa = float(viscosity_ratio(nu, nu1))
+    e_C = float(contamination_factor(scene.contamination, b.dm))
+    kind = "thrust" if b.kind == "thrust" else "radial"
+    a_iso = float(life_modification_factor(kappa, e_C * float(fatigue_load_limit(C0, b.dm)) / P, kind))
+    hours = 1e6 / (60.0 * n)
+    L10 = float(basic_rating_life(C, P))
+    L10r = None
+    if c:
+        ld = type("Balls", (), {"Q_i": np.ravel(c["inner"]["Q"]), "Q_o": np.ravel(c["outer"]["Q"])})
+        L10r = float(reference_life(b, ld, C, rotating=scene.rotating).L10r) * hours
+    clear = _clearance(scene, P, C, steady)
+    with collect(replay=False) as got:
+        check("s0", C0 / P0, _LOAD_FIELDS, what=f"P0 = {P0:.4g} N, C0 = {C0:.4g} N")
+        check("kappa", kappa, "lubricant viscosity at the operating temperature",
+              what=f"nu {nu * 1e6:.3g} cSt at {T_op:.1f} °C, nu1 {nu1 * 1e6:.3g} cSt")
+        check("operating_clearance", clear["operating"] * 1e-6, "bearing clearance",
+              what=f"mounted {clear['mounted']:.2f} um, fits {clear['shaft_fit']} / {clear['housing_fit']}")
+    return Ratings(C_N=C, C0_N=C0, P_N=P, P0_N=P0, s0=C0 / P0, p_max_Pa=p or {"inner": 0.0, "outer": 0.0},
+                   T_operating_C=T_op, nu_m2_s=nu, nu1_m2_s=nu1, kappa=kappa, contamination=str(scene.contamination),
+                   e_C=e_C, a_ISO=a_iso, L10_h=L10 * hours, L10m_h=a_iso * L10 * hours, L10r_h=L10r,
+                   clearance_um=clear, warnings=list(got))

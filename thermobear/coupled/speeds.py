@@ -1,0 +1,416 @@
+r"""Speeds found on the model: ISO 15312's thermal reference speed from thermobear's own losses, the
+thermally safe speed of a scene's own cooling (root finding on the coupled steady state), and DIN
+732's thermally safe speed of the scene by the standard's method, for comparison.
+
+* :func:`thermal_reference_speed` — the speed at which the local loss model, at ISO 15312's
+  reference conditions (bearing at 70 °C, reference load and oil, oil bath up to the middle of the
+  lowest ball), dissipates the reference heat flow q_r A_r (:mod:`thermobear.rating.speeds`).
+* :func:`thermally_safe_speed` — the speed at which the hottest ring (the race nodes of the inner
+  and outer roles) or a chosen node of the scene's coupled steady state reaches a limit
+  temperature: DIN 732's question answered with the full model.
+* :func:`din732_safe_speed` — DIN 732's answer: n_θ = f_n n_θr with n_θr by ISO 15312's own
+  (Palmgren-form) equations and the heat the seating surfaces and the circulating oil carry away.
+
+Each search brackets its root on a ladder of speeds evaluated in one batched call (losses over a
+speed array; :func:`~thermobear.coupled.steady.steady_states` for the coupled model), within the
+speed the validity limits accept (n·d_m ≤ 4e6 mm/min, :data:`thermobear.validity.LIMITS`), takes
+the first crossing (the lowest speed that meets the condition: the conservative one when the
+ladder is not monotonic, which the result reports) and refines it with Brent's method
+(:func:`scipy.optimize.brentq`).  No crossing raises :class:`~thermobear.errors.NoSpeedRoot` naming
+why ("… at no speed up to …", "… already at …").
+"""
+from __future__ import annotations
+
+import warnings
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.optimize import brentq
+
+from thermobear.contact.geometry import BallBearing
+from thermobear.coupled.sources import prepare
+from thermobear.coupled.steady import SteadyState, steady_state, steady_states
+from thermobear.errors import InputError, NoConvergence, NoSpeedRoot, OutsideValidity, ThermalRunaway
+from thermobear.losses import bearing_losses
+from thermobear.lubrication.lubricant import Lubricant, lubricant
+from thermobear.rating.iso76 import static_equivalent_load
+from thermobear.rating.speeds import (din732_heat_flow, din732_parameters, din732_speed_ratio, palmgren_coefficients,
+                                      palmgren_load, palmgren_moments, reference_conditions,
+                                      reference_heat_flow_density, reference_surface, standard_reference_speed)
+from thermobear.scene import Scene
+from thermobear.validity import LIMITS, collect
+
+__all__ = ["ReferenceSpeed", "SafeSpeed", "Din732Speed", "reference_lubricant", "reference_loads", "thermal_reference_speed",
+           "thermally_safe_speed", "din732_safe_speed", "hottest_ring_C"]
+
+_N_DM_REFUSE = LIMITS["n_dm"].refuse[1]          #: mm/min
+#: Fa / (Fr tan α) of a single angular contact bearing loaded over half its balls (load zone ε = 0.5,
+#: Sjövall's integrals J_a/J_r for ball bearings; Harris & Kotzalas 2007, "Distribution of internal
+#: loading"): the axial reaction ISO 15312's radial reference load needs on such a bearing.
+AXIAL_REACTION = 1.25
+
+
+def _ceiling_rpm(brg: BallBearing, n_max_rpm=None) -> float:
+    top = _N_DM_REFUSE / (brg.dm * 1e3) * (1.0 - 1e-9)
+    return top if n_max_rpm is None else min(float(n_max_rpm), top)
+
+
+def reference_lubricant(kind: str) -> Lubricant:
+    """ISO 15312's reference oil: a mineral oil without EP additives of ν_r at 70 °C (12 mm²/s radial,
+    24 mm²/s thrust), with the base-oil properties of the bundled ISO VG 32 (radial) or ISO VG 68
+    (thrust) mineral oil, the grades the standard names (as quoted by SKF).
+
+    >>> round(reference_lubricant("deep_groove").nu(70.0), 9), round(reference_lubricant("thrust").nu(70.0), 9)
+    (12.0, 24.0)
+    """
+    ref = reference_conditions(kind)
+    base = lubricant("iso-vg-32-mineral" if ref.load == "Fr" else "iso-vg-68-mineral")
+    return Lubricant.from_single_point(ref.nu_cSt * 1e-6 * float(base.rho(ref.T_C)), ref.T_C, base.rho15,
+                                       walther_B=base.walther_B, gold_s=base.gold_s, gold_t=base.gold_t,
+                                       name=f"iso15312-reference-{ref.nu_cSt:g}cSt", base_oil="mineral",
+                                       description=f"ISO 15312 reference oil, {ref.nu_cSt:g} mm²/s at 70 °C "
+                                                   f"(base oil of {base.name})")
+
+
+@dataclass
+class ReferenceSpeed:
+    """The model's ISO 15312 thermal reference speed.
+
+    Attributes
+    ----------
+    bearing : str
+    n_rpm : float           speed at which the model's friction power equals q_r A_r [rpm]
+    P_W : float             the model's friction power there [W]
+    Phi_r_W : float         reference heat flow q_r A_r [W]
+    q_r_W_m2, A_r_m2 : float
+    load_N : float          reference load (radial 0.05 C0, thrust axial 0.02 C0) [N]
+    lubricant : str
+    residual_W : float      P_W − Phi_r_W [W]
+    iterations : int        Brent iterations
+    monotonic : bool        the friction power grew with speed over the bracket ladder
+    warnings : list         OutsideValidity warnings of the answer (scope, speed)
+    """
+
+    bearing: str
+    n_rpm: float
+    P_W: float
+    Phi_r_W: float
+    q_r_W_m2: float
+    A_r_m2: float
+    load_N: float
+    lubricant: str
+    residual_W: float
+    iterations: int
+    monotonic: bool = True
+    warnings: list = field(default_factory=list)
+
+
+def _first_crossing(n, g):
+    """Index i of the first ladder point with g >= 0 (None: none); g[i-1] < 0 when i > 0."""
+    hit = np.flatnonzero(np.asarray(g) >= 0.0)
+    return None if hit.size == 0 else int(hit[0])
+
+
+def reference_loads(brg: BallBearing) -> dict:
+    """ISO 15312's reference load of ``brg`` as scene loads {"Fa": N, "Fr": N}: the fraction of C0 of
+    :func:`~thermobear.rating.speeds.reference_conditions`, and for an angular contact bearing the axial
+    reaction of a half load zone (:data:`AXIAL_REACTION`).
+
+    >>> import thermobear as tb
+    >>> {k: round(v) for k, v in reference_loads(tb.bearing("6208")).items()}
+    {'Fr': 994}
+    """
+    if brg.C0 is None:
+        raise InputError("bearing.C0_kN", None, "ISO 15312's reference load is a fraction of C0")
+    ref = reference_conditions(brg.kind)
+    loads = {ref.load: ref.load_fraction * brg.C0}
+    if brg.kind == "angular_contact":                 # the axial reaction of a half load zone (ε = 0.5)
+        loads["Fa"] = AXIAL_REACTION * loads["Fr"] * float(np.tan(brg.alpha0))
+    return loads
+
+
+def thermal_reference_speed(brg: BallBearing, *, lubricant: Lubricant | None = None, n_max_rpm=None,
+                            xtol_rpm: float = 0.01, points: int = 25) -> ReferenceSpeed:
+    """ISO 15312 thermal reference speed of ``brg`` from thermobear's local loss model.
+
+    The friction power of :func:`~thermobear.losses.bearing_losses` with the whole bearing at 70 °C,
+    the reference load (angular contact bearings: with the axial reaction of a half load zone,
+    :data:`AXIAL_REACTION`) and oil (:func:`reference_lubricant`), oil-bath supply with the level at the
+    middle of the lowest ball (SKF's H = D/2; thrust bearings: no churning term, the bath of a
+    vertical shaft is not modelled) equals the reference heat flow q_r A_r.
+
+    Raises
+    ------
+    NoSpeedRoot    the reference heat flow is reached at no speed up to the n·d_m limit (or already at 1 rpm)
+
+    >>> import thermobear as tb
+    >>> r = thermal_reference_speed(tb.bearing("6208"))
+    >>> 5000 < r.n_rpm < 20000, abs(r.residual_W) < 1e-6 * r.Phi_r_W
+    (True, True)
+    """
+    ref = reference_conditions(brg.kind)
+    oil = reference_lubricant(brg.kind) if lubricant is None else lubricant
+    A_r = float(reference_surface(brg.bore, brg.outer_diameter, brg.width, brg.kind))
+    q_r = float(reference_heat_flow_density(A_r))
+    loads = reference_loads(brg)
+    Phi, load = q_r * A_r, loads[ref.load]
+    level = brg.D / 2.0 if ref.load == "Fr" else None
+
+    def power(n):
+        return bearing_losses(brg, oil, n_rpm=n, T_C=ref.T_C, supply="oil_bath", oil_level_m=level, **loads).P_W
+
+    top = _ceiling_rpm(brg, n_max_rpm)
+    ladder = np.geomspace(1.0, top, points)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", OutsideValidity)     # the answer's validity is checked below
+        P = np.asarray(power(ladder), float)
+        i = _first_crossing(ladder, P - Phi)
+        if i is None:
+            raise NoSpeedRoot(f"{brg.name}: the reference heat flow q_r A_r = {Phi:.4g} W is reached at no speed up to "
+                              f"{top:.6g} rpm (n·dm limit; model friction there {P[-1]:.4g} W)", residual=P[-1] - Phi)
+        if i == 0:
+            raise NoSpeedRoot(f"{brg.name}: the reference heat flow q_r A_r = {Phi:.4g} W is exceeded already at "
+                              f"{ladder[0]:g} rpm ({P[0]:.4g} W)", residual=P[0] - Phi)
+        n, r = brentq(lambda x: float(power(x)) - Phi, ladder[i - 1], ladder[i], xtol=xtol_rpm, full_output=True)
+    if not r.converged:
+        raise NoConvergence(f"{brg.name}: Brent did not converge ({r.flag})", iterations=r.iterations)
+    with collect(replay=False) as ws:
+        P_n = float(power(n))
+    if not ref.in_scope:
+        ws.append(OutsideValidity(f"{brg.name}: ISO 15312 excludes thrust ball bearings (kinematic effects); the "
+                                  "thrust reference conditions are applied as a model comparison only",
+                                  quantity="iso15312_scope", field="bearing.kind", value=brg.kind,
+                                  source="ISO 15312:2018 scope"))
+    return ReferenceSpeed(bearing=brg.name, n_rpm=float(n), P_W=P_n, Phi_r_W=Phi, q_r_W_m2=q_r, A_r_m2=A_r,
+                          load_N=float(load), lubricant=oil.name, residual_W=P_n - Phi, iterations=int(r.iterations),
+                          monotonic=bool(np.all(np.diff(P) > 0.0)), warnings=list(ws))
+
+
+def hottest_ring_C(st: SteadyState, node: str | None = None) -> float:
+    """Temperature [°C] of ``node`` in a steady state, or the hottest ring (the nodes of the inner and
+    outer roles, the races) when ``node`` is None."""
+    if node is not None:
+        if node not in st.T_C:
+            raise InputError("node", node, f"a node of the scene's network: {', '.join(st.T_C)}")
+        return float(st.T_C[node])
+    return float(max(st.T_C[st.roles["inner"]], st.T_C[st.roles["outer"]]))
+
+
+@dataclass
+class SafeSpeed:
+    """The thermally safe speed of a scene's own cooling (the coupled model).
+
+    Attributes
+    ----------
+    scene : str
+    n_rpm : float         speed at which the node reaches the limit [rpm]
+    limit_C : float       limit temperature [°C]
+    node : str            the node (the hottest ring: ``"hottest ring"``)
+    T_C : float           its temperature at n_rpm [°C]
+    residual_K : float    T_C − limit_C [K]
+    iterations : int      Brent iterations
+    bracket_rpm : tuple   the ladder speeds around the root [rpm]
+    monotonic : bool      the node temperature grew with speed over the ladder from its coolest point to the
+                          bracket (a dip at low speed, where the churned bath carries away heat the machine
+                          brings in faster than friction grows, is allowed)
+    steady : SteadyState  the coupled steady state at n_rpm
+    warnings : list       OutsideValidity warnings of that steady state
+    """
+
+    scene: str
+    n_rpm: float
+    limit_C: float
+    node: str
+    T_C: float
+    residual_K: float
+    iterations: int
+    bracket_rpm: tuple
+    monotonic: bool
+    steady: SteadyState = field(repr=False, default=None)
+    warnings: list = field(default_factory=list)
+
+
+def _beyond(exc) -> bool:
+    """An error that means no equilibrium below the lubricant's temperature limit (above any limit)."""
+    return isinstance(exc, ThermalRunaway) or (isinstance(exc, InputError) and "lubricant temperature" in str(exc))
+
+
+def _one(scene, prepared):
+    try:
+        return steady_state(scene, prepared=prepared)
+    except (ThermalRunaway, InputError, NoConvergence) as exc:
+        return exc
+
+
+def _ladder_T(scenes, node, prepared, limit_C) -> np.ndarray:
+    """Node temperatures of the ladder's steady states (a point without an equilibrium below the lubricant's
+    limit: inf); another error at or below the first crossing is raised."""
+    T, errors = [], {}
+    try:
+        results = steady_states(scenes, prepared=prepared)
+    except InputError as exc:          # a point past the lubricant's limit can stop the batch: one by one
+        if not _beyond(exc):
+            raise
+        results = [_one(sc, prepared) for sc in scenes]
+    for k, r in enumerate(results):
+        if isinstance(r, Exception):
+            T.append(np.inf)
+            if not _beyond(r):
+                errors[k] = r
+        else:
+            T.append(hottest_ring_C(r, node))
+    T = np.asarray(T)
+    i = _first_crossing(None, T - limit_C)
+    for k, e in errors.items():
+        if i is None or k <= i:
+            raise e
+    return T
+
+
+def thermally_safe_speed(scene: Scene, *, limit_C: float = 70.0, node: str | None = None, n_min_rpm=None,
+                         n_max_rpm=None, points: int = 9, xtol_rpm: float = 1.0) -> SafeSpeed:
+    """Speed at which the scene's hottest ring (or ``node``) reaches ``limit_C`` in the coupled steady state.
+
+    Parameters
+    ----------
+    scene : Scene          the machine (its load, lubrication and cooling); its own speed is replaced
+    limit_C : float        limit temperature [°C]
+    node : str             a network node instead of the hottest ring
+    n_min_rpm, n_max_rpm   search range [rpm] (default: 1 % of the scene's speed, at least 1 rpm, up to the
+                           n·d_m limit of thermobear.validity)
+    points : int           ladder points (one batched steady-state call)
+    xtol_rpm : float       tolerance of the speed [rpm]
+
+    Raises
+    ------
+    NoSpeedRoot   the limit is reached at no speed up to the top of the range, or exceeded already at its bottom
+    InputError    a bad limit, node or range
+
+    >>> import thermobear as tb
+    >>> s = tb.load_scene(tb.example_path("block_6208_oil_bath.toml"))
+    >>> r = thermally_safe_speed(s, limit_C=60.0, xtol_rpm=10.0)
+    >>> abs(r.T_C - 60.0) < 0.5, r.n_rpm > s.n_rpm
+    (True, True)
+    """
+    if not isinstance(scene, Scene):
+        raise InputError("scene", type(scene).__name__, "a thermobear Scene")
+    if not np.isfinite(limit_C) or limit_C <= -40.0:
+        raise InputError("limit_C", limit_C, "a finite temperature above -40 °C")
+    top = _ceiling_rpm(scene.bearing, n_max_rpm)
+    bottom = max(1.0, 0.01 * scene.n_rpm) if n_min_rpm is None else float(n_min_rpm)
+    if not 0.0 < bottom < top:
+        raise InputError("n_min_rpm", n_min_rpm, f"a speed in (0, {top:.6g}) rpm below n_max_rpm")
+    prep = prepare(scene)
+    what = "the hottest ring" if node is None else f"node {node}"
+    ladder = np.geomspace(bottom, top, points)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", OutsideValidity)         # the answer's own warnings are kept
+        T = _ladder_T([scene.with_(n_rpm=float(n)) for n in ladder], node, prep, limit_C)
+        i = _first_crossing(ladder, T - limit_C)
+        if i is None:
+            raise NoSpeedRoot(f"{scene.name}: the limit {limit_C:g} °C on {what} is reached at no speed up to "
+                              f"{top:.6g} rpm (n·dm limit of the models; {T[-1]:.2f} °C there)",
+                              residual=T[-1] - limit_C)
+        if i == 0:
+            raise NoSpeedRoot(f"{scene.name}: the limit {limit_C:g} °C on {what} is exceeded already at "
+                              f"{bottom:.6g} rpm ({T[0]:.2f} °C)", residual=T[0] - limit_C)
+
+        seen = {}
+
+        def excess(n):
+            try:
+                seen[n] = steady_state(scene.with_(n_rpm=float(n)), prepared=prep)
+                return hottest_ring_C(seen[n], node) - limit_C
+            except (ThermalRunaway, InputError) as e:
+                if not _beyond(e):
+                    raise
+                return 1e3                                      # no equilibrium: beyond any limit
+        n, r = brentq(excess, ladder[i - 1], ladder[i], xtol=xtol_rpm, full_output=True)
+    if not r.converged:
+        raise NoConvergence(f"{scene.name}: Brent did not converge ({r.flag})", iterations=r.iterations)
+    st = seen[n] if n in seen else steady_state(scene.with_(n_rpm=float(n)), prepared=prep)
+    Tn = hottest_ring_C(st, node)
+    rise = T[int(np.argmin(T[:i + 1])):i + 1]       # from the coolest ladder point up to the crossing
+    return SafeSpeed(scene=scene.name, n_rpm=float(n), limit_C=float(limit_C), node=node or "hottest ring", T_C=Tn,
+                     residual_K=Tn - limit_C, iterations=int(r.iterations), bracket_rpm=(ladder[i - 1], ladder[i]),
+                     monotonic=bool(np.all(np.diff(rise) > 0.0)), steady=st, warnings=list(st.warnings))
+
+
+@dataclass
+class Din732Speed:
+    """DIN 732's thermally safe operating speed of a scene (the standard's method; see
+    :mod:`thermobear.rating.speeds` for what is unconfirmed).
+
+    Attributes
+    ----------
+    n_rpm : float            n_θ = f_n n_θr [rpm]
+    f_n : float              speed ratio [-]
+    K_L, K_P : float         load and lubricant parameters [-]
+    n_theta_r_rpm : float    thermal reference speed by ISO 15312's equations [rpm]
+    Phi_W : float            heat dissipated at the limit temperature (seating surfaces + oil) [W]
+    limit_C : float          the bearing temperature of the balance [°C]
+    nu_cSt : float           operating viscosity at limit_C [mm²/s]
+    P1_N : float             load of the friction moment [N]
+    f0, f1 : float           friction coefficients (operating lubrication and load)
+    """
+
+    n_rpm: float
+    f_n: float
+    K_L: float
+    K_P: float
+    n_theta_r_rpm: float
+    Phi_W: float
+    limit_C: float
+    nu_cSt: float
+    P1_N: float
+    f0: float
+    f1: float
+
+
+_SUPPLIES = {"oil_bath": "oil_bath", "oil_jet": "oil_jet", "oil_air": "oil_air", "grease": "grease"}
+
+
+def din732_safe_speed(scene: Scene, *, limit_C: float = 70.0) -> Din732Speed:
+    """DIN 732 thermally safe operating speed of a scene's bearing, by the standard's method.
+
+    n_θr from ISO 15312's heat balance with Palmgren's oil-bath coefficients at the reference load
+    (:func:`~thermobear.rating.speeds.standard_reference_speed`); the heat dissipated at ``limit_C``:
+    seating surfaces k_q A_s (limit − ambient) plus, with an oil jet, the oil flow heated from its
+    inlet temperature to the limit; the friction moments at the scene's load and at the viscosity at
+    ``limit_C``; f_n by DIN 732's approximation.
+
+    Raises
+    ------
+    InputError    thrust ball bearings (outside DIN 732), dry-film supply, a limit not above the ambient
+
+    >>> import thermobear as tb
+    >>> d = din732_safe_speed(tb.load_scene(tb.example_path("block_6208_oil_bath.toml")))
+    >>> 1000 < d.n_rpm < 30000, round(d.f_n * d.n_theta_r_rpm - d.n_rpm, 6)
+    (True, 0.0)
+    """
+    brg = scene.bearing
+    if brg.kind == "thrust":
+        raise InputError("bearing.kind", brg.kind, "DIN 732 gives no thermally safe speed for thrust ball bearings")
+    if scene.supply not in _SUPPLIES:
+        raise InputError("lubricant.supply", scene.supply, f"DIN 732 here: one of {', '.join(_SUPPLIES)}")
+    dT_A = limit_C - scene.T_ambient_C
+    if not np.isfinite(dT_A) or dT_A <= 0.0:
+        raise InputError("limit_C", limit_C, f"above the ambient {scene.T_ambient_C:g} °C (no heat leaves the bearing)")
+    ref = reference_conditions(brg.kind)
+    A_s = float(reference_surface(brg.bore, brg.outer_diameter, brg.width, brg.kind))
+    f0r, f1r = palmgren_coefficients(brg.kind, "oil_bath", ref.load_fraction * brg.C0, brg.C0)
+    n_r, _, _ = standard_reference_speed(A_s, brg.dm, ref.load_fraction * brg.C0, f0r, float(f1r), ref.nu_cSt,
+                                         n_max_rpm=_ceiling_rpm(brg))
+    oil_L_min, dT_oil = 0.0, 0.0
+    if scene.supply == "oil_jet" and scene.T_oil_in_C is not None:
+        oil_L_min, dT_oil = scene.oil_flow * 6e4, max(limit_C - scene.T_oil_in_C, 0.0)
+    Phi = float(din732_heat_flow(A_s, dT_A, oil_flow_L_min=oil_L_min, dT_oil=dT_oil))
+    P0 = static_equivalent_load(scene.Fr, scene.Fa, brg.alpha0, brg.kind)
+    f0, f1 = palmgren_coefficients(brg.kind, _SUPPLIES[scene.supply], P0, brg.C0)
+    P1 = float(palmgren_load(brg.kind, scene.Fa, scene.Fr, brg.alpha0))
+    nu = float(scene.lubricant.nu(limit_C))
+    M0, M1 = palmgren_moments(n_r, nu, P1, brg.dm, f0, f1)
+    K_L, K_P = din732_parameters(n_r, M0, M1, Phi)
+    f_n = float(din732_speed_ratio(K_L, K_P))
+    return Din732Speed(n_rpm=f_n * n_r, f_n=f_n, K_L=float(K_L), K_P=float(K_P), n_theta_r_rpm=n_r, Phi_W=Phi,
+                       limit_C=float(limit_C), nu_cSt=nu, P1_N=P1, f0=float(f0), f1=float(f1))
