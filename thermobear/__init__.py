@@ -25,7 +25,7 @@ from thermobear.scene import Scene, load_scene  # noqa: F401
 from thermobear.rating import rating_life, RatingLife, iso16281_life  # noqa: F401
 from thermobear.models import choose_models, open_contacts  # noqa: F401
 from thermobear.coupled import (solve, steady_state, steady_states, transient, scene_losses, prepare,  # noqa: F401
-                                Prepared, RunResult, SteadyState, TransientRun)
+                                Prepared, RunResult, SteadyState, TransientRun, UncertaintyResult)
 from thermobear.app.sweep import run_sweep  # noqa: F401
 from thermobear.app.rig import read_log, compare, RigLog  # noqa: F401
 from thermobear.app.calibration import calibrate  # noqa: F401

@@ -8,7 +8,17 @@ mapping ``key → Field``; :func:`check_table` returns the typed values or raise
 * a number is a TOML integer or float (never a boolean, never text), finite, inside its range;
 * a boolean is a TOML boolean (``"false"`` is text, not false);
 * a choice is one of its listed values;
-* text is text; a list of names is a list of text; a table is a table.
+* text is text; a list of names is a list of text; a table is a table; an interval is ``[lo, hi]``.
+
+An estimated value may say how far it may lie from its nominal: an ``uncertainty`` table next to it
+(:func:`check_uncertainty`, :class:`Uncertainty`), one syntax for every data file — materials,
+lubricants, bearings, network nodes and elements, scene sections::
+
+    k_W_mK = 42.7
+    estimated = ["k_W_mK"]
+    uncertainty.k_W_mK = { range = [40.0, 46.6], source = "ASM Handbook vol. 1: 40-46.6 W/(m K)" }
+    # or { factor = [0.8, 1.25], distribution = "lognormal", source = "..." }  (times the nominal value)
+    # or { offset = [-3.0, 3.0], distribution = "normal", source = "..." }     (plus, in the key's unit)
 
 >>> from thermobear.schema import Field, check_table
 >>> fields = {"n_rpm": Field.number("rpm", lo=0.0), "drag": Field.flag()}
@@ -25,16 +35,20 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+from scipy.special import ndtri
+
 from thermobear.errors import InputError
 
-__all__ = ["Field", "check_table", "check_value", "describe"]
+__all__ = ["Field", "check_table", "check_value", "describe", "Uncertainty", "check_uncertainty",
+           "UNCERTAINTY_FIELDS", "UNCERTAINTY_KINDS", "DISTRIBUTIONS"]
 
 
 @dataclass(frozen=True)
 class Field:
     """What one key accepts.
 
-    kind : "number" | "integer" | "bool" | "choice" | "text" | "names" | "table" | "any"
+    kind : "number" | "integer" | "bool" | "choice" | "text" | "names" | "table" | "interval" | "any"
     unit : the key's unit (for messages and documentation)
     lo, hi : accepted range (numbers, integers); ``lo_open`` / ``hi_open`` exclude the ends
     choices : accepted values of a choice
@@ -88,6 +102,11 @@ class Field:
         return cls("table", doc=doc)
 
     @classmethod
+    def interval(cls, unit="-", doc=""):
+        """Two finite numbers ``[lo, hi]`` with lo <= hi."""
+        return cls("interval", unit, doc=doc)
+
+    @classmethod
     def anything(cls, doc=""):
         """Any TOML value (checked by its owner)."""
         return cls("any", doc=doc)
@@ -136,6 +155,12 @@ def check_value(value, f: Field, where: str):
         if not isinstance(value, (list, tuple)) or not all(isinstance(v, str) for v in value):
             raise InputError(where, value, "must be a list of names, e.g. [\"D_mm\", \"fi\"]")
         return tuple(value)
+    if k == "interval":
+        if (not isinstance(value, (list, tuple)) or len(value) != 2
+                or any(isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) for v in value)
+                or value[0] > value[1]):
+            raise InputError(where, value, "must be two finite numbers [lo, hi] with lo <= hi")
+        return (float(value[0]), float(value[1]))
     if k == "table":
         if not isinstance(value, dict):
             raise InputError(where, value, "must be a table, e.g. { key = value }")
@@ -182,3 +207,117 @@ def describe(fields: dict) -> list:
                if f.kind in ("number", "integer") else "true / false" if f.kind == "bool" else f.kind)
         rows.append((key, f.unit, acc, f.doc))
     return rows
+
+
+# --------------------------------------------------------------------------- uncertainty of estimated values
+UNCERTAINTY_KINDS = ("factor", "offset", "range")
+DISTRIBUTIONS = ("uniform", "normal", "lognormal")
+_Z95 = 1.6448536269514722     # standard normal 95 % quantile: [lo, hi] of a normal / lognormal is its 5-95 % interval
+
+#: The keys of one uncertainty entry (``uncertainty.<key> = { ... }``): exactly one of factor / offset / range.
+UNCERTAINTY_FIELDS = {
+    "factor": Field.interval("-", doc="[lo, hi] times the nominal value (which may be an expression)"),
+    "offset": Field.interval("key's unit", doc="[lo, hi] added to the nominal value"),
+    "range": Field.interval("key's unit", doc="[lo, hi] absolute values"),
+    "distribution": Field.choice(*DISTRIBUTIONS, doc="uniform: [lo, hi] is the support; normal, lognormal: "
+                                 "[lo, hi] is the 5-95 % interval (default uniform)"),
+    "source": Field.text("where the range comes from, or the reasoning behind it", required=True),
+}
+
+
+@dataclass(frozen=True)
+class Uncertainty:
+    """How far an estimated value may lie from its nominal, and how its draws are distributed.
+
+    Attributes
+    ----------
+    kind : str           ``"factor"`` (the value times a draw), ``"offset"`` (the value plus a draw, in
+                         the key's unit) or ``"range"`` (the draw is the value)
+    lo, hi : float       ``uniform``: the support of the draws; ``normal`` / ``lognormal``: their
+                         5 % and 95 % quantiles (the normal's mean is the mid-point, the lognormal's
+                         median the geometric mean)
+    distribution : str   ``"uniform"``, ``"normal"`` or ``"lognormal"``
+    source : str         where the range comes from, or the reasoning
+    integer : bool       a whole-number key (e.g. a number of balls): uniform draws of a range are the
+                         whole numbers lo … hi, equally likely; other draws are rounded
+
+    >>> u = Uncertainty("factor", 0.8, 1.25, "lognormal", "x")
+    >>> [round(float(v), 4) for v in u.quantile([0.05, 0.5, 0.95])]
+    [0.8, 1.0, 1.25]
+    >>> float(u.apply(2.0, 1.1)), float(Uncertainty("offset", -1.0, 1.0).apply(20.0, 0.5))
+    (2.2, 20.5)
+    """
+
+    kind: str
+    lo: float
+    hi: float
+    distribution: str = "uniform"
+    source: str = ""
+    integer: bool = False
+
+    def quantile(self, u):
+        """Draws at probabilities ``u`` in (0, 1) (array_like): the inverse distribution function."""
+        u = np.asarray(u, dtype=float)
+        if self.integer and self.kind == "range":
+            if self.distribution == "uniform":
+                return np.minimum(np.floor(self.lo + u * (self.hi - self.lo + 1.0)), self.hi)
+            return np.round(Uncertainty(self.kind, self.lo, self.hi, self.distribution).quantile(u))
+        if self.distribution == "uniform":
+            return self.lo + u * (self.hi - self.lo)
+        if self.distribution == "normal":
+            return 0.5 * (self.lo + self.hi) + 0.5 * (self.hi - self.lo) / _Z95 * ndtri(u)
+        a, b = math.log(self.lo), math.log(self.hi)
+        return np.exp(0.5 * (a + b) + 0.5 * (b - a) / _Z95 * ndtri(u))
+
+    def apply(self, nominal, draw):
+        """The value at ``draw`` (a number or an array over operating points) of a ``nominal`` value."""
+        if self.kind == "factor":
+            return nominal * draw
+        if self.kind == "offset":
+            return nominal + draw
+        return draw + 0.0 * nominal
+
+    def as_dict(self) -> dict:
+        return {self.kind: [self.lo, self.hi], "distribution": self.distribution, "source": self.source}
+
+
+def check_uncertainty(table, values: dict, where: str) -> dict:
+    """The typed ``uncertainty`` table of a data table: key → :class:`Uncertainty`.
+
+    Parameters
+    ----------
+    table : dict     ``{key: {factor|offset|range = [lo, hi], distribution = ..., source = ...}}``
+    values : dict    the numeric keys the uncertainty may name → their :class:`Field` (bounds of an
+                     absolute ``range``), or None for a value without a field (e.g. an expression)
+    where : str      the table's name in messages
+
+    A key that is not a numeric value of the table is refused with the accepted keys; so is an entry
+    with none or two of factor / offset / range, a non-positive factor or lognormal bound, and an
+    absolute range outside the key's accepted values.
+
+    >>> check_uncertainty({"k_W_mK": {"range": [40, 46.6], "source": "ASM"}},
+    ...                   {"k_W_mK": Field.number("W/(m K)", 0.0)}, "aisi-52100")["k_W_mK"].hi
+    46.6
+    """
+    table = check_value(table, Field.table(), f"{where}.uncertainty")
+    out = {}
+    for key, entry in table.items():
+        w = f"{where}.uncertainty.{key}"
+        if key not in values:
+            raise InputError(w, entry, "names no numeric value of this table; accepted: "
+                             + (", ".join(sorted(values)) or "none"))
+        e = check_table(entry, UNCERTAINTY_FIELDS, w)
+        kinds = [k for k in UNCERTAINTY_KINDS if k in e]
+        if len(kinds) != 1:
+            raise InputError(w, entry, "give exactly one of factor = [lo, hi], offset = [lo, hi], range = [lo, hi]")
+        kind = kinds[0]
+        lo, hi = e[kind]
+        dist = e.get("distribution", "uniform")
+        if (kind == "factor" or dist == "lognormal") and lo <= 0.0:
+            raise InputError(f"{w}.{kind}", [lo, hi], "a factor or a lognormal interval must be > 0")
+        f = values[key]
+        if kind == "range" and f is not None:
+            for v in (lo, hi):
+                check_value(v, f, f"{w}.range")
+        out[key] = Uncertainty(kind, lo, hi, dist, e["source"], integer=f is not None and f.kind == "integer")
+    return out

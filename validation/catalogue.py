@@ -31,6 +31,7 @@ Run:  python validation/catalogue.py
 """
 from __future__ import annotations
 
+import math
 import sys
 import tomllib
 from pathlib import Path
@@ -154,6 +155,27 @@ def _fmt(v):
     return str(v)
 
 
+def uncertainty_lines(e: dict, kind: str) -> list[str]:
+    """The ranges of the estimated internal geometry (thermobear.schema.check_uncertainty), each bounded
+    by what still fits: balls of D on dm need D <= dm sin(pi/Z)."""
+    D, dm, Z = e["D_mm"], e["dm_mm"], e["Z"]
+    step = 25.4 / 64.0
+    fit = lambda z: dm * math.sin(math.pi / z)  # noqa: E731
+    hi_D = min(D + step, math.floor(fit(Z) * 1e4) / 1e4)
+    hi_Z = Z + 1 if D <= fit(Z + 1) else Z
+    osc = ((0.52, 0.54, "thrust grooves of 0.52-0.54 D about the 0.53 of the 51205 (seed 000)"),) * 2 if kind == "thrust" \
+        else ((0.51, 0.52, "inner grooves 0.51-0.52 D about the method's 0.515 (method 3.1)"),
+              (0.52, 0.53, "outer grooves 0.52-0.53 D about the method's 0.525 (method 3.2)"))
+    return [f'uncertainty.D_mm = {{ range = [{round(D - step, 4)!r}, {round(hi_D, 4)!r}], source = "reasoning: the next '
+            f'1/64 in ball either side of the nearest to Kw (D - d), at most what fits on dm" }}',
+            f'uncertainty.dm_mm = {{ factor = [0.99, 1.01], source = "reasoning: makers place the pitch circle within '
+            f'about 1 % of (d + D)/2" }}',
+            f'uncertainty.Z = {{ range = [{Z - 1}, {hi_Z}], source = "reasoning: one ball either way of the 1.2 Dw '
+            f'spacing rule, as many as fit (draws that do not fit together are refused, counted as failed samples)" }}',
+            f'uncertainty.fi = {{ range = [{osc[0][0]}, {osc[0][1]}], source = "reasoning: {osc[0][2]}" }}',
+            f'uncertainty.fo = {{ range = [{osc[1][0]}, {osc[1][1]}], source = "reasoning: {osc[1][2]}" }}']
+
+
 def toml_entry(name: str, e: dict, info: dict, plan_src: str) -> list[str]:
     kind = e["kind"]
     std = "ISO 104" if kind == "thrust" else "ISO 15"
@@ -182,6 +204,7 @@ def toml_entry(name: str, e: dict, info: dict, plan_src: str) -> list[str]:
             line = f"{k} = {_fmt(e[k])}"
             lines.append(f"{line:<32s}# {src[k]}" if k in src else line)
     lines.append('estimated = ["D_mm", "dm_mm", "Z", "fi", "fo"]')
+    lines += uncertainty_lines(e, kind)
     how = (f"{METHOD_URL}" if kind == "deep_groove" else f"ball size and dm after {METHOD_URL}, Z and "
            + ("thrust ball fraction" if kind == "thrust" else "no filling-angle limit") + ": stated extension")
     lines.append(f'source = "dimensions: {plan_src}; internal geometry: {how} (validation/catalogue.py)"')

@@ -23,6 +23,13 @@ kinematic viscosity at 40 °C in mm²/s, ±10 %):
 * thermal: Cragoe (1929) for the mineral oils (thermal = "cragoe"); for PAO, Cragoe's petroleum-oil fit
   does not apply and the constants of seed002-pg1 are used (k 0.145 W/(m K), cp 2150 J/(kg K), estimated).
 
+Uncertainty of the estimated values (``uncertainty.<key>`` in each file, thermobear.schema.check_uncertainty):
+nu100 between the viscosity indices the sources above give for the family (mineral: VI 80-120, API 1509
+Annex E Groups I/II; PAO: VI 125-150, Rudnick & Shubkin 1999), each end by D2270 inverted as for the nominal;
+rho15 of mineral grades +-25 kg/m³ about the anchor fit (paraffinic to naphthenic base oils of one grade),
+of PAO 820-855 kg/m³ (the span of PAO 4-100 above); k and cp of PAO the typical ranges quoted per value;
+a grease's base-oil nu40 the class range of its note; its temperature limits +-10 K (makers' limits of a class).
+
 Greases "grease-<thickener>-<base oil>-vg<grade>-nlgi2": the base oil is the grade above (all film and
 friction models use the base oil, as for the seed greases); thickener, NLGI class and temperature range
 are labels (NLGI 2 in the description: the Lubricant loader has no key for it).
@@ -42,6 +49,7 @@ OUT = ROOT / "materials" / "lubricants"
 LH_TABLE = Path(__file__).resolve().parent / "data" / "astm_d2270_LH.csv"
 GRADES = (10, 15, 22, 32, 46, 68, 100, 150, 220, 320, 460)
 VI = {"mineral": 100.0, "pao": 140.0}
+VI_RANGE = {"mineral": (80.0, 120.0), "pao": (125.0, 150.0)}     # API 1509 Annex E Groups I/II; Rudnick & Shubkin 1999
 GOLD = {"mineral": (9.90, 0.14), "pao": (7.38, 0.13)}
 RHO_ANCHORS = ((36.6, 864.6), (230.0, 900.0))      # seed 004 Table 3; seed 002 Table 1 (MG1 base oil)
 RHO_PAO = 830.0                                    # seed 002 Table 1 (PG1 base oil)
@@ -114,6 +122,20 @@ def oil_lines(grade, family, name=None, kind="oil", extra=()):
     lines.append("estimated = [" + ", ".join(f'"{e}"' for e in est) + "]")
     lines.append(f"# nu100_cSt: viscosity index {VI[family]:g} assumed for {fam} oils (API 1509 Annex E groups; "
                  "module docstring of validation/lubricant_grades.py).")
+    lo_vi, hi_vi = VI_RANGE[family]
+    lines.append(f"uncertainty.nu100_cSt = {{ range = [{round(nu100_from_vi(float(grade), lo_vi), 3)!r}, "
+                 f"{round(nu100_from_vi(float(grade), hi_vi), 3)!r}], source = \"ASTM D2270 inverted for VI {lo_vi:g}-"
+                 f"{hi_vi:g}, the {fam} base-oil range (validation/lubricant_grades.py)\" }}")
+    if family == "mineral":
+        lines.append('uncertainty.rho15_kg_m3 = { offset = [-25.0, 25.0], source = "reasoning: paraffinic to naphthenic '
+                     'base oils of one grade, 820-920 kg/m³ overall (validation/lubricant_grades.py)" }')
+    else:
+        lines += ['uncertainty.rho15_kg_m3 = { range = [820.0, 855.0], source = "PAO 4-100 base stocks span about '
+                  '820-855 kg/m³ (validation/lubricant_grades.py)" }',
+                  'uncertainty.k_W_mK = { range = [0.14, 0.15], source = "typical PAO 0.14-0.15 W/(m K), as '
+                  'seed002-pg1" }',
+                  'uncertainty.cp_J_kgK = { range = [2100.0, 2200.0], source = "typical PAO 2.1-2.2 kJ/(kg K), as '
+                  'seed002-pg1" }']
     return lines, nu100
 
 
@@ -130,6 +152,12 @@ GREASES = [
 ]
 
 
+#: base-oil nu40 range of each grease class [mm²/s] (the notes above)
+CLASS_NU40 = {"grease-lithium-mineral-vg100-nlgi2": (90.0, 150.0), "grease-lithium-complex-mineral-vg150-nlgi2":
+              (100.0, 220.0), "grease-polyurea-mineral-vg100-nlgi2": (70.0, 120.0),
+              "grease-lithium-pao-vg22-nlgi2": (15.0, 32.0)}
+
+
 def grease_lines(name, thickener, family, grade, tmin, tmax, note):
     fam = "mineral" if family == "mineral" else "PAO"
     extra = [f'description = "Generic {thickener} grease, NLGI 2, {fam} base oil ISO VG {grade} (estimated class '
@@ -142,6 +170,13 @@ def grease_lines(name, thickener, family, grade, tmin, tmax, note):
     lines[i + 2] = lines[i + 2].replace("]", ', "nu40_cSt", "grease_T_min_C", "grease_T_max_C"]')
     lines += [f"# nu40_cSt: estimated, {note}; NLGI 2 (265-295 worked penetration, the usual bearing",
               "#   consistency) is stated in the description only (no loader key for it)."]
+    lo, hi = CLASS_NU40[name]
+    lines += [f'uncertainty.nu40_cSt = {{ range = [{lo!r}, {hi!r}], source = "base oils of this grease class '
+              f'{lo:g}-{hi:g} mm²/s at 40 °C (note above)" }}',
+              'uncertainty.grease_T_min_C = { offset = [-10.0, 10.0], source = "reasoning: makers\' limits of one grease '
+              'class differ by about 10 K" }',
+              'uncertainty.grease_T_max_C = { offset = [-10.0, 10.0], source = "reasoning: makers\' limits of one grease '
+              'class differ by about 10 K" }']
     return lines, nu100
 
 

@@ -1,5 +1,8 @@
 """Command-line interface: ``thermobear <verb> ...``.
 
+``--uncertainty N`` (run, transient, compare): bands over N samples of the estimated inputs
+(:mod:`thermobear.coupled.uncertainty`), with ``--seed``, ``--design``, ``--groups``, ``--sensitivity``.
+
 Verbs: ``run`` (steady state), ``transient`` (heat-up, optional speed/load schedule), ``sweep``
 (grid over speed, load, temperature, lubricant), ``compare`` (a rig log against a simulation),
 ``calibrate`` (fit uncertain parameters to a rig log), ``spin-down`` (seed 001 coast-down rig),
@@ -60,6 +63,21 @@ def _common(sp, plot=True, sets=True):
     sp.add_argument("--debug", action="store_true", default=argparse.SUPPRESS, help="show tracebacks")
 
 
+def _uncertainty_args(sp):
+    g = sp.add_argument_group("uncertainty (bands over the estimated inputs of the scene's data)")
+    g.add_argument("--uncertainty", type=int, default=None, metavar="N",
+                   help="sample the estimated inputs N times (their ranges: uncertainty.<key> in the data files) "
+                        "and report the 5/50/95 %% bands and the inputs ranked")
+    g.add_argument("--seed", type=int, default=0, help="seed of the sample design (default 0: runs repeat)")
+    g.add_argument("--design", choices=("lhs", "sobol"), default="lhs",
+                   help="Latin hypercube (default) or scrambled Sobol' sequence")
+    g.add_argument("--groups", type=int, default=None, metavar="G",
+                   help="bearing-geometry families (default min(N, 8)): the geometry is drawn at G levels")
+    g.add_argument("--sensitivity", choices=("src", "sobol"), default="src",
+                   help="ranking: standardised regression coefficients (default) or first-order Sobol indices "
+                        "(RBD-FAST, needs the 'sensitivity' extra: SALib)")
+
+
 def _rig_args(sp):
     sp.add_argument("scene")
     sp.add_argument("log", help="rig log CSV (t_s / n_rpm, T_<name>_C, torque_Nm, ...)")
@@ -81,6 +99,7 @@ def build_parser() -> argparse.ArgumentParser:
     r = sub.add_parser("run", help="coupled steady state of a scene (temperatures, power, models used)")
     r.add_argument("scene", help="scene file (TOML), e.g. examples/seed004_oil_jet_7210.toml")
     _common(r)
+    _uncertainty_args(r)
     r.set_defaults(func=cmd_run)
 
     tr = sub.add_parser("transient", help="heat-up of a scene: every node and the loss breakdown vs time")
@@ -91,6 +110,7 @@ def build_parser() -> argparse.ArgumentParser:
     tr.add_argument("--points", type=int, default=201, help="number of output times (default 201)")
     tr.add_argument("--T0-C", dest="T0_C", type=float, default=None, help="start temperature [°C] (default ambient)")
     _common(tr)
+    _uncertainty_args(tr)
     tr.set_defaults(func=cmd_transient)
 
     sw = sub.add_parser("sweep", help="grid over speed, load, temperature and lubricant (rows written as they finish)")
@@ -113,6 +133,7 @@ def build_parser() -> argparse.ArgumentParser:
     _rig_args(c)
     c.add_argument("--csv", metavar="OUT", help="write measured and simulated values as CSV")
     _common(c)
+    _uncertainty_args(c)
     c.set_defaults(func=cmd_compare)
 
     ca = sub.add_parser("calibrate", help="fit uncertain parameters to a rig log (least squares, with uncertainty)")

@@ -231,7 +231,7 @@ def _family_colours(names) -> dict:
 
 
 def plot_heatup(t_s, simulated: dict, path, measured: dict | None = None, title: str = "",
-                mapping: dict | None = None, power_W=None) -> str:
+                mapping: dict | None = None, power_W=None, bands: dict | None = None) -> str:
     """Temperatures vs time [°C]: simulated lines (one colour family per machine part:
     :func:`node_family`), measured points in the same colour; the power loss [W] in a second panel
     when ``power_W`` is given.
@@ -243,6 +243,8 @@ def plot_heatup(t_s, simulated: dict, path, measured: dict | None = None, title:
     measured : dict        name → (t_s, T_C) measured points, keyed like ``simulated``
     mapping : dict         optional name → label suffix (e.g. channel → node)
     power_W : array_like   optional total power loss over t_s [W]
+    bands : dict           optional name → (low, high) temperatures [°C] at t_s, shaded (the 5–95 %
+                           band over the estimated inputs)
     """
     t = np.asarray(t_s, float)
     if power_W is None:
@@ -255,6 +257,9 @@ def plot_heatup(t_s, simulated: dict, path, measured: dict | None = None, title:
         col = colours[mapping.get(k, k) if mapping else k]
         lab = k + (f" → {mapping[k]}" if mapping and k in mapping else "")
         ax.plot(t / scale, np.asarray(T, float), "-", color=col, label=f"{lab} (model)")
+        if bands and k in bands:
+            ax.fill_between(t / scale, np.asarray(bands[k][0], float), np.asarray(bands[k][1], float), color=col,
+                            alpha=0.2, lw=0, label=f"{k} 5–95 % band")
         if measured and k in measured:
             tm, Tm = measured[k]
             ax.plot(np.asarray(tm, float) / scale, np.asarray(Tm, float), "o", ms=3.5, color=col, alpha=0.7,
@@ -328,7 +333,7 @@ def plot_network(template, steady, path, title: str = "", label_share: float = 0
 
 
 def plot_vs_speed(n_rpm, simulated: dict, path, measured: dict | None = None, ylabel: str = "",
-                  title: str = "", yscale: float = 1.0, labels=None) -> str:
+                  title: str = "", yscale: float = 1.0, labels=None, bands: dict | None = None) -> str:
     """Quantities vs speed: model lines (or markers) and measured points.
 
     Parameters
@@ -339,6 +344,7 @@ def plot_vs_speed(n_rpm, simulated: dict, path, measured: dict | None = None, yl
     ylabel : str          axis label with unit
     yscale : float        factor applied to every value (e.g. 1e3 for N m → N mm)
     labels : list[str]    optional per-point text (e.g. the lubricant of each row)
+    bands : dict          optional name → (low, high) at n_rpm, drawn as intervals (5–95 % bands)
     """
     n = np.asarray(n_rpm, float)
     order = np.argsort(n, kind="stable")
@@ -353,6 +359,10 @@ def plot_vs_speed(n_rpm, simulated: dict, path, measured: dict | None = None, yl
         col = f"C{i % 10}"
         v = np.asarray(v, float) * yscale
         m = np.asarray(measured[k], float) * yscale if measured and k in measured else None
+        if bands and k in bands:
+            lo, hi = (np.asarray(b, float) * yscale for b in bands[k])
+            ax.errorbar(n if labels is None else x, 0.5 * (lo + hi), yerr=0.5 * (hi - lo), fmt="none", ecolor=col,
+                        elinewidth=4, alpha=0.3, label=f"{k} 5–95 % band")
         if labels is None:
             ax.plot(n[order], v[order], "-x", color=col, label=f"{k} (model)")
             if m is not None:
@@ -449,7 +459,7 @@ def plot_comparison(comp, outdir, title, prefix="compare") -> list:
         sub = f"{title}\n{comp.mode}" if comp.mode else title
         if temps or comp.imposed:
             paths.append(_log_vs_time(mx, {k: model[k] for k in temps}, comp, temps, d / f"{prefix}_heatup.png",
-                                      "temperature [°C]", sub, imposed=comp.imposed))
+                                      "temperature [°C]", sub, imposed=comp.imposed, bands=_band_pairs(comp)))
         if "torque_Nm" in comp.simulated:
             paths.append(_log_vs_time(mx, {"torque_Nm": model["torque_Nm"]}, comp, ["torque_Nm"],
                                       d / f"{prefix}_torque.png", "friction torque [N mm]", sub, yscale=1e3))
@@ -462,12 +472,72 @@ def plot_comparison(comp, outdir, title, prefix="compare") -> list:
     if temps:
         paths.append(plot_vs_speed(comp.x, {k: comp.simulated[k] for k in temps}, d / f"{prefix}_temperature.png",
                                    {k: comp.measured[k] for k in temps}, "temperature [°C]",
-                                   f"Temperature vs speed — {title}", labels=labels))
+                                   f"Temperature vs speed — {title}", labels=labels, bands=_band_pairs(comp)))
     return paths
 
 
-def _log_vs_time(t_model, model: dict, comp, channels, path, ylabel, title, yscale=1.0, imposed=None) -> str:
-    """Model (continuous) and measured points vs time, with the residual panel below."""
+def _band_pairs(comp) -> dict:
+    """channel → (p5, p95) of a comparison with bands."""
+    return {k: (b["p5"], b["p95"]) for k, b in getattr(comp, "bands", {}).items()}
+
+
+def plot_bands(unc, outdir, title: str = "") -> list:
+    """The bands of an :class:`~thermobear.coupled.uncertainty.UncertaintyResult`.
+
+    Steady state: one interval per node (5–95 % bar, median tick, nominal dot), and the power with
+    its breakdown (``bands_T.png``, ``bands_P.png``).  Heat-up: shaded 5–95 % bands over time around
+    the nominal heat-up of the rig's measured nodes (``unc.focus``) and the balls, mixture and housing,
+    and of the power (``bands_heatup.png``, ``bands_P_heatup.png``)."""
+    d = Path(outdir)
+    d.mkdir(parents=True, exist_ok=True)
+    Tk = [k for k in unc.bands if k.startswith("T_C.")]
+    Pk = [k for k in unc.bands if not k.startswith("T_C.")]
+    nom = unc.nominal
+    if unc.t_s is not None:
+        t = np.asarray(unc.t_s, float)
+        shown = tuple(unc.focus) + ("balls", "oil_air", "housing", "bearing")   # the rig's nodes and the loss nodes
+        free = [k for k in Tk if k[4:] in shown and np.ptp(np.asarray(unc.bands[k]["p95"], float)) > 0]
+        sim = {k[4:]: np.interp(t, nom.t_s, nom.T_C[k[4:]]) for k in free}
+        paths = [plot_heatup(t, sim, d / "bands_heatup.png", title=title,
+                             bands={k[4:]: (unc.bands[k]["p5"], unc.bands[k]["p95"]) for k in free})]
+        P = {"P_W": np.interp(t, nom.t_s, nom.P_W)}
+        fig, ax = plt.subplots(figsize=(7.5, 4.0))
+        ax.plot(t, P["P_W"], "-", color="C0", label="power (nominal)")
+        ax.fill_between(t, unc.bands["P_W"]["p5"], unc.bands["P_W"]["p95"], color="C0", alpha=0.2, lw=0,
+                        label="5–95 % band")
+        ax.set_xlabel("time [s]"), ax.set_ylabel("power loss [W]"), ax.grid(alpha=0.3), ax.legend(fontsize=8)
+        ax.set_title(title)
+        return paths + [_save(fig, d / "bands_P_heatup.png")]
+    paths = []
+    for keys, name, unit in ((Tk, "bands_T.png", "temperature [°C]"), (Pk, "bands_P.png", "power [W]")):
+        if not keys:
+            continue
+        fig, ax = plt.subplots(figsize=(7, 0.35 * len(keys) + 1.5))
+        y = np.arange(len(keys))[::-1]
+        lo = [unc.bands[k]["p5"] for k in keys]
+        hi = [unc.bands[k]["p95"] for k in keys]
+        ax.hlines(y, lo, hi, color="C0", lw=6, alpha=0.35, label="5–95 % band")
+        ax.plot([unc.bands[k]["p50"] for k in keys], y, "|", color="C0", ms=12, mew=2, label="median")
+        nv = [_nominal_of(nom, k) for k in keys]
+        ax.plot(nv, y, "o", color="k", ms=4, label="nominal")
+        ax.set_yticks(y, [k.split(".", 1)[-1] for k in keys])
+        ax.set_xlabel(unit), ax.grid(alpha=0.3, axis="x"), ax.legend(fontsize=7, loc="best")
+        ax.set_title(title or "Bands over the estimated inputs")
+        paths.append(_save(fig, d / name))
+    return paths
+
+
+def _nominal_of(nom, key):
+    kind, _, name = key.partition(".")
+    if kind == "T_C":
+        return nom.T_C[name]
+    if kind == "P_W":
+        return nom.P_W
+    return float(nom.losses.breakdown_W[name])
+def _log_vs_time(t_model, model: dict, comp, channels, path, ylabel, title, yscale=1.0, imposed=None,
+                 bands=None) -> str:
+    """Model (continuous) and measured points vs time, with the residual panel below; ``bands``: channel →
+    (low, high) at the logged rows, shaded (the 5–95 % band over the estimated inputs)."""
     fig, (ax, axr) = plt.subplots(2, 1, figsize=(8, 6), sharex=True, gridspec_kw={"height_ratios": [3, 1.3]})
     tm, t = np.asarray(t_model, float), np.asarray(comp.x, float)
     unit, scale = ("min", 60.0) if t.max() > 600 else ("s", 1.0)
@@ -475,6 +545,9 @@ def _log_vs_time(t_model, model: dict, comp, channels, path, ylabel, title, ysca
         col = f"C{i % 10}"
         lab = k + (f" → {comp.mapping[k]}" if k in comp.mapping else "")
         ax.plot(tm / scale, np.asarray(model[k], float) * yscale, "-", color=col, lw=1.4, label=f"{lab} (model)")
+        if bands and k in bands:
+            ax.fill_between(t / scale, np.asarray(bands[k][0], float) * yscale, np.asarray(bands[k][1], float) * yscale,
+                            color=col, alpha=0.2, lw=0, label=f"{k} 5–95 % band")
         m = np.asarray(comp.measured[k], float) * yscale
         ax.plot(t / scale, m, "o", ms=3.5, color=col, alpha=0.7, label=f"{k} (measured)")
         r = np.asarray(comp.simulated[k], float) * yscale - m

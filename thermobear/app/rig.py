@@ -476,6 +476,9 @@ class Comparison:
     model_x : ndarray     times [s] of the integrated trajectory (transient logs; else None)
     model : dict          channel → the model along ``model_x`` (continuous curve)
     imposed : dict        channel → logged values imposed on a node (the boundary)
+    bands, inside         channel → the model's band over the estimated inputs, dict(p5, p50, p95) over x,
+                          and (measured points inside it, their number) (:mod:`thermobear.app.bands`)
+    uncertainty : dict    the sample design and failed samples of the bands
     """
 
     kind: str
@@ -489,12 +492,17 @@ class Comparison:
     model_x: np.ndarray | None = None
     model: dict = field(default_factory=dict)
     imposed: dict = field(default_factory=dict)
+    bands: dict = field(default_factory=dict)
+    inside: dict = field(default_factory=dict)
+    uncertainty: dict = field(default_factory=dict)
 
     def as_dict(self) -> dict:
         out = {"kind": self.kind, "mode": self.mode, "log": self.log.path, "mapping": self.mapping,
                "metrics": self.metrics, "x": self.x, "measured": self.measured, "simulated": self.simulated}
         if self.model_x is not None:
             out["model"] = {"t_s": self.model_x, **self.model}
+        if self.bands:
+            out.update(bands=self.bands, inside_band=self.inside, uncertainty=self.uncertainty)
         return out
 
     def summary(self) -> str:
@@ -516,13 +524,19 @@ class Comparison:
             lines.append(row)
         if self.kind == "transient":
             lines.append("\nSS err: mean error over the last 10 % of the log; t90: time to 90 % of the rise [s].")
+        if self.bands:
+            u = self.uncertainty
+            lines += ["", f"Model band over the estimated inputs ({u['n']} samples, seed {u['seed']}, {u['failed']} "
+                      "failed): measured points inside the 5-95 % band"] + [
+                f"  {ch:14s} {k:4d} of {m:4d}" for ch, (k, m) in self.inside.items()]
         return "\n".join(lines)
 
 
 def compare(scene: Scene, log: RigLog, mapping: dict, *, T0_C=None, dense: int = 400) -> Comparison:
     """Simulate a rig log (:func:`simulate_log`) and measure the agreement of every mapped channel
     (and torque) at the logged rows; a transient log also keeps the integrated trajectory at
-    ``dense`` evenly spaced times (``model_x``, ``model``) to draw the model continuously."""
+    ``dense`` evenly spaced times (``model_x``, ``model``) to draw the model continuously (the model's
+    band over the estimated inputs: :func:`thermobear.app.bands.compare_bands`)."""
     sim = simulate_log(scene, log, mapping, T0_C=T0_C, dense=dense if log.kind == "transient" else 0)
     x = log.t_s if log.kind == "transient" else log["n_rpm"]
     meas, simd, met = {}, {}, {}

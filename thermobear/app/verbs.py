@@ -16,6 +16,7 @@ import numpy as np
 
 from thermobear.app.output import (Progress, RowWriter, check_out_dir, check_out_file, csv_text, flatten,
                                    print_json, write_text, wrote)
+from thermobear.app.bands import compare_bands
 from thermobear.app.calibration import calibrate
 from thermobear.app.scaffold import scaffold
 from thermobear.app.rig import channel_map, compare, parse_map, read_log
@@ -24,6 +25,7 @@ from thermobear.app.sweep import run_sweep, sweep_points
 from thermobear.contact.geometry import bearing, bearing_names
 from thermobear.contact.materials import material_names
 from thermobear.coupled import solve, transient
+from thermobear.coupled.uncertainty import steady_uncertainty, transient_uncertainty
 from thermobear.errors import InputError
 from thermobear.files import data_dir, names_in, read_toml
 from thermobear.loads import load_distribution
@@ -136,17 +138,50 @@ def parse_values(text, field, *, allow_str=False):
     return vals
 
 
+def _uncertainty_kw(args) -> dict:
+    """The sample design of ``--uncertainty N`` (``--seed``, ``--design``, ``--groups``, ``--sensitivity``)."""
+    if args.uncertainty is not None and args.uncertainty < 1:
+        raise InputError("--uncertainty", args.uncertainty, "a number of samples >= 1")
+    if args.groups is not None and args.groups < 1:
+        raise InputError("--groups", args.groups, "a number of bearing-geometry families >= 1")
+    if args.sensitivity == "sobol":
+        try:
+            import SALib  # noqa: F401, PLC0415  (optional dependency: checked before computing)
+        except ImportError:
+            raise InputError("--sensitivity", "sobol", "needs SALib: pip install 'thermobear[sensitivity]'") from None
+    return dict(seed=args.seed, method=args.design, groups=args.groups, sensitivity=args.sensitivity)
+
+
+def _failed_line(unc):
+    if unc.failed:
+        print(f"warning: {len(unc.failed)} of {unc.n} samples failed (" + ", ".join(
+            f"{k} {v}" for k, v in sorted(unc.failed_count.items())) + "): the bands are those of the others",
+            file=sys.stderr)
+
+
 # --------------------------------------------------------------------------- run / loads / list
 def cmd_run(args):
     out = _plot_dir(args.plot)
-    res = solve(load_scene_with(args.scene, args.set))
+    kw = _uncertainty_kw(args)
+    scene = load_scene_with(args.scene, args.set)
+    if args.uncertainty is not None and scene.T_C is not None:
+        raise InputError("--uncertainty", args.uncertainty, "bands of the coupled solution: a scene with a thermal "
+                         "network and no prescribed temperature (operation.T_C)")
+    res = solve(scene)
+    unc = None if args.uncertainty is None else steady_uncertainty(scene, args.uncertainty, nominal=res.steady, **kw)
     if args.json:
-        print_json(res.as_dict())
+        print_json({**res.as_dict(), "uncertainty": unc.as_dict()} if unc else res.as_dict())
     else:
         print(res.summary())
+        if unc:
+            print("\n" + unc.summary())
+    if unc:
+        _failed_line(unc)
     if out is not None:
         plots = _plots()
         wrote(plots.plot_result(res, out))
+        if unc:
+            wrote(plots.plot_bands(unc, out, title=f"Bands over the estimated inputs — {scene.name}"))
     return 0
 
 
@@ -331,6 +366,8 @@ def cmd_transient(args):
         raise InputError("operation.T_C", scene.T_C, "a transient solves the thermal network: remove the prescribed "
                          "temperature (and give [thermal] network)")
     schedule = read_schedule(args.schedule, scene, args.t_end) if args.schedule else []
+    if args.uncertainty is not None:
+        return _transient_bands(args, scene, schedule, T0, out_csv, out_dir)
     stop = {"flag": False}
 
     def halt(signum, frame):
@@ -377,6 +414,31 @@ def cmd_transient(args):
         free = {n: run.T_C[n] for n in nodes if np.ptp(run.T_C[n]) > 0}
         wrote([plots.plot_heatup(run.t_s, free, out_dir / "heatup.png", title=f"Heat-up — {scene.name}",
                                  power_W=run.P_W)])
+    return 0
+
+
+def _transient_bands(args, scene, schedule, T0, out_csv, out_dir):
+    """``thermobear transient --uncertainty N``: the heat-up's bands over the estimated inputs."""
+    kw = _uncertainty_kw(args)
+    if schedule:
+        raise InputError("--schedule", args.schedule, "a heat-up with --uncertainty runs one operating point")
+    t = np.linspace(0.0, args.t_end, args.points)
+    unc = transient_uncertainty(scene, args.t_end, args.uncertainty, t_eval=t, T0_C=T0, **kw)
+    if out_csv:
+        keys = list(unc.bands)
+        header = ["t_s"] + [f"{k}_{q}" for k in keys for q in ("p5", "p50", "p95")]
+        rows = list(zip(t, *[np.asarray(unc.bands[k][q], float) for k in keys for q in ("p5", "p50", "p95")]))
+        write_text(out_csv, csv_text(header, rows, [f"thermobear transient --uncertainty {args.uncertainty} of "
+                                                     f"{scene.name} ({args.scene}), seed {args.seed}"]))
+        wrote([out_csv])
+    if args.json:
+        print_json({"scene": scene.name, "nominal": {"t_s": unc.nominal.t_s, "T_C": unc.nominal.T_C,
+                                                     "P_W": unc.nominal.P_W}, "uncertainty": unc.as_dict()})
+    else:
+        print(f"thermobear transient — {scene.name}: {args.t_end:g} s\n\n{unc.summary()}")
+    _failed_line(unc)
+    if out_dir is not None:
+        wrote(_plots().plot_bands(unc, out_dir, title=f"Heat-up bands over the estimated inputs — {scene.name}"))
     return 0
 
 
@@ -473,13 +535,18 @@ def cmd_compare(args):
     out_dir = _plot_dir(args.plot)
     out_csv = check_out_file(args.csv, "--csv")
     T0 = _T0(args.T0_C)
+    kw = _uncertainty_kw(args)
     scene, log, mapping = _rig_inputs(args)
     comp = compare(scene, log, mapping, T0_C=T0)
+    if args.uncertainty is not None:
+        compare_bands(comp, scene, args.uncertainty, T0_C=T0, **{k: v for k, v in kw.items() if k != "sensitivity"})
     if out_csv:
         chans = list(comp.measured)
-        header = ["t_s" if comp.kind == "transient" else "n_rpm"] + [f"{c}{s}" for c in chans for s in ("", "_model")]
+        q = ("_p5", "_p95")
+        header = (["t_s" if comp.kind == "transient" else "n_rpm"] + [f"{c}{s}" for c in chans for s in ("", "_model")]
+                  + [f"{c}_model{s}" for c in comp.bands for s in q])
         rows = [[comp.x[i]] + [v for c in chans for v in (comp.measured[c][i], comp.simulated[c][i])]
-                for i in range(comp.x.size)]
+                + [comp.bands[c][s[1:]][i] for c in comp.bands for s in q] for i in range(comp.x.size)]
         note = f"thermobear compare: {args.log} vs {scene.name}; mode: {comp.mode}"
         write_text(out_csv, csv_text(header, rows, [note]))
         wrote([out_csv])

@@ -26,13 +26,13 @@ import numpy as np
 
 from thermobear.files import data_dir, read_toml
 from thermobear.errors import InputError
-from thermobear.schema import Field, check_table
+from thermobear.schema import Field, check_table, check_uncertainty, check_value
 from thermobear.validity import check as check_limit
 from thermobear.contact.hertz import contact_stiffness, series_stiffness
 from thermobear.contact.materials import Material, material, reduced_modulus
 
 __all__ = ["BallBearing", "bearing", "bearing_names", "bearing_series", "bearing_table", "bearing_from_dict",
-           "canonical_designation", "radial_clearance", "KINDS", "CLEARANCE_GROUPS"]
+           "bearing_values", "canonical_designation", "radial_clearance", "KINDS", "CLEARANCE_GROUPS"]
 
 KINDS = ("deep_groove", "angular_contact", "thrust")
 #: ISO 5753-1 radial internal clearance groups in the data file (normal, larger, larger still).
@@ -66,6 +66,8 @@ class BallBearing:
                           ISO 281 values of the geometry, :mod:`thermobear.rating` computes them)
     clearance_group : str ISO 5753-1 group ("CN", "C3", "C4") whose mid value gave Pd (deep groove), or None
     estimated : tuple     names of fields that are estimates, not published data
+    uncertainty : dict    table key (``D_mm``, ``fi`` …) → :class:`~thermobear.schema.Uncertainty` of the
+                          estimated values (:func:`bearing_values` applies drawn values)
 
     Examples
     --------
@@ -98,6 +100,7 @@ class BallBearing:
     estimated: tuple = ()
     C: float | None = None
     clearance_group: str | None = None
+    uncertainty: dict = field(default_factory=dict, compare=False, hash=False, repr=False)
 
     def __post_init__(self):
         p = f"bearing[{self.name}]"
@@ -314,6 +317,7 @@ FIELDS = {
     "C_kN": Field.number("kN", 0.0, None, lo_open=True, doc="basic dynamic load rating"),
     "clearance_group": Field.text("ISO 5753-1 radial clearance group (CN, C3, C4, ...)"),
     "estimated": Field.names("keys whose values are estimates"),
+    "uncertainty": Field.table("ranges of estimated values (thermobear.schema.check_uncertainty)"),
     "aliases": Field.names("other designations"),
     "name": Field.text(), "description": Field.text(), "source": Field.text(),
 }
@@ -463,9 +467,9 @@ def bearing_from_dict(d: dict, name: str = "custom", where: str = "bearing") -> 
     if Pd lies in its range.  Unknown keys raise InputError naming them; so do missing required keys.
     """
     t = check_table(d, FIELDS, where)
-    kw = {_MM_KEYS[k]: t[k] * 1e-3 for k in t if k in _MM_KEYS}
-    if "alpha0_deg" in t:
-        kw["alpha0"] = float(np.deg2rad(t["alpha0_deg"]))
+    unc = check_uncertainty(t.get("uncertainty", {}), {k: FIELDS[k] for k in t if FIELDS[k].kind in ("number", "integer")},
+                            where)
+    kw = _attributes(t)
     for mk in ("ball_material", "ring_material"):
         if mk in t:
             kw[mk] = material(t[mk])
@@ -474,7 +478,40 @@ def bearing_from_dict(d: dict, name: str = "custom", where: str = "bearing") -> 
         kw["clearance_group"] = _clearance(kw, t["clearance_group"], kind, where)
     return BallBearing(Z=t["Z"], fi=t["fi"], fo=t["fo"], kind=kind, name=t.get("name", name), series=t.get("series"),
                        C0=t["C0_kN"] * 1e3 if "C0_kN" in t else None, C=t["C_kN"] * 1e3 if "C_kN" in t else None,
-                       estimated=tuple(t.get("estimated", ())), **kw)
+                       estimated=tuple(t.get("estimated", ())), uncertainty=unc, **kw)
+
+
+def _attributes(t: dict) -> dict:
+    """BallBearing attributes [SI] of the length and angle keys of a table (mm, deg)."""
+    kw = {_MM_KEYS[k]: t[k] * 1e-3 for k in t if k in _MM_KEYS}
+    if "alpha0_deg" in t:
+        kw["alpha0"] = float(np.deg2rad(t["alpha0_deg"]))
+    return kw
+
+
+def bearing_values(brg: BallBearing, values: dict) -> BallBearing:
+    """A bearing with some of its table values replaced (``D_mm``, ``dm_mm``, ``Z``, ``fi``, ``fo``,
+    ``Pd_mm``, ``alpha0_deg``, ``C0_kN``, ``C_kN``: the keys of :data:`FIELDS`, in their units),
+    checked again (e.g. the drawn values of an uncertainty run).
+
+    >>> bearing_values(bearing("7210"), {"D_mm": 12.0, "fi": 0.515}).D
+    0.012
+    """
+    numeric = {k for k, f in FIELDS.items() if f.kind in ("number", "integer")}
+    unknown = [k for k in values if k not in numeric]
+    if unknown:
+        raise InputError(f"bearing[{brg.name}].{unknown[0]}", values[unknown[0]],
+                         f"a numeric bearing key: {', '.join(sorted(numeric))}")
+    t = {k: check_value(float(v) if FIELDS[k].kind == "number" else int(round(float(v))), FIELDS[k],
+                        f"bearing[{brg.name}].{k}") for k, v in values.items()}
+    kw = _attributes(t)
+    for k, attr in (("Z", "Z"), ("fi", "fi"), ("fo", "fo")):
+        if k in t:
+            kw[attr] = t[k]
+    for k, attr in (("C0_kN", "C0"), ("C_kN", "C")):
+        if k in t:
+            kw[attr] = t[k] * 1e3
+    return brg.with_(**kw)
 
 
 def _clearance(kw: dict, group: str, kind: str, where: str) -> str | None:

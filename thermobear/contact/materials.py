@@ -1,12 +1,13 @@
 """Solid materials of rings and balls, and the reduced (contact) modulus.
 
 Data live in ``materials/solids/*.toml`` (one file per material, each value
-with its unit in the key and its source in a comment).
+with its unit in the key and its source in a comment; the keys of :data:`FIELDS`, estimated values
+listed in ``estimated`` with their range in ``uncertainty``, :func:`thermobear.schema.check_uncertainty`).
 """
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
 
@@ -14,8 +15,24 @@ import numpy as np
 
 from thermobear.files import data_dir, lookup, names_in
 from thermobear.errors import InputError
+from thermobear.schema import Field, check_table, check_uncertainty
 
-__all__ = ["Material", "material", "material_names", "reduced_modulus"]
+__all__ = ["Material", "material", "material_names", "reduced_modulus", "FIELDS", "PROPERTIES"]
+
+#: The keys of a material file, with their kinds and units.
+FIELDS = {
+    "name": Field.text("label"), "description": Field.text(), "source": Field.text(),
+    "E_Pa": Field.number("Pa", 0.0, None, lo_open=True, doc="Young's modulus", required=True),
+    "nu": Field.number("-", -1.0, 0.5, lo_open=True, hi_open=True, doc="Poisson's ratio", required=True),
+    "rho_kg_m3": Field.number("kg/m^3", 0.0, None, lo_open=True, doc="density", required=True),
+    "k_W_mK": Field.number("W/(m K)", 0.0, None, lo_open=True, doc="thermal conductivity"),
+    "cp_J_kgK": Field.number("J/(kg K)", 0.0, None, lo_open=True, doc="specific heat"),
+    "alpha_th_1_K": Field.number("1/K", 0.0, None, doc="thermal expansion coefficient"),
+    "estimated": Field.names("keys whose values are estimates"),
+    "uncertainty": Field.table("ranges of estimated values (thermobear.schema.check_uncertainty)"),
+}
+#: File key → :class:`Material` attribute of the properties a thermal network reads.
+PROPERTIES = {"k_W_mK": "k", "cp_J_kgK": "cp", "rho_kg_m3": "rho"}
 
 
 @dataclass(frozen=True)
@@ -30,6 +47,7 @@ class Material:
     k : float       thermal conductivity [W/(m K)] (optional; needed by thermal networks)
     cp : float      specific heat [J/(kg K)] (optional; needed by transients)
     name : str      label
+    uncertainty : dict  file key → :class:`~thermobear.schema.Uncertainty` of its estimated values
 
     >>> steel = Material(E=2.1e11, nu=0.3, rho=7850.0)
     >>> round(reduced_modulus(steel, steel) / 1e9, 1)
@@ -42,6 +60,7 @@ class Material:
     k: float | None = None
     cp: float | None = None
     name: str = "custom"
+    uncertainty: dict = field(default_factory=dict, compare=False, hash=False, repr=False)
 
     def __post_init__(self):
         if not (np.isfinite(self.E) and self.E > 0):
@@ -94,8 +113,12 @@ def material(name: str) -> Material:
     d = lookup("materials", "solids", name, "material")
     hit = _MATERIALS.get(name)
     if hit is None or hit[0] is not d:
-        hit = _MATERIALS[name] = (d, Material(E=float(d["E_Pa"]), nu=float(d["nu"]), rho=float(d["rho_kg_m3"]),
-                                              k=d.get("k_W_mK"), cp=d.get("cp_J_kgK"), name=d.get("name", name)))
+        where = f"materials/solids/{name}.toml"
+        t = check_table(d, FIELDS, where)
+        unc = check_uncertainty(t.get("uncertainty", {}), {k: FIELDS[k] for k in t if FIELDS[k].kind == "number"},
+                                where)
+        hit = _MATERIALS[name] = (d, Material(E=t["E_Pa"], nu=t["nu"], rho=t["rho_kg_m3"], k=t.get("k_W_mK"),
+                                              cp=t.get("cp_J_kgK"), name=t.get("name", name), uncertainty=unc))
     return hit[1]
 
 

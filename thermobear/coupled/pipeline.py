@@ -2,7 +2,9 @@ r"""Scene → loads → contacts, for one operating point or a family of them.
 
 A **family** is a set of operating points (scenes) that share everything but numbers: the bearing,
 lubricant, supply, network and model choices are the same, while speed, loads, moment, inlet and
-ambient temperatures, oil flow, imposed node temperatures and network context values may differ.
+ambient temperatures, oil flow, roughness, friction coefficients, imposed node temperatures, network
+context values and drawn values (``Scene.samples``: the lubricant's and the network's estimated
+values moved per point, :mod:`thermobear.coupled.uncertainty`) may differ.
 A family is solved together: one batched load distribution, one batched contact set, one network
 at B operating points (:mod:`thermobear.coupled.steady`).
 
@@ -121,6 +123,20 @@ class Family:
         """(B,) array of a per-point scene value (None → NaN)."""
         return np.array([np.nan if getattr(s, attr) is None else getattr(s, attr) for s in self.scenes], float)
 
+    def samples(self, prefix: str = "") -> dict:
+        """Drawn values per point (:attr:`Scene.samples`) whose address starts with ``prefix``: address →
+        (B,) array (the points of a family share the addresses)."""
+        return {k: np.array([s.samples[k] for s in self.scenes], float)
+                for k in self.scene.samples if k.startswith(prefix)}
+
+    @property
+    def lubricant(self):
+        """The family's lubricant: the scenes' own, with its drawn values (``lubricant.<key>``) per point
+        (:meth:`thermobear.lubrication.lubricant.Lubricant.sampled`)."""
+        draws = self.samples("lubricant.")
+        lub = self.scene.lubricant
+        return lub.sampled({k[len("lubricant."):]: v for k, v in draws.items()}) if draws else lub
+
     def loads(self) -> dict:
         """The points' loads as the load solvers take them: Fa, Fr, M, Fz, My, (B,) arrays (M, My: None when
         the tilts are held, :func:`thermobear.models.moments`)."""
@@ -136,8 +152,8 @@ def _key(scene: Scene, models: dict):
     of imposed nodes and context values, the element overrides and every non-numeric scene value."""
     params = scene.network_parameters
     return (id(scene.bearing), id(scene.lubricant), scene.supply, scene.network, scene.path, scene.rotating,
-            moments(scene)[0] is None, scene.T_C is None, scene.T_oil_in_C is None, scene.Rq_ball, scene.Rq_ring,
-            scene.mu_boundary, scene.mu_full_film, tuple(sorted(scene.T_fixed_C)),
+            moments(scene)[0] is None, scene.T_C is None, scene.T_oil_in_C is None, tuple(sorted(scene.samples)),
+            tuple(sorted(scene.T_fixed_C)),
             tuple(sorted((k, v if "." in k else None) for k, v in params.items())),
             tuple(sorted((k, repr(v)) for k, v in scene.models.items())),
             tuple(sorted((k, repr(v[0])) for k, v in models.items())))
@@ -169,9 +185,10 @@ def families(scenes, plans=None) -> tuple:
     return fams, failed
 
 
-def _film_inputs(scene: Scene, n_rpm, T_film_C):
-    """Entrainment speed [m/s] (at the nominal angle), viscosity [Pa s] and α_p [1/Pa] of the films."""
-    b, lub = scene.bearing, scene.lubricant
+def _film_inputs(scene: Scene, n_rpm, T_film_C, lubricant=None):
+    """Entrainment speed [m/s] (at the nominal angle), viscosity [Pa s] and α_p [1/Pa] of the films
+    (of ``lubricant``, default the scene's)."""
+    b, lub = scene.bearing, scene.lubricant if lubricant is None else lubricant
     w = np.asarray(n_rpm, float) * np.pi / 30.0
     wi, wo = (w, 0.0 * w) if scene.rotating == "inner" else (0.0 * w, w)
     u = np.maximum(np.asarray(entrainment_speed(wi, wo, b.D, b.dm, b.alpha0), float), 1e-6)
@@ -179,11 +196,13 @@ def _film_inputs(scene: Scene, n_rpm, T_film_C):
     return u, np.asarray(lub.eta(T), float), np.asarray(lub.alpha_p_at(T), float)
 
 
-def film_loads(scene: Scene, models: dict, Fa, Fr, M, n_rpm, T_film_C, Fz=0.0, My=None) -> LoadDistribution:
+def film_loads(scene: Scene, models: dict, Fa, Fr, M, n_rpm, T_film_C, Fz=0.0, My=None, lubricant=None
+               ) -> LoadDistribution:
     """Film load model (:mod:`thermobear.loads.film`, or :mod:`thermobear.loads.highspeed` with
-    ``film=`` in the high-speed form), films at ``T_film_C`` [°C]; arrays: one load case each."""
+    ``film=`` in the high-speed form), films at ``T_film_C`` [°C]; arrays: one load case each
+    (``lubricant`` per point: :attr:`Family.lubricant`)."""
     stiff = scene.models.get("stiffness", "nominal")
-    u, eta, ap = _film_inputs(scene, n_rpm, T_film_C)
+    u, eta, ap = _film_inputs(scene, n_rpm, T_film_C, lubricant)
     batch = np.ndim(Fa) > 0
     val = (lambda v: np.asarray(v, float)) if batch else float     # noqa: E731
     if models["high_speed"][0] == "yes":
@@ -205,7 +224,7 @@ def family_loads(fam: Family, T_film_C=None) -> LoadDistribution:
         return closed_form_axial(sc.bearing, Fa)
     if lm == "film":
         T = np.array([film_temperature_C(s) for s in fam.scenes]) if T_film_C is None else np.asarray(T_film_C, float)
-        return film_loads(sc, m, Fa, Fr, M, fam.values("n_rpm"), T, **F5)
+        return film_loads(sc, m, Fa, Fr, M, fam.values("n_rpm"), T, **F5, lubricant=fam.lubricant)
     if all(d is not None for d in fam.dry):
         return dry_loads(fam.dry)
     stiff = sc.models.get("stiffness", "nominal")

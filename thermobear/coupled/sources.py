@@ -80,7 +80,8 @@ def _added_local(scenes, models: dict) -> dict:
         kw["seal_torque_Nm"] = _one(np.array([_seal(s).M_Nm for s in scenes], float))
     if _chosen(models, "cage"):
         land = cage_land(sc)[0]
-        kw["cage"] = CageLand(mu_pocket=sc.mu_full_film, guide_rotates=sc.cage == f"{sc.rotating}_ring", **land)
+        kw["cage"] = CageLand(mu_pocket=_one(np.array([s.mu_full_film for s in scenes], float)),
+                              guide_rotates=sc.cage == f"{sc.rotating}_ring", **land)
     return kw
 
 
@@ -96,10 +97,11 @@ class LocalSources:
     diagonal = True
 
     def __init__(self, fam: Family, contacts: ContactSet):
-        self.fam, self.contacts = fam, contacts
+        self.fam, self.contacts, self.lubricant = fam, contacts, fam.lubricant
         sc = fam.scene
-        self.kw = dict(supply=sc.supply, oil_flow_m3_s=_one(_through_flow(fam)), Rq_ball=sc.Rq_ball,
-                       Rq_ring=sc.Rq_ring, mu_boundary=sc.mu_boundary, mu_full_film=sc.mu_full_film,
+        per = {k: _one(fam.values(k)) for k in ("Rq_ball", "Rq_ring", "mu_boundary", "mu_full_film")}
+        per = {k: v if np.ndim(v) == 0 else v[:, None, None] for k, v in per.items()}   # per point: (B, 1, 1)
+        self.kw = dict(supply=sc.supply, oil_flow_m3_s=_one(_through_flow(fam)), **per,
                        rolling_model=fam.models["rolling"][0], drag=bool(fam.models["drag"][0]),
                        **film_options(fam.models), **_added_local(fam.scenes, fam.models))
         self.parts_ = loss_parts(fam.models)
@@ -111,7 +113,7 @@ class LocalSources:
         """Losses at coupled temperatures x (B, n_x) [°C] (inner contact, outer contact, oil, then bath
         and cage where the parts read them)."""
         x = _clip(np.asarray(x_C, float))
-        return evaluate_losses(self.contacts, self.fam.scene.lubricant, x[..., 2], T_inner_C=x[..., 0],
+        return evaluate_losses(self.contacts, self.lubricant, x[..., 2], T_inner_C=x[..., 0],
                                T_outer_C=x[..., 1], T_oil_C=x[..., 2], T_bath_C=x[..., self.k_bath],
                                T_cage_C=x[..., self.k_cage], **self.kw)
 
@@ -157,7 +159,7 @@ class SKFSources:
     diagonal = False
 
     def __init__(self, fam: Family, contacts=None):
-        self.fam = fam
+        self.fam, self.lubricant = fam, fam.lubricant
         sc = fam.scene
         if sc.bearing.kind == "thrust" and not np.all(fam.values("Fa") > 0):
             refuse_unloaded_thrust(float(np.min(fam.values("Fa"))))
@@ -170,7 +172,7 @@ class SKFSources:
         return skf_losses(self.fam.scene, 0.5 * (x[..., 0] + x[..., 1]), self.fam.models,
                           n_rpm=self.fam.values("n_rpm"), Fa=self.fam.values("Fa"),
                           Fr=np.hypot(self.fam.values("Fr"), self.fam.values("Fz")),
-                          **self.added)
+                          lubricant=self.lubricant, **self.added)
 
     def parts(self, x_C) -> np.ndarray:
         x = np.asarray(x_C, float)
@@ -187,11 +189,12 @@ class SKFSources:
         return np.stack([np.broadcast_to(v, shape) for v in cols], axis=-1)
 
 
-def skf_losses(scene: Scene, T_C, models: dict, *, n_rpm=None, Fa=None, Fr=None, H_mm=None, M_seal_Nmm=None
-               ) -> SKFLosses:
+def skf_losses(scene: Scene, T_C, models: dict, *, n_rpm=None, Fa=None, Fr=None, H_mm=None, M_seal_Nmm=None,
+               lubricant=None) -> SKFLosses:
     """SKF 2004 global model for a scene at bearing temperature ``T_C`` [°C] (viscosity of the (base)
     oil there); ``n_rpm``, ``Fa``, ``Fr`` may override the scene's with arrays, ``H_mm`` [mm] and
-    ``M_seal_Nmm`` [N mm] the oil level and seal moment (default: the scene's, as the models chose).
+    ``M_seal_Nmm`` [N mm] the oil level and seal moment (default: the scene's, as the models chose),
+    ``lubricant`` its lubricant (values per point: :attr:`~thermobear.coupled.pipeline.Family.lubricant`).
     Calibrated constants from ``[models] skf_R1, skf_S1, skf_mu_EHL``.  Breakdown: rolling, sliding,
     drag (0: no oil–air term in the model), churning (its oil-bath drag, SKF 2018 form with V_M at
     H/dm), seal.  Heat split for the network: ½ of rolling + sliding to the balls, ¼ to each ring;
@@ -206,7 +209,8 @@ def skf_losses(scene: Scene, T_C, models: dict, *, n_rpm=None, Fa=None, Fr=None,
         H_mm, M_seal_Nmm = added.get("H_mm"), added.get("M_seal_Nmm")
     lub = "grease" if scene.supply == "grease" else scene.supply
     base = _SKF_MU_EHL.get(getattr(scene.lubricant, "base_oil", "mineral"), "mineral")
-    r = skf_friction(scene.bearing, scene.lubricant.nu(T_C), n, Fa, Fr, lubrication=lub, R1=m.get("skf_R1"),
+    oil = scene.lubricant if lubricant is None else lubricant
+    r = skf_friction(scene.bearing, oil.nu(T_C), n, Fa, Fr, lubrication=lub, R1=m.get("skf_R1"),
                      S1=m.get("skf_S1"), mu_EHL=m.get("skf_mu_EHL"), base_oil=base, H_mm=H_mm,
                      M_seal_Nmm=0.0 if M_seal_Nmm is None else M_seal_Nmm)
     w = np.asarray(n, float) * np.pi / 30.0
@@ -258,9 +262,10 @@ def network_context(fam: Family, contacts: ContactSet | None = None) -> dict:
     for key in sc.network_parameters:
         if "." not in key:
             scene[key] = np.array([s.network_parameters[key] for s in fam.scenes], float)
-    ctx = {"bearing": sc.bearing, "scene": scene, "oil": sc.lubricant,
+    ctx = {"bearing": sc.bearing, "scene": scene, "oil": fam.lubricant,
            "fixed": {f"n{k}": np.array([s.T_fixed_C[node] for s in fam.scenes], float)
-                     for k, node in enumerate(sorted(sc.T_fixed_C))}}
+                     for k, node in enumerate(sorted(sc.T_fixed_C))},
+           "sample": {k: v for k, v in fam.samples().items() if not k.startswith("lubricant.")}}
     omega = n * np.pi / 30.0
     inner = sc.rotating == "inner"
     op = {"omega_rad_s": omega, "omega_inner_rad_s": omega if inner else 0.0 * omega,
@@ -290,7 +295,8 @@ def _oil_fraction(fam: Family, n_rpm) -> np.ndarray:
 
 def family_network(fam: Family, template: NetworkTemplate, contacts: ContactSet | None) -> ThermalNetwork:
     """The family's network at its B operating points."""
-    return template.at(network_context(fam, contacts), oil=fam.scene.lubricant, batch=fam.B)
+    ctx = network_context(fam, contacts)
+    return template.at(ctx, oil=ctx["oil"], batch=fam.B)
 
 
 #: The coupled temperatures the loss models read, each the mean of role nodes (role → weight): a contact

@@ -55,16 +55,15 @@ from thermobear.contact.kinematics import ball_kinematics, caged_ball_kinematics
 from thermobear.errors import InputError
 from thermobear.loads.api import check_contacts, check_loads, loads_text
 from thermobear.loads.static import LoadDistribution, load_distribution
-from thermobear.losses.cage import CageLand, cage_loss
-from thermobear.losses.drag import churning_loss, drag_loss, immersed_fraction, oil_volume_fraction_parker
+from thermobear.losses.cage import CageLand
 from thermobear.losses.rolling import RollingContacts, rolling_contacts, rolling_power
-from thermobear.losses.skf import K_RS, phi_rs, skf_K_z
+from thermobear.losses.skf import K_RS, skf_K_z
 from thermobear.losses.sliding import (XI0_HEATHCOTE, deformed_radius, hysteresis_moment, mixed_friction_ianus,
                                        pivoting_moment, sliding_power_heathcote)
+from thermobear.losses.terms import (added_powers, drag_power, inlet_viscosity, property_at, replenishment,
+                                     temperature_stack)
 from thermobear.losses.traction import STRIP_NODES, strip_traction_coefficient
 from thermobear.lubrication.film import REGIMES, EHLContacts, ehl_contacts, specific_film_thickness
-from thermobear.lubrication.thermal_film import (thermal_inlet_viscosity, thermal_loading_parameter,
-                                                 thermal_reduction_gupta)
 from thermobear.validity import check as check_limit
 
 __all__ = ["LossResult", "ContactSet", "ContactArrays", "bearing_losses", "prepare_contacts", "evaluate_losses",
@@ -344,124 +343,6 @@ def _strip_slips(Q, a, b, Ra, spin, omega_roll):
     return np.stack((slip_heath, slip_spin), axis=-2), p_strip[..., None, :]
 
 
-# --------------------------------------------------------------------------- temperatures
-def _lead(T, name, batch, Z):
-    """(leading shape, per_ball) of a temperature array: ``lead + batch' (+ (Z,))`` with ``batch'``
-    broadcasting to ``batch``; a trailing ball axis (Z,) right after the batch axes is per ball."""
-    nb = len(batch)
-    if T.ndim > nb and T.shape[T.ndim - nb - 1:] == batch + (Z,):
-        return T.shape[:T.ndim - nb - 1], True
-    k = max(T.ndim - nb, 0)
-    tail = T.shape[k:]
-    if any(t != 1 and t != b for t, b in zip(tail, batch[nb - len(tail):])):
-        raise InputError(name, T, f"must broadcast to the operating points {batch} (with leading axes "
-                         f"for more temperature states) or be per ball, {batch + (Z,)}")
-    return T.shape[:k], False
-
-
-def _temperatures(cs, T_C, T_inner_C, T_outer_C, T_oil_C, dragged):
-    """The contact temperatures of both raceways and (when ``dragged``) the oil–air mixture,
-    stacked on one axis after the operating points: (*lead, *batch, 2 or 3, Z or 1) [°C]; the
-    leading shape; and whether a raceway's temperature is per ball."""
-    batch, Z = cs.batch, cs.brg.Z
-    Ts = [T_C if v is None else v for v in (T_inner_C, T_outer_C, T_oil_C)]
-    n = 3 if dragged else 2
-    if all(isinstance(v, (float, int)) for v in Ts):     # one temperature each: no shapes to work out
-        Tall = np.empty(batch + (n, 1))
-        for k in range(n):
-            Tall[..., k, :] = Ts[k]
-        return Tall, (), False
-    Ts = [np.asarray(v, float) for v in Ts]
-    names = [n if v is not None else "T_C" for n, v in zip(("T_inner_C", "T_outer_C", "T_oil_C"),
-                                                          (T_inner_C, T_outer_C, T_oil_C))]
-    shapes = [_lead(v, nm, batch, Z) for v, nm in zip(Ts, names)]
-    if shapes[2][1]:
-        raise InputError(names[2], Ts[2], f"the oil temperature is one per operating point {batch}, not per ball")
-    leads = [sh[0] for sh in shapes]
-    lead = leads[0] if leads[0] == leads[1] == leads[2] else np.broadcast_shapes(*leads)
-    per_ball = shapes[0][1] or shapes[1][1]
-    Tall = np.empty(lead + batch + (n, Z if per_ball else 1))
-    for k in range(n):
-        Tall[..., k, :] = Ts[k] if shapes[k][1] else Ts[k][..., None]
-    return Tall, lead, per_ball
-
-
-# --------------------------------------------------------------------------- evaluation
-_FEW = 8        # up to this many temperatures, properties are asked one Python float at a time
-
-
-def _at(prop, T):
-    """``prop(T)`` on a temperature array [°C]: one Python float at a time when there are a few
-    (the lubricant's and drag's formulas on floats: no array overhead), else one array call."""
-    if T.size > _FEW:
-        return prop(T)
-    return np.array([prop(t) for t in T.ravel().tolist()]).reshape(T.shape)
-
-
-def _drag_power(cs, oil, T_oil, eta_oil, supply, oil_flow_m3_s):
-    """Drag power of the balls [W] at oil–air mixture temperatures ``T_oil`` [°C] (*lead, *batch),
-    where the oil's viscosity is ``eta_oil`` [Pa s]:
-    :func:`~thermobear.losses.drag.drag_loss` with Parker's oil fraction (oil jet), 1 % (oil–air)
-    or air alone (grease); 0 where the bearing stands still."""
-    brg, batch = cs.brg, cs.batch
-    if not batch and T_oil.size <= _FEW:            # one operating point (turning: dragged), a few states
-        n, wc = float(cs.n_rpm), float(cs.omega_cage)
-        X = (oil_volume_fraction_parker(float(oil_flow_m3_s) * 1e6 * 60.0, n, brg.dm * 1e3) if supply == "oil_jet"
-             else 0.01 if supply == "oil_air" else 0.0)
-        P = [drag_loss(brg.Z, brg.D, brg.dm, wc, X, oil.rho(t), e, t + 273.15).P_W
-             for t, e in zip(T_oil.ravel().tolist(), eta_oil.ravel().tolist())]
-        return np.array(P).reshape(T_oil.shape)
-    run = cs.omega_cage > 0                       # (a subnormal speed: a cage speed of 0)
-    all_run = bool(run.all())
-    if supply == "oil_jet":
-        W = np.asarray(oil_flow_m3_s, float) * 1e6 * 60.0                             # [cm³/min]
-        if all_run:
-            X = oil_volume_fraction_parker(W, cs.n_rpm, brg.dm * 1e3)
-        else:
-            X = np.zeros(batch)
-            X[run] = oil_volume_fraction_parker(np.broadcast_to(W, batch)[run], cs.n_rpm[run], brg.dm * 1e3)
-    else:
-        X = 0.01 if supply == "oil_air" else 0.0
-    wc = cs.omega_cage if all_run else np.where(run, cs.omega_cage, 1.0)
-    P = drag_loss(brg.Z, brg.D, brg.dm, wc, X, oil.rho(T_oil), eta_oil, T_oil + 273.15).P_W
-    return P if all_run else np.where(run, P, 0.0)
-
-
-def _inlet_viscosity(cs, oil, T2, eta2):
-    """Inlet viscosity lowered by inlet shear heating [Pa s]: Gupta et al. (1992) φ_T at the contacts'
-    thermal loading (pure rolling at the centre, u_s = 2u), read as the viscosity of the thermal film
-    (:mod:`thermobear.lubrication.thermal_film`)."""
-    L = thermal_loading_parameter(_at(oil.beta_at, T2), eta2, 2.0 * cs.u, _at(oil.k_th, T2))
-    return thermal_inlet_viscosity(eta2, thermal_reduction_gupta(L))
-
-
-def _replenishment(cs, oil, T2, supply):
-    """SKF's kinematic replenishment factor Φ_rs (:func:`~thermobear.losses.skf.phi_rs`) of the
-    bearing at each contact's viscosity [-] (bore, OD in mm; K_z of the bearing kind, K_rs of the supply)."""
-    brg = cs.brg
-    if cs.K_z is None or supply not in K_RS:
-        raise InputError("models.starvation", True, "the replenishment factor needs the bearing's bore and outside "
-                         "diameter, an SKF bearing kind and an oil or grease supply (" + ", ".join(K_RS) + ")")
-    n = np.asarray(cs.n_rpm, float)[(...,) + (None,) * 2]
-    return phi_rs(n, _at(oil.nu, T2), brg.bore * 1e3, brg.outer_diameter * 1e3, cs.K_z, K_RS[supply])
-def _added(cs, oil, lead, T_bath_C, T_cage_C, oil_level_m, seal_torque_Nm, cage):
-    """Churning, seal and cage powers [W] (each (*lead, *batch)) of :func:`evaluate_losses`."""
-    brg, shape = cs.brg, lead + cs.batch
-    zero = np.zeros(shape)
-    out = {"churning": zero, "seal": zero + np.asarray(seal_torque_Nm, float) * cs.omega, "cage": zero}
-    if oil_level_m is not None:
-        T = np.broadcast_to(np.asarray(T_bath_C, float), shape)
-        w = immersed_fraction(np.broadcast_to(np.asarray(oil_level_m, float), cs.batch), brg.dm, brg.D)
-        out["churning"] = zero + churning_loss(brg.Z, brg.D, brg.dm, cs.omega_cage, w, _at(oil.rho, T),
-                                               _at(oil.eta, T)).P_W
-    if cage is not None:
-        T = np.broadcast_to(np.asarray(T_cage_C, float), shape)
-        w_rel = (cs.omega if cage.guide_rotates else 0.0) - cs.omega_cage
-        out["cage"] = zero + cage_loss(_at(oil.eta, T), brg.Z, brg.D, brg.dm, w_rel, cs.omega_ball, cage.mu_pocket,
-                                       cage.d_land, cage.b_land, cage.c_land).P_W
-    return out
-
-
 def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=None, T_oil_C=None,
                     supply: str = "oil_jet", oil_flow_m3_s=0.0, Rq_ball: float = 0.05e-6,
                     Rq_ring: float = 0.1e-6, mu_boundary: float = 0.11, mu_full_film: float = 0.05,
@@ -473,7 +354,9 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     Parameters
     ----------
     cs : ContactSet               from :func:`prepare_contacts` (operating points ``cs.batch``)
-    oil : Lubricant               any object with ``eta``, ``alpha_p_at`` and ``rho`` methods of T [°C]
+    oil : Lubricant               any object with ``eta``, ``alpha_p_at`` and ``rho`` methods of T [°C]; a
+                                  lubricant with values per operating point (``Lubricant.per_point``, B =
+                                  ``cs.batch``) gives each point its own properties
     T_C : array_like              temperature of contacts and oil where the next three are not given [°C]
     T_inner_C, T_outer_C : array_like, optional
                                   inner / outer contact temperatures [°C]: broadcast to ``cs.batch``,
@@ -481,7 +364,8 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     T_oil_C : array_like, optional  oil–air mixture temperature for drag [°C] (per operating point)
     supply, oil_flow_m3_s, Rq_ball, Rq_ring, mu_boundary, mu_full_film, rolling_model, drag
                                   as :func:`bearing_losses`; ``oil_flow_m3_s`` [m³/s] may have the shape
-                                  of ``cs.batch``
+                                  of ``cs.batch``, the roughnesses and friction coefficients the shape
+                                  ``cs.batch + (1, 1)`` (one value per operating point)
     traction : str                ``"constant"``: full-film μ = ``mu_full_film`` (seed 000 eq 18);
                                   ``"eyring"``: the film's Eyring / limiting-shear-stress traction on the slip
                                   of each contact (:func:`~thermobear.losses.traction.strip_traction_coefficient`,
@@ -534,30 +418,28 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     >>> r.P_W.shape, r.contacts["inner"]["P_rolling"].shape, bool(r.P_W[1] < r.P_W[0])
     ((2,), (2, 15), True)
     """
-    if rolling_model not in ROLLING_MODELS:
-        raise InputError("rolling_model", rolling_model, f"must be one of {', '.join(ROLLING_MODELS)}")
-    if supply not in SUPPLIES:
-        raise InputError("supply", supply, "must be " + ", ".join(SUPPLIES[:-1]) + " or " + SUPPLIES[-1])
-    if traction not in TRACTION_MODELS:
-        raise InputError("traction", traction, f"must be one of {', '.join(TRACTION_MODELS)}")
+    _check_choices(rolling_model, supply, traction)
     dragged = drag and supply not in ("oil_bath", "dry_film") and bool(cs.omega_cage.any())
-    Tall, lead, per_ball = _temperatures(cs, T_C, T_inner_C, T_outer_C, T_oil_C, dragged)
+    Tall, lead, per_ball = temperature_stack(cs, T_C, T_inner_C, T_outer_C, T_oil_C, dragged)
     T2 = Tall[..., :2, :]                           # the raceways' contact temperatures
-    eta_all = _at(oil.eta, Tall)                    # contacts and (drag) the oil–air mixture in one call
-    eta2, alpha2 = eta_all[..., :2, :], _at(oil.alpha_p_at, T2)
-    eta_in = _inlet_viscosity(cs, oil, T2, eta2) if inlet_heating else eta2
+    pp = getattr(oil, "points", None) is not None   # values per operating point: against (…, B, 2|3, Z|1)
+    oil_c = oil.aligned(2) if pp else oil
+    eta_all = property_at(oil_c.eta, Tall, pp)      # contacts and (drag) the oil–air mixture in one call
+    eta2, alpha2 = eta_all[..., :2, :], property_at(oil_c.alpha_p_at, T2, pp)
+    eta_in = inlet_viscosity(cs, oil_c, T2, eta2, pp) if inlet_heating else eta2
     h_min, h_c = cs.ehl.film_thickness(eta_in, alpha2, kind=("min", "central"))
     reg = cs.ehl.regime(eta_in, alpha2)
     F_R = cs.rolling.force(eta_in, _ROLLING_FORCE_MODEL.get(rolling_model, rolling_model), alpha_p=alpha2, regime=reg)
     if starvation:
-        F_R = F_R * _replenishment(cs, oil, T2, supply)
-    if Rq_ball or Rq_ring:
+        F_R = F_R * replenishment(cs, oil_c, T2, supply, pp)
+    if np.any(Rq_ball) or np.any(Rq_ring):
         Lam = specific_film_thickness(h_min, Rq_ball, Rq_ring)
     else:                                           # smooth surfaces: Λ = ∞, full-film friction
         Lam = np.full(h_min.shape, np.inf)
     if traction == "eyring":
+        oil_s = oil.aligned(4) if pp else oil       # per point against (…, B, 2, Z, 2, nodes)
         mu_f = strip_traction_coefficient(cs.slips, cs.p_strip, h_c[..., None], eta2[..., None], alpha2[..., None],
-                                          oil.eyring_stress, oil.limiting_shear)     # (..., 2, Z, 2): micro-slip, spin
+                                          oil_s.eyring_stress, oil_s.limiting_shear)  # (..., 2, Z, 2): micro-slip, spin
         mu = mixed_friction_ianus(Lam, mu_f[..., 0], mu_boundary)
         mu_piv = mixed_friction_ianus(Lam, mu_f[..., 1], mu_boundary)
     else:
@@ -568,23 +450,43 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     np.multiply(mu_piv, cs.P_pivoting_mu, out=P[2])
     P[3] = cs.P_hysteresis
     if dragged:
-        P_drag = _drag_power(cs, oil, Tall[..., 2, 0], eta_all[..., 2, 0], supply, oil_flow_m3_s)
+        P_drag = drag_power(cs, oil, Tall[..., 2, 0], eta_all[..., 2, 0], supply, oil_flow_m3_s)
     else:
         P_drag = np.zeros(lead + cs.batch)
     T_aux = T_C if T_oil_C is None else T_oil_C
-    added = _added(cs, oil, lead, T_aux if T_bath_C is None else T_bath_C, T_aux if T_cage_C is None else T_cage_C,
-                   oil_level_m, seal_torque_Nm, cage)
+    added = added_powers(cs, oil, lead, T_aux if T_bath_C is None else T_bath_C, T_aux if T_cage_C is None else T_cage_C,
+                         oil_level_m, seal_torque_Nm, cage, pp)
     per_contact = dict(T_C=T2, eta=eta2, h_min=h_min, h_c=h_c, Lambda=Lam, regime=reg.code, mu=mu,
                        mu_pivoting=np.broadcast_to(mu_piv, h_min.shape), F_R=F_R,
                        P_rolling=P[0], P_sliding=P[1], P_pivoting=P[2], P_hysteresis=P[3], M=reg.M, L=reg.L)
-    models = dict(cs.models_used)
+    models = _reasons(cs.models_used, reg, oil, rolling_model, traction, mu_full_film, mu_boundary, inlet_heating,
+                      starvation, supply, drag, oil_level_m, cage)
+    return _result(cs, P, P_drag, per_contact, models, added)
+
+
+def _check_choices(rolling_model, supply, traction):
+    """The named choices of :func:`evaluate_losses`, each among its accepted values."""
+    if rolling_model not in ROLLING_MODELS:
+        raise InputError("rolling_model", rolling_model, f"must be one of {', '.join(ROLLING_MODELS)}")
+    if supply not in SUPPLIES:
+        raise InputError("supply", supply, "must be " + ", ".join(SUPPLIES[:-1]) + " or " + SUPPLIES[-1])
+    if traction not in TRACTION_MODELS:
+        raise InputError("traction", traction, f"must be one of {', '.join(TRACTION_MODELS)}")
+
+
+def _reasons(used, reg, oil, rolling_model, traction, mu_full_film, mu_boundary, inlet_heating, starvation, supply,
+             drag, oil_level_m, cage) -> dict:
+    """The models an :func:`evaluate_losses` answer used, with their reasons (``used``: the contact set's)."""
+    models = dict(used)
     seen = ", ".join(REGIMES[i] for i in np.flatnonzero(np.bincount(reg.index.ravel(), minlength=4)))
     models.update({
         "rolling": (rolling_model, "per-contact regime: " + seen if rolling_model == "auto" else "chosen explicitly"),
         "film": ("Hamrock–Dowson h_min, h_c; regime by NVM dominant terms", "seed 000 eq 15, seed 004 §3"),
-        "friction": ("mixed μ(Λ) seed 000 eq 18", f"μ_e {mu_full_film}, μ_a {mu_boundary}" if traction != "eyring"
-                     else f"μ_e from the film's traction (Eyring τ0 {oil.eyring_stress:.3g} Pa, Λ_L "
-                          f"{oil.limiting_shear:g}; Johnson & Tevaarwerk 1977, Bair & Winer 1979), μ_a {mu_boundary}"),
+        "friction": ("mixed μ(Λ) seed 000 eq 18", f"μ_e {_shown(mu_full_film)}, μ_a {_shown(mu_boundary)}"
+                     if traction != "eyring" else
+                     f"μ_e from the film's traction (Eyring τ0 {_shown(oil.eyring_stress, '.3g')} Pa, Λ_L "
+                     f"{_shown(oil.limiting_shear)}; Johnson & Tevaarwerk 1977, Bair & Winer 1979), "
+                     f"μ_a {_shown(mu_boundary)}"),
         "inlet_heating": ("Gupta et al. 1992 φ_T on the inlet viscosity" if inlet_heating else "isothermal inlet", ""),
         "starvation": (f"SKF Φ_rs (K_rs {K_RS.get(supply, 0):g}) on the rolling force" if starvation
                        else "fully flooded", ""),
@@ -596,7 +498,12 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
         models["churning"] = ("Pouly drag in oil × immersed share of the ball path", "oil level given")
     if cage is not None:
         models["cage"] = ("Petroff land + ball–pocket sliding", "ring-guided cage")
-    return _result(cs, P, P_drag, per_contact, models, added)
+    return models
+
+
+def _shown(v, fmt="g") -> str:
+    """A model parameter as the reasons show it: its value, or "per point" (values per operating point)."""
+    return format(float(v), fmt) if np.ndim(v) == 0 else "per point"
 
 
 def _as(x):

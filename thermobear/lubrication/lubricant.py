@@ -17,7 +17,13 @@ Models (one function each, all vectorised):
 * thermal conductivity and specific heat — Cragoe (1929) petroleum-oil
   correlations, or constants from the data file.
 
-Data: ``materials/lubricants/<name>.toml`` (see :func:`lubricant_names`).
+Data: ``materials/lubricants/<name>.toml`` (see :func:`lubricant_names`); estimated values carry
+their range in ``uncertainty`` (:func:`thermobear.schema.check_uncertainty`).
+
+Per operating point: :meth:`Lubricant.per_point` gives the same lubricant with some data values as
+arrays (B,) — one per operating point of a family, e.g. the draws of an uncertainty run — and every
+property then broadcasts those values against the temperatures (the same formulas; a leading
+batch axis B in the temperatures' last place, or :meth:`Lubricant.aligned` for trailing axes).
 
 >>> oil = lubricant("seed004-mineral")
 >>> round(oil.nu(40.0), 6), round(oil.nu(100.0), 6)
@@ -27,16 +33,18 @@ Data: ``materials/lubricants/<name>.toml`` (see :func:`lubricant_names`).
 """
 from __future__ import annotations
 
-import math
+import copy
 
 import numpy as np
 
 
 from thermobear.files import data_dir, lookup, names_in, read_toml
 from thermobear.errors import ExtrapolationWarning, InputError
-from thermobear.schema import Field, check_table
+from thermobear.schema import Field, check_table, check_uncertainty
 from thermobear.validity import T_LUBRICANT_REFUSE_C, T_LUBRICANT_WARN_C, check as check_limit
 from thermobear.units import ZERO_C_K
+from thermobear.lubrication.walther import (_num, _scalar, _xp, walther_fit, walther_nu, walther_nu_from_Z,  # noqa: F401
+                                            walther_temperature_coefficient, walther_Z)
 
 __all__ = [
     "Lubricant", "lubricant", "lubricant_names",
@@ -55,153 +63,6 @@ _T40_K = 40.0 + ZERO_C_K
 _T100_K = 100.0 + ZERO_C_K
 _RHO_WATER_15_KG_M3 = 999.0   # water at 60 °F (15.56 °C), for the specific gravity d in Cragoe's forms
 _K1_API_LUBE = 0.34878 * 1.8  # kg/(m^3 K): API MPMS 11.1 lubricating-oil K1 = 0.34878 (per °F), x 1.8 per K
-
-
-def _xp(x):
-    """The module whose exp/log10 the formulas below use: ``math`` for one Python float (the thermal
-    elements ask for one temperature at a time), numpy otherwise — one formula for both."""
-    return math if type(x) is float else np
-
-
-def _num(x):
-    """``x`` unchanged if a Python float, else as a float array."""
-    return x if type(x) is float else np.asarray(x, dtype=float)
-
-
-# ---------------------------------------------------------------------------
-# ASTM D341 (Walther)
-# ---------------------------------------------------------------------------
-def walther_Z(nu_cSt):
-    r"""ASTM D341 Z of a kinematic viscosity.
-
-    Parameters
-    ----------
-    nu_cSt : array_like  kinematic viscosity [cSt = mm²/s], > 0
-
-    Returns
-    -------
-    ndarray  Z = ν + 0.7 + exp(−1.47 − 1.84 ν − 0.51 ν²) [cSt]
-
-    Notes
-    -----
-    ASTM D341-09 eq (2).  The exponential correction matters only below about 2 cSt.
-
-    Examples
-    --------
-    >>> round(float(walther_Z(10.0)), 12)
-    10.7
-    """
-    nu = _num(nu_cSt)
-    return nu + 0.7 + _xp(nu).exp(-1.47 - 1.84 * nu - 0.51 * nu**2)
-
-
-def walther_nu_from_Z(Z):
-    r"""Inverse of :func:`walther_Z` (ASTM D341-09 eq (4)).
-
-    Parameters
-    ----------
-    Z : array_like  D341 Z [cSt], > 0.7
-
-    Returns
-    -------
-    ndarray  ν = (Z − 0.7) − exp(−0.7487 − 3.295 (Z−0.7) + 0.6119 (Z−0.7)² − 0.3193 (Z−0.7)³) [cSt]
-
-    Examples
-    --------
-    >>> round(float(walther_nu_from_Z(walther_Z(1.5))), 3)
-    1.5
-    """
-    x = _num(Z) - 0.7
-    return x - _xp(x).exp(-0.7487 - 3.295 * x + 0.6119 * x**2 - 0.3193 * x**3)
-
-
-def walther_fit(nu1_cSt, T1_K, nu2_cSt, T2_K):
-    r"""Walther constants A, B through two points (T1 < T2, ν1 > ν2).
-
-    Parameters
-    ----------
-    nu1_cSt, nu2_cSt : float  kinematic viscosities [cSt] at T1_K, T2_K
-    T1_K, T2_K : float        absolute temperatures [K]
-
-    Returns
-    -------
-    (A, B)  constants of log10 log10 Z = A − B log10 T  (T in K) [-]
-
-    Notes
-    -----
-    B = [log log Z1 − log log Z2] / [log T2 − log T1],  A = log log Z1 + B log T1
-    (ASTM D341-09).  Typical B ≈ 3–4 for mineral oils.
-
-    Examples
-    --------
-    >>> A, B = walther_fit(36.6, 313.15, 7.8, 373.15)
-    >>> round(B, 4)
-    2.9969
-    """
-    ll1 = np.log10(np.log10(walther_Z(nu1_cSt)))
-    ll2 = np.log10(np.log10(walther_Z(nu2_cSt)))
-    B = (ll1 - ll2) / (np.log10(T2_K) - np.log10(T1_K))
-    A = ll1 + B * np.log10(T1_K)
-    return float(A), float(B)
-
-
-def walther_nu(A, B, T_K):
-    r"""Kinematic viscosity from Walther constants (ASTM D341).
-
-    Parameters
-    ----------
-    A, B : float       Walther constants (see :func:`walther_fit`) [-]
-    T_K : array_like   absolute temperature [K]
-
-    Returns
-    -------
-    ndarray  ν [cSt] with Z = 10^(10^(A − B log10 T)), ν = :func:`walther_nu_from_Z` (Z)
-
-    Examples
-    --------
-    >>> A, B = walther_fit(36.6, 313.15, 7.8, 373.15)
-    >>> round(float(walther_nu(A, B, 333.15)), 2)
-    19.51
-    """
-    return walther_nu_from_Z(_walther_Z_at(A, B, T_K))
-
-
-def _walther_Z_at(A, B, T_K):
-    """D341 Z = 10^(10^(A − B log10 T)) at T_K [K]."""
-    T = _num(T_K)
-    return 10.0 ** (10.0 ** (A - B * _xp(T).log10(T)))
-
-
-def walther_temperature_coefficient(A, B, T_K):
-    r"""Temperature–viscosity coefficient of the kinematic viscosity, −d ln ν/dT, from ASTM D341 [1/K].
-
-    Parameters
-    ----------
-    A, B : float       Walther constants (see :func:`walther_fit`) [-]
-    T_K : array_like   absolute temperature [K]
-
-    Returns
-    -------
-    ndarray  −d ln ν/dT [1/K]
-
-    Notes
-    -----
-    Differentiating log10 log10 Z = A − B log10 T:
-
-    .. math::
-
-        -\frac{d\ln\nu}{dT} = \frac{B\, Z \ln Z}{\nu\, T},\qquad Z = 10^{10^{A - B\log_{10}T}}
-
-    with dν/dZ = 1 (the exponential correction of :func:`walther_Z` matters below 2 cSt only).
-
-    Examples
-    --------
-    >>> A, B = walther_fit(36.6, 313.15, 7.8, 373.15)
-    >>> round(float(walther_temperature_coefficient(A, B, 333.15)), 4)
-    0.028
-    """
-    Z = _walther_Z_at(A, B, T_K)
-    return B * Z * _xp(Z).log(Z) / (walther_nu_from_Z(Z) * _num(T_K))
 
 
 # ---------------------------------------------------------------------------
@@ -238,7 +99,8 @@ def density_api(rho15, T_C, K1=_K1_API_LUBE):
     rho15 = _num(rho15)
     a = K1 / rho15
     dT = _num(T_C) - 15.0
-    return rho15 * _xp(dT).exp(-a * dT * (1.0 + 0.8 * a * dT))
+    x = -a * dT * (1.0 + 0.8 * a * dT)
+    return rho15 * _xp(x).exp(x)
 
 
 def gold_alpha_p(nu_cSt, s, t):
@@ -325,29 +187,37 @@ def cragoe_cp(rho15, T_C):
     return (1684.8 + 3.391 * _num(T_C)) / _xp(d).sqrt(d)
 
 
+_TRACTION_KEYS = ("eyring_stress_Pa", "limiting_shear_coefficient")
+
+
 def traction_defaults(base_oil: str) -> dict:
     """Eyring stress [Pa] and limiting shear stress–pressure coefficient [-] of a base-oil family
     (``materials/lubricant_traction.toml``, sources there): keys ``eyring_stress_Pa``,
-    ``limiting_shear_coefficient``.
+    ``limiting_shear_coefficient``, and ``uncertainty`` (key → :class:`~thermobear.schema.Uncertainty`,
+    their ranges).
 
-    >>> traction_defaults("mineral")["eyring_stress_Pa"]
-    5000000.0
+    >>> d = traction_defaults("mineral")
+    >>> d["eyring_stress_Pa"], d["uncertainty"]["eyring_stress_Pa"].lo
+    (5000000.0, 2000000.0)
     """
     table = read_toml(str(data_dir("materials") / "lubricant_traction.toml"))
     if base_oil not in table or not isinstance(table[base_oil], dict):
         raise InputError("lubricant.base_oil", base_oil, "traction data exist for "
                          + ", ".join(k for k, v in table.items() if isinstance(v, dict)))
-    return dict(table[base_oil])
+    out = dict(table[base_oil])
+    out["uncertainty"] = check_uncertainty(out.get("uncertainty", {}), {k: FIELDS[k] for k in _TRACTION_KEYS},
+                                           f"lubricant_traction.{base_oil}")
+    return out
 
 
 # ---------------------------------------------------------------------------
 # Lubricant
 # ---------------------------------------------------------------------------
 def _out(x, like):
-    """Return a float for scalar input, else an ndarray."""
+    """Return a float for scalar input (and scalar properties), else an ndarray."""
     if type(x) is float:
         return x
-    return float(x) if np.ndim(like) == 0 else np.asarray(x, dtype=float)
+    return float(x) if np.ndim(like) == 0 and np.ndim(x) == 0 else np.asarray(x, dtype=float)
 
 
 def _plain(T_C) -> bool:
@@ -357,9 +227,10 @@ def _plain(T_C) -> bool:
 
 
 def _positive(field, v):
-    if v is None or not np.isfinite(v) or v <= 0:
+    """A finite positive value (or array of them, one per operating point)."""
+    if v is None or not (np.all(np.isfinite(v)) and np.all(np.asarray(v) > 0)):
         raise InputError(field, v, "must be finite and > 0")
-    return float(v)
+    return _scalar(v)
 
 
 class Lubricant:
@@ -377,6 +248,10 @@ class Lubricant:
                                  heat [J/(kg K)]; default: Cragoe (1929) correlations
     name, kind, base_oil, thickener, description : str
                                  labels; kind is "oil" or "grease"
+    uncertainty : dict           data-file key → :class:`~thermobear.schema.Uncertainty` of its
+                                 estimated values
+
+    Every number may also be an array (B,), one value per operating point (:meth:`per_point`).
 
     Methods (T_C scalar or array [°C]; scalar in → float out)
     -------
@@ -400,26 +275,27 @@ class Lubricant:
 
     def __init__(self, nu40_cSt, nu100_cSt, rho15, alpha_p=None, *, gold_s=None, gold_t=None,
                  k_th=None, cp=None, name="custom", kind="oil", base_oil="mineral",
-                 thickener=None, description="", estimated=(), eyring_stress=None, limiting_shear=None):
+                 thickener=None, description="", estimated=(), eyring_stress=None, limiting_shear=None,
+                 uncertainty=None):
         nu40 = _positive(f"lubricant[{name}].nu40_cSt", nu40_cSt)
         nu100 = _positive(f"lubricant[{name}].nu100_cSt", nu100_cSt)
-        if not nu100 < nu40:
+        if not np.all(nu100 < nu40):
             raise InputError(f"lubricant[{name}].nu100_cSt", nu100_cSt,
                              f"must be < nu40_cSt = {nu40_cSt} (viscosity falls with temperature)")
         A, B = walther_fit(nu40, _T40_K, nu100, _T100_K)
         self._setup(A, B, rho15, alpha_p, gold_s, gold_t, k_th, cp, name, kind, base_oil,
-                    thickener, description, estimated, eyring_stress, limiting_shear)
+                    thickener, description, estimated, eyring_stress, limiting_shear, uncertainty)
 
     # shared by __init__ and from_single_point
     def _setup(self, A, B, rho15, alpha_p, gold_s, gold_t, k_th, cp, name, kind, base_oil,
-               thickener, description, estimated, eyring_stress=None, limiting_shear=None):
+               thickener, description, estimated, eyring_stress=None, limiting_shear=None, uncertainty=None):
         self.name, self.description = str(name), str(description)
         if kind not in ("oil", "grease"):
             raise InputError(f"lubricant[{name}].kind", kind, 'must be "oil" or "grease"')
         self.kind, self.base_oil, self.thickener = kind, base_oil, thickener
-        self.walther_A, self.walther_B = float(A), float(B)
+        self.walther_A, self.walther_B = _scalar(A), _scalar(B)
         self.rho15 = _positive(f"lubricant[{name}].rho15", rho15)
-        if not 500.0 < self.rho15 < 2500.0:
+        if not np.all((500.0 < self.rho15) & (self.rho15 < 2500.0)):
             raise InputError(f"lubricant[{name}].rho15", rho15, "density at 15 °C must lie in 500-2500 kg/m^3")
         self.alpha_p = None if alpha_p is None else _positive(f"lubricant[{name}].alpha_p", alpha_p)
         if (gold_s is None) != (gold_t is None):
@@ -435,6 +311,71 @@ class Lubricant:
                                        fam["eyring_stress_Pa"] if eyring_stress is None else eyring_stress)
         self.limiting_shear = _positive(f"lubricant[{name}].limiting_shear_coefficient",
                                         fam["limiting_shear_coefficient"] if limiting_shear is None else limiting_shear)
+        self.uncertainty = dict(uncertainty or {})
+        sizes = {np.size(v) for v in self._numbers().values() if np.ndim(v)}
+        if len(sizes) > 1:
+            raise InputError(f"lubricant[{name}]", sorted(sizes), "per-point values must share one length B")
+        self.points = sizes.pop() if sizes else None     # B when values are given per operating point
+        self.table = {}                                   # the data-file values it was built from (from_dict)
+
+    def _numbers(self) -> dict:
+        return {"walther_A": self.walther_A, "walther_B": self.walther_B, "rho15": self.rho15, "alpha_p": self.alpha_p,
+                "gold_s": self.gold_s, "gold_t": self.gold_t, "_k_th": self._k_th, "_cp": self._cp,
+                "eyring_stress": self.eyring_stress, "limiting_shear": self.limiting_shear}
+
+    def per_point(self, values: dict) -> "Lubricant":
+        """This lubricant with data-file values given per operating point.
+
+        Parameters
+        ----------
+        values : dict   data-file key (``rho15_kg_m3``, ``nu40_cSt``, ``k_W_mK``, ``walther_B``, …; a
+                        numeric key of :data:`FIELDS` the lubricant was built from) → array (B,)
+
+        Returns
+        -------
+        Lubricant   built by the same constructor from its data values with ``values`` replaced: every
+                    property broadcasts those arrays against temperatures whose last axis is B (or
+                    use :meth:`aligned`)
+
+        >>> oil = lubricant("seed002-mg1").per_point({"rho15_kg_m3": np.array([880.0, 900.0, 920.0])})
+        >>> oil.points, np.round(oil.rho(np.array([40.0, 40.0, 40.0])), 1).tolist()
+        (3, [864.2, 884.2, 904.2])
+        """
+        if not values:
+            return self
+        if not self.table:
+            raise InputError(f"lubricant[{self.name}]", None, "per-point values need a lubricant built from data "
+                             "values (lubricant(name) or Lubricant.from_dict)")
+        for key, v in values.items():
+            if key not in self.table or FIELDS[key].kind != "number":
+                raise InputError(f"lubricant[{self.name}].{key}", None, "a numeric value of this lubricant; it has: "
+                                 + ", ".join(k for k in self.table if FIELDS[k].kind == "number"))
+        t = {**self.table, **{k: np.asarray(v, dtype=float) for k, v in values.items()}}
+        return _build(t, f"lubricant[{self.name}]")
+
+    def sampled(self, draws: dict) -> "Lubricant":
+        """This lubricant with drawn values per operating point: data-file key → draws (B,), each moved
+        by the key's :class:`~thermobear.schema.Uncertainty` (factor × value, value + offset, or the
+        drawn value) — :meth:`per_point` of the moved values."""
+        for key in draws:
+            if key not in self.uncertainty:
+                raise InputError(f"sample.lubricant.{key}", None, f"lubricant {self.name} gives no uncertainty for "
+                                 f"it; it has: {', '.join(self.uncertainty) or 'none'}")
+        return self.per_point({k: self.uncertainty[k].apply(self.table[k], np.asarray(v, float))
+                               for k, v in draws.items()})
+
+    def aligned(self, trailing: int) -> "Lubricant":
+        """The same lubricant with its per-point values shaped (B, 1, …) with ``trailing`` unit axes,
+        for temperatures whose operating-point axis has ``trailing`` axes after it (e.g. (…, B, 2, Z)
+        per contact: ``aligned(2)``); itself when its values are not per point."""
+        if self.points is None or trailing == 0:
+            return self
+        obj = copy.copy(self)
+        shape = (self.points,) + (1,) * trailing
+        for k, v in self._numbers().items():
+            if np.ndim(v):
+                setattr(obj, k, np.reshape(v, shape))
+        return obj
 
     @classmethod
     def from_single_point(cls, eta_Pa_s, T_C, rho15, walther_B=3.7, alpha_p=None, **kw):
@@ -469,20 +410,21 @@ class Lubricant:
         """
         name = kw.get("name", "custom")
         eta = _positive(f"lubricant[{name}].eta_Pa_s", eta_Pa_s)
-        if not np.isfinite(T_C) or not T_VALID_C[0] <= T_C <= T_VALID_C[1]:
+        if not (np.all(np.isfinite(T_C)) and np.all((T_VALID_C[0] <= np.asarray(T_C)) & (np.asarray(T_C) <= T_VALID_C[1]))):
             raise InputError(f"lubricant[{name}].T_C", T_C,
                                   f"reference temperature must lie in {T_VALID_C[0]}...{T_VALID_C[1]} °C")
-        if walther_B is None or not np.isfinite(walther_B) or not 0.0 <= walther_B <= 10.0:
+        if walther_B is None or not (np.all(np.isfinite(walther_B))
+                                     and np.all((0.0 <= np.asarray(walther_B)) & (np.asarray(walther_B) <= 10.0))):
             raise InputError(f"lubricant[{name}].walther_B", walther_B,
                              "D341 slope must lie in 0...10 (typical mineral oils 3-4)")
         rho15 = _positive(f"lubricant[{name}].rho15", rho15)
-        nu_ref = eta / (float(density_api(rho15, T_C)) * 1e-6)
-        A = float(np.log10(np.log10(walther_Z(nu_ref)))) + walther_B * np.log10(T_C + ZERO_C_K)
+        nu_ref = eta / (_scalar(density_api(rho15, T_C)) * 1e-6)
+        A = _scalar(np.log10(np.log10(walther_Z(nu_ref)))) + walther_B * np.log10(T_C + ZERO_C_K)
         obj = cls.__new__(cls)
         obj._setup(A, walther_B, rho15, alpha_p, kw.get("gold_s"), kw.get("gold_t"), kw.get("k_th"),
                    kw.get("cp"), name, kw.get("kind", "oil"), kw.get("base_oil", "mineral"),
                    kw.get("thickener"), kw.get("description", ""), kw.get("estimated", ()),
-                   kw.get("eyring_stress"), kw.get("limiting_shear"))
+                   kw.get("eyring_stress"), kw.get("limiting_shear"), kw.get("uncertainty"))
         return obj
 
     @classmethod
@@ -504,14 +446,16 @@ class Lubricant:
     @property
     def nu40_cSt(self) -> float:
         """Kinematic viscosity at 40 °C [cSt] (input, or derived from a single point)."""
-        return float(walther_nu(self.walther_A, self.walther_B, _T40_K))
+        return _scalar(walther_nu(self.walther_A, self.walther_B, _T40_K))
 
     @property
     def nu100_cSt(self) -> float:
         """Kinematic viscosity at 100 °C [cSt]."""
-        return float(walther_nu(self.walther_A, self.walther_B, _T100_K))
+        return _scalar(walther_nu(self.walther_A, self.walther_B, _T100_K))
 
     def __repr__(self):
+        if self.points is not None:
+            return f"Lubricant(name={self.name!r}, kind={self.kind!r}, values per point: {self.points})"
         return (f"Lubricant(name={self.name!r}, kind={self.kind!r}, nu40_cSt={self.nu40_cSt:.4g}, "
                 f"nu100_cSt={self.nu100_cSt:.4g}, rho15={self.rho15:.5g})")
 
@@ -527,14 +471,14 @@ class Lubricant:
     # needs no check: the formulas run on the float (with ``math``); anything else is checked first.
     def nu(self, T_C):
         """Kinematic viscosity [cSt] at T_C [°C], ASTM D341 (see :func:`walther_nu`)."""
-        if _plain(T_C):
+        if _plain(T_C) and self.points is None:
             return walther_nu(self.walther_A, self.walther_B, float(T_C) + ZERO_C_K)
         T = self._T(T_C, "nu")
         return _out(walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K), T_C)
 
     def rho(self, T_C):
         """Density [kg/m³] at T_C [°C] (see :func:`density_api`)."""
-        if _plain(T_C):
+        if _plain(T_C) and self.points is None:
             return density_api(self.rho15, float(T_C))
         T = self._T(T_C, "rho")
         return _out(density_api(self.rho15, T), T_C)
@@ -559,7 +503,7 @@ class Lubricant:
 
     def _const(self, v, T, T_C):
         """A constant property ``v`` shaped like the temperatures."""
-        return v if type(T) is float else _out(np.full(np.shape(T), v), T_C)
+        return v if type(T) is float else _out(np.broadcast_to(v, np.broadcast_shapes(np.shape(T), np.shape(v))) * 1.0, T_C)
 
     def alpha_p_at(self, T_C):
         """Pressure–viscosity coefficient [1/Pa] at T_C [°C].
@@ -625,6 +569,7 @@ FIELDS = {
     "T_ref_C": Field.number("°C", -60.0, 250.0, doc="temperature of eta_ref_Pa_s"),
     "walther_B": Field.number("-", 0.0, 10.0, lo_open=True, doc="ASTM D341 slope (one-point lubricants)"),
     "estimated": Field.names("keys whose values are estimates"),
+    "uncertainty": Field.table("ranges of estimated values (thermobear.schema.check_uncertainty)"),
     "grease_T_min_C": Field.number("°C", -100.0, 300.0, doc="grease operating range (maker)"),
     "grease_T_max_C": Field.number("°C", -100.0, 300.0, doc="grease operating range (maker)"),
     "eyring_stress_Pa": Field.number("Pa", 0.0, None, lo_open=True,
@@ -641,12 +586,37 @@ def _from_mapping(d: dict, where: str) -> Lubricant:
     d = check_table(d, FIELDS, where)
     if d.get("thermal", "cragoe") != "cragoe" and ("k_W_mK" not in d or "cp_J_kgK" not in d):
         raise InputError(f"{where}.thermal", d.get("thermal"), '"cragoe", or give k_W_mK and cp_J_kgK')
+    d["uncertainty"] = check_uncertainty(d.get("uncertainty", {}),
+                                         {k: FIELDS[k] for k in d if FIELDS[k].kind == "number"}, where)
+    return _build(_with_traction_defaults(d), where)
+
+
+def _with_traction_defaults(d: dict) -> dict:
+    """The data values with the base-oil family's traction values (:func:`traction_defaults`) where the
+    lubricant gives none: listed as estimated, with the family's ranges (so that they are sampled)."""
+    missing = [k for k in _TRACTION_KEYS if k not in d]
+    if not missing:
+        return d
+    fam = traction_defaults(d.get("base_oil", "mineral"))
+    return {**d, **{k: fam[k] for k in missing}, "estimated": tuple(d.get("estimated", ())) + tuple(missing),
+            "uncertainty": {**{k: fam["uncertainty"][k] for k in missing if k in fam["uncertainty"]},
+                            **d["uncertainty"]}}
+
+
+def _build(d: dict, where: str) -> Lubricant:
+    """The Lubricant of typed data-file values (numbers, or arrays (B,) per operating point)."""
     common = dict(alpha_p=d.get("alpha_p_1_Pa"), gold_s=d.get("gold_s_1_GPa"), gold_t=d.get("gold_t"),
                   k_th=d.get("k_W_mK"), cp=d.get("cp_J_kgK"), name=d.get("name", "custom"),
                   kind=d.get("kind", "oil"), base_oil=d.get("base_oil", "mineral"),
                   thickener=d.get("thickener"), description=d.get("description", ""),
                   estimated=d.get("estimated", ()), eyring_stress=d.get("eyring_stress_Pa"),
-                  limiting_shear=d.get("limiting_shear_coefficient"))
+                  limiting_shear=d.get("limiting_shear_coefficient"), uncertainty=d.get("uncertainty"))
+    lub = _construct(d, where, common)
+    lub.table = {k: v for k, v in d.items() if k != "uncertainty"}
+    return lub
+
+
+def _construct(d: dict, where: str, common: dict) -> Lubricant:
     if "eta_ref_Pa_s" in d:
         for key in ("T_ref_C", "rho15_kg_m3"):
             if key not in d:

@@ -91,6 +91,8 @@ def _override(spec: dict, parameters: dict, name: str) -> None:
                 raise InputError(f"thermal.parameters.{key}", val,
                                  f"'{target}' has no parameter '{param}'; it has: {', '.join(sorted(h))}")
             h[param] = val
+            if isinstance(h.get("uncertainty"), dict):      # the scene's value replaces the estimate and its range
+                h["uncertainty"] = {k: v for k, v in h["uncertainty"].items() if k != param}
 
 
 def network_spec(network: str, scene_path: str | None = None, *, parameters: dict | None = None,

@@ -20,6 +20,10 @@ every boolean a TOML boolean, every choice one of its listed values.  Sections (
     [models]     overrides of the model choice (thermobear.models.choose_models)
     [rig]        J_kg_m2, [rig.map] channel = "node" | "input" | "ignore" | "impose:<node>"
 
+A section's estimated numbers may say how far they may lie: ``uncertainty.<key> = { ... }`` next to
+them (:func:`thermobear.schema.check_uncertainty`; [operation], [lubricant], [thermal], [rig]),
+collected in :attr:`Scene.uncertainty` by address (``"thermal.T_ambient_C"``).
+
 Every bad value raises :class:`~thermobear.errors.InputError` naming the field, the value and
 what is accepted; names the scene uses inside its network (parameters, imposed nodes, rig map
 targets) are checked against the network when the scene is read.
@@ -44,7 +48,7 @@ from thermobear.losses.local import ROLLING_MODELS, TRACTION_MODELS
 from thermobear.losses.seals import CONTACT_SEALS, SEAL_TYPES, seal_constants
 from thermobear.lubrication.lubricant import FIELDS as LUBRICANT_FIELDS
 from thermobear.lubrication.lubricant import Lubricant, lubricant
-from thermobear.schema import Field, check_table, check_value
+from thermobear.schema import Field, check_table, check_uncertainty, check_value
 from thermobear.scene.network import (PARAMETRIC, check_lubrication_keys, lubrication_of, machine_from_sections,
                                      network_nodes, network_spec)
 from thermobear.thermal.builders import Machine
@@ -83,6 +87,9 @@ MODEL_FIELDS = {
                               "bearing's as given, mounted (fits at 20 °C), or operating (fits, ring temperatures "
                               "and speed of the solution: a fixed point; deep groove bearings)"),
 }
+
+_UNCERTAINTY = Field.table("ranges of estimated values: uncertainty.<key> = { range | factor | offset = [lo, hi], "
+                           "distribution, source } (thermobear.schema.check_uncertainty)")
 
 _SUPPLY_FIELDS = {
     "supply": Field.choice(*SUPPLIES, doc="lubrication method"),
@@ -176,6 +183,7 @@ SECTIONS = {
     "bearing": {"catalog": Field.text("catalogue designation (thermobear list bearings)"), **_BEARING_FIELDS},
     "lubricant": {**_SUPPLY_FIELDS, **LUBRICANT_FIELDS},
     "operation": {
+        "uncertainty": _UNCERTAINTY,
         "n_rpm": Field.number("rpm", 0.0, None, doc="speed of the rotating ring", required=True),
         "Fa_N": Field.number("N", 0.0, None, doc="axial load"),
         "Fr_N": Field.number("N", 0.0, None, doc="radial load (towards ψ = 0)"),
@@ -189,6 +197,7 @@ SECTIONS = {
         "T_C": _temperature("prescribed contact temperature (no thermal network)"),
     },
     "thermal": {
+        "uncertainty": _UNCERTAINTY,
         "network": Field.text('bundled network name, a .toml path, or "parametric" (built from [shaft], [housing])'),
         "T_ambient_C": _temperature("ambient temperature"),
         "parameters": Field.table('"<element or node>.<parameter>" = value overrides'),
@@ -197,7 +206,8 @@ SECTIONS = {
     "models": MODEL_FIELDS,
     "shaft": SHAFT_FIELDS,
     "housing": HOUSING_FIELDS,
-    "rig": {"J_kg_m2": Field.number("kg m^2", 0.0, None, lo_open=True, doc="rotating inertia (spin-down)"),
+    "rig": {"uncertainty": _UNCERTAINTY,
+            "J_kg_m2": Field.number("kg m^2", 0.0, None, lo_open=True, doc="rotating inertia (spin-down)"),
             "map": Field.table('log channel = "node" | "input" | "ignore" | "impose:<node>"')},
 }
 #: Special targets of ``[rig.map]`` besides node names (``"impose:<node>"`` imposes the channel).
@@ -249,6 +259,14 @@ class Scene:
                                   (None: estimated)
     rig_J_kg_m2 : float | None    rotating inertia of a spin-down rig [kg m²]
     rig_map : dict                log channel → node or special target (``[rig.map]``)
+    uncertainty : dict            ``"<section>.<key>"`` → :class:`~thermobear.schema.Uncertainty` of the
+                                  scene's estimated numbers (the lubricant, bearing, network and materials
+                                  carry their own)
+    samples : dict                drawn values moving the lubricant's and the network's estimated values
+                                  at this operating point, by address (``"lubricant.rho15_kg_m3"``,
+                                  ``"nodes.<n>.<key>"``, ``"elements.<e>.<key>"``, ``"materials.<m>.<key>"``):
+                                  set by :mod:`thermobear.coupled.uncertainty`, applied point by point
+                                  within a family
     source : str                  where the scene comes from
     path : str | None             file it was read from
     raw : dict                    the parsed TOML (for tools that need more)
@@ -290,6 +308,8 @@ class Scene:
     cage_land_clearance: float | None = None
     rig_J_kg_m2: float | None = None
     rig_map: dict = field(default_factory=dict)
+    uncertainty: dict = field(default_factory=dict)
+    samples: dict = field(default_factory=dict)
     source: str = ""
     path: str | None = None
     raw: dict = field(default_factory=dict, repr=False, compare=False)
@@ -314,9 +334,10 @@ class Scene:
 
         Accepted keys: n_rpm, Fa (or Fa_N), Fr (Fr_N), M (M_Nm; None holds the tilt), T_C (None: solve
         the network), T_oil_in_C, T_ambient_C, oil_flow_L_h, jet_penetration, oil_level_mm (None: not
-        given), rotating, supply, lubricant (name, table or Lubricant), bearing (catalogue name, table or
-        BallBearing), seals, seal_sides, cage, network, network_parameters (merged), T_fixed_C (node → °C,
-        replaces; ``{}`` clears) and models (merged).
+        given), Rq_ball_um, Rq_ring_um, mu_boundary, mu_full_film, rotating, supply, lubricant (name, table
+        or Lubricant), bearing (catalogue name, table or BallBearing), seals, seal_sides, cage, network,
+        network_parameters (merged), T_fixed_C (node → °C, replaces; ``{}`` clears), models (merged) and
+        samples (address → number, replaces).
 
         >>> from thermobear.scene import load_scene
         >>> import thermobear
@@ -390,6 +411,11 @@ _WITH = {
     "T_oil_in_C": _with_number("lubricant", "T_in_C", "T_oil_in_C", nullable=True),
     "T_ambient_C": _with_number("thermal", "T_ambient_C", "T_ambient_C"),
     "oil_flow_L_h": _with_number("lubricant", "flow_L_h", "oil_flow", scale=1e-3 / 3600.0),
+    "Rq_ball_um": _with_number("lubricant", "Rq_ball_um", "Rq_ball", scale=1e-6),
+    "Rq_ring_um": _with_number("lubricant", "Rq_ring_um", "Rq_ring", scale=1e-6),
+    "mu_boundary": _with_number("lubricant", "mu_boundary", "mu_boundary"),
+    "mu_full_film": _with_number("lubricant", "mu_full_film", "mu_full_film"),
+    "samples": lambda s, v, name: {"samples": check_table(v, {}, name, extra=lambda k: Field.number(doc="drawn value"))},
     "oil_level_mm": _with_number("lubricant", "oil_level_mm", "oil_level", scale=1e-3, nullable=True),
     "jet_penetration": _with_number("lubricant", "jet_penetration", "jet_penetration"),
     "seals": lambda s, v, name: {"seals": check_value(v, SECTIONS["bearing"]["seals"], name),
@@ -409,8 +435,11 @@ _WITH = {
 
 def _lubricant_of(sec: dict, where: str):
     """The lubricant of a ``[lubricant]`` table without its supply keys: a catalogue name alone, or
-    inline properties (the name then labels them)."""
+    inline properties (the name then labels them; uncertainty entries on them go with them)."""
     props = {k: v for k, v in sec.items() if k not in _SUPPLY_FIELDS}
+    unc = {k: v for k, v in props.pop("uncertainty", {}).items() if k not in _SUPPLY_FIELDS}
+    if unc:
+        props["uncertainty"] = unc
     if not props:
         raise InputError(f"{where}.name", None, "give a lubricant name or its properties (nu40_cSt, nu100_cSt, ...)")
     typed = check_table(props, LUBRICANT_FIELDS, where)
@@ -438,8 +467,29 @@ def _bearing_of(sec: dict) -> BallBearing:
         over = {k: v for k, v in sec.items() if k != "catalog"}
         if not over:
             return base
-        return bearing_from_dict({**bearing_table(name), **over}, name=base.name, where="bearing")
+        table = bearing_table(name)
+        unc = table.get("uncertainty", {})       # a value the scene gives replaces the estimate and its range
+        unc = {**{k: v for k, v in unc.items() if k not in over}, **over.get("uncertainty", {})}
+        merged = {**table, **over, "uncertainty": unc} if unc else {k: v for k, v in {**table, **over}.items()
+                                                                     if k != "uncertainty"}
+        return bearing_from_dict(merged, name=base.name, where="bearing")
     return bearing_from_dict(sec, name=sec.get("name", "custom"), where="bearing")
+
+
+def _scene_uncertainty(d: dict) -> dict:
+    """``"<section>.<key>"`` → Uncertainty of the scene's own numbers (a [lubricant] section's entries on
+    lubricant properties belong to its inline lubricant)."""
+    out = {}
+    for sec in ("operation", "lubricant", "thermal", "rig"):
+        t = d.get(sec, {})
+        table = t.get("uncertainty", {})
+        if sec == "lubricant" and isinstance(table, dict):
+            table = {k: v for k, v in table.items() if k in _SUPPLY_FIELDS}
+        fields = {k: f for k, f in SECTIONS[sec].items() if f.kind in ("number", "integer") and k in t}
+        if sec == "lubricant":
+            fields = {k: f for k, f in fields.items() if k in _SUPPLY_FIELDS}
+        out.update({f"{sec}.{k}": u for k, u in check_uncertainty(table, fields, sec).items()})
+    return out
 
 
 def _parameters(params: dict) -> dict:
@@ -571,7 +621,7 @@ def scene_from_dict(d: dict, path: str | None = None) -> Scene:
         seal_diameter=mm(bx.get("seal_diameter_mm")), cage=bx.get("cage", "balls"),
         cage_land_width=mm(bx.get("cage_land_width_mm")), cage_land_clearance=mm(bx.get("cage_land_clearance_mm")),
         rig_J_kg_m2=rig.get("J_kg_m2"), rig_map=_rig_map(rig.get("map", {})),
-        source=meta.get("source", ""), path=path, raw=d)
+        uncertainty=_scene_uncertainty(d), source=meta.get("source", ""), path=path, raw=d)
     check_lubrication_keys(lsec, s.supply)
     if s.network == PARAMETRIC:
         s = dataclasses.replace(s, network=_machine(s))

@@ -27,6 +27,8 @@ class ThermalNetwork:
     elements : tuple          the elements, parameters numbers or arrays over the B points
     oil : Lubricant or None   the lubricant (fluid properties of convection and advection)
     structure : Structure    matrix pattern, temperature dependence, the constant conductances
+    C_points : ndarray        (B, n) heat capacities [J/K] when they differ per point (drawn values of an
+                              uncertainty run), else None: the template's
     """
 
     template: object
@@ -35,13 +37,15 @@ class ThermalNetwork:
     elements: tuple
     oil: object = None
     structure: "Structure" = None
+    C_points: np.ndarray = None
 
     # -- the template's structure -------------------------------------------------------------
     name = property(lambda self: self.template.name)
     nodes = property(lambda self: list(self.template.nodes))
     index = property(lambda self: self.template.index)
     fixed = property(lambda self: self.template.fixed)
-    C_J_K = property(lambda self: self.template.C_J_K)
+    C_J_K = property(lambda self: self.template.C_J_K if self.C_points is None else self.C_points,
+                     doc="heat capacities [J/K]: (n,), or (B, n) when they differ per operating point")
     estimated = property(lambda self: self.template.estimated)
     source = property(lambda self: self.template.source)
     free_nodes = property(lambda self: self.template.free_nodes)
@@ -124,7 +128,8 @@ class ThermalNetwork:
             return v[idx] if isinstance(v, np.ndarray) and v.ndim >= 1 and v.shape[0] == self.B else v
         els = tuple(replace(e, p={k: sub(v) for k, v in e.p.items()}) for e in self.elements)
         return ThermalNetwork(template=self.template, B=idx.size, T_fixed_K=self.T_fixed_K[idx], elements=els,
-                              oil=self.oil, structure=replace(self.structure, G0=self.structure.G0[idx]))
+                              oil=self.oil, structure=replace(self.structure, G0=self.structure.G0[idx]),
+                              C_points=None if self.C_points is None else self.C_points[idx])
 
     @property
     def graph(self):

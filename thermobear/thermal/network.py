@@ -14,6 +14,7 @@ element (edge)::
     between = ["bearing", "ambient"]
     G_W_K = 1.0
     estimated = ["G_W_K"]          # every value a paper does not give, reason in a comment
+    uncertainty.G_W_K = { factor = [0.7, 1.3], source = "..." }   # how far it may lie (thermobear.schema)
 
 Numeric parameters carry their unit in the key (``_m``, ``_m2``, ``_W_mK``, ``_W_m2K``,
 ``_m3_s`` ...) and are numbers or short expressions over the context
@@ -36,21 +37,30 @@ Two steps, as the solvers use them:
   speeds, contacts as arrays with a leading axis B) and probes every element once: a
   :class:`ThermalNetwork` whose conductances, matrices and derivatives are arrays over the B points.
 
+Uncertainty: a node's or an element's ``uncertainty.<key>`` (any numeric key, a number or an
+expression: :func:`thermobear.schema.check_uncertainty`) and the ``uncertainty`` of the materials it
+uses (``k_W_mK``, ``rho_kg_m3``, ``cp_J_kgK``) are collected in :attr:`NetworkTemplate.uncertainty` by
+address (``nodes.<node>.<key>``, ``elements.<element>.<key>``, ``materials.<material>.<key>``).  A
+context ``sample`` — address → draws, one per operating point — moves those values point by point in
+:meth:`NetworkTemplate.at` (factor × value, value + offset, or the drawn value): capacities, fixed
+temperatures and conductances then differ per point within one batch.
+
 Every failure raises :class:`~thermobear.errors.InputError` naming the file and the field.
 """
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import networkx as nx
 import numpy as np
 
 from thermobear.contact.hertz import hertz
-from thermobear.contact.materials import Material, material, material_names
+from thermobear.contact.materials import PROPERTIES, Material, material, material_names
 from thermobear.errors import InputError
 from thermobear.files import data_dir, names_in, read_toml
+from thermobear.schema import check_uncertainty
 from thermobear.thermal.elements import (CORRELATION_KEYS, ELEMENT_TYPES, HARRIS_COEFFICIENTS, MATERIAL_KEYS,
                                          STRING_KEYS, Element)
 from thermobear.thermal.expressions import MISSING, compile_expression, lookup
@@ -82,9 +92,10 @@ _POSITIVE = ("_m", "_m2", "_m3", "_kg", "_W_mK", "_W_m2K", "_J_K", "_kg_m3", "_J
 _NONNEG = ("_m3_s", "_m_s", "_kg_s", "_rad_s")
 _DIMENSIONLESS = ("beta", "emissivity", "oil_fraction", "n_balls")
 _NODE_KEYS = {"C_J_K", "mass_kg", "volume_m3", "material", "T_C", "description", "estimated", "measured_by",
-              "source"}
+              "source", "uncertainty"}
+_NODE_NUMBERS = ("C_J_K", "mass_kg", "volume_m3", "T_C")
 _NODE_INFO = ("description", "measured_by", "source", "estimated")
-_ELEMENT_META = {"type", "between", "name", "description", "estimated", "source"}
+_ELEMENT_META = {"type", "between", "name", "description", "estimated", "source", "uncertainty"}
 _TOP_KEYS = {"name", "description", "source", "nodes", "elements", "notes"}
 _C0 = 273.15
 
@@ -138,6 +149,10 @@ class NetworkTemplate:
     estimated : dict              "nodes.x" / "elements[y]" → list of estimated keys
     info : dict                   node → its description / measured_by / source (for reports)
     topology : Structure          matrix pattern and temperature dependence (the network's constant part)
+    uncertainty : dict            address (``nodes.<n>.<key>``, ``elements.<e>.<key>``,
+                                  ``materials.<m>.<key>``) → :class:`~thermobear.schema.Uncertainty`
+    capacity : tuple              per free node with a capacity: (node index, key, value, Material or
+                                  None) — how its capacity is made, for capacities per operating point
     """
 
     name: str
@@ -151,6 +166,8 @@ class NetworkTemplate:
     estimated: dict = field(default_factory=dict)
     info: dict = field(default_factory=dict)
     topology: Structure = None
+    uncertainty: dict = field(default_factory=dict)
+    capacity: tuple = ()
 
     @property
     def free_nodes(self) -> list:
@@ -189,14 +206,52 @@ class NetworkTemplate:
         ctx = dict(context or {})
         oil = oil if oil is not None else ctx.get("oil")
         B = _batch_size(ctx) if batch is None else int(batch)
+        sample = self._sample(ctx.get("sample"), B)
         n = len(self.nodes)
         T_fixed = np.zeros((B, n))
         for k, fld, v in self.T_fixed:
             val = v if not hasattr(v, "value") else v.value(ctx, fld)
+            val = _moved(sample, f"nodes.{self.nodes[k]}.T_C", val)
             T_fixed[:, k] = _check_value(fld, "T_C", np.broadcast_to(val, (B,))) + _C0
-        elements = tuple(_instantiate(e, ctx, B, oil) for e in self.elements)
-        return ThermalNetwork(template=self, B=B, T_fixed_K=T_fixed, elements=elements, oil=oil,
-                              structure=self.topology.at(self, elements, T_fixed, oil))
+        elements = tuple(_instantiate(e, ctx, B, oil, sample) for e in self.elements)
+        tmpl, C = self, None
+        if sample:              # moved elements are evaluated per point; capacities per point
+            tmpl = replace(self, elements=tuple(replace(t, G_static=None) if t.G_static is not None and _touched(t, sample)
+                                                else t for t in self.elements))
+            C = self._capacities(sample, B)
+        return ThermalNetwork(template=tmpl, B=B, T_fixed_K=T_fixed, elements=elements, oil=oil,
+                              structure=self.topology.at(tmpl, elements, T_fixed, oil), C_points=C)
+
+    def _sample(self, sample, B) -> dict:
+        """The context's draws: address → (Uncertainty, draws (B,) or a number); unknown addresses refused."""
+        if not sample:
+            return {}
+        out = {}
+        for addr, draws in sample.items():
+            if addr not in self.uncertainty:
+                raise InputError(f"sample.{addr}", None, f"no uncertain value of network {self.name} at this address; "
+                                 f"it has: {', '.join(sorted(self.uncertainty)) or 'none'}")
+            out[addr] = (self.uncertainty[addr], _per_point(draws, B, f"sample.{addr}"))
+        return out
+
+    def _capacities(self, sample, B):
+        """(B, n) heat capacities [J/K] with the drawn volumes, masses, capacities and material
+        densities and specific heats; None when no draw touches a capacity."""
+        hit = [(k, key, val, m) for k, key, val, m in self.capacity
+               if f"nodes.{self.nodes[k]}.{key}" in sample
+               or (m is not None and any(f"materials.{m.name}.{q}" in sample for q in ("rho_kg_m3", "cp_J_kgK")))]
+        if not hit:
+            return None
+        C = np.broadcast_to(self.C_J_K, (B, len(self.nodes))).copy()
+        for k, key, val, m in hit:
+            f = f"{self.source}: nodes.{self.nodes[k]}.{key}"
+            c = _check_value(f, key, _moved(sample, f"nodes.{self.nodes[k]}.{key}", val))
+            if m is not None:
+                c = c * _material_value(sample, m, "cp_J_kgK")
+            if key == "volume_m3":
+                c = c * _material_value(sample, m, "rho_kg_m3")
+            C[:, k] = _check_value(f, "C_J_K", c)
+        return C
 
 
 def _batch_size(ctx) -> int:
@@ -221,10 +276,38 @@ def _per_point(v, B, fld):
     return a
 
 
-def _instantiate(e: ElementTemplate, ctx, B, oil) -> Element:
+def _moved(sample, addr, value):
+    """``value`` moved by the draws of ``addr`` (unchanged when not sampled)."""
+    hit = sample.get(addr)
+    return value if hit is None else hit[0].apply(value, hit[1])
+
+
+def _touched(e: ElementTemplate, sample) -> bool:
+    """True when a draw moves a value of the element (its own, or its material's conductivity)."""
+    return any(f"elements.{e.name}.{k}" in sample or (k in _MATERIAL_K and f"materials.{v.name}.k_W_mK" in sample)
+               for k, v in e.static.items()) or any(f"elements.{e.name}.{k}" in sample for k, _, _ in e.dynamic)
+
+
+def _material_value(sample, m: Material, key):
+    """A material property (``k_W_mK``, ``rho_kg_m3``, ``cp_J_kgK``) moved by its draws."""
+    return _moved(sample, f"materials.{m.name}.{key}", getattr(m, PROPERTIES[key]))
+
+
+#: element material key → the conductivity key that replaces it when its material's k is drawn
+_MATERIAL_K = {"material": "k_W_mK", "material_ball": "k_ball_W_mK", "material_ring": "k_ring_W_mK"}
+
+
+def _instantiate(e: ElementTemplate, ctx, B, oil, sample=None) -> Element:
     p = dict(e.static)
     for key, fld, expr in e.dynamic:
         p[key] = _check_value(fld, key, _per_point(expr.value(ctx, fld), B, fld))
+    if sample:
+        for key in list(p):
+            addr = f"elements.{e.name}.{key}"
+            if addr in sample:
+                p[key] = _check_value(f"{e.field}.{key}", key, _moved(sample, addr, p[key]))
+            elif key in _MATERIAL_K and f"materials.{p[key].name}.k_W_mK" in sample:
+                p[_MATERIAL_K[key]] = _check_value(f"{e.field}.{key}", "k_W_mK", _material_value(sample, p[key], "k_W_mK"))
     if e.type == "ball_race_contact":
         p["a_m"], p["b_m"], p["semi_axes_from"] = _semi_axes(e, p, ctx, B)
     if e.type in ("convection", "advection") and oil is None:
@@ -295,25 +378,43 @@ def _check_estimated(f, tbl, estimated):
         estimated[f.split(": ", 1)[-1]] = list(est)
 
 
+def _check_uncertainty(f, tbl, numbers, address, uncertainty):
+    """The ``uncertainty`` table of a node or element: entries on its numeric keys, by address."""
+    if "uncertainty" in tbl:
+        for key, u in check_uncertainty(tbl["uncertainty"], {k: None for k in numbers if k in tbl}, f).items():
+            uncertainty[f"{address}.{key}"] = u
+
+
+def _material_uncertainty(m: Material, keys, uncertainty):
+    """The uncertain properties ``keys`` of a material the network uses, by address."""
+    for key in keys:
+        if key in m.uncertainty:
+            uncertainty[f"materials.{m.name}.{key}"] = m.uncertainty[key]
+
+
 def _capacity(f, nd, ctx):
-    """Heat capacity of a free node [J/K] (NaN when the file gives none)."""
+    """Heat capacity of a free node [J/K] (NaN when the file gives none) and how it is made
+    (key, value, Material or None; None when the file gives none)."""
     has_C, has_m = "C_J_K" in nd, ("mass_kg" in nd) + ("volume_m3" in nd)
     if has_C and (has_m or "material" in nd):
         raise InputError(f"{f}.C_J_K", nd["C_J_K"], "give either C_J_K or mass_kg/volume_m3 with a material, not both")
     if has_C:
-        return _static_number(f"{f}.C_J_K", "C_J_K", nd["C_J_K"], ctx)
+        C = _static_number(f"{f}.C_J_K", "C_J_K", nd["C_J_K"], ctx)
+        return C, ("C_J_K", C, None)
     if has_m == 2:
         raise InputError(f"{f}.mass_kg", nd["mass_kg"], "give mass_kg or volume_m3, not both")
     if has_m == 0:
-        return np.nan          # allowed for steady state; the transient solver asks for it
+        return np.nan, None    # allowed for steady state; the transient solver asks for it
     if "material" not in nd:
         raise InputError(f"{f}.material", None, "needed with mass_kg or volume_m3 (for cp and rho)")
     m = _resolve_material(nd["material"], ctx, f"{f}.material")
     if m.cp is None:
         raise InputError(f"{f}.material", m.name, "material has no specific heat cp")
     if "mass_kg" in nd:
-        return _static_number(f"{f}.mass_kg", "mass_kg", nd["mass_kg"], ctx) * m.cp
-    return m.rho * _static_number(f"{f}.volume_m3", "volume_m3", nd["volume_m3"], ctx) * m.cp
+        mass = _static_number(f"{f}.mass_kg", "mass_kg", nd["mass_kg"], ctx)
+        return mass * m.cp, ("mass_kg", mass, m)
+    V = _static_number(f"{f}.volume_m3", "volume_m3", nd["volume_m3"], ctx)
+    return m.rho * V * m.cp, ("volume_m3", V, m)
 
 
 def _static_number(fld, key, v, ctx):
@@ -323,11 +424,11 @@ def _static_number(fld, key, v, ctx):
     return val
 
 
-def _nodes(pre, nodes_tbl, ctx, estimated):
-    """Node names, fixed mask, capacities, fixed temperatures and node info of a table."""
+def _nodes(pre, nodes_tbl, ctx, estimated, uncertainty):
+    """Node names, fixed mask, capacities, fixed temperatures, node info and how each capacity is made."""
     names = list(nodes_tbl)
     n = len(names)
-    fixed, C, T_fixed, info = np.zeros(n, bool), np.full(n, np.nan), [], {}
+    fixed, C, T_fixed, info, capacity = np.zeros(n, bool), np.full(n, np.nan), [], {}, []
     for i, (name, nd) in enumerate(nodes_tbl.items()):
         f = f"{pre}nodes.{name}"
         if not isinstance(nd, Mapping):
@@ -337,6 +438,7 @@ def _nodes(pre, nodes_tbl, ctx, estimated):
             k = sorted(bad)[0]
             raise InputError(f"{f}.{k}", nd[k], f"unknown node key; allowed: {', '.join(sorted(_NODE_KEYS))}")
         _check_estimated(f, nd, estimated)
+        _check_uncertainty(f, nd, _NODE_NUMBERS, f"nodes.{name}", uncertainty)
         info[name] = {k: nd[k] for k in _NODE_INFO if k in nd and k != "estimated"}
         if "T_C" in nd:
             if {"C_J_K", "mass_kg", "volume_m3", "material"} & set(nd):
@@ -344,10 +446,15 @@ def _nodes(pre, nodes_tbl, ctx, estimated):
             fixed[i] = True
             T_fixed.append((i, f"{f}.T_C", _param(f"{f}.T_C", "T_C", nd["T_C"], ctx)))
         else:
-            C[i] = _capacity(f, nd, ctx)
+            C[i], how = _capacity(f, nd, ctx)
+            if how is not None:
+                capacity.append((i, *how))
+                if how[2] is not None:
+                    _material_uncertainty(how[2], ("rho_kg_m3", "cp_J_kgK") if how[0] == "volume_m3" else ("cp_J_kgK",),
+                                          uncertainty)
     if not fixed.any():
         raise InputError(pre + "nodes", None, "at least one fixed-temperature node (T_C = ...) is required")
-    return names, fixed, C, tuple(T_fixed), info
+    return names, fixed, C, tuple(T_fixed), info, tuple(capacity)
 
 
 def _element_checks(pre, k, e, index, estimated, seen):
@@ -386,8 +493,10 @@ def _element_checks(pre, k, e, index, estimated, seen):
     return name, f, typ, between
 
 
-def _element(pre, k, e, ctx, index, fixed, estimated, seen) -> ElementTemplate:
+def _element(pre, k, e, ctx, index, fixed, estimated, seen, uncertainty) -> ElementTemplate:
     name, f, typ, between = _element_checks(pre, k, e, index, estimated, seen)
+    _check_uncertainty(f, e, [kk for kk in e if kk not in _ELEMENT_META and kk not in STRING_KEYS
+                              and kk not in MATERIAL_KEYS], f"elements.{name}", uncertainty)
     static, dynamic = {}, []
     for kk, v in e.items():
         if kk in _ELEMENT_META:
@@ -399,6 +508,7 @@ def _element(pre, k, e, ctx, index, fixed, estimated, seen) -> ElementTemplate:
             static[kk] = v
         elif kk in MATERIAL_KEYS:
             static[kk] = _resolve_material(v, ctx, fld)
+            _material_uncertainty(static[kk], ("k_W_mK",), uncertainty)
         else:
             val = _param(fld, kk, v, ctx)
             if isinstance(val, float):
@@ -518,10 +628,11 @@ def prepare_network(spec, context=None, *, source: str | None = None) -> Network
     if not isinstance(els, list) or not els:
         raise InputError(pre + "elements", None, "at least one [[elements]] entry is required")
     estimated: dict = {}
-    names, fixed, C, T_fixed, info = _nodes(pre, nodes_tbl, ctx, estimated)
+    uncertainty: dict = {}
+    names, fixed, C, T_fixed, info, capacity = _nodes(pre, nodes_tbl, ctx, estimated, uncertainty)
     index = {nm: i for i, nm in enumerate(names)}
     seen: set = set()
-    elements = tuple(_element(pre, k, e, ctx, index, fixed, estimated, seen) for k, e in enumerate(els))
+    elements = tuple(_element(pre, k, e, ctx, index, fixed, estimated, seen, uncertainty) for k, e in enumerate(els))
     _check_reachable(pre, names, index, fixed, elements)
     for a in (fixed, C):
         a.setflags(write=False)
@@ -529,7 +640,7 @@ def prepare_network(spec, context=None, *, source: str | None = None) -> Network
                                            p={**e.static, **{k: 0.0 for k, _, _ in e.dynamic}}) for e in elements]
     return NetworkTemplate(name=data.get("name", src), source=src, nodes=tuple(names), index=index, fixed=fixed,
                            C_J_K=C, T_fixed=T_fixed, elements=elements, estimated=estimated, info=info,
-                           topology=Structure.topology(fixed, probes))
+                           topology=Structure.topology(fixed, probes), uncertainty=uncertainty, capacity=capacity)
 
 
 def network_names() -> list:

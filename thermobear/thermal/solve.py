@@ -387,9 +387,9 @@ def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_
     if not (math.isfinite(t_end) and t_end > 0):
         raise InputError("t_end", t_end, "must be > 0 [s]")
     free = ~net.fixed
-    C = net.C_J_K[free]
+    C = net.C_J_K[..., free]                      # (nf,), or (B, nf) when the capacities differ per point
     if np.any(~np.isfinite(C) | (C <= 0)):
-        bad = [n for n, c in zip(net.free_nodes, C) if not (np.isfinite(c) and c > 0)]
+        bad = [n for n, c in zip(net.free_nodes, np.atleast_2d(C).min(axis=0)) if not (np.isfinite(c) and c > 0)]
         raise InputError(f"{net.source}: nodes.{bad[0]}.C_J_K", None,
                          "the transient needs a heat capacity (C_J_K, or mass_kg/volume_m3 with a material)")
     if not callable(sources):
@@ -420,10 +420,11 @@ def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_
 def _segment(net, sources, C, bnd, a, b, y0, t_eval, nfev, rtol, atol, method, max_step, stop):
     """One segment [a, b] of a transient: (solution, finished)."""
     free, fixed = ~net.fixed, net.fixed
-    B, nf = net.B, C.size
+    B, nf = net.B, C.shape[-1]
     t_hi = np.nextafter(b, a)             # inputs of [a, b): the step at b belongs to the next segment
     Tfull = bnd.T_K(a)
-    Cinv = np.tile(1.0 / C, B)
+    Cb = np.broadcast_to(C, (B, nf))
+    Cinv = (1.0 / Cb).ravel()
     varying = bnd.fixed_C is not None
 
     def rhs(t, yf):
@@ -442,7 +443,7 @@ def _segment(net, sources, C, bnd, a, b, y0, t_eval, nfev, rtol, atol, method, m
         if varying:
             Tfull[:, bnd.index] = bnd.values_K(min(max(t, a), t_hi))
         Aff, _ = net.blocks(net.conductances(Tfull))
-        Jb = -Aff / C[None, :, None]
+        Jb = -Aff / Cb[:, :, None]
         return Jb[0] if B == 1 else sp.block_diag(list(Jb), format="csc")
 
     te = None if t_eval is None else np.union1d(t_eval[(t_eval >= a) & (t_eval <= b)], [b])

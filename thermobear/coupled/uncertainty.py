@@ -1,0 +1,602 @@
+r"""Uncertainty of a prediction: the estimated inputs sampled, solved in batches, reported as bands.
+
+Every estimated value of the data a scene uses carries its range (``uncertainty.<key>``, one syntax:
+:func:`thermobear.schema.check_uncertainty`).  :func:`uncertain_inputs` collects them by address:
+
+========================  ===========================================  =====================
+address                   where the range lives                        how it varies
+========================  ===========================================  =====================
+``thermal.T_ambient_C``   the scene's sections ([operation],           per point (a scene number)
+``lubricant.Rq_ball_um``  [lubricant] supply keys, [thermal])
+``lubricant.<key>``       the lubricant's file (or inline table)       per point (:attr:`Family.lubricant`)
+``nodes.<n>.<key>``,      the network file, next to the value          per point (the network's
+``elements.<e>.<key>``                                                 ``sample`` context)
+``materials.<m>.<key>``   the material file (k, ρ, c_p the network     per point (idem)
+                          reads)
+``bearing.<key>``         the bearing catalogue (or [bearing] table)   per **family** (see below)
+========================  ===========================================  =====================
+
+Ranges the thermal solution does not read are not sampled: a rig's inertia (``rig.J_kg_m2``, the
+spin-down's), a bearing's load ratings (``C0_kN``, ``C_kN``: life and static safety).
+
+The samples are a Latin hypercube (default) or a scrambled Sobol' sequence of
+:mod:`scipy.stats.qmc`, seeded: the same seed gives the same draws.  Each draw u ∈ (0, 1) becomes a
+value by its input's distribution (:meth:`~thermobear.schema.Uncertainty.quantile`).  The sampled
+operating points go through the batched solver (:func:`thermobear.coupled.steady.steady_states`) as
+points of one family: the scene numbers as per-point scene values, the lubricant's and the network's
+values as per-point draws (:attr:`Scene.samples`) that the lubricant (per-point properties) and the
+network template (per-point conductances, capacities, fixed temperatures) apply.
+
+The bearing's internal geometry (ball diameter, osculations, number of balls, clearance) cannot vary
+within a family: the loads, contact ellipses and kinematics are solved for one bearing.  Its inputs
+are drawn at ``groups`` levels (a Latin hypercube of their own, default 8 groups), and every sample is
+assigned to one group by a further balanced column of the design: the samples form ``groups``
+families of about n / groups points each.  Their sensitivities rest on those ``groups`` distinct
+geometries (more groups resolve them better, at one load solve and one network template per group).
+
+A sample whose solve fails (no equilibrium, thermal runaway, an input the models refuse) is counted
+with its error's name (:attr:`UncertaintyResult.failed`), never dropped silently; the bands are those
+of the samples that solved.  Bands and sensitivities: :mod:`thermobear.coupled.sensitivity`.
+"""
+from __future__ import annotations
+
+import dataclasses
+import warnings
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.stats import qmc
+
+from thermobear.contact.geometry import bearing_values
+from thermobear.contact.materials import PROPERTIES, material
+from thermobear.coupled.pipeline import Family, families, family_contacts, family_loads
+from thermobear.coupled.sensitivity import SENSITIVITY, bands, ranking, summary_lines
+from thermobear.coupled.sources import family_network, loss_sources, prepared_for
+from thermobear.coupled import steady as _steady
+from thermobear.coupled import transient as _transient
+from thermobear.coupled.steady import SteadyState, steady_states
+from thermobear.coupled.transient import PointModel, heat_sources
+from thermobear.errors import InputError, OutsideValidity, SolverError
+from thermobear.models import plan_many
+from thermobear.scene import Scene
+from thermobear.scene.scene import SECTIONS
+from thermobear.schema import Uncertainty, check_value
+from thermobear.thermal import solve_transient
+
+__all__ = ["Input", "UncertaintyResult", "uncertain_inputs", "design", "sample_scenes", "steady_uncertainty",
+           "transient_uncertainty", "steady_state", "transient", "steady_outputs", "METHODS"]
+
+METHODS = ("lhs", "sobol")
+_GROUPS = 8
+
+#: scene address → (Scene.with_ key, scale from the file's unit to the scene attribute's, attribute)
+_SCENE_KEYS = {
+    "operation.n_rpm": ("n_rpm", 1.0, "n_rpm"), "operation.Fa_N": ("Fa", 1.0, "Fa"),
+    "operation.Fr_N": ("Fr", 1.0, "Fr"), "operation.M_Nm": ("M", 1.0, "M"), "operation.Fz_N": ("Fz", 1.0, "Fz"),
+    "operation.My_Nm": ("My", 1.0, "My"), "operation.T_C": ("T_C", 1.0, "T_C"),
+    "lubricant.flow_L_h": ("oil_flow_L_h", 3.6e6, "oil_flow"), "lubricant.T_in_C": ("T_oil_in_C", 1.0, "T_oil_in_C"),
+    "lubricant.Rq_ball_um": ("Rq_ball_um", 1e6, "Rq_ball"), "lubricant.Rq_ring_um": ("Rq_ring_um", 1e6, "Rq_ring"),
+    "lubricant.mu_boundary": ("mu_boundary", 1.0, "mu_boundary"),
+    "lubricant.mu_full_film": ("mu_full_film", 1.0, "mu_full_film"),
+    "lubricant.jet_penetration": ("jet_penetration", 1.0, "jet_penetration"),
+    "thermal.T_ambient_C": ("T_ambient_C", 1.0, "T_ambient_C"),
+}
+_RATINGS = ("C0_kN", "C_kN")
+#: bearing table key → (BallBearing attribute, scale to the key's unit)
+_BEARING_KEYS = {"D_mm": ("D", 1e3), "dm_mm": ("dm", 1e3), "Pd_mm": ("Pd", 1e3), "Z": ("Z", 1.0), "fi": ("fi", 1.0),
+                 "fo": ("fo", 1.0), "C0_kN": ("C0", 1e-3), "C_kN": ("C", 1e-3), "bore_mm": ("bore", 1e3),
+                 "outer_diameter_mm": ("outer_diameter", 1e3), "width_mm": ("width", 1e3)}
+
+
+@dataclass(frozen=True)
+class Input:
+    """One uncertain input of a scene.
+
+    Attributes
+    ----------
+    address : str              where it lives (module docstring)
+    uncertainty : Uncertainty  its range, distribution and source
+    nominal : float | None     the draw that gives the nominal value: 1 for a factor, 0 for an offset,
+                               the nominal value for a range (None when the nominal is an expression)
+    level : str                ``"point"`` (varies within a family) or ``"family"`` (the bearing)
+    """
+
+    address: str
+    uncertainty: Uncertainty
+    nominal: float | None
+    level: str = "point"
+
+    @property
+    def label(self) -> str:
+        """The address with what a draw is (``× …`` factor, ``+ …`` offset)."""
+        return self.address + {"factor": " [×]", "offset": " [+]"}.get(self.uncertainty.kind, "")
+
+    def as_dict(self) -> dict:
+        return {"address": self.address, **self.uncertainty.as_dict(), "nominal_draw": self.nominal,
+                "level": self.level}
+
+
+def _nominal_draw(u: Uncertainty, value) -> float | None:
+    if u.kind == "factor":
+        return 1.0
+    if u.kind == "offset":
+        return 0.0
+    return None if value is None or isinstance(value, str) else float(value)
+
+
+def _network_nominal(template, address):
+    """The static nominal value of a network address (None for an expression)."""
+    kind, name, key = address.split(".", 2)
+    if kind == "materials":
+        return getattr(material(name), PROPERTIES[key])
+    if kind == "elements":
+        e = next(e for e in template.elements if e.name == name)
+        v = e.static.get(key)
+        return v if isinstance(v, float) else None
+    for k, fld, v in template.T_fixed:
+        if template.nodes[k] == name and key == "T_C" and isinstance(v, float):
+            return v
+    for k, kk, v, _ in template.capacity:
+        if template.nodes[k] == name and kk == key:
+            return v
+    return None
+
+
+def uncertain_inputs(scene: Scene, prepared=None) -> list:
+    """The uncertain inputs of a scene (module docstring), in a fixed order: the scene's numbers, the
+    lubricant's, the network's and its materials', then the bearing's (per family).
+
+    >>> import thermobear as tb
+    >>> ins = uncertain_inputs(tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml")))
+    >>> ins[0].address, ins[-1].address, ins[-1].level
+    ('lubricant.Rq_ball_um', 'bearing.fo', 'family')
+    """
+    out = []
+    for addr, u in scene.uncertainty.items():
+        if addr not in _SCENE_KEYS:
+            continue                        # e.g. rig.J_kg_m2: an input of the spin-down, not of the thermal solve
+        _, scale, attr = _SCENE_KEYS[addr]
+        v = getattr(scene, attr)
+        out.append(Input(addr, u, _nominal_draw(u, None if v is None else v * scale)))
+    lub = scene.lubricant
+    for key, u in getattr(lub, "uncertainty", {}).items():
+        out.append(Input(f"lubricant.{key}", u, _nominal_draw(u, lub.table.get(key))))
+    if scene.network is not None:
+        template = prepared_for(scene, prepared).template
+        for addr, u in template.uncertainty.items():
+            out.append(Input(addr, u, _nominal_draw(u, _network_nominal(template, addr))))
+    brg = scene.bearing
+    for key, u in brg.uncertainty.items():
+        if key in _RATINGS:
+            continue                        # load ratings: read by the life and safety checks, not by the solve
+        attr, scale = _BEARING_KEYS.get(key, (None, 1.0))
+        v = getattr(brg, attr) if attr else None
+        out.append(Input(f"bearing.{key}", u, _nominal_draw(u, None if v is None else v * scale), level="family"))
+    return out
+
+
+def design(n: int, d: int, seed=None, method: str = "lhs") -> np.ndarray:
+    """(n, d) probabilities in (0, 1): a Latin hypercube (``"lhs"``) or a scrambled Sobol' sequence
+    (``"sobol"``, n a power of 2 for its balance) of :mod:`scipy.stats.qmc`, seeded.
+
+    >>> u = design(8, 2, seed=1)
+    >>> u.shape, bool(np.all(np.sort(np.floor(u[:, 0] * 8)) == np.arange(8)))
+    ((8, 2), True)
+    """
+    if method not in METHODS:
+        raise InputError("uncertainty.method", method, f"one of {', '.join(METHODS)}")
+    n, d = _count(n, "uncertainty.n"), int(d)
+    if d == 0:
+        return np.zeros((n, 0))
+    rng = np.random.default_rng(seed)
+    if method == "lhs":
+        return qmc.LatinHypercube(d=d, rng=rng).random(n)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)     # "balance properties … n a power of 2": said in the doc
+        return qmc.Sobol(d=d, scramble=True, rng=rng).random(n)
+
+
+def _count(n, field):
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
+        raise InputError(field, n, "a whole number of samples >= 1")
+    return int(n)
+
+
+@dataclass
+class Samples:
+    """The sampled operating points of a scene (:func:`sample_scenes`)."""
+
+    scenes: list             # per sample, its Scene (or the InputError its draws raised)
+    inputs: list             # the Inputs, columns of X
+    X: np.ndarray            # (n, d) draws (factor, offset or value, as each input says)
+    group: np.ndarray        # (n,) family group of each sample
+    seed: object
+    method: str
+    groups: int
+
+
+def sample_scenes(scene: Scene, n: int, *, seed=None, method: str = "lhs", groups: int | None = None,
+                  inputs=None, prepared=None) -> Samples:
+    """``n`` sampled operating points of a scene: every uncertain input drawn (module docstring).
+
+    ``inputs``: the inputs to sample (default :func:`uncertain_inputs`; given ones may narrow, widen
+    or reshape the data's ranges, each at an address the data ranges, with its kind of draw);
+    ``groups``: the number of bearing-geometry families (default min(n, 8); 1 with no bearing input)."""
+    n = _count(n, "uncertainty.n")
+    data = uncertain_inputs(scene, prepared)
+    ins = list(data if inputs is None else _checked(inputs, data))
+    pts = [k for k, i in enumerate(ins) if i.level == "point"]
+    fams = [k for k, i in enumerate(ins) if i.level == "family"]
+    G = 1 if not fams else min(n, _GROUPS if groups is None else _count(groups, "uncertainty.groups"))
+    U = design(n, len(pts) + (1 if G > 1 else 0), seed, method)
+    X = np.zeros((n, len(ins)))
+    for c, k in enumerate(pts):
+        X[:, k] = ins[k].uncertainty.quantile(U[:, c])
+    group = np.minimum((U[:, -1] * G).astype(int), G - 1) if G > 1 else np.zeros(n, int)
+    brgs = [scene.bearing] * G
+    if fams:
+        Ug = design(G, len(fams), None if seed is None else np.random.default_rng(seed).integers(2**32), method)
+        Xg = np.column_stack([ins[k].uncertainty.quantile(Ug[:, c]) for c, k in enumerate(fams)])
+        X[:, fams] = Xg[group]
+        brgs = [_bearing_at(scene, [ins[k] for k in fams], Xg[g]) for g in range(G)]
+    scenes = [_scene_at(scene, ins, pts, X[i], brgs[group[i]]) for i in range(n)]
+    return Samples(scenes=scenes, inputs=ins, X=X, group=group, seed=seed, method=method, groups=G)
+
+
+def _checked(inputs, data) -> list:
+    """Given inputs, each at an address the scene's data range, with the data's kind of draw (the
+    solver moves a value by its data entry: factor, offset or value)."""
+    known = {i.address: i for i in data}
+    for i in inputs:
+        d = known.get(i.address)
+        if d is None:
+            raise InputError("uncertainty.inputs", i.address, "no estimated value with a range at this address; the "
+                             f"scene has: {', '.join(known)}")
+        if d.uncertainty.kind != i.uncertainty.kind or d.level != i.level:
+            raise InputError(f"uncertainty.inputs.{i.address}", i.uncertainty.kind, f"its data draws a "
+                             f"{d.uncertainty.kind} ({d.level} level): give the same kind")
+    return list(inputs)
+
+
+def _bearing_at(scene: Scene, ins, draws):
+    """The scene's bearing with drawn values (or the InputError they raise)."""
+    brg = scene.bearing
+    vals = {}
+    for i, x in zip(ins, draws):
+        key = i.address.split(".", 1)[1]
+        attr, scale = _BEARING_KEYS[key]
+        vals[key] = i.uncertainty.apply(getattr(brg, attr) * scale, x)
+    try:
+        return bearing_values(brg, vals)
+    except InputError as exc:
+        return exc
+
+
+def _scene_at(scene: Scene, ins, pts, x, brg):
+    """One sampled operating point: scene numbers set, other draws in ``samples`` (or the InputError).
+
+    A scene number is checked by its section's field (as :meth:`Scene.with_` does) and set on a copy;
+    a drawn speed goes through :meth:`Scene.with_` (its n·dm limit is a check across keys)."""
+    if isinstance(brg, InputError):
+        return brg
+    attrs, samples, slow = {}, {}, {}
+    try:
+        for k in pts:
+            i = ins[k]
+            if i.address not in _SCENE_KEYS:
+                samples[i.address] = float(x[k])
+                continue
+            key, scale, attr = _SCENE_KEYS[i.address]
+            sec, name = i.address.split(".")
+            v = check_value(float(i.uncertainty.apply(getattr(scene, attr) * scale, x[k])), SECTIONS[sec][name],
+                            f"{i.address} (drawn)")
+            if i.address == "operation.n_rpm":
+                slow[key] = v
+            else:
+                attrs[attr] = v / scale
+        if brg is not scene.bearing:
+            attrs["bearing"] = brg
+        out = dataclasses.replace(scene, samples=samples, **attrs)
+        return out.with_(**slow) if slow else out
+    except InputError as exc:
+        return exc
+
+
+@dataclass
+class UncertaintyResult:
+    """Bands of a scene's prediction over its sampled uncertain inputs.
+
+    Attributes
+    ----------
+    nominal : SteadyState or TransientRun   the nominal answer (inputs at their nominal values)
+    inputs : list of Input                  the sampled inputs (columns of X)
+    X : ndarray                             (n, d) draws
+    outputs : dict                          output name (``T_C.<node>``, ``P_W``, ``breakdown_W.<k>``) →
+                                            (n,) values of the samples (NaN where a sample failed), or
+                                            (n, n_t) over the times ``t_s`` of a transient
+    bands : dict                            output → dict(p5, p50, p95) (arrays over t_s for a transient)
+    sensitivity : dict                      output → ranking of the inputs (:func:`~thermobear.coupled.sensitivity.ranking`)
+    failed : dict                           sample index → error name and message
+    n, seed, method, groups                 the sample design
+    t_s : ndarray                           output times of a transient [s] (None for a steady state)
+    focus : tuple                           nodes the text table ranks the inputs for (the rig's
+                                            measured nodes, else the balls)
+    """
+
+    nominal: object
+    inputs: list
+    X: np.ndarray
+    outputs: dict
+    bands: dict
+    sensitivity: dict
+    failed: dict
+    n: int
+    seed: object
+    method: str
+    groups: int
+    sensitivity_method: str = "src"
+    t_s: np.ndarray | None = None
+    group: np.ndarray = field(default=None, repr=False)
+    focus: tuple = ()
+
+    def summary(self, top: int = 8) -> str:
+        """A text table: bands, failed samples, inputs ranked (:func:`~thermobear.coupled.sensitivity.summary_lines`)."""
+        return "\n".join(summary_lines(self, top))
+
+    @property
+    def failed_count(self) -> dict:
+        """Error name → number of samples it stopped."""
+        out: dict = {}
+        for v in self.failed.values():
+            out[v["error"]] = out.get(v["error"], 0) + 1
+        return out
+
+    def as_dict(self) -> dict:
+        """JSON-ready: the design, the inputs, the bands, the rankings and the failed samples."""
+        arr = (lambda v: v.tolist() if isinstance(v, np.ndarray) else v)  # noqa: E731
+        return {"design": {"n": self.n, "seed": self.seed, "method": self.method, "groups": self.groups,
+                           "sensitivity": self.sensitivity_method},
+                "inputs": [i.as_dict() for i in self.inputs],
+                "bands": {k: {q: arr(v) for q, v in b.items()} for k, b in self.bands.items()},
+                "t_s": arr(self.t_s),
+                "sensitivity": self.sensitivity,
+                "failed": {"count": len(self.failed), "by_error": self.failed_count,
+                           "samples": {str(k): v for k, v in sorted(self.failed.items())}}}
+
+
+def _focus(scene: Scene, nodes) -> tuple:
+    """The rig's measured nodes (``[rig] map``), else the ball node."""
+    mapped = tuple(dict.fromkeys(t for t in scene.rig_map.values() if t in nodes))
+    return mapped or tuple(n for n in ("balls", "bearing") if n in nodes)[:1]
+
+
+def _fail(exc) -> dict:
+    return {"error": type(exc).__name__, "message": str(exc)}
+
+
+def steady_outputs(results) -> dict:
+    """Output name → (n,) values of the samples' SteadyStates (NaN for a failed sample)."""
+    ok = [r for r in results if isinstance(r, SteadyState)]
+    if not ok:
+        return {}
+    names = [f"T_C.{k}" for k in ok[0].T_C] + ["P_W"] + [f"breakdown_W.{k}" for k in ok[0].losses.breakdown_W]
+    out = {k: np.full(len(results), np.nan) for k in names}
+    for i, r in enumerate(results):
+        if isinstance(r, SteadyState):
+            for k, v in r.T_C.items():
+                out[f"T_C.{k}"][i] = v
+            out["P_W"][i] = r.P_W
+            for k, v in r.losses.breakdown_W.items():
+                out[f"breakdown_W.{k}"][i] = float(v)
+    return out
+
+
+def steady_uncertainty(scene: Scene, n: int, *, seed=None, method: str = "lhs", groups: int | None = None,
+                       sensitivity: str = "src", tol_K: float = 1e-6, prepared=None, inputs=None,
+                       nominal: SteadyState | None = None) -> UncertaintyResult:
+    """The coupled steady state of a scene over ``n`` samples of its uncertain inputs.
+
+    Parameters
+    ----------
+    scene : Scene           a scene with a thermal network (no prescribed temperature)
+    n : int                 number of samples
+    seed : int              seed of the design (the same seed gives the same samples)
+    method : str            ``"lhs"`` (Latin hypercube) or ``"sobol"`` (scrambled Sobol')
+    groups : int            bearing-geometry families (module docstring; default min(n, 8))
+    sensitivity : str       ``"src"`` (standardised regression coefficients and rank correlations,
+                            numpy / scipy) or ``"sobol"`` (first-order Sobol' indices by RBD-FAST on the
+                            same samples; needs the optional SALib: ``pip install thermobear[sensitivity]``)
+    tol_K, prepared         as :func:`~thermobear.coupled.steady.steady_states`
+    inputs : list           the inputs to sample (default :func:`uncertain_inputs`)
+    nominal : SteadyState   the nominal answer when already solved
+
+    Returns
+    -------
+    UncertaintyResult
+
+    >>> import thermobear as tb
+    >>> r = steady_uncertainty(tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml")), 16, seed=1)
+    >>> b = r.bands["T_C.balls"]
+    >>> bool(b["p5"] < r.nominal.T_C["balls"] < b["p95"]), len(r.failed)
+    (True, 0)
+    """
+    nominal = nominal if nominal is not None else _steady.steady_state(scene, tol_K=tol_K, prepared=prepared)
+    sm = _samples(scene, n, seed, method, groups, inputs, prepared, sensitivity)
+    runnable = [k for k, s in enumerate(sm.scenes) if isinstance(s, Scene)]
+    results: list = list(sm.scenes)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", OutsideValidity)    # the samples' validity is the nominal's question
+        for k, r in zip(runnable, _solve_split([sm.scenes[k] for k in runnable], tol_K, prepared)):
+            results[k] = r
+    failed = {k: _fail(r) for k, r in enumerate(results) if isinstance(r, Exception)}
+    outputs = steady_outputs(results)
+    return UncertaintyResult(nominal=nominal, inputs=sm.inputs, X=sm.X, outputs=outputs, bands=bands(outputs),
+                             sensitivity=ranking(sm.inputs, sm.X, outputs, sensitivity), failed=failed, n=sm.X.shape[0],
+                             seed=seed, method=method, groups=sm.groups, sensitivity_method=sensitivity, group=sm.group,
+                             focus=_focus(scene, nominal.T_C))
+
+
+def _solve_split(scenes, tol_K, prepared) -> list:
+    """:func:`steady_states` of the samples; a drawn value the network refuses (e.g. a conductance
+    drawn negative) stops its whole batch, so a refused batch is halved until that sample stands alone
+    with its InputError."""
+    try:
+        return steady_states(scenes, tol_K=tol_K, prepared=prepared)
+    except InputError as exc:
+        if len(scenes) == 1:
+            return [exc]
+    h = len(scenes) // 2
+    return _solve_split(scenes[:h], tol_K, prepared) + _solve_split(scenes[h:], tol_K, prepared)
+
+
+def _samples(scene, n, seed, method, groups, inputs, prepared, sensitivity) -> Samples:
+    if sensitivity not in SENSITIVITY:
+        raise InputError("uncertainty.sensitivity", sensitivity, f"one of {', '.join(SENSITIVITY)}")
+    if not isinstance(scene, Scene):
+        raise InputError("scene", type(scene).__name__, "a thermobear Scene")
+    if scene.network is None or scene.T_C is not None:
+        raise InputError("uncertainty", n, "a scene solved on its thermal network (no operation.T_C): the bands are "
+                         "those of the coupled steady state or heat-up")
+    return sample_scenes(scene, n, seed=seed, method=method, groups=groups, inputs=inputs, prepared=prepared)
+
+
+# --------------------------------------------------------------------------- heat-up
+def _series(run) -> dict:
+    """Output name → values over the run's times of a heat-up (a TransientRun)."""
+    return {**{f"T_C.{n}": v for n, v in run.T_C.items()}, "P_W": run.P_W,
+            **{f"breakdown_W.{k}": v for k, v in run.breakdown_W.items()}}
+
+
+def _point_heatup(scene, t_end_s, t_eval, T0_C, rtol, atol, stop, boundary) -> dict:
+    """One sampled point's heat-up (:func:`thermobear.coupled.transient.transient`, whose one-point family
+    applies the draws; a point across a model switch blends its alternatives there, the film load model
+    follows the film temperature): output name → (1, n_t)."""
+    run = _transient.transient(scene, t_end_s, t_eval=t_eval, T0_C=T0_C, rtol=rtol, atol=atol, stop=stop,
+                               boundary=boundary)
+    if not run.completed:
+        raise SolverError("the heat-up was stopped before its end")
+    return {k: np.interp(t_eval, run.t_s, v)[None] for k, v in _series(run).items()}
+
+
+def _family_heatup(fam: Family, t_end_s, t_eval, T0_C, rtol, atol, stop, boundary) -> dict:
+    """One batched heat-up of the sampled points of a family (one model choice each): output name →
+    (B, n_t)."""
+    pre = prepared_for(fam.scene)
+    contacts = family_contacts(fam, family_loads(fam))
+    pm = PointModel(family=fam, network=family_network(fam, pre.template, contacts),
+                    source=loss_sources(fam, contacts), coupling=pre.coupling)
+    T0 = fam.values("T_ambient_C") if T0_C is None else T0_C       # each sample from its own ambient
+    tr = solve_transient(pm.network, heat_sources(pm), t_end_s, T0_C=T0, t_eval=t_eval, rtol=rtol, atol=atol, stop=stop,
+                         fixed_C=None if boundary is None else boundary.shifted(0.0))
+    if not tr.completed:
+        raise SolverError("the heat-up was stopped before its end")
+    two = (lambda v: np.asarray(v, float).reshape(len(tr.t), -1).T)  # noqa: E731   (n_t[, B]) → (B, n_t)
+    return {**{f"T_C.{n}": two(v) for n, v in tr.T_C.items()}, "P_W": two(tr.report["P_W"]),
+            **{f"breakdown_W.{k[2:]}": two(v) for k, v in tr.report.items() if k.startswith("P_") and k != "P_W"}}
+
+
+def _heatups(scenes, t_end_s, t_eval, T0_C, rtol, atol, stop, boundary):
+    """The heat-ups of sampled points: (output name → (B, n_t), NaN where a point failed; point → its
+    exception).  The points whose model choice has one alternative are integrated in batches, one per
+    family of model choices (:func:`thermobear.thermal.solve_transient`, block-diagonal Jacobian); a
+    point inside a model-switch band (its alternatives blended as stacked points of one source,
+    :func:`~thermobear.coupled.transient.transient`) or on the film load model (its loads follow the film
+    temperature along the run) is integrated on its own.  A failing batch fails its points."""
+    plans, out, failed = plan_many(scenes), {}, {}
+    one = [k for k, a in enumerate(plans) if not isinstance(a, Exception) and len(a) == 1
+           and a[0].models["load_model"][0] != "film"]
+    failed.update({k: a for k, a in enumerate(plans) if isinstance(a, Exception)})
+    fams, _ = families([scenes[k] for k in one], [(plans[k][0].models, plans[k][0].dry) for k in one])
+    runs = [([one[j] for j in f.index], lambda f=f: _family_heatup(f, t_end_s, t_eval, T0_C, rtol, atol, stop,
+                                                                   boundary)) for f in fams]
+    runs += [([k], lambda k=k: _point_heatup(scenes[k], t_end_s, t_eval, T0_C, rtol, atol, stop, boundary))
+             for k in range(len(scenes)) if k not in failed and k not in one]
+    for idx, run in runs:
+        try:
+            series = run()
+        except (InputError, SolverError) as exc:
+            failed.update({k: exc for k in idx})
+            continue
+        for name, v in series.items():
+            out.setdefault(name, np.full((len(scenes), t_eval.size), np.nan))[idx] = v
+    return out, failed
+
+
+def transient_uncertainty(scene: Scene, t_end_s: float, n: int, *, t_eval=None, seed=None, method: str = "lhs",
+                          groups: int | None = None, sensitivity: str = "src", T0_C=None, rtol: float = 1e-5,
+                          atol: float = 1e-3, stop=None, inputs=None, nominal=None, boundary=None) -> UncertaintyResult:
+    """The heat-up of a scene over ``n`` samples of its uncertain inputs: the samples integrated in
+    batches (:func:`_heatups`: one per bearing-geometry group and model choice), bands over the output
+    times.
+
+    ``t_eval`` [s] the output times (default 50 points over [0, t_end_s]); ``boundary`` a logged boundary
+    (:class:`~thermobear.thermal.solve.LinearBoundary`, measured: the same for every sample); the other
+    parameters as :func:`steady_uncertainty` and :func:`thermobear.coupled.transient.transient` (no
+    schedule: one operating point).  A batch whose integration fails counts all its samples as failed.
+    """
+    t_eval = np.linspace(0.0, t_end_s, 51)[1:] if t_eval is None else np.asarray(t_eval, float)
+    nominal = nominal if nominal is not None else _transient.transient(scene, t_end_s, t_eval=t_eval, T0_C=T0_C,
+                                                                       rtol=rtol, atol=atol, stop=stop, boundary=boundary)
+    if boundary is not None:            # the samples of the scene with the logged nodes imposed
+        boundary, scene = _transient._imposed(boundary, scene, t_end_s)
+    sm = _samples(scene, n, seed, method, groups, inputs, None, sensitivity)
+    failed = {k: _fail(s) for k, s in enumerate(sm.scenes) if not isinstance(s, Scene)}
+    outputs: dict = {}
+    for g in range(sm.groups):
+        idx = [k for k in range(len(sm.scenes)) if sm.group[k] == g and k not in failed]
+        if not idx:
+            continue
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", OutsideValidity)
+            series, bad = _heatups([sm.scenes[k] for k in idx], t_end_s, t_eval, T0_C, rtol, atol, stop, boundary)
+        failed.update({idx[j]: _fail(e) for j, e in bad.items()})
+        for name, v in series.items():
+            outputs.setdefault(name, np.full((len(sm.scenes), t_eval.size), np.nan))[idx] = v
+    return UncertaintyResult(nominal=nominal, inputs=sm.inputs, X=sm.X, outputs=outputs, bands=bands(outputs),
+                             sensitivity=ranking(sm.inputs, sm.X, {k: v[:, -1] for k, v in outputs.items()}, sensitivity),
+                             failed=failed, n=sm.X.shape[0], seed=seed, method=method, groups=sm.groups,
+                             sensitivity_method=sensitivity, t_s=t_eval, group=sm.group, focus=_focus(scene, nominal.T_C))
+
+
+# --------------------------------------------------------------------------- the public entry points
+def steady_state(scene: Scene, *, uncertainty: int | None = None, seed=0, method: str = "lhs",
+                 groups: int | None = None, sensitivity: str = "src", tol_K: float = 1e-6, load=None, prepared=None):
+    """Coupled steady state of a scene (:func:`thermobear.coupled.steady.steady_state`); with
+    ``uncertainty=N`` its bands over N samples of the estimated inputs (:func:`steady_uncertainty`,
+    design ``method``, ``seed`` — default 0, so a run repeats —, ``groups``, ``sensitivity``).
+
+    Returns a :class:`~thermobear.coupled.steady.SteadyState`, or with ``uncertainty`` an
+    :class:`UncertaintyResult` whose ``nominal`` is the steady state.
+
+    >>> import thermobear as tb
+    >>> r = tb.steady_state(tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml")), uncertainty=16)
+    >>> r.n, r.seed, sorted(r.bands["P_W"])
+    (16, 0, ['n', 'p5', 'p50', 'p95'])
+    """
+    if uncertainty is None:
+        return _steady.steady_state(scene, tol_K=tol_K, load=load, prepared=prepared)
+    if load is not None:
+        raise InputError("load", "LoadDistribution", "injected loads hold one bearing: not with uncertainty (its "
+                         "geometry is sampled)")
+    return steady_uncertainty(scene, uncertainty, seed=seed, method=method, groups=groups, sensitivity=sensitivity,
+                              tol_K=tol_K, prepared=prepared)
+
+
+def transient(scene: Scene, t_end_s: float, *, uncertainty: int | None = None, seed=0, method: str = "lhs",
+              groups: int | None = None, sensitivity: str = "src", schedule=None, T0_C=None, t_eval=None,
+              rtol: float = 1e-5, atol: float = 1e-3, load=None, stop=None, prepared=None, boundary=None):
+    """Heat-up of a scene (:func:`thermobear.coupled.transient.transient`); with ``uncertainty=N`` its
+    bands over N samples of the estimated inputs (:func:`transient_uncertainty`; one operating point:
+    no schedule, no injected loads; a logged ``boundary`` the same for every sample).
+
+    Returns a :class:`~thermobear.coupled.transient.TransientRun`, or with ``uncertainty`` an
+    :class:`UncertaintyResult` whose ``nominal`` is the heat-up and whose bands run over ``t_s``.
+    """
+    if uncertainty is None:
+        return _transient.transient(scene, t_end_s, schedule=schedule, T0_C=T0_C, t_eval=t_eval, rtol=rtol, atol=atol,
+                                    load=load, stop=stop, prepared=prepared, boundary=boundary)
+    if schedule or load is not None:
+        raise InputError("schedule" if schedule else "load", "given", "a heat-up with uncertainty runs one operating "
+                         "point: no schedule, no injected loads")
+    return transient_uncertainty(scene, t_end_s, uncertainty, t_eval=t_eval, seed=seed, method=method, groups=groups,
+                                 sensitivity=sensitivity, T0_C=T0_C, rtol=rtol, atol=atol, stop=stop, boundary=boundary)
