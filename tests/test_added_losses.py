@@ -135,7 +135,8 @@ def test_cli_run_json_on_the_oil_bath(capsys, extra):
 _FORCEABLE = {"rolling": "auto", "hertz": "exact", "load_model": "jones_harris", "drag": "false",
               "kinematics": "outer", "stiffness": "nominal", "high_speed": "false", "losses": "local",
               "skf_R1": "1e-6", "skf_S1": "0.01", "skf_mu_EHL": "0.05", "churning": "false", "seals": "false",
-              "cage": "false", "traction": "constant", "inlet_heating": "false", "starvation": "false"}
+              "cage": "false", "traction": "constant", "inlet_heating": "false", "starvation": "false",
+              "clearance": "given"}
 
 
 def test_every_models_key_can_be_forced_with_set(capsys):

@@ -11,7 +11,8 @@ import numpy as np
 
 __all__ = [
     "ThermobearError", "InputError", "SolverError", "NoEquilibrium",
-    "NoConvergence", "ThermalRunaway", "NoSpeedRoot", "OutsideValidity", "ExtrapolationWarning",
+    "NoConvergence", "ThermalRunaway", "ThermalPreloadRunaway", "NoSpeedRoot", "OutsideValidity",
+    "ExtrapolationWarning",
 ]
 
 
@@ -74,6 +75,22 @@ class NoConvergence(SolverError):
 
 class ThermalRunaway(SolverError):
     """Heat generation grows faster with temperature than dissipation: no thermal equilibrium."""
+
+
+class ThermalPreloadRunaway(SolverError):
+    """The ring temperatures consumed the bearing's operating clearance: a radial preload the rigid-ring
+    load distribution cannot represent (and whose rising friction may run away).
+
+    Attributes (besides :class:`SolverError`'s): ``clearance_history_m`` the clearances of the loop or the
+    heat-up [m] (used → operating), ``dT_inner_outer_K`` the inner- minus outer-ring temperature difference
+    that consumed it [K], ``mounted_m`` the mounted clearance at 20 °C [m].
+    """
+
+    def __init__(self, reason: str, *, clearance_history_m=(), dT_inner_outer_K: float = float("nan"),
+                 mounted_m: float = float("nan"), **kw):
+        super().__init__(reason, **kw)
+        self.clearance_history_m = list(clearance_history_m)
+        self.dT_inner_outer_K, self.mounted_m = dT_inner_outer_K, mounted_m
 
 
 class NoSpeedRoot(SolverError):

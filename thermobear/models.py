@@ -39,6 +39,14 @@ sub-models serve it, each with the reason, overridable from the scene's ``[model
   (:mod:`thermobear.lubrication.thermal_film`; φ_T → 1 at low speed × viscosity, so no switch).
 * **starvation** — SKF's kinematic replenishment factor Φ_rs on the rolling force wherever it is
   defined (grease, oil–air, jet, bath; Φ_rs → 1 when the track refills, so no switch).
+* **clearance** — the diametral clearance the load distribution uses (:mod:`thermobear.coupled.clearance`):
+  ``operating`` — the mounted clearance (ISO 286 fits, Lamé) less the thermal and centrifugal growth at the
+  solution's own ring, ball, shaft and housing temperatures, to a fixed point — by default for a deep groove
+  bearing whose scene gives its fits (``bearing.shaft_fit`` / ``housing_fit``: the mounting is known); ``given``
+  (the bearing's clearance as stated) otherwise, the operating clearance at the solution still reported with the
+  ratings (with the catalogue-typical k5 / H7 fits and the mid CN clearance every shipped 6208 scene consumes its
+  clearance, so a default loop would refuse them all on guessed fits); ``mounted`` the fits at 20 °C.  Angular
+  contact and thrust bearings: ``given`` (their contact angle is set by the design, not by a radial play).
 * **hertz** — exact (one ellipticity solve per contact; the approximations' errors, 1–5 %, would
   show in p_max and the film).
 
@@ -341,7 +349,31 @@ def _choose(scene: Scene, hs: tuple, lm: tuple | None) -> dict:
     out["hertz"] = (m.get("hertz", "exact"), "chosen in the scene" if "hertz" in m else
                     "exact elliptic integrals (approximations err 1–5 %)")
     _film_choices(scene, out)
+    out["clearance"] = clearance_choice(scene)
     return out
+
+
+def clearance_choice(scene: Scene) -> tuple:
+    """``(choice, reason)`` of the clearance of the load distribution (module docstring): ``given``,
+    ``mounted`` or ``operating``; InputError where the scene forces a choice its bearing cannot take."""
+    b, m = scene.bearing, scene.models.get("clearance")
+    pd = f"P_d {b.Pd * 1e6:.3g} µm" + (f" ({b.clearance_group})" if b.clearance_group else "")
+    can = b.kind == "deep_groove" and b.bore is not None and b.outer_diameter is not None
+    if m in ("mounted", "operating") and not can:
+        raise InputError("models.clearance", m, "the fitted clearance needs a deep groove bearing with its bore and "
+                         "outside diameter (angular contact and thrust bearings: their contact angle is the design's)")
+    if m in ("mounted", "operating") and scene.T_C is not None:
+        raise InputError("models.clearance", m, "the fitted clearance is applied by the coupled steady state: "
+                         "remove operation.T_C, or choose 'given'")
+    if m is not None:
+        return m, f"chosen in the scene ({pd} unmounted)"
+    if not can:
+        return "given", f"{b.kind.replace('_', ' ')} bearing: the contact angle of the design ({pd})"
+    if scene.T_C is None and (scene.shaft_fit is not None or scene.housing_fit is not None):
+        return "operating", (f"deep groove bearing with fits given ({scene.shaft_fit or '-'} / {scene.housing_fit or '-'}):"
+                             f" {pd} unmounted, mounted and warmed to the solution's ring temperatures (fixed point)")
+    return "given", (f"{pd} as given (fits not stated: the operating clearance at the solution is reported with the "
+                     "ratings; bearing.shaft_fit / housing_fit or models.clearance = 'operating' close the loop)")
 
 
 @dataclass(frozen=True)

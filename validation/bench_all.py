@@ -200,7 +200,7 @@ def uncertainty_line() -> list:
         import bench_uncertainty
     except ImportError:
         return []
-    r = bench_uncertainty.bench(1000)
+    r = bench_uncertainty.bench(1000)                 # its own one-core child process
     t = r["seconds"] if isinstance(r, dict) else float(r)
     return ["", f"1000 uncertainty samples of the seed-004 steady state (issue 17; one core): {t:.2f} s "
                 f"(target ≤ 2 s: {'met' if t <= 2.0 else 'missed'})."]

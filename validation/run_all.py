@@ -2,7 +2,7 @@
 
 Run from the repository root (a fresh clone with thermobear installed)::
 
-    python validation/run_all.py [--full-bench] [--no-bench]
+    python validation/run_all.py [--no-bench] [--ref-python PYTHON]
 
 1. runs every other ``validation/*.py`` script as a subprocess (the seed reproductions write their
    own ``report/*.md``; the output of the others is kept in report.md), two at a time;
@@ -29,7 +29,7 @@ import numpy as np
 HERE = Path(__file__).resolve().parent
 REPORT = HERE / "report"
 sys.path.insert(0, str(HERE))
-OWN = {"run_all.py", "fidelity.py", "stability.py", "bench_all.py",
+OWN = {"run_all.py", "fidelity.py", "stability.py", "bench_all.py", "bench_uncertainty.py",
        "air_table.py"}        # air_table.py regenerates a data file from CoolProp: run it by hand
 LEVEL_COLORS = {"L0": "#1f77b4", "L0-cal": "#17becf", "L1": "#ff7f0e", "L2": "#2ca02c", "L3": "#d62728",
                 "L4": "#9467bd"}
@@ -109,7 +109,8 @@ def main(argv=()):
     stab = stability.run(REPORT / "stability_map.png", processes=2)
     t_stab = time.perf_counter() - t0
     t0 = time.perf_counter()
-    bench = "(skipped: --no-bench)" if "--no-bench" in argv else bench_all.run(full="--full-bench" in argv)
+    bench = "(skipped: --no-bench)" if "--no-bench" in argv else bench_all.run(
+        ref_python=argv[argv.index("--ref-python") + 1] if "--ref-python" in argv else None)
     t_bench = time.perf_counter() - t0
 
     by = {(s.level, s.family): s for s in scores}

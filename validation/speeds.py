@@ -11,6 +11,7 @@ unconfirmed (recalled from SKF's catalogue) or "not found".
 from __future__ import annotations
 
 import sys
+import tempfile
 import warnings
 from pathlib import Path
 
@@ -20,6 +21,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import thermobear as tb  # noqa: E402
 from _common import write_report  # noqa: E402
 from thermobear.coupled.speeds import din732_safe_speed, thermal_reference_speed, thermally_safe_speed  # noqa: E402
+from thermobear.app.scaffold import scaffold  # noqa: E402
 from thermobear.errors import NoSpeedRoot  # noqa: E402
 
 BD = "SKF, via gumyr/bd_warehouse data CSV"
@@ -56,8 +58,15 @@ def reference_rows() -> list:
     return rows
 
 
-def scene_rows() -> list:
-    s = tb.load_scene(tb.example_path("block_6208_oil_bath.toml"))
+def init_scene():
+    """The scene ``thermobear init 6208 --lubrication oil-bath`` writes (ISO 15312's reference load)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "init_6208_oil_bath.toml"
+        path.write_text(scaffold("6208", "oil-bath"), encoding="utf-8")
+        return tb.load_scene(path)
+
+
+def scene_rows(s) -> list:
     out = ["| limit [°C] | model safe speed [rpm] | hottest ring [°C] | residual [K] | model power [W] | "
            "DIN 732 n_θ [rpm] | f_n | K_L | K_P | f_n of the exact balance | DIN 732 heat flow [W] | "
            "n_θr (ISO 15312 eqs) [rpm] |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
@@ -93,7 +102,11 @@ def main():
               "coefficients, heat dissipated k_q A_s (limit − 25 °C ambient) with k_q = q_r / 50 K (no "
               "circulating oil), friction at the scene's load and at the viscosity at the limit; f_n by DIN 732's "
               "approximation, beside the exact root of the balance it approximates.", ""]
-    lines += scene_rows()
+    lines += scene_rows(tb.load_scene(tb.example_path("block_6208_oil_bath.toml")))
+    lines += ["", "## The same for the scene `thermobear init 6208 --lubrication oil-bath` writes", "",
+              "ISO 15312's reference load (Fr = 0.05 C0), ISO VG 32, the builders' default shaft and block housing "
+              "(`thermobear/app/scaffold.py`).", ""]
+    lines += scene_rows(init_scene())
     lines += ["", "### Why they differ", "",
               "* Cooling: DIN 732 credits the bearing with the reference heat transfer of its seating surfaces "
               "(k_q A_s ΔT ≈ 98 W at 70 °C); the model's block housing, shaft to the 35 °C coupling, oil sump "

@@ -43,7 +43,7 @@ from thermobear.rating.iso281 import (basic_rating_life, contamination_factor, f
 from thermobear.rating.life import equivalent_loads, load_ratings
 from thermobear.validity import LIMITS, check, collect
 
-__all__ = ["Ratings", "check_static_safety", "scene_ratings", "typical_fits"]
+__all__ = ["Ratings", "check_static_safety", "scene_clearance", "scene_ratings", "typical_fits"]
 
 _LOAD_FIELDS = "operation (Fa_N, Fr_N, Fz_N)"
 
@@ -112,7 +112,8 @@ class Ratings:
     T_operating_C, nu_m2_s, nu1_m2_s, kappa : the temperature of κ [°C], ν and ν1 [m²/s], κ [-]
     contamination, e_C, a_ISO : cleanliness level, e_C and the life modification factor [-]
     L10_h, L10m_h, L10r_h : basic, modified and ISO/TS 16281 reference rating lives [h]
-    clearance_um : mounted and operating diametral clearance [µm], the fits and the temperatures used
+    clearance_um : unmounted, mounted, operating diametral clearance and the one the loads used [µm], the fits and
+                   the temperatures (:func:`scene_clearance`; with ``models.clearance`` = operating the fixed point's)
     warnings : the named OutsideValidity warnings of these answers
     """
 
@@ -152,23 +153,36 @@ class Ratings:
                 f"nu1 {self.nu1_m2_s * 1e6:.3g} cSt)   e_C {self.e_C:g} ({self.contamination})   a_ISO {self.a_ISO:.3g}",
                 f"  L10 {self.L10_h:.4g} h   L10m {self.L10m_h:.4g} h" +
                 ("" if self.L10r_h is None else f"   L10r {self.L10r_h:.4g} h"),
-                f"  clearance mounted {c['mounted']:.2f} um, operating {c['operating']:.2f} um "
-                f"(fits {c['shaft_fit']} / {c['housing_fit']}: {c['fits_from']})"]
+                f"  clearance mounted {c['mounted']:.2f} um, operating {c['operating']:.2f} um, in the loads "
+                f"{c['used']:.2f} um" + (f" (fixed point, {c['iterations']} iterations, residual "
+                                         f"{c['residual_um']:.1e} um)" if "iterations" in c else " (as given)"),
+                f"  fits {c['shaft_fit']} / {c['housing_fit']}: {c['fits_from']}"]
 
 
-def _node_T(steady, names, role):
+def _node_T(T, roles, names, role):
     """Temperature of the first node of ``names`` the network has, else of the node of ``role`` [°C]."""
-    T = steady.T_C
     for n in names:
         if n in T:
             return float(T[n]), n
-    node = steady.roles.get(role)
+    node = roles.get(role)
     return float(T[node]), node
 
 
-def _clearance(scene, P, C, steady) -> dict:
-    """Mounted and operating clearance [µm] with the scene's fits (or the typical ones) at the steady temperatures."""
+def scene_clearance(scene, T_C: dict, roles: dict) -> dict:
+    """Unmounted, mounted (fits at 20 °C) and operating diametral clearance [µm] of a scene's bearing at the node
+    temperatures ``T_C`` (node → °C; ``roles``: role → node), with the scene's fits or the typical ones for its
+    load (:func:`typical_fits`), as :func:`~thermobear.contact.fits.operating_clearance` gives them: the ring
+    temperatures from the nodes ``inner_ring`` / ``outer_ring`` (else the inner / outer role), the balls', the
+    shaft's and housing's (else the ring's), the inner ring's speed when it rotates.
+
+    >>> import thermobear as tb
+    >>> s = tb.load_scene(tb.example_path("oil_bath_6208.toml"))
+    >>> c = scene_clearance(s, {"ball": 20.0, "ir": 20.0, "or": 20.0}, {"ball": "ball", "inner": "ir", "outer": "or"})
+    >>> round(c["mounted"], 2), c["shaft_fit"]
+    (1.69, 'k5')
+    """
     b = scene.bearing
+    C, _, P, _ = _static(scene)
     typ = typical_fits(b, P, C, scene.rotating)
     shaft, housing = scene.shaft_fit or typ[0], scene.housing_fit or typ[1]
     given = scene.shaft_fit is not None and scene.housing_fit is not None
@@ -176,14 +190,14 @@ def _clearance(scene, P, C, steady) -> dict:
     if b.bore is None or b.outer_diameter is None:
         out["fits_from"] = "no fit: the bearing has no bore / outside diameter"
         shaft = housing = None
-    (Ti, ni), (To, no) = _node_T(steady, ("inner_ring",), "inner"), _node_T(steady, ("outer_ring",), "outer")
-    Tb, nb = _node_T(steady, (), "ball")
-    (Ts, ns), (Th, nh) = _node_T(steady, ("shaft",), "inner"), _node_T(steady, ("housing",), "outer")
+    (Ti, ni), (To, no) = _node_T(T_C, roles, ("inner_ring",), "inner"), _node_T(T_C, roles, ("outer_ring",), "outer")
+    Tb, nb = _node_T(T_C, roles, (), "ball")
+    (Ts, ns), (Th, nh) = _node_T(T_C, roles, ("shaft",), "inner"), _node_T(T_C, roles, ("housing",), "outer")
     n_in = scene.n_rpm if scene.rotating == "inner" else 0.0
     mounted = operating_clearance(b, shaft=shaft, housing=housing)
     op = operating_clearance(b, shaft=shaft, housing=housing, T_inner_C=Ti, T_outer_C=To, T_ball_C=Tb,
                              T_shaft_C=Ts, T_housing_C=Th, n_rpm=n_in)
-    out.update(unmounted=b.Pd * 1e6, mounted=float(mounted.Pd) * 1e6, operating=float(op.Pd) * 1e6,
+    out.update(unmounted=b.Pd * 1e6, mounted=float(mounted.Pd) * 1e6, operating=float(op.Pd) * 1e6, used=b.Pd * 1e6,
                temperatures_C={"inner ring": Ti, "outer ring": To, "balls": Tb, "shaft": Ts, "housing": Th},
                nodes={"inner ring": ni, "outer ring": no, "balls": nb, "shaft": ns, "housing": nh})
     return out
@@ -209,8 +223,8 @@ def scene_ratings(scene, steady, losses=None) -> Ratings:
             Q, a, bb = (np.asarray(c[side][k], float) for k in ("Q", "a", "b"))
             with np.errstate(divide="ignore", invalid="ignore"):
                 p[side] = float(np.max(np.where(Q > 0, 1.5 * Q / (np.pi * a * bb), 0.0)))
-    Tin, _ = _node_T(steady, (), "inner")
-    Tout, _ = _node_T(steady, (), "outer")
+    Tin, _ = _node_T(steady.T_C, steady.roles, (), "inner")
+    Tout, _ = _node_T(steady.T_C, steady.roles, (), "outer")
     T_op = 0.5 * (Tin + Tout)
     nu = float(scene.lubricant.nu(T_op)) * 1e-6          # [cSt] → [m²/s]
     n = float(scene.n_rpm)
@@ -227,7 +241,7 @@ def scene_ratings(scene, steady, losses=None) -> Ratings:
     if c:
         ld = type("Balls", (), {"Q_i": np.ravel(c["inner"]["Q"]), "Q_o": np.ravel(c["outer"]["Q"])})
         L10r = float(reference_life(b, ld, C, rotating=scene.rotating).L10r) * hours
-    clear = _clearance(scene, P, C, steady)
+    clear = getattr(steady, "clearance_um", None) or scene_clearance(scene, steady.T_C, steady.roles)
     with collect(replay=False) as got:
         check("s0", C0 / P0, _LOAD_FIELDS, what=f"P0 = {P0:.4g} N, C0 = {C0:.4g} N")
         check("kappa", kappa, "lubricant viscosity at the operating temperature",

@@ -38,6 +38,7 @@ import numpy as np
 
 from thermobear.arrays import take
 from thermobear.coupled.blend import blend_states
+from thermobear.coupled.clearance import clearance_loop
 from thermobear.coupled.fixedpoint import solve_coupled
 from thermobear.coupled.pipeline import (Family, families, family_contacts, family_loads, film_temperature_C,
                                         split_failures)
@@ -84,6 +85,10 @@ class SteadyState:
     heat_out_to : dict        path → the boundary it leads to (a fixed node, or ``"stream"``)
     models_used : dict        model → (choice, reason)
     history : list            convergence history
+    clearance_um : dict       with ``models.clearance`` mounted / operating: the clearances [µm] (unmounted,
+                              mounted, operating at these temperatures, ``used`` by the loads), the fits, the
+                              fixed point's iterations, residual and history (:mod:`thermobear.coupled.clearance`);
+                              None: the bearing's own clearance (the ratings report its operating value)
     roles : dict              role → node (ball, inner, outer, oil)
     warnings : list           OutsideValidity warnings of this point's answer
     """
@@ -107,6 +112,7 @@ class SteadyState:
     heat_out_to: dict = field(default_factory=dict)
     batch_losses: object = field(default=None, repr=False)
     row: int | None = None
+    clearance_um: dict | None = None
 
     @property
     def losses(self):
@@ -505,15 +511,29 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> l
                                solved in batched calls)
     tol_K : float              Newton tolerance on the node temperatures [K]
     load : LoadDistribution    optional loads to use instead of the model's (one scene, or a batch
-                               matching a single family)
+                               matching a single family; the clearance loop does not apply: the loads
+                               are given)
     prepared : Prepared        :func:`~thermobear.coupled.sources.prepare` of a family, reused for the
                                points it serves (the others are prepared here)
 
     Returns
     -------
     list   per scene, its :class:`SteadyState`, or the InputError / SolverError that stopped it
-           (a failing point never stops the others)
+           (a failing point never stops the others); points with ``models.clearance`` mounted or
+           operating at their clearance's fixed point (:func:`~thermobear.coupled.clearance.clearance_loop`;
+           a consumed clearance: :class:`~thermobear.errors.ThermalPreloadRunaway`)
     """
+    scenes = list(scenes)
+    out = _steady_states(scenes, tol_K=tol_K, load=load, prepared=prepared)
+    if load is None:
+        out = clearance_loop(scenes, out, lambda scs: _steady_states(scs, tol_K=tol_K, prepared=prepared))
+    seen: set = set()
+    emit([w for r in out if isinstance(r, SteadyState) for w in r.warnings if not (str(w) in seen or seen.add(str(w)))])
+    return out
+
+
+def _steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> list:
+    """:func:`steady_states` at each bearing's own clearance (no clearance loop, warnings not emitted)."""
     scenes = list(scenes)
     for k, sc in enumerate(scenes):
         if not isinstance(sc, Scene):
@@ -571,8 +591,6 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> l
         parts.setdefault(i, []).append((w, r))
     for i, p in parts.items():
         out[i] = blend_states(p, SteadyState)
-    seen: set = set()
-    emit([w for r in out if isinstance(r, SteadyState) for w in r.warnings if not (str(w) in seen or seen.add(str(w)))])
     return out
 
 

@@ -25,7 +25,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from thermobear.coupled.limits import emit, point_warnings
-from thermobear.coupled.ratings import check_static_safety
+from thermobear.coupled.clearance import scene_at_clearance, preload_runaway
+from thermobear.coupled.ratings import check_static_safety, scene_clearance
 from thermobear.coupled.pipeline import Family, family_contacts, family_loads, film_temperature_C, stack_loads
 from thermobear.coupled.sources import Coupling, family_network, loss_parts, loss_sources, prepared_for
 from thermobear.coupled.steady import T_LIMIT_K, _batched
@@ -43,6 +44,7 @@ __all__ = ["TransientRun", "transient", "PointModel", "point_model", "heat_sourc
 _C0 = 273.15
 _FILM_DT0_S = 20.0      # first piece of a film-load-model transient [s]
 _FILM_DRIFT_K = 2.0     # film-temperature drift per piece [K] (loads re-solved at each piece's start)
+_CLEAR_DRIFT_M = 0.5e-6  # operating-clearance drift per piece [m] (models.clearance = "operating")
 
 
 @dataclass
@@ -228,7 +230,7 @@ def _imposed(boundary, scene: Scene, t_end_s):
 def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None) -> TransientRun:
     T_state = scene.T_ambient_C if T0_C is None else T0_C
     out_t, out_T, out_rep, first, seg_changes, seen = [], {}, {}, None, {}, set()
-    film_dt, completed, i, plans = None, True, -1, {}
+    film_dt, completed, i, plans, clear_hist = None, True, -1, {}, []
     with warnings.catch_warnings():
         # property calls at the integrator's trial states may lie beyond a correlation's data; the
         # validity of the states reported is checked once, on the series (limits.point_warnings)
@@ -239,16 +241,26 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
             if id(sc) not in plans:           # film pieces of one step share its scene: planned once
                 plans[id(sc)] = _alternatives(sc, load)
             alts = plans[id(sc)]
+            clear = load is None and alts[0].models["clearance"][0] == "operating"
+            sc_p = sc
+            if clear:                         # the clearance at the piece's start temperatures
+                c = _piece_clearance(sc, T_state, first[1] if first else None, clear_hist, ts)
+                if c["operating"] <= 0:
+                    err = preload_runaway(sc, c, clear_hist, f"during the heat-up at t = {ts:g} s")
+                    err.last = _assemble(out_t, out_T, out_rep, first, seg_changes, [], False) if out_t else None
+                    raise err          # what was integrated: err.last (a TransientRun, completed False)
+                sc_p = scene_at_clearance(sc, c["operating"] * 1e-6)
+                alts = _alternatives(sc_p, load)
             models = max(alts, key=lambda a: a.weight).models
             film = load is None and any(a.models["load_model"][0] == "film" for a in alts)
             T_film = None
-            if film:
-                T_film = _film_of(T_state, first[1] if first else None, sc)
+            if film or clear:
+                T_film = _film_of(T_state, first[1] if first else None, sc) if film else None
                 film_dt = min(_FILM_DT0_S, te - ts) if film_dt is None else film_dt
                 if ts + film_dt < te - 1e-9 * te:
                     pieces.insert(i + 1, (ts + film_dt, te, sc, last_seg))
                     te, last_seg = ts + film_dt, False
-            pm = _blended_point_model(sc, alts, T_film, load, pre if pre.serves(sc) else None)
+            pm = _blended_point_model(sc_p, alts, T_film, load, pre if pre.serves(sc_p) else None)
             net, cp = pm.network, pm.coupling
             first = first or (models, cp.roles, list(net.nodes))
             changed = {k: v for k, v in models.items() if first[0].get(k, (None,))[0] != v[0]}
@@ -278,9 +290,12 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
             if not tr.completed:
                 completed = False
                 break
-            if film:       # next piece: as long as gives ≈ _FILM_DRIFT_K of film-temperature drift (×½ … ×4)
-                drift = abs(_film_of(T_state, cp.roles, sc) - T_film)
-                film_dt = (te - ts) * float(np.clip(_FILM_DRIFT_K / max(drift, 1e-9), 0.5, 4.0))
+            if film or clear:  # next piece: ≈ _FILM_DRIFT_K of film-temperature drift, _CLEAR_DRIFT_M of clearance
+                f = [_FILM_DRIFT_K / max(abs(_film_of(T_state, cp.roles, sc) - T_film), 1e-9)] if film else []
+                if clear:
+                    c1 = scene_clearance(sc, _T_nodes(T_state, cp.roles), cp.roles)["operating"]
+                    f.append(_CLEAR_DRIFT_M / max(abs(c1 - c["operating"]) * 1e-6, 1e-15))
+                film_dt = (te - ts) * float(np.clip(min(f), 0.5, 4.0))
             _check_limit(T_state, te)
     got = []
     if out_t:
@@ -330,6 +345,25 @@ def _blended_point_model(sc: Scene, alts, T_film, load, prepared) -> PointModel:
                           centrifugal=np.array([a.models["high_speed"][0] != "yes" for a in alts]))
     return PointModel(family=pm.family, network=pm.network, coupling=pm.coupling,
                       source=StackedBlend(loss_sources(fam, cs), [a.weight for a in alts]))
+
+
+def _T_nodes(T_state, roles) -> dict:
+    """Node → °C of a piece's start state (a uniform start: the roles' nodes at that temperature)."""
+    if isinstance(T_state, dict):
+        return T_state
+    return {n: float(T_state) for n in roles.values()}
+
+
+def _piece_clearance(sc: Scene, T_state, roles, hist: list, t_s: float) -> dict:
+    """The operating clearance [µm] (:func:`~thermobear.coupled.ratings.scene_clearance`) at a piece's start,
+    appended to the heat-up's clearance history."""
+    roles = roles or {"inner": "inner", "outer": "outer", "ball": "ball"}
+    c = scene_clearance(sc, _T_nodes(T_state, roles), roles)
+    T = c["temperatures_C"]
+    hist.append(dict(t_s=t_s, operating_um=c["operating"], T_inner_ring_C=T["inner ring"],
+                     T_outer_ring_C=T["outer ring"], T_balls_C=T["balls"],
+                     dT_inner_outer_K=T["inner ring"] - T["outer ring"]))
+    return c
 
 
 def _T0(T_state, net):

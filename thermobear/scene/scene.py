@@ -83,6 +83,9 @@ MODEL_FIELDS = {
     "traction": Field.choice(*TRACTION_MODELS, doc="full-film traction: constant mu_full_film or the oil's Eyring law"),
     "inlet_heating": Field.flag("thermal film reduction by inlet shear heating (Gupta et al. 1992)"),
     "starvation": Field.flag("kinematic replenishment: SKF phi_rs on the rolling force"),
+    "clearance": Field.choice("given", "mounted", "operating", doc="clearance of the load distribution: the "
+                              "bearing's as given, mounted (fits at 20 °C), or operating (fits, ring temperatures "
+                              "and speed of the solution: a fixed point; deep groove bearings)"),
 }
 
 _UNCERTAINTY = Field.table("ranges of estimated values: uncertainty.<key> = { range | factor | offset = [lo, hi], "
