@@ -11,6 +11,7 @@ import pytest
 
 import thermobear as tb
 from thermobear.app.cli import main
+from thermobear.coupled import uncertainty as unc
 from thermobear.coupled.uncertainty import (Input, sample_scenes, steady_uncertainty, transient_uncertainty,
                                             uncertain_inputs)
 from thermobear.errors import InputError
@@ -216,6 +217,29 @@ def test_transient_bands_over_time(s004):
     assert np.all(np.diff(b["p50"]) > 0)                             # heating up
     nom = np.interp([100.0, 300.0, 600.0], r.nominal.t_s, r.nominal.T_C["inner_ring"])
     assert np.all(np.abs(b["p50"] - nom) < 2.0)
+
+
+def test_batched_heat_up_samples_equal_their_own_heat_ups(monkeypatch):
+    """Seed 002 (one model alternative): sampled points integrated as one batch (one family, one
+    block-diagonal system) each follow the heat-up they have alone; the seed-004 point, inside two
+    model-switch bands, runs point by point through transient() (its blended alternatives)."""
+    calls = []
+    for name in ("_family_heatup", "_point_heatup"):
+        f = getattr(unc, name)
+        monkeypatch.setattr(unc, name, lambda *a, f=f, name=name, **k: calls.append(name) or f(*a, **k))
+    s = tb.load_scene(SEED002)
+    sm = sample_scenes(s, 4, seed=2, groups=1)
+    t = np.array([60.0, 300.0])
+    batch, failed = unc._heatups(sm.scenes, 300.0, t, None, 1e-8, 1e-6, None, None)
+    assert not failed and calls == ["_family_heatup"]
+    for k, sc in enumerate(sm.scenes):
+        alone = tb.transient(sc, 300.0, t_eval=t, rtol=1e-8, atol=1e-6)
+        assert batch["T_C.balls"][k] == pytest.approx(alone.T_C["balls"], abs=1e-3)
+        assert batch["P_W"][k] == pytest.approx(alone.P_W, rel=1e-5)
+    calls.clear()
+    unc._heatups(sample_scenes(tb.load_scene(SEED004), 2, seed=2).scenes, 10.0, np.array([10.0]), None, 1e-5, 1e-3,
+                 None, None)
+    assert calls == ["_point_heatup", "_point_heatup"]
 
 
 def test_given_inputs_keep_the_data_kind(s004):

@@ -3,10 +3,10 @@
 ``tb.steady_state(scene, uncertainty=1000)`` on examples/seed004_oil_jet_7210.toml: the nominal
 steady state, 1 000 Latin-hypercube samples of its 46 estimated inputs (scene, lubricant, network,
 material and bearing geometry in 8 families), solved by the batched steady solver, then the bands and
-the ranking.  The target held (1.0–1.9 s) until the point's model choice came to lie in two switch
+the ranking.  The target held (0.65 s) until the point's model choice came to lie in two switch
 bands: each sample is now solved for three blended alternatives, one on the film load model (its
 fixed point re-solves the loads), with Eyring traction and the inlet-heating and replenishment factors
-— ≈ 7.5 s, the nominal point alone ≈ 0.15 s.
+— ≈ 4.6 s (×7, both measured in one run), the nominal point alone ≈ 0.1 s.
 Timed on one core: a child process with single-threaded BLAS (``OPENBLAS_NUM_THREADS=1`` … set before
 numpy loads — BLAS threads sharing one pinned core slow the least-squares ranking tenfold) pinned to one
 CPU where the OS allows it; median of ``repeat`` runs after one warm-up run; the stages (sampling,
