@@ -122,3 +122,33 @@ def test_typical_fits_follow_the_load_and_scene_fits_win():
     raw = {**S.raw, "bearing": {**S.raw["bearing"], "shaft_fit": "m5", "housing_fit": "J7"}}
     c = scene_ratings(scene_from_dict(raw, path=S.path), _steady(50.0, 50.0)).clearance_um
     assert (c["shaft_fit"], c["housing_fit"], c["fits_from"]) == ("m5", "J7", "the scene")
+
+
+def _catalogue_ends():
+    from thermobear.contact.geometry import bearing_names
+    series: dict = {}
+    for name in bearing_names():
+        b = tb.bearing(name)
+        if b.C0 is not None and b.series is not None:
+            series.setdefault(b.series, []).append(name)
+    return [n for names in series.values() for n in (names[0], names[-1])]
+
+
+@pytest.mark.parametrize("name", _catalogue_ends())
+def test_every_catalogue_series_answers_with_its_ratings(name):
+    # the smallest and largest bearing of every series, in an oil-bath block housing at ISO 15312's
+    # reference load, 1500 rpm: the run answer carries C0, C, s0, κ, a_ISO and L10m
+    b = tb.bearing(name)
+    thrust = b.kind == "thrust"
+    Fr = 0.0 if thrust else 0.05 * b.C0
+    Fa = 0.02 * b.C0 if thrust else (1.25 * Fr * np.tan(b.alpha0) if b.kind == "angular_contact" else 0.0)
+    s = scene_from_dict({"bearing": {"catalog": name},
+                         "lubricant": {"name": "iso-vg-68-mineral", "supply": "oil_bath", "oil_level_mm": b.D * 500},
+                         "operation": {"n_rpm": 1500.0, "Fr_N": Fr, "Fa_N": Fa}, "thermal": {"T_ambient_C": 25.0},
+                         "housing": {}})
+    d = tb.solve(s).as_dict()                     # what run --json prints
+    r = d["ratings"]
+    assert r["C0_N"] == pytest.approx(b.C0, rel=1e-3) and r["C_N"] == pytest.approx(b.C, rel=1e-3)   # (catalogue: whole N)
+    assert d["s0"] == pytest.approx(r["C0_N"] / r["P0_N"], rel=1e-9) and d["s0"] > 1.0
+    assert 0.0 < d["kappa"] and 0.0 < d["a_ISO"] <= 50.0
+    assert d["L10m_h"] == pytest.approx(d["a_ISO"] * r["L10_h"], rel=1e-9)
