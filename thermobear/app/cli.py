@@ -219,6 +219,7 @@ def main(argv=None) -> int:
         with warnings.catch_warnings():
             if not debug:
                 warnings.simplefilter("default")
+                warnings.simplefilter("ignore", ResourceWarning)   # housekeeping (a file an interrupt left open)
                 warnings.showwarning = _show_warning(set())
             return int(args.func(args) or 0)
     except (InputError, NoEquilibrium) as e:   # bad input, incl. loads the bearing cannot carry
