@@ -477,9 +477,10 @@ def table(scores: list[Score]) -> str:
     """Markdown: level × family, RMS error and runtimes, then every case."""
     lines = ["| level | family | RMS rel. error | n | single [ms/pt] | batched [ms/pt] | note |",
              "|---|---|---|---|---|---|---|"]
+    ms = lambda t: f"{1e3 * t:.3g}" if math.isfinite(t) else "–"         # noqa: E731  (not timed: "–")
     for s in scores:
         lines.append(f"| {s.level} | {s.family} | {100 * s.rms:.1f} % | {len(s.errors)} | "
-                     f"{1e3 * s.t_single_s:.3g} | {1e3 * s.t_batch_s:.3g} | {s.note} |")
+                     f"{ms(s.t_single_s)} | {ms(s.t_batch_s)} | {s.note} |")
     fails = [(s.level, s.family, c, why) for s in scores for c, why in s.failed]
     if fails:
         lines += ["", "Failed (the level could not serve these cases; not scored):", ""]
