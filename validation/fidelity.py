@@ -473,14 +473,18 @@ def score_all(levels=LEVELS) -> list[Score]:
         return score_seed001(levels) + score_seed002(levels) + score_seed004(levels)
 
 
+def _ms(t: float) -> str:
+    """A time [s] in ms, or "–" for a level that is not timed (its row repeats another level's model)."""
+    return f"{1e3 * t:.3g}" if math.isfinite(t) else "–"
+
+
 def table(scores: list[Score]) -> str:
     """Markdown: level × family, RMS error and runtimes, then every case."""
     lines = ["| level | family | RMS rel. error | n | single [ms/pt] | batched [ms/pt] | note |",
              "|---|---|---|---|---|---|---|"]
-    ms = lambda t: f"{1e3 * t:.3g}" if math.isfinite(t) else "–"         # noqa: E731  (not timed: "–")
     for s in scores:
         lines.append(f"| {s.level} | {s.family} | {100 * s.rms:.1f} % | {len(s.errors)} | "
-                     f"{ms(s.t_single_s)} | {ms(s.t_batch_s)} | {s.note} |")
+                     f"{_ms(s.t_single_s)} | {_ms(s.t_batch_s)} | {s.note} |")
     fails = [(s.level, s.family, c, why) for s in scores for c, why in s.failed]
     if fails:
         lines += ["", "Failed (the level could not serve these cases; not scored):", ""]
