@@ -396,6 +396,25 @@ def test_step_schedule_not_smeared_and_report_recorded():
     assert np.allclose(r2.T_C["b"][3:], 20.0 + 10.0 * (1 - np.exp(-(t[3:] - t1) / tau)), rtol=1e-5)
 
 
+def test_continued_transient_follows_the_exact_exponential():
+    # a run continued in pieces (its integrator kept) is the one run: the exact RC heat-up, and a
+    # source stepping between the pieces (as film loads re-solved per piece do) is followed exactly
+    C, G, P, net = 500.0, 2.0, 80.0, rc_net(500.0, 2.0)
+    first = solve_transient(net, {"b": P}, 300.0, t_eval=[300.0])
+    second = solve_transient(net, {"b": P}, 700.0, t_eval=[350.0, 700.0], continue_from=first)
+    assert list(second.t) == [350.0, 700.0]
+    exact = 20.0 + P / G * (1 - np.exp(-G * (300.0 + second.t) / C))
+    assert np.allclose(second.T_C["b"], exact, rtol=1e-5)
+    third = solve_transient(net, {"b": 2 * P}, 1000.0, t_eval=[1000.0], continue_from=second)
+    T1 = exact[-1]
+    T_inf = 20.0 + 2 * P / G
+    assert third.T_C["b"][-1] == pytest.approx(T_inf + (T1 - T_inf) * np.exp(-G * 1000.0 / C), rel=1e-5)
+    with pytest.raises(InputError, match="T0_C"):
+        solve_transient(net, {"b": P}, 10.0, continue_from=third, T0_C=30.0)
+    with pytest.raises(InputError, match="continue_from"):
+        solve_transient(net, {"b": P}, 10.0, continue_from=object())
+
+
 def test_transient_needs_capacities():
     net = net_of({"a": {}, "amb": {"T_C": 20.0}}, [cond("a", "amb", 1.0)])
     with pytest.raises(InputError, match="nodes.a.C_J_K"):

@@ -9,7 +9,9 @@ temperatures, oil flow, lubricant): each segment gets its own loads, contacts an
 step may change boundary temperatures, convection and contact ellipses, not only the losses).
 With the film load model the loads depend on the film temperature: each segment is run in
 pieces, the loads re-solved at the start of each at its mean contact temperature, the pieces sized
-for ≈ 2 K of drift.
+for ≈ 2 K of drift; the integrator goes on from piece to piece (``continue_from`` of
+:func:`~thermobear.thermal.solve_transient`: its order, step size and Jacobian kept, the sources
+stepping a little at each piece's start) and starts afresh only at a schedule's step.
 
 A logged boundary (``boundary``: node → temperatures sampled at times, e.g. the room, an outer
 ring, the oil inlet as a rig logged them) imposes those nodes, linear between the samples
@@ -230,7 +232,7 @@ def _imposed(boundary, scene: Scene, t_end_s):
 def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None) -> TransientRun:
     T_state = scene.T_ambient_C if T0_C is None else T0_C
     out_t, out_T, out_rep, first, seg_changes, seen = [], {}, {}, None, {}, set()
-    film_dt, completed, i, plans, clear_hist = None, True, -1, {}, []
+    film_dt, completed, i, plans, clear_hist, prev = None, True, -1, {}, [], None
     with warnings.catch_warnings():
         # property calls at the integrator's trial states may lie beyond a correlation's data; the
         # validity of the states reported is checked once, on the series (limits.point_warnings)
@@ -253,13 +255,13 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
                 alts = _alternatives(sc_p, load)
             models = max(alts, key=lambda a: a.weight).models
             film = load is None and any(a.models["load_model"][0] == "film" for a in alts)
-            T_film = None
+            T_film, split = None, False
             if film or clear:
                 T_film = _film_of(T_state, first[1] if first else None, sc) if film else None
                 film_dt = min(_FILM_DT0_S, te - ts) if film_dt is None else film_dt
                 if ts + film_dt < te - 1e-9 * te:
                     pieces.insert(i + 1, (ts + film_dt, te, sc, last_seg))
-                    te, last_seg = ts + film_dt, False
+                    te, last_seg, split = ts + film_dt, False, True
             pm = _blended_point_model(sc_p, alts, T_film, load, pre if pre.serves(sc_p) else None)
             net, cp = pm.network, pm.coupling
             first = first or (models, cp.roles, list(net.nodes))
@@ -273,9 +275,10 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
             if t_eval is not None:   # points in [ts, te) belong to this segment (right-continuous at steps)
                 want = t_eval[(t_eval >= ts) & ((t_eval < te) | (last_seg & (t_eval <= te)))]
                 seg = np.union1d(want - ts, [te - ts])
-            tr = solve_transient(net, heat_sources(pm), te - ts, T0_C=_T0(T_state, net), t_eval=seg,
-                                 rtol=rtol, atol=atol, stop=stop,
+            tr = solve_transient(net, heat_sources(pm), te - ts, T0_C=None if prev else _T0(T_state, net), t_eval=seg,
+                                 rtol=rtol, atol=atol, stop=stop, continue_from=prev,
                                  fixed_C=None if boundary is None else boundary.shifted(ts))
+            prev = tr if split and tr.completed else None  # the next piece goes on with this one's integrator
             t_abs = np.asarray(tr.t) + ts
             keep = np.ones(t_abs.size, bool) if t_eval is None else np.isin(np.round(t_abs, 9), np.round(t_eval, 9))
             if not last_seg and tr.completed:

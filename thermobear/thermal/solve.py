@@ -15,7 +15,8 @@ a :class:`~thermobear.thermal.network.ThermalNetwork` is solved at once: stacked
   to machine precision (the flows use the conductances of the final solve).
 * :func:`solve_transient` — C_f dT_f/dt = P_f(t, T) − A_ff(T) T_f − A_fb(T) T_b(t), integrated
   with scipy's BDF and the block-diagonal Jacobian −C⁻¹ A_ff, restarted at every breakpoint so
-  that steps in the inputs are not smeared.
+  that steps in the inputs are not smeared; a run may continue another one's integration
+  (``continue_from``: sources changing a little between runs, the step history kept).
 * :func:`split_losses` — the bearing losses onto the nodes (½ of each contact loss to the ball,
   ½ to its race; drag to the oil–air mixture), energy conserved exactly.
 
@@ -266,6 +267,7 @@ class TransientResult:
     nfev : int           right-hand-side evaluations
     completed : bool     False when the run was interrupted (``t`` ends where it stopped)
     network : ThermalNetwork
+    integrator : object  the integrator at the run's end (``continue_from`` of a following run)
     """
 
     t: np.ndarray
@@ -275,6 +277,7 @@ class TransientResult:
     nfev: int
     completed: bool = True
     network: ThermalNetwork = field(default=None, repr=False)
+    integrator: object = field(default=None, repr=False)
 
 
 @dataclass(frozen=True)
@@ -333,7 +336,8 @@ def _start(net, T0_C, bnd=None):
 
 def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_C=None, breakpoints=(),
                     fixed_C: Callable | None = None, t_eval=None, rtol: float = 1e-8, atol: float = 1e-8,
-                    method: str = "BDF", max_step: float = np.inf, stop: Callable | None = None) -> TransientResult:
+                    method: str = "BDF", max_step: float = np.inf, stop: Callable | None = None,
+                    continue_from: TransientResult | None = None) -> TransientResult:
     r"""Transient temperatures of a thermal network at its operating points.
 
     Parameters
@@ -361,6 +365,13 @@ def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_
     method : str                ``"BDF"`` or ``"Radau"``
     stop : callable             optional ``stop() -> bool`` checked between steps: True ends the run
                                 early, keeping what was integrated (``completed`` False)
+    continue_from : TransientResult
+                                a completed run this one continues: from its end state (``T0_C``
+                                None), its clock starting at 0 there, the integrator keeping its step
+                                history (order, step size, Jacobian) instead of starting afresh — for
+                                sources that change a little between runs (the film pieces of
+                                :func:`thermobear.coupled.transient`); same nodes and points.  The
+                                integrator's settings (method, tolerances, max_step) are the first run's
 
     Returns
     -------
@@ -400,10 +411,16 @@ def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_
     bnd = _Boundary.of(net, fixed_C)
     T = _start(net, T0_C, bnd)
     t_eval = None if t_eval is None else np.asarray(t_eval, dtype=float)
-    nfev, pieces, completed = [0], [], True
+    pieces, completed = [], True
     y = T[:, free].ravel()
+    if continue_from is None:
+        integ = _Integrator(method, rtol, atol, max_step)
+    else:
+        integ = _continued(continue_from, net, T0_C, B, nf)
+        y = integ.solver.y.copy()
+    nfev0 = integ.nfev
     for a, b in zip(edges[:-1], edges[1:]):
-        sol, ok = _segment(net, sources, C, bnd, a, b, y, t_eval, nfev, rtol, atol, method, max_step, stop)
+        sol, ok = integ.segment(net, sources, C, bnd, a, b, y, t_eval, stop, fresh=not (a == 0.0 and continue_from))
         y = sol.y[:, -1].copy()
         pieces.append((sol, a, b))
         if not ok:
@@ -413,64 +430,103 @@ def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_
     P, report = sources(t_all, T_all) if t_all.size else (None, {})
     squeeze = (lambda v: v[:, 0] if B == 1 else v)  # noqa: E731
     return TransientResult(t=t_all, T_K=T_all, T_C={n: squeeze(T_all[..., k] - _C0) for k, n in enumerate(net.nodes)},
-                           report={k: squeeze(np.asarray(v, float)) for k, v in report.items()}, nfev=nfev[0],
-                           completed=completed, network=net)
+                           report={k: squeeze(np.asarray(v, float)) for k, v in report.items()},
+                           nfev=integ.nfev - nfev0, completed=completed, network=net, integrator=integ)
 
 
-def _segment(net, sources, C, bnd, a, b, y0, t_eval, nfev, rtol, atol, method, max_step, stop):
-    """One segment [a, b] of a transient: (solution, finished)."""
-    free, fixed = ~net.fixed, net.fixed
-    B, nf = net.B, C.shape[-1]
-    t_hi = np.nextafter(b, a)             # inputs of [a, b): the step at b belongs to the next segment
-    Tfull = bnd.T_K(a)
-    Cb = np.broadcast_to(C, (B, nf))
-    Cinv = (1.0 / Cb).ravel()
-    varying = bnd.fixed_C is not None
+def _continued(run, net, T0_C, B, nf):
+    """The integrator of a completed run, checked to continue on ``net``."""
+    integ = getattr(run, "integrator", None)
+    if integ is None or integ.solver is None or not run.completed:
+        raise InputError("continue_from", type(run).__name__, "a completed TransientResult of solve_transient")
+    if T0_C is not None:
+        raise InputError("T0_C", T0_C, "a continued run starts from the state its predecessor ended in (T0_C None)")
+    if (B, nf) != (integ.B, integ.nf) or list(net.nodes) != list(integ.net.nodes):
+        raise InputError("continue_from", net.name, "the same nodes and operating points as the run it continues")
+    return integ
 
-    def rhs(t, yf):
-        nfev[0] += 1
-        tc = min(max(t, a), t_hi)
-        Tfull[:, free] = yf.reshape(B, nf)
-        if varying:
-            Tfull[:, bnd.index] = bnd.values_K(tc)
-        Aff, Afb = net.blocks(net.conductances(Tfull))
-        P, _ = sources(tc, Tfull)
-        q = (P[:, free] - np.einsum("bij,bj->bi", Aff, Tfull[:, free]) - np.einsum("bij,bj->bi", Afb, Tfull[:, fixed]))
-        return q.ravel() * Cinv
 
-    def jac(t, yf):
-        Tfull[:, free] = yf.reshape(B, nf)
-        if varying:
-            Tfull[:, bnd.index] = bnd.values_K(min(max(t, a), t_hi))
-        Aff, _ = net.blocks(net.conductances(Tfull))
-        Jb = -Aff / Cb[:, :, None]
-        return Jb[0] if B == 1 else sp.block_diag(list(Jb), format="csc")
+class _Integrator:
+    """The stiff integrator of a transient and the problem it integrates now.
 
-    te = None if t_eval is None else np.union1d(t_eval[(t_eval >= a) & (t_eval <= b)], [b])
-    solver = _METHODS[method](rhs, a, y0, b, jac=jac, rtol=rtol, atol=atol, max_step=max_step)
-    ts, ys = [a], [np.asarray(y0, float).copy()]
-    k = 1 if te is not None and te.size and te[0] == a else 0      # the next requested time to report
-    while solver.status == "running":
-        if stop is not None and stop():           # stopped by the caller: keep what was integrated
-            return _Segment(np.array(ts), np.array(ys).T), False
-        t_old = solver.t
-        msg = solver.step()
-        if solver.status == "failed":
-            raise NoConvergence(f"transient integration failed at t = {solver.t:.6g} s (segment {a:g}–{b:g} s): "
-                                f"{msg}", iterations=solver.nfev, last=solver.y)
-        if te is None:
-            ts.append(solver.t)
-            ys.append(solver.y.copy())
-            continue
-        hi = np.searchsorted(te, solver.t, side="right")
-        if hi > k:                                # requested times inside the step: dense output
-            dense = solver.dense_output()
-            for t in te[k:hi]:
-                ts.append(float(t))
-                ys.append(solver.y.copy() if t == solver.t else dense(t))
-            k = hi
-        del t_old
-    return _Segment(np.array(ts), np.array(ys).T), True
+    The problem (network, sources, capacities, boundary, the segment [a, b) on its run's clock) can be
+    replaced while the integrator keeps its step history (order, step size, Jacobian): a run that
+    continues another (``solve_transient(..., continue_from=...)``) goes on from the same state with
+    the same integrator, its clock starting at the integrator's time ``offset``.  A fresh segment (a
+    breakpoint, a new run) starts a new integrator."""
+
+    def __init__(self, method, rtol, atol, max_step):
+        self.method, self.rtol, self.atol, self.max_step = method, rtol, atol, max_step
+        self.solver, self.nfev = None, 0
+
+    def _set(self, net, sources, C, bnd, a, b, offset):
+        self.net, self.sources, self.bnd, self.a, self.b, self.offset = net, sources, bnd, a, b, offset
+        self.free, self.fixed = ~net.fixed, net.fixed
+        self.B, self.nf = net.B, C.shape[-1]
+        self.t_hi = np.nextafter(b, a)      # inputs of [a, b): the step at b belongs to the next segment
+        self.Tfull = bnd.T_K(a)
+        self.Cb = np.broadcast_to(C, (self.B, self.nf))
+        self.Cinv = (1.0 / self.Cb).ravel()
+
+    def _state(self, tau, yf):
+        """Node temperatures (B, n) [K] at integrator time tau, free nodes from yf; the run's time."""
+        t = min(max(tau - self.offset, self.a), self.t_hi)
+        self.Tfull[:, self.free] = yf.reshape(self.B, self.nf)
+        if self.bnd.fixed_C is not None:
+            self.Tfull[:, self.bnd.index] = self.bnd.values_K(t)
+        return t, self.Tfull
+
+    def rhs(self, tau, yf):
+        self.nfev += 1
+        t, T = self._state(tau, yf)
+        Aff, Afb = self.net.blocks(self.net.conductances(T))
+        P, _ = self.sources(t, T)
+        q = (P[:, self.free] - np.einsum("bij,bj->bi", Aff, T[:, self.free])
+             - np.einsum("bij,bj->bi", Afb, T[:, self.fixed]))
+        return q.ravel() * self.Cinv
+
+    def jac(self, tau, yf):
+        _, T = self._state(tau, yf)
+        Aff, _ = self.net.blocks(self.net.conductances(T))
+        Jb = -Aff / self.Cb[:, :, None]
+        return Jb[0] if self.B == 1 else sp.block_diag(list(Jb), format="csc")
+
+    def segment(self, net, sources, C, bnd, a, b, y0, t_eval, stop, fresh=True):
+        """Integrate [a, b] of a run: (solution, finished).  ``fresh`` False: continue the integrator from
+        its last state (``y0`` is that state) with this problem, its clock going on."""
+        if fresh or self.solver is None:
+            self._set(net, sources, C, bnd, a, b, 0.0)
+            self.solver = _METHODS[self.method](self.rhs, a, y0, b, jac=self.jac, rtol=self.rtol, atol=self.atol,
+                                                max_step=self.max_step)
+        else:
+            self._set(net, sources, C, bnd, a, b, self.solver.t - a)
+            # the bound of the integration moved on: the one change of scipy's OdeSolver state a
+            # continuation needs (history, step size and Jacobian are kept)
+            self.solver.t_bound, self.solver.status = self.offset + b, "running"
+        solver = self.solver
+        te = None if t_eval is None else np.union1d(t_eval[(t_eval >= a) & (t_eval <= b)], [b])
+        ts, ys = [a], [np.asarray(y0, float).copy()]
+        k = 1 if te is not None and te.size and te[0] == a else 0      # the next requested time to report
+        while solver.status == "running":
+            if stop is not None and stop():           # stopped by the caller: keep what was integrated
+                return _Segment(np.array(ts), np.array(ys).T), False
+            msg = solver.step()
+            if solver.status == "failed":
+                raise NoConvergence(f"transient integration failed at t = {solver.t - self.offset:.6g} s (segment "
+                                    f"{a:g}–{b:g} s): {msg}", iterations=solver.nfev, last=solver.y)
+            t_now = b if solver.status == "finished" else solver.t - self.offset
+            if te is None:
+                ts.append(t_now)
+                ys.append(solver.y.copy())
+                continue
+            hi = np.searchsorted(te, t_now, side="right")
+            if hi > k:                                # requested times inside the step: dense output
+                dense = solver.dense_output()
+                for t in te[k:hi]:
+                    ts.append(float(t))
+                    ys.append(solver.y.copy() if t == t_now else dense(t + self.offset))
+                k = hi
+        return _Segment(np.array(ts), np.array(ys).T), True
 
 
 @dataclass(frozen=True)
