@@ -232,7 +232,7 @@ def _imposed(boundary, scene: Scene, t_end_s):
 def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None) -> TransientRun:
     T_state = scene.T_ambient_C if T0_C is None else T0_C
     out_t, out_T, out_rep, first, seg_changes, seen = [], {}, {}, None, {}, set()
-    film_dt, completed, i, plans, clear_hist, prev = None, True, -1, {}, [], None
+    film_dt, completed, i, plans, clear_hist, prev, kept = None, True, -1, {}, [], None, (None, None)
     with warnings.catch_warnings():
         # property calls at the integrator's trial states may lie beyond a correlation's data; the
         # validity of the states reported is checked once, on the series (limits.point_warnings)
@@ -262,7 +262,9 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
                 if ts + film_dt < te - 1e-9 * te:
                     pieces.insert(i + 1, (ts + film_dt, te, sc, last_seg))
                     te, last_seg, split = ts + film_dt, False, True
-            pm = _blended_point_model(sc_p, alts, T_film, load, pre if pre.serves(sc_p) else None)
+            pm = _blended_point_model(sc_p, alts, T_film, load, pre if pre.serves(sc_p) else None,
+                                      dominant=kept[1] if kept[0] is sc_p else None)
+            kept = (sc_p, pm) if _dominant_kept(alts) else (None, None)
             net, cp = pm.network, pm.coupling
             first = first or (models, cp.roles, list(net.nodes))
             changed = {k: v for k, v in models.items() if first[0].get(k, (None,))[0] != v[0]}
@@ -323,11 +325,20 @@ def _alternatives(sc: Scene, load) -> list:
     return alts
 
 
-def _blended_point_model(sc: Scene, alts, T_film, load, prepared) -> PointModel:
+def _dominant_kept(alts) -> bool:
+    """True when the network of a blended piece (its dominant alternative's) does not depend on the film
+    temperature: local losses across a switch band, the dominant's loads not of the film load model."""
+    if len(alts) == 1 or alts[0].models["losses"][0] != "local":
+        return False
+    return max(alts, key=lambda a: a.weight).models["load_model"][0] != "film"
+
+
+def _blended_point_model(sc: Scene, alts, T_film, load, prepared, dominant=None) -> PointModel:
     """The point model of a piece: across a switch band its heat sources are the weighted losses of
     the alternatives, evaluated as stacked points of one batch
     (:class:`~thermobear.coupled.blend.StackedBlend`) on the network of the dominant one, so that a
-    heat-up ends at the blended steady state."""
+    heat-up ends at the blended steady state.  ``dominant``: the point model of an earlier piece of
+    the same scene whose family, network and coupling serve (:func:`_dominant_kept`)."""
     if len(alts) == 1:
         a = alts[0]
         return point_model(sc, a.models, T_film_C=T_film, load=load, prepared=prepared, dry=a.dry)
@@ -338,7 +349,7 @@ def _blended_point_model(sc: Scene, alts, T_film, load, prepared) -> PointModel:
     dom = alts[k_dom]
     loads = [take(family_loads(Family(scenes=(sc,), index=(0,), models=a.models, dry=(a.dry,)),
                                [T_film] if a.models["load_model"][0] == "film" else None), 0, 1) for a in alts]
-    pm = point_model(sc, dom.models, load=loads[k_dom], prepared=prepared)
+    pm = dominant or point_model(sc, dom.models, load=loads[k_dom], prepared=prepared)
     K = len(alts)
     fam = Family(scenes=(sc,) * K, index=tuple(range(K)), models=dom.models, dry=(None,) * K)
     m = dom.models
