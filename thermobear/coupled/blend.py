@@ -151,6 +151,11 @@ class StackedBlend:
         """Weighted loss parts (..., n_parts) [W] at coupled temperatures (..., n_x) [°C]."""
         return np.einsum("k,...kp->...p", self.w, self.source.parts(self._stack(x_C)))
 
+    def parts_of(self, r, shape):
+        """The weighted loss parts (``shape`` + (n_parts,)) [W] of a result of :meth:`result` (the parts
+        are linear in the powers it weights)."""
+        return self.source.parts_of(r, shape)
+
     def result(self, x_C):
         """The alternatives' results with power, torque, breakdown and contact powers weighted (the
         per-contact arrays keep the alternatives' axis)."""

@@ -134,18 +134,19 @@ def heat_sources(pm: PointModel):
         x = T_K[..., free] @ cp.C.T - _C0
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", ExtrapolationWarning)
-            parts = src.parts(x)
-            rep = _report(src, x) if np.ndim(t) else {}
+            if np.ndim(t):                          # the output pass: parts and report of one evaluation
+                r = src.result(x)
+                parts, rep = src.parts_of(r, x.shape[:-1]), _report(r, x.shape[:-1])
+            else:
+                parts, rep = src.parts(x), {}
         P = np.zeros(T_K.shape)
         P[..., free] = parts @ cp.S.T
         return P, rep
     return sources
 
 
-def _report(src, x):
-    """P_W and P_<loss family> [W] at coupled temperatures x (..., B, 3) (one evaluation)."""
-    r = src.result(x)
-    shape = x.shape[:-1]
+def _report(r, shape):
+    """P_W and P_<loss family> [W] (``shape``) of a loss result."""
     return {"P_W": np.broadcast_to(np.asarray(r.P_W, float), shape),
             **{f"P_{n}": np.broadcast_to(np.asarray(v, float), shape) for n, v in r.breakdown_W.items()}}
 

@@ -491,18 +491,33 @@ class _Integrator:
         Jb = -Aff / self.Cb[:, :, None]
         return Jb[0] if self.B == 1 else sp.block_diag(list(Jb), format="csc")
 
+    def _kink_within_tolerance(self, net, sources, C, bnd, a, b) -> bool:
+        r"""Set the new problem; True when the step in dT/dt it makes at the integrator's state is
+        small enough to continue: a multistep method whose history predates a kink Δf in the
+        derivative makes an error of order h Δf in its next step h, kept within the tolerances'
+        scale (the integrator's RMS error norm),
+
+        .. math:: h \left\| \frac{f_{new}(y) - f_{old}(y)}{atol + rtol |y|} \right\|_{rms} \le 1,
+
+        else the integration restarts there (order 1, history discarded), as at a breakpoint."""
+        sv = self.solver
+        f_old = self.rhs(sv.t, sv.y)
+        self._set(net, sources, C, bnd, a, b, sv.t - a)
+        f_new = self.rhs(sv.t, sv.y)
+        scale = self.atol + self.rtol * np.abs(sv.y)
+        return sv.step_size * np.linalg.norm((f_new - f_old) / scale) / math.sqrt(scale.size) <= 1.0
+
     def segment(self, net, sources, C, bnd, a, b, y0, t_eval, stop, fresh=True):
         """Integrate [a, b] of a run: (solution, finished).  ``fresh`` False: continue the integrator from
         its last state (``y0`` is that state) with this problem, its clock going on."""
-        if fresh or self.solver is None:
-            self._set(net, sources, C, bnd, a, b, 0.0)
-            self.solver = _METHODS[self.method](self.rhs, a, y0, b, jac=self.jac, rtol=self.rtol, atol=self.atol,
-                                                max_step=self.max_step)
-        else:
-            self._set(net, sources, C, bnd, a, b, self.solver.t - a)
+        if not (fresh or self.solver is None) and self._kink_within_tolerance(net, sources, C, bnd, a, b):
             # the bound of the integration moved on: the one change of scipy's OdeSolver state a
             # continuation needs (history, step size and Jacobian are kept)
             self.solver.t_bound, self.solver.status = self.offset + b, "running"
+        else:
+            self._set(net, sources, C, bnd, a, b, 0.0)
+            self.solver = _METHODS[self.method](self.rhs, a, y0, b, jac=self.jac, rtol=self.rtol, atol=self.atol,
+                                                max_step=self.max_step)
         solver = self.solver
         te = None if t_eval is None else np.union1d(t_eval[(t_eval >= a) & (t_eval <= b)], [b])
         ts, ys = [a], [np.asarray(y0, float).copy()]
