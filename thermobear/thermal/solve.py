@@ -36,10 +36,12 @@ from typing import Callable
 
 import numpy as np
 import scipy.sparse as sp
-from scipy.integrate import BDF, Radau
 
 from thermobear.errors import InputError, NoConvergence
+from thermobear.lazy import lazy_module
 from thermobear.thermal.network import ThermalNetwork
+
+integrate = lazy_module("scipy.integrate")  # BDF, Radau: loaded by the first transient
 
 __all__ = ["SteadyResult", "TransientResult", "solve_steady", "solve_linear", "solve_transient", "split_losses",
            "sources_matrix", "batched_solve", "heat_out", "heat_paths", "LinearBoundary"]
@@ -516,7 +518,7 @@ class _Integrator:
             self.solver.t_bound, self.solver.status = self.offset + b, "running"
         else:
             self._set(net, sources, C, bnd, a, b, 0.0)
-            self.solver = _METHODS[self.method](self.rhs, a, y0, b, jac=self.jac, rtol=self.rtol, atol=self.atol,
+            self.solver = getattr(integrate, self.method)(self.rhs, a, y0, b, jac=self.jac, rtol=self.rtol, atol=self.atol,
                                                 max_step=self.max_step)
         solver = self.solver
         te = None if t_eval is None else np.union1d(t_eval[(t_eval >= a) & (t_eval <= b)], [b])
@@ -606,9 +608,6 @@ class _Segment:
 
     t: np.ndarray
     y: np.ndarray
-
-
-_METHODS = {"BDF": BDF, "Radau": Radau}
 
 
 def _collect(pieces, net, t_eval, B, nf, bnd):
