@@ -413,6 +413,8 @@ def test_continued_transient_follows_the_exact_exponential():
         solve_transient(net, {"b": P}, 10.0, continue_from=third, T0_C=30.0)
     with pytest.raises(InputError, match="continue_from"):
         solve_transient(net, {"b": P}, 10.0, continue_from=object())
+    with pytest.raises(InputError, match="continued once"):               # its integrator has gone on since
+        solve_transient(net, {"b": P}, 10.0, continue_from=first)
 
 
 def test_transient_needs_capacities():

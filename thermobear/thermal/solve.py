@@ -431,9 +431,10 @@ def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_
     t_all, T_all = _collect(pieces, net, t_eval, B, nf, bnd)
     P, report = sources(t_all, T_all) if t_all.size else (None, {})
     squeeze = (lambda v: v[:, 0] if B == 1 else v)  # noqa: E731
-    return TransientResult(t=t_all, T_K=T_all, T_C={n: squeeze(T_all[..., k] - _C0) for k, n in enumerate(net.nodes)},
-                           report={k: squeeze(np.asarray(v, float)) for k, v in report.items()},
-                           nfev=integ.nfev - nfev0, completed=completed, network=net, integrator=integ)
+    integ.last = TransientResult(t=t_all, T_K=T_all, T_C={n: squeeze(T_all[..., k] - _C0) for k, n in enumerate(net.nodes)},
+                                 report={k: squeeze(np.asarray(v, float)) for k, v in report.items()},
+                                 nfev=integ.nfev - nfev0, completed=completed, network=net, integrator=integ)
+    return integ.last
 
 
 def _continued(run, net, T0_C, B, nf):
@@ -441,6 +442,8 @@ def _continued(run, net, T0_C, B, nf):
     integ = getattr(run, "integrator", None)
     if integ is None or integ.solver is None or not run.completed:
         raise InputError("continue_from", type(run).__name__, "a completed TransientResult of solve_transient")
+    if integ.last is not run:
+        raise InputError("continue_from", "TransientResult", "the latest run of its integrator (a run is continued once)")
     if T0_C is not None:
         raise InputError("T0_C", T0_C, "a continued run starts from the state its predecessor ended in (T0_C None)")
     if (B, nf) != (integ.B, integ.nf) or list(net.nodes) != list(integ.net.nodes):
@@ -459,7 +462,7 @@ class _Integrator:
 
     def __init__(self, method, rtol, atol, max_step):
         self.method, self.rtol, self.atol, self.max_step = method, rtol, atol, max_step
-        self.solver, self.nfev = None, 0
+        self.solver, self.nfev, self.last = None, 0, None
 
     def _set(self, net, sources, C, bnd, a, b, offset):
         self.net, self.sources, self.bnd, self.a, self.b, self.offset = net, sources, bnd, a, b, offset
