@@ -415,6 +415,8 @@ def test_continued_transient_follows_the_exact_exponential():
         solve_transient(net, {"b": P}, 10.0, continue_from=object())
     with pytest.raises(InputError, match="continued once"):               # its integrator has gone on since
         solve_transient(net, {"b": P}, 10.0, continue_from=first)
+    with pytest.raises(InputError, match="rtol"):
+        solve_transient(net, {"b": P}, 10.0, continue_from=third, rtol=1e-6)
 
 
 def test_transient_needs_capacities():

@@ -372,8 +372,8 @@ def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_
                                 None), its clock starting at 0 there, the integrator keeping its step
                                 history (order, step size, Jacobian) instead of starting afresh — for
                                 sources that change a little between runs (the film pieces of
-                                :func:`thermobear.coupled.transient`); same nodes and points.  The
-                                integrator's settings (method, tolerances, max_step) are the first run's
+                                :func:`thermobear.coupled.transient`); same nodes, points, method,
+                                tolerances and max_step
 
     Returns
     -------
@@ -418,7 +418,7 @@ def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_
     if continue_from is None:
         integ = _Integrator(method, rtol, atol, max_step)
     else:
-        integ = _continued(continue_from, net, T0_C, B, nf)
+        integ = _continued(continue_from, net, T0_C, B, nf, (method, rtol, atol, max_step))
         y = integ.solver.y.copy()
     nfev0 = integ.nfev
     for a, b in zip(edges[:-1], edges[1:]):
@@ -437,8 +437,9 @@ def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_
     return integ.last
 
 
-def _continued(run, net, T0_C, B, nf):
-    """The integrator of a completed run, checked to continue on ``net``."""
+def _continued(run, net, T0_C, B, nf, settings):
+    """The integrator of a completed run, checked to continue on ``net`` with the same ``settings``
+    (method, rtol, atol, max_step)."""
     integ = getattr(run, "integrator", None)
     if integ is None or integ.solver is None or not run.completed:
         raise InputError("continue_from", type(run).__name__, "a completed TransientResult of solve_transient")
@@ -448,6 +449,9 @@ def _continued(run, net, T0_C, B, nf):
         raise InputError("T0_C", T0_C, "a continued run starts from the state its predecessor ended in (T0_C None)")
     if (B, nf) != (integ.B, integ.nf) or list(net.nodes) != list(integ.net.nodes):
         raise InputError("continue_from", net.name, "the same nodes and operating points as the run it continues")
+    if settings != (integ.method, integ.rtol, integ.atol, integ.max_step):
+        raise InputError("continue_from", settings, f"the integrator's method, rtol, atol and max_step "
+                         f"{(integ.method, integ.rtol, integ.atol, integ.max_step)}")
     return integ
 
 
