@@ -26,16 +26,17 @@ from __future__ import annotations
 import math
 
 from thermobear.contact.materials import material
+from thermobear.thermal.builders import estimates
 from thermobear.thermal.builders.axisym import Body
 from thermobear.thermal.builders.layout import Layout
 from thermobear.thermal.builders.machine import Machine
 from thermobear.thermal.builders.spec import NetworkSpec
 
-__all__ = ["add_rings", "add_thrust_washers", "add_seats", "add_closures", "add_cage", "free_volume",
-           "ring_fill", "K_NBR_W_MK"]
+__all__ = ["add_rings", "add_thrust_washers", "add_seats", "add_closures", "add_cage", "free_volume"]
 
-ring_fill = 0.8          #: share of a ring's annulus that is steel (groove, chamfers), estimated as the hand network
-K_NBR_W_MK = 0.25        #: nitrile rubber (NBR) conductivity, 0.2–0.3 W/(m K) (estimated)
+# estimated (materials/network_builders.toml, with their ranges): ring_fill, the share of a ring's annulus
+# that is steel (groove, chamfers; as the hand network); k_seal_W_mK, nitrile rubber (NBR) 0.2–0.3 W/(m K);
+# cage_film_m, the pocket film
 K_AIR_W_MK = 0.028       #: air at ≈ 50 °C (materials/air_1atm.toml)
 _I, _O, _C, _W = "op.omega_inner_rad_s", "op.omega_outer_rad_s", "op.omega_cage_rad_s", "op.omega_ball_rad_s"
 
@@ -72,6 +73,7 @@ def _mixture_links(spec, lay, links, fluid, sump):
 def add_rings(spec: NetworkSpec, m: Machine, lay: Layout, fluid: dict, sump=None) -> None:
     """Rings, balls and the mixture of a radial bearing (nodes and their elements)."""
     d, D, dm, OD, B = lay.bore, lay.D, lay.dm, lay.OD, lay.B
+    ring_fill = estimates.value(m, "ring_fill")
     v_in = 0.5 * ring_fill * math.pi / 4 * ((dm - D) ** 2 - d**2) * B
     v_out = 0.5 * ring_fill * math.pi / 4 * (OD**2 - (dm + D) ** 2) * B
     est = ["volume_m3"]
@@ -108,7 +110,7 @@ def add_rings(spec: NetworkSpec, m: Machine, lay: Layout, fluid: dict, sump=None
 def add_thrust_washers(spec: NetworkSpec, m: Machine, lay: Layout, fluid: dict, sump=None) -> None:
     """Washers and balls of a thrust bearing (the seed-002 hand network's model)."""
     d, D, dm, OD, H = lay.bore, lay.D, lay.dm, lay.OD, lay.B
-    v = ring_fill * math.pi / 4 * (OD**2 - d**2) * 0.3 * H
+    v = estimates.value(m, "ring_fill") * math.pi / 4 * (OD**2 - d**2) * 0.3 * H
     for node in ("shaft_washer", "housing_washer"):
         spec.node(node, volume_m3=v, material="bearing.ring_material", estimated=["volume_m3"],
                   description=f"{node.replace('_', ' ')}: 0.3 × the bearing's height thick, 0.8 for the groove")
@@ -180,8 +182,9 @@ def add_closures(spec: NetworkSpec, m: Machine, lay: Layout) -> str:
                      A_m2=A_lip, length_m=band, estimated=["A_m2", "length_m"],
                      description="lip band 0.5 mm wide on each shoulder; the heat enters the ring over a depth "
                                  "of the band's width")
-        spec.element("seal--outer_ring", "shell", ("seal", "outer_ring"), k_W_mK=K_NBR_W_MK, r1_m=d_sh / 2,
-                     r2_m=d_or / 2, L_m=2 * 2e-3, estimated=["k_W_mK", "L_m"],
+        spec.element("seal--outer_ring", "shell", ("seal", "outer_ring"), k_W_mK=estimates.value(m, "k_seal_W_mK"),
+                     r1_m=d_sh / 2, r2_m=d_or / 2, L_m=2 * 2e-3, estimated=["k_W_mK", "L_m"],
+                     uncertainty=estimates.point_uncertainty("k_seal_W_mK"),
                      description="through the seals' rubber (2 seals, 2 mm thick) to the outer ring's groove")
         spec.element("seal--oil_air", "convection", ("seal", "oil_air"), correlation="flat_plate_laminar",
                      fluid="air", u_m_s=f"abs({_I} - {_C}) * {d_sh / 2!r}", x_m=(d_or - d_sh) / 2,
@@ -215,6 +218,7 @@ def add_cage(spec: NetworkSpec, m: Machine, lay: Layout) -> None:
     spec.element("cage--oil_air", "convection", ("cage", "oil_air"), correlation="flat_plate_laminar", fluid="air",
                  u_m_s=f"abs({_C}) * {lay.dm / 2!r}", x_m=lay.B, A_m2=A, estimated=["A_m2"],
                  description="both faces of the cage in the mixture at the cage's pitch speed")
+    film = estimates.value(m, "cage_film_m")
     spec.element("cage--balls", "planar", ("cage", "balls"), k_W_mK=0.13, A_m2=lay.Z * math.pi * (0.2 * lay.D) ** 2,
-                 length_m=20e-6, estimated=["k_W_mK", "A_m2", "length_m"],
-                 description="pocket contacts through a 20 µm oil film over a spot of 0.2 D radius per ball")
+                 length_m=film, estimated=["k_W_mK", "A_m2", "length_m"], uncertainty=estimates.point_uncertainty("cage_film_m"),
+                 description=f"pocket contacts through a {film * 1e6:.3g} µm oil film over a spot of 0.2 D radius per ball")
