@@ -89,11 +89,13 @@ def value(m, key: str) -> float:
     return dict(m.estimates).get(key, values()[key]) if m is not None else values()[key]
 
 
-def drawn(m, draws: dict):
+def drawn(m, draws: dict, cells: dict | None = None):
     """A machine with drawn family-level estimates (key → value): the housing's emissivity and the
     grease fill go to their fields, the mounting joint to ``mounting_h_W_m2K``, the constants to
-    ``estimates``."""
+    ``estimates``; ``cells`` (segment label → count, a nominal build's) holds its discretisation."""
     m = replace(m, estimates=tuple(sorted({**dict(m.estimates), **draws}.items())))
+    if cells:
+        m = replace(m, cells=tuple(sorted(cells.items())))
     if "emissivity" in draws:
         m = replace(m, housing=replace(m.housing, emissivity=float(draws["emissivity"])))
     if "grease_fill" in draws:

@@ -148,7 +148,9 @@ class Machine:
     discretisation rule's resolved time (None: steady state only) and cell Biot number;  cage: a cage node;  name, description,
     source, notes: of the network table;  estimates: drawn values of the builders' estimated constants,
     ``((key, value), ...)`` sorted (:func:`thermobear.thermal.builders.estimates.drawn`; empty: the data's,
-    ``materials/network_builders.toml``).
+    ``materials/network_builders.toml``);  cells: cell counts held per piece, ``((segment label, n), ...)``
+    (the labels of :attr:`~thermobear.thermal.builders.BuiltNetwork.segments`; empty: the rule's counts)
+    — a drawn machine keeps its nominal's cells, hence its nodes.
     """
 
     bearing: BallBearing
@@ -168,6 +170,7 @@ class Machine:
     source: str = ""
     notes: str = ""
     estimates: tuple = ()
+    cells: tuple = ()
 
     def __str__(self) -> str:
         return self.name
