@@ -130,3 +130,15 @@ def test_band_of_a_built_network_widens_with_the_builder_estimates(jet):
     col = [k for k, i in enumerate(r1.inputs) if i.address == "builder.R_mount_m2K_W"][0]
     x, y = r1.X[:, col], r1.outputs[key]
     assert np.corrcoef(x, y)[0, 1] > 0.5
+
+
+def test_housing_temperature_follows_the_mounting_joint_and_emissivity(jet):
+    """Deterministic trends of two family draws: a more resistive mounting joint and a duller housing
+    (lower emissivity) leave the housing warmer (its heat leaves through the frame and to the room)."""
+    T = {}
+    for label, draws in (("nominal", {}), ("resistive", {"R_mount_m2K_W": 3 * 2.75e-4}),
+                         ("dull", {"emissivity": 0.6}), ("bright", {"emissivity": 0.95})):
+        sc = dataclasses.replace(jet, network=estimates.drawn(jet.network, draws)) if draws else jet
+        T[label] = tb.steady_state(sc).T_C["housing"]
+    assert T["resistive"] > T["nominal"] + 0.5
+    assert T["dull"] > T["nominal"] > T["bright"]

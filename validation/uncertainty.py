@@ -204,8 +204,10 @@ def main() -> int:
     L = built(L)
     L += ["", "Moves are linear extrapolations of the regression slope (per draw unit: × for a factor, K for an "
           "offset, the key's unit for a range). Far outside an input's range (an osculation below 0.5, a ball "
-          "that no longer fits) they only say that this input alone cannot close the gap. Bearing-geometry "
-          "inputs are drawn at 8 levels (one family each): their slopes rest on 8 geometries. The support "
+          "that no longer fits) they only say that this input alone cannot close the gap. Family-level "
+          "inputs (the bearing's geometry; a built network's builder estimates) are drawn at 8 levels, or two more "
+          "than their number (16 for the built scenes), one family each: their slopes rest on that many draws, and "
+          "a small effect among them (the emissivity beside the mounting joint) is not resolved in the ranking. The support "
           "block's offset is held from t = 0 in the heat-up (an upper bound on its effect, as in "
           "seed004_support_heat.md)."]
     L += ["", f"Run time {time.perf_counter() - t0:.0f} s."]
