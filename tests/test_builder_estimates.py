@@ -142,3 +142,52 @@ def test_housing_temperature_follows_the_mounting_joint_and_emissivity(jet):
         T[label] = tb.steady_state(sc).T_C["housing"]
     assert T["resistive"] > T["nominal"] + 0.5
     assert T["dull"] > T["nominal"] > T["bright"]
+
+
+#: estimated values of a built network ranged by a family draw: (name pattern, key) → the builder key
+_BY_FAMILY = {(r"(inner|outer)_(ring|race)|(shaft|housing)_washer", "volume_m3"): "ring_fill",
+              (r".*--oil_air_conduction", "k_W_mK"): "k_air_still_W_mK",
+              (r".*_(fit|face)", "G_W_K"): "H_micro_Pa",
+              (r".*--ambient_radiation.*|.*--ambient_.*radiation.*", "emissivity"): "emissivity",
+              (r".*--housing_foot", "G_W_K"): "web_fraction",
+              (r"oil_air", "C_J_K"): ("oil_held", "grease_fill"),
+              (r".*--oil_air_grease", "A_m2"): "grease_fill"}
+#: estimated values left without a range, and why
+_EXEMPT = {(r".*_contacts", "Q_fallback_N"): "used only when the mechanics gives no contacts (the solvers give them)",
+           (r"seal--inner_ring", "length_m"): "the lip band's G = k A / L: its one factor is on A_m2",
+           (r"cage--balls", "k_W_mK"): "the pocket oil's conductivity (0.11-0.15): the film's and spot's ranges cover it",
+           (r"cage", "material"): "not a number",
+           (r"housing_foot", "volume_m3"): "the foot's size follows the housing's dimensions (the scene's or the defaults)",
+           (r".*--oil_air_grease", "length_m"): "half the raceway gap: the bearing's geometry"}
+
+
+@pytest.mark.parametrize("variant", ["jet_seals_cage", "grease_pillow", "bath", "thrust"])
+def test_every_estimated_value_of_a_built_network_is_ranged(variant):
+    import re
+    b = bearing("51107" if variant == "thrust" else "6208")
+    m = Machine(b, n_rpm=3000.0, Fr=0.0 if variant == "thrust" else 2000.0, Fa=2000.0 if variant == "thrust" else 0.0)
+    if variant == "jet_seals_cage":
+        m = m.with_(cage=True, housing=dataclasses.replace(m.housing, seals="contact"))
+    elif variant == "grease_pillow":
+        m = m.with_(lubrication=Lubrication(supply="grease"),
+                    housing=dataclasses.replace(m.housing, type="pillow", height=None, depth=None))
+    elif variant == "bath":
+        m = m.with_(lubrication=Lubrication(supply="oil_bath", oil_level=b.D / 2))
+    else:
+        m = m.with_(lubrication=Lubrication(supply="grease"))
+    spec = build_network(m).spec
+    t = prepare_network(spec, {"bearing": b})
+    family = set(estimates.sampled_keys(m))
+    missing = []
+    tables = [(n, "nodes", v) for n, v in spec["nodes"].items()] + [(e["name"], "elements", e) for e in spec["elements"]]
+    for name, kind, tbl in tables:
+        for key in tbl.get("estimated", []):
+            if f"{kind}.{name}.{key}" in t.uncertainty:
+                continue
+            fam = [v for (pat, k), v in _BY_FAMILY.items() if k == key and re.fullmatch(pat, name)]
+            if fam and set(fam[0] if isinstance(fam[0], tuple) else [fam[0]]) & family:
+                continue
+            if any(k == key and re.fullmatch(pat, name) for pat, k in _EXEMPT):
+                continue
+            missing.append(f"{kind}.{name}.{key}")
+    assert missing == []

@@ -38,6 +38,13 @@ FIELDS = {
     "grease_fill": Field.number("-", 0.0, 1.0, lo_open=True, doc="grease fill of the free volume"),
     "k_seal_W_mK": Field.number("W/(m K)", 0.0, lo_open=True, doc="conductivity of a contact seal's rubber"),
     "cage_film_m": Field.number("m", 0.0, lo_open=True, doc="oil film in a cage pocket"),
+    "k_air_still_W_mK": Field.number("W/(m K)", 0.0, lo_open=True, doc="air of a still cavity"),
+    "web_fraction": Field.number("-", 0.0, 1.0, lo_open=True, doc="pillow block's web width / body diameter"),
+    **{k: Field.number("-", 1.0, 1.0, doc=f"multiplier of {e[1]}.{e[2]} as the builder writes it")
+       for k, e in {"bath_mixing": (0, "oil_air--oil_sump", "G_W_K"), "sump_capacity": (0, "oil_sump", "C_J_K"),
+                    "seal_capacity": (0, "seal", "C_J_K"), "seal_lip_area": (0, "seal--inner_ring", "A_m2"),
+                    "seal_rubber_length": (0, "seal--outer_ring", "L_m"), "cage_capacity": (0, "cage", "volume_m3"),
+                    "cage_area": (0, "cage--oil_air", "A_m2"), "cage_spot": (0, "cage--balls", "A_m2")}.items()},
     "estimated": Field.names("keys whose values are estimates"),
     "uncertainty": Field.table("ranges of the estimated values (thermobear.schema.check_uncertainty)"),
 }
@@ -53,9 +60,15 @@ FAMILY_KEYS = {
     "ring_fill": "the rings' capacities",
     "oil_held": "the cavity mixture's capacity",
     "grease_fill": "the grease's capacity and conduction",
+    "k_air_still_W_mK": "the still mixture's conduction from both races",
+    "web_fraction": "a pillow block's web (every outer cell) and its covered side",
 }
-#: drawn per point: key → (element, its key) holding the value
-POINT_KEYS = {"k_seal_W_mK": ("seal--outer_ring", "k_W_mK"), "cage_film_m": ("cage--balls", "length_m")}
+#: drawn per point: key → (element or node, its key) holding the value (the multipliers: the value × a factor)
+POINT_KEYS = {"k_seal_W_mK": ("seal--outer_ring", "k_W_mK"), "cage_film_m": ("cage--balls", "length_m"),
+              "bath_mixing": ("oil_air--oil_sump", "G_W_K"), "sump_capacity": ("oil_sump", "C_J_K"),
+              "seal_capacity": ("seal", "C_J_K"), "seal_lip_area": ("seal--inner_ring", "A_m2"),
+              "seal_rubber_length": ("seal--outer_ring", "L_m"), "cage_capacity": ("cage", "volume_m3"),
+              "cage_area": ("cage--oil_air", "A_m2"), "cage_spot": ("cage--balls", "A_m2")}
 
 
 def _table() -> tuple:
@@ -129,12 +142,13 @@ def sampled_keys(m) -> list:
             "ring_fill": True,
             "oil_held": lub.supply != "grease" and lub.oil_air_C_J_K is None,
             "grease_fill": lub.supply == "grease" and lub.oil_air_C_J_K is None
-            and _default(lub.grease_fill, "grease_fill")}
+            and _default(lub.grease_fill, "grease_fill"),
+            "k_air_still_W_mK": True, "web_fraction": h.type == "pillow"}
     return [k for k in FAMILY_KEYS if keys[k]]
 
 
-def point_uncertainty(key: str) -> dict:
-    """The ``uncertainty`` entry the builder writes on the element holding a per-point estimate (the
-    network file's syntax: ``{range | factor = [lo, hi], distribution, source}``)."""
-    u = uncertainty()[key]
-    return {POINT_KEYS[key][1]: {**u.as_dict(), "source": f"{u.source} (materials/{FILE} {key})"}}
+def point_uncertainty(*keys: str) -> dict:
+    """The ``uncertainty`` table the builder writes on the element or node holding per-point estimates
+    (the network file's syntax: ``{range | factor = [lo, hi], distribution, source}`` by its key)."""
+    unc = uncertainty()
+    return {POINT_KEYS[k][1]: {**unc[k].as_dict(), "source": f"{unc[k].source} (materials/{FILE} {k})"} for k in keys}

@@ -99,6 +99,7 @@ def add_mixture(spec: NetworkSpec, m: Machine, lay: Layout):
               ("housing_washer" if thrust else "outer_race"): immersed_share(y, (lay.dm + lay.D) / 2)}
     V_sump, _ = _sump_volume(m, lay, y)
     spec.node("oil_sump", C_J_K=V_sump * lub.rho_cp, estimated=["C_J_K"],
+              uncertainty=estimates.point_uncertainty("sump_capacity") if lub.sump_volume is None else None,
               description=f"the oil bath: {V_sump * 1e3:.3g} L, level {(y + (lay.dm + lay.D) / 2) * 1e3:.3g} mm above "
                           "the outer raceway's lowest point")
     return fluid, ("oil_sump", shares)
@@ -125,6 +126,7 @@ def _bath(spec, m, lay, housing: Body, sump):
     f_b = max(shares.values())                 # the outer race dips as soon as there is a level
     floor = lub.k * f_b * math.pi * lay.dm * lay.B / (lay.D / 2)
     spec.element("oil_air--oil_sump", "conductance", ("oil_air", node), estimated=["G_W_K"],
+                 uncertainty=estimates.point_uncertainty("bath_mixing"),
                  G_W_K=f"{lub.rho_cp * f_b * V / (2 * math.pi)!r} * abs(op.omega_cage_rad_s) + {floor!r}",
                  description="the balls carry their immersed share of the free volume around at the cage's speed "
                              "(estimated); conduction through the oil as the floor")
