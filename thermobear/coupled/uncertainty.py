@@ -268,7 +268,9 @@ def sample_scenes(scene: Scene, n: int, *, seed=None, method: str = "lhs", group
         Ug = design(G, len(fams), None if seed is None else np.random.default_rng(seed).integers(2**32), method)
         Xg = np.column_stack([ins[k].uncertainty.quantile(Ug[:, c]) for c, k in enumerate(fams)])
         X[:, fams] = Xg[group]
-        brgs = [_family_at(scene, [ins[k] for k in fams], Xg[g]) for g in range(G)]
+        cells = ({k: g.n for k, g in build_network(scene.network).segments.items()}   # the nominal's cells, hence
+                 if isinstance(scene.network, Machine) else None)                    # its nodes, in every group
+        brgs = [_family_at(scene, [ins[k] for k in fams], Xg[g], cells) for g in range(G)]
     scenes = [_scene_at(scene, ins, pts, X[i], *brgs[group[i]]) for i in range(n)]
     return Samples(scenes=scenes, inputs=ins, X=X, group=group, seed=seed, method=method, groups=G)
 
@@ -288,10 +290,10 @@ def _checked(inputs, data) -> list:
     return list(inputs)
 
 
-def _family_at(scene: Scene, ins, draws) -> tuple:
+def _family_at(scene: Scene, ins, draws, cells=None) -> tuple:
     """The scene's bearing and network with one group's drawn values: (bearing or the InputError the
     draws raise, network).  A network built from dimensions takes the drawn builder estimates and the
-    drawn bearing (:func:`thermobear.thermal.builders.estimates.drawn`)."""
+    drawn bearing, cut into the nominal's ``cells`` (:func:`thermobear.thermal.builders.estimates.drawn`)."""
     brg, net = scene.bearing, scene.network
     vals, built = {}, {}
     for i, x in zip(ins, draws):
@@ -306,7 +308,6 @@ def _family_at(scene: Scene, ins, draws) -> tuple:
     except InputError as exc:
         return exc, net
     if isinstance(net, Machine) and (built or brg is not scene.bearing):
-        cells = {k: g.n for k, g in build_network(net).segments.items()}      # the nominal's cells, hence its nodes
         net = estimates.drawn(net if brg is scene.bearing else dataclasses.replace(net, bearing=brg), built, cells)
     return brg, net
 
