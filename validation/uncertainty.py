@@ -135,6 +135,12 @@ BUILT = [("block_6208_oil_jet.toml", "6208, oil jet, block housing"),
          ("block_6208_grease.toml", "6208, grease, block housing")]
 
 
+def _from_builders(i) -> bool:
+    """An input whose range the builders' data give: a family draw (``builder.<key>``) or a per-point range
+    the builder writes on one element or node (its source names the data file)."""
+    return i.address.startswith("builder.") or "network_builders.toml" in i.uncertainty.source
+
+
 def built(lines):
     """Scenes whose network is built from their dimensions (thermobear.thermal.builders): the bands with
     and without the builders' estimates (materials/network_builders.toml, ``builder.<key>``) sampled."""
@@ -142,7 +148,8 @@ def built(lines):
               f"{N_STEADY} steady samples of each scene, seed {SEED}: once without the builders' estimated constants "
               "(the seats' roughness, the microhardness and gas parameter of the seats' joint conductance, the "
               "housing's emissivity, the mounting joint, the rings' and cavity's fills: "
-              "`materials/network_builders.toml`), once with them (drawn per family with the bearing's geometry; "
+              "`materials/network_builders.toml`; and the per-point ranges the builder writes on the seal's, the cage's "
+              "and the bath's elements), once with them (drawn per family with the bearing's geometry; "
               "the families of each run in the last column). The width the builders' estimates add is the spread the built networks' bands "
               "understated before they had ranges.", "",
               "| scene | output | nominal | p5 … p95 without | p5 … p95 with | failed (with) | families (without, with) |",
@@ -152,7 +159,7 @@ def built(lines):
         sc = tb.load_scene(tb.example_path(ex))
         ins = tb.coupled.uncertainty.uncertain_inputs(sc)
         r0 = tb.coupled.uncertainty.steady_uncertainty(
-            sc, N_STEADY, seed=SEED, inputs=[i for i in ins if not i.address.startswith("builder.")])
+            sc, N_STEADY, seed=SEED, inputs=[i for i in ins if not _from_builders(i)])
         r1 = tb.coupled.uncertainty.steady_uncertainty(sc, N_STEADY, seed=SEED, nominal=r0.nominal)
         ranked = ranked or r1
         for key in ("T_C.balls", "T_C.outer_ring", "T_C.housing", "P_W"):
