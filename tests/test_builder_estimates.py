@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import re
 
 import numpy as np
 import pytest
@@ -163,7 +164,6 @@ _EXEMPT = {(r".*_contacts", "Q_fallback_N"): "used only when the mechanics gives
 
 @pytest.mark.parametrize("variant", ["jet_seals_cage", "grease_pillow", "bath", "thrust"])
 def test_every_estimated_value_of_a_built_network_is_ranged(variant):
-    import re
     b = bearing("51107" if variant == "thrust" else "6208")
     m = Machine(b, n_rpm=3000.0, Fr=0.0 if variant == "thrust" else 2000.0, Fa=2000.0 if variant == "thrust" else 0.0)
     if variant == "jet_seals_cage":
