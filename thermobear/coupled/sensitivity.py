@@ -134,8 +134,10 @@ def summary_lines(res, top: int = 8) -> list:
     last = (lambda v: v if np.ndim(v) == 0 else v[-1])  # noqa: E731
     nom = res.nominal
     t = "" if res.t_s is None else f" at t = {res.t_s[-1]:g} s"
+    grouped = "bearing geometry" + (" and network-builder estimates" if any(
+        i.address.startswith("builder.") for i in res.inputs) else "")
     lines = [f"Uncertainty: {res.n} samples ({'Latin hypercube' if res.method == 'lhs' else 'scrambled Sobol'}, "
-             f"seed {res.seed}; {len(res.inputs)} estimated inputs; bearing geometry in {res.groups} "
+             f"seed {res.seed}; {len(res.inputs)} estimated inputs; {grouped} in {res.groups} "
              f"famil{'y' if res.groups == 1 else 'ies'}){t}", "",
              f"  {'':26s} {'nominal':>9s} {'p5':>9s} {'p50':>9s} {'p95':>9s}"]
     for key, b in res.bands.items():

@@ -13,6 +13,8 @@ address                   where the range lives                        how it va
 ``elements.<e>.<key>``                                                 ``sample`` context)
 ``materials.<m>.<key>``   the material file (k, ρ, c_p the network     per point (idem)
                           reads)
+``builder.<key>``         ``materials/network_builders.toml`` (a       per **family** (see below)
+                          network built from the scene's dimensions)
 ``bearing.<key>``         the bearing catalogue (or [bearing] table)   per **family** (see below)
 ========================  ===========================================  =====================
 
@@ -28,8 +30,15 @@ values as per-point draws (:attr:`Scene.samples`) that the lubricant (per-point 
 network template (per-point conductances, capacities, fixed temperatures) apply.
 
 The bearing's internal geometry (ball diameter, osculations, number of balls, clearance) cannot vary
-within a family: the loads, contact ellipses and kinematics are solved for one bearing.  Its inputs
-are drawn at ``groups`` levels (a Latin hypercube of their own, default 8 groups), and every sample is
+within a family: the loads, contact ellipses and kinematics are solved for one bearing.  Nor can the
+estimated constants of a network built from dimensions (:mod:`thermobear.thermal.builders.estimates`:
+the seats' roughness, the microhardness and gas parameter of their joint conductance, the housing's
+emissivity, the mounting joint, the rings' and cavity's fills): the builder computes the seats' joints
+from them, spreads them over every cell of a face, and its discretisation rule reads them, so a draw
+is a machine of its own, its network built again (a built network's one-element estimates — the
+seal's rubber, the cage's pocket film — are element values and vary per point).  These inputs
+are drawn at ``groups`` levels (a Latin hypercube of their own; default 8 groups, or two more than the
+family-level inputs when they are more than 6, so that a regression on them is determined), and every sample is
 assigned to one group by a further balanced column of the design: the samples form ``groups``
 families of about n / groups points each.  Their sensitivities rest on those ``groups`` distinct
 geometries (more groups resolve them better, at one load solve and one network template per group).
@@ -62,6 +71,7 @@ from thermobear.scene import Scene
 from thermobear.scene.scene import SECTIONS
 from thermobear.schema import Uncertainty, check_value
 from thermobear.thermal import solve_transient
+from thermobear.thermal.builders import Machine, build_network, estimates
 
 stats = lazy_module("scipy.stats")          # qmc samplers: loaded when the first design is drawn
 
@@ -146,7 +156,8 @@ def _network_nominal(template, address):
 
 def uncertain_inputs(scene: Scene, prepared=None) -> list:
     """The uncertain inputs of a scene (module docstring), in a fixed order: the scene's numbers, the
-    lubricant's, the network's and its materials', then the bearing's (per family).
+    lubricant's, the network's and its materials', then (per family) a built network's builder estimates
+    and the bearing's.
 
     >>> import thermobear as tb
     >>> ins = uncertain_inputs(tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml")))
@@ -167,6 +178,11 @@ def uncertain_inputs(scene: Scene, prepared=None) -> list:
         template = prepared_for(scene, prepared).template
         for addr, u in template.uncertainty.items():
             out.append(Input(addr, u, _nominal_draw(u, _network_nominal(template, addr))))
+    if isinstance(scene.network, Machine):
+        unc = estimates.uncertainty()
+        for key in estimates.sampled_keys(scene.network):
+            out.append(Input(f"builder.{key}", unc[key], _nominal_draw(unc[key], _builder_value(scene.network, key)),
+                             level="family"))
     brg = scene.bearing
     for key, u in brg.uncertainty.items():
         if key in _RATINGS:
@@ -175,6 +191,18 @@ def uncertain_inputs(scene: Scene, prepared=None) -> list:
         v = getattr(brg, attr) if attr else None
         out.append(Input(f"bearing.{key}", u, _nominal_draw(u, None if v is None else v * scale), level="family"))
     return out
+
+
+def _builder_value(m: Machine, key: str) -> float:
+    """The value of a builder's estimate a machine uses [the key's unit]: the housing's emissivity, the
+    grease fill and the mounting joint as the machine holds them, the constants as drawn or the data's."""
+    if key == "emissivity":
+        return m.housing.emissivity
+    if key == "grease_fill" and m.lubrication.grease_fill is not None:
+        return m.lubrication.grease_fill
+    if key == "R_mount_m2K_W" and m.housing.mounting_h_W_m2K is not None:
+        return 1.0 / m.housing.mounting_h_W_m2K
+    return estimates.value(m, key)
 
 
 def design(n: int, d: int, seed=None, method: str = "lhs") -> np.ndarray:
@@ -223,25 +251,29 @@ def sample_scenes(scene: Scene, n: int, *, seed=None, method: str = "lhs", group
 
     ``inputs``: the inputs to sample (default :func:`uncertain_inputs`; given ones may narrow, widen
     or reshape the data's ranges, each at an address the data ranges, with its kind of draw);
-    ``groups``: the number of bearing-geometry families (default min(n, 8); 1 with no bearing input)."""
+    ``groups``: the number of bearing-geometry (and builder-estimate) families (default min(n, max(8, d + 2))
+    for d family-level inputs; 1 with none)."""
     n = _count(n, "uncertainty.n")
     data = uncertain_inputs(scene, prepared)
     ins = list(data if inputs is None else _checked(inputs, data))
     pts = [k for k, i in enumerate(ins) if i.level == "point"]
     fams = [k for k, i in enumerate(ins) if i.level == "family"]
-    G = 1 if not fams else min(n, _GROUPS if groups is None else _count(groups, "uncertainty.groups"))
+    G = 1 if not fams else min(n, max(_GROUPS, len(fams) + 2) if groups is None
+                               else _count(groups, "uncertainty.groups"))
     U = design(n, len(pts) + (1 if G > 1 else 0), seed, method)
     X = np.zeros((n, len(ins)))
     for c, k in enumerate(pts):
         X[:, k] = ins[k].uncertainty.quantile(U[:, c])
     group = np.minimum((U[:, -1] * G).astype(int), G - 1) if G > 1 else np.zeros(n, int)
-    brgs = [scene.bearing] * G
+    brgs = [(scene.bearing, scene.network)] * G
     if fams:
         Ug = design(G, len(fams), None if seed is None else np.random.default_rng(seed).integers(2**32), method)
         Xg = np.column_stack([ins[k].uncertainty.quantile(Ug[:, c]) for c, k in enumerate(fams)])
         X[:, fams] = Xg[group]
-        brgs = [_bearing_at(scene, [ins[k] for k in fams], Xg[g]) for g in range(G)]
-    scenes = [_scene_at(scene, ins, pts, X[i], brgs[group[i]]) for i in range(n)]
+        cells = ({k: g.n for k, g in build_network(scene.network).segments.items()}   # the nominal's cells, hence
+                 if isinstance(scene.network, Machine) else None)                    # its nodes, in every group
+        brgs = [_family_at(scene, [ins[k] for k in fams], Xg[g], cells) for g in range(G)]
+    scenes = [_scene_at(scene, ins, pts, X[i], *brgs[group[i]]) for i in range(n)]
     return Samples(scenes=scenes, inputs=ins, X=X, group=group, seed=seed, method=method, groups=G)
 
 
@@ -260,22 +292,31 @@ def _checked(inputs, data) -> list:
     return list(inputs)
 
 
-def _bearing_at(scene: Scene, ins, draws):
-    """The scene's bearing with drawn values (or the InputError they raise)."""
-    brg = scene.bearing
-    vals = {}
+def _family_at(scene: Scene, ins, draws, cells=None) -> tuple:
+    """The scene's bearing and network with one group's drawn values: (bearing or the InputError the
+    draws raise, network).  A network built from dimensions takes the drawn builder estimates and the
+    drawn bearing, cut into the nominal's ``cells`` (:func:`thermobear.thermal.builders.estimates.drawn`)."""
+    brg, net = scene.bearing, scene.network
+    vals, built = {}, {}
     for i, x in zip(ins, draws):
-        key = i.address.split(".", 1)[1]
+        kind, key = i.address.split(".", 1)
+        if kind == "builder":
+            built[key] = float(i.uncertainty.apply(_builder_value(net, key), x))
+            continue
         attr, scale = _BEARING_KEYS[key]
         vals[key] = i.uncertainty.apply(getattr(brg, attr) * scale, x)
     try:
-        return bearing_values(brg, vals)
+        brg = bearing_values(brg, vals) if vals else brg
     except InputError as exc:
-        return exc
+        return exc, net
+    if isinstance(net, Machine) and (built or brg is not scene.bearing):
+        net = estimates.drawn(net if brg is scene.bearing else dataclasses.replace(net, bearing=brg), built, cells)
+    return brg, net
 
 
-def _scene_at(scene: Scene, ins, pts, x, brg):
-    """One sampled operating point: scene numbers set, other draws in ``samples`` (or the InputError).
+def _scene_at(scene: Scene, ins, pts, x, brg, network=None):
+    """One sampled operating point: scene numbers set, other draws in ``samples``, the group's bearing
+    and network (or the InputError).
 
     A scene number is checked by its section's field (as :meth:`Scene.with_` does) and set on a copy;
     a drawn speed goes through :meth:`Scene.with_` (its n·dm limit is a check across keys)."""
@@ -298,6 +339,8 @@ def _scene_at(scene: Scene, ins, pts, x, brg):
                 attrs[attr] = v / scale
         if brg is not scene.bearing:
             attrs["bearing"] = brg
+        if network is not None and network is not scene.network:
+            attrs["network"] = network
         out = dataclasses.replace(scene, samples=samples, **attrs)
         return out.with_(**slow) if slow else out
     except InputError as exc:
@@ -381,7 +424,8 @@ def steady_outputs(results) -> dict:
     ok = [r for r in results if isinstance(r, SteadyState)]
     if not ok:
         return {}
-    names = [f"T_C.{k}" for k in ok[0].T_C] + ["P_W"] + [f"breakdown_W.{k}" for k in ok[0].losses.breakdown_W]
+    names = list(dict.fromkeys([f"T_C.{k}" for r in ok for k in r.T_C] + ["P_W"]
+                               + [f"breakdown_W.{k}" for r in ok for k in r.losses.breakdown_W]))
     out = {k: np.full(len(results), np.nan) for k in names}
     for i, r in enumerate(results):
         if isinstance(r, SteadyState):
@@ -404,7 +448,8 @@ def steady_uncertainty(scene: Scene, n: int, *, seed=None, method: str = "lhs", 
     n : int                 number of samples
     seed : int              seed of the design (the same seed gives the same samples)
     method : str            ``"lhs"`` (Latin hypercube) or ``"sobol"`` (scrambled Sobol')
-    groups : int            bearing-geometry families (module docstring; default min(n, 8))
+    groups : int            bearing-geometry families (module docstring; default min(n, max(8, d + 2)), d
+                            family-level inputs)
     sensitivity : str       ``"src"`` (standardised regression coefficients and rank correlations,
                             numpy / scipy) or ``"sobol"`` (first-order Sobol' indices by RBD-FAST on the
                             same samples; needs the optional SALib: ``pip install thermobear[sensitivity]``)

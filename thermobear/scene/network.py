@@ -165,7 +165,7 @@ def _housing(h: dict, seals: str = "none") -> Housing:
                    mounting=h.get("mounting", "frame"), mounting_h_W_m2K=h.get("mounting_h_W_m2K"),
                    frame_material=_material(h.get("frame_material", "steel-c45"), "housing.frame_material"),
                    air=h.get("air", "still"), air_speed=h.get("air_speed_m_s", 0.0),
-                   emissivity=h.get("emissivity", 0.8),
+                   **({"emissivity": h["emissivity"]} if "emissivity" in h else {}),   # else the builders' estimate
                    interference=h["interference_um"] * 1e-6 if "interference_um" in h else None,
                    fit_h_W_m2K=h.get("fit_h_W_m2K"), seals=seals, **mm)
 

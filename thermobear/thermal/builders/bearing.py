@@ -26,17 +26,17 @@ from __future__ import annotations
 import math
 
 from thermobear.contact.materials import material
+from thermobear.thermal.builders import estimates
 from thermobear.thermal.builders.axisym import Body
 from thermobear.thermal.builders.layout import Layout
 from thermobear.thermal.builders.machine import Machine
 from thermobear.thermal.builders.spec import NetworkSpec
 
-__all__ = ["add_rings", "add_thrust_washers", "add_seats", "add_closures", "add_cage", "free_volume",
-           "ring_fill", "K_NBR_W_MK"]
+__all__ = ["add_rings", "add_thrust_washers", "add_seats", "add_closures", "add_cage", "free_volume"]
 
-ring_fill = 0.8          #: share of a ring's annulus that is steel (groove, chamfers), estimated as the hand network
-K_NBR_W_MK = 0.25        #: nitrile rubber (NBR) conductivity, 0.2–0.3 W/(m K) (estimated)
-K_AIR_W_MK = 0.028       #: air at ≈ 50 °C (materials/air_1atm.toml)
+# estimated (materials/network_builders.toml, with their ranges): ring_fill, the share of a ring's annulus
+# that is steel (groove, chamfers; as the hand network); k_seal_W_mK, nitrile rubber (NBR) 0.2–0.3 W/(m K);
+# cage_film_m, the pocket film; k_air_still_W_mK, the still mixture's air; the seal's and cage's multipliers
 _I, _O, _C, _W = "op.omega_inner_rad_s", "op.omega_outer_rad_s", "op.omega_cage_rad_s", "op.omega_ball_rad_s"
 
 
@@ -72,6 +72,7 @@ def _mixture_links(spec, lay, links, fluid, sump):
 def add_rings(spec: NetworkSpec, m: Machine, lay: Layout, fluid: dict, sump=None) -> None:
     """Rings, balls and the mixture of a radial bearing (nodes and their elements)."""
     d, D, dm, OD, B = lay.bore, lay.D, lay.dm, lay.OD, lay.B
+    ring_fill = estimates.value(m, "ring_fill")
     v_in = 0.5 * ring_fill * math.pi / 4 * ((dm - D) ** 2 - d**2) * B
     v_out = 0.5 * ring_fill * math.pi / 4 * (OD**2 - (dm + D) ** 2) * B
     est = ["volume_m3"]
@@ -99,7 +100,7 @@ def add_rings(spec: NetworkSpec, m: Machine, lay: Layout, fluid: dict, sump=None
              ("outer_race", f"abs({_O} - {_C}) * {(dm + D) / 2!r}", B, math.pi * (dm + D) * B)]
     _mixture_links(spec, lay, links, fluid, sump)
     for race in ("inner_race", "outer_race"):        # still mixture: conduction across half the gap
-        spec.element(f"{race}--oil_air_conduction", "planar", (race, "oil_air"), k_W_mK=K_AIR_W_MK,
+        spec.element(f"{race}--oil_air_conduction", "planar", (race, "oil_air"), k_W_mK=estimates.value(m, "k_air_still_W_mK"),
                      A_m2=math.pi * dm * B, length_m=D / 2, estimated=["k_W_mK"],
                      description="conduction through the still mixture (air) across half the raceway gap: "
                                  "the floor of the exchange at standstill")
@@ -108,7 +109,7 @@ def add_rings(spec: NetworkSpec, m: Machine, lay: Layout, fluid: dict, sump=None
 def add_thrust_washers(spec: NetworkSpec, m: Machine, lay: Layout, fluid: dict, sump=None) -> None:
     """Washers and balls of a thrust bearing (the seed-002 hand network's model)."""
     d, D, dm, OD, H = lay.bore, lay.D, lay.dm, lay.OD, lay.B
-    v = ring_fill * math.pi / 4 * (OD**2 - d**2) * 0.3 * H
+    v = estimates.value(m, "ring_fill") * math.pi / 4 * (OD**2 - d**2) * 0.3 * H
     for node in ("shaft_washer", "housing_washer"):
         spec.node(node, volume_m3=v, material="bearing.ring_material", estimated=["volume_m3"],
                   description=f"{node.replace('_', ' ')}: 0.3 × the bearing's height thick, 0.8 for the groove")
@@ -123,7 +124,7 @@ def add_thrust_washers(spec: NetworkSpec, m: Machine, lay: Layout, fluid: dict, 
              lay.Z * math.pi * D**2), ("housing_washer", f"abs({_O} - {_C}) * {dm / 2!r}", D, A_face)]
     _mixture_links(spec, lay, links, fluid, sump)
     for w in ("shaft_washer", "housing_washer"):
-        spec.element(f"{w}--oil_air_conduction", "planar", (w, "oil_air"), k_W_mK=K_AIR_W_MK, A_m2=A_face,
+        spec.element(f"{w}--oil_air_conduction", "planar", (w, "oil_air"), k_W_mK=estimates.value(m, "k_air_still_W_mK"), A_m2=A_face,
                      length_m=D / 2, estimated=["k_W_mK"], description="conduction through the still mixture")
 
 
@@ -174,14 +175,17 @@ def add_closures(spec: NetworkSpec, m: Machine, lay: Layout) -> str:
         band = 0.5e-3
         A_lip = 2 * math.pi * d_sh * band * 2
         spec.node("seal", C_J_K=2 * math.pi * d_sh * 2e-3 * 1e-3 * 1200.0 * 1500.0 * 2, estimated=["C_J_K"],
+                  uncertainty=estimates.point_uncertainty("seal_capacity"),
                   description="contact seals' lips (2 seals): the lip band, 2 mm x 1 mm of NBR each "
                               "(rho 1200 kg/m3, cp 1500 J/kg K)")
         spec.element("seal--inner_ring", "planar", ("seal", "inner_ring"), material="bearing.ring_material",
                      A_m2=A_lip, length_m=band, estimated=["A_m2", "length_m"],
+                     uncertainty=estimates.point_uncertainty("seal_lip_area"),
                      description="lip band 0.5 mm wide on each shoulder; the heat enters the ring over a depth "
                                  "of the band's width")
-        spec.element("seal--outer_ring", "shell", ("seal", "outer_ring"), k_W_mK=K_NBR_W_MK, r1_m=d_sh / 2,
-                     r2_m=d_or / 2, L_m=2 * 2e-3, estimated=["k_W_mK", "L_m"],
+        spec.element("seal--outer_ring", "shell", ("seal", "outer_ring"), k_W_mK=estimates.value(m, "k_seal_W_mK"),
+                     r1_m=d_sh / 2, r2_m=d_or / 2, L_m=2 * 2e-3, estimated=["k_W_mK", "L_m"],
+                     uncertainty=estimates.point_uncertainty("k_seal_W_mK", "seal_rubber_length"),
                      description="through the seals' rubber (2 seals, 2 mm thick) to the outer ring's groove")
         spec.element("seal--oil_air", "convection", ("seal", "oil_air"), correlation="flat_plate_laminar",
                      fluid="air", u_m_s=f"abs({_I} - {_C}) * {d_sh / 2!r}", x_m=(d_or - d_sh) / 2,
@@ -211,10 +215,13 @@ def add_cage(spec: NetworkSpec, m: Machine, lay: Layout) -> None:
     balls): in the mixture at its own speed, and through the lubricated pockets to the balls."""
     A = math.pi * lay.dm * lay.B * 0.4 * 2
     spec.node("cage", volume_m3=0.5 * A * 1e-3, material="aisi-52100", estimated=["volume_m3", "material"],
+              uncertainty=estimates.point_uncertainty("cage_capacity"),
               description="pressed steel cage (estimated)")
     spec.element("cage--oil_air", "convection", ("cage", "oil_air"), correlation="flat_plate_laminar", fluid="air",
                  u_m_s=f"abs({_C}) * {lay.dm / 2!r}", x_m=lay.B, A_m2=A, estimated=["A_m2"],
+                 uncertainty=estimates.point_uncertainty("cage_area"),
                  description="both faces of the cage in the mixture at the cage's pitch speed")
+    film = estimates.value(m, "cage_film_m")
     spec.element("cage--balls", "planar", ("cage", "balls"), k_W_mK=0.13, A_m2=lay.Z * math.pi * (0.2 * lay.D) ** 2,
-                 length_m=20e-6, estimated=["k_W_mK", "A_m2", "length_m"],
-                 description="pocket contacts through a 20 µm oil film over a spot of 0.2 D radius per ball")
+                 length_m=film, estimated=["k_W_mK", "A_m2", "length_m"], uncertainty=estimates.point_uncertainty("cage_film_m", "cage_spot"),
+                 description=f"pocket contacts through a {film * 1e6:.3g} µm oil film over a spot of 0.2 D radius per ball")

@@ -21,6 +21,7 @@ Faces and their laws (each a network element per cell of the face, the cell's sh
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from thermobear.contact.materials import material
 from thermobear.thermal.builders.axisym import Body, revolution_body, segment_count
@@ -48,14 +49,21 @@ def _pieces(z0, zb0, zb1, z1, zc0, zc1):
     return [c for c in cuts if c[2] - c[1] > 1e-4]          # pieces shorter than 0.1 mm dropped
 
 
-def _cut(spec, body_name, pieces, R_of, G_of, a, t_res, Bi_max):
+def _kept(m: Machine, key: str, seg):
+    """A piece's segmentation, its count held at the machine's ``cells`` (a drawn machine keeps the cells
+    of its nominal, so that its nodes are the nominal's) when it names the piece."""
+    n = dict(m.cells).get(key)
+    return seg if n is None else replace(seg, n=int(n))
+
+
+def _cut(spec, m, body_name, pieces, R_of, G_of, a):
     """The axial counts of the pieces and the numbering offsets (cells counted from the bearing)."""
     out, j_left, j_right = [], 0, 0
     for label, za, zb, inside, from_start in pieces:
         L = zb - za
-        seg = segment_count(L, R_of(L), G_of(L, inside, label), a, t_resolve_s=t_res, Bi_max=Bi_max)
+        seg = segment_count(L, R_of(L), G_of(L, inside, label), a, t_resolve_s=m.t_resolve_s, Bi_max=m.Bi_max)
         where = " (inside the housing)" if inside and label != "seat" and body_name == "shaft" else ""
-        spec.segments[f"{body_name} {label}{where}"] = seg
+        seg = spec.segments[f"{body_name} {label}{where}"] = _kept(m, f"{body_name} {label}{where}", seg)
         out.append((label, za, zb, seg.n, from_start, inside))
     # numbering: from the bearing outward on each side
     for q in sorted(range(len(out)), key=lambda q: -out[q][1]):      # left pieces, nearest first
@@ -99,13 +107,14 @@ def add_shaft(spec: NetworkSpec, m: Machine, lay: Layout, cavity: str) -> Body:
             return 1.0 / (1.0 / (lay.h_inner * 2 * math.pi * lay.r_s * L) + 1.0 / float(solid_cylinder_conductance(mat.k, L)))
         h = h_cavity_ref(lay, L) if inside else (h_out if exposed else 0.0)
         return h * 2 * math.pi * lay.r_s * L
-    pieces = _cut(spec, "shaft", _pieces(lay.z_s0, -lay.B / 2, lay.B / 2, lay.z_s1, lay.z_h0, lay.z_h1),
-                  lambda L: L / (mat.k * A), G_of, a, m.t_resolve_s, m.Bi_max)
+    pieces = _cut(spec, m, "shaft", _pieces(lay.z_s0, -lay.B / 2, lay.B / 2, lay.z_s1, lay.z_h0, lay.z_h1),
+                  lambda L: L / (mat.k * A), G_of, a)
     L_tot = lay.z_s1 - lay.z_s0
     R_r = (1 / (8 * math.pi * mat.k * L_tot) if lay.r_si == 0 else
            math.log(lay.r_s / lay.r_si) / (2 * math.pi * mat.k * L_tot))
     G_all = sum(G_of(p[2] - p[1], p[5], p[0]) for p in pieces)      # everything the shaft exchanges
-    seg_r = segment_count(lay.r_s - lay.r_si, R_r, G_all, a, t_resolve_s=m.t_resolve_s, Bi_max=m.Bi_max)
+    seg_r = _kept(m, "shaft radial", segment_count(lay.r_s - lay.r_si, R_r, G_all, a, t_resolve_s=m.t_resolve_s,
+                                                   Bi_max=m.Bi_max))
     spec.segments["shaft radial"] = seg_r
     body = revolution_body(spec, "shaft", lay.r_si, lay.r_s, [(p[0], p[1], p[2], p[3], p[4], p[6]) for p in pieces],
                            sh.material, seg_r.n, cell_name=_namer("shaft", pieces), radial_from="outer",
@@ -169,12 +178,13 @@ def add_housing(spec: NetworkSpec, m: Machine, lay: Layout, cavity: str) -> Body
     def G_of(L, inside, label):
         seat = lay.h_outer * math.pi * lay.OD * L if label == "seat" else 0.0
         return seat + h_ref * perimeter * L + lay.mount_G * L / lay.L_h
-    pieces = _cut(spec, "housing", _pieces(lay.z_h0, -lay.B / 2, lay.B / 2, lay.z_h1, lay.z_h0, lay.z_h1),
-                  lambda L: L / (mat.k * A_ann), G_of, a, m.t_resolve_s, m.Bi_max)
+    pieces = _cut(spec, m, "housing", _pieces(lay.z_h0, -lay.B / 2, lay.B / 2, lay.z_h1, lay.z_h0, lay.z_h1),
+                  lambda L: L / (mat.k * A_ann), G_of, a)
     n_ends = (lay.end_left != "adiabatic") + (lay.end_right != "adiabatic")
     G_all = sum(G_of(p[2] - p[1], p[5], p[0]) for p in pieces) + h_ref * A_ann * n_ends   # everything it exchanges
-    seg_r = segment_count(lay.R_h - lay.R_seat, math.log(lay.R_h / lay.R_seat) / (2 * math.pi * mat.k * lay.L_h), G_all,
-                          a, t_resolve_s=m.t_resolve_s, Bi_max=m.Bi_max)
+    seg_r = _kept(m, "housing radial", segment_count(lay.R_h - lay.R_seat, math.log(lay.R_h / lay.R_seat)
+                                                     / (2 * math.pi * mat.k * lay.L_h), G_all, a,
+                                                     t_resolve_s=m.t_resolve_s, Bi_max=m.Bi_max))
     spec.segments["housing radial"] = seg_r
     body = revolution_body(spec, "housing", lay.R_seat, lay.R_h, [(p[0], p[1], p[2], p[3], p[4], p[6]) for p in pieces],
                            h.material, seg_r.n, cell_name=_namer("housing", pieces), radial_from="inner",

@@ -9,16 +9,17 @@ from __future__ import annotations
 import math
 
 from thermobear.contact.materials import material
+from thermobear.thermal.builders import estimates
 from thermobear.thermal.builders.axisym import Body
 from thermobear.thermal.builders.layout import Layout
 from thermobear.thermal.builders.machine import Machine
 from thermobear.thermal.builders.spec import NetworkSpec
 
-__all__ = ["housing_faces", "AMBIENT", "FRAME", "WEB_FRACTION"]
+__all__ = ["housing_faces", "AMBIENT", "FRAME"]
 
 AMBIENT = "ambient"
 FRAME = "frame"
-WEB_FRACTION = 0.5      #: width of a pillow block's web under the body, a fraction of its diameter (estimated)
+# a pillow block's web under the body: web_fraction of its diameter wide (estimated, materials/network_builders.toml)
 
 
 def _forced(m: Machine, x_m: float) -> dict:
@@ -114,7 +115,7 @@ def _foot(spec, m, lay, body):
     h = m.housing
     mat = material(h.material)
     fh, L, bl, Dh = lay.foot_height, lay.L_h, lay.base_length, 2 * lay.R_h
-    web = WEB_FRACTION * Dh
+    web = estimates.value(m, "web_fraction") * Dh
     spec.node("housing_foot", volume_m3=bl * L * fh, material=h.material, estimated=["volume_m3"],
               description=f"foot of the pillow block: solid {bl * 1e3:.0f} × {L * 1e3:.0f} × {fh * 1e3:.0f} mm")
     for cell, z0, z1 in body.face("outer"):
@@ -150,7 +151,7 @@ def housing_faces(spec: NetworkSpec, m: Machine, lay: Layout, body: Body, cavity
     if lay.shape == "block":
         _block_sides(spec, m, lay, body, mounted_base=lay.mount_area > 0 and not end_mounted)
     else:
-        covered = WEB_FRACTION / math.pi if lay.foot else 0.0
+        covered = estimates.value(m, "web_fraction") / math.pi if lay.foot else 0.0
         _round_sides(spec, m, lay, body, covered, mounted_side=lay.mount_area > 0 and not (end_mounted or lay.foot))
     _ends(spec, m, lay, body)
     _bore(spec, lay, body, cavity)

@@ -13,9 +13,10 @@ tolerance class).  The joint conductance (:func:`seat_conductance`):
 * clearance c ≥ 0: the loaded half of the seat presses with the radial load over its projected area,
   p = F_r/(B D) (estimated distribution), the other half is a gap of c/2: h = ½ h_j(p) + ½ k_air/(c/2 + M).
 
-Surface data (estimated): ground shaft and housing seats Ra 0.8 µm (shaft) and 1.6 µm (housing),
-the tolerances the SKF catalogue lists for IT6/IT7 seats; ring bore and outside surface Ra 0.4 µm
-(ground); RMS σ = 1.25 Ra (a Gaussian profile).  Microhardness of the softer member 3 GPa (an
+Surface data (estimated; ``materials/network_builders.toml`` with their ranges,
+:mod:`~thermobear.thermal.builders.estimates`): ground shaft and housing seats Ra 0.8 µm (shaft) and
+1.6 µm (housing), the guideline values SKF gives for IT6/IT7 seats; ring bore and outside surface
+Ra 0.4 µm (ground); RMS σ = 1.25 Ra (a Gaussian profile).  Microhardness of the softer member 3 GPa (an
 unhardened C45 shaft or a grey-iron housing: Vickers 200–250 HV ≈ 2–2.5 GPa, the microhardness of
 a ground surface about 1.3× that).  Air in the gaps at 60 °C, k = 0.029 W/(m K), rarefaction
 parameter M ≈ 0.3 µm (accommodation coefficient ≈ 0.9, Yovanovich 2005).  Thermal expansion of
@@ -27,21 +28,35 @@ import math
 
 from thermobear.contact.materials import Material
 from thermobear.errors import InputError
+from thermobear.thermal.builders import estimates
 from thermobear.thermal.conduction import fit_pressure, joint_conductance
 
-__all__ = ["probable_interference", "seat_conductance", "SIGMA_SHAFT_SEAT_M", "SIGMA_HOUSING_SEAT_M",
-           "H_MICRO_PA", "K_AIR_GAP_W_MK", "M_AIR_M"]
+__all__ = ["probable_interference", "seat_conductance", "seat_sigma", "SIGMA_SHAFT_SEAT_M", "SIGMA_HOUSING_SEAT_M",
+           "H_MICRO_PA", "K_AIR_GAP_W_MK", "M_AIR_M", "P_MAX_RATIO"]
 
 _RQ = 1.25                                              # RMS / Ra of a Gaussian profile
-SIGMA_SHAFT_SEAT_M = math.hypot(_RQ * 0.8e-6, _RQ * 0.4e-6)     #: shaft seat Ra 0.8 µm + ring bore Ra 0.4 µm
-SIGMA_HOUSING_SEAT_M = math.hypot(_RQ * 1.6e-6, _RQ * 0.4e-6)   #: housing seat Ra 1.6 µm + ring OD Ra 0.4 µm
-H_MICRO_PA = 3.0e9           #: microhardness of the softer member (estimated, see the module docstring)
+_EST = estimates.values()
+
+
+def seat_sigma(Ra_seat_m: float, Ra_ring_m: float) -> float:
+    """RMS roughness of a seat and a ring surface [m]: σ = √((1.25 Ra_1)² + (1.25 Ra_2)²) (Gaussian profiles).
+
+    >>> round(seat_sigma(0.8e-6, 0.4e-6) * 1e6, 3)
+    1.118
+    """
+    return math.hypot(_RQ * Ra_seat_m, _RQ * Ra_ring_m)
+
+
+#: the data's nominal pairs (materials/network_builders.toml): shaft seat + ring bore, housing seat + ring OD
+SIGMA_SHAFT_SEAT_M = seat_sigma(_EST["Ra_shaft_seat_m"], _EST["Ra_ring_seat_m"])
+SIGMA_HOUSING_SEAT_M = seat_sigma(_EST["Ra_housing_seat_m"], _EST["Ra_ring_seat_m"])
+H_MICRO_PA = _EST["H_micro_Pa"]   #: microhardness of the softer member (estimated, see the module docstring)
 #: the joint correlation's upper pressure, P/H_c = 2 % (Yovanovich 2005): a tighter seat (a k5 fit on a
 #: 10 mm shaft reaches ≈ 65 MPa) is given the conductance at this bound — a lower bound, as more
 #: pressure conducts more, of a joint already conducting far better than the rings around it
-P_MAX_PA = 0.02 * H_MICRO_PA
+P_MAX_RATIO = 0.02
 K_AIR_GAP_W_MK = 0.029       #: air at 60 °C (materials/air_1atm.toml: 0.0287 W/m K at 333 K)
-M_AIR_M = 0.3e-6             #: gas rarefaction parameter of air at 1 atm (estimated, Yovanovich 2005)
+M_AIR_M = _EST["M_gas_m"]    #: gas rarefaction parameter of air at 1 atm (estimated, Yovanovich 2005)
 
 # Diameter steps [mm] (upper bounds) and deviations [µm] (ISO 286-2 tables; ISO 492 normal class).
 _STEPS = (18, 30, 50, 80, 120, 180, 250)
@@ -90,7 +105,8 @@ def probable_interference(d_m: float, seat: str) -> float:
 
 
 def seat_conductance(delta_m: float, d_m: float, d_inner_m: float, d_outer_m: float, inner: Material,
-                     outer: Material, sigma_m: float, *, F_r_N: float = 0.0, width_m: float = 0.0) -> tuple:
+                     outer: Material, sigma_m: float, *, F_r_N: float = 0.0, width_m: float = 0.0,
+                     H_micro_Pa: float = H_MICRO_PA, M_gas_m: float = M_AIR_M) -> tuple:
     """Joint conductance of a ring seat [W/(m² K)] and the contact pressure [Pa].
 
     Parameters
@@ -102,6 +118,9 @@ def seat_conductance(delta_m: float, d_m: float, d_inner_m: float, d_outer_m: fl
     inner, outer : Material the inner member (shaft or ring) and the outer (ring or housing)
     sigma_m : float         RMS roughness of the pair [m]
     F_r_N, width_m : float  radial load and seat width (a clearance fit's loaded half) [N], [m]
+    H_micro_Pa : float      microhardness of the softer member [Pa] (the correlation's pressure bound
+                            is ``P_MAX_RATIO`` of it)
+    M_gas_m : float         gas rarefaction parameter of the gaps' air [m]
 
     Returns
     -------
@@ -113,12 +132,13 @@ def seat_conductance(delta_m: float, d_m: float, d_inner_m: float, d_outer_m: fl
     >>> round(p / 1e6, 1), round(h, -3)
     (10.1, 38000.0)
     """
+    p_max = P_MAX_RATIO * H_micro_Pa
     if delta_m > 0:
         p = float(fit_pressure(delta_m, d_m, d_inner_m, d_outer_m, inner.E, inner.nu, outer.E, outer.nu))
-        return float(joint_conductance(inner.k, outer.k, min(p, P_MAX_PA), sigma_m, H_MICRO_PA, K_AIR_GAP_W_MK,
-                                       M_AIR_M)), p
+        return float(joint_conductance(inner.k, outer.k, min(p, p_max), sigma_m, H_micro_Pa, K_AIR_GAP_W_MK,
+                                       M_gas_m)), p
     p = F_r_N / (width_m * d_m) if F_r_N > 0 and width_m > 0 else 0.0
-    h_loaded = float(joint_conductance(inner.k, outer.k, min(p, P_MAX_PA), sigma_m, H_MICRO_PA, K_AIR_GAP_W_MK,
-                                       M_AIR_M))
-    h_gap = K_AIR_GAP_W_MK / (0.5 * (-delta_m) + M_AIR_M)
+    h_loaded = float(joint_conductance(inner.k, outer.k, min(p, p_max), sigma_m, H_micro_Pa, K_AIR_GAP_W_MK,
+                                       M_gas_m))
+    h_gap = K_AIR_GAP_W_MK / (0.5 * (-delta_m) + M_gas_m)
     return 0.5 * (h_loaded + h_gap), p

@@ -13,8 +13,8 @@ import numpy as np
 
 from thermobear.contact.materials import material
 from thermobear.errors import InputError
-from thermobear.thermal.builders.fits import (SIGMA_HOUSING_SEAT_M, SIGMA_SHAFT_SEAT_M, probable_interference,
-                                           seat_conductance)
+from thermobear.thermal.builders import estimates
+from thermobear.thermal.builders.fits import probable_interference, seat_conductance, seat_sigma
 from thermobear.thermal.builders.machine import Machine
 from thermobear.thermal.conduction import spreading_conductance
 from thermobear.thermal.convection import (h_free_vertical_plate, h_harris, h_natural_horizontal_cylinder,
@@ -24,7 +24,9 @@ from thermobear.lubrication.air import air_properties
 __all__ = ["Layout", "layout", "DT_REF_K", "H_MOUNT_W_M2K"]
 
 DT_REF_K = 20.0          #: surface excess over ambient at which the rule estimates free convection [K]
-H_MOUNT_W_M2K = 1.0 / 2.75e-4   #: bolted joint, Bergman et al. 2011 Table 3.2 (air, 0.1 MPa) [W/(m² K)]
+#: bolted joint, Bergman et al. 2011 Table 3.2 (air, 0.1 MPa) [W/(m² K)]: the data's nominal
+#: (materials/network_builders.toml ``R_mount_m2K_W``; a machine reads its own, :func:`_mounting`)
+H_MOUNT_W_M2K = 1.0 / estimates.values()["R_mount_m2K_W"]
 _C0 = 273.15
 
 
@@ -116,7 +118,7 @@ def _mounting(m: Machine, d: dict, end_left: str, end_right: str, R_seat: float)
         A = math.pi * d["R_h"] * d["L_h"] * 0.25          # round body on a saddle: a quarter of its side
     if h.mounting_G_W_K is not None:
         return A, float(h.mounting_G_W_K), float(h.mounting_G_W_K) / A if A > 0 else 0.0
-    hj = h.mounting_h_W_m2K if h.mounting_h_W_m2K is not None else H_MOUNT_W_M2K
+    hj = h.mounting_h_W_m2K if h.mounting_h_W_m2K is not None else 1.0 / estimates.value(m, "R_mount_m2K_W")
     G_sp = float(spreading_conductance(material(h.frame_material).k, A)) if A > 0 else 0.0
     G = 1.0 / (1.0 / (hj * A) + 1.0 / G_sp) if A > 0 else 0.0
     return A, G, G / A if A > 0 else 0.0
@@ -161,20 +163,25 @@ def layout(m: Machine) -> Layout:
 def _seat_h(m: Machine, R_h: float, delta_inner: float, delta_outer: float) -> tuple:
     """Joint conductances of the seats [W/(m² K)]: given, or from the fits (thermobear.thermal.builders.fits)."""
     b, thrust = m.bearing, m.bearing.kind == "thrust"
+    est = {k: estimates.value(m, k) for k in ("Ra_shaft_seat_m", "Ra_housing_seat_m", "Ra_ring_seat_m", "H_micro_Pa",
+                                                "M_gas_m")}
+    joint = {"H_micro_Pa": est["H_micro_Pa"], "M_gas_m": est["M_gas_m"]}
     h_in = m.shaft.fit_h_W_m2K
     if h_in is None:
         h_in, _ = seat_conductance(delta_inner, b.bore, m.shaft.bore, b.dm if thrust else b.dm - b.D,
-                                   material(m.shaft.material), b.ring_material, SIGMA_SHAFT_SEAT_M)
+                                   material(m.shaft.material), b.ring_material,
+                                   seat_sigma(est["Ra_shaft_seat_m"], est["Ra_ring_seat_m"]), **joint)
     h_out = m.housing.fit_h_W_m2K
     if h_out is None:
+        sigma = seat_sigma(est["Ra_housing_seat_m"], est["Ra_ring_seat_m"])
         if thrust:       # the washer's face pressed on the housing's shoulder by the axial load
             A = math.pi / 4 * (b.outer_diameter**2 - b.bore**2)
             h_out, _ = seat_conductance(-1e-9, b.outer_diameter, 0.0, 2 * R_h, b.ring_material,
-                                        material(m.housing.material), SIGMA_HOUSING_SEAT_M, F_r_N=2 * m.Fa,
-                                        width_m=A / b.outer_diameter)
+                                        material(m.housing.material), sigma, F_r_N=2 * m.Fa,
+                                        width_m=A / b.outer_diameter, **joint)
         else:
             h_out, _ = seat_conductance(delta_outer, b.outer_diameter, b.dm + b.D, 2 * R_h, b.ring_material,
-                                        material(m.housing.material), SIGMA_HOUSING_SEAT_M, F_r_N=m.Fr, width_m=b.width)
+                                        material(m.housing.material), sigma, F_r_N=m.Fr, width_m=b.width, **joint)
     return float(h_in), float(h_out)
 
 

@@ -37,17 +37,18 @@ import numpy as np
 
 from thermobear.errors import InputError
 from thermobear.lubrication.air import air_properties
+from thermobear.thermal.builders import estimates
 from thermobear.thermal.builders.axisym import Body
 from thermobear.thermal.builders.bearing import free_volume
 from thermobear.thermal.builders.layout import Layout
 from thermobear.thermal.builders.machine import Machine
 from thermobear.thermal.builders.spec import NetworkSpec
 
-__all__ = ["add_mixture", "add_supply", "immersed_share", "BETA_JET", "OIL_HELD", "GREASE_FILL"]
+__all__ = ["add_mixture", "add_supply", "immersed_share", "BETA_JET"]
 
 BETA_JET = 0.4       #: penetrating share of an oil jet (Brossier et al. 2021; seed 004 §4.5)
-OIL_HELD = 0.05      #: share of the free volume held as oil in a lubricated cavity (estimated)
-GREASE_FILL = 0.3    #: grease fill of the free volume (estimated: usual fills 20–40 %)
+# estimated (materials/network_builders.toml, with their ranges): oil_held, the share of the free volume
+# held as oil in a lubricated cavity; grease_fill, the grease fill of the free volume (usual fills 20–40 %)
 RHO_CP_AIR = 1.1 * 1007.0    #: air near 50 °C [J/(m³ K)] (materials/air_1atm.toml)
 
 
@@ -79,10 +80,11 @@ def add_mixture(spec: NetworkSpec, m: Machine, lay: Layout):
     with sump = (node, {race or balls node: immersed share})."""
     lub, V = m.lubrication, free_volume(lay)
     if lub.supply == "grease":
-        fill = lub.grease_fill if lub.grease_fill is not None else GREASE_FILL
+        fill = lub.grease_fill if lub.grease_fill is not None else estimates.value(m, "grease_fill")
         C, what = V * (fill * lub.rho_cp + (1 - fill) * RHO_CP_AIR), f"grease ({fill:.0%} of the free volume) and air"
     else:
-        C, what = V * (OIL_HELD * lub.rho_cp + (1 - OIL_HELD) * RHO_CP_AIR), "air and the oil held in the cavity"
+        held = estimates.value(m, "oil_held")
+        C, what = V * (held * lub.rho_cp + (1 - held) * RHO_CP_AIR), "air and the oil held in the cavity"
     if lub.oil_air_C_J_K is not None:
         C, what = lub.oil_air_C_J_K, "given"
     spec.node("oil_air", C_J_K=C, estimated=["C_J_K"], description=f"the bearing cavity's mixture: {what}")
@@ -97,6 +99,7 @@ def add_mixture(spec: NetworkSpec, m: Machine, lay: Layout):
               ("housing_washer" if thrust else "outer_race"): immersed_share(y, (lay.dm + lay.D) / 2)}
     V_sump, _ = _sump_volume(m, lay, y)
     spec.node("oil_sump", C_J_K=V_sump * lub.rho_cp, estimated=["C_J_K"],
+              uncertainty=estimates.point_uncertainty("sump_capacity") if lub.sump_volume is None else None,
               description=f"the oil bath: {V_sump * 1e3:.3g} L, level {(y + (lay.dm + lay.D) / 2) * 1e3:.3g} mm above "
                           "the outer raceway's lowest point")
     return fluid, ("oil_sump", shares)
@@ -123,6 +126,7 @@ def _bath(spec, m, lay, housing: Body, sump):
     f_b = max(shares.values())                 # the outer race dips as soon as there is a level
     floor = lub.k * f_b * math.pi * lay.dm * lay.B / (lay.D / 2)
     spec.element("oil_air--oil_sump", "conductance", ("oil_air", node), estimated=["G_W_K"],
+                 uncertainty=estimates.point_uncertainty("bath_mixing"),
                  G_W_K=f"{lub.rho_cp * f_b * V / (2 * math.pi)!r} * abs(op.omega_cage_rad_s) + {floor!r}",
                  description="the balls carry their immersed share of the free volume around at the cage's speed "
                              "(estimated); conduction through the oil as the floor")
@@ -163,7 +167,7 @@ def add_supply(spec: NetworkSpec, m: Machine, lay: Layout, housing: Body, sump) 
                          rho_kg_m3=float(air["rho"]), cp_J_kgK=float(air["cp"]),
                          description="the carrier air through the bearing (its volume at 20 °C, 1 atm)")
     if lub.supply == "grease":
-        fill = lub.grease_fill if lub.grease_fill is not None else GREASE_FILL
+        fill = lub.grease_fill if lub.grease_fill is not None else estimates.value(m, "grease_fill")
         thrust = m.bearing.kind == "thrust"
         for race in (("shaft_washer", "housing_washer") if thrust else ("inner_race", "outer_race")):
             spec.element(f"{race}--oil_air_grease", "planar", (race, "oil_air"), k_W_mK=lub.k,

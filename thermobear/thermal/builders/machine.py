@@ -7,7 +7,9 @@ documented default, resolved from the bearing at build time).
 :func:`thermobear.thermal.prepare_network` checks like a ``networks/*.toml`` file.  A machine is
 immutable and compares by value: scenes that share it share one prepared network.
 
-Defaults (each estimated, with the reasoning):
+Defaults (each estimated, with the reasoning; the estimated constants — seat roughness, microhardness,
+emissivity, mounting joint, fills — with their ranges in ``materials/network_builders.toml``,
+:mod:`~thermobear.thermal.builders.estimates`):
 
 * shaft diameter = the bearing bore; length either side 2.5 d — DIN 748-1 cylindrical shaft ends
   (long series) are 2.1–2.8 d long for d = 25–80 mm; steel C45; free ends in air.
@@ -31,6 +33,7 @@ from dataclasses import dataclass, field, replace
 
 from thermobear.contact.geometry import BallBearing
 from thermobear.errors import InputError
+from thermobear.thermal.builders import estimates
 
 __all__ = ["Shaft", "Housing", "Lubrication", "Machine", "check_machine", "SHAFT_ENDS", "HOUSING_TYPES",
            "HOUSING_ENDS", "SEALS", "OIL_FEEDS"]
@@ -103,7 +106,7 @@ class Housing:
     frame_material: str = "steel-c45"
     air: str = "still"
     air_speed: float = 0.0
-    emissivity: float = 0.8
+    emissivity: float = field(default_factory=lambda: estimates.values()["emissivity"])   # 0.8 (the data's)
     interference: float | None = None
     fit_h_W_m2K: float | None = None
     seals: str = "none"
@@ -143,7 +146,11 @@ class Machine:
     itself reads the speed and the ambient of every operating point);  Fa, Fr [N]: loads for the
     seat pressure of a clearance fit and the contacts' fallback;  t_resolve_s, Bi_max: the
     discretisation rule's resolved time (None: steady state only) and cell Biot number;  cage: a cage node;  name, description,
-    source, notes: of the network table.
+    source, notes: of the network table;  estimates: drawn values of the builders' estimated constants,
+    ``((key, value), ...)`` sorted (:func:`thermobear.thermal.builders.estimates.drawn`; empty: the data's,
+    ``materials/network_builders.toml``);  cells: cell counts held per piece, ``((segment label, n), ...)``
+    (the labels of :attr:`~thermobear.thermal.builders.BuiltNetwork.segments`; empty: the rule's counts)
+    — a drawn machine keeps its nominal's cells, hence its nodes.
     """
 
     bearing: BallBearing
@@ -162,6 +169,8 @@ class Machine:
     description: str = ""
     source: str = ""
     notes: str = ""
+    estimates: tuple = ()
+    cells: tuple = ()
 
     def __str__(self) -> str:
         return self.name

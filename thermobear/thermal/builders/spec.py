@@ -103,13 +103,13 @@ class NetworkSpec:
         self._names: set = set()
 
     def node(self, name: str, *, C_J_K=None, volume_m3=None, mass_kg=None, material=None, T_C=None,
-             description=None, estimated=(), source=None, measured_by=None) -> str:
+             description=None, estimated=(), source=None, measured_by=None, uncertainty=None) -> str:
         """Add a node (a free node with its capacity, or a fixed node with ``T_C``); returns its name."""
         if name in self.nodes:
             raise InputError(f"network {self.name}: nodes.{name}", name, "node names must be unique")
         self.nodes[name] = _clean(dict(C_J_K=C_J_K, volume_m3=volume_m3, mass_kg=mass_kg, material=material,
                                        T_C=T_C, description=description, source=source, measured_by=measured_by,
-                                       estimated=list(estimated)))
+                                       estimated=list(estimated), uncertainty=uncertainty))
         return name
 
     def fixed(self, name: str, T_C, **info) -> str:
