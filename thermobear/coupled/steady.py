@@ -403,8 +403,9 @@ def _batched(load):
     return take(load, np.array([0]), 1) if np.ndim(load.delta_a) == 0 else load
 
 
-def _solve_family(fam: Family, tol_K, load=None, prepared=None) -> list:
-    """Per point of a family: a SteadyState or the exception that stopped it."""
+def _solve_family(fam: Family, tol_K, load=None, prepared=None, starts=None) -> list:
+    """Per point of a family: a SteadyState or the exception that stopped it (``starts``: the film
+    load model's dry starts already solved, :func:`_film_family`)."""
     try:
         pre = prepared_for(fam.scene, prepared if prepared is not None and prepared.serves(fam.scene) else None)
     except InputError as exc:
@@ -413,7 +414,7 @@ def _solve_family(fam: Family, tol_K, load=None, prepared=None) -> list:
     if load is not None:
         return _solve_loaded(fam, load, template, cp, tol_K)
     if fam.models["load_model"][0] == "film":
-        return _film_family(fam, template, cp, tol_K)
+        return _film_family(fam, template, cp, tol_K, starts)
     out = [None] * fam.B
     pos = {i: k for k, i in enumerate(fam.index)}
     for sub, ld in split_failures(family_loads, fam):
@@ -423,19 +424,19 @@ def _solve_family(fam: Family, tol_K, load=None, prepared=None) -> list:
     return out
 
 
-def _points_apart(fam: Family, tol_K, load, prepared) -> list:
+def _points_apart(fam: Family, tol_K, load, prepared, starts=None) -> list:
     """:func:`_solve_family`; when a point's iterate leaves what the models can represent (an
     InputError, e.g. a lubricant past its refusal temperature), each point again on its own, so
     that the error is that point's and the others are solved."""
     try:
-        return _solve_family(fam, tol_K, load, prepared)
+        return _solve_family(fam, tol_K, load, prepared, starts)
     except InputError as exc:
         if fam.B == 1:
             return [exc]
     out = []
     for b in range(fam.B):
         one = Family(scenes=(fam.scenes[b],), index=(fam.index[b],), models=fam.models, dry=(fam.dry[b],))
-        out += _points_apart(one, tol_K, None if load is None else _batched(take(load, b, fam.B)), prepared)
+        out += _points_apart(one, tol_K, None if load is None else _batched(take(load, b, fam.B)), prepared, starts)
     return out
 
 
@@ -443,16 +444,25 @@ def _node_T(st: SteadyState, template) -> np.ndarray:
     return np.array([st.T_C[n] + _C0 for n in template.nodes])
 
 
-def _film_family(fam: Family, template, cp: Coupling, tol_K) -> list:
+def _film_family(fam: Family, template, cp: Coupling, tol_K, starts=None) -> list:
     """The film load model's fixed point on the film temperature for a family (module docstring):
-    a dry start, then film load updates, each followed by a steady state started from the last."""
+    a dry start, then film load updates, each followed by a steady state started from the last.
+
+    ``starts``: point (``fam.index``) → the steady state of the same point with the same models but the dry
+    Jones–Harris loads, where the caller solved it already (a model alternative of the point, to a
+    tolerance at least as tight as the start's): the dry start of those points, not solved again."""
     B = fam.B
-    dry = Family(scenes=fam.scenes, index=fam.index, dry=fam.dry,
-                 models={**fam.models, "load_model": ("jones_harris", "start of the film fixed point")})
+    pos = {i: k for k, i in enumerate(fam.index)}
     T_ref = np.array([film_temperature_C(s) for s in fam.scenes])
     start = np.full((B, len(template.nodes)), np.nan)
-    pos = {i: k for k, i in enumerate(fam.index)}
-    for sub, ld in split_failures(family_loads, dry):
+    for i, st in (starts or {}).items():
+        if i in pos:
+            T_ref[pos[i]], start[pos[i]] = st.T_contacts_C, _node_T(st, template)
+    cold = [b for b, i in enumerate(fam.index) if not (starts and i in starts)]
+    dry = Family(scenes=tuple(fam.scenes[b] for b in cold), index=tuple(fam.index[b] for b in cold),
+                 dry=tuple(fam.dry[b] for b in cold),
+                 models={**fam.models, "load_model": ("jones_harris", "start of the film fixed point")})
+    for sub, ld in split_failures(family_loads, dry) if cold else ():
         if isinstance(ld, Exception):
             continue          # no dry equilibrium to start from: the film model decides on its own
         for i, st in zip(sub.index, _solve_loaded(sub, ld, template, cp, max(tol_K, 1e-3))):
@@ -576,7 +586,9 @@ def _steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> 
         # counts, and its validity is checked on its own (SteadyState.warnings, limits.point_warnings)
         warnings.simplefilter("ignore", OutsideValidity)
         shared: list = [prepared] if prepared is not None else []   # one prepare per machine of this call
-        for fam in fams:
+        twins = _dry_twins(owner, plans)
+        # the dry families first: their answers are the dry starts of the film load model's fixed points
+        for fam in sorted(fams, key=lambda f: f.models["load_model"][0] == "film"):
             pre = next((p for p in shared if p.serves(fam.scene)), None)
             if pre is None and fam.scene.network is not None:
                 try:
@@ -584,13 +596,29 @@ def _steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> 
                     shared.append(pre)
                 except InputError:
                     pre = None              # the family's own solve names the error per point
-            for j, r in zip(fam.index, _points_apart(fam, tol_K, None if load is None else _batched(load), pre)):
+            starts = {j: res[twins[j]] for j in fam.index if j in twins and isinstance(res[twins[j]], SteadyState)}
+            for j, r in zip(fam.index, _points_apart(fam, tol_K, None if load is None else _batched(load), pre,
+                                                     starts)):
                 res[j] = r
     parts: dict = {}
     for (i, w), r in zip(owner, res):
         parts.setdefault(i, []).append((w, r))
     for i, p in parts.items():
         out[i] = blend_states(p, SteadyState)
+    return out
+
+
+def _dry_twins(owner, plans) -> dict:
+    """Job → job: for a film-load-model alternative of a point, its alternative with the same model
+    choices but the dry Jones–Harris loads (the film fixed point's dry start), where the point has one."""
+    def sig(models):
+        return tuple(sorted((k, repr(v[0])) for k, v in models.items() if k != "load_model"))
+    dry = {(i, sig(m)): j for j, ((i, _), (m, _)) in enumerate(zip(owner, plans))
+           if m["load_model"][0] == "jones_harris"}
+    out = {}
+    for j, ((i, _), (m, _)) in enumerate(zip(owner, plans)):
+        if m["load_model"][0] == "film" and (i, sig(m)) in dry:
+            out[j] = dry[(i, sig(m))]
     return out
 
 
