@@ -448,24 +448,31 @@ def _film_family(fam: Family, template, cp: Coupling, tol_K, starts=None) -> lis
     """The film load model's fixed point on the film temperature for a family (module docstring):
     a dry start, then film load updates, each followed by a steady state started from the last.
 
-    ``starts``: point (``fam.index``) → the steady state of the same point with the same models but the dry
-    Jones–Harris loads, where the caller solved it already (a model alternative of the point, to a
-    tolerance at least as tight as the start's): the dry start of those points, not solved again."""
+    ``starts``: point (``fam.index``) → ``(state, twin)``, a steady state of the same operating point the
+    caller solved already: with ``twin`` the same models but the dry Jones–Harris loads, to a tolerance at
+    least as tight as the start's (that point's dry start, not solved again); otherwise another model
+    alternative of the point, whose node temperatures start the Newton iteration of its dry start (the
+    same equilibrium, reached in fewer steps)."""
     B = fam.B
     pos = {i: k for k, i in enumerate(fam.index)}
+    starts = {i: v for i, v in (starts or {}).items() if i in pos}
     T_ref = np.array([film_temperature_C(s) for s in fam.scenes])
     start = np.full((B, len(template.nodes)), np.nan)
-    for i, st in (starts or {}).items():
-        if i in pos:
+    near = start.copy()                   # the dry start's Newton start (NaN: the network's own)
+    for i, (st, twin) in starts.items():
+        if twin:
             T_ref[pos[i]], start[pos[i]] = st.T_contacts_C, _node_T(st, template)
-    cold = [b for b, i in enumerate(fam.index) if not (starts and i in starts)]
+        else:
+            near[pos[i]] = _node_T(st, template)
+    cold = [b for b, i in enumerate(fam.index) if not (i in starts and starts[i][1])]
     dry = Family(scenes=tuple(fam.scenes[b] for b in cold), index=tuple(fam.index[b] for b in cold),
                  dry=tuple(fam.dry[b] for b in cold),
                  models={**fam.models, "load_model": ("jones_harris", "start of the film fixed point")})
     for sub, ld in split_failures(family_loads, dry) if cold else ():
         if isinstance(ld, Exception):
             continue          # no dry equilibrium to start from: the film model decides on its own
-        for i, st in zip(sub.index, _solve_loaded(sub, ld, template, cp, max(tol_K, 1e-3))):
+        rows = [pos[i] for i in sub.index]
+        for i, st in zip(sub.index, _solve_loaded(sub, ld, template, cp, max(tol_K, 1e-3), near[rows])):
             if isinstance(st, SteadyState):
                 T_ref[pos[i]], start[pos[i]] = st.T_contacts_C, _node_T(st, template)
     out, hist = [None] * B, [[] for _ in range(B)]
@@ -596,7 +603,7 @@ def _steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> 
                     shared.append(pre)
                 except InputError:
                     pre = None              # the family's own solve names the error per point
-            starts = {j: res[twins[j]] for j in fam.index if j in twins and isinstance(res[twins[j]], SteadyState)}
+            starts = _starts(fam, twins, owner, plans, res)
             for j, r in zip(fam.index, _points_apart(fam, tol_K, None if load is None else _batched(load), pre,
                                                      starts)):
                 res[j] = r
@@ -619,6 +626,26 @@ def _dry_twins(owner, plans) -> dict:
     for j, ((i, _), (m, _)) in enumerate(zip(owner, plans)):
         if m["load_model"][0] == "film" and (i, sig(m)) in dry:
             out[j] = dry[(i, sig(m))]
+    return out
+
+
+def _starts(fam: Family, twins: dict, owner, plans, res) -> dict:
+    """Job → (steady state, twin) for the points of a film family (:func:`_film_family`): its dry twin's
+    answer, else the answer of another alternative of the same point already solved (dry loads first)."""
+    if fam.models["load_model"][0] != "film":
+        return {}
+    jobs: dict = {}
+    for k, (i, _) in enumerate(owner):
+        jobs.setdefault(i, []).append(k)
+    out = {}
+    for j in fam.index:
+        if j in twins and isinstance(res[twins[j]], SteadyState):
+            out[j] = (res[twins[j]], True)
+            continue
+        same = [k for k in jobs[owner[j][0]] if isinstance(res[k], SteadyState)]
+        if same:
+            k = min(same, key=lambda k: plans[k][0]["load_model"][0] != "jones_harris")
+            out[j] = (res[k], False)
     return out
 
 
