@@ -262,9 +262,10 @@ def film_options(models: dict) -> dict:
             "starvation": bool(models.get("starvation", (False,))[0])}
 
 
-def _film_choices(scene: Scene, out: dict) -> None:
+def _film_choices(scene: Scene, out: dict, K_z: dict | None = None) -> None:
     """``traction``, ``inlet_heating`` and ``starvation``, each with its reason (see the module docstring);
-    evaluated at the scene's temperature (prescribed, else the oil inlet or the ambient)."""
+    evaluated at the scene's temperature (prescribed, else the oil inlet or the ambient).  ``K_z``: bearing
+    kind → SKF K_z read by this call's caller for its scenes (filled here as kinds come up)."""
     m, b, oil = scene.models, scene.bearing, scene.lubricant
     if "traction" in m:
         out["traction"] = (m["traction"], "chosen in the scene")
@@ -293,15 +294,20 @@ def _film_choices(scene: Scene, out: dict) -> None:
     elif not wet or scene.supply not in K_RS or b.bore is None or b.outer_diameter is None:
         out["starvation"] = (False, "fully flooded (no replenishment factor for this supply or bearing: bore/OD unknown)")
     else:
-        phi = float(phi_rs(scene.n_rpm, oil.nu(float(T)), b.bore * 1e3, b.outer_diameter * 1e3, skf_K_z(b.kind),
+        K_z = {} if K_z is None else K_z
+        if b.kind not in K_z:
+            K_z[b.kind] = skf_K_z(b.kind)
+        phi = float(phi_rs(scene.n_rpm, oil.nu(float(T)), b.bore * 1e3, b.outer_diameter * 1e3, K_z[b.kind],
                            K_RS[scene.supply]))
         out["starvation"] = (True, f"{scene.supply}: SKF Φ_rs = {phi:.3f} at {T:g} °C on the rolling force "
                                    "(kinematic replenishment; → 1 when the track refills)")
 
 
-def _choose(scene: Scene, hs: tuple, lm: tuple | None) -> dict:
+def _choose(scene: Scene, hs: tuple, lm: tuple | None, film: dict | None = None, K_z: dict | None = None) -> dict:
     """The model choices of a scene, given the high-speed choice ``hs`` and, for a combined load the
-    scene does not fix, the load model ``lm`` (each ``(choice, reason)``)."""
+    scene does not fix, the load model ``lm`` (each ``(choice, reason)``).  ``film``: the scene's
+    :func:`_film_choices` (the same for each alternative of the scene: an empty dict is filled on the first
+    call), ``K_z`` as there."""
     b, m = scene.bearing, dict(scene.models)
     out = {}
     if scene.T_C is not None:
@@ -348,7 +354,10 @@ def _choose(scene: Scene, hs: tuple, lm: tuple | None) -> dict:
                          else "Jones outer-raceway control")
     out["hertz"] = (m.get("hertz", "exact"), "chosen in the scene" if "hertz" in m else
                     "exact elliptic integrals (approximations err 1–5 %)")
-    _film_choices(scene, out)
+    film = {} if film is None else film
+    if not film:
+        _film_choices(scene, film, K_z)
+    out.update(film)
     out["clearance"] = clearance_choice(scene)
     return out
 
@@ -539,20 +548,21 @@ def plan_many(scenes) -> list:
     dry: dict = {}
     for (brg, no_M, stiff, low), members in groups.items():
         _batch_dry(brg, no_M, stiff, low, list(members), dry)
-    out = []
+    out, K_z = [], {}              # K_z: bearing kind → SKF K_z, read once for these scenes
     for sc, alts in zip(scenes, hs_alts):
         if isinstance(alts, Exception):
             out.append(alts)
             continue
         try:
-            out.append(_alternatives(sc, alts, dry))
+            out.append(_alternatives(sc, alts, dry, K_z))
         except (InputError, SolverError) as exc:
             out.append(exc)
     return out
 
 
-def _alternatives(sc: Scene, hs_alts: list, dry: dict) -> list:
+def _alternatives(sc: Scene, hs_alts: list, dry: dict, K_z: dict) -> list:
     out = []
+    film: dict = {}
     for hs, w in hs_alts:
         k = _dry_key(sc, hs[0] == "yes")
         d = dry.get(k) if k is not None else None
@@ -560,7 +570,7 @@ def _alternatives(sc: Scene, hs_alts: list, dry: dict) -> list:
                else [(None, 1.0)])
         for lm, w2 in lms:
             if w * w2 >= MIN_WEIGHT:
-                out.append(Alternative(models=_choose(sc, hs, lm), dry=d if isinstance(d, DryRow) else None,
+                out.append(Alternative(models=_choose(sc, hs, lm, film, K_z), dry=d if isinstance(d, DryRow) else None,
                                        weight=w * w2))
     total = sum(a.weight for a in out)
     return [a if total == 1.0 else Alternative(a.models, a.dry, a.weight / total) for a in out]
