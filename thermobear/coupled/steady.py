@@ -559,17 +559,7 @@ def _steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> 
             raise InputError("operation.T_C", sc.T_C, "the scene prescribes its temperature: use solve() "
                              "or remove operation.T_C to solve the thermal network")
     out: list = [None] * len(scenes)
-    alternatives: list = [None] * len(scenes)
-    bounds: dict = {}
-    for k, sc in enumerate(scenes):          # before any solve: loads no answer exists for, named as the scene does
-        if sc.bearing not in bounds:
-            bounds[sc.bearing] = contact_bounds(sc.bearing)
-        try:
-            check_loads(sc.bearing, sc.Fa, sc.Fr, sc.M, sc.n_rpm, Fz=sc.Fz, My=sc.My, names=SCENE_LOADS,
-                        bounds=bounds[sc.bearing])
-            check_static_safety(sc)
-        except InputError as exc:
-            alternatives[k] = exc
+    alternatives: list = _refused(scenes)
     todo = [k for k, a in enumerate(alternatives) if a is None]
     for k, alts in zip(todo, plan_many([scenes[k] for k in todo])):
         alternatives[k] = alts
@@ -612,6 +602,36 @@ def _steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> 
         parts.setdefault(i, []).append((w, r))
     for i, p in parts.items():
         out[i] = blend_states(p, SteadyState)
+    return out
+
+
+def _refused(scenes) -> list:
+    """Per scene, before any solve: the InputError of loads no answer exists for
+    (:func:`~thermobear.loads.api.check_loads`, named as the scene does, then the static safety), or None.
+    The loads of the scenes of one bearing are checked in one call; where it refuses, scene by scene."""
+    out: list = [None] * len(scenes)
+    groups: dict = {}
+    for k, sc in enumerate(scenes):
+        groups.setdefault((sc.bearing, sc.M is None, sc.My is None), []).append(k)
+    for (brg, no_M, no_My), ks in groups.items():
+        bounds, checked = contact_bounds(brg), False
+        if len(ks) > 1:
+            def col(attr):
+                return np.array([getattr(scenes[k], attr) for k in ks], float)
+            F = [col("Fa"), col("Fr"), None if no_M else col("M"), col("n_rpm"), col("Fz"), None if no_My else col("My")]
+            try:             # (a value that is not a number skips the other checks: then scene by scene)
+                check_loads(brg, *F[:4], Fz=F[4], My=F[5], names=SCENE_LOADS, bounds=bounds)
+                checked = all(np.isfinite(v).all() for v in F if v is not None)
+            except InputError:
+                pass                          # said scene by scene below
+        for k in ks:
+            sc = scenes[k]
+            try:
+                if not checked:
+                    check_loads(brg, sc.Fa, sc.Fr, sc.M, sc.n_rpm, Fz=sc.Fz, My=sc.My, names=SCENE_LOADS, bounds=bounds)
+                check_static_safety(sc)
+            except InputError as exc:
+                out[k] = exc
     return out
 
 
