@@ -69,7 +69,7 @@ import numpy as np
 from thermobear.arrays import take
 from thermobear.errors import InputError, NoEquilibrium, SolverError
 from thermobear.loads import LoadDistribution, load_distribution, needs_high_speed
-from thermobear.loads.highspeed import load_distribution_high_speed
+from thermobear.loads.highspeed import load_distribution_high_speed_full
 from thermobear.losses.cage import cage_land_estimate
 from thermobear.losses.seals import CONTACT_SEALS, seal_counterface_estimate_mm
 from thermobear.losses.skf import K_RS, drag_loss_factor_VM, phi_rs, skf_K_z
@@ -149,10 +149,15 @@ def moments(scene: Scene) -> tuple:
 
 def _solve_dry(brg, Fa, Fr, M, stiffness, n_rpm, *, continuation=True, Fz=0.0, My=None) -> LoadDistribution:
     """Dry Jones–Harris load distribution (high-speed form when ``n_rpm`` is given); arrays batch."""
+    return _solve_dry_full(brg, Fa, Fr, M, stiffness, n_rpm, continuation=continuation, Fz=Fz, My=My)[0]
+
+
+def _solve_dry_full(brg, Fa, Fr, M, stiffness, n_rpm, *, continuation=True, Fz=0.0, My=None) -> tuple:
+    """(:func:`_solve_dry`, the high-speed form's HighSpeedExtras or None)."""
     if n_rpm is None:
         return load_distribution(brg, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, stiffness=stiffness, continuation=continuation,
-                                 refuse_overload=False)      # the contact set refuses overloads per point
-    return load_distribution_high_speed(brg, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, n_rpm=n_rpm, stiffness=stiffness)
+                                 refuse_overload=False), None    # the contact set refuses overloads per point
+    return load_distribution_high_speed_full(brg, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, n_rpm=n_rpm, stiffness=stiffness)
 
 
 def dry_load(scene: Scene, high_speed: bool) -> LoadDistribution:
@@ -388,13 +393,15 @@ def clearance_choice(scene: Scene) -> tuple:
 @dataclass(frozen=True)
 class DryRow:
     """One point's dry load distribution inside a batched solution (sliced when asked for), with the
-    film test's criteria: ``n_open`` balls off a race, ``q`` the least contact load over the greatest."""
+    film test's criteria: ``n_open`` balls off a race, ``q`` the least contact load over the greatest;
+    ``extras`` the batch's per-ball details of the high-speed form (the film load model starts from them)."""
 
     batch: LoadDistribution
     row: int
     B: int
     n_open: int
     q: float
+    extras: object = None          # the high-speed form's HighSpeedExtras of the batch (None: low-speed form)
 
     def load(self) -> LoadDistribution:
         return take(self.batch, self.row, self.B)
@@ -584,7 +591,7 @@ def _batch_dry(brg, no_M, stiff, low, keys, dry):
     n = None if low else np.array([k[5] for k in keys])
     Fz, My = np.array([k[6] for k in keys]), None if no_M else np.array([k[7] for k in keys])
     try:               # no continuation inside a batch: a case that needs it is left to its own solve
-        ld = _solve_dry(brg, Fa, Fr, M, stiff, n, continuation=len(keys) == 1, Fz=Fz, My=My)
+        ld, ex = _solve_dry_full(brg, Fa, Fr, M, stiff, n, continuation=len(keys) == 1, Fz=Fz, My=My)
     except (SolverError, InputError) as exc:     # loads the contacts cannot carry: said by the load step
         if len(keys) == 1:
             dry[keys[0]] = exc
@@ -599,4 +606,4 @@ def _batch_dry(brg, no_M, stiff, low, keys, dry):
     Qmax = np.maximum(Qi, Qo).max(axis=1)
     q = np.where(Qmax > 0.0, np.minimum(Qi, Qo).min(axis=1) / np.where(Qmax > 0.0, Qmax, 1.0), 0.0)
     for j, k in enumerate(keys):
-        dry[k] = DryRow(batch=ld, row=j, B=B, n_open=int(n_open[j]), q=float(max(q[j], 0.0)))
+        dry[k] = DryRow(batch=ld, row=j, B=B, n_open=int(n_open[j]), q=float(max(q[j], 0.0)), extras=ex)

@@ -92,6 +92,16 @@ def dry_loads(dry) -> LoadDistribution:
     return stack_loads([d.load() if isinstance(d, DryRow) else d for d in dry])
 
 
+def _dry_start(fam) -> tuple | None:
+    """(LoadDistribution, HighSpeedExtras) of the family's points from the dry high-speed solutions their model
+    choice solved (one batch), or None."""
+    d = fam.dry
+    if not (all(isinstance(r, DryRow) and r.extras is not None for r in d) and len({id(r.batch) for r in d}) == 1):
+        return None
+    rows = np.array([r.row for r in d])
+    return take(d[0].batch, rows, d[0].B), take(d[0].extras, rows, d[0].B)
+
+
 @dataclass(frozen=True)
 class Family:
     """Operating points that share everything but numbers (see the module docstring).
@@ -196,18 +206,19 @@ def _film_inputs(scene: Scene, n_rpm, T_film_C, lubricant=None):
     return u, np.asarray(lub.eta(T), float), np.asarray(lub.alpha_p_at(T), float)
 
 
-def film_loads(scene: Scene, models: dict, Fa, Fr, M, n_rpm, T_film_C, Fz=0.0, My=None, lubricant=None
-               ) -> LoadDistribution:
+def film_loads(scene: Scene, models: dict, Fa, Fr, M, n_rpm, T_film_C, Fz=0.0, My=None, lubricant=None,
+               start=None) -> LoadDistribution:
     """Film load model (:mod:`thermobear.loads.film`, or :mod:`thermobear.loads.highspeed` with
     ``film=`` in the high-speed form), films at ``T_film_C`` [°C]; arrays: one load case each
-    (``lubricant`` per point: :attr:`Family.lubricant`)."""
+    (``lubricant`` per point: :attr:`Family.lubricant`; ``start``: the high-speed form's dry solution of
+    these cases, ``(LoadDistribution, HighSpeedExtras)``, where the caller has it)."""
     stiff = scene.models.get("stiffness", "nominal")
     u, eta, ap = _film_inputs(scene, n_rpm, T_film_C, lubricant)
     batch = np.ndim(Fa) > 0
     val = (lambda v: np.asarray(v, float)) if batch else float     # noqa: E731
     if models["high_speed"][0] == "yes":
         return load_distribution_high_speed(scene.bearing, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, n_rpm=val(n_rpm),
-                                            stiffness=stiff, film=dict(eta=val(eta), alpha_p=val(ap)))
+                                            stiffness=stiff, film=dict(eta=val(eta), alpha_p=val(ap)), start=start)
     uu = u[:, None] if batch else float(u)
     return film_load_distribution(scene.bearing, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, u_i=uu, u_o=uu, eta=val(eta),
                                   alpha_p=val(ap), stiffness=stiff)
@@ -224,7 +235,8 @@ def family_loads(fam: Family, T_film_C=None) -> LoadDistribution:
         return closed_form_axial(sc.bearing, Fa)
     if lm == "film":
         T = np.array([film_temperature_C(s) for s in fam.scenes]) if T_film_C is None else np.asarray(T_film_C, float)
-        return film_loads(sc, m, Fa, Fr, M, fam.values("n_rpm"), T, **F5, lubricant=fam.lubricant)
+        return film_loads(sc, m, Fa, Fr, M, fam.values("n_rpm"), T, **F5, lubricant=fam.lubricant,
+                          start=_dry_start(fam) if m["high_speed"][0] == "yes" else None)
     if all(d is not None for d in fam.dry):
         return dry_loads(fam.dry)
     stiff = sc.models.get("stiffness", "nominal")
