@@ -210,8 +210,9 @@ def film_loads(scene: Scene, models: dict, Fa, Fr, M, n_rpm, T_film_C, Fz=0.0, M
                start=None) -> LoadDistribution:
     """Film load model (:mod:`thermobear.loads.film`, or :mod:`thermobear.loads.highspeed` with
     ``film=`` in the high-speed form), films at ``T_film_C`` [°C]; arrays: one load case each
-    (``lubricant`` per point: :attr:`Family.lubricant`; ``start``: the high-speed form's dry solution of
-    these cases, ``(LoadDistribution, HighSpeedExtras)``, where the caller has it)."""
+    (``lubricant`` per point: :attr:`Family.lubricant`; ``start``: a solution of these cases to start from,
+    where the caller has one: the high-speed form's dry ``(LoadDistribution, HighSpeedExtras)``, the low-speed
+    form's LoadDistribution, dry or with the film)."""
     stiff = scene.models.get("stiffness", "nominal")
     u, eta, ap = _film_inputs(scene, n_rpm, T_film_C, lubricant)
     batch = np.ndim(Fa) > 0
@@ -221,12 +222,14 @@ def film_loads(scene: Scene, models: dict, Fa, Fr, M, n_rpm, T_film_C, Fz=0.0, M
                                             stiffness=stiff, film=dict(eta=val(eta), alpha_p=val(ap)), start=start)
     uu = u[:, None] if batch else float(u)
     return film_load_distribution(scene.bearing, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, u_i=uu, u_o=uu, eta=val(eta),
-                                  alpha_p=val(ap), stiffness=stiff)
+                                  alpha_p=val(ap), stiffness=stiff, start=start)
 
 
-def family_loads(fam: Family, T_film_C=None) -> LoadDistribution:
+def family_loads(fam: Family, T_film_C=None, start=None) -> LoadDistribution:
     """The batched load distribution of a family (leading axis B) by its load model; ``T_film_C``
-    (B,) [°C] the film temperatures of the film load model (default :func:`film_temperature_C`)."""
+    (B,) [°C] the film temperatures of the film load model (default :func:`film_temperature_C`), which
+    starts from the dry solutions the model choice solved, or (low-speed form) from ``start``, a batched
+    solution of the same loads (e.g. the film loads at the last film temperatures)."""
     sc, m = fam.scene, fam.models
     F = fam.loads()
     Fa, Fr, M, F5 = F["Fa"], F["Fr"], F["M"], dict(Fz=F["Fz"], My=F["My"])
@@ -235,8 +238,11 @@ def family_loads(fam: Family, T_film_C=None) -> LoadDistribution:
         return closed_form_axial(sc.bearing, Fa)
     if lm == "film":
         T = np.array([film_temperature_C(s) for s in fam.scenes]) if T_film_C is None else np.asarray(T_film_C, float)
-        return film_loads(sc, m, Fa, Fr, M, fam.values("n_rpm"), T, **F5, lubricant=fam.lubricant,
-                          start=_dry_start(fam) if m["high_speed"][0] == "yes" else None)
+        if m["high_speed"][0] == "yes":
+            start = _dry_start(fam)
+        elif start is None and all(isinstance(d, DryRow) for d in fam.dry):
+            start = dry_loads(fam.dry)
+        return film_loads(sc, m, Fa, Fr, M, fam.values("n_rpm"), T, **F5, lubricant=fam.lubricant, start=start)
     if all(d is not None for d in fam.dry):
         return dry_loads(fam.dry)
     stiff = sc.models.get("stiffness", "nominal")
@@ -305,8 +311,8 @@ def scene_contacts(scene: Scene, models: dict | None = None, load: LoadDistribut
 
 def split_failures(fn, fam: Family, *args):
     """``fn(fam, *args)`` for a family; when it raises a SolverError / InputError for the whole batch,
-    the family is halved until the failing points stand alone.  Returns [(sub-family, result or
-    exception)]."""
+    the family is halved until the failing points stand alone (arrays with a leading axis B and batched
+    load distributions among ``args`` halved with it).  Returns [(sub-family, result or exception)]."""
     try:
         return [(fam, fn(fam, *args))]
     except (SolverError, InputError) as exc:
@@ -316,6 +322,7 @@ def split_failures(fn, fam: Family, *args):
     out = []
     for part in (slice(0, h), slice(h, fam.B)):
         sub = Family(scenes=fam.scenes[part], index=fam.index[part], models=fam.models, dry=fam.dry[part])
-        sub_args = [a[part] if isinstance(a, np.ndarray) and a.shape[:1] == (fam.B,) else a for a in args]
+        sub_args = [a[part] if isinstance(a, np.ndarray) and a.shape[:1] == (fam.B,) else
+                    take(a, np.arange(fam.B)[part], fam.B) if isinstance(a, LoadDistribution) else a for a in args]
         out += split_failures(fn, sub, *sub_args)
     return out

@@ -41,7 +41,7 @@ from thermobear.coupled.blend import blend_states
 from thermobear.coupled.clearance import clearance_loop
 from thermobear.coupled.fixedpoint import solve_coupled
 from thermobear.coupled.pipeline import (Family, families, family_contacts, family_loads, film_temperature_C,
-                                        split_failures)
+                                        split_failures, stack_loads)
 from thermobear.coupled.limits import emit, family_warnings, overloads
 from thermobear.coupled.ratings import check_static_safety
 from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepare, prepared_for
@@ -475,19 +475,21 @@ def _film_family(fam: Family, template, cp: Coupling, tol_K, starts=None) -> lis
         for i, st in zip(sub.index, _solve_loaded(sub, ld, template, cp, max(tol_K, 1e-3), near[rows])):
             if isinstance(st, SteadyState):
                 T_ref[pos[i]], start[pos[i]] = st.T_contacts_C, _node_T(st, template)
-    out, hist = [None] * B, [[] for _ in range(B)]
+    out, hist, film = [None] * B, [[] for _ in range(B)], {}
     live = np.arange(B)
     for k in range(1, _FILM_MAXITER + 1):
         if live.size == 0:
             break
         sub = Family(scenes=tuple(fam.scenes[j] for j in live), index=tuple(fam.index[j] for j in live),
                      models=fam.models, dry=tuple(fam.dry[j] for j in live))
-        results = {}
-        for part, ld in split_failures(family_loads, sub, T_ref[live]):
+        results = {}           # (the low-speed film loads start from the last ones: the same loads)
+        last = stack_loads([take(*film[j]) for j in live]) if k > 1 and fam.models["high_speed"][0] == "no" else None
+        for part, ld in split_failures(family_loads, sub, T_ref[live], last):
             idx = [pos[i] for i in part.index]
             res = [ld] * part.B if isinstance(ld, Exception) else _solve_loaded(part, ld, template, cp, tol_K,
                                                                                 start[idx])
             results.update(zip(idx, res))
+            film.update({j: (ld, r, part.B) for r, j in enumerate(idx)})
         nxt = []
         for j in live:
             st = results[j]
