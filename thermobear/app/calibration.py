@@ -20,13 +20,15 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.optimize import least_squares
 
 from thermobear.app.rig import Comparison, RigLog, compare, simulate_log, special_target
 from thermobear.errors import InputError, NoConvergence
+from thermobear.lazy import lazy_module
 from thermobear.losses.skf import skf_constants
 from thermobear.scene import Scene
 from thermobear.scene.network import network_spec
+
+optimize = lazy_module("scipy.optimize")    # least_squares: loaded by its first use
 
 __all__ = ["calibrate", "Calibration", "parameter_names"]
 
@@ -242,7 +244,7 @@ def calibrate(scene: Scene, log: RigLog, params: list, mapping: dict, *, T0_C=No
     m, p = r0.size, len(names)
     if m < p:
         raise InputError("--param", ", ".join(names), f"{p} parameters but only {m} measured values")
-    res = least_squares(resid, xs0, method="trf", diff_step=diff_step, max_nfev=max_nfev, x_scale=1.0)
+    res = optimize.least_squares(resid, xs0, method="trf", diff_step=diff_step, max_nfev=max_nfev, x_scale=1.0)
     rms = float(np.sqrt(np.mean(res.fun**2))) if m else 0.0
     if res.status <= 0:
         raise NoConvergence(f"calibration did not converge: {res.message}", iterations=int(res.nfev),

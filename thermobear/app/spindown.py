@@ -17,12 +17,14 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.integrate import solve_ivp
-from scipy.optimize import least_squares
 
 from thermobear.coupled import scene_losses
 from thermobear.errors import InputError, NoConvergence
+from thermobear.lazy import lazy_module
 from thermobear.models import plan
+
+optimize = lazy_module("scipy.optimize")    # least_squares: loaded by its first use
+integrate = lazy_module("scipy.integrate")  # solve_ivp: loaded by the first spin-down
 
 __all__ = ["torque_power_law", "omega_power_law", "angle_power_law", "stop_time",
            "total_angle", "SpinDown", "integrate_spin_down", "PowerLawFit",
@@ -193,7 +195,7 @@ def integrate_spin_down(J, torque, omega0, t_end, *, t_eval=None, rtol=1e-10, at
         return y[0]
     stopped.terminal, stopped.direction = True, -1
 
-    sol = solve_ivp(rhs, (0.0, t_end), [omega0, 0.0], method="DOP853", rtol=rtol,
+    sol = integrate.solve_ivp(rhs, (0.0, t_end), [omega0, 0.0], method="DOP853", rtol=rtol,
                     atol=[atol, atol], events=stopped, dense_output=True)
     if sol.status < 0:
         raise NoConvergence(f"spin-down integration failed: {sol.message}", iterations=sol.nfev,
@@ -351,7 +353,7 @@ def fit_power_law(t, omega, J, *, omega0=None, n0=0.5, max_nfev=200, tol=1e-12):
     lo = [-np.inf, 0.0] + ([0.0] if fit_w0 else [])
     hi = [np.inf, 1.95] + ([np.inf] if fit_w0 else [])
     try:
-        res = least_squares(lambda p: model(p) - w, p0, bounds=(lo, hi), x_scale="jac",
+        res = optimize.least_squares(lambda p: model(p) - w, p0, bounds=(lo, hi), x_scale="jac",
                             max_nfev=max_nfev, xtol=tol, ftol=tol, gtol=tol)
     except (ValueError, FloatingPointError) as exc:
         raise NoConvergence(f"spin-down fit failed: {exc}", iterations=0) from None

@@ -24,9 +24,11 @@ Inputs whose draws do not vary (a zero-width range) get zero.
 from __future__ import annotations
 
 import numpy as np
-from scipy.stats import rankdata
 
 from thermobear.errors import InputError
+from thermobear.lazy import lazy_module
+
+stats = lazy_module("scipy.stats")          # rankdata: loaded by the first ranking
 
 __all__ = ["bands", "ranking", "SENSITIVITY"]
 
@@ -90,8 +92,8 @@ def ranking(inputs, X, outputs: dict, method: str = "src") -> dict:
         SRC[live] = beta
         res = np.sum((Zy - Zx[:, live] @ beta) ** 2, axis=0)
         r2 = [float(1.0 - r / n) if s > 0 else None for r, s in zip(res, sy)]
-    Rx, _ = _std(np.column_stack([rankdata(c) for c in Xk.T]) if Xk.shape[1] else Xk)
-    Ry, _ = _std(np.column_stack([rankdata(c) for c in Yk.T]))
+    Rx, _ = _std(np.column_stack([stats.rankdata(c) for c in Xk.T]) if Xk.shape[1] else Xk)
+    Ry, _ = _std(np.column_stack([stats.rankdata(c) for c in Yk.T]))
     RHO = np.where(live[:, None], Rx.T @ Ry / n, 0.0)
     SLOPE = np.where(live[:, None], SRC * sy[None, :] / np.where(live, sx, 1.0)[:, None], 0.0)
     out = {}

@@ -25,12 +25,12 @@ import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.optimize import brentq
 
 from thermobear.contact.geometry import BallBearing
 from thermobear.coupled.sources import prepare
 from thermobear.coupled.steady import SteadyState, steady_state, steady_states
 from thermobear.errors import InputError, NoConvergence, NoSpeedRoot, OutsideValidity, ThermalRunaway
+from thermobear.lazy import lazy_module
 from thermobear.losses import bearing_losses
 from thermobear.lubrication.lubricant import Lubricant, lubricant
 from thermobear.rating.iso76 import static_equivalent_load
@@ -39,6 +39,8 @@ from thermobear.rating.speeds import (din732_heat_flow, din732_parameters, din73
                                       reference_heat_flow_density, reference_surface, standard_reference_speed)
 from thermobear.scene import Scene
 from thermobear.validity import LIMITS, collect
+
+optimize = lazy_module("scipy.optimize")    # brentq: loaded by its first use
 
 __all__ = ["ReferenceSpeed", "SafeSpeed", "Din732Speed", "reference_lubricant", "reference_loads", "thermal_reference_speed",
            "thermally_safe_speed", "din732_safe_speed", "hottest_ring_C"]
@@ -171,7 +173,7 @@ def thermal_reference_speed(brg: BallBearing, *, lubricant: Lubricant | None = N
         if i == 0:
             raise NoSpeedRoot(f"{brg.name}: the reference heat flow q_r A_r = {Phi:.4g} W is exceeded already at "
                               f"{ladder[0]:g} rpm ({P[0]:.4g} W)", residual=P[0] - Phi)
-        n, r = brentq(lambda x: float(power(x)) - Phi, ladder[i - 1], ladder[i], xtol=xtol_rpm, full_output=True)
+        n, r = optimize.brentq(lambda x: float(power(x)) - Phi, ladder[i - 1], ladder[i], xtol=xtol_rpm, full_output=True)
     if not r.converged:
         raise NoConvergence(f"{brg.name}: Brent did not converge ({r.flag})", iterations=r.iterations)
     with collect(replay=False) as ws:
@@ -325,7 +327,7 @@ def thermally_safe_speed(scene: Scene, *, limit_C: float = 70.0, node: str | Non
                 if not _beyond(e):
                     raise
                 return 1e3                                      # no equilibrium: beyond any limit
-        n, r = brentq(excess, ladder[i - 1], ladder[i], xtol=xtol_rpm, full_output=True)
+        n, r = optimize.brentq(excess, ladder[i - 1], ladder[i], xtol=xtol_rpm, full_output=True)
     if not r.converged:
         raise NoConvergence(f"{scene.name}: Brent did not converge ({r.flag})", iterations=r.iterations)
     st = seen[n] if n in seen else steady_state(scene.with_(n_rpm=float(n)), prepared=prep)

@@ -45,7 +45,6 @@ import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.stats import qmc
 
 from thermobear.contact.geometry import bearing_values
 from thermobear.contact.materials import PROPERTIES, material
@@ -57,11 +56,14 @@ from thermobear.coupled import transient as _transient
 from thermobear.coupled.steady import SteadyState, steady_states
 from thermobear.coupled.transient import PointModel, heat_sources
 from thermobear.errors import InputError, OutsideValidity, SolverError
+from thermobear.lazy import lazy_module
 from thermobear.models import plan_many
 from thermobear.scene import Scene
 from thermobear.scene.scene import SECTIONS
 from thermobear.schema import Uncertainty, check_value
 from thermobear.thermal import solve_transient
+
+stats = lazy_module("scipy.stats")          # qmc samplers: loaded when the first design is drawn
 
 __all__ = ["Input", "UncertaintyResult", "uncertain_inputs", "design", "sample_scenes", "steady_uncertainty",
            "transient_uncertainty", "steady_state", "transient", "steady_outputs", "METHODS"]
@@ -190,10 +192,10 @@ def design(n: int, d: int, seed=None, method: str = "lhs") -> np.ndarray:
         return np.zeros((n, 0))
     rng = np.random.default_rng(seed)
     if method == "lhs":
-        return qmc.LatinHypercube(d=d, rng=rng).random(n)
+        return stats.qmc.LatinHypercube(d=d, rng=rng).random(n)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", UserWarning)     # "balance properties … n a power of 2": said in the doc
-        return qmc.Sobol(d=d, scramble=True, rng=rng).random(n)
+        return stats.qmc.Sobol(d=d, scramble=True, rng=rng).random(n)
 
 
 def _count(n, field):

@@ -50,10 +50,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from scipy.optimize import brentq
 
 from thermobear.arrays import checked, out
 from thermobear.errors import InputError, NoConvergence
+from thermobear.lazy import lazy_module
+
+optimize = lazy_module("scipy.optimize")    # brentq: loaded by its first use
 
 __all__ = ["ReferenceConditions", "reference_conditions", "reference_surface", "reference_heat_flow_density",
            "palmgren_coefficients", "palmgren_load", "palmgren_moments", "din732_heat_flow",
@@ -374,5 +376,5 @@ def standard_reference_speed(A_r, dm, P1r, f0r, f1r, nu_r_cSt=12.0, *, n_max_rpm
     if balance(n_max_rpm) <= 0.0:
         raise NoConvergence(f"ISO 15312 heat balance: the reference heat flow {Phi:.4g} W is reached at no speed up "
                             f"to {n_max_rpm:.4g} rpm", residual=-balance(n_max_rpm))
-    n, r = brentq(balance, 0.0, n_max_rpm, xtol=1e-9, rtol=1e-12, full_output=True)
+    n, r = optimize.brentq(balance, 0.0, n_max_rpm, xtol=1e-9, rtol=1e-12, full_output=True)
     return float(n), float(balance(n)), int(r.iterations)

@@ -35,10 +35,12 @@ from typing import Callable
 
 import numpy as np
 import scipy.sparse as sp
-from scipy.integrate import BDF, Radau
 
 from thermobear.errors import InputError, NoConvergence
+from thermobear.lazy import lazy_module
 from thermobear.thermal.network import ThermalNetwork
+
+integrate = lazy_module("scipy.integrate")  # BDF, Radau: loaded by the first transient
 
 __all__ = ["SteadyResult", "TransientResult", "solve_steady", "solve_linear", "solve_transient", "split_losses",
            "sources_matrix", "batched_solve", "heat_out", "heat_paths", "LinearBoundary"]
@@ -447,7 +449,7 @@ def _segment(net, sources, C, bnd, a, b, y0, t_eval, nfev, rtol, atol, method, m
         return Jb[0] if B == 1 else sp.block_diag(list(Jb), format="csc")
 
     te = None if t_eval is None else np.union1d(t_eval[(t_eval >= a) & (t_eval <= b)], [b])
-    solver = _METHODS[method](rhs, a, y0, b, jac=jac, rtol=rtol, atol=atol, max_step=max_step)
+    solver = getattr(integrate, method)(rhs, a, y0, b, jac=jac, rtol=rtol, atol=atol, max_step=max_step)
     ts, ys = [a], [np.asarray(y0, float).copy()]
     k = 1 if te is not None and te.size and te[0] == a else 0      # the next requested time to report
     while solver.status == "running":
@@ -537,7 +539,6 @@ class _Segment:
     y: np.ndarray
 
 
-_METHODS = {"BDF": BDF, "Radau": Radau}
 
 
 def _collect(pieces, net, t_eval, B, nf, bnd):
