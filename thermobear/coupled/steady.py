@@ -23,7 +23,9 @@ ambient, which names thermal runaway).
 
 With the film load model the loads depend on the film temperature, taken as the mean contact
 temperature of the solution: an outer fixed point on that temperature (a few load updates; each
-round's film load distributions solved for the family's points in one batched call).
+round's film load distributions solved for the family's points in one batched call, from the dry loads the model
+choice solved, the low-speed form's later rounds from the last film loads).  Its dry start is the point's dry
+model alternative where that is solved too, else solved from another alternative's temperatures.
 
 The returned states are full network solves with the converged losses: their energy balance
 closes to machine precision, and their coupled temperatures are checked against the fixed point.
