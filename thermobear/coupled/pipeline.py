@@ -23,13 +23,13 @@ from thermobear.contact.kinematics import entrainment_speed
 from thermobear.errors import InputError, SolverError
 from thermobear.loads import LoadDistribution, axial_contact_angle, load_distribution
 from thermobear.loads.film import film_load_distribution
-from thermobear.loads.highspeed import load_distribution_high_speed
+from thermobear.loads.highspeed import load_distribution_high_speed, load_distribution_high_speed_full
 from thermobear.losses import ContactSet, prepare_contacts
 from thermobear.models import DryRow, moments, plan, refuse_unloaded_thrust
 from thermobear.scene import Scene
 
 __all__ = ["Family", "families", "dry_loads", "film_temperature_C", "closed_form_axial", "stack_loads", "family_loads",
-           "family_contacts", "scene_load", "scene_contacts", "film_scene_load"]
+           "family_film_loads", "family_contacts", "scene_load", "scene_contacts", "film_scene_load"]
 
 
 def film_temperature_C(scene: Scene) -> float:
@@ -211,25 +211,44 @@ def film_loads(scene: Scene, models: dict, Fa, Fr, M, n_rpm, T_film_C, Fz=0.0, M
     """Film load model (:mod:`thermobear.loads.film`, or :mod:`thermobear.loads.highspeed` with
     ``film=`` in the high-speed form), films at ``T_film_C`` [°C]; arrays: one load case each
     (``lubricant`` per point: :attr:`Family.lubricant`; ``start``: a solution of these cases to start from,
-    where the caller has one: the high-speed form's dry ``(LoadDistribution, HighSpeedExtras)``, the low-speed
+    where the caller has one: the high-speed form's ``(LoadDistribution, HighSpeedExtras)``, the low-speed
     form's LoadDistribution, dry or with the film)."""
+    return _film_loads(scene, models, Fa, Fr, M, n_rpm, T_film_C, Fz, My, lubricant, start)[0]
+
+
+def _film_loads(scene, models, Fa, Fr, M, n_rpm, T_film_C, Fz, My, lubricant, start) -> tuple:
+    """(:func:`film_loads`, the solution as ``start`` takes it)."""
     stiff = scene.models.get("stiffness", "nominal")
     u, eta, ap = _film_inputs(scene, n_rpm, T_film_C, lubricant)
     batch = np.ndim(Fa) > 0
     val = (lambda v: np.asarray(v, float)) if batch else float     # noqa: E731
     if models["high_speed"][0] == "yes":
-        return load_distribution_high_speed(scene.bearing, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, n_rpm=val(n_rpm),
-                                            stiffness=stiff, film=dict(eta=val(eta), alpha_p=val(ap)), start=start)
+        r = load_distribution_high_speed_full(scene.bearing, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, n_rpm=val(n_rpm),
+                                              stiffness=stiff, film=dict(eta=val(eta), alpha_p=val(ap)), start=start)
+        return r[0], r
     uu = u[:, None] if batch else float(u)
-    return film_load_distribution(scene.bearing, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, u_i=uu, u_o=uu, eta=val(eta),
-                                  alpha_p=val(ap), stiffness=stiff, start=start)
+    ld = film_load_distribution(scene.bearing, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, u_i=uu, u_o=uu, eta=val(eta),
+                                alpha_p=val(ap), stiffness=stiff, start=start)
+    return ld, ld
 
 
-def family_loads(fam: Family, T_film_C=None, start=None) -> LoadDistribution:
+def family_film_loads(fam: Family, T_film_C=None, start=None) -> tuple:
+    """(the film load model's batched load distribution of a family, the solution as ``start`` takes it): films
+    at ``T_film_C`` (B,) [°C] (default :func:`film_temperature_C`), from ``start`` (a batched solution of the same
+    loads, e.g. at the last film temperatures; :func:`film_loads`), else from the dry solutions the model choice
+    solved."""
+    sc, m, F = fam.scene, fam.models, fam.loads()
+    T = np.array([film_temperature_C(s) for s in fam.scenes]) if T_film_C is None else np.asarray(T_film_C, float)
+    if start is None and m["high_speed"][0] == "yes":
+        start = _dry_start(fam)
+    elif start is None and all(isinstance(d, DryRow) for d in fam.dry):
+        start = dry_loads(fam.dry)
+    return _film_loads(sc, m, F["Fa"], F["Fr"], F["M"], fam.values("n_rpm"), T, F["Fz"], F["My"], fam.lubricant, start)
+
+
+def family_loads(fam: Family, T_film_C=None) -> LoadDistribution:
     """The batched load distribution of a family (leading axis B) by its load model; ``T_film_C``
-    (B,) [°C] the film temperatures of the film load model (default :func:`film_temperature_C`), which
-    starts from the dry solutions the model choice solved, or (low-speed form) from ``start``, a batched
-    solution of the same loads (e.g. the film loads at the last film temperatures)."""
+    (B,) [°C] the film temperatures of the film load model (:func:`family_film_loads`)."""
     sc, m = fam.scene, fam.models
     F = fam.loads()
     Fa, Fr, M, F5 = F["Fa"], F["Fr"], F["M"], dict(Fz=F["Fz"], My=F["My"])
@@ -237,12 +256,7 @@ def family_loads(fam: Family, T_film_C=None, start=None) -> LoadDistribution:
     if lm == "closed_form":
         return closed_form_axial(sc.bearing, Fa)
     if lm == "film":
-        T = np.array([film_temperature_C(s) for s in fam.scenes]) if T_film_C is None else np.asarray(T_film_C, float)
-        if m["high_speed"][0] == "yes":
-            start = _dry_start(fam)
-        elif start is None and all(isinstance(d, DryRow) for d in fam.dry):
-            start = dry_loads(fam.dry)
-        return film_loads(sc, m, Fa, Fr, M, fam.values("n_rpm"), T, **F5, lubricant=fam.lubricant, start=start)
+        return family_film_loads(fam, T_film_C)[0]
     if all(d is not None for d in fam.dry):
         return dry_loads(fam.dry)
     stiff = sc.models.get("stiffness", "nominal")
@@ -323,6 +337,7 @@ def split_failures(fn, fam: Family, *args):
     for part in (slice(0, h), slice(h, fam.B)):
         sub = Family(scenes=fam.scenes[part], index=fam.index[part], models=fam.models, dry=fam.dry[part])
         sub_args = [a[part] if isinstance(a, np.ndarray) and a.shape[:1] == (fam.B,) else
-                    take(a, np.arange(fam.B)[part], fam.B) if isinstance(a, LoadDistribution) else a for a in args]
+                    take(a, np.arange(fam.B)[part], fam.B) if isinstance(a, (LoadDistribution, tuple)) else a
+                    for a in args]
         out += split_failures(fn, sub, *sub_args)
     return out

@@ -23,9 +23,8 @@ ambient, which names thermal runaway).
 
 With the film load model the loads depend on the film temperature, taken as the mean contact
 temperature of the solution: an outer fixed point on that temperature (a few load updates; each
-round's film load distributions solved for the family's points in one batched call, from the dry loads the model
-choice solved, the low-speed form's later rounds from the last film loads).  Its dry start is the point's dry
-model alternative where that is solved too, else solved from another alternative's temperatures.
+round's film load distributions solved for the family's points in one batched call, from the last ones, first the
+dry loads of the model choice).  Its dry start: the point's dry alternative where that is solved too.
 
 The returned states are full network solves with the converged losses: their energy balance
 closes to machine precision, and their coupled temperatures are checked against the fixed point.
@@ -42,8 +41,8 @@ from thermobear.arrays import take
 from thermobear.coupled.blend import blend_states
 from thermobear.coupled.clearance import clearance_loop
 from thermobear.coupled.fixedpoint import solve_coupled
-from thermobear.coupled.pipeline import (Family, families, family_contacts, family_loads, film_temperature_C,
-                                        split_failures, stack_loads)
+from thermobear.coupled.pipeline import (Family, families, family_contacts, family_film_loads, family_loads,
+                                        film_temperature_C, split_failures)
 from thermobear.coupled.limits import emit, family_warnings, overloads
 from thermobear.coupled.ratings import check_static_safety
 from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepare, prepared_for
@@ -484,14 +483,17 @@ def _film_family(fam: Family, template, cp: Coupling, tol_K, starts=None) -> lis
             break
         sub = Family(scenes=tuple(fam.scenes[j] for j in live), index=tuple(fam.index[j] for j in live),
                      models=fam.models, dry=tuple(fam.dry[j] for j in live))
-        results = {}           # (the low-speed film loads start from the last ones: the same loads)
-        last = stack_loads([take(*film[j]) for j in live]) if k > 1 and fam.models["high_speed"][0] == "no" else None
-        for part, ld in split_failures(family_loads, sub, T_ref[live], last):
+        results = {}           # (the film loads start from the last ones: the same loads, other films)
+        last = (take(film[live[0]][0], np.array([film[j][1] for j in live]), film[live[0]][2])
+                if k > 1 and len({id(film[j][0]) for j in live}) == 1 else None)
+        for part, ld in split_failures(family_film_loads, sub, T_ref[live], last):
             idx = [pos[i] for i in part.index]
+            if not isinstance(ld, Exception):
+                ld, solution = ld
+                film.update({j: (solution, r, part.B) for r, j in enumerate(idx)})
             res = [ld] * part.B if isinstance(ld, Exception) else _solve_loaded(part, ld, template, cp, tol_K,
                                                                                 start[idx])
             results.update(zip(idx, res))
-            film.update({j: (ld, r, part.B) for r, j in enumerate(idx)})
         nxt = []
         for j in live:
             st = results[j]

@@ -269,10 +269,10 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
                         dry Hertz contacts.
     tilt_arm : str      ``"groove"`` (ℜ_i, default) or ``"pitch"`` (d_m/2): :data:`thermobear.loads.rings.TILT_ARMS`
     start : (LoadDistribution, HighSpeedExtras), optional
-                        with ``film``: the dry solution of these same cases (this function without ``film``,
-                        same options, the same batch shape), from which the film solve starts instead of
-                        solving the dry contacts again (its iterations are counted as those of the dry solve);
-                        ignored where a case has no load at all
+                        with ``film``: a solution of these same cases (this function, same options, the same
+                        batch shape; dry, or with the film at other lubricant data), from which the film solve
+                        starts instead of solving the dry contacts (its iterations are counted as those of the
+                        dry solve); ignored where a case has no load at all
 
     Returns
     -------
@@ -349,8 +349,8 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
 
 
 def _dry_start(brg, loads, start, R):
-    """(z (nb, ndof + 2Z), iterations (nb,)) of a dry solution ``start`` = (LoadDistribution, HighSpeedExtras) of
-    the flat batch ``loads`` (:func:`load_distribution_high_speed_full`), or None where it does not fit it."""
+    """(z (nb, ndof + 2Z), iterations (nb,)) of a solution ``start`` = (LoadDistribution, HighSpeedExtras) of the
+    flat batch ``loads`` (:func:`load_distribution_high_speed_full`), or None where it does not fit it."""
     ld, ex = start
     nb, Z, A, ng = loads.nb, brg.Z, brg.A, loads.ndof
     if np.any(np.max(np.abs(loads.F), axis=1) == 0.0) or np.shape(ex.X1) != loads.shape + (Z,):
