@@ -265,3 +265,17 @@ def test_inversion_from_any_warm_start_and_out_of_range():
         assert fail.tolist() == [[1, 0, 0, 0, 0]]           # only that contact fails; the others are solved
         assert isinstance(invert_error(fail, s, al, it), NoConvergence)
         assert "no load in" in str(invert_error(fail, s, al, it))
+
+
+def test_start_from_another_solution_gives_the_same_equilibrium():
+    # start=: Newton from a given solution of the same loads — the dry one (what it solves itself), or the film
+    # loads at another viscosity (the film-temperature iteration) — reaches the same equilibrium
+    b = bearing("7210")
+    Fa, Fr, kw = np.array([300.0, 450.0]), np.array([750.0, 300.0]), dict(u_i=8.63, u_o=8.63, alpha_p=2e-8)
+    own = film_load_distribution(b, Fa, Fr, eta=0.0221, **kw)
+    from_dry = film_load_distribution(b, Fa, Fr, eta=0.0221, start=load_distribution(b, Fa, Fr), **kw)
+    from_film = film_load_distribution(b, Fa, Fr, eta=0.0221,
+                                       start=film_load_distribution(b, Fa, Fr, eta=0.03, **kw), **kw)
+    for ld in (from_dry, from_film):
+        assert np.max(np.abs(ld.Q_i - own.Q_i)) <= 1e-9 * np.max(own.Q_i) and ld.residual < 1e-10
+    assert from_film.iterations <= own.iterations

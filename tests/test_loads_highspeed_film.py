@@ -237,3 +237,16 @@ def test_warm_starts_and_refresh_skip_do_not_change_the_solution(Fr, n, monkeypa
         assert np.max(np.abs(a / b - 1.0)) < 1e-9, k
     assert np.max(np.abs(fast[0].alpha_i - slow[0].alpha_i)) < 1e-10
     assert fast[1].film_law_residual < 1e-12 and fast[1].film_cage_lag < 1e-12
+
+
+def test_film_solve_from_a_given_dry_solution_is_the_same_equilibrium():
+    # start=: the film stage starts from the dry solution the caller solved (the model choice does) instead of
+    # solving the dry contacts again; the same dry state, so the same equilibrium and iteration count
+    Fa, Fr, n = np.array([300.0, 450.0, 750.0]), np.array([750.0, 750.0, 300.0]), np.array([3200.0, 4800.0, 8000.0])
+    dry = load_distribution_high_speed_full(B, Fa, Fr, n_rpm=n)
+    own = load_distribution_high_speed_full(B, Fa, Fr, n_rpm=n, film=OIL50)
+    given = load_distribution_high_speed_full(B, Fa, Fr, n_rpm=n, film=OIL50, start=dry)
+    for k in ("Q_i", "Q_o", "alpha_i", "alpha_o"):
+        a, b = getattr(own[0], k), getattr(given[0], k)
+        assert np.max(np.abs(a - b)) <= 1e-12 * np.max(np.abs(a)), k
+    assert given[0].iterations == own[0].iterations and given[0].residual < 1e-10

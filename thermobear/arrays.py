@@ -22,9 +22,17 @@ def checked(name, v, *, lo=0.0, strict=True, what=""):
 
 
 def _within(v, lo, strict):
-    """All finite and > lo (>= lo): two reductions; NaN fails every comparison."""
-    mn, mx = v.min(), v.max()
-    return bool((mn > lo if strict else mn >= lo) and mx < np.inf)
+    """All finite and > lo (>= lo): two reductions (one value: compared as a Python float); NaN fails
+    every comparison."""
+    if v.size == 1:
+        x = v.item()
+        return (x > lo if strict else x >= lo) and x < _INF
+    mn, mx = _MIN(v, None), _MAX(v, None)
+    return bool((mn > lo if strict else mn >= lo) and mx < _INF)
+
+
+_INF = float("inf")
+_MIN, _MAX = np.minimum.reduce, np.maximum.reduce
 
 
 def finite_range(v):

@@ -69,7 +69,7 @@ import numpy as np
 from thermobear.arrays import take
 from thermobear.errors import InputError, NoEquilibrium, SolverError
 from thermobear.loads import LoadDistribution, load_distribution, needs_high_speed
-from thermobear.loads.highspeed import load_distribution_high_speed
+from thermobear.loads.highspeed import load_distribution_high_speed_full
 from thermobear.losses.cage import cage_land_estimate
 from thermobear.losses.seals import CONTACT_SEALS, seal_counterface_estimate_mm
 from thermobear.losses.skf import K_RS, drag_loss_factor_VM, phi_rs, skf_K_z
@@ -149,10 +149,15 @@ def moments(scene: Scene) -> tuple:
 
 def _solve_dry(brg, Fa, Fr, M, stiffness, n_rpm, *, continuation=True, Fz=0.0, My=None) -> LoadDistribution:
     """Dry Jones–Harris load distribution (high-speed form when ``n_rpm`` is given); arrays batch."""
+    return _solve_dry_full(brg, Fa, Fr, M, stiffness, n_rpm, continuation=continuation, Fz=Fz, My=My)[0]
+
+
+def _solve_dry_full(brg, Fa, Fr, M, stiffness, n_rpm, *, continuation=True, Fz=0.0, My=None) -> tuple:
+    """(:func:`_solve_dry`, the high-speed form's HighSpeedExtras or None)."""
     if n_rpm is None:
         return load_distribution(brg, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, stiffness=stiffness, continuation=continuation,
-                                 refuse_overload=False)      # the contact set refuses overloads per point
-    return load_distribution_high_speed(brg, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, n_rpm=n_rpm, stiffness=stiffness)
+                                 refuse_overload=False), None    # the contact set refuses overloads per point
+    return load_distribution_high_speed_full(brg, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, n_rpm=n_rpm, stiffness=stiffness)
 
 
 def dry_load(scene: Scene, high_speed: bool) -> LoadDistribution:
@@ -262,9 +267,10 @@ def film_options(models: dict) -> dict:
             "starvation": bool(models.get("starvation", (False,))[0])}
 
 
-def _film_choices(scene: Scene, out: dict) -> None:
+def _film_choices(scene: Scene, out: dict, K_z: dict | None = None) -> None:
     """``traction``, ``inlet_heating`` and ``starvation``, each with its reason (see the module docstring);
-    evaluated at the scene's temperature (prescribed, else the oil inlet or the ambient)."""
+    evaluated at the scene's temperature (prescribed, else the oil inlet or the ambient).  ``K_z``: bearing
+    kind → SKF K_z read by this call's caller for its scenes (filled here as kinds come up)."""
     m, b, oil = scene.models, scene.bearing, scene.lubricant
     if "traction" in m:
         out["traction"] = (m["traction"], "chosen in the scene")
@@ -293,15 +299,20 @@ def _film_choices(scene: Scene, out: dict) -> None:
     elif not wet or scene.supply not in K_RS or b.bore is None or b.outer_diameter is None:
         out["starvation"] = (False, "fully flooded (no replenishment factor for this supply or bearing: bore/OD unknown)")
     else:
-        phi = float(phi_rs(scene.n_rpm, oil.nu(float(T)), b.bore * 1e3, b.outer_diameter * 1e3, skf_K_z(b.kind),
+        K_z = {} if K_z is None else K_z
+        if b.kind not in K_z:
+            K_z[b.kind] = skf_K_z(b.kind)
+        phi = float(phi_rs(scene.n_rpm, oil.nu(float(T)), b.bore * 1e3, b.outer_diameter * 1e3, K_z[b.kind],
                            K_RS[scene.supply]))
         out["starvation"] = (True, f"{scene.supply}: SKF Φ_rs = {phi:.3f} at {T:g} °C on the rolling force "
                                    "(kinematic replenishment; → 1 when the track refills)")
 
 
-def _choose(scene: Scene, hs: tuple, lm: tuple | None) -> dict:
+def _choose(scene: Scene, hs: tuple, lm: tuple | None, film: dict | None = None, K_z: dict | None = None) -> dict:
     """The model choices of a scene, given the high-speed choice ``hs`` and, for a combined load the
-    scene does not fix, the load model ``lm`` (each ``(choice, reason)``)."""
+    scene does not fix, the load model ``lm`` (each ``(choice, reason)``).  ``film``: the scene's
+    :func:`_film_choices` (the same for each alternative of the scene: an empty dict is filled on the first
+    call), ``K_z`` as there."""
     b, m = scene.bearing, dict(scene.models)
     out = {}
     if scene.T_C is not None:
@@ -348,7 +359,10 @@ def _choose(scene: Scene, hs: tuple, lm: tuple | None) -> dict:
                          else "Jones outer-raceway control")
     out["hertz"] = (m.get("hertz", "exact"), "chosen in the scene" if "hertz" in m else
                     "exact elliptic integrals (approximations err 1–5 %)")
-    _film_choices(scene, out)
+    film = {} if film is None else film
+    if not film:
+        _film_choices(scene, film, K_z)
+    out.update(film)
     out["clearance"] = clearance_choice(scene)
     return out
 
@@ -379,13 +393,15 @@ def clearance_choice(scene: Scene) -> tuple:
 @dataclass(frozen=True)
 class DryRow:
     """One point's dry load distribution inside a batched solution (sliced when asked for), with the
-    film test's criteria: ``n_open`` balls off a race, ``q`` the least contact load over the greatest."""
+    film test's criteria: ``n_open`` balls off a race, ``q`` the least contact load over the greatest;
+    ``extras`` the batch's per-ball details of the high-speed form (the film load model starts from them)."""
 
     batch: LoadDistribution
     row: int
     B: int
     n_open: int
     q: float
+    extras: object = None          # the high-speed form's HighSpeedExtras of the batch (None: low-speed form)
 
     def load(self) -> LoadDistribution:
         return take(self.batch, self.row, self.B)
@@ -539,20 +555,21 @@ def plan_many(scenes) -> list:
     dry: dict = {}
     for (brg, no_M, stiff, low), members in groups.items():
         _batch_dry(brg, no_M, stiff, low, list(members), dry)
-    out = []
+    out, K_z = [], {}              # K_z: bearing kind → SKF K_z, read once for these scenes
     for sc, alts in zip(scenes, hs_alts):
         if isinstance(alts, Exception):
             out.append(alts)
             continue
         try:
-            out.append(_alternatives(sc, alts, dry))
+            out.append(_alternatives(sc, alts, dry, K_z))
         except (InputError, SolverError) as exc:
             out.append(exc)
     return out
 
 
-def _alternatives(sc: Scene, hs_alts: list, dry: dict) -> list:
+def _alternatives(sc: Scene, hs_alts: list, dry: dict, K_z: dict) -> list:
     out = []
+    film: dict = {}
     for hs, w in hs_alts:
         k = _dry_key(sc, hs[0] == "yes")
         d = dry.get(k) if k is not None else None
@@ -560,7 +577,7 @@ def _alternatives(sc: Scene, hs_alts: list, dry: dict) -> list:
                else [(None, 1.0)])
         for lm, w2 in lms:
             if w * w2 >= MIN_WEIGHT:
-                out.append(Alternative(models=_choose(sc, hs, lm), dry=d if isinstance(d, DryRow) else None,
+                out.append(Alternative(models=_choose(sc, hs, lm, film, K_z), dry=d if isinstance(d, DryRow) else None,
                                        weight=w * w2))
     total = sum(a.weight for a in out)
     return [a if total == 1.0 else Alternative(a.models, a.dry, a.weight / total) for a in out]
@@ -574,7 +591,7 @@ def _batch_dry(brg, no_M, stiff, low, keys, dry):
     n = None if low else np.array([k[5] for k in keys])
     Fz, My = np.array([k[6] for k in keys]), None if no_M else np.array([k[7] for k in keys])
     try:               # no continuation inside a batch: a case that needs it is left to its own solve
-        ld = _solve_dry(brg, Fa, Fr, M, stiff, n, continuation=len(keys) == 1, Fz=Fz, My=My)
+        ld, ex = _solve_dry_full(brg, Fa, Fr, M, stiff, n, continuation=len(keys) == 1, Fz=Fz, My=My)
     except (SolverError, InputError) as exc:     # loads the contacts cannot carry: said by the load step
         if len(keys) == 1:
             dry[keys[0]] = exc
@@ -589,4 +606,4 @@ def _batch_dry(brg, no_M, stiff, low, keys, dry):
     Qmax = np.maximum(Qi, Qo).max(axis=1)
     q = np.where(Qmax > 0.0, np.minimum(Qi, Qo).min(axis=1) / np.where(Qmax > 0.0, Qmax, 1.0), 0.0)
     for j, k in enumerate(keys):
-        dry[k] = DryRow(batch=ld, row=j, B=B, n_open=int(n_open[j]), q=float(max(q[j], 0.0)))
+        dry[k] = DryRow(batch=ld, row=j, B=B, n_open=int(n_open[j]), q=float(max(q[j], 0.0)), extras=ex)

@@ -101,9 +101,11 @@ def _finite_or_none(v):
     return float(v) if isinstance(v, (int, float, np.floating)) and np.isfinite(v) else None
 
 
-def _solve_chunk(scene: Scene, points: list) -> list:
-    """Rows of a chunk of coupled points (runs in this process, a worker process or on Dask)."""
-    scenes = [scene.with_(**p) for p in points]
+def _solve_chunk(scene: Scene, points: list, scenes: list | None = None) -> list:
+    """Rows of a chunk of coupled points (runs in this process, a worker process or on Dask); ``scenes``:
+    the points' scenes when this process has built them already."""
+    if scenes is None:
+        scenes = [scene.with_(**p) for p in points]
     return [_row(p, sc, exc=r) if isinstance(r, Exception) else _row(p, sc, st=r)
             for p, sc, r in zip(points, scenes, steady_states(scenes))]
 
@@ -215,11 +217,11 @@ def _chunks(idx, processes):
     return [idx[k:k + size] for k in range(0, len(idx), size)]
 
 
-def _coupled_local(scene, points, idx, processes, emit):
+def _coupled_local(scene, points, idx, processes, emit, scenes):
     chunks = _chunks(idx, processes)
     if processes == 1 or len(chunks) == 1:
         for part in chunks:
-            for i, row in zip(part, _solve_chunk(scene, [points[i] for i in part])):
+            for i, row in zip(part, _solve_chunk(scene, [points[i] for i in part], [scenes[i] for i in part])):
                 emit(i, row)
         return
     pool = multiprocessing.get_context().Pool(min(processes, len(chunks)), initializer=_worker_signals)
@@ -314,7 +316,7 @@ def run_sweep(scene: Scene, grid: dict, *, scheduler=None, processes: int | None
         if scheduler is not None:
             _coupled_dask(scene, points, coupled, scheduler, emit)
         else:
-            _coupled_local(scene, points, coupled, processes or 1, emit)
+            _coupled_local(scene, points, coupled, processes or 1, emit, scenes)
     return rows
 
 

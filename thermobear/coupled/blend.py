@@ -58,7 +58,10 @@ def _label(parts, models_of):
 
 
 def _weighted(parts, get):
-    v = sum(w * np.asarray(get(r), float) for w, r in parts)
+    vals = [get(r) for _, r in parts]
+    if all(isinstance(x, float) for x in vals):      # numbers: the same sum in Python floats
+        return float(sum(w * x for (w, _), x in zip(parts, vals)))
+    v = sum(w * np.asarray(x, float) for (w, _), x in zip(parts, vals))
     return float(v) if np.ndim(v) == 0 else v
 
 

@@ -23,13 +23,13 @@ from thermobear.contact.kinematics import entrainment_speed
 from thermobear.errors import InputError, SolverError
 from thermobear.loads import LoadDistribution, axial_contact_angle, load_distribution
 from thermobear.loads.film import film_load_distribution
-from thermobear.loads.highspeed import load_distribution_high_speed
+from thermobear.loads.highspeed import load_distribution_high_speed, load_distribution_high_speed_full
 from thermobear.losses import ContactSet, prepare_contacts
 from thermobear.models import DryRow, moments, plan, refuse_unloaded_thrust
 from thermobear.scene import Scene
 
 __all__ = ["Family", "families", "dry_loads", "film_temperature_C", "closed_form_axial", "stack_loads", "family_loads",
-           "family_contacts", "scene_load", "scene_contacts", "film_scene_load"]
+           "family_film_loads", "family_contacts", "scene_load", "scene_contacts", "film_scene_load"]
 
 
 def film_temperature_C(scene: Scene) -> float:
@@ -90,6 +90,16 @@ def dry_loads(dry) -> LoadDistribution:
     if all(isinstance(d, DryRow) for d in dry) and len({id(d.batch) for d in dry}) == 1:
         return take(dry[0].batch, np.array([d.row for d in dry]), dry[0].B)
     return stack_loads([d.load() if isinstance(d, DryRow) else d for d in dry])
+
+
+def _dry_start(fam) -> tuple | None:
+    """(LoadDistribution, HighSpeedExtras) of the family's points from the dry high-speed solutions their model
+    choice solved (one batch), or None."""
+    d = fam.dry
+    if not (all(isinstance(r, DryRow) and r.extras is not None for r in d) and len({id(r.batch) for r in d}) == 1):
+        return None
+    rows = np.array([r.row for r in d])
+    return take(d[0].batch, rows, d[0].B), take(d[0].extras, rows, d[0].B)
 
 
 @dataclass(frozen=True)
@@ -196,26 +206,49 @@ def _film_inputs(scene: Scene, n_rpm, T_film_C, lubricant=None):
     return u, np.asarray(lub.eta(T), float), np.asarray(lub.alpha_p_at(T), float)
 
 
-def film_loads(scene: Scene, models: dict, Fa, Fr, M, n_rpm, T_film_C, Fz=0.0, My=None, lubricant=None
-               ) -> LoadDistribution:
+def film_loads(scene: Scene, models: dict, Fa, Fr, M, n_rpm, T_film_C, Fz=0.0, My=None, lubricant=None,
+               start=None) -> LoadDistribution:
     """Film load model (:mod:`thermobear.loads.film`, or :mod:`thermobear.loads.highspeed` with
     ``film=`` in the high-speed form), films at ``T_film_C`` [°C]; arrays: one load case each
-    (``lubricant`` per point: :attr:`Family.lubricant`)."""
+    (``lubricant`` per point: :attr:`Family.lubricant`; ``start``: a solution of these cases to start from,
+    where the caller has one: the high-speed form's ``(LoadDistribution, HighSpeedExtras)``, the low-speed
+    form's LoadDistribution, dry or with the film)."""
+    return _film_loads(scene, models, Fa, Fr, M, n_rpm, T_film_C, Fz, My, lubricant, start)[0]
+
+
+def _film_loads(scene, models, Fa, Fr, M, n_rpm, T_film_C, Fz, My, lubricant, start) -> tuple:
+    """(:func:`film_loads`, the solution as ``start`` takes it)."""
     stiff = scene.models.get("stiffness", "nominal")
     u, eta, ap = _film_inputs(scene, n_rpm, T_film_C, lubricant)
     batch = np.ndim(Fa) > 0
     val = (lambda v: np.asarray(v, float)) if batch else float     # noqa: E731
     if models["high_speed"][0] == "yes":
-        return load_distribution_high_speed(scene.bearing, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, n_rpm=val(n_rpm),
-                                            stiffness=stiff, film=dict(eta=val(eta), alpha_p=val(ap)))
+        r = load_distribution_high_speed_full(scene.bearing, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, n_rpm=val(n_rpm),
+                                              stiffness=stiff, film=dict(eta=val(eta), alpha_p=val(ap)), start=start)
+        return r[0], r
     uu = u[:, None] if batch else float(u)
-    return film_load_distribution(scene.bearing, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, u_i=uu, u_o=uu, eta=val(eta),
-                                  alpha_p=val(ap), stiffness=stiff)
+    ld = film_load_distribution(scene.bearing, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, u_i=uu, u_o=uu, eta=val(eta),
+                                alpha_p=val(ap), stiffness=stiff, start=start)
+    return ld, ld
+
+
+def family_film_loads(fam: Family, T_film_C=None, start=None) -> tuple:
+    """(the film load model's batched load distribution of a family, the solution as ``start`` takes it): films
+    at ``T_film_C`` (B,) [°C] (default :func:`film_temperature_C`), from ``start`` (a batched solution of the same
+    loads, e.g. at the last film temperatures; :func:`film_loads`), else from the dry solutions the model choice
+    solved."""
+    sc, m, F = fam.scene, fam.models, fam.loads()
+    T = np.array([film_temperature_C(s) for s in fam.scenes]) if T_film_C is None else np.asarray(T_film_C, float)
+    if start is None and m["high_speed"][0] == "yes":
+        start = _dry_start(fam)
+    elif start is None and all(isinstance(d, DryRow) for d in fam.dry):
+        start = dry_loads(fam.dry)
+    return _film_loads(sc, m, F["Fa"], F["Fr"], F["M"], fam.values("n_rpm"), T, F["Fz"], F["My"], fam.lubricant, start)
 
 
 def family_loads(fam: Family, T_film_C=None) -> LoadDistribution:
     """The batched load distribution of a family (leading axis B) by its load model; ``T_film_C``
-    (B,) [°C] the film temperatures of the film load model (default :func:`film_temperature_C`)."""
+    (B,) [°C] the film temperatures of the film load model (:func:`family_film_loads`)."""
     sc, m = fam.scene, fam.models
     F = fam.loads()
     Fa, Fr, M, F5 = F["Fa"], F["Fr"], F["M"], dict(Fz=F["Fz"], My=F["My"])
@@ -223,8 +256,7 @@ def family_loads(fam: Family, T_film_C=None) -> LoadDistribution:
     if lm == "closed_form":
         return closed_form_axial(sc.bearing, Fa)
     if lm == "film":
-        T = np.array([film_temperature_C(s) for s in fam.scenes]) if T_film_C is None else np.asarray(T_film_C, float)
-        return film_loads(sc, m, Fa, Fr, M, fam.values("n_rpm"), T, **F5, lubricant=fam.lubricant)
+        return family_film_loads(fam, T_film_C)[0]
     if all(d is not None for d in fam.dry):
         return dry_loads(fam.dry)
     stiff = sc.models.get("stiffness", "nominal")
@@ -293,8 +325,8 @@ def scene_contacts(scene: Scene, models: dict | None = None, load: LoadDistribut
 
 def split_failures(fn, fam: Family, *args):
     """``fn(fam, *args)`` for a family; when it raises a SolverError / InputError for the whole batch,
-    the family is halved until the failing points stand alone.  Returns [(sub-family, result or
-    exception)]."""
+    the family is halved until the failing points stand alone (arrays with a leading axis B and batched
+    load distributions among ``args`` halved with it).  Returns [(sub-family, result or exception)]."""
     try:
         return [(fam, fn(fam, *args))]
     except (SolverError, InputError) as exc:
@@ -304,6 +336,8 @@ def split_failures(fn, fam: Family, *args):
     out = []
     for part in (slice(0, h), slice(h, fam.B)):
         sub = Family(scenes=fam.scenes[part], index=fam.index[part], models=fam.models, dry=fam.dry[part])
-        sub_args = [a[part] if isinstance(a, np.ndarray) and a.shape[:1] == (fam.B,) else a for a in args]
+        sub_args = [a[part] if isinstance(a, np.ndarray) and a.shape[:1] == (fam.B,) else
+                    take(a, np.arange(fam.B)[part], fam.B) if isinstance(a, (LoadDistribution, tuple)) else a
+                    for a in args]
         out += split_failures(fn, sub, *sub_args)
     return out

@@ -23,7 +23,8 @@ ambient, which names thermal runaway).
 
 With the film load model the loads depend on the film temperature, taken as the mean contact
 temperature of the solution: an outer fixed point on that temperature (a few load updates; each
-round's film load distributions solved for the family's points in one batched call).
+round's film load distributions solved for the family's points in one batched call, from the last ones, first the
+dry loads of the model choice).  Its dry start: the point's dry alternative where that is solved too.
 
 The returned states are full network solves with the converged losses: their energy balance
 closes to machine precision, and their coupled temperatures are checked against the fixed point.
@@ -40,8 +41,8 @@ from thermobear.arrays import take
 from thermobear.coupled.blend import blend_states
 from thermobear.coupled.clearance import clearance_loop
 from thermobear.coupled.fixedpoint import solve_coupled
-from thermobear.coupled.pipeline import (Family, families, family_contacts, family_loads, film_temperature_C,
-                                        split_failures)
+from thermobear.coupled.pipeline import (Family, families, family_contacts, family_film_loads, family_loads,
+                                        film_temperature_C, split_failures)
 from thermobear.coupled.limits import emit, family_warnings, overloads
 from thermobear.coupled.ratings import check_static_safety
 from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepare, prepared_for
@@ -403,8 +404,9 @@ def _batched(load):
     return take(load, np.array([0]), 1) if np.ndim(load.delta_a) == 0 else load
 
 
-def _solve_family(fam: Family, tol_K, load=None, prepared=None) -> list:
-    """Per point of a family: a SteadyState or the exception that stopped it."""
+def _solve_family(fam: Family, tol_K, load=None, prepared=None, starts=None) -> list:
+    """Per point of a family: a SteadyState or the exception that stopped it (``starts``: the film
+    load model's dry starts already solved, :func:`_film_family`)."""
     try:
         pre = prepared_for(fam.scene, prepared if prepared is not None and prepared.serves(fam.scene) else None)
     except InputError as exc:
@@ -413,7 +415,7 @@ def _solve_family(fam: Family, tol_K, load=None, prepared=None) -> list:
     if load is not None:
         return _solve_loaded(fam, load, template, cp, tol_K)
     if fam.models["load_model"][0] == "film":
-        return _film_family(fam, template, cp, tol_K)
+        return _film_family(fam, template, cp, tol_K, starts)
     out = [None] * fam.B
     pos = {i: k for k, i in enumerate(fam.index)}
     for sub, ld in split_failures(family_loads, fam):
@@ -423,19 +425,19 @@ def _solve_family(fam: Family, tol_K, load=None, prepared=None) -> list:
     return out
 
 
-def _points_apart(fam: Family, tol_K, load, prepared) -> list:
+def _points_apart(fam: Family, tol_K, load, prepared, starts=None) -> list:
     """:func:`_solve_family`; when a point's iterate leaves what the models can represent (an
     InputError, e.g. a lubricant past its refusal temperature), each point again on its own, so
     that the error is that point's and the others are solved."""
     try:
-        return _solve_family(fam, tol_K, load, prepared)
+        return _solve_family(fam, tol_K, load, prepared, starts)
     except InputError as exc:
         if fam.B == 1:
             return [exc]
     out = []
     for b in range(fam.B):
         one = Family(scenes=(fam.scenes[b],), index=(fam.index[b],), models=fam.models, dry=(fam.dry[b],))
-        out += _points_apart(one, tol_K, None if load is None else _batched(take(load, b, fam.B)), prepared)
+        out += _points_apart(one, tol_K, None if load is None else _batched(take(load, b, fam.B)), prepared, starts)
     return out
 
 
@@ -443,31 +445,52 @@ def _node_T(st: SteadyState, template) -> np.ndarray:
     return np.array([st.T_C[n] + _C0 for n in template.nodes])
 
 
-def _film_family(fam: Family, template, cp: Coupling, tol_K) -> list:
+def _film_family(fam: Family, template, cp: Coupling, tol_K, starts=None) -> list:
     """The film load model's fixed point on the film temperature for a family (module docstring):
-    a dry start, then film load updates, each followed by a steady state started from the last."""
+    a dry start, then film load updates, each followed by a steady state started from the last.
+
+    ``starts``: point (``fam.index``) → ``(state, twin)``, a steady state of the same operating point the
+    caller solved already: with ``twin`` the same models but the dry Jones–Harris loads, to a tolerance at
+    least as tight as the start's (that point's dry start, not solved again); otherwise another model
+    alternative of the point, whose node temperatures start the Newton iteration of its dry start (the
+    same equilibrium, reached in fewer steps)."""
     B = fam.B
-    dry = Family(scenes=fam.scenes, index=fam.index, dry=fam.dry,
-                 models={**fam.models, "load_model": ("jones_harris", "start of the film fixed point")})
+    pos = {i: k for k, i in enumerate(fam.index)}
+    starts = {i: v for i, v in (starts or {}).items() if i in pos}
     T_ref = np.array([film_temperature_C(s) for s in fam.scenes])
     start = np.full((B, len(template.nodes)), np.nan)
-    pos = {i: k for k, i in enumerate(fam.index)}
-    for sub, ld in split_failures(family_loads, dry):
+    near = start.copy()                   # the dry start's Newton start (NaN: the network's own)
+    for i, (st, twin) in starts.items():
+        if twin:
+            T_ref[pos[i]], start[pos[i]] = st.T_contacts_C, _node_T(st, template)
+        else:
+            near[pos[i]] = _node_T(st, template)
+    cold = [b for b, i in enumerate(fam.index) if not (i in starts and starts[i][1])]
+    dry = Family(scenes=tuple(fam.scenes[b] for b in cold), index=tuple(fam.index[b] for b in cold),
+                 dry=tuple(fam.dry[b] for b in cold),
+                 models={**fam.models, "load_model": ("jones_harris", "start of the film fixed point")})
+    for sub, ld in split_failures(family_loads, dry) if cold else ():
         if isinstance(ld, Exception):
             continue          # no dry equilibrium to start from: the film model decides on its own
-        for i, st in zip(sub.index, _solve_loaded(sub, ld, template, cp, max(tol_K, 1e-3))):
+        rows = [pos[i] for i in sub.index]
+        for i, st in zip(sub.index, _solve_loaded(sub, ld, template, cp, max(tol_K, 1e-3), near[rows])):
             if isinstance(st, SteadyState):
                 T_ref[pos[i]], start[pos[i]] = st.T_contacts_C, _node_T(st, template)
-    out, hist = [None] * B, [[] for _ in range(B)]
+    out, hist, film = [None] * B, [[] for _ in range(B)], {}
     live = np.arange(B)
     for k in range(1, _FILM_MAXITER + 1):
         if live.size == 0:
             break
         sub = Family(scenes=tuple(fam.scenes[j] for j in live), index=tuple(fam.index[j] for j in live),
                      models=fam.models, dry=tuple(fam.dry[j] for j in live))
-        results = {}
-        for part, ld in split_failures(family_loads, sub, T_ref[live]):
+        results = {}           # (the film loads start from the last ones: the same loads, other films)
+        last = (take(film[live[0]][0], np.array([film[j][1] for j in live]), film[live[0]][2])
+                if k > 1 and len({id(film[j][0]) for j in live}) == 1 else None)
+        for part, ld in split_failures(family_film_loads, sub, T_ref[live], last):
             idx = [pos[i] for i in part.index]
+            if not isinstance(ld, Exception):
+                ld, solution = ld
+                film.update({j: (solution, r, part.B) for r, j in enumerate(idx)})
             res = [ld] * part.B if isinstance(ld, Exception) else _solve_loaded(part, ld, template, cp, tol_K,
                                                                                 start[idx])
             results.update(zip(idx, res))
@@ -542,17 +565,7 @@ def _steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> 
             raise InputError("operation.T_C", sc.T_C, "the scene prescribes its temperature: use solve() "
                              "or remove operation.T_C to solve the thermal network")
     out: list = [None] * len(scenes)
-    alternatives: list = [None] * len(scenes)
-    bounds: dict = {}
-    for k, sc in enumerate(scenes):          # before any solve: loads no answer exists for, named as the scene does
-        if sc.bearing not in bounds:
-            bounds[sc.bearing] = contact_bounds(sc.bearing)
-        try:
-            check_loads(sc.bearing, sc.Fa, sc.Fr, sc.M, sc.n_rpm, Fz=sc.Fz, My=sc.My, names=SCENE_LOADS,
-                        bounds=bounds[sc.bearing])
-            check_static_safety(sc)
-        except InputError as exc:
-            alternatives[k] = exc
+    alternatives: list = _refused(scenes)
     todo = [k for k, a in enumerate(alternatives) if a is None]
     for k, alts in zip(todo, plan_many([scenes[k] for k in todo])):
         alternatives[k] = alts
@@ -576,7 +589,9 @@ def _steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> 
         # counts, and its validity is checked on its own (SteadyState.warnings, limits.point_warnings)
         warnings.simplefilter("ignore", OutsideValidity)
         shared: list = [prepared] if prepared is not None else []   # one prepare per machine of this call
-        for fam in fams:
+        twins = _dry_twins(owner, plans)
+        # the dry families first: their answers are the dry starts of the film load model's fixed points
+        for fam in sorted(fams, key=lambda f: f.models["load_model"][0] == "film"):
             pre = next((p for p in shared if p.serves(fam.scene)), None)
             if pre is None and fam.scene.network is not None:
                 try:
@@ -584,13 +599,79 @@ def _steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> 
                     shared.append(pre)
                 except InputError:
                     pre = None              # the family's own solve names the error per point
-            for j, r in zip(fam.index, _points_apart(fam, tol_K, None if load is None else _batched(load), pre)):
+            starts = _starts(fam, twins, owner, plans, res)
+            for j, r in zip(fam.index, _points_apart(fam, tol_K, None if load is None else _batched(load), pre,
+                                                     starts)):
                 res[j] = r
     parts: dict = {}
     for (i, w), r in zip(owner, res):
         parts.setdefault(i, []).append((w, r))
     for i, p in parts.items():
         out[i] = blend_states(p, SteadyState)
+    return out
+
+
+def _refused(scenes) -> list:
+    """Per scene, before any solve: the InputError of loads no answer exists for
+    (:func:`~thermobear.loads.api.check_loads`, named as the scene does, then the static safety), or None.
+    The loads of the scenes of one bearing are checked in one call; where it refuses, scene by scene."""
+    out: list = [None] * len(scenes)
+    groups: dict = {}
+    for k, sc in enumerate(scenes):
+        groups.setdefault((sc.bearing, sc.M is None, sc.My is None), []).append(k)
+    for (brg, no_M, no_My), ks in groups.items():
+        bounds, checked = contact_bounds(brg), False
+        if len(ks) > 1:
+            def col(attr):
+                return np.array([getattr(scenes[k], attr) for k in ks], float)
+            F = [col("Fa"), col("Fr"), None if no_M else col("M"), col("n_rpm"), col("Fz"), None if no_My else col("My")]
+            try:             # (a value that is not a number skips the other checks: then scene by scene)
+                check_loads(brg, *F[:4], Fz=F[4], My=F[5], names=SCENE_LOADS, bounds=bounds)
+                checked = all(np.isfinite(v).all() for v in F if v is not None)
+            except InputError:
+                pass                          # said scene by scene below
+        for k in ks:
+            sc = scenes[k]
+            try:
+                if not checked:
+                    check_loads(brg, sc.Fa, sc.Fr, sc.M, sc.n_rpm, Fz=sc.Fz, My=sc.My, names=SCENE_LOADS, bounds=bounds)
+                check_static_safety(sc)
+            except InputError as exc:
+                out[k] = exc
+    return out
+
+
+def _dry_twins(owner, plans) -> dict:
+    """Job → job: for a film-load-model alternative of a point, its alternative with the same model
+    choices but the dry Jones–Harris loads (the film fixed point's dry start), where the point has one."""
+    def sig(models):
+        return tuple(sorted((k, repr(v[0])) for k, v in models.items() if k != "load_model"))
+    dry = {(i, sig(m)): j for j, ((i, _), (m, _)) in enumerate(zip(owner, plans))
+           if m["load_model"][0] == "jones_harris"}
+    out = {}
+    for j, ((i, _), (m, _)) in enumerate(zip(owner, plans)):
+        if m["load_model"][0] == "film" and (i, sig(m)) in dry:
+            out[j] = dry[(i, sig(m))]
+    return out
+
+
+def _starts(fam: Family, twins: dict, owner, plans, res) -> dict:
+    """Job → (steady state, twin) for the points of a film family (:func:`_film_family`): its dry twin's
+    answer, else the answer of another alternative of the same point already solved (dry loads first)."""
+    if fam.models["load_model"][0] != "film":
+        return {}
+    jobs: dict = {}
+    for k, (i, _) in enumerate(owner):
+        jobs.setdefault(i, []).append(k)
+    out = {}
+    for j in fam.index:
+        if j in twins and isinstance(res[twins[j]], SteadyState):
+            out[j] = (res[twins[j]], True)
+            continue
+        same = [k for k in jobs[owner[j][0]] if isinstance(res[k], SteadyState)]
+        if same:
+            k = min(same, key=lambda k: plans[k][0]["load_model"][0] != "jones_harris")
+            out[j] = (res[k], False)
     return out
 
 

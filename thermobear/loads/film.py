@@ -276,7 +276,7 @@ class _FilmProblem:
 
 def film_load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, *, u_i, u_o, eta, alpha_p, Fz=0.0, My=None,
                            stiffness: str = "nominal", tol: float = _TOL,
-                           maxiter: int = _MAXIT, tilt_arm: str = "groove") -> FilmLoadDistribution:
+                           maxiter: int = _MAXIT, tilt_arm: str = "groove", start=None) -> FilmLoadDistribution:
     r"""Low-speed, rigid-ring load distribution with the EHL/IVR film in each ball's contact law.
 
     Parameters
@@ -295,6 +295,10 @@ def film_load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, *, u_i, u_o
     tol : float          relative equilibrium residual at which Newton stops [-]
     maxiter : int        Newton iterations at most
     tilt_arm : str       ``"groove"`` (ℜ_i, default) or ``"pitch"`` (d_m/2): :data:`thermobear.loads.rings.TILT_ARMS`
+    start : LoadDistribution, optional
+                         a solution of these same load cases (the batch shape of the loads), dry or with the
+                         film (e.g. at another film temperature): Newton starts from it instead of from the dry
+                         solution solved here
 
     Returns
     -------
@@ -342,11 +346,15 @@ def film_load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, *, u_i, u_o
                 _per_case("eta", eta, _pos, shape), _per_case("alpha_p", alpha_p, _nonneg, shape), stiffness)
     # start: the dry solution (ring displacements scaled by A, as in thermobear.loads.static)
     F = loads.F
-    dry = load_distribution_static(brg, Fa=F[:, 0], Fr=F[:, 1], M=F[:, 2] if loads.tilt_free else None, Fz=F[:, 3],
-                                   My=F[:, 4] if loads.tilt_free else None, stiffness=stiffness, tilt_arm=tilt_arm)
-    y = np.stack([(np.asarray(dry.delta_a) - A * np.sin(brg.alpha0)) / A, np.asarray(dry.delta_r) / A,
-                  np.asarray(dry.theta) * R / A, np.asarray(dry.delta_z) / A,
-                  np.asarray(dry.theta_y) * R / A][:nd], axis=1)
+    if start is not None and np.shape(start.Q_i) == shape + (Z,):
+        dry = start
+    else:
+        dry = load_distribution_static(brg, Fa=F[:, 0], Fr=F[:, 1], M=F[:, 2] if loads.tilt_free else None,
+                                       Fz=F[:, 3], My=F[:, 4] if loads.tilt_free else None, stiffness=stiffness,
+                                       tilt_arm=tilt_arm)
+    y = np.stack([(np.reshape(dry.delta_a, nb) - A * np.sin(brg.alpha0)) / A, np.reshape(dry.delta_r, nb) / A,
+                  np.reshape(dry.theta, nb) * R / A, np.reshape(dry.delta_z, nb) / A,
+                  np.reshape(dry.theta_y, nb) * R / A][:nd], axis=1)
     Qw = np.maximum(np.asarray(dry.Q_i).reshape(nb, Z), 1e-6 * (scale[:, None] / Z))   # warm start
     pb = _FilmProblem(_StaticProblem(brg, F_app, scale, loads.free(), stiffness), law, Qw)
     r = newton(pb, y, NewtonOptions(tol=tol, maxiter=maxiter))

@@ -19,7 +19,8 @@ This module holds the pieces the low-speed (:mod:`thermobear.loads.film`) and th
 (:mod:`thermobear.loads.highspeed`, ``film=``) forms share: the NVM film at fixed geometry with its
 logarithmic derivatives (:class:`_NVMFixed`), the law at fixed contact angles (:class:`_FilmAt`) and
 its per-contact inversion for Q (:func:`_invert`), vectorised over every contact of a batch, and the
-high-speed form's law of both contacts of every ball with caged entrainment speeds (:class:`_FilmLaw`).
+high-speed form's law of both contacts of every ball with caged entrainment speeds (:class:`_FilmLaw`),
+and the lubricant data the high-speed form takes (:class:`FilmInputs`, checked by :func:`film_inputs`).
 
 References
 ----------
@@ -30,14 +31,16 @@ References
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
-from thermobear.errors import NoConvergence
+from thermobear.errors import InputError, NoConvergence
 from thermobear.lubrication.nvm import EXP_MAX as _NVM_EXP_MAX
 from thermobear.lubrication.nvm import TINY as _NVM_TINY
 from thermobear.lubrication.nvm import ln_asymptote_consts
 
-__all__ = ["invert_error"]
+__all__ = ["invert_error", "FilmInputs", "film_inputs"]
 
 _LNQ_MIN, _LNQ_MAX = -600.0, 40.0      # bracket limits of ln(Q / 1 N)
 _Q_MIN, _Q_MAX = np.exp(_LNQ_MIN + 1.0), np.exp(_LNQ_MAX - 1.0)   # warm starts clipped to these [N]
@@ -334,3 +337,38 @@ class _FilmLaw:
         nvm = _NVMFixed(0.5 * self.brg.D * fac, self.Ry, self.v * (0.5 * self.brg.dm) * fac, self.eta, self.ap,
                         self.Ep)
         return _FilmAt(self.K, nvm, False, dln, dln)
+
+
+@dataclass(frozen=True)
+class FilmInputs:
+    """Lubricant data of the film contact law: one temperature for every contact of a load case.
+
+    Attributes
+    ----------
+    eta : array_like      dynamic viscosity at the inlets [Pa s], > 0 (scalar or one per load case)
+    alpha_p : array_like  pressure–viscosity coefficient [1/Pa], ≥ 0 (scalar or one per load case)
+    """
+
+    eta: float
+    alpha_p: float
+
+
+def film_inputs(film, shape):
+    """Validated η [Pa s] and α_p [1/Pa] of ``film`` (mapping or :class:`FilmInputs`), shape (nb, 1)."""
+    if isinstance(film, FilmInputs):
+        film = {"eta": film.eta, "alpha_p": film.alpha_p}
+    if not hasattr(film, "keys") or set(film.keys()) != {"eta", "alpha_p"}:
+        raise InputError("film", film, "None, FilmInputs(eta, alpha_p) or a dict with exactly the keys "
+                         "'eta' [Pa s] and 'alpha_p' [1/Pa]")
+    out = []
+    for key, lo in (("eta", "> 0 [Pa s]"), ("alpha_p", ">= 0 [1/Pa]")):
+        a = np.asarray(film[key], dtype=float)
+        bad = ~np.isfinite(a) | ((a <= 0) if key == "eta" else (a < 0))
+        if np.any(bad):
+            raise InputError(f"film.{key}", film[key], f"must be finite and {lo}")
+        try:
+            a = np.broadcast_to(a, shape)
+        except ValueError:
+            raise InputError(f"film.{key}", film[key], f"must broadcast to the load batch {shape}") from None
+        out.append(a.reshape(-1, 1).copy())
+    return out

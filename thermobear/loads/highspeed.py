@@ -154,7 +154,7 @@ import numpy as np
 
 from thermobear.contact.geometry import BallBearing
 from thermobear.errors import InputError, NoConvergence, NoEquilibrium
-from thermobear.loads.filmlaw import _FilmLaw
+from thermobear.loads.filmlaw import FilmInputs, _FilmLaw, film_inputs
 from thermobear.loads.highspeed_model import _HSProblem
 from thermobear.loads.highspeed_start import start as _start
 from thermobear.loads.highspeed_start import static_start
@@ -228,41 +228,6 @@ class HighSpeedExtras:
     film_cage_lag: float = None
 
 
-@dataclass(frozen=True)
-class FilmInputs:
-    """Lubricant data of the film contact law: one temperature for every contact of a load case.
-
-    Attributes
-    ----------
-    eta : array_like      dynamic viscosity at the inlets [Pa s], > 0 (scalar or one per load case)
-    alpha_p : array_like  pressure–viscosity coefficient [1/Pa], ≥ 0 (scalar or one per load case)
-    """
-
-    eta: float
-    alpha_p: float
-
-
-def _film_inputs(film, shape):
-    """Validated η [Pa s] and α_p [1/Pa] of ``film`` (mapping or :class:`FilmInputs`), shape (nb, 1)."""
-    if isinstance(film, FilmInputs):
-        film = {"eta": film.eta, "alpha_p": film.alpha_p}
-    if not hasattr(film, "keys") or set(film.keys()) != {"eta", "alpha_p"}:
-        raise InputError("film", film, "None, FilmInputs(eta, alpha_p) or a dict with exactly the keys "
-                         "'eta' [Pa s] and 'alpha_p' [1/Pa]")
-    out = []
-    for key, lo in (("eta", "> 0 [Pa s]"), ("alpha_p", ">= 0 [1/Pa]")):
-        a = np.asarray(film[key], dtype=float)
-        bad = ~np.isfinite(a) | ((a <= 0) if key == "eta" else (a < 0))
-        if np.any(bad):
-            raise InputError(f"film.{key}", film[key], f"must be finite and {lo}")
-        try:
-            a = np.broadcast_to(a, shape)
-        except ValueError:
-            raise InputError(f"film.{key}", film[key], f"must broadcast to the load batch {shape}") from None
-        out.append(a.reshape(-1, 1).copy())
-    return out
-
-
 def _check_options(control, stiffness, tol, maxiter):
     if not isinstance(control, str) or _ALIASES.get(control, control) not in HS_CONTROLS:
         raise InputError("control", control, f"must be one of {', '.join(HS_CONTROLS)} (or 'none' = 'both')")
@@ -276,7 +241,7 @@ def _check_options(control, stiffness, tol, maxiter):
 def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, Fz=0.0, My=None,
                                       control: str = "outer", stiffness: str = "nominal",
                                       tol: float = 1e-10, maxiter: int = _MAXIT, film=None,
-                                      tilt_arm: str = "groove"):
+                                      tilt_arm: str = "groove", start=None):
     r"""High-speed quasi-static load distribution with the per-ball details.
 
     Parameters
@@ -303,6 +268,11 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
                         (module docstring, "Film contact law"); needs n_rpm > 0.  ``None`` (default):
                         dry Hertz contacts.
     tilt_arm : str      ``"groove"`` (ℜ_i, default) or ``"pitch"`` (d_m/2): :data:`thermobear.loads.rings.TILT_ARMS`
+    start : (LoadDistribution, HighSpeedExtras), optional
+                        with ``film``: a solution of these same cases (this function, same options, the same
+                        batch shape; dry, or with the film at other lubricant data), from which the film solve
+                        starts instead of solving the dry contacts (its iterations are counted as those of the
+                        dry solve); ignored where a case has no load at all
 
     Returns
     -------
@@ -358,35 +328,58 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
     shape, n_b = loads.shape, loads.extra[0]
     arm_length(brg, tilt_arm)                    # (checks tilt_arm before any solve)
     if film is not None:
-        f_eta, f_ap = _film_inputs(film, shape)
+        f_eta, f_ap = film_inputs(film, shape)
         if np.any(n_b <= 0):
             raise InputError("n_rpm", n_rpm, "must be > 0 with the film contact law (a film needs entrainment; "
                              "at n = 0 the contacts are dry: film=None)")
     if film is None:
         f_eta = f_ap = None
     nb = loads.nb
+    z0 = _dry_start(brg, loads, start, arm_length(brg, tilt_arm)) if film is not None and start is not None else None
     if nb <= _CHUNK:
-        ld, ex = _solve(brg, loads, n_b, f_eta, f_ap, stiffness, control, tol, maxiter, tilt_arm)
+        ld, ex = _solve(brg, loads, n_b, f_eta, f_ap, stiffness, control, tol, maxiter, tilt_arm, z0)
     else:       # independent cases: solved a chunk at a time (numpy's temporaries stay small and in the cache)
         parts = [_solve(brg, loads.rows(np.arange(k, min(k + _CHUNK, nb))), n_b[k:k + _CHUNK],
                         None if film is None else f_eta[k:k + _CHUNK], None if film is None else f_ap[k:k + _CHUNK],
-                        stiffness, control, tol, maxiter, tilt_arm)
+                        stiffness, control, tol, maxiter, tilt_arm,
+                        None if z0 is None else (z0[0][k:k + _CHUNK], z0[1][k:k + _CHUNK]))
                  for k in range(0, nb, _CHUNK)]
         ld, ex = (_merge([p[j] for p in parts]) for j in (0, 1))
     return _reshape(ld, shape, Fa, Fr), _reshape(ex, shape)
 
 
-def _solve(brg, loads, n_b, f_eta, f_ap, stiffness, control, tol, maxiter, tilt_arm):
+def _dry_start(brg, loads, start, R):
+    """(z (nb, ndof + 2Z), iterations (nb,)) of a solution ``start`` = (LoadDistribution, HighSpeedExtras) of the
+    flat batch ``loads`` (:func:`load_distribution_high_speed_full`), or None where it does not fit it."""
+    ld, ex = start
+    nb, Z, A, ng = loads.nb, brg.Z, brg.A, loads.ndof
+    if np.any(np.max(np.abs(loads.F), axis=1) == 0.0) or np.shape(ex.X1) != loads.shape + (Z,):
+        return None                  # (no load: the result reports the rings at 0, not where they were held)
+    flat = [np.reshape(np.asarray(v, float), nb) for v in (ld.delta_a, ld.delta_r, ld.theta, ld.delta_z, ld.theta_y)]
+    g = np.stack([flat[0] / A, flat[1] / A, flat[2] * R / A, flat[3] / A, flat[4] * R / A][:ng], axis=1)
+    z = np.concatenate([g, np.reshape(ex.X1, (nb, Z)) / A, np.reshape(ex.X2, (nb, Z)) / A], axis=1)
+    return z, np.full(nb, int(ld.iterations))
+
+
+def _solve(brg, loads, n_b, f_eta, f_ap, stiffness, control, tol, maxiter, tilt_arm, z_dry=None):
     """The solution of a flat batch of cases (:class:`thermobear.loads.rings.RingLoads`, speeds ``n_b``):
-    (LoadDistribution, HighSpeedExtras) with a leading axis."""
-    # low-speed solution: NoEquilibrium cases, and the start
-    F = loads.F
-    ls = load_distribution_static(brg, F[:, 0], F[:, 1], F[:, 2] if loads.tilt_free else None, Fz=F[:, 3],
-                                  My=F[:, 4] if loads.tilt_free else None, stiffness=stiffness, tilt_arm=tilt_arm)
-    pb, z0 = _problem(brg, ls, loads, n_b, stiffness, control, arm_length(brg, tilt_arm))
+    (LoadDistribution, HighSpeedExtras) with a leading axis; ``z_dry``: (unknowns, iterations) of the dry
+    solution when the caller has it (:func:`_dry_start`)."""
+    R = arm_length(brg, tilt_arm)
     opt = NewtonOptions(tol=tol, maxiter=maxiter, step_cap=_STEP_CAP, window=_NONMONOTONE, polish=_POLISH)
     Fa_b, Fr_b = loads.Fa, loads.Fr
-    z, st, norm, its = _solve_dry(pb, z0, opt, loads, n_b, control)
+    if z_dry is not None:
+        pb = _hs_problem(brg, loads, n_b, stiffness, control, R)
+        z, its = z_dry[0].copy(), z_dry[1].copy()
+        st = pb.evaluate(z)
+        norm = st.norm
+    else:
+        # low-speed solution: NoEquilibrium cases, and the start
+        F = loads.F
+        ls = load_distribution_static(brg, F[:, 0], F[:, 1], F[:, 2] if loads.tilt_free else None, Fz=F[:, 3],
+                                      My=F[:, 4] if loads.tilt_free else None, stiffness=stiffness, tilt_arm=tilt_arm)
+        pb, z0 = _problem(brg, ls, loads, n_b, stiffness, control, R)
+        z, st, norm, its = _solve_dry(pb, z0, opt, loads, n_b, control)
     if f_eta is not None:
         z, st, norm, its = _film_stage(pb, z, st, its, f_eta, f_ap, opt, loads, n_b)
     lam_i = pb.lam_i
@@ -433,11 +426,11 @@ def _reshape(res, shape, Fa=None, Fr=None):
     return replace(res, **out)
 
 
-def _problem(brg, ls, loads, n_b, stiffness, control, R):
-    """The high-speed problem of a batch and its unknowns at the static solution ``ls`` (rings there, balls
-    on the lines of groove centres); ``R`` the tilt arm [m]."""
+def _hs_problem(brg, loads, n_b, stiffness, control, R):
+    """The high-speed problem of a batch (:class:`thermobear.loads.highspeed_model._HSProblem`); ``R`` the tilt
+    arm [m]."""
     lam_i, lam_o, kin_control = HS_CONTROLS[control]
-    A, nb, ng = brg.A, loads.nb, loads.ndof
+    nb = loads.nb
     F_app = loads.applied(R)
     omega = n_b * np.pi / 30.0
     w_c0 = 0.5 * omega * (1.0 - brg.gamma(brg.alpha0))
@@ -457,7 +450,15 @@ def _problem(brg, ls, loads, n_b, stiffness, control, R):
                 f"a thrust ball bearing at n = {n_b[k]:g} rpm needs an axial load (minimum load): with Fa = 0 the "
                 "centrifugal force throws the balls outwards and nothing holds them between the washers")
     free_g[zero] = 0.0                       # no load: the rings stay centred, only the balls move
-    pb = _HSProblem(brg, F_app, scale, omega, free_g, stiffness, lam_i, lam_o, kin_control, R)
+    return _HSProblem(brg, F_app, scale, omega, free_g, stiffness, lam_i, lam_o, kin_control, R)
+
+
+def _problem(brg, ls, loads, n_b, stiffness, control, R):
+    """The high-speed problem of a batch and its unknowns at the static solution ``ls`` (rings there, balls
+    on the lines of groove centres); ``R`` the tilt arm [m]."""
+    pb = _hs_problem(brg, loads, n_b, stiffness, control, R)
+    A, nb, ng = brg.A, loads.nb, loads.ndof
+    zero = np.max(np.abs(pb.F_app), axis=1) == 0.0
     g0 = np.zeros((nb, ng))
     g0[:, 0] = np.reshape(ls.delta_a, nb) / A
     if brg.kind == "thrust":
@@ -666,7 +667,7 @@ def _results(pb, z, st, norm, its, loads, n_b, control, with_film):
 def load_distribution_high_speed(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, Fz=0.0, My=None,
                                  control: str = "outer", stiffness: str = "nominal",
                                  tol: float = 1e-10, maxiter: int = _MAXIT, film=None,
-                                 tilt_arm: str = "groove") -> LoadDistribution:
+                                 tilt_arm: str = "groove", start=None) -> LoadDistribution:
     r"""High-speed quasi-static load distribution (Jones 1960; Harris 2001 ch. 8).
 
     Same parameters as :func:`load_distribution_high_speed_full`; returns only the
@@ -686,4 +687,4 @@ def load_distribution_high_speed(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm
     """
     return load_distribution_high_speed_full(brg, Fa, Fr, M, n_rpm, Fz=Fz, My=My, control=control,
                                              stiffness=stiffness, tol=tol, maxiter=maxiter, film=film,
-                                             tilt_arm=tilt_arm)[0]
+                                             tilt_arm=tilt_arm, start=start)[0]

@@ -558,7 +558,7 @@ def _check_scene(s: Scene, network_changed: bool = True):
         return
     if network_changed:
         network_spec(s.network, s.path, parameters=s.network_parameters, fixed_C=s.T_fixed_C)
-    if s.rig_map:
+    if s.rig_map and network_changed:             # the rig's channels against the nodes of a new network
         nodes = network_nodes(s.network, s.path)
         for ch, target in s.rig_map.items():
             node = target[len(_IMPOSE):] if target.startswith(_IMPOSE) else target
