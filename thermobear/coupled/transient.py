@@ -29,7 +29,8 @@ import numpy as np
 from thermobear.coupled.limits import emit, point_warnings
 from thermobear.coupled.clearance import scene_at_clearance, preload_runaway
 from thermobear.coupled.ratings import check_static_safety, scene_clearance
-from thermobear.coupled.pipeline import Family, family_contacts, family_loads, film_temperature_C, stack_loads
+from thermobear.coupled.pipeline import (Family, family_contacts, family_film_loads, family_loads, film_temperature_C,
+                                        stack_loads)
 from thermobear.coupled.sources import Coupling, family_network, loss_parts, loss_sources, prepared_for
 from thermobear.coupled.steady import T_LIMIT_K, _batched
 from thermobear.errors import ExtrapolationWarning, InputError, OutsideValidity, ThermalRunaway
@@ -234,7 +235,7 @@ def _imposed(boundary, scene: Scene, t_end_s):
 def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None) -> TransientRun:
     T_state = scene.T_ambient_C if T0_C is None else T0_C
     out_t, out_T, out_rep, first, seg_changes, seen = [], {}, {}, None, {}, set()
-    film_dt, completed, i, plans, clear_hist, prev, kept = None, True, -1, {}, [], None, (None, None)
+    film_dt, completed, i, plans, clear_hist, prev, kept = None, True, -1, {}, [], None, (None, None, None)
     with warnings.catch_warnings():
         # property calls at the integrator's trial states may lie beyond a correlation's data; the
         # validity of the states reported is checked once, on the series (limits.point_warnings)
@@ -264,9 +265,12 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
                 if ts + film_dt < te - 1e-9 * te:
                     pieces.insert(i + 1, (ts + film_dt, te, sc, last_seg))
                     te, last_seg, split = ts + film_dt, False, True
-            pm = _blended_point_model(sc_p, alts, T_film, load, pre if pre.serves(sc_p) else None,
-                                      dominant=kept[1] if kept[0] is sc_p else None)
-            kept = (sc_p, pm) if _dominant_kept(alts) else (None, None)
+            same = kept[0] is sc_p            # a piece of the scene the last one ran: its loads start the films
+            loads, starts = (None, None) if load is not None else _piece_loads(sc_p, alts, T_film,
+                                                                              kept[2] if same else None)
+            pm = _blended_point_model(sc_p, alts, loads, load, pre if pre.serves(sc_p) else None,
+                                      dominant=kept[1] if same and _dominant_kept(alts) else None)
+            kept = (sc_p, pm, starts)
             net, cp = pm.network, pm.coupling
             first = first or (models, cp.roles, list(net.nodes))
             changed = {k: v for k, v in models.items() if first[0].get(k, (None,))[0] != v[0]}
@@ -335,22 +339,39 @@ def _dominant_kept(alts) -> bool:
     return max(alts, key=lambda a: a.weight).models["load_model"][0] != "film"
 
 
-def _blended_point_model(sc: Scene, alts, T_film, load, prepared, dominant=None) -> PointModel:
-    """The point model of a piece: across a switch band its heat sources are the weighted losses of
-    the alternatives, evaluated as stacked points of one batch
-    (:class:`~thermobear.coupled.blend.StackedBlend`) on the network of the dominant one, so that a
-    heat-up ends at the blended steady state.  ``dominant``: the point model of an earlier piece of
-    the same scene whose family, network and coupling serve (:func:`_dominant_kept`)."""
-    if len(alts) == 1:
-        a = alts[0]
-        return point_model(sc, a.models, T_film_C=T_film, load=load, prepared=prepared, dry=a.dry)
-    if alts[0].models["losses"][0] != "local":         # the global model reads no loads: one source
-        a = max(alts, key=lambda a: a.weight)
-        return point_model(sc, a.models, T_film_C=T_film, load=load, prepared=prepared, dry=a.dry)
+def _piece_loads(sc: Scene, alts, T_film, starts) -> tuple:
+    """(one-point loads of each alternative for a piece, the film solutions as the next piece starts from
+    them): the film load model's at the piece's film temperature ``T_film`` [°C], Newton started from the
+    last piece's solution in ``starts`` (the same loads, films 1–2 K apart: the same equilibrium, reached in
+    fewer iterations; :func:`~thermobear.coupled.pipeline.family_film_loads`), the others' as chosen."""
+    k_dom = int(np.argmax([a.weight for a in alts]))
+    blend = len(alts) > 1 and alts[0].models["losses"][0] == "local"     # else the dominant's loads alone
+    loads, nxt = [], []
+    for k, (a, start) in enumerate(zip(alts, starts or (None,) * len(alts))):
+        if not (blend or k == k_dom):
+            loads.append(None)
+            nxt.append(None)
+            continue
+        fam = Family(scenes=(sc,), index=(0,), models=a.models, dry=(a.dry,))
+        ld, sol = family_film_loads(fam, [T_film], start) if a.models["load_model"][0] == "film" else \
+            (family_loads(fam), None)
+        loads.append(take(ld, 0, 1))
+        nxt.append(sol)
+    return loads, tuple(nxt)
+
+
+def _blended_point_model(sc: Scene, alts, loads, load, prepared, dominant=None) -> PointModel:
+    """The point model of a piece at the alternatives' ``loads`` (:func:`_piece_loads`; ``load`` injected
+    loads instead): across a switch band its heat sources are the weighted losses of the alternatives,
+    evaluated as stacked points of one batch (:class:`~thermobear.coupled.blend.StackedBlend`) on the
+    network of the dominant one, so that a heat-up ends at the blended steady state.  ``dominant``: the
+    point model of an earlier piece of the same scene whose family, network and coupling serve
+    (:func:`_dominant_kept`)."""
     k_dom = int(np.argmax([a.weight for a in alts]))
     dom = alts[k_dom]
-    loads = [take(family_loads(Family(scenes=(sc,), index=(0,), models=a.models, dry=(a.dry,)),
-                               [T_film] if a.models["load_model"][0] == "film" else None), 0, 1) for a in alts]
+    if len(alts) == 1 or alts[0].models["losses"][0] != "local":    # the global model reads no loads: one source
+        return point_model(sc, dom.models, load=load if load is not None else loads[k_dom], prepared=prepared,
+                           dry=dom.dry)
     pm = dominant or point_model(sc, dom.models, load=loads[k_dom], prepared=prepared)
     K = len(alts)
     fam = Family(scenes=(sc,) * K, index=tuple(range(K)), models=dom.models, dry=(None,) * K)
