@@ -57,11 +57,21 @@ def _label(parts, models_of):
     return " + ".join(labels)
 
 
+def _wsum(ws, xs):
+    """The blending rule, one place: Σ_k w_k x_k summed in the alternatives' order from 0 (Python floats,
+    or float arrays elementwise: the same IEEE operations in the same order)."""
+    acc = 0
+    for w, x in zip(ws, xs):
+        acc = acc + w * x
+    return acc
+
+
 def _weighted(parts, get):
     vals = [get(r) for _, r in parts]
+    ws = [w for w, _ in parts]
     if all(isinstance(x, float) for x in vals):      # numbers: the same sum in Python floats
-        return float(sum(w * x for (w, _), x in zip(parts, vals)))
-    v = sum(w * np.asarray(x, float) for (w, _), x in zip(parts, vals))
+        return float(_wsum(ws, vals))
+    v = _wsum(ws, [np.asarray(x, float) for x in vals])
     return float(v) if np.ndim(v) == 0 else v
 
 
@@ -78,10 +88,21 @@ def blend_states(parts, state_type):
         return dataclasses.replace(st, warnings=list(st.warnings) + ws)
     dom = max(ok, key=lambda p: p[0])[1]
     nodes = list(dom.T_C)
-    T = _weighted(ok, lambda s: [s.T_C[n] for n in nodes])
-    P = np.array([s.P_W for _, s in ok])
-    dT = max(abs(a - b) for _, s in ok for _, o in ok for a, b in zip([s.T_C[n] for n in nodes],
-                                                                       [o.T_C[n] for n in nodes]))
+    keys = list(dict.fromkeys(k for _, s in ok for k in s.breakdown_W))
+    flows = list(dom.heat_flows_W)
+    sources = {p: list(dict.fromkeys(n for _, s in ok for n in s.heat_sources_W.get(p, {})))
+               for p in dict.fromkeys(p for _, s in ok for p in s.heat_sources_W)}
+    # every blended number of an alternative in one row (a part or key it lacks: 0), blended at once
+    X = np.array([[s.T_C[n] for n in nodes]
+                  + [s.T_ball_C, s.P_W, s.torque_Nm, s.energy_balance_W, s.T_contacts_C]
+                  + [s.breakdown_W.get(k, 0.0) for k in keys] + [s.heat_flows_W[k] for k in flows]
+                  + [s.heat_out_W.get(k, 0.0) for k in dom.heat_out_W]
+                  + [s.heat_sources_W.get(p, {}).get(n, 0.0) for p, ns in sources.items() for n in ns]
+                  for _, s in ok], float)
+    y = iter(_wsum([w for w, _ in ok], X).tolist())
+    T = X[:, :len(nodes)]
+    dT = float(np.abs(T[:, None, :] - T[None, :, :]).max())
+    P = X[:, len(nodes) + 1]
     spread = (P.max() - P.min()) / max(float(np.mean(P)), 1e-300)
     used = dict(dom.models_used)
     used["blend"] = (_label(ok, lambda s: s.models_used),
@@ -92,29 +113,17 @@ def blend_states(parts, state_type):
         if str(w) not in seen:
             seen.add(str(w))
             warned.append(w)
-    keys = list(dict.fromkeys(k for _, s in ok for k in s.breakdown_W))
-    flows = list(dom.heat_flows_W)
+
+    def fill(names):
+        return {k: next(y) for k in names}
+    T_C = fill(nodes)
+    T_ball, P_W, M, bal, T_cont = (next(y) for _ in range(5))
     return dataclasses.replace(
-        dom, T_C=dict(zip(nodes, T.tolist())), T_ball_C=float(_weighted(ok, lambda s: s.T_ball_C)),
-        P_W=float(_weighted(ok, lambda s: s.P_W)), torque_Nm=float(_weighted(ok, lambda s: s.torque_Nm)),
-        breakdown_W={k: float(_weighted(ok, lambda s: s.breakdown_W.get(k, 0.0))) for k in keys},
-        heat_flows_W={k: float(_weighted(ok, lambda s: s.heat_flows_W[k])) for k in flows},
-        heat_out_W={k: float(_weighted(ok, lambda s: s.heat_out_W.get(k, 0.0))) for k in dom.heat_out_W},
-        heat_sources_W=_weighted_sources(ok),
-        energy_balance_W=float(_weighted(ok, lambda s: s.energy_balance_W)),
-        T_contacts_C=float(_weighted(ok, lambda s: s.T_contacts_C)),
+        dom, T_C=T_C, T_ball_C=T_ball, P_W=P_W, torque_Nm=M, energy_balance_W=bal, T_contacts_C=T_cont,
+        breakdown_W=fill(keys), heat_flows_W=fill(flows), heat_out_W=fill(dom.heat_out_W),
+        heat_sources_W={p: fill(ns) for p, ns in sources.items()},
         iterations=max(s.iterations for _, s in ok), residual_K=max(s.residual_K for _, s in ok),
         models_used=used, warnings=warned)
-
-
-def _weighted_sources(ok) -> dict:
-    """Loss part → {node: W} weighted over the alternatives (a part an alternative lacks: 0)."""
-    parts = list(dict.fromkeys(p for _, s in ok for p in s.heat_sources_W))
-    out = {}
-    for p in parts:
-        nodes = list(dict.fromkeys(n for _, s in ok for n in s.heat_sources_W.get(p, {})))
-        out[p] = {n: float(_weighted(ok, lambda s: s.heat_sources_W.get(p, {}).get(n, 0.0))) for n in nodes}
-    return out
 
 
 def blend_losses(parts):

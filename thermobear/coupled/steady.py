@@ -311,23 +311,28 @@ def _finish(fam: Family, net, src, cp: Coupling, template, nw: _Newton, tol_K) -
     bal = np.atleast_1d(st.balance_W)
     flows = {k: np.atleast_1d(v) for k, v in st.flows_W.items()}
     paths = heat_paths(net, np.column_stack([np.broadcast_to(flows[e.name], (fam.B,)) for e in net.elements]))
-    free_nodes = [n for n, f in zip(net.nodes, free) if f]
     warned = family_warnings(fam.scenes, r, x_C, nw.done & (nw.x.max(axis=1) <= T_LIMIT_K))
     B = fam.B
-    P_all, M_all = (np.broadcast_to(np.asarray(v, float), (B,)) for v in (r.P_W, r.torque_Nm))
-    bd_all = {k: np.broadcast_to(np.asarray(v, float), (B,)) for k, v in r.breakdown_W.items()}
-    T_all = st.T_K - _C0
     used = _models_used(fam, r, template, cp)
     contacts = getattr(r, "contacts", None)
     T_cont = (0.5 * (np.asarray(contacts["inner"]["T_C"], float).mean(axis=-1)
                      + np.asarray(contacts["outer"]["T_C"], float).mean(axis=-1)) if contacts else
               0.5 * (x_C[:, 0] + x_C[:, 1]))
+
+    def rows(d):              # {key: (B,) or scalar} → per point, its {key: float}
+        cols = np.reshape([np.broadcast_to(np.asarray(v, float), (B,)) for v in d.values()], (len(d), B)).T
+        return [dict(zip(d, c)) for c in cols.tolist()]
+    T_all, bd_all, flows_all = (st.T_K - _C0).tolist(), rows(r.breakdown_W), rows(flows)
+    out_all = rows({k: q for k, (_, q) in paths.items()})
+    sources_all = _part_sources(cp, parts, [n for n, f in zip(net.nodes, free) if f])
+    P_all, M_all, T_cont_all, bal_all = (np.broadcast_to(np.asarray(v, float), (B,)).tolist()
+                                         for v in (r.P_W, r.torque_Nm, T_cont, bal))
     out = []
     for b in range(B):
         if not nw.done[b]:
             out.append(None)
             continue
-        T_C = dict(zip(net.nodes, T_all[b].tolist()))
+        T_C = dict(zip(net.nodes, T_all[b]))
         hot = {k: v for k, v in T_C.items() if v + _C0 > T_LIMIT_K}
         if hot:
             node = max(hot, key=hot.get)
@@ -343,25 +348,24 @@ def _finish(fam: Family, net, src, cp: Coupling, template, nw: _Newton, tol_K) -
                                      last=T_C, history=nw.history[b]))
             continue
         out.append(SteadyState(
-            T_C=T_C, T_ball_C=T_C[cp.roles["ball"]], P_W=float(P_all[b]), iterations=int(nw.its[b]),
-            residual_K=max(float(nw.step[b]), float(gap[b])), energy_balance_W=float(bal[b]),
-            heat_flows_W={k: float(v[b]) for k, v in flows.items()},
-            models_used=_point_models_used(used, nw, b), history=nw.history[b], roles=dict(cp.roles),
-            warnings=warned[b], torque_Nm=float(M_all[b]), breakdown_W={k: float(v[b]) for k, v in bd_all.items()},
-            T_contacts_C=float(np.broadcast_to(T_cont, (B,))[b]), batch_losses=r, row=b,
-            heat_sources_W=_part_sources(cp, parts[b], free_nodes),
-            heat_out_W={k: float(q[b]) for k, (_, q) in paths.items()},
-            heat_out_to={k: to for k, (to, _) in paths.items()}))
+            T_C=T_C, T_ball_C=T_C[cp.roles["ball"]], P_W=P_all[b], iterations=int(nw.its[b]),
+            residual_K=max(float(nw.step[b]), float(gap[b])), energy_balance_W=bal_all[b],
+            heat_flows_W=flows_all[b], models_used=_point_models_used(used, nw, b), history=nw.history[b],
+            roles=dict(cp.roles), warnings=warned[b], torque_Nm=M_all[b], breakdown_W=bd_all[b],
+            T_contacts_C=T_cont_all[b], batch_losses=r, row=b, heat_sources_W=sources_all[b],
+            heat_out_W=out_all[b], heat_out_to={k: to for k, (to, _) in paths.items()}))
     return out
 
 
-def _part_sources(cp: Coupling, parts_b, free_nodes) -> dict:
-    """Loss part → {node: W} of one point: the split of each part over the network's free nodes."""
-    out = {}
+def _part_sources(cp: Coupling, parts, free_nodes) -> list:
+    """Per point, loss part → {node: W}: the split of each part (parts (B, n_parts) [W]) over the
+    network's free nodes."""
+    per_part = []
     for j, name in enumerate(cp.parts):
-        q = cp.S[:, j] * float(parts_b[j])
-        out[name] = {free_nodes[i]: float(q[i]) for i in np.flatnonzero(cp.S[:, j])}
-    return out
+        nz = np.flatnonzero(cp.S[:, j])
+        q = (cp.S[nz, j][None, :] * parts[:, j][:, None]).tolist()
+        per_part.append((name, [free_nodes[i] for i in nz], q))
+    return [{name: dict(zip(nodes, q[b])) for name, nodes, q in per_part} for b in range(parts.shape[0])]
 
 
 def _solve_loaded(fam: Family, load, template, cp: Coupling, tol_K, T0=None) -> list:
@@ -569,7 +573,7 @@ def _steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> 
     todo = [k for k, a in enumerate(alternatives) if a is None]
     for k, alts in zip(todo, plan_many([scenes[k] for k in todo])):
         alternatives[k] = alts
-    jobs, plans, owner = [], [], []           # one job per model alternative of a point
+    jobs, plans, owner, alts_of = [], [], [], {}       # one job per model alternative of a point
     for i, (sc, alts) in enumerate(zip(scenes, alternatives)):
         if isinstance(alts, Exception):
             out[i] = alts
@@ -580,6 +584,7 @@ def _steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> 
             jobs.append(sc)
             plans.append((a.models, a.dry))
             owner.append((i, a.weight))
+            alts_of.setdefault(i, []).append(len(jobs) - 1)
     fams, _ = families(jobs, plans)
     if load is not None and len(fams) != 1:
         raise InputError("load", "LoadDistribution", "injected loads need the scenes of one family")
@@ -599,15 +604,12 @@ def _steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> 
                     shared.append(pre)
                 except InputError:
                     pre = None              # the family's own solve names the error per point
-            starts = _starts(fam, twins, owner, plans, res)
+            starts = _starts(fam, twins, owner, alts_of, plans, res)
             for j, r in zip(fam.index, _points_apart(fam, tol_K, None if load is None else _batched(load), pre,
                                                      starts)):
                 res[j] = r
-    parts: dict = {}
-    for (i, w), r in zip(owner, res):
-        parts.setdefault(i, []).append((w, r))
-    for i, p in parts.items():
-        out[i] = blend_states(p, SteadyState)
+    for i, ks in alts_of.items():
+        out[i] = blend_states([(owner[k][1], res[k]) for k in ks], SteadyState)
     return out
 
 
@@ -655,20 +657,18 @@ def _dry_twins(owner, plans) -> dict:
     return out
 
 
-def _starts(fam: Family, twins: dict, owner, plans, res) -> dict:
+def _starts(fam: Family, twins: dict, owner, alts_of, plans, res) -> dict:
     """Job → (steady state, twin) for the points of a film family (:func:`_film_family`): its dry twin's
-    answer, else the answer of another alternative of the same point already solved (dry loads first)."""
+    answer, else the answer of another alternative of the same point (``alts_of``: point → its jobs) already
+    solved (dry loads first)."""
     if fam.models["load_model"][0] != "film":
         return {}
-    jobs: dict = {}
-    for k, (i, _) in enumerate(owner):
-        jobs.setdefault(i, []).append(k)
     out = {}
     for j in fam.index:
         if j in twins and isinstance(res[twins[j]], SteadyState):
             out[j] = (res[twins[j]], True)
             continue
-        same = [k for k in jobs[owner[j][0]] if isinstance(res[k], SteadyState)]
+        same = [k for k in alts_of[owner[j][0]] if isinstance(res[k], SteadyState)]
         if same:
             k = min(same, key=lambda k: plans[k][0]["load_model"][0] != "jones_harris")
             out[j] = (res[k], False)

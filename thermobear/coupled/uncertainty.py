@@ -55,6 +55,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from thermobear.arrays import take
 from thermobear.contact.geometry import bearing_values
 from thermobear.contact.materials import PROPERTIES, material
 from thermobear.coupled.pipeline import Family, families, family_contacts, family_loads
@@ -421,20 +422,27 @@ def _fail(exc) -> dict:
 
 def steady_outputs(results) -> dict:
     """Output name → (n,) values of the samples' SteadyStates (NaN for a failed sample)."""
-    ok = [r for r in results if isinstance(r, SteadyState)]
+    ok = {i: r for i, r in enumerate(results) if isinstance(r, SteadyState)}
     if not ok:
         return {}
-    names = list(dict.fromkeys([f"T_C.{k}" for r in ok for k in r.T_C] + ["P_W"]
-                               + [f"breakdown_W.{k}" for r in ok for k in r.losses.breakdown_W]))
+    loss = {i: _breakdown(r) for i, r in ok.items()}
+    names = list(dict.fromkeys([f"T_C.{k}" for r in ok.values() for k in r.T_C] + ["P_W"]
+                               + [f"breakdown_W.{k}" for b in loss.values() for k in b]))
     out = {k: np.full(len(results), np.nan) for k in names}
-    for i, r in enumerate(results):
-        if isinstance(r, SteadyState):
-            for k, v in r.T_C.items():
-                out[f"T_C.{k}"][i] = v
-            out["P_W"][i] = r.P_W
-            for k, v in r.losses.breakdown_W.items():
-                out[f"breakdown_W.{k}"][i] = float(v)
+    for i, r in ok.items():
+        for k, v in r.T_C.items():
+            out[f"T_C.{k}"][i] = v
+        out["P_W"][i] = r.P_W
+        for k, v in loss[i].items():
+            out[f"breakdown_W.{k}"][i] = float(v)
     return out
+
+
+def _breakdown(st: SteadyState) -> dict:
+    """The loss breakdown of a state's loss result (:attr:`SteadyState.losses`): its row of the family's
+    batched breakdown alone, not the whole result sliced."""
+    r = st.batch_losses
+    return r.breakdown_W if st.row is None else take(r.breakdown_W, st.row, np.shape(r.P_W)[0])
 
 
 def steady_uncertainty(scene: Scene, n: int, *, seed=None, method: str = "lhs", groups: int | None = None,
