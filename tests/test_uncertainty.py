@@ -147,7 +147,7 @@ def test_zero_width_ranges_give_zero_width_bands_at_the_nominal(s004):
     assert not r.failed
     for key, b in r.bands.items():
         nom = r.nominal.T_C[key[4:]] if key.startswith("T_C.") else (
-            r.nominal.P_W if key == "P_W" else float(r.nominal.losses.breakdown_W[key.split(".")[1]]))
+            r.nominal.P_W if key == "P_W" else float(r.nominal.breakdown_W[key.split(".")[1]]))
         assert b["p5"] == pytest.approx(nom, rel=1e-9, abs=1e-9), key
         assert b["p95"] == pytest.approx(nom, rel=1e-9, abs=1e-9), key
 
@@ -160,6 +160,16 @@ def test_bands_contain_the_nominal_neighbourhood(s004):
         assert b["p5"] < nom.T_C[node] < b["p95"]
         assert b["p95"] - b["p5"] < 0.2 * (nom.T_C[node] - 25.0)   # ±1 % inputs: a small part of the rise
     assert r.bands["P_W"]["p5"] < nom.P_W < r.bands["P_W"]["p95"]
+
+
+def test_each_samples_breakdown_adds_up_to_its_power(s004):
+    """The seed-004 point is blended across model switches: its breakdown is the blend, like its power
+    (not the breakdown of the alternative of the largest weight)."""
+    r = steady_uncertainty(s004, 24, seed=4)
+    parts = np.nansum([v for k, v in r.outputs.items() if k.startswith("breakdown_W.")], axis=0)
+    assert not r.failed
+    np.testing.assert_allclose(parts, r.outputs["P_W"], rtol=1e-9)
+    assert sum(r.nominal.breakdown_W.values()) == pytest.approx(r.nominal.P_W, rel=1e-9)
 
 
 def test_lubricant_draws_per_point_equal_one_lubricant_each():

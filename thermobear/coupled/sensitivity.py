@@ -173,7 +173,7 @@ def _nominal_value(nom, key):
     elif kind == "P_W":
         v = nom.P_W
     else:
-        v = (nom.losses.breakdown_W if hasattr(nom, "losses") else nom.breakdown_W).get(name)
+        v = nom.breakdown_W.get(name)          # the answer's own breakdown (blended where the answer is)
     if v is None:
         return None
     return float(np.ravel(v)[-1])

@@ -55,7 +55,6 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from thermobear.arrays import take
 from thermobear.contact.geometry import bearing_values
 from thermobear.contact.materials import PROPERTIES, material
 from thermobear.coupled.pipeline import Family, families, family_contacts, family_loads
@@ -425,7 +424,7 @@ def steady_outputs(results) -> dict:
     ok = {i: r for i, r in enumerate(results) if isinstance(r, SteadyState)}
     if not ok:
         return {}
-    loss = {i: _breakdown(r) for i, r in ok.items()}
+    loss = {i: r.breakdown_W for i, r in ok.items()}       # blended with P_W where a point is blended
     names = list(dict.fromkeys([f"T_C.{k}" for r in ok.values() for k in r.T_C] + ["P_W"]
                                + [f"breakdown_W.{k}" for b in loss.values() for k in b]))
     out = {k: np.full(len(results), np.nan) for k in names}
@@ -436,13 +435,6 @@ def steady_outputs(results) -> dict:
         for k, v in loss[i].items():
             out[f"breakdown_W.{k}"][i] = float(v)
     return out
-
-
-def _breakdown(st: SteadyState) -> dict:
-    """The loss breakdown of a state's loss result (:attr:`SteadyState.losses`): its row of the family's
-    batched breakdown alone, not the whole result sliced."""
-    r = st.batch_losses
-    return r.breakdown_W if st.row is None else take(r.breakdown_W, st.row, np.shape(r.P_W)[0])
 
 
 def steady_uncertainty(scene: Scene, n: int, *, seed=None, method: str = "lhs", groups: int | None = None,
