@@ -93,3 +93,22 @@ def test_calibrated_level_is_scored_only_on_held_out_cases():
     assert "MG1 1000 rpm" not in names and len(names) == 6
     # held-out error is a real error: not zero (the constants were not fitted to these cases)
     assert all(abs(e[3]) > 1e-3 for e in sc.errors)
+
+
+def test_level4_keeps_the_load_model_level3_takes(s004):
+    # L4 = L3 + high-speed dynamics, exact Hertz, per-ball stiffness: the film load law that the scene needs
+    # (seed 004: the dry solution nearly lifts a ball, blended film / dry) must not be dropped by L4
+    from thermobear.models import plan_many
+    for n in (3200.0, 6500.0):
+        l3 = {a.models["load_model"][0] for a in plan_many([fidelity._approx(s004).with_(n_rpm=n)])[0]}
+        l4 = {a.models["load_model"][0] for a in plan_many([fidelity._l4(fidelity._exact(s004)).with_(n_rpm=n)])[0]}
+        assert "film" in l3 and "film" in l4
+
+
+def test_level4_at_prescribed_temperature_is_the_blend(s004):
+    # inside the film switch band the prescribed-temperature L4 answer is the weighted blend of both load laws
+    sc = fidelity._l4(fidelity._exact(s004)).with_(n_rpm=6500.0, T_C=50.0)
+    P = fidelity.level4_prescribed(s004, [6500.0], [50.0])["P_W"][0]
+    assert P == pytest.approx(solve(sc).P_W, rel=1e-12)
+    assert "blend" in solve(sc).models_used
+

@@ -13,11 +13,15 @@ Levels (each a function of a scene and operating points; importable):
   axial balance (clipped at 0), all at the free contact angle; Hamrock–Brewe Hertz approximations.
 * **L2** — Jones–Harris (low speed, F_c added on the outer contact) + local losses at a given
   temperature; Hamrock–Brewe Hertz.
-* **L3** — L2 + the scene's thermal network, fixed point (:func:`thermobear.coupled.steady_state`)
-  or heat-up (:func:`thermobear.coupled.transient`).
+* **L3** — L2's loss model + the scene's thermal network, fixed point (:func:`thermobear.coupled.steady_state`)
+  or heat-up (:func:`thermobear.coupled.transient`); the load model as :func:`thermobear.models.choose_models`
+  takes it (dry Jones–Harris, or the film load law in a flooded bearing whose dry solution lifts or
+  nearly lifts a ball off a race, blended across the switch band).
 * **L4** — L3 with high-speed ball dynamics (:func:`thermobear.loads.highspeed.load_distribution_high_speed`,
   centrifugal force and gyroscopic moment inside the load distribution), exact Hertz and per-ball
-  stiffness.  Thrust bearings: per-ball Jones–Harris (the high-speed model is radial/angular only).
+  stiffness; the load model as L3's (the film load law where the dry solution nearly lifts a ball,
+  blended across its band).  Thrust bearings: per-ball Jones–Harris (the high-speed model is
+  radial/angular only).
 
 The local levels L1–L4 run the film physics that :func:`thermobear.models.choose_models` picks for the
 scene (issue 17): the base oil's Eyring / limiting-shear-stress traction instead of a constant μ_e
@@ -64,7 +68,7 @@ from thermobear.errors import ExtrapolationWarning, InputError, SolverError
 from thermobear.losses.skf import MU_EHL, skf_friction
 from thermobear.loads import LoadDistribution, axial_contact_angle, load_distribution
 from thermobear.scene.scene import Scene, scene_from_dict
-from thermobear.coupled import scene_losses, steady_state, transient
+from thermobear.coupled import scene_losses, solve, steady_state, transient
 from thermobear.models import choose_models
 
 HERE = Path(__file__).resolve().parent
@@ -76,8 +80,8 @@ LEVEL_INFO = {
     "L1": "local losses (film traction, inlet heating, replenishment as chosen), nominal ball loads (axial share "
           "+ Stribeck), Hamrock–Brewe Hertz, given T",
     "L2": "local losses (as L1), Jones–Harris, Hamrock–Brewe Hertz, given T",
-    "L3": "L2 + thermal network (fixed point / heat-up)",
-    "L4": "L3 + high-speed ball dynamics, exact Hertz, per-ball stiffness",
+    "L3": "L2 + thermal network (fixed point / heat-up) + the film load law where the scene needs it",
+    "L4": "L3 + high-speed ball dynamics, exact Hertz, per-ball stiffness (load model as L3's)",
 }
 SKF_LUB = {"grease": "grease", "oil_jet": "oil_jet", "oil_air": "oil_air", "oil_bath": "oil_jet",
            "dry_film": "grease"}
@@ -134,7 +138,9 @@ def _approx(scene: Scene) -> Scene:
 
 
 def _exact(scene: Scene) -> Scene:
-    return scene.with_(models={"hertz": "exact", "stiffness": "per_ball", "load_model": "jones_harris"})
+    """L4's contact mechanics: exact Hertz and per-ball stiffness; the load model (dry Jones–Harris, the film
+    load law, or their blend) as :func:`~thermobear.models.choose_models` takes it, as in L3."""
+    return scene.with_(models={"hertz": "exact", "stiffness": "per_ball"})
 
 
 def _batch_losses(scene, n_rpm, T_C, load, models):
@@ -172,15 +178,16 @@ def level2(scene: Scene, n_rpm, T_C):
 
 def _l4(sc: Scene) -> Scene:
     """L4: the high-speed ball equilibrium (F_c, M_g inside; thrust bearings: low speed), exact Hertz,
-    per-ball stiffness, Jones–Harris loads."""
+    per-ball stiffness; the load model as the scene needs it (dry, film or blended, as in L3)."""
     return sc.with_(models={"high_speed": sc.bearing.kind != "thrust"})
 
 
 def level4_prescribed(scene: Scene, n_rpm, T_C):
-    """L4 loss model at T_C [°C]: high-speed loads per speed, exact Hertz (one call per speed)."""
+    """L4 loss model at T_C [°C]: high-speed loads per speed, exact Hertz (one call per speed); across a
+    switch band of the load model the alternatives blended (:func:`thermobear.coupled.solve`)."""
     out = {"torque_Nm": [], "P_W": []}
     for n, T in np.broadcast(np.atleast_1d(n_rpm), np.atleast_1d(T_C)):
-        r = scene_losses(_l4(_exact(scene).with_(n_rpm=float(n), T_C=float(T))))
+        r = solve(_l4(_exact(scene).with_(n_rpm=float(n), T_C=float(T))))
         out["torque_Nm"].append(float(r.torque_Nm))
         out["P_W"].append(float(r.P_W))
     return {k: np.asarray(v) for k, v in out.items()}
