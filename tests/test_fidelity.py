@@ -112,3 +112,14 @@ def test_level4_at_prescribed_temperature_is_the_blend(s004):
     assert P == pytest.approx(solve(sc).P_W, rel=1e-12)
     assert "blend" in solve(sc).models_used
 
+
+def test_coupled_levels_compare_at_equal_ring_temperature(s004):
+    # seed 004 compares powers at equal OR-IR mean temperature and its model imposes the measured rings
+    # (§4.5): L3 / L4 keep their network (balls free, hotter than the rings, the more the faster)
+    out = fidelity.at_ring_temperature("L3", s004, [3200.0, 6500.0], [50.0, 50.0])
+    assert np.all(out["T_balls_C"] > 50.0) and out["T_balls_C"][1] > out["T_balls_C"][0] + 5.0
+    st = tb.steady_state(fidelity._approx(s004).with_(n_rpm=6500.0, T_fixed_C={"inner_ring": 50.0,
+                                                                                 "outer_ring": 50.0}))
+    assert out["P_W"][1] == pytest.approx(st.P_W, rel=1e-9)
+    scores = {s.level: s for s in fidelity.score_seed004(levels=("L2", "L3"))}
+    assert [e[1] for e in scores["L3"].errors] != [e[1] for e in scores["L2"].errors]   # not L2's values
