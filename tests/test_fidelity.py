@@ -123,3 +123,17 @@ def test_coupled_levels_compare_at_equal_ring_temperature(s004):
     assert out["P_W"][1] == pytest.approx(st.P_W, rel=1e-9)
     scores = {s.level: s for s in fidelity.score_seed004(levels=("L2", "L3"))}
     assert [e[1] for e in scores["L3"].errors] != [e[1] for e in scores["L2"].errors]   # not L2's values
+
+
+def test_targets_name_the_missing_physics_of_a_miss():
+    def score(lv, fam, err):
+        return fidelity.Score(lv, fam, [("c", 1.0 + err, 1.0, err)], 1e-3, 1e-3)
+    scores = [score("L1", "seed004 P ratio", 0.05), score("L2", "seed004 P ratio", 0.2),
+              score("L3", "new family", 0.1), score("L4", "new family", 0.3)]
+    text = fidelity.targets(scores)
+    rows = {line.split(" | ")[2].split(":")[0]: line for line in text.splitlines() if line.startswith("| ")}
+    assert "met" in rows["L1 5.0 %"] and "**missed**" in rows["L2 20.0 %"]
+    assert fidelity.MISSING[("seed004 P ratio", "L2")] in rows["L2 20.0 %"]
+    step = rows["L2 20.0 % vs L1 5.0 %"]                                # highest against lowest: the step's reason
+    assert "**missed**" in step and fidelity.MISSING[("seed004 P ratio", "L1→L2")] in step
+    assert "not diagnosed" in rows["L4 30.0 % vs L3 10.0 %"]          # a miss nobody explained stays visible
