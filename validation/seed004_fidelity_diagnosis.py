@@ -92,10 +92,9 @@ def uniform(models, n, T) -> dict:
     return acc
 
 
-def rings(models, n, T, load=None):
+def rings(models, n, T):
     """Steady state with both rings at T [°C], balls and oil–air from the network."""
-    sc = base().with_(T_C=None, n_rpm=n, models=models, T_fixed_C={"inner_ring": T, "outer_ring": T})
-    return steady_state(sc, load=load)
+    return steady_state(base().with_(T_C=None, n_rpm=n, models=models, T_fixed_C={"inner_ring": T, "outer_ring": T}))
 
 
 def _ratio(P):
@@ -306,7 +305,12 @@ def high_speed_check(L):
           "of the cage's Q_i weight.",
           f"* What it drives: drag ∝ ω_c³ (×{(wc / wc_ls) ** 3:.3f}), the outer entrainment speed "
           f"u_o ∝ ω_c (1 + γ' cos α_o) up and the inner one down, and the inner contacts' spin "
-          f"(spin/roll up to {np.max(np.abs(np.asarray(c['inner']['spin'])) / roll_i):.2f}; pivoting ×2, §3).", ""]
+          f"(spin/roll up to {np.max(np.abs(np.asarray(c['inner']['spin'])) / roll_i):.2f}; pivoting ×2, §3).",
+          "* **Defect found on the way (fixed, no default number moves):** the high-speed ball equilibrium always took "
+          "outer-raceway control, whatever `models.kinematics` said, so `kinematics = \"inner\"` ran inner-control "
+          "contact kinematics on outer-control loads; the loads now take the scene's control (`models.high_speed_control`; "
+          "test: `tests/test_loads_highspeed.py::test_scene_loads_and_kinematics_share_the_raceway_control`).  The "
+          "inner-control what-if of §5 relies on it.", ""]
     return wc / wc_ls, float(np.degrees((ai - ao).max())), float(own[:, 0].max() / own[0, 0])
 
 
@@ -317,7 +321,6 @@ def uniform_cage(models, n):
 
 # ------------------------------------------------------------------------------------------ 5. what-ifs
 def what_ifs(L):
-    sc = base()
     rows = [("as the level is", {}), ("rolling force: one form (Biboulet PVR) in every regime", {"rolling": "biboulet_pvr"}),
             ("no drag", {"drag": False}), ("no inlet shear heating (Gupta φ_T = 1)", {"inlet_heating": False}),
             ("no replenishment factor (Φ_rs = 1)", {"starvation": False}),
@@ -340,15 +343,10 @@ def what_ifs(L):
             out[(name, "L1" if m is L1M else "L4" if m is L4M else "L2", kind)] = rat
         L.append(f"| {name} | " + " | ".join(cells) + " |")
     rat_i, rat_iu, dP = [], [], []
+    inner = {**HSDRY, "kinematics": "inner"}          # the loads and the contacts' kinematics both (commit 705823b)
     for T in TEMPS:
-        P, Pu = {}, {}
-        for n in SPEEDS:
-            ld, _ = load_distribution_high_speed_full(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, n_rpm=n, control="inner",
-                                                      stiffness="per_ball")
-            mm = {**HSDRY, "kinematics": "inner"}
-            P[n] = rings(mm, n, T, load=ld).P_W
-            s = base().with_(n_rpm=n, T_C=T, models=mm)
-            Pu[n] = float(scene_losses(s, models=choose_models(s), load=ld).P_W)
+        P = {n: rings(inner, n, T).P_W for n in SPEEDS}
+        Pu = {n: uniform(inner, n, T)["P"] for n in SPEEDS}
         rat_i.append(_ratio(P))
         rat_iu.append(_ratio(Pu))
         dP.append(1.0 - P[SPEEDS[1]] / rings(HSDRY, SPEEDS[1], T).P_W)
