@@ -497,7 +497,7 @@ def reading(L, ratios, band, wi, hs, steps):
           f"{e['L0']:.1f} → L1 {e['L1']:.1f} → L2 {e['L2']:.1f} → L3 {e['L3']:.1f} → L4 {e['L4']:.1f} %: the highest "
           "level is more accurate than the lowest; two steps rise: L1 → L2 and L3 → L4.",
           "* **L1 → L2** (§3): at 30 °C the ratio falls mostly through the outer contacts' rolling at 3200 rpm.  The "
-          "Jones–Harris loads leave the balls around ψ = 180° with 8–13 N on the outer race and 0–3 N on the inner "
+          "Jones–Harris loads leave the balls around ψ = 180° with 8–11 N on the outer race (3200 rpm) and 0–3 N on the inner "
           "(L1's uniform axial share: ≥ 12 N inner, ≥ 20 N outer); such light contacts sit near the IVR / PVR "
           "boundary, whose two rolling forms (Houpert IVR, Biboulet PVR: seed 004 eqs 17, 19) meet only to "
           "×0.5–0.9 (`losses/rolling.py`), and they cross it at other loads at 3200 and 6500 rpm.  With one form in "
