@@ -93,3 +93,47 @@ def test_calibrated_level_is_scored_only_on_held_out_cases():
     assert "MG1 1000 rpm" not in names and len(names) == 6
     # held-out error is a real error: not zero (the constants were not fitted to these cases)
     assert all(abs(e[3]) > 1e-3 for e in sc.errors)
+
+
+def test_level4_keeps_the_load_model_level3_takes(s004):
+    # L4 = L3 + high-speed dynamics, exact Hertz, per-ball stiffness: the film load law that the scene needs
+    # (seed 004: the dry solution nearly lifts a ball, blended film / dry) must not be dropped by L4
+    from thermobear.models import plan_many
+    for n in (3200.0, 6500.0):
+        l3 = {a.models["load_model"][0] for a in plan_many([fidelity._approx(s004).with_(n_rpm=n)])[0]}
+        l4 = {a.models["load_model"][0] for a in plan_many([fidelity._l4(fidelity._exact(s004)).with_(n_rpm=n)])[0]}
+        assert "film" in l3 and "film" in l4
+
+
+def test_level4_at_prescribed_temperature_is_the_blend(s004):
+    # inside the film switch band the prescribed-temperature L4 answer is the weighted blend of both load laws
+    sc = fidelity._l4(fidelity._exact(s004)).with_(n_rpm=6500.0, T_C=50.0)
+    P = fidelity.level4_prescribed(s004, [6500.0], [50.0])["P_W"][0]
+    assert P == pytest.approx(solve(sc).P_W, rel=1e-12)
+    assert "blend" in solve(sc).models_used
+
+
+def test_coupled_levels_compare_at_equal_ring_temperature(s004):
+    # seed 004 compares powers at equal OR-IR mean temperature and its model imposes the measured rings
+    # (§4.5): L3 / L4 keep their network (balls free, hotter than the rings, the more the faster)
+    out = fidelity.at_ring_temperature("L3", s004, [3200.0, 6500.0], [50.0, 50.0])
+    assert np.all(out["T_balls_C"] > 50.0) and out["T_balls_C"][1] > out["T_balls_C"][0] + 5.0
+    st = tb.steady_state(fidelity._approx(s004).with_(n_rpm=6500.0, T_fixed_C={"inner_ring": 50.0,
+                                                                                 "outer_ring": 50.0}))
+    assert out["P_W"][1] == pytest.approx(st.P_W, rel=1e-9)
+    scores = {s.level: s for s in fidelity.score_seed004(levels=("L2", "L3"))}
+    assert [e[1] for e in scores["L3"].errors] != [e[1] for e in scores["L2"].errors]   # not L2's values
+
+
+def test_targets_name_the_missing_physics_of_a_miss():
+    def score(lv, fam, err):
+        return fidelity.Score(lv, fam, [("c", 1.0 + err, 1.0, err)], 1e-3, 1e-3)
+    scores = [score("L1", "seed004 P ratio", 0.05), score("L2", "seed004 P ratio", 0.2),
+              score("L3", "new family", 0.1), score("L4", "new family", 0.3)]
+    text = fidelity.targets(scores)
+    rows = {line.split(" | ")[2].split(":")[0]: line for line in text.splitlines() if line.startswith("| ")}
+    assert "met" in rows["L1 5.0 %"] and "**missed**" in rows["L2 20.0 %"]
+    assert fidelity.MISSING[("seed004 P ratio", "L2")] in rows["L2 20.0 %"]
+    step = rows["L2 20.0 % vs L1 5.0 %"]                                # highest against lowest: the step's reason
+    assert "**missed**" in step and fidelity.MISSING[("seed004 P ratio", "L1→L2")] in step
+    assert "not diagnosed" in rows["L4 30.0 % vs L3 10.0 %"]          # a miss nobody explained stays visible

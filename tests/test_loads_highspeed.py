@@ -371,3 +371,35 @@ def test_seed004_point_converges_quadratically():
     ld = load_distribution_high_speed(bearing("7210"), Fa=450.0, Fr=325.0, n_rpm=3200.0)
     assert ld.residual <= 1e-13
     assert ld.iterations <= 10
+
+
+@pytest.mark.parametrize("control", ["outer", "inner"])
+@pytest.mark.parametrize("load_model", ["jones_harris", "film"])
+def test_scene_loads_and_kinematics_share_the_raceway_control(control, load_model):
+    # Jones (1960): the raceway control sets β and the gyroscopic moment's share in the ball equilibrium *and*
+    # the ball's kinematics; a scene's models.kinematics must reach the high-speed loads as well as the contacts
+    # (before: the loads always took outer control, inconsistent with models.kinematics = "inner")
+    from thermobear.coupled import scene_contacts, solve
+    from thermobear.models import plan_many
+    sc = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml")).with_(
+        n_rpm=6500.0, T_C=50.0, models={"high_speed": True, "kinematics": control, "load_model": load_model})
+    (alt,) = plan_many([sc])[0]
+    cs = scene_contacts(sc, alt.models)
+    ref, ex = load_distribution_high_speed_full(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, n_rpm=6500.0, control=control)
+    other = "inner" if control == "outer" else "outer"
+    _, ex_other = load_distribution_high_speed_full(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, n_rpm=6500.0, control=other)
+    w, w_same, w_other = (float(np.mean(x)) for x in (cs.omega_cage, ex.omega_c, ex_other.omega_c))
+    assert abs(w_other / w_same - 1) > 0.05                      # the two hypotheses' cages differ: the test can tell
+    if load_model == "jones_harris":
+        assert rel(cs.load.Q_i, ref.Q_i) < 1e-8 and rel(cs.load.alpha_o, ref.alpha_o) < 1e-8
+        assert w == pytest.approx(w_same, rel=1e-9)
+    else:                                                        # the films move the cage a little, not across
+        assert abs(w - w_same) < 0.1 * abs(w_other - w_same)
+    assert solve(sc).P_W > 0
+
+
+def test_high_speed_form_refuses_a_raceway_control_it_has_not():
+    sc = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml")).with_(
+        n_rpm=6500.0, T_C=50.0, models={"high_speed": True, "kinematics": "radial"})
+    with pytest.raises(InputError, match="models.kinematics"):
+        tb.choose_models(sc)

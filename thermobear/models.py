@@ -112,8 +112,22 @@ def _high_speed_choice(scene: Scene) -> tuple:
         if hs and scene.rotating != "inner":
             raise InputError("models.high_speed", True, "the high-speed form is implemented for a rotating inner "
                              "ring (operation.rotating = 'inner')")
+        if hs:
+            high_speed_control(scene)
         return ("yes" if hs else "no", "chosen in the scene")
     return ("no", "thrust bearing: centrifugal force acts across the groove; not modelled")
+
+
+def high_speed_control(scene: Scene) -> str:
+    """The raceway control of the high-speed form's ball equilibrium: the scene's kinematics (``models.kinematics``,
+    default ``"outer"``), so that the loads (β and the gyroscopic moment's share λ, Jones 1960) and the contacts'
+    kinematics rest on one hypothesis.  InputError for ``"radial"``: the high-speed form takes its β from the
+    controlling contact (outer or inner)."""
+    ctl = scene.models.get("kinematics", "outer")
+    if ctl not in ("outer", "inner"):
+        raise InputError("models.kinematics", ctl, "the high-speed form needs outer or inner raceway control (β from "
+                         "the controlling contact, Jones 1960)")
+    return ctl
 
 
 def refuse_unloaded_thrust(Fa):
@@ -125,7 +139,8 @@ def refuse_unloaded_thrust(Fa):
 
 def _dry_key(scene: Scene, hs: bool):
     """The dry load distribution the model choice of ``scene`` needs with the high-speed form ``hs`` —
-    (bearing, Fa, Fr, M, stiffness, n_rpm or None, Fz, My) — or None when it needs none (closed form, film
+    (bearing, Fa, Fr, M, stiffness, n_rpm or None, Fz, My, raceway control of the high-speed form or None) —
+    or None when it needs none (closed form, film
     chosen in the scene, no choice to make, or an invalid scene: :func:`choose_models` will say why)."""
     m = scene.models
     if m.get("load_model") in ("closed_form", "film") or (scene.T_C is None and not scene.network):
@@ -136,7 +151,7 @@ def _dry_key(scene: Scene, hs: bool):
         return None
     M, My = moments(scene)
     return (scene.bearing, float(scene.Fa), float(scene.Fr), M, m.get("stiffness", "nominal"),
-            float(scene.n_rpm) if hs else None, float(scene.Fz), My)
+            float(scene.n_rpm) if hs else None, float(scene.Fz), My, high_speed_control(scene) if hs else None)
 
 
 def moments(scene: Scene) -> tuple:
@@ -147,24 +162,29 @@ def moments(scene: Scene) -> tuple:
     return float(scene.M or 0.0), float(scene.My or 0.0)
 
 
-def _solve_dry(brg, Fa, Fr, M, stiffness, n_rpm, *, continuation=True, Fz=0.0, My=None) -> LoadDistribution:
-    """Dry Jones–Harris load distribution (high-speed form when ``n_rpm`` is given); arrays batch."""
-    return _solve_dry_full(brg, Fa, Fr, M, stiffness, n_rpm, continuation=continuation, Fz=Fz, My=My)[0]
+def _solve_dry(brg, Fa, Fr, M, stiffness, n_rpm, *, continuation=True, Fz=0.0, My=None,
+               control="outer") -> LoadDistribution:
+    """Dry Jones–Harris load distribution (high-speed form when ``n_rpm`` is given, with raceway ``control``);
+    arrays batch."""
+    return _solve_dry_full(brg, Fa, Fr, M, stiffness, n_rpm, continuation=continuation, Fz=Fz, My=My,
+                           control=control)[0]
 
 
-def _solve_dry_full(brg, Fa, Fr, M, stiffness, n_rpm, *, continuation=True, Fz=0.0, My=None) -> tuple:
+def _solve_dry_full(brg, Fa, Fr, M, stiffness, n_rpm, *, continuation=True, Fz=0.0, My=None, control="outer") -> tuple:
     """(:func:`_solve_dry`, the high-speed form's HighSpeedExtras or None)."""
     if n_rpm is None:
         return load_distribution(brg, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, stiffness=stiffness, continuation=continuation,
                                  refuse_overload=False), None    # the contact set refuses overloads per point
-    return load_distribution_high_speed_full(brg, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, n_rpm=n_rpm, stiffness=stiffness)
+    return load_distribution_high_speed_full(brg, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, n_rpm=n_rpm, stiffness=stiffness,
+                                             control=control)
 
 
 def dry_load(scene: Scene, high_speed: bool) -> LoadDistribution:
     """The scene's dry Jones–Harris load distribution (high-speed form when ``high_speed``)."""
     M, My = moments(scene)
     return _solve_dry(scene.bearing, float(scene.Fa), float(scene.Fr), M, scene.models.get("stiffness", "nominal"),
-                      float(scene.n_rpm) if high_speed else None, Fz=float(scene.Fz), My=My)
+                      float(scene.n_rpm) if high_speed else None, Fz=float(scene.Fz), My=My,
+                      control=high_speed_control(scene) if high_speed else "outer")
 
 
 def open_contacts(scene: Scene, high_speed: bool, dry: LoadDistribution | None = None) -> int:
@@ -217,6 +237,8 @@ def _high_speed_alternatives(scene: Scene) -> list:
     if scene.rotating != "inner" and w > 0.0:
         return [(("no", f"F_c/Q = {ratio:.3g} > {lo:g}, but the high-speed form is implemented for a rotating inner "
                         "ring: low-speed form with F_c on the outer contacts"), 1.0)]
+    if w > 0.0:
+        high_speed_control(scene)              # the high-speed form takes part: its raceway control must be one it has
     if w >= 1.0:
         return [(("yes", f"F_c/Q = {ratio:.3g} >= {hi:g}: Jones high-speed form (centrifugal force, gyroscopic "
                          "moment, outer-race control) shifts the contact angles"), 1.0)]
@@ -551,10 +573,10 @@ def plan_many(scenes) -> list:
         for hs, _ in ([] if isinstance(alts, Exception) else alts):
             k = _dry_key(sc, hs[0] == "yes")
             if k is not None:
-                groups.setdefault((k[0], k[3] is None, k[4], k[5] is None), {})[k] = None
+                groups.setdefault((k[0], k[3] is None, k[4], k[8]), {})[k] = None
     dry: dict = {}
-    for (brg, no_M, stiff, low), members in groups.items():
-        _batch_dry(brg, no_M, stiff, low, list(members), dry)
+    for (brg, no_M, stiff, ctl), members in groups.items():
+        _batch_dry(brg, no_M, stiff, ctl, list(members), dry)
     out, K_z = [], {}              # K_z: bearing kind → SKF K_z, read once for these scenes
     for sc, alts in zip(scenes, hs_alts):
         if isinstance(alts, Exception):
@@ -583,22 +605,24 @@ def _alternatives(sc: Scene, hs_alts: list, dry: dict, K_z: dict) -> list:
     return [a if total == 1.0 else Alternative(a.models, a.dry, a.weight / total) for a in out]
 
 
-def _batch_dry(brg, no_M, stiff, low, keys, dry):
-    """Solve the dry loads of ``keys`` (one group) in batched calls, halving failed batches; each key
-    gets its :class:`DryRow` or the SolverError of its own solve."""
+def _batch_dry(brg, no_M, stiff, ctl, keys, dry):
+    """Solve the dry loads of ``keys`` (one group; ``ctl`` the high-speed form's raceway control, None: low-speed
+    form) in batched calls, halving failed batches; each key gets its :class:`DryRow` or the SolverError of its own
+    solve."""
     Fa, Fr = np.array([k[1] for k in keys]), np.array([k[2] for k in keys])
     M = None if no_M else np.array([k[3] for k in keys])
-    n = None if low else np.array([k[5] for k in keys])
+    n = None if ctl is None else np.array([k[5] for k in keys])
     Fz, My = np.array([k[6] for k in keys]), None if no_M else np.array([k[7] for k in keys])
     try:               # no continuation inside a batch: a case that needs it is left to its own solve
-        ld, ex = _solve_dry_full(brg, Fa, Fr, M, stiff, n, continuation=len(keys) == 1, Fz=Fz, My=My)
+        ld, ex = _solve_dry_full(brg, Fa, Fr, M, stiff, n, continuation=len(keys) == 1, Fz=Fz, My=My,
+                                 control=ctl or "outer")
     except (SolverError, InputError) as exc:     # loads the contacts cannot carry: said by the load step
         if len(keys) == 1:
             dry[keys[0]] = exc
             return
         h = len(keys) // 2
-        _batch_dry(brg, no_M, stiff, low, keys[:h], dry)
-        _batch_dry(brg, no_M, stiff, low, keys[h:], dry)
+        _batch_dry(brg, no_M, stiff, ctl, keys[:h], dry)
+        _batch_dry(brg, no_M, stiff, ctl, keys[h:], dry)
         return
     B = len(keys)
     Qi, Qo = np.asarray(ld.Q_i, float).reshape(B, -1), np.asarray(ld.Q_o, float).reshape(B, -1)

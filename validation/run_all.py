@@ -165,8 +165,10 @@ def main(argv=()):
     l4 = [x for x in scores if x.level == "L4" and x.family.startswith("seed004")]
     l4txt = "; ".join(f"{x.family}: {rms('L4', x.family)}" + (f" ({len(x.failed)} failed)" if x.failed else "")
                       for x in l4)
-    w(f"* Seed 004 (7210, oil jet): P(6500)/P(3200) at equal temperature (measured ≈ 3): L0 "
-      f"{rms('L0', 'seed004 P ratio')}, L1 {rms('L1', 'seed004 P ratio')}, L2 {rms('L2', 'seed004 P ratio')}.  "
+    w(f"* Seed 004 (7210, oil jet): P(6500)/P(3200) at equal temperature (measured ≈ 3; L0–L2 at a uniform T, "
+      f"L3–L4 with both rings imposed, balls from the network): L0 {rms('L0', 'seed004 P ratio')}, L1 "
+      f"{rms('L1', 'seed004 P ratio')}, L2 {rms('L2', 'seed004 P ratio')}, L3 {rms('L3', 'seed004 P ratio')}, L4 "
+      f"{rms('L4', 'seed004 P ratio')} (why each step moves: seed004_fidelity_diagnosis.md).  "
       f"IR temperature rise after 1000 s, L3: {ratio} (model vs measured).  L4: {l4txt}.")
     w("* Model no more than a scene needs: where a cheaper level gives the same error, "
       "`thermobear.coupled.choose_models` already picks it (closed form for symmetric loads, no network "

@@ -131,7 +131,8 @@ def _prescribed_group(scenes, points, models, members):
             n_u, back = np.unique(n, return_inverse=True)
             M, My = moments(sc)
             load = take(load_distribution_high_speed(sc.bearing, Fa=sc.Fa, Fr=sc.Fr, M=M, Fz=sc.Fz, My=My, n_rpm=n_u,
-                                                     stiffness=sc.models.get("stiffness", "nominal")),
+                                                     stiffness=sc.models.get("stiffness", "nominal"),
+                                                     control=models["kinematics"][0]),
                         back, n_u.size)
         r = _losses_batch(sc, n, T, models, load=load)
     P, M = np.atleast_1d(r.P_W), np.atleast_1d(r.torque_Nm)

@@ -224,7 +224,8 @@ def _film_loads(scene, models, Fa, Fr, M, n_rpm, T_film_C, Fz, My, lubricant, st
     val = (lambda v: np.asarray(v, float)) if batch else float     # noqa: E731
     if models["high_speed"][0] == "yes":
         r = load_distribution_high_speed_full(scene.bearing, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, n_rpm=val(n_rpm),
-                                              stiffness=stiff, film=dict(eta=val(eta), alpha_p=val(ap)), start=start)
+                                              stiffness=stiff, film=dict(eta=val(eta), alpha_p=val(ap)), start=start,
+                                              control=models["kinematics"][0])
         return r[0], r
     uu = u[:, None] if batch else float(u)
     ld = film_load_distribution(scene.bearing, Fa=Fa, Fr=Fr, M=M, Fz=Fz, My=My, u_i=uu, u_o=uu, eta=val(eta),
@@ -262,7 +263,7 @@ def family_loads(fam: Family, T_film_C=None) -> LoadDistribution:
     stiff = sc.models.get("stiffness", "nominal")
     if m["high_speed"][0] == "yes":
         return load_distribution_high_speed(sc.bearing, Fa=Fa, Fr=Fr, M=M, n_rpm=fam.values("n_rpm"), stiffness=stiff,
-                                            **F5)
+                                            control=m["kinematics"][0], **F5)
     # overloads are refused per point by coupled/limits.py (on the contact set), not for the whole batch
     return load_distribution(sc.bearing, Fa=Fa, Fr=Fr, M=M, stiffness=stiff, refuse_overload=False, **F5)
 
