@@ -28,8 +28,6 @@ References
 """
 from __future__ import annotations
 
-from functools import lru_cache
-
 import numpy as np
 
 from thermobear.loads.filmlaw import _carry, _invert
@@ -40,17 +38,18 @@ _EPS_TENSION = 1e-12    # linear stiffness of an open contact, relative to K √
 LAG_SKIP = 0.05         # film refresh: keep the iterate when the cage-speed lag is below this fraction of its residual
 
 
-@lru_cache(maxsize=32)
 def _stiffness_constants(brg):
     """K_i, K_o at the nominal contact angle [N/m^1.5] and the open-contact regularising stiffness
-    ε K_n √A [N/m] of a bearing (cached: a BallBearing is immutable and hashable)."""
-    an = brg.alpha_nominal
-    return float(brg.K_i(an)), float(brg.K_o(an)), _EPS_TENSION * float(brg.Kn()) * np.sqrt(brg.A)
+    ε K_n √A [N/m] of a bearing (:attr:`~thermobear.contact.geometry.BallBearing.K_nominal`, derived when the
+    bearing was built)."""
+    if brg.K_nominal is None:                # a geometry Hertz refuses: its error
+        brg.Kn(brg.alpha_nominal)
+    Ki, Ko, Kn = brg.K_nominal
+    return Ki, Ko, _EPS_TENSION * Kn * np.sqrt(brg.A)
 
 
-@lru_cache(maxsize=32)
 def _constants(brg, ndof):
-    """Fixed arrays of a bearing (read-only): the lever matrix (ndof, 2Z) [m], the ring sums of the ball forces
+    """Fixed arrays of a bearing (formed with each problem, ≈ 15 µs): the lever matrix (ndof, 2Z) [m], the ring sums of the ball forces
     (4Z, ndof), the sums of the Jacobian's per-ball terms ((2 ndof + 2) Z, ndof² + ndof), and each ring row's
     contact component comp_k (0 axial, 1 radial) and lever w_k ∈ {1, cos ψ, sin ψ} (ndof, Z): the ring sums
     S[m, k] = Σ_j P[m, comp_k] w_k of the per-ball rows P[m] = d r_g,m/dp and the cage row in one product."""
@@ -62,19 +61,14 @@ def _constants(brg, ndof):
     Sg = np.zeros((4 * Z, ndof))              # (f_i,a | f_o,a | f_i,r | f_o,r) -> (F_a, F_r, M/ℜ, F_z, M_y/ℜ)
     Sg[:Z], Sg[2 * Z:3 * Z] = W[0].T, W[1].T
     M = np.zeros((2 * ndof + 2, Z, ndof * ndof + ndof))
-    for m in range(ndof + 1):                 # ring rows, then the cage row (columns ndof² …)
-        for k in range(ndof):
-            M[2 * m + comp[k], :, m * ndof + k] = lev[k]
-    out = (L, Sg, M.reshape((2 * ndof + 2) * Z, ndof * ndof + ndof), comp, lev)
-    for a in out:
-        a.setflags(write=False)
-    return out
+    m, k = np.arange(ndof + 1)[:, None], np.arange(ndof)[None, :]
+    M[2 * m + comp[k], :, m * ndof + k] = lev[k]     # ring rows m, then the cage row (columns ndof² …)
+    return L, Sg, M.reshape((2 * ndof + 2) * Z, ndof * ndof + ndof), comp, lev
 
 
-@lru_cache(maxsize=64)
 def _fixed(brg, lam_i, lam_o, kin_control, ndof, arm):
-    """The fixed attributes of a :class:`_HSProblem` (cached per bearing, raceway control, ring unknowns and tilt
-    arm ℜ [m]; arrays read-only)."""
+    """The fixed attributes of a :class:`_HSProblem` (formed with each problem, ≈ 40 µs: per bearing, raceway
+    control, ring unknowns and tilt arm ℜ [m])."""
     Z, A = brg.Z, brg.A
     L, Sg, Msum, comp, lev = _constants(brg, ndof)
     Ki, Ko, k_eps = _stiffness_constants(brg)
@@ -105,11 +99,6 @@ def _fixed(brg, lam_i, lam_o, kin_control, ndof, arm):
         mom=tuple((k, lam_i * brg.fi / arm * lev[k]) for k in range(2, ndof, 2)),
         PM=row(1.0, -1.0),                      # the inner contact pushes the ball, the outer holds it
         onesZ=np.ones((Z, 1)))
-    for v in f.values():
-        if isinstance(v, np.ndarray):
-            v.setflags(write=False)
-    for _, v in f["mom"]:
-        v.setflags(write=False)
     return f
 
 
