@@ -62,7 +62,7 @@ from thermobear.losses.sliding import (XI0_HEATHCOTE, deformed_radius, hysteresi
                                        pivoting_moment, sliding_power_heathcote)
 from thermobear.losses.terms import (added_powers, drag_power, inlet_viscosity, property_at, replenishment,
                                      temperature_stack)
-from thermobear.losses.traction import STRIP_NODES, strip_traction_coefficient
+from thermobear.losses.traction import STRIP_NODES, StripContacts, check_film_viscosity, strip_contacts
 from thermobear.lubrication.film import REGIMES, EHLContacts, ehl_contacts, specific_film_thickness
 from thermobear.validity import check as check_limit
 
@@ -149,6 +149,8 @@ class ContactSet:
                                   ξ_k of :data:`thermobear.losses.traction.STRIP_NODES` [m/s], (*batch, 2, Z, 2, k)
     p_strip : ndarray             mean pressure across the rolling direction there, (π/4) p_max √(1 − ξ_k²) [Pa],
                                   (*batch, 2, Z, 1, k)
+    strip : StripContacts         the slips and pressures prepared for the traction formulas
+                                  (:func:`thermobear.losses.traction.strip_contacts`)
     K_z : float or None           SKF bearing-type constant of the replenishment factor (None: bore/OD or kind unknown)
     ehl : EHLContacts             the contacts prepared for the film and regime formulas
                                   (:func:`thermobear.lubrication.film.ehl_contacts`)
@@ -181,6 +183,7 @@ class ContactSet:
     P_hysteresis: np.ndarray
     slips: np.ndarray
     p_strip: np.ndarray
+    strip: StripContacts
     K_z: float | None
     ehl: EHLContacts
     rolling: RollingContacts
@@ -321,6 +324,7 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
                       models_used=models, Q=f(Q2), alpha=f(al2), Rx=f(Rx2), Ry=f(Ry2),
                       a=f(a2), b=f(b2), u=f(u2), spin=f(spin2), omega_roll=f(omega_roll2), P_sliding_mu=f(P_sl),
                       P_pivoting_mu=f(P_piv), P_hysteresis=f(P_hys), slips=f(slips), p_strip=f(p_strip), K_z=K_z,
+                      strip=strip_contacts(slips, p_strip),
                       ehl=ehl_contacts(Q2, Rx2, Ry2, u2, brg.E_prime),
                       rolling=rolling_contacts(Q2, Rx2, Ry2, u2, brg.E_prime, a2, b2))
 
@@ -437,9 +441,10 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     else:                                           # smooth surfaces: Λ = ∞, full-film friction
         Lam = np.full(h_min.shape, np.inf)
     if traction == "eyring":
-        oil_s = oil.aligned(4) if pp else oil       # per point against (…, B, 2, Z, 2, nodes)
-        mu_f = strip_traction_coefficient(cs.slips, cs.p_strip, h_c[..., None], eta2[..., None], alpha2[..., None],
-                                          oil_s.eyring_stress, oil_s.limiting_shear)  # (..., 2, Z, 2): micro-slip, spin
+        oil_s = oil.aligned(3) if pp else oil       # per point against (…, B, 2, Z, 2): per contact
+        check_film_viscosity(eta2)
+        mu_f = cs.strip.traction(h_c[..., None], eta2[..., None], alpha2[..., None], oil_s.eyring_stress,
+                                 oil_s.limiting_shear)             # (..., 2, Z, 2): micro-slip, spin
         mu = mixed_friction_ianus(Lam, mu_f[..., 0], mu_boundary)
         mu_piv = mixed_friction_ianus(Lam, mu_f[..., 1], mu_boundary)
     else:

@@ -78,10 +78,11 @@ def drag_power(cs, oil, T_oil, eta_oil, supply, oil_flow_m3_s):
     :func:`~thermobear.losses.drag.drag_loss` with Parker's oil fraction (oil jet), 1 % (oil–air)
     or air alone (grease); 0 where the bearing stands still."""
     brg, batch = cs.brg, cs.batch
-    if not batch and T_oil.size <= _FEW:            # one operating point (turning: dragged), a few states
-        n, wc = float(cs.n_rpm), float(cs.omega_cage)
-        X = (oil_volume_fraction_parker(float(oil_flow_m3_s) * 1e6 * 60.0, n, brg.dm * 1e3) if supply == "oil_jet"
-             else 0.01 if supply == "oil_air" else 0.0)
+    if cs.n_rpm.size == 1 and T_oil.size <= _FEW and np.size(oil_flow_m3_s) == 1 and oil.points is None:
+        # one operating point (turning: dragged), a few states: the formulas on Python floats
+        n, wc = cs.n_rpm.item(), cs.omega_cage.item()
+        X = (oil_volume_fraction_parker(np.asarray(oil_flow_m3_s, float).item() * 1e6 * 60.0, n, brg.dm * 1e3)
+             if supply == "oil_jet" else 0.01 if supply == "oil_air" else 0.0)
         P = [drag_loss(brg.Z, brg.D, brg.dm, wc, X, oil.rho(t), e, t + 273.15).P_W
              for t, e in zip(T_oil.ravel().tolist(), eta_oil.ravel().tolist())]
         return np.array(P).reshape(T_oil.shape)
