@@ -431,9 +431,11 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     eta_all = property_at(oil_c.eta, Tall, pp)      # contacts and (drag) the oil–air mixture in one call
     eta2, alpha2 = eta_all[..., :2, :], property_at(oil_c.alpha_p_at, T2, pp)
     eta_in = inlet_viscosity(cs, oil_c, T2, eta2, pp) if inlet_heating else eta2
-    h_min, h_c = cs.ehl.film_thickness(eta_in, alpha2, kind=("min", "central"))
-    reg = cs.ehl.regime(eta_in, alpha2)
-    F_R = cs.rolling.force(eta_in, _ROLLING_FORCE_MODEL.get(rolling_model, rolling_model), alpha_p=alpha2, regime=reg)
+    # η and α_p are the lubricant's (checked by its temperatures): the formulas below skip their input checks
+    h_min, h_c = cs.ehl.film_thickness(eta_in, alpha2, kind=("min", "central"), check=False)
+    reg = cs.ehl.regime(eta_in, alpha2, check=False)
+    F_R = cs.rolling.force(eta_in, _ROLLING_FORCE_MODEL.get(rolling_model, rolling_model), alpha_p=alpha2, regime=reg,
+                           check=False)
     if starvation:
         F_R = F_R * replenishment(cs, oil_c, T2, supply, pp)
     if np.any(Rq_ball) or np.any(Rq_ring):
@@ -445,10 +447,10 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
         check_film_viscosity(eta2)
         mu_f = cs.strip.traction(h_c[..., None], eta2[..., None], alpha2[..., None], oil_s.eyring_stress,
                                  oil_s.limiting_shear)             # (..., 2, Z, 2): micro-slip, spin
-        mu = mixed_friction_ianus(Lam, mu_f[..., 0], mu_boundary)
-        mu_piv = mixed_friction_ianus(Lam, mu_f[..., 1], mu_boundary)
+        mus = mixed_friction_ianus(Lam[..., None], mu_f, np.asarray(mu_boundary, float)[..., None], check=False)
+        mu, mu_piv = mus[..., 0], mus[..., 1]                           # Λ ≥ 0: films over roughnesses
     else:
-        mu = mu_piv = mixed_friction_ianus(Lam, mu_full_film, mu_boundary)
+        mu = mu_piv = mixed_friction_ianus(Lam, mu_full_film, mu_boundary, check=False)
     P = np.empty((4,) + h_min.shape)                # rolling, sliding, pivoting, hysteresis per contact
     P[0] = rolling_power(cs.u, F_R)
     np.multiply(mu, cs.P_sliding_mu, out=P[1])

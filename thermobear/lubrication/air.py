@@ -83,6 +83,16 @@ def air_table(path=None) -> AirTable:
     return AirTable(c=c, pieces=tuple(tuple(tuple(q) for q in r) for r in rows))
 
 
+_FEW = 8        # up to this many temperatures, the pieces are evaluated one Python float at a time
+
+
+def _at(tab, T):
+    """(rho, mu, k, cp) of the table ``tab`` at one temperature T [K] (a Python float in range)."""
+    i = min(int(T - T_RANGE_K[0]), len(tab.pieces) - 1)
+    s = T - (T_RANGE_K[0] + i)
+    return tuple(_cubic(*cq, s) for cq in tab.pieces[i])
+
+
 def _cubic(c0, c1, c2, c3, s):
     """One cubic piece of the table's spline at s = T − T_i [K] (floats or arrays)."""
     return c3 + s * (c2 + s * (c1 + s * c0))
@@ -106,21 +116,24 @@ def air_properties(T_K, p_Pa=P_ATM, *, table=None):
     """
     tab = AIR_1ATM if table is None else table
     if isinstance(T_K, float) and p_Pa == P_ATM and T_RANGE_K[0] <= T_K <= T_RANGE_K[1]:
-        T = float(T_K)                                              # one temperature: Python floats
-        i = min(int(T - T_RANGE_K[0]), len(tab.pieces) - 1)
-        s = T - (T_RANGE_K[0] + i)
-        rho, mu, k, cp = (_cubic(*cq, s) for cq in tab.pieces[i])
+        rho, mu, k, cp = _at(tab, float(T_K))                       # one temperature: Python floats
         return {"rho": rho, "mu": mu, "k": k, "cp": cp, "nu": mu / rho, "Pr": mu * cp / k}
     T = np.asarray(T_K, dtype=float)
-    if T.size and not (T.min() >= T_RANGE_K[0] and T.max() <= T_RANGE_K[1]):      # NaN fails too
+    few = T.size <= _FEW
+    Ts = T.ravel().tolist() if few else None
+    if T.size and not (all(T_RANGE_K[0] <= t <= T_RANGE_K[1] for t in Ts) if few else
+                       (T.min() >= T_RANGE_K[0] and T.max() <= T_RANGE_K[1])):      # NaN fails too
         raise InputError("T_K", T_K, f"air properties are provided for {T_RANGE_K[0]:g}..{T_RANGE_K[1]:g} K")
     if not (np.isfinite(p_Pa) and p_Pa > 0):
         raise InputError("p_Pa", p_Pa, "pressure must be > 0 [Pa]")
     if abs(p_Pa - P_ATM) < 1e-9 * P_ATM:
-        c = tab.c
-        i = np.minimum((T - T_RANGE_K[0]).astype(np.intp), c.shape[1] - 1)
-        s = (T - (T_RANGE_K[0] + i))[..., None]
-        v = _cubic(*c[:, i], s)
+        if few:             # a few temperatures: the pieces on Python floats (the same operations)
+            v = np.array([_at(tab, t) for t in Ts]).reshape(T.shape + (4,))
+        else:
+            c = tab.c
+            i = np.minimum((T - T_RANGE_K[0]).astype(np.intp), c.shape[1] - 1)
+            s = (T - (T_RANGE_K[0] + i))[..., None]
+            v = _cubic(*c[:, i], s)
         out = {k: v[..., q] for q, k in enumerate(_KEYS)}
     else:
         out = {k: np.asarray(v, float) for k, v in _propssi(T, float(p_Pa)).items()}
