@@ -324,8 +324,7 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
                       models_used=models, Q=f(Q2), alpha=f(al2), Rx=f(Rx2), Ry=f(Ry2),
                       a=f(a2), b=f(b2), u=f(u2), spin=f(spin2), omega_roll=f(omega_roll2), P_sliding_mu=f(P_sl),
                       P_pivoting_mu=f(P_piv), P_hysteresis=f(P_hys), slips=f(slips), p_strip=f(p_strip), K_z=K_z,
-                      strip=strip_contacts(slips, p_strip),
-                      ehl=ehl_contacts(Q2, Rx2, Ry2, u2, brg.E_prime),
+                      strip=strip_contacts(slips, p_strip), ehl=ehl_contacts(Q2, Rx2, Ry2, u2, brg.E_prime),
                       rolling=rolling_contacts(Q2, Rx2, Ry2, u2, brg.E_prime, a2, b2))
 
 
@@ -431,11 +430,9 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     eta_all = property_at(oil_c.eta, Tall, pp)      # contacts and (drag) the oil–air mixture in one call
     eta2, alpha2 = eta_all[..., :2, :], property_at(oil_c.alpha_p_at, T2, pp)
     eta_in = inlet_viscosity(cs, oil_c, T2, eta2, pp) if inlet_heating else eta2
-    # η and α_p are the lubricant's (checked by its temperatures): the formulas below skip their input checks
-    h_min, h_c = cs.ehl.film_thickness(eta_in, alpha2, kind=("min", "central"), check=False)
+    h_min, h_c = cs.ehl.film_thickness(eta_in, alpha2, kind=("min", "central"), check=False)  # η, α_p: the lubricant's
     reg = cs.ehl.regime(eta_in, alpha2, check=False)
-    F_R = cs.rolling.force(eta_in, _ROLLING_FORCE_MODEL.get(rolling_model, rolling_model), alpha_p=alpha2, regime=reg,
-                           check=False)
+    F_R = cs.rolling.force(eta_in, _ROLLING_FORCE_MODEL.get(rolling_model, rolling_model), alpha2, reg, check=False)
     if starvation:
         F_R = F_R * replenishment(cs, oil_c, T2, supply, pp)
     if np.any(Rq_ball) or np.any(Rq_ring):
