@@ -517,27 +517,48 @@ def _as(x):
 
 @dataclass(frozen=True, eq=False)
 class ContactArrays(Mapping):
-    """Per-contact arrays of a :class:`LossResult`, by raceway: ``["inner"]`` / ``["outer"]`` → dict of
+    """Per-contact arrays of a :class:`LossResult`, by raceway: ``["inner"]`` / ``["outer"]`` → mapping of
     arrays (*lead, *batch, Z).
 
-    Holds the arrays of both raceways stacked, (*lead, *batch, 2, Z) (``arrays``); a raceway's dict
-    of views is made on access, so a solver that reads only the sums does not pay for it.  A
-    dataclass: :func:`thermobear.arrays.take` picks operating points from it like from a dict."""
+    Holds the arrays of both raceways stacked, (*lead, *batch, 2, Z) (``arrays``); a raceway's arrays
+    are views made on access, key by key, so a solver that reads only the sums (or one key) does not pay
+    for the rest.  A dataclass: :func:`thermobear.arrays.take` picks operating points from it like from a dict."""
 
     arrays: dict
 
-    def __getitem__(self, side: str) -> dict:
+    def __getitem__(self, side: str) -> Mapping:
         if side not in _SIDES:
             raise KeyError(side)
-        k = _SIDES.index(side)
-        full = self.arrays["h_min"].shape           # T_C, eta: one per operating point, shown per contact
-        return {key: (v if v.shape == full else np.broadcast_to(v, full))[..., k, :] for key, v in self.arrays.items()}
+        return _Raceway(self.arrays, _SIDES.index(side))
 
     def __iter__(self):
         return iter(_SIDES)
 
     def __len__(self) -> int:
         return len(_SIDES)
+
+
+class _Raceway(Mapping):
+    """One raceway's per-contact arrays of a :class:`ContactArrays` (views, made on access)."""
+
+    __slots__ = ("arrays", "k")
+
+    def __init__(self, arrays: dict, k: int):
+        self.arrays, self.k = arrays, k
+
+    def __getitem__(self, key):
+        v = self.arrays[key]
+        full = self.arrays["h_min"].shape           # T_C, eta: one per operating point, shown per contact
+        return (v if v.shape == full else np.broadcast_to(v, full))[..., self.k, :]
+
+    def __iter__(self):
+        return iter(self.arrays)
+
+    def __len__(self) -> int:
+        return len(self.arrays)
+
+    def __repr__(self):
+        return repr(dict(self))
 
 
 def _result(cs, P, P_drag, per_contact, models, added):
