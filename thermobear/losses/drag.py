@@ -39,6 +39,7 @@ from dataclasses import dataclass
 import numpy as np
 from fluids.drag import drag_sphere, drag_sphere_correlations
 
+from thermobear.arrays import above
 from thermobear.errors import ExtrapolationWarning, InputError
 from thermobear.lubrication.air import air_properties as _air
 
@@ -56,7 +57,7 @@ def _pos(name, x, allow_zero=False):
         lo, a = x, x
     else:
         a = np.asarray(x, dtype=float)
-        lo = a.min() if a.size else 1.0
+        lo = 1.0 if above(a, 0.0, not allow_zero) else -1.0
     if not (lo >= 0 if allow_zero else lo > 0):
         raise InputError(name, x, "must be finite and " + (">= 0" if allow_zero else "> 0"))
     return a

@@ -39,6 +39,7 @@ import functools
 import numpy as np
 
 
+from thermobear.arrays import within
 from thermobear.files import data_dir, lookup, names_in, read_toml
 from thermobear.errors import ExtrapolationWarning, InputError
 from thermobear.schema import Field, check_table, check_uncertainty
@@ -474,7 +475,7 @@ class Lubricant:
     # -- temperature checks --------------------------------------------------
     def _T(self, T_C, what):
         T = np.asarray(T_C, dtype=float)
-        if T.size and not (T_WARN_C[0] <= T.min() and T.max() <= T_WARN_C[1]):    # NaN fails too
+        if not within(T, *T_WARN_C):                                           # NaN fails too
             check_limit("lubricant_T", T, f"{self.name}.{what}(T_C)", category=ExtrapolationWarning)
         return T
 
