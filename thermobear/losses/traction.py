@@ -311,6 +311,6 @@ def strip_contacts(slip, p_mean, *, weights=None) -> StripContacts:
     pm = _num("p_mean", p_mean, strict=False, what=" [Pa]")
     den = v @ W                                  # Σ_k W_k |v_k|
     loaded = pm > 0
-    G = (v * W) * (loaded / np.where(loaded, pm, 1.0))
+    G = v * (W * (loaded / np.where(loaded, pm, 1.0)))                 # W_k |v_k| / p̄_k (0 where p̄_k = 0)
     G *= np.where(den > 0, 1.0 / np.where(den > 0, den, 1.0), 0.0)[..., None]
-    return StripContacts(v=v, pm=pm, ln_p=np.log1p(pm / ROELANDS_P0_PA), G=G)
+    return StripContacts(v=v, pm=pm, ln_p=np.log1p(pm * (1.0 / ROELANDS_P0_PA)), G=G)
