@@ -51,7 +51,7 @@ import numpy as np
 
 from thermobear.contact.geometry import BallBearing
 from thermobear.contact.hertz import hertz
-from thermobear.contact.kinematics import ball_kinematics, caged_ball_kinematics, common_cage_speed
+from thermobear.contact.kinematics import caged_ball_kinematics, common_cage_speed, free_orbital_speed
 from thermobear.errors import InputError
 from thermobear.loads.api import check_contacts, check_loads, loads_text
 from thermobear.loads.static import LoadDistribution, load_distribution
@@ -276,7 +276,7 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
     # one rigid cage: every ball orbits at the load-weighted mean of the balls' no-slip orbital
     # speeds (they differ when the contact angles do: combined and high-speed loads); a ball
     # outside the load zone follows the cage and rolls on the race that carries it
-    free = ball_kinematics(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, control=control).omega_c
+    free = free_orbital_speed(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, control=control)
     w_cage = np.asarray(common_cage_speed(np.broadcast_to(free, sh), Qi), float)
     omega_c = np.broadcast_to(w_cage[ex], sh)
     cf = np.asarray(centrifugal, bool)
