@@ -324,7 +324,7 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
                       models_used=models, Q=f(Q2), alpha=f(al2), Rx=f(Rx2), Ry=f(Ry2),
                       a=f(a2), b=f(b2), u=f(u2), spin=f(spin2), omega_roll=f(omega_roll2), P_sliding_mu=f(P_sl),
                       P_pivoting_mu=f(P_piv), P_hysteresis=f(P_hys), slips=f(slips), p_strip=f(p_strip), K_z=K_z,
-                      strip=strip_contacts(slips, p_strip), ehl=ehl_contacts(Q2, Rx2, Ry2, u2, brg.E_prime),
+                      strip=strip_contacts(slips, p_strip, check=False), ehl=ehl_contacts(Q2, Rx2, Ry2, u2, brg.E_prime),
                       rolling=rolling_contacts(Q2, Rx2, Ry2, u2, brg.E_prime, a2, b2))
 
 

@@ -297,9 +297,10 @@ class StripContacts:
         return tau0 * np.einsum("...k,...k->...", r, self.G)                 # Σ_k G_k τ_k, τ = τ0 r
 
 
-def strip_contacts(slip, p_mean, *, weights=None) -> StripContacts:
+def strip_contacts(slip, p_mean, *, weights=None, check=True) -> StripContacts:
     """The :class:`StripContacts` of slips and slice mean pressures at the strip nodes (see
-    :func:`strip_traction_coefficient`; ``weights`` default those of :data:`STRIP_NODES`).
+    :func:`strip_traction_coefficient`; ``weights`` default those of :data:`STRIP_NODES`; ``check``
+    False: ``slip`` already |slip| ≥ 0 and ``p_mean`` ≥ 0, float arrays, e.g. of a Hertz contact).
 
     >>> xi = STRIP_NODES[0]
     >>> st = strip_contacts(0.01 * xi, 1e9 * np.sqrt(1 - xi**2))
@@ -307,8 +308,10 @@ def strip_contacts(slip, p_mean, *, weights=None) -> StripContacts:
     0.06
     """
     W = STRIP_NODES[1] if weights is None else np.asarray(weights, float)
-    v = np.abs(np.asarray(slip, float))
-    pm = _num("p_mean", p_mean, strict=False, what=" [Pa]")
+    if check:
+        v, pm = np.abs(np.asarray(slip, float)), _num("p_mean", p_mean, strict=False, what=" [Pa]")
+    else:
+        v, pm = slip, p_mean
     den = v @ W                                  # Σ_k W_k |v_k|
     loaded = pm > 0
     G = v * (W * (loaded / np.where(loaded, pm, 1.0)))                 # W_k |v_k| / p̄_k (0 where p̄_k = 0)
