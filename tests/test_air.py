@@ -74,7 +74,7 @@ def test_a_broken_table_is_a_named_input_error(monkeypatch, broken):
         bad = broken
     monkeypatch.setattr(air, "read_toml", lambda path: bad)
     with pytest.raises(InputError, match="air_1atm.toml"):
-        air._table.__wrapped__()
+        air.air_table()
 
 
 def test_one_temperature_equals_the_array_path():

@@ -22,17 +22,43 @@ def checked(name, v, *, lo=0.0, strict=True, what=""):
 
 
 def _within(v, lo, strict):
-    """All finite and > lo (>= lo): two reductions (one value: compared as a Python float); NaN fails
+    """All finite and > lo (>= lo): two reductions (a few values: compared as Python floats); NaN fails
     every comparison."""
-    if v.size == 1:
-        x = v.item()
-        return (x > lo if strict else x >= lo) and x < _INF
+    if v.size <= _FEW:
+        vals = v.ravel().tolist()
+        return all(lo < x < _INF for x in vals) if strict else all(lo <= x < _INF for x in vals)
     mn, mx = _MIN(v, None), _MAX(v, None)
     return bool((mn > lo if strict else mn >= lo) and mx < _INF)
 
 
 _INF = float("inf")
+_FEW = 16
 _MIN, _MAX = np.minimum.reduce, np.maximum.reduce
+
+
+def above(v, lo=0.0, strict=True) -> bool:
+    """All values of the float array ``v`` > lo (>= lo); +inf passes, NaN fails (a few values compared as
+    Python floats, more by one reduction).
+
+    >>> above(np.array([1.0, np.inf])), above(np.array([0.0, np.nan]), strict=False)
+    (True, False)
+    """
+    if v.size <= _FEW:
+        vals = v.ravel().tolist()
+        return all(x > lo for x in vals) if strict else all(x >= lo for x in vals)
+    m = _MIN(v, None)
+    return bool(m > lo if strict else m >= lo)
+
+
+def within(v, lo, hi) -> bool:
+    """All values of the float array ``v`` in [lo, hi]; NaN fails.
+
+    >>> within(np.array([20.0, 30.0]), -20.0, 150.0), within(np.array([np.nan]), 0.0, 1.0)
+    (True, False)
+    """
+    if v.size <= _FEW:
+        return all(lo <= x <= hi for x in v.ravel().tolist())
+    return bool(lo <= _MIN(v, None) and _MAX(v, None) <= hi)
 
 
 def finite_range(v):

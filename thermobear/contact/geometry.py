@@ -20,12 +20,11 @@ from __future__ import annotations
 import difflib
 import numbers
 from dataclasses import dataclass, field, replace
-from functools import cached_property
 
 import numpy as np
 
 from thermobear.files import data_dir, read_toml
-from thermobear.errors import InputError
+from thermobear.errors import InputError, NoConvergence
 from thermobear.schema import Field, check_table, check_uncertainty, check_value
 from thermobear.validity import check as check_limit
 from thermobear.contact.hertz import contact_stiffness, series_stiffness
@@ -101,8 +100,21 @@ class BallBearing:
     C: float | None = None
     clearance_group: str | None = None
     uncertainty: dict = field(default_factory=dict, compare=False, hash=False, repr=False)
+    #: (K_i, K_o, K_n) at the nominal angle, exact Hertz [N/m^1.5]: derived once when the (immutable)
+    #: bearing is built (None where Hertz refuses the geometry: :meth:`Kn` then raises its error)
+    K_nominal: tuple | None = field(init=False, default=None, compare=False, hash=False, repr=False)
 
     def __post_init__(self):
+        self._check()
+        try:
+            an = self.alpha_nominal
+            Ki, Ko = float(self.K_i(an)), float(self.K_o(an))
+            object.__setattr__(self, "K_nominal", (Ki, Ko, float(series_stiffness(Ki, Ko))))
+        except (InputError, NoConvergence):
+            pass
+
+    def _check(self):
+        """Validate the fields and derive alpha0, Pd (set once, while the object is built)."""
         p = f"bearing[{self.name}]"
         if self.kind not in KINDS:
             raise InputError(f"{p}.kind", self.kind, f"must be one of {', '.join(KINDS)}")
@@ -264,15 +276,10 @@ class BallBearing:
         333592
         """
         if alpha is None:
-            if method == "exact":
-                return self._Kn_nominal
+            if method == "exact" and self.K_nominal is not None:
+                return self.K_nominal[2]
             alpha = self.alpha_nominal
         return series_stiffness(self.K_i(alpha, method), self.K_o(alpha, method))
-
-    @cached_property
-    def _Kn_nominal(self) -> float:
-        """K_n at the nominal angle, exact Hertz (cached: the bearing is immutable)."""
-        return float(series_stiffness(self.K_i(self.alpha_nominal), self.K_o(self.alpha_nominal)))
 
     def with_(self, **changes) -> "BallBearing":
         """Copy with some fields changed (validated again).

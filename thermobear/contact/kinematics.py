@@ -34,8 +34,8 @@ from thermobear.arrays import out as _f
 
 from thermobear.errors import InputError
 
-__all__ = ["BallKinematics", "ball_kinematics", "caged_ball_kinematics", "common_cage_speed", "cage_speed",
-           "entrainment_speed", "CONTROLS"]
+__all__ = ["BallKinematics", "ball_kinematics", "caged_ball_kinematics", "common_cage_speed", "free_orbital_speed",
+           "cage_speed", "entrainment_speed", "CONTROLS"]
 
 CONTROLS = ("outer", "inner", "radial")
 
@@ -128,6 +128,19 @@ def ball_kinematics(omega_i, omega_o, alpha_i, alpha_o, D, dm, control: str = "o
     ai, ao = np.asarray(alpha_i, dtype=float), np.asarray(alpha_o, dtype=float)
     omega_c, omega_R, beta, co, ci = _cage_spin(wi, wo, ai, ao, D, dm, control, beta)
     return _speeds(wi, wo, ai, ao, beta, omega_c, omega_R, co, ci)
+
+
+def free_orbital_speed(omega_i, omega_o, alpha_i, alpha_o, D, dm, control: str = "outer"):
+    """No-slip orbital speed of each ball [rad/s]: ``ball_kinematics(...).omega_c`` without the contact
+    speeds (the input of :func:`common_cage_speed`).
+
+    >>> bool(np.isclose(free_orbital_speed(300.0, 0.0, 0.7, 0.7, 0.0127, 0.07),
+    ...                 ball_kinematics(300.0, 0.0, 0.7, 0.7, 0.0127, 0.07).omega_c))
+    True
+    """
+    _check_control(control)
+    wi, wo = np.asarray(omega_i, dtype=float), np.asarray(omega_o, dtype=float)
+    return _cage_spin(wi, wo, np.asarray(alpha_i, dtype=float), np.asarray(alpha_o, dtype=float), D, dm, control)[0]
 
 
 def _speeds(wi, wo, ai, ao, beta, omega_c, omega_R, co, ci) -> BallKinematics:

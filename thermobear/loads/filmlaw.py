@@ -97,33 +97,40 @@ class _NVMFixed:
         self.c = ln_asymptote_consts(self.D)
         self.ln_RP = self.c[2] + (2.0 / 3.0) * self.lnL                     # H_RP does not depend on Q
         self.lnRx = np.log(Rx)
+        # load-free parts of ln_h (each the same operation as in the public function: the same bits)
+        self.m8RP, self.m4h00 = -8.0 * self.ln_RP, -4.0 * self.c[4]
+        self.L34, self.U34, self.U12 = 0.75 * self.lnL, 0.75 * self.lnU2, 0.5 * self.lnU2
 
     def ln_h(self, Q):
         """(ln(h_c / 1 m), ∂ln h_c/∂ln Q, shares) at loads Q [N]; the blend shares are for :meth:`grad`."""
-        c_RI, c_EI, c_RP, c_EP, ln_h00 = self.c
-        lnM = np.log(Q / self.ERx2) - 0.75 * self.lnU2
+        c_RI, c_EI, c_EP = self.c[0], self.c[1], self.c[3]
+        lnM = np.log(Q / self.ERx2) - self.U34
         ln_RI, ln_EI = c_RI - 2.0 * lnM, c_EI - (2.0 / 15.0) * lnM          # film._ln_asymptotes_from
-        ln_RP, ln_EP = self.ln_RP, c_EP - lnM / 12.0 + 0.75 * self.lnL
-        A4 = np.logaddexp(-4.0 * ln_EI, -4.0 * ln_h00)                       # film._ln_branches
-        A15 = np.logaddexp(1.5 * ln_RI, 1.5 * (-0.25 * A4))
+        ln_EP = c_EP - lnM / 12.0 + self.L34
+        m4EI = -4.0 * ln_EI
+        A4 = np.logaddexp(m4EI, self.m4h00)                                  # film._ln_branches
+        RI15 = 1.5 * ln_RI
+        A15 = np.logaddexp(RI15, 1.5 * (-0.25 * A4))                         # ln(H_RI^1.5 + H_EI'^1.5)
         a = (2.0 / 3.0) * A15
-        A8 = np.logaddexp(-8.0 * ln_RP, -8.0 * ln_EP)
+        m8EP = -8.0 * ln_EP
+        A8 = np.logaddexp(self.m8RP, m8EP)
         b = -0.125 * A8
         r_ln = ln_EI - ln_RI
         r = np.exp(np.minimum(np.maximum(r_ln, -_NVM_EXP_MAX), _NVM_EXP_MAX))
         e12 = np.exp(-1.2 * r)
         s = 1.5 * (1.0 + e12)
-        As = np.logaddexp(s * a, s * b)
+        sa, sb = s * a, s * b
+        As = np.logaddexp(sa, sb)
         ln_H = As / s
         # derivative: the shares of the blends
-        wa, wb = np.exp(s * a - As), np.exp(s * b - As)
-        p = np.exp(1.5 * ln_RI - A15)
-        q = np.exp(-4.0 * ln_EI - A4)
-        t = np.exp(-8.0 * ln_RP - A8)
+        wa, wb = np.exp(sa - As), np.exp(sb - As)
+        p = np.exp(RI15 - A15)
+        q = np.exp(m4EI - A4)
+        t = np.exp(self.m8RP - A8)
         # ∂s/∂ln r = −1.8 r e^{−1.2 r} (where r is clipped, |ln r| ≥ 700, this is 0 to 1e-300 anyway)
         H_s = (wa * (a - ln_H) + wb * (b - ln_H)) / s * (-1.8 * r * e12)
         H_M = wa * (-2.0 * p - (2.0 / 15.0) * (1.0 - p) * q) - wb * (1.0 - t) / 12.0 + (28.0 / 15.0) * H_s
-        return ln_H + self.lnRx + 0.5 * self.lnU2, H_M, (wa, wb, p, q, t, H_s, H_M)
+        return ln_H + self.lnRx + self.U12, H_M, (wa, wb, p, q, t, H_s, H_M)
 
     def grad(self, shares):
         """(∂ln h/∂ln R_x, ∂ln h/∂ln u) [-] from the ``shares`` an :meth:`ln_h` call returned."""
@@ -193,6 +200,21 @@ def _carry(Q, G_lnQ, dG):
     return Q * np.exp(np.clip(np.where(np.isfinite(d), d, 0.0), -3.0, 3.0))
 
 
+def _residual(pos, sides, ln_s, lnH, dlnH, lnd):
+    """(F, F') of :func:`_invert`'s logarithmic form at ln H, d ln H/dx and ln δ_el (``sides``: 1 every
+    s > 0, −1 every s ≤ 0, 0 both: then per element by ``pos``)."""
+    if sides > 0:
+        T = np.logaddexp(ln_s, lnH)                     # ln(s + H)
+        return lnd - T, 2.0 / 3.0 - np.exp(lnH - T) * dlnH
+    if sides < 0:
+        T = np.logaddexp(ln_s, lnd)                     # ln(δ_el − s)
+        return T - lnH, (2.0 / 3.0) * np.exp(lnd - T) - dlnH
+    Pl = np.where(pos, lnH, lnd)
+    T = np.logaddexp(ln_s, Pl)                          # ln(s + H) or ln(δ_el − s)
+    E = np.exp(Pl - T)                                  # H/(s + H) or δ_el/(δ_el − s), in (0, 1]
+    return np.where(pos, lnd - T, T - lnH), np.where(pos, 2.0 / 3.0 - E * dlnH, (2.0 / 3.0) * E - dlnH)
+
+
 def _invert(law: _FilmAt, s, alpha, Q0):
     r"""Solve G(Q) = s for Q > 0 per element at fixed contact angles (vectorised, bracketed Newton in x = ln Q).
 
@@ -217,6 +239,7 @@ def _invert(law: _FilmAt, s, alpha, Q0):
     ln h ← ln h + ∂ln h/∂ln Q Δx (error O(Δx²)); dG/d ln Q and ∂G/∂α are those of the last evaluation."""
     x = np.log(np.minimum(np.maximum(Q0, _Q_MIN), _Q_MAX))
     pos = s > 0
+    sides = 1 if pos.all() else -1 if not pos.any() else 0     # every s > 0, every s ≤ 0, or both
     ln_s = np.log(np.abs(s), out=np.full(s.shape, -np.inf), where=s != 0)   # −inf at s = 0: T = ln δ_el
     lo = np.full(x.shape, -np.inf)
     hi = np.full(x.shape, np.inf)
@@ -226,12 +249,7 @@ def _invert(law: _FilmAt, s, alpha, Q0):
     it = 0
     for it in range(1, 101):
         lnH, dlnH, ln_h, H_M, shares = law.ln_terms(x)
-        lnd = (2.0 / 3.0) * (x - law.lnK)
-        Pl = np.where(pos, lnH, lnd)
-        T = np.logaddexp(ln_s, Pl)                         # ln(s + H) or ln(δ_el − s)
-        E = np.exp(Pl - T)                                  # H/(s + H) or δ_el/(δ_el − s), in (0, 1]
-        F = np.where(pos, lnd - T, T - lnH)
-        dF = np.where(pos, 2.0 / 3.0 - E * dlnH, (2.0 / 3.0) * E - dlnH)
+        F, dF = _residual(pos, sides, ln_s, lnH, dlnH, (2.0 / 3.0) * (x - law.lnK))
         xev = x
         lo = np.where(F < 0, x, lo)
         hi = np.where(F > 0, x, hi)

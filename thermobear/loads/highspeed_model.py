@@ -28,8 +28,6 @@ References
 """
 from __future__ import annotations
 
-from functools import lru_cache
-
 import numpy as np
 
 from thermobear.loads.filmlaw import _carry, _invert
@@ -40,17 +38,18 @@ _EPS_TENSION = 1e-12    # linear stiffness of an open contact, relative to K √
 LAG_SKIP = 0.05         # film refresh: keep the iterate when the cage-speed lag is below this fraction of its residual
 
 
-@lru_cache(maxsize=32)
 def _stiffness_constants(brg):
     """K_i, K_o at the nominal contact angle [N/m^1.5] and the open-contact regularising stiffness
-    ε K_n √A [N/m] of a bearing (cached: a BallBearing is immutable and hashable)."""
-    an = brg.alpha_nominal
-    return float(brg.K_i(an)), float(brg.K_o(an)), _EPS_TENSION * float(brg.Kn()) * np.sqrt(brg.A)
+    ε K_n √A [N/m] of a bearing (:attr:`~thermobear.contact.geometry.BallBearing.K_nominal`, derived when the
+    bearing was built)."""
+    if brg.K_nominal is None:                # a geometry Hertz refuses: its error
+        brg.Kn(brg.alpha_nominal)
+    Ki, Ko, Kn = brg.K_nominal
+    return Ki, Ko, _EPS_TENSION * Kn * np.sqrt(brg.A)
 
 
-@lru_cache(maxsize=32)
 def _constants(brg, ndof):
-    """Fixed arrays of a bearing (read-only): the lever matrix (ndof, 2Z) [m], the ring sums of the ball forces
+    """Fixed arrays of a bearing (formed with each problem, ≈ 15 µs): the lever matrix (ndof, 2Z) [m], the ring sums of the ball forces
     (4Z, ndof), the sums of the Jacobian's per-ball terms ((2 ndof + 2) Z, ndof² + ndof), and each ring row's
     contact component comp_k (0 axial, 1 radial) and lever w_k ∈ {1, cos ψ, sin ψ} (ndof, Z): the ring sums
     S[m, k] = Σ_j P[m, comp_k] w_k of the per-ball rows P[m] = d r_g,m/dp and the cage row in one product."""
@@ -62,19 +61,14 @@ def _constants(brg, ndof):
     Sg = np.zeros((4 * Z, ndof))              # (f_i,a | f_o,a | f_i,r | f_o,r) -> (F_a, F_r, M/ℜ, F_z, M_y/ℜ)
     Sg[:Z], Sg[2 * Z:3 * Z] = W[0].T, W[1].T
     M = np.zeros((2 * ndof + 2, Z, ndof * ndof + ndof))
-    for m in range(ndof + 1):                 # ring rows, then the cage row (columns ndof² …)
-        for k in range(ndof):
-            M[2 * m + comp[k], :, m * ndof + k] = lev[k]
-    out = (L, Sg, M.reshape((2 * ndof + 2) * Z, ndof * ndof + ndof), comp, lev)
-    for a in out:
-        a.setflags(write=False)
-    return out
+    m, k = np.arange(ndof + 1)[:, None], np.arange(ndof)[None, :]
+    M[2 * m + comp[k], :, m * ndof + k] = lev[k]     # ring rows m, then the cage row (columns ndof² …)
+    return L, Sg, M.reshape((2 * ndof + 2) * Z, ndof * ndof + ndof), comp, lev
 
 
-@lru_cache(maxsize=64)
 def _fixed(brg, lam_i, lam_o, kin_control, ndof, arm):
-    """The fixed attributes of a :class:`_HSProblem` (cached per bearing, raceway control, ring unknowns and tilt
-    arm ℜ [m]; arrays read-only)."""
+    """The fixed attributes of a :class:`_HSProblem` (formed with each problem, ≈ 40 µs: per bearing, raceway
+    control, ring unknowns and tilt arm ℜ [m])."""
     Z, A = brg.Z, brg.A
     L, Sg, Msum, comp, lev = _constants(brg, ndof)
     Ki, Ko, k_eps = _stiffness_constants(brg)
@@ -82,34 +76,29 @@ def _fixed(brg, lam_i, lam_o, kin_control, ndof, arm):
     outer = kin_control == "outer"          # the contact whose zero spin sets β
     sg = 1.0 if outer else -1.0
 
-    def row(*vals):                         # (1, len(vals) · Z): each value repeated Z times
-        return np.repeat(np.array(vals, dtype=float), Z)[None, :]
-
     m = brg.ball_mass
+    hdm, hD = 0.5 * brg.dm, 0.5 * brg.D
+    # rows (1, Z) of one value and (1, 2Z) of an inner and an outer value, each value repeated Z times
+    ones = dict(RB0=1.0 + gp * gp, RB1=2.0 * sg * gp, CB0=sg * gp, SGP=sg * gp, ONE=1.0, HD=hD)
+    pairs = dict(off=(0.0, A * np.cos(brg.alpha0)), c0=((brg.fi - 0.5) * brg.D, (brg.fo - 0.5) * brg.D),
+                 K0=(Ki, Ko), K15=(1.5 * Ki, 1.5 * Ko), ONE2=(1.0, 1.0), HDM=(hdm, hdm),
+                 RSG=(-hdm * gp, hdm * gp), NRSG=(hdm * gp, -hdm * gp), HD2=(hD, hD), NHD2=(-hD, -hD),
+                 LAMD=(lam_i / brg.D, lam_o / brg.D), LP=(lam_i / brg.D, -lam_o / brg.D), PM=(1.0, -1.0))
+    r1 = np.repeat(np.array([[v] for v in ones.values()]), Z, axis=1)
+    r2 = np.repeat(np.array(list(pairs.values())), Z, axis=1)
     f = dict(
         brg=brg, Z=Z, A=A, R=arm, L=L, Sg=Sg, Msum=Msum, ng=ndof, comp=comp, lev=lev,
         rows_k=tuple((k, int(comp[k]), lev[k][None, :]) for k in range(1, ndof)),   # rows after δa, levers (1, Z)
-        off=row(0.0, A * np.cos(brg.alpha0)),
-        c0=row((brg.fi - 0.5) * brg.D, (brg.fo - 0.5) * brg.D),      # |O_i − C|, |C − O_o| unloaded [m]
         lam_i=lam_i, lam_o=lam_o, kin_control=kin_control, Ki0=Ki, Ko0=Ko, k_eps=k_eps,
-        K0=row(Ki, Ko), K15=row(1.5 * Ki, 1.5 * Ko), D=brg.D, dm=brg.dm, fi=brg.fi, gp=gp, outer=outer,
-        RB0=row(1.0 + gp * gp), RB1=row(2.0 * sg * gp), CB0=row(sg * gp), SGP=row(sg * gp),
-        ONE=row(1.0), ONE2=row(1.0, 1.0), HDM=row(0.5 * brg.dm, 0.5 * brg.dm),
-        RSG=row(-0.5 * brg.dm * gp, 0.5 * brg.dm * gp),                # R_c = dm/2 + RSG_c cos α_c
-        NRSG=row(0.5 * brg.dm * gp, -0.5 * brg.dm * gp),
-        HD2=row(0.5 * brg.D, 0.5 * brg.D), NHD2=row(-0.5 * brg.D, -0.5 * brg.D), HD=row(0.5 * brg.D),
+        D=brg.D, dm=brg.dm, fi=brg.fi, gp=gp, outer=outer,
         m=m, J=m * brg.D**2 / 10.0, mdm2=0.5 * m * brg.dm, has_lam=bool(lam_i or lam_o),
-        LAMD=row(lam_i / brg.D, lam_o / brg.D),
-        LP=row(lam_i / brg.D, -lam_o / brg.D),                          # ∂r_b/∂M_g = Σ_c LP_c e_c
         # the couple of the inner friction per M_g, in the tilt rows (M/ℜ, M_y/ℜ): −λ_i f_i M_g w / ℜ
         mom=tuple((k, lam_i * brg.fi / arm * lev[k]) for k in range(2, ndof, 2)),
-        PM=row(1.0, -1.0),                      # the inner contact pushes the ball, the outer holds it
         onesZ=np.ones((Z, 1)))
-    for v in f.values():
-        if isinstance(v, np.ndarray):
-            v.setflags(write=False)
-    for _, v in f["mom"]:
-        v.setflags(write=False)
+    f.update({k: r1[i:i + 1] for i, k in enumerate(ones)})
+    f.update({k: r2[i:i + 1] for i, k in enumerate(pairs)})
+    # c0: |O_i − C|, |C − O_o| unloaded [m]; RSG: R_c = dm/2 + RSG_c cos α_c; LP: ∂r_b/∂M_g = Σ_c LP_c e_c;
+    # PM: the inner contact pushes the ball, the outer holds it
     return f
 
 

@@ -301,16 +301,14 @@ def ring_sums(Z: int, ndof: int = 3):
     (nb, 5Z) @ G (5Z, ndof² + ndof) → the ring stiffness Σ_j W_jᵀ g_j W_j (symmetric per-ball g; the first ndof²
     columns, row-major) and the ring forces Σ_j W_jᵀ f_j (the last ndof), W_j (2, ndof) the ball's levers
     (:func:`levers`)."""
-    W = levers(Z, ndof)
-    G = np.zeros((5, Z, ndof * ndof + ndof))
-    for k in range(ndof):
-        for m in range(ndof):
-            col = k * ndof + m
-            G[0, :, col] = W[0, k] * W[0, m]
-            G[1, :, col] = W[0, k] * W[1, m] + W[1, k] * W[0, m]
-            G[2, :, col] = W[1, k] * W[1, m]
-        G[3, :, ndof * ndof + k] = W[0, k]
-        G[4, :, ndof * ndof + k] = W[1, k]
+    W0, W1 = levers(Z, ndof)
+    n2 = ndof * ndof
+    G = np.zeros((5, Z, n2 + ndof))
+    G[0, :, :n2] = (W0[:, None] * W0[None, :]).reshape(n2, Z).T          # column k ndof + m: W_k W_m
+    G[1, :, :n2] = (W0[:, None] * W1[None, :] + W1[:, None] * W0[None, :]).reshape(n2, Z).T
+    G[2, :, :n2] = (W1[:, None] * W1[None, :]).reshape(n2, Z).T
+    G[3, :, n2:] = W0.T
+    G[4, :, n2:] = W1.T
     return G.reshape(5 * Z, -1)
 
 

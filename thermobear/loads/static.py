@@ -45,7 +45,6 @@ References
 from __future__ import annotations
 
 from dataclasses import replace
-from functools import lru_cache
 
 import numpy as np
 
@@ -150,20 +149,17 @@ def needs_high_speed(brg: BallBearing, n_rpm, Q_typical, threshold: float = 0.05
     return ratio > threshold, ratio
 
 
-@lru_cache(maxsize=32)
 def _constants(brg, ndof):
-    """Fixed arrays of a bearing (read-only): the lever matrix L (ndof, 2Z) [m], the groove-centre offsets at
-    first touch (A sin α0 | A cos α0) (2Z,) and twice them, the sum matrix (5 Z, ndof² + ndof) turning per-ball
-    rows (g_aa, g_ar, g_rr, Q sin α, Q cos α) into the Jacobian and the ring forces
-    (:func:`thermobear.loads.rings.ring_sums`), and K_n at the nominal angle [N/m^1.5]."""
+    """Fixed arrays of a bearing (formed with each problem, ≈ 20 µs): the lever matrix L (ndof, 2Z) [m], the
+    groove-centre offsets at first touch (A sin α0 | A cos α0) (2Z,) and twice them, the sum matrix
+    (5 Z, ndof² + ndof) turning per-ball rows (g_aa, g_ar, g_rr, Q sin α, Q cos α) into the Jacobian and the
+    ring forces (:func:`thermobear.loads.rings.ring_sums`), and K_n at the nominal angle [N/m^1.5]
+    (:attr:`~thermobear.contact.geometry.BallBearing.K_nominal`)."""
     Z, A = brg.Z, brg.A
     L = lever_matrix(brg, ndof)
     sums = ring_sums(Z, ndof)
     A0 = np.concatenate([np.full(Z, A * np.sin(brg.alpha0)), np.full(Z, A * np.cos(brg.alpha0))])
-    out = (L, A0, 2.0 * A0, sums)
-    for v in out:
-        v.setflags(write=False)
-    return out + (float(brg.Kn()),)
+    return L, A0, 2.0 * A0, sums, float(brg.Kn())
 
 
 class _StaticState(RowState):

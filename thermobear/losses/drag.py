@@ -39,6 +39,7 @@ from dataclasses import dataclass
 import numpy as np
 from fluids.drag import drag_sphere, drag_sphere_correlations
 
+from thermobear.arrays import above
 from thermobear.errors import ExtrapolationWarning, InputError
 from thermobear.lubrication.air import air_properties as _air
 
@@ -56,7 +57,7 @@ def _pos(name, x, allow_zero=False):
         lo, a = x, x
     else:
         a = np.asarray(x, dtype=float)
-        lo = a.min() if a.size else 1.0
+        lo = 1.0 if above(a, 0.0, not allow_zero) else -1.0
     if not (lo >= 0 if allow_zero else lo > 0):
         raise InputError(name, x, "must be finite and " + (">= 0" if allow_zero else "> 0"))
     return a
@@ -271,7 +272,8 @@ class DragLoss:
     mu_air: np.ndarray
 
 
-def drag_loss(Z, D, dm, omega_c, X, rho_oil, mu_oil, T_K, p_Pa=_P_ATM, cd_method="Clift_Gauvin", A_c=None):
+def drag_loss(Z, D, dm, omega_c, X, rho_oil, mu_oil, T_K, p_Pa=_P_ATM, cd_method="Clift_Gauvin", A_c=None, *,
+              check=True):
     r"""Drag loss of the balls through the oil–air mixture (Pouly 2010; seed 004 eq 21) [W].
 
     Parameters
@@ -287,6 +289,8 @@ def drag_loss(Z, D, dm, omega_c, X, rho_oil, mu_oil, T_K, p_Pa=_P_ATM, cd_method
     p_Pa : float          cavity pressure [Pa]
     cd_method : str       sphere-drag correlation of ``fluids`` (default Clift–Gauvin)
     A_c : float           ball cross-section [m²]; default πD²/4
+    check : bool          False: the inputs are already checked (a bearing's geometry, a lubricant's values,
+                          a fraction in [0, 1]; the temperature range is checked always)
 
     Returns
     -------
@@ -309,14 +313,15 @@ def drag_loss(Z, D, dm, omega_c, X, rho_oil, mu_oil, T_K, p_Pa=_P_ATM, cd_method
     >>> round(r.P_W, 1), round(r.Re), round(r.c_d, 3)
     (26.8, 2287, 0.403)
     """
-    if int(Z) != Z or Z < 1:
-        raise InputError("Z", Z, "number of balls must be an integer >= 1")
-    _pos("D", D)
-    _pos("dm", dm)
-    wc = _pos("omega_c", omega_c)
-    X = _fraction(X)
-    rho_oil, mu_oil = _pos("rho_oil", rho_oil), _pos("mu_oil", mu_oil)
-    air = _air(T_K, _pos("p_Pa", p_Pa))                   # checks the temperature range
+    if check:
+        if int(Z) != Z or Z < 1:
+            raise InputError("Z", Z, "number of balls must be an integer >= 1")
+        _pos("D", D)
+        _pos("dm", dm)
+        omega_c, X = _pos("omega_c", omega_c), _fraction(X)
+        rho_oil, mu_oil, p_Pa = _pos("rho_oil", rho_oil), _pos("mu_oil", mu_oil), _pos("p_Pa", p_Pa)
+    wc = omega_c
+    air = _air(T_K, p_Pa)                                 # checks the temperature range
     rho_air, mu_air = air["rho"], air["mu"]
     rho_mix = _mix(X, rho_oil, rho_air)
     mu_mix = _mix(X, mu_oil, mu_air)

@@ -51,7 +51,7 @@ import numpy as np
 
 from thermobear.contact.geometry import BallBearing
 from thermobear.contact.hertz import hertz
-from thermobear.contact.kinematics import ball_kinematics, caged_ball_kinematics, common_cage_speed
+from thermobear.contact.kinematics import caged_ball_kinematics, common_cage_speed, free_orbital_speed
 from thermobear.errors import InputError
 from thermobear.loads.api import check_contacts, check_loads, loads_text
 from thermobear.loads.static import LoadDistribution, load_distribution
@@ -62,7 +62,7 @@ from thermobear.losses.sliding import (XI0_HEATHCOTE, deformed_radius, hysteresi
                                        pivoting_moment, sliding_power_heathcote)
 from thermobear.losses.terms import (added_powers, drag_power, inlet_viscosity, property_at, replenishment,
                                      temperature_stack)
-from thermobear.losses.traction import STRIP_NODES, strip_traction_coefficient
+from thermobear.losses.traction import STRIP_NODES, StripContacts, check_film_viscosity, strip_contacts
 from thermobear.lubrication.film import REGIMES, EHLContacts, ehl_contacts, specific_film_thickness
 from thermobear.validity import check as check_limit
 
@@ -149,6 +149,8 @@ class ContactSet:
                                   ξ_k of :data:`thermobear.losses.traction.STRIP_NODES` [m/s], (*batch, 2, Z, 2, k)
     p_strip : ndarray             mean pressure across the rolling direction there, (π/4) p_max √(1 − ξ_k²) [Pa],
                                   (*batch, 2, Z, 1, k)
+    strip : StripContacts         the slips and pressures prepared for the traction formulas
+                                  (:func:`thermobear.losses.traction.strip_contacts`)
     K_z : float or None           SKF bearing-type constant of the replenishment factor (None: bore/OD or kind unknown)
     ehl : EHLContacts             the contacts prepared for the film and regime formulas
                                   (:func:`thermobear.lubrication.film.ehl_contacts`)
@@ -181,6 +183,7 @@ class ContactSet:
     P_hysteresis: np.ndarray
     slips: np.ndarray
     p_strip: np.ndarray
+    strip: StripContacts
     K_z: float | None
     ehl: EHLContacts
     rolling: RollingContacts
@@ -273,7 +276,7 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
     # one rigid cage: every ball orbits at the load-weighted mean of the balls' no-slip orbital
     # speeds (they differ when the contact angles do: combined and high-speed loads); a ball
     # outside the load zone follows the cage and rolls on the race that carries it
-    free = ball_kinematics(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, control=control).omega_c
+    free = free_orbital_speed(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, control=control)
     w_cage = np.asarray(common_cage_speed(np.broadcast_to(free, sh), Qi), float)
     omega_c = np.broadcast_to(w_cage[ex], sh)
     cf = np.asarray(centrifugal, bool)
@@ -321,7 +324,7 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
                       models_used=models, Q=f(Q2), alpha=f(al2), Rx=f(Rx2), Ry=f(Ry2),
                       a=f(a2), b=f(b2), u=f(u2), spin=f(spin2), omega_roll=f(omega_roll2), P_sliding_mu=f(P_sl),
                       P_pivoting_mu=f(P_piv), P_hysteresis=f(P_hys), slips=f(slips), p_strip=f(p_strip), K_z=K_z,
-                      ehl=ehl_contacts(Q2, Rx2, Ry2, u2, brg.E_prime),
+                      strip=strip_contacts(slips, p_strip, check=False), ehl=ehl_contacts(Q2, Rx2, Ry2, u2, brg.E_prime),
                       rolling=rolling_contacts(Q2, Rx2, Ry2, u2, brg.E_prime, a2, b2))
 
 
@@ -427,9 +430,9 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     eta_all = property_at(oil_c.eta, Tall, pp)      # contacts and (drag) the oil–air mixture in one call
     eta2, alpha2 = eta_all[..., :2, :], property_at(oil_c.alpha_p_at, T2, pp)
     eta_in = inlet_viscosity(cs, oil_c, T2, eta2, pp) if inlet_heating else eta2
-    h_min, h_c = cs.ehl.film_thickness(eta_in, alpha2, kind=("min", "central"))
-    reg = cs.ehl.regime(eta_in, alpha2)
-    F_R = cs.rolling.force(eta_in, _ROLLING_FORCE_MODEL.get(rolling_model, rolling_model), alpha_p=alpha2, regime=reg)
+    h_min, h_c = cs.ehl.film_thickness(eta_in, alpha2, kind=("min", "central"), check=False)  # η, α_p: the lubricant's
+    reg = cs.ehl.regime(eta_in, alpha2, check=False)
+    F_R = cs.rolling.force(eta_in, _ROLLING_FORCE_MODEL.get(rolling_model, rolling_model), alpha2, reg, check=False)
     if starvation:
         F_R = F_R * replenishment(cs, oil_c, T2, supply, pp)
     if np.any(Rq_ball) or np.any(Rq_ring):
@@ -437,13 +440,14 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     else:                                           # smooth surfaces: Λ = ∞, full-film friction
         Lam = np.full(h_min.shape, np.inf)
     if traction == "eyring":
-        oil_s = oil.aligned(4) if pp else oil       # per point against (…, B, 2, Z, 2, nodes)
-        mu_f = strip_traction_coefficient(cs.slips, cs.p_strip, h_c[..., None], eta2[..., None], alpha2[..., None],
-                                          oil_s.eyring_stress, oil_s.limiting_shear)  # (..., 2, Z, 2): micro-slip, spin
-        mu = mixed_friction_ianus(Lam, mu_f[..., 0], mu_boundary)
-        mu_piv = mixed_friction_ianus(Lam, mu_f[..., 1], mu_boundary)
+        oil_s = oil.aligned(3) if pp else oil       # per point against (…, B, 2, Z, 2): per contact
+        check_film_viscosity(eta2)
+        mu_f = cs.strip.traction(h_c[..., None], eta2[..., None], alpha2[..., None], oil_s.eyring_stress,
+                                 oil_s.limiting_shear)             # (..., 2, Z, 2): micro-slip, spin
+        mus = mixed_friction_ianus(Lam[..., None], mu_f, np.asarray(mu_boundary, float)[..., None], check=False)
+        mu, mu_piv = mus[..., 0], mus[..., 1]                           # Λ ≥ 0: films over roughnesses
     else:
-        mu = mu_piv = mixed_friction_ianus(Lam, mu_full_film, mu_boundary)
+        mu = mu_piv = mixed_friction_ianus(Lam, mu_full_film, mu_boundary, check=False)
     P = np.empty((4,) + h_min.shape)                # rolling, sliding, pivoting, hysteresis per contact
     P[0] = rolling_power(cs.u, F_R)
     np.multiply(mu, cs.P_sliding_mu, out=P[1])
@@ -513,27 +517,48 @@ def _as(x):
 
 @dataclass(frozen=True, eq=False)
 class ContactArrays(Mapping):
-    """Per-contact arrays of a :class:`LossResult`, by raceway: ``["inner"]`` / ``["outer"]`` → dict of
+    """Per-contact arrays of a :class:`LossResult`, by raceway: ``["inner"]`` / ``["outer"]`` → mapping of
     arrays (*lead, *batch, Z).
 
-    Holds the arrays of both raceways stacked, (*lead, *batch, 2, Z) (``arrays``); a raceway's dict
-    of views is made on access, so a solver that reads only the sums does not pay for it.  A
-    dataclass: :func:`thermobear.arrays.take` picks operating points from it like from a dict."""
+    Holds the arrays of both raceways stacked, (*lead, *batch, 2, Z) (``arrays``); a raceway's arrays
+    are views made on access, key by key, so a solver that reads only the sums (or one key) does not pay
+    for the rest.  A dataclass: :func:`thermobear.arrays.take` picks operating points from it like from a dict."""
 
     arrays: dict
 
-    def __getitem__(self, side: str) -> dict:
+    def __getitem__(self, side: str) -> Mapping:
         if side not in _SIDES:
             raise KeyError(side)
-        k = _SIDES.index(side)
-        full = self.arrays["h_min"].shape           # T_C, eta: one per operating point, shown per contact
-        return {key: (v if v.shape == full else np.broadcast_to(v, full))[..., k, :] for key, v in self.arrays.items()}
+        return _Raceway(self.arrays, _SIDES.index(side))
 
     def __iter__(self):
         return iter(_SIDES)
 
     def __len__(self) -> int:
         return len(_SIDES)
+
+
+class _Raceway(Mapping):
+    """One raceway's per-contact arrays of a :class:`ContactArrays` (views, made on access)."""
+
+    __slots__ = ("arrays", "k")
+
+    def __init__(self, arrays: dict, k: int):
+        self.arrays, self.k = arrays, k
+
+    def __getitem__(self, key):
+        v = self.arrays[key]
+        full = self.arrays["h_min"].shape           # T_C, eta: one per operating point, shown per contact
+        return (v if v.shape == full else np.broadcast_to(v, full))[..., self.k, :]
+
+    def __iter__(self):
+        return iter(self.arrays)
+
+    def __len__(self) -> int:
+        return len(self.arrays)
+
+    def __repr__(self):
+        return repr(dict(self))
 
 
 def _result(cs, P, P_drag, per_contact, models, added):

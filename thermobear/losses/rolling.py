@@ -113,15 +113,15 @@ class RollingContacts:
     C_ehl: np.ndarray
     pvr: tuple
 
-    def force(self, eta, model="auto_smooth", alpha_p=None, regime=None):
+    def force(self, eta, model="auto_smooth", alpha_p=None, regime=None, check=True):
         """Rolling force [N] of ``model`` (one of :data:`MODELS`) at the inlet viscosity ``eta``
         [Pa s] and pressure–viscosity coefficient ``alpha_p`` [1/Pa] (houpert_ehl, auto, auto_smooth);
-        ``regime``: see :func:`rolling_force`."""
+        ``regime``: see :func:`rolling_force`; ``check`` False: η and α_p already checked."""
         if model not in MODELS:
             raise InputError("model", model, f"must be one of {', '.join(MODELS)}")
         if model in ("biboulet_ivr", "biboulet_ehl", "biboulet_transition"):
             return rolling_force(self.Q, self.Rx, self.Ry, self.u, eta, self.E_prime, model=model)
-        eta = _num("eta", eta, what=" [Pa s]")
+        eta = _num("eta", eta, what=" [Pa s]") if check else eta
         U2 = eta * self.U2_eta
         if model == "houpert_ivr":
             return _houpert_ivr(self.C_ivr, U2)
@@ -131,7 +131,7 @@ class RollingContacts:
             return self._sharp(regime, U2, alpha_p)
         if alpha_p is None:
             raise InputError("alpha_p", None, f"pressure-viscosity coefficient [1/Pa] is required by {model}")
-        alpha_p = _num("alpha_p", alpha_p, what=" [1/Pa]")
+        alpha_p = _num("alpha_p", alpha_p, what=" [1/Pa]") if check else alpha_p
         if model == "houpert_ehl":
             return _houpert_ehl(self.C_ehl, alpha_p * self.E_prime, U2)
         if regime is None:

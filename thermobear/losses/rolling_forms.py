@@ -40,7 +40,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.special import ellipe
 
-from thermobear.arrays import out as _out
+from thermobear.arrays import above, out as _out
 from thermobear.contact.hertz import hertz
 from thermobear.errors import InputError
 
@@ -62,10 +62,7 @@ def _num(name, v, *, strict=True, what=""):
         ok, a = (v > 0 if strict else v >= 0), v
     else:
         a = np.asarray(v, dtype=float)
-        if not a.size:
-            return a
-        m = a.min()
-        ok = m > 0 if strict else m >= 0
+        ok = above(a, 0.0, strict)
     if not ok:
         raise InputError(name, v, f"must be finite and {'>' if strict else '>='} 0{what}")
     return a

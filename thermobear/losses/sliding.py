@@ -51,7 +51,7 @@ __all__ = [
 
 
 # ----------------------------------------------------------------------------- friction coefficient
-def mixed_friction_ianus(Lambda, mu_e=0.05, mu_a=0.11):
+def mixed_friction_ianus(Lambda, mu_e=0.05, mu_a=0.11, *, check=True):
     r"""Friction coefficient in mixed lubrication from the film parameter (seed 000 eq 18) [-].
 
     Parameters
@@ -60,6 +60,7 @@ def mixed_friction_ianus(Lambda, mu_e=0.05, mu_a=0.11):
                           surfaces) gives the full-film value μ_e
     mu_e : array_like     full-film (EHL) coefficient [-]
     mu_a : array_like     boundary (asperity) coefficient [-]
+    check : bool          False: Λ already known to be ≥ 0 (e.g. films over roughnesses): skip the check
 
     Returns
     -------
@@ -81,7 +82,7 @@ def mixed_friction_ianus(Lambda, mu_e=0.05, mu_a=0.11):
     (0.0557, 0.05, 0.05)
     """
     L = np.asarray(Lambda, dtype=float)
-    if L.size and not L.min() >= 0.0:                  # NaN fails too; +inf is the smooth limit
+    if check and L.size and not L.min() >= 0.0:        # NaN fails too; +inf is the smooth limit
         raise InputError("Lambda", Lambda, "must be >= 0 (film parameter)")
     phi = np.minimum(0.82 * L**0.28, 1.0)
     return _out(np.asarray(mu_e) * phi + np.asarray(mu_a) * (1.0 - phi))

@@ -78,13 +78,6 @@ def drag_power(cs, oil, T_oil, eta_oil, supply, oil_flow_m3_s):
     :func:`~thermobear.losses.drag.drag_loss` with Parker's oil fraction (oil jet), 1 % (oil–air)
     or air alone (grease); 0 where the bearing stands still."""
     brg, batch = cs.brg, cs.batch
-    if not batch and T_oil.size <= _FEW:            # one operating point (turning: dragged), a few states
-        n, wc = float(cs.n_rpm), float(cs.omega_cage)
-        X = (oil_volume_fraction_parker(float(oil_flow_m3_s) * 1e6 * 60.0, n, brg.dm * 1e3) if supply == "oil_jet"
-             else 0.01 if supply == "oil_air" else 0.0)
-        P = [drag_loss(brg.Z, brg.D, brg.dm, wc, X, oil.rho(t), e, t + 273.15).P_W
-             for t, e in zip(T_oil.ravel().tolist(), eta_oil.ravel().tolist())]
-        return np.array(P).reshape(T_oil.shape)
     run = cs.omega_cage > 0                       # (a subnormal speed: a cage speed of 0)
     all_run = bool(run.all())
     if supply == "oil_jet":
@@ -97,7 +90,12 @@ def drag_power(cs, oil, T_oil, eta_oil, supply, oil_flow_m3_s):
     else:
         X = 0.01 if supply == "oil_air" else 0.0
     wc = cs.omega_cage if all_run else np.where(run, cs.omega_cage, 1.0)
-    P = drag_loss(brg.Z, brg.D, brg.dm, wc, X, oil.rho(T_oil), eta_oil, T_oil + 273.15).P_W
+    if T_oil.size <= _FEW and oil.points is None:  # a few states: the formulas on Python floats
+        each = (np.broadcast_to(v, T_oil.shape).ravel().tolist() for v in (T_oil, eta_oil, wc, X))
+        P = np.array([drag_loss(brg.Z, brg.D, brg.dm, w, x, oil.rho(t), e, t + 273.15, check=False).P_W
+                      for t, e, w, x in zip(*each)]).reshape(T_oil.shape)
+    else:
+        P = drag_loss(brg.Z, brg.D, brg.dm, wc, X, oil.rho(T_oil), eta_oil, T_oil + 273.15, check=False).P_W
     return P if all_run else np.where(run, P, 0.0)
 
 
@@ -105,8 +103,9 @@ def inlet_viscosity(cs, oil, T2, eta2, per_point=False):
     """Inlet viscosity lowered by inlet shear heating [Pa s]: Gupta et al. (1992) φ_T at the contacts'
     thermal loading (pure rolling at the centre, u_s = 2u), read as the viscosity of the thermal film
     (:mod:`thermobear.lubrication.thermal_film`)."""
-    L = thermal_loading_parameter(property_at(oil.beta_at, T2, per_point), eta2, 2.0 * cs.u, property_at(oil.k_th, T2, per_point))
-    return thermal_inlet_viscosity(eta2, thermal_reduction_gupta(L))
+    L = thermal_loading_parameter(property_at(oil.beta_at, T2, per_point), eta2, 2.0 * cs.u,
+                                  property_at(oil.k_th, T2, per_point), check=False)       # the lubricant's values
+    return thermal_inlet_viscosity(eta2, thermal_reduction_gupta(L, check=False), check=False)
 
 
 def replenishment(cs, oil, T2, supply, per_point=False):

@@ -39,17 +39,20 @@ References
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from thermobear.arrays import checked as _num, out as _out
 from thermobear.losses.sliding import XI0_HEATHCOTE
 
 __all__ = ["ROELANDS_P0_PA", "roelands_pressure_index", "roelands_viscosity", "eyring_shear_stress",
-           "strip_traction_coefficient", "STRIP_NODES"]
+           "strip_traction_coefficient", "strip_contacts", "StripContacts", "check_film_viscosity", "STRIP_NODES"]
 
 #: Roelands' reference pressure p0 = 1.96e8 Pa (Roelands 1966 [1]_)
 ROELANDS_P0_PA = 1.96e8
 _LN_ETA_INF = 9.67          # −ln η∞, η∞ = 6.31e-5 Pa s (Roelands 1966)
+_ETA_INF = float(np.exp(-_LN_ETA_INF))
 
 
 def roelands_pressure_index(eta0, alpha_p):
@@ -122,11 +125,27 @@ def roelands_viscosity(eta0, alpha_p, p):
     >>> round(float(roelands_viscosity(0.114, 19.5e-9, 1e3) / (0.114 * np.exp(19.5e-9 * 1e3))), 8)
     1.0
     """
-    eta0 = _num("eta0", eta0, lo=np.exp(-_LN_ETA_INF), what=" [Pa s]")
+    eta0 = check_film_viscosity(eta0)
+    alpha_p = _num("alpha_p", alpha_p, what=" [1/Pa]")
+    return _out(_roelands(eta0, alpha_p, np.log1p(_num("p", p, strict=False, what=" [Pa]") / ROELANDS_P0_PA)))
+
+
+def check_film_viscosity(eta0):
+    """``eta0`` as a float array, each value finite and above Roelands' η∞ = 6.31e-5 Pa s (the pressure
+    index of :func:`roelands_pressure_index` needs ln η0 + 9.67 > 0); else an InputError."""
+    return _num("eta0", eta0, lo=_ETA_INF, what=" [Pa s]")
+
+
+def _roelands(eta0, alpha_p, ln_p):
+    """:func:`roelands_viscosity` of checked arrays, the pressure given as ln(1 + p/p0) (a contact's
+    pressures do not change with its temperature: :class:`StripContacts` forms them once)."""
     lg = np.log(eta0) + _LN_ETA_INF
-    Z = _num("alpha_p", alpha_p, what=" [1/Pa]") * ROELANDS_P0_PA / lg
-    p = _num("p", p, strict=False, what=" [Pa]")
-    return _out(eta0 * np.exp(lg * ((1.0 + p / ROELANDS_P0_PA) ** Z - 1.0)))
+    e = np.asarray(np.multiply(alpha_p * ROELANDS_P0_PA / lg, ln_p))      # Z ln(1 + p/p0)
+    np.expm1(e, out=e)                                           # (1 + p/p0)^Z − 1
+    e *= lg
+    np.exp(e, out=e)
+    e *= eta0
+    return e
 
 
 def eyring_shear_stress(eta, shear_rate, tau0, tau_L=np.inf):
@@ -166,14 +185,20 @@ def eyring_shear_stress(eta, shear_rate, tau0, tau_L=np.inf):
     (41.47, 100000000.0)
     """
     tau0 = _num("tau0", tau0, what=" (Eyring stress) [Pa]")
-    tau = np.asarray(np.multiply(eta, _num("shear_rate", shear_rate, strict=False, what=" [1/s]"), dtype=float))
-    tau /= tau0                                  # in place: batched arrays are large (module notes)
-    np.arcsinh(tau, out=tau)
-    tau *= tau0
-    tau_L = np.asarray(tau_L, float)
-    if np.broadcast_shapes(tau.shape, tau_L.shape, tau0.shape) != tau.shape:
-        return _out(np.minimum(tau, tau_L))
-    return _out(np.minimum(tau, tau_L, out=tau))
+    x = np.asarray(np.multiply(eta, _num("shear_rate", shear_rate, strict=False, what=" [1/s]"), dtype=float))
+    x /= tau0                                    # in place: batched arrays are large (module notes)
+    r = _eyring_reduced(x, np.asarray(tau_L, float) / tau0)
+    r *= tau0
+    return _out(r)
+
+
+def _eyring_reduced(x, cap):
+    """τ/τ0 of :func:`eyring_shear_stress` from x = η γ̇/τ0 (a float array, turned into the result in
+    place where the shapes allow) and the cap τ_L/τ0."""
+    np.arcsinh(x, out=x)
+    if np.broadcast_shapes(x.shape, np.shape(cap)) != x.shape:
+        return np.minimum(x, cap)
+    return np.minimum(x, cap, out=x)
 
 
 def _strip_nodes():
@@ -207,8 +232,8 @@ def strip_traction_coefficient(slip, p_mean, h, eta0, alpha_p, tau0, Lambda_L, *
     h : array_like         central film thickness [m] (one per contact: broadcast against slip[..., 0])
     eta0 : array_like      viscosity at ambient pressure, contact temperature [Pa s] (per contact)
     alpha_p : array_like   pressure–viscosity coefficient [1/Pa] (per contact)
-    tau0 : float           Eyring stress [Pa]
-    Lambda_L : float       limiting shear stress–pressure coefficient τ_L/p [-]
+    tau0 : array_like      Eyring stress [Pa] (per contact)
+    Lambda_L : array_like  limiting shear stress–pressure coefficient τ_L/p [-] (per contact)
     weights : array_like, optional  quadrature weights W_k of the Hertz strip load; default those of
                            :data:`STRIP_NODES`
 
@@ -242,15 +267,53 @@ def strip_traction_coefficient(slip, p_mean, h, eta0, alpha_p, tau0, Lambda_L, *
     >>> round(strip_traction_coefficient(52.4 * 0.744e-3 * xi, pm, 0.36e-6, 0.114, 19.5e-9, 5e6, 0.075), 4)
     0.0288
     """
+    st = strip_contacts(slip, p_mean, weights=weights)
+    tau0 = _num("tau0", tau0, what=" (Eyring stress) [Pa]")
+    eta0 = check_film_viscosity(eta0)
+    return _out(st.traction(np.asarray(h, float), eta0, _num("alpha_p", alpha_p, what=" [1/Pa]"), tau0, Lambda_L))
+
+
+@dataclass(frozen=True, eq=False)
+class StripContacts:
+    """The temperature-independent part of :func:`strip_traction_coefficient` for a set of contacts
+    (:func:`strip_contacts`; the local model's :class:`~thermobear.losses.local.ContactSet` holds one):
+    slip speeds ``v`` (…, k) [m/s], slice mean pressures ``pm`` (…, k) [Pa] and ln(1 + p̄/p0) ``ln_p``
+    (Roelands), and ``G`` = W_k |v_k| [p̄_k > 0] / (p̄_k Σ_k W_k |v_k|) (…, k) [1/Pa] with the quadrature
+    weights W_k: μ_f = Σ_k G_k τ_k."""
+
+    v: np.ndarray
+    pm: np.ndarray
+    ln_p: np.ndarray
+    G: np.ndarray
+
+    def traction(self, h, eta0, alpha_p, tau0, Lambda_L):
+        """μ_f of :func:`strip_traction_coefficient` at central films ``h`` [m], viscosities ``eta0``
+        [Pa s] and α_p [1/Pa], Eyring stresses ``tau0`` [Pa] and Λ_L [-] (each per contact: broadcast
+        against ``v[..., 0]``; checked by the caller)."""
+        tau0 = np.asarray(tau0, float)
+        eta = _roelands(eta0[..., None], alpha_p[..., None], self.ln_p)    # η(p̄) at the nodes
+        eta *= (1.0 / (tau0 * np.maximum(h, 1e-12)))[..., None]           # η/(τ0 h)
+        r = _eyring_reduced(eta * self.v, (np.asarray(Lambda_L, float) / tau0)[..., None] * self.pm)
+        return tau0 * np.einsum("...k,...k->...", r, self.G)                 # Σ_k G_k τ_k, τ = τ0 r
+
+
+def strip_contacts(slip, p_mean, *, weights=None, check=True) -> StripContacts:
+    """The :class:`StripContacts` of slips and slice mean pressures at the strip nodes (see
+    :func:`strip_traction_coefficient`; ``weights`` default those of :data:`STRIP_NODES`; ``check``
+    False: ``slip`` already |slip| ≥ 0 and ``p_mean`` ≥ 0, float arrays, e.g. of a Hertz contact).
+
+    >>> xi = STRIP_NODES[0]
+    >>> st = strip_contacts(0.01 * xi, 1e9 * np.sqrt(1 - xi**2))
+    >>> round(float(st.traction(np.array(1e-7), np.array(1e3), np.array(30e-9), 5e6, 0.06)), 4)
+    0.06
+    """
     W = STRIP_NODES[1] if weights is None else np.asarray(weights, float)
-    v = np.abs(np.asarray(slip, float))
-    pm = np.asarray(p_mean, float)
-    h = np.asarray(h, float)[..., None]
-    eta = roelands_viscosity(np.asarray(eta0, float)[..., None], np.asarray(alpha_p, float)[..., None], pm)
-    tau = eyring_shear_stress(eta, v / np.maximum(h, 1e-12), tau0, Lambda_L * pm)
-    loaded = pm > 0
-    tau /= np.where(loaded, pm, 1.0)             # μ = τ/p̄ at the nodes, in place
-    tau *= loaded
-    tau *= v
+    if check:
+        v, pm = np.abs(np.asarray(slip, float)), _num("p_mean", p_mean, strict=False, what=" [Pa]")
+    else:
+        v, pm = slip, p_mean
     den = v @ W                                  # Σ_k W_k |v_k|
-    return _out(np.where(den > 0, (tau @ W) / np.where(den > 0, den, 1.0), 0.0))
+    loaded = pm > 0
+    G = v * (W * (loaded / np.where(loaded, pm, 1.0)))                 # W_k |v_k| / p̄_k (0 where p̄_k = 0)
+    G *= np.where(den > 0, 1.0 / np.where(den > 0, den, 1.0), 0.0)[..., None]
+    return StripContacts(v=v, pm=pm, ln_p=np.log1p(pm * (1.0 / ROELANDS_P0_PA)), G=G)

@@ -118,16 +118,17 @@ class EHLContacts:
     D: np.ndarray
     consts: tuple
 
-    def film_thickness(self, eta, alpha_p, kind="min", method="hamrock_dowson"):
+    def film_thickness(self, eta, alpha_p, kind="min", method="hamrock_dowson", check=True):
         """Film thickness [m] at viscosity ``eta`` [Pa s] and pressure–viscosity coefficient
-        ``alpha_p`` [1/Pa] (arrays; see :func:`film_thickness` for ``kind`` and ``method``)."""
+        ``alpha_p`` [1/Pa] (arrays; see :func:`film_thickness` for ``kind`` and ``method``; ``check``
+        False: η and α_p already checked, e.g. a lubricant's values)."""
         kinds = kind if isinstance(kind, tuple) else (kind,)
         if not kinds or any(k not in _FILM_KINDS for k in kinds):
             raise InputError("film_thickness kind", kind, 'must be "min" or "central" (or a tuple of them)')
         if method not in ("hamrock_dowson", "seed000_eq15") or (method == "seed000_eq15" and kinds != ("min",)):
             raise InputError("film_thickness method", method, '"hamrock_dowson", or "seed000_eq15" (kind="min")')
-        eta = _arr("eta", eta, positive=True)
-        alpha_p = _arr("alpha_p", alpha_p, positive=True)
+        if check:
+            eta, alpha_p = _arr("eta", eta, positive=True), _arr("alpha_p", alpha_p, positive=True)
         U, G = eta * self.U_eta, alpha_p * self.E_prime
         out = []
         for k in kinds:
@@ -141,10 +142,11 @@ class EHLContacts:
                 out.append(self.C_min * U**0.68 * G**0.49)
         return tuple(out) if isinstance(kind, tuple) else out[0]
 
-    def regime(self, eta, alpha_p) -> Regime:
-        """:class:`Regime` of the contacts at ``eta`` [Pa s] and ``alpha_p`` [1/Pa] (≥ 0)."""
-        eta = _arr("eta", eta, positive=True)
-        alpha_p = _arr("alpha_p", alpha_p, nonneg=True)
+    def regime(self, eta, alpha_p, check=True) -> Regime:
+        """:class:`Regime` of the contacts at ``eta`` [Pa s] and ``alpha_p`` [1/Pa] (≥ 0; ``check`` False:
+        already checked)."""
+        if check:
+            eta, alpha_p = _arr("eta", eta, positive=True), _arr("alpha_p", alpha_p, nonneg=True)
         lnU2 = np.log(np.maximum(eta * (2.0 * self.U_eta), TINY))
         lnM = self.lnW - 0.75 * lnU2
         lnL = np.log(np.maximum(alpha_p * self.E_prime, TINY)) + 0.25 * lnU2

@@ -34,10 +34,12 @@ batch axis B in the temperatures' last place, or :meth:`Lubricant.aligned` for t
 from __future__ import annotations
 
 import copy
+import functools
 
 import numpy as np
 
 
+from thermobear.arrays import within
 from thermobear.files import data_dir, lookup, names_in, read_toml
 from thermobear.errors import ExtrapolationWarning, InputError
 from thermobear.schema import Field, check_table, check_uncertainty
@@ -224,6 +226,17 @@ def _plain(T_C) -> bool:
     """True for one temperature [°C] as a Python or numpy float inside T_WARN_C (no check, warning or
     error to give: :class:`Lubricant` evaluates its formulas on the Python float)."""
     return type(T_C) in (float, np.float64) and T_WARN_C[0] <= T_C <= T_WARN_C[1]
+
+
+def _per_value(method):
+    """A property evaluated on the Python float of a one-value array (a thermal element, or a batch of one
+    operating point): the same formula without array overhead, the result shaped like the array."""
+    @functools.wraps(method)
+    def prop(self, T_C):
+        if type(T_C) is np.ndarray and T_C.ndim and T_C.size == 1 and self.points is None:
+            return np.full(T_C.shape, method(self, T_C.item()))
+        return method(self, T_C)
+    return prop
 
 
 def _positive(field, v):
@@ -462,13 +475,14 @@ class Lubricant:
     # -- temperature checks --------------------------------------------------
     def _T(self, T_C, what):
         T = np.asarray(T_C, dtype=float)
-        if T.size and not (T_WARN_C[0] <= T.min() and T.max() <= T_WARN_C[1]):    # NaN fails too
+        if not within(T, *T_WARN_C):                                           # NaN fails too
             check_limit("lubricant_T", T, f"{self.name}.{what}(T_C)", category=ExtrapolationWarning)
         return T
 
     # -- properties -----------------------------------------------------------
     # One temperature as a Python float inside T_WARN_C (the thermal elements ask for one at a time)
     # needs no check: the formulas run on the float (with ``math``); anything else is checked first.
+    @_per_value
     def nu(self, T_C):
         """Kinematic viscosity [cSt] at T_C [°C], ASTM D341 (see :func:`walther_nu`)."""
         if _plain(T_C) and self.points is None:
@@ -476,6 +490,7 @@ class Lubricant:
         T = self._T(T_C, "nu")
         return _out(walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K), T_C)
 
+    @_per_value
     def rho(self, T_C):
         """Density [kg/m³] at T_C [°C] (see :func:`density_api`)."""
         if _plain(T_C) and self.points is None:
@@ -483,6 +498,7 @@ class Lubricant:
         T = self._T(T_C, "rho")
         return _out(density_api(self.rho15, T), T_C)
 
+    @_per_value
     def eta(self, T_C):
         """Dynamic viscosity [Pa s] at T_C [°C]: η = ν [cSt] × 1e-6 × ρ [kg/m³]."""
         if _plain(T_C):
@@ -492,6 +508,7 @@ class Lubricant:
         nu = walther_nu(self.walther_A, self.walther_B, T + ZERO_C_K)
         return _out(nu * 1e-6 * density_api(self.rho15, T), T_C)
 
+    @_per_value
     def beta_at(self, T_C):
         """Temperature–viscosity coefficient −d ln η/dT [1/K] at T_C [°C]: ASTM D341
         (:func:`walther_temperature_coefficient`) plus the density's thermal expansion (:func:`density_api`)."""
@@ -505,6 +522,7 @@ class Lubricant:
         """A constant property ``v`` shaped like the temperatures."""
         return v if type(T) is float else _out(np.broadcast_to(v, np.broadcast_shapes(np.shape(T), np.shape(v))) * 1.0, T_C)
 
+    @_per_value
     def alpha_p_at(self, T_C):
         """Pressure–viscosity coefficient [1/Pa] at T_C [°C].
 
@@ -520,6 +538,7 @@ class Lubricant:
                              "unknown: give alpha_p [1/Pa] or Gold coefficients gold_s, gold_t")
         return self._const(self.alpha_p, T, T_C)
 
+    @_per_value
     def k_th(self, T_C):
         """Thermal conductivity [W/(m K)] at T_C [°C]: constant, or Cragoe (1929) (:func:`cragoe_k_th`)."""
         T = float(T_C) if _plain(T_C) else self._T(T_C, "k_th")
@@ -527,6 +546,7 @@ class Lubricant:
             return self._const(self._k_th, T, T_C)
         return _out(cragoe_k_th(self.rho15, T), T_C)
 
+    @_per_value
     def cp(self, T_C):
         """Specific heat [J/(kg K)] at T_C [°C]: constant, or Cragoe (1929) (:func:`cragoe_cp`)."""
         T = float(T_C) if _plain(T_C) else self._T(T_C, "cp")

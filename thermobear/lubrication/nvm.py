@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from thermobear.arrays import finite_range
+from thermobear.arrays import above, finite_range
 from thermobear.errors import InputError
 
 __all__ = ["REGIMES", "TINY", "EXP_MAX", "moes_N", "ln_asymptote_consts", "nvm_asymptotes", "nvm_H", "Regime",
@@ -50,6 +50,8 @@ def _arr(name, v, *, positive=False, nonneg=False):
         if not a.size:
             return a
         if positive or nonneg:
+            if above(a, 0.0, strict=positive):
+                return a
             lo, hi = a.min(), 0.0
         else:
             r = finite_range(a)

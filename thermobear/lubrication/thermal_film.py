@@ -37,7 +37,7 @@ __all__ = ["thermal_loading_parameter", "thermal_reduction_gupta", "thermal_inle
 HD_SPEED_EXPONENT = 0.67
 
 
-def thermal_loading_parameter(beta, eta, u_sum, k_th):
+def thermal_loading_parameter(beta, eta, u_sum, k_th, *, check=True):
     r"""Thermal loading parameter of an EHL inlet [-].
 
     Parameters
@@ -46,6 +46,7 @@ def thermal_loading_parameter(beta, eta, u_sum, k_th):
     eta : array_like    inlet viscosity at the surface temperature [Pa s]
     u_sum : array_like  sum of the surface speeds u1 + u2 = 2 u [m/s]
     k_th : array_like   thermal conductivity of the oil [W/(m K)]
+    check : bool        False: inputs already checked by the caller (e.g. the lubricant's values): skip the checks
 
     Returns
     -------
@@ -72,17 +73,20 @@ def thermal_loading_parameter(beta, eta, u_sum, k_th):
     >>> round(thermal_loading_parameter(0.045, 0.114, 2.28, 0.13), 4)
     0.2051
     """
-    return _out(_num("beta", beta, strict=False, what=" [1/K]") * _num("eta", eta, what=" [Pa s]")
-                * _num("u_sum", u_sum, strict=False, what=" [m/s]") ** 2 / _num("k_th", k_th, what=" [W/(m K)]"))
+    if check:
+        beta, eta = _num("beta", beta, strict=False, what=" [1/K]"), _num("eta", eta, what=" [Pa s]")
+        u_sum, k_th = _num("u_sum", u_sum, strict=False, what=" [m/s]"), _num("k_th", k_th, what=" [W/(m K)]")
+    return _out(beta * eta * u_sum ** 2 / k_th)
 
 
-def thermal_reduction_gupta(L, srr=0.0):
+def thermal_reduction_gupta(L, srr=0.0, *, check=True):
     r"""Thermal reduction of the EHL film thickness by inlet shear heating, φ_T = h_T/h_iso [-].
 
     Parameters
     ----------
     L : array_like    thermal loading parameter (:func:`thermal_loading_parameter`) [-]
     srr : array_like  slide-to-roll ratio |u1 − u2|/(u1 + u2) [-] (0: pure rolling)
+    check : bool      False: inputs already checked by the caller (e.g. the lubricant's values): skip the checks
 
     Returns
     -------
@@ -109,18 +113,20 @@ def thermal_reduction_gupta(L, srr=0.0):
     >>> round(thermal_reduction_gupta(0.2051), 4), thermal_reduction_gupta(0.0), round(thermal_reduction_gupta(1.0, 0.1), 4)
     (0.965, 1.0, 0.7582)
     """
-    L = _num("L", L, strict=False, what=" (thermal loading parameter)")
-    S = _num("srr", srr, strict=False, what=" (slide-to-roll ratio)")
-    return _out(1.0 / (1.0 + 0.1 * (1.0 + 14.8 * S**0.83) * L**0.64))
+    if check:
+        L = _num("L", L, strict=False, what=" (thermal loading parameter)")
+        srr = _num("srr", srr, strict=False, what=" (slide-to-roll ratio)")
+    return _out(1.0 / (1.0 + 0.1 * (1.0 + 14.8 * srr**0.83) * L**0.64))
 
 
-def thermal_inlet_viscosity(eta, phi_T):
+def thermal_inlet_viscosity(eta, phi_T, *, check=True):
     r"""Effective inlet viscosity of a thermally reduced film [Pa s].
 
     Parameters
     ----------
     eta : array_like    isothermal inlet viscosity [Pa s]
     phi_T : array_like  thermal film reduction (:func:`thermal_reduction_gupta`) [-]
+    check : bool        False: inputs already checked by the caller (e.g. the lubricant's values): skip the checks
 
     Returns
     -------
@@ -146,4 +152,5 @@ def thermal_inlet_viscosity(eta, phi_T):
     >>> round(thermal_inlet_viscosity(0.114, 0.965), 5), thermal_inlet_viscosity(0.114, 1.0)
     (0.1081, 0.114)
     """
-    return _out(np.asarray(eta, float) * _num("phi_T", phi_T, what=" [-]") ** (1.0 / HD_SPEED_EXPONENT))
+    phi_T = _num("phi_T", phi_T, what=" [-]") if check else phi_T
+    return _out(np.asarray(eta, float) * phi_T ** (1.0 / HD_SPEED_EXPONENT))
