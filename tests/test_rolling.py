@@ -77,6 +77,42 @@ def test_seed001_ehl_partition_41_to_21_percent():
     assert np.round(p * 100).tolist() == [41.0, 21.0]
 
 
+def test_dominant_regime_force_is_ivr_where_ivr_dominates_and_transition_where_ehl_does():
+    """Bălan et al. 2015 §5: Biboulet's IVR equation when IVR dominates (EHL partition below the band), his
+    transition equation when EHL dominates (above it); in between a C¹ blend, hand-computed here."""
+    d, rg = 6.35e-3, 4.16e-3
+    Rx, Ry = d / 2, rg * (d / 2) / (rg - d / 2)
+    lo, hi = R.DOMINANT_BAND
+    assert lo < 0.5 < hi                                        # the paper's line lies inside the band
+    for Qv in np.geomspace(0.01, 10.0, 25):
+        for rpm in (20.0, 60.0, 210.0, 2000.0):
+            u = rpm * math.pi / 30 * 0.018 / 2
+            f_ivr, _, M, f_tr = hand_biboulet(Qv, u, eta=0.05, Rx=Rx, Ry=Ry)
+            p = (M / 6.6) / (1 + M / 6.6)
+            t = min(1.0, max(0.0, (p - lo) / (hi - lo)))
+            w = t * t * (3 - 2 * t)
+            f = R.rolling_force_biboulet_dominant(Qv, Rx, Ry, u, 0.05, E)
+            assert f == pytest.approx(f_ivr + w * (f_tr - f_ivr), rel=1e-12)
+            if p <= lo:
+                assert f == pytest.approx(f_ivr, rel=1e-12)
+            if p >= hi:
+                assert f == pytest.approx(f_tr, rel=1e-12)
+
+
+def test_dominant_regime_force_has_no_step_across_its_band():
+    """A fine load sweep across the band: the force is a smooth power law in Q (no jump in ln F)."""
+    d, rg = 6.35e-3, 4.16e-3
+    Rx, Ry = d / 2, rg * (d / 2) / (rg - d / 2)
+    u = 120 * math.pi / 30 * 0.018 / 2
+    Qs = np.geomspace(0.02, 5.0, 4000)
+    p = R.ehl_partition(Qs, Rx, Ry, u, 0.05, E)
+    assert p.min() < R.DOMINANT_BAND[0] and p.max() > R.DOMINANT_BAND[1]        # the sweep crosses the band
+    lnF = np.log(R.rolling_force_biboulet_dominant(Qs, Rx, Ry, u, 0.05, E))
+    slope = np.diff(lnF) / np.diff(np.log(Qs))
+    assert np.all(np.abs(np.diff(slope)) < 0.05)                  # d ln F / d ln Q changes gradually
+    assert np.all(np.abs(slope) < 1.0)
+
+
 # ------------------------------------------------------------------ Houpert / B&H 2010 (seed 004)
 def test_houpert_ivr_hand():
     u = u_mean(200)
@@ -168,7 +204,8 @@ def test_transition_limits():
     assert R.rolling_force_biboulet_transition(1e3, RX, RY, 1e-7, ETA, E) == pytest.approx(f_ehl, rel=1e-5)
 
 
-MODELS = ["biboulet_ivr", "biboulet_ehl", "biboulet_transition", "houpert_ivr", "houpert_ehl", "biboulet_pvr"]
+MODELS = ["biboulet_ivr", "biboulet_ehl", "biboulet_transition", "biboulet_dominant", "houpert_ivr", "houpert_ehl",
+          "biboulet_pvr"]
 
 
 @pytest.mark.parametrize("model", MODELS)

@@ -106,3 +106,16 @@ def take(obj, index, B: int):
         v = getattr(obj, f.name)
         object.__setattr__(new, f.name, v if f.name in UNBATCHED else take(v, index, B))
     return new
+
+
+def smooth_weight(c, lo: float, hi: float):
+    r"""Weight of the upper model across a switch band: 0 at ``c <= lo``, 1 at ``c >= hi``, the C¹
+    smoothstep in between.
+
+    .. math:: w = 3 t^2 - 2 t^3, \qquad t = \min(1, \max(0, (c - lo)/(hi - lo)))
+
+    >>> float(smooth_weight(0.05, 0.0, 0.1)), float(smooth_weight(1.0, 0.0, 0.1))
+    (0.5, 1.0)
+    """
+    t = np.clip((np.asarray(c, float) - lo) / (hi - lo), 0.0, 1.0)
+    return t * t * (3.0 - 2.0 * t)

@@ -66,7 +66,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from thermobear.arrays import take
+from thermobear.arrays import smooth_weight, take
 from thermobear.errors import InputError, NoEquilibrium, SolverError
 from thermobear.loads import LoadDistribution, load_distribution, needs_high_speed
 from thermobear.loads.highspeed import load_distribution_high_speed_full
@@ -209,19 +209,6 @@ def open_contacts(scene: Scene, high_speed: bool, dry: LoadDistribution | None =
     """
     ld = dry if dry is not None else dry_load(scene, high_speed)
     return int(np.count_nonzero((np.asarray(ld.Q_i) <= 0.0) | (np.asarray(ld.Q_o) <= 0.0)))
-
-
-def smooth_weight(c, lo: float, hi: float):
-    r"""Weight of the upper model across a switch band: 0 at ``c <= lo``, 1 at ``c >= hi``, the C¹
-    smoothstep in between.
-
-    .. math:: w = 3 t^2 - 2 t^3, \qquad t = \min(1, \max(0, (c - lo)/(hi - lo)))
-
-    >>> float(smooth_weight(0.05, 0.0, 0.1)), float(smooth_weight(1.0, 0.0, 0.1))
-    (0.5, 1.0)
-    """
-    t = np.clip((np.asarray(c, float) - lo) / (hi - lo), 0.0, 1.0)
-    return t * t * (3.0 - 2.0 * t)
 
 
 def _high_speed_alternatives(scene: Scene) -> list:

@@ -70,8 +70,8 @@ __all__ = ["LossResult", "ContactSet", "ContactArrays", "bearing_losses", "prepa
            "BREAKDOWN_KEYS", "ROLLING_MODELS", "TRACTION_MODELS"]
 
 BREAKDOWN_KEYS = ("sliding", "rolling", "pivoting", "hysteresis", "drag", "churning", "seal", "cage")
-ROLLING_MODELS = ("auto", "auto_sharp", "biboulet_ivr", "biboulet_ehl", "biboulet_transition", "houpert_ivr",
-                  "houpert_ehl", "biboulet_pvr")
+ROLLING_MODELS = ("auto", "auto_sharp", "biboulet_ivr", "biboulet_ehl", "biboulet_transition", "biboulet_dominant",
+                  "houpert_ivr", "houpert_ehl", "biboulet_pvr")
 #: full-film traction: a constant μ_e (seed 000 eq 18), or the oil's Eyring / limiting-shear-stress law
 TRACTION_MODELS = ("constant", "eyring")
 #: rolling_model of this module → model of :func:`~thermobear.losses.rolling.rolling_force`

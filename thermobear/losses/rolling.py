@@ -12,6 +12,7 @@ Models (one function each, pure and vectorised; scalars or broadcastable arrays)
 ``biboulet_ivr``       Biboulet & Houpert 2010, IVR curve fit (seed 000 eq 21)
 ``biboulet_ehl``       Biboulet & Houpert 2010, EHL curve fit (seed 000 eq 22)
 ``biboulet_transition``  blend of the two with M (seed 000 eqs 20, 23)
+``biboulet_dominant``  IVR or transition by the dominant regime (Bălan et al. 2015, seed 001 §5)
 ``houpert_ivr``        Houpert 1987 IVR re-fitted (seed 004 eq 17; B&H 2010 eq 28)
 ``houpert_ehl``        Houpert EHL (seed 004 eq 18; B&H 2010 eq 29)
 ``biboulet_pvr``       Biboulet's full IVR→EHL fit (seed 004 eq 19; B&H 2010 eqs 32, 36)
@@ -48,24 +49,24 @@ from thermobear.arrays import out as _out
 from thermobear.errors import InputError
 from thermobear.losses.rolling_forms import (  # noqa: F401  (re-exported)
     _M_SPLIT, _biboulet_pvr, _biboulet_pvr_coeffs, _checked_geometry, _houpert_ehl, _houpert_ehl_coeff,
-    _houpert_ivr, _houpert_ivr_coeff, _num, biboulet_parameters, ehl_partition, rolling_force_biboulet_ehl,
-    rolling_force_biboulet_ivr, rolling_force_biboulet_pvr, rolling_force_biboulet_transition,
+    _houpert_ivr, _houpert_ivr_coeff, DOMINANT_BAND, _num, biboulet_parameters, ehl_partition, rolling_force_biboulet_dominant,
+    rolling_force_biboulet_ehl, rolling_force_biboulet_ivr, rolling_force_biboulet_pvr, rolling_force_biboulet_transition,
     rolling_force_houpert_ehl, rolling_force_houpert_ivr, transition_parameter, truncation_coefficient)
 from thermobear.losses.sliding import LAMBDA_FULL_FILM_BALAN, asperity_load_share
 from thermobear.lubrication.film import Regime, lubrication_regime
 
 __all__ = [
-    "MODELS", "REGIME_MODEL", "SWITCH_WIDTH",
+    "MODELS", "REGIME_MODEL", "SWITCH_WIDTH", "DOMINANT_BAND",
     "transition_parameter", "ehl_partition",
     "rolling_force_biboulet_ivr", "rolling_force_biboulet_ehl",
-    "rolling_force_biboulet_transition",
+    "rolling_force_biboulet_transition", "rolling_force_biboulet_dominant",
     "biboulet_parameters", "truncation_coefficient",
     "rolling_force_houpert_ivr", "rolling_force_houpert_ehl", "rolling_force_biboulet_pvr",
     "RollingContacts", "rolling_contacts",
     "rolling_force_regime_weighted", "rolling_force", "rolling_force_mixed", "pressure_force", "rolling_power",
 ]
 
-MODELS = ("biboulet_ivr", "biboulet_ehl", "biboulet_transition", "houpert_ivr",
+MODELS = ("biboulet_ivr", "biboulet_ehl", "biboulet_transition", "biboulet_dominant", "houpert_ivr",
           "houpert_ehl", "biboulet_pvr", "auto", "auto_smooth")
 
 #: Model used per lubrication regime by ``model="auto"`` (seed 004 §4.3).  IVE
@@ -119,7 +120,7 @@ class RollingContacts:
         ``regime``: see :func:`rolling_force`; ``check`` False: η and α_p already checked."""
         if model not in MODELS:
             raise InputError("model", model, f"must be one of {', '.join(MODELS)}")
-        if model in ("biboulet_ivr", "biboulet_ehl", "biboulet_transition"):
+        if model in ("biboulet_ivr", "biboulet_ehl", "biboulet_transition", "biboulet_dominant"):
             return rolling_force(self.Q, self.Rx, self.Ry, self.u, eta, self.E_prime, model=model)
         eta = _num("eta", eta, what=" [Pa s]") if check else eta
         U2 = eta * self.U2_eta
@@ -314,6 +315,8 @@ def rolling_force(Q, Rx, Ry, u, eta, E_prime, model="biboulet_transition", alpha
         return rolling_force_biboulet_ehl(Q, Rx, Ry, u, eta, E_prime)
     if model == "biboulet_transition":
         return rolling_force_biboulet_transition(Q, Rx, Ry, u, eta, E_prime)
+    if model == "biboulet_dominant":
+        return rolling_force_biboulet_dominant(Q, Rx, Ry, u, eta, E_prime)
     if model == "houpert_ivr":
         return rolling_force_houpert_ivr(Q, Rx, Ry, u, eta, E_prime)
     if model == "houpert_ehl":
