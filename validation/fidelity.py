@@ -523,9 +523,11 @@ def _ms(t: float) -> str:
     return f"{1e3 * t:.3g}" if math.isfinite(t) else "–"
 
 
-#: Issue 17's targets: an RMS error per family (where the issue sets one), and for every family "the highest level
+#: Issue 17's targets: an RMS error per family (where the issue sets one: family → (RMS, the levels it applies to)), and for every family "the highest level
 #: at least as accurate as the lowest", the error falling as fidelity rises (L0-cal, calibrated on the family, apart).
-TARGETS = {"seed004 P ratio": 0.10}
+TARGETS = {"seed004 P ratio": (0.10, ("L0", "L1", "L2", "L3", "L4")),
+           "seed002 torque": (0.25, ("L1", "L2", "L3", "L4")),          # "with the local model"
+           "seed001 torque": (0.15, ("L1", "L2", "L3", "L4"))}
 LADDER = ("L0", "L1", "L2", "L3", "L4")
 #: Where a target is missed: the physics still missing, with the evidence (keys: (family, level) for an RMS target,
 #: (family, "La→Lb") for a step where the error rises).  A miss without an entry is reported as not diagnosed.
@@ -559,6 +561,12 @@ MISSING = {
         "too small, so the contacts are more viscous and the torque, already high at the measured temperature, "
         "higher",
 }
+_SEED001_MISSING = (
+    "mixed lubrication at Table 1's Λ 0.27–0.63 (3 mm balls, 0.633 N): the measured torque rises as ω^0.12–0.37, the "
+    "hydrodynamic forces as ω^0.67–0.86, so the model is 35 % low at 60 rpm and within 6 % at 210 rpm; the asperities "
+    "cannot carry the difference (seed 001 §4.3: the dry torque, all load on asperities, is ≤ 12 % of the lubricated "
+    "one; the load-sharing mixed force lowers the film's share and gives 29 %): seed001_spin_down.md")
+MISSING.update({("seed001 torque", lv): _SEED001_MISSING for lv in ("L1", "L2", "L3", "L4")})
 
 
 def targets(scores: list[Score]) -> str:
@@ -573,11 +581,12 @@ def targets(scores: list[Score]) -> str:
         return MISSING.get(key, "not diagnosed")
     for fam in fams:
         if fam in TARGETS:
-            for lv in LADDER:
+            rms, levels = TARGETS[fam]
+            for lv in levels:
                 s = by.get((lv, fam))
                 if s is not None:
-                    ok = s.rms <= TARGETS[fam]
-                    lines.append(f"| {fam} | RMS ≤ {100 * TARGETS[fam]:.0f} % | {lv} {100 * s.rms:.1f} %: "
+                    ok = s.rms <= rms
+                    lines.append(f"| {fam} | RMS ≤ {100 * rms:.0f} % | {lv} {100 * s.rms:.1f} %: "
                                  f"{'met' if ok else '**missed**'} | {'' if ok else why((fam, lv))} |")
         lvs = [lv for lv in LADDER if (lv, fam) in by]
         if len(lvs) < 2:
