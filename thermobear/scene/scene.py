@@ -354,10 +354,9 @@ class Scene:
         new = dataclasses.replace(self, **kw)
         if new.network == PARAMETRIC:                                   # named now: build it from the sections
             new = dataclasses.replace(new, network=_machine(new))
-        elif isinstance(new.network, Machine) and {"bearing", "lubricant", "supply", "rotating"} & set(kw):
-            new = dataclasses.replace(new, network=_machine(new))       # the machine follows its bearing
-        _check_scene(new, network_changed=bool({"network", "network_parameters", "T_fixed_C", "bearing", "lubricant",
-                                                "supply", "rotating"} & set(kw)))
+        elif isinstance(new.network, Machine) and _MACHINE_KEYS & set(kw):
+            new = dataclasses.replace(new, network=_machine(new, at=new.network))  # the machine follows its bearing
+        _check_scene(new, network_changed=bool({"network", "network_parameters", "T_fixed_C", *_MACHINE_KEYS} & set(kw)))
         return new
 
 
@@ -515,24 +514,38 @@ def _default_penetration(supply: str, lsec: dict) -> float:
     return 0.4 if supply == "oil_jet" and lsec.get("oil_feed", "jet") == "jet" else 1.0
 
 
-def _machine(s: Scene) -> Machine:
+#: The scene values a parametric network is built from (besides its [shaft] and [housing] tables): a
+#: :meth:`Scene.with_` of any of them builds the machine again (seals and shields close the cavity and add
+#: a seal node, the oil level sets the sump and the balls' share in the bath, the jet's penetration the
+#: oil stream through the bearing).
+_MACHINE_KEYS = frozenset({"bearing", "lubricant", "supply", "rotating", "seals", "oil_level", "jet_penetration"})
+
+
+def _machine(s: Scene, at: Machine | None = None) -> Machine:
     """The machine of a parametric scene, from its ``[shaft]``, ``[housing]`` and ``[lubricant]`` tables
-    (at the scene's own operating point: what the discretisation rule reads)."""
+    and the scene's bearing, lubrication, seals and oil level, at the scene's own operating point (what the
+    discretisation rule reads) — or, built again for an override (``at``: the machine the scene had), at
+    that machine's operating point, so that an override changes no cell count (a schedule step, a sweep's
+    points: one network)."""
     d = s.raw or {}
     sh = check_table(d.get("shaft", {}), SHAFT_FIELDS, "shaft")
     ho = check_table(d.get("housing", {}), HOUSING_FIELDS, "housing")
     lub = check_table(d.get("lubricant", {}), SECTIONS["lubricant"], "lubricant") if "lubricant" in d else {}
+    lub = {k: v for k, v in lub.items() if k != "oil_level_mm"}            # the scene's own (an override's)
+    if s.oil_level is not None:
+        lub["oil_level_mm"] = s.oil_level * 1e3
+    closure = "contact" if s.seals in CONTACT_SEALS else "shields" if s.seals == "shield" else "none"
     old = s.network if isinstance(s.network, Machine) else None
     if old is not None and not d:
         return dataclasses.replace(old, bearing=s.bearing, rotating=s.rotating,
-                                   lubrication=lubrication_of({}, s.lubricant, s.supply))
-    closure = "contact" if s.seals in CONTACT_SEALS else "shields" if s.seals == "shield" else "none"
+                                   lubrication=lubrication_of(lub, s.lubricant, s.supply),
+                                   housing=dataclasses.replace(old.housing, seals=closure))
     if s.supply == "oil_jet":
         lub = {**lub, "jet_penetration": s.jet_penetration}       # the drag's and the network's share alike
+    op = (dict(n_rpm=s.n_rpm, T_ambient_C=s.T_ambient_C, Fa=s.Fa, Fr=float(np.hypot(s.Fr, s.Fz))) if at is None
+          else dict(n_rpm=at.n_rpm, T_ambient_C=at.T_ambient_C, Fa=at.Fa, Fr=at.Fr))
     return machine_from_sections(sh, ho, lub, bearing=s.bearing, lubricant=s.lubricant, supply=s.supply,
-                                 rotating=s.rotating, n_rpm=s.n_rpm, T_ambient_C=s.T_ambient_C, Fa=s.Fa,
-                                 Fr=float(np.hypot(s.Fr, s.Fz)),
-                                 seals=closure)
+                                 rotating=s.rotating, seals=closure, **op)
 
 
 def _network_of(d: dict, th: dict):
