@@ -71,6 +71,10 @@ def _value(text: str):
         return text.strip()
 
 
+#: ``--set`` keys whose value is a name (a catalogue designation, a lubricant), never a number
+_NAMED = ("bearing", "lubricant")
+
+
 def overrides(items) -> dict:
     """``--set key=value`` items → :meth:`Scene.with_` keyword arguments (``models.<key>``,
     ``fixed_C.<node>``, ``parameters.<name>`` go into their tables)."""
@@ -80,6 +84,8 @@ def overrides(items) -> dict:
             raise InputError("--set", it, "expected key=value, e.g. --set n_rpm=6500 or --set models.losses=skf")
         k, v = (s.strip() for s in it.split("=", 1))
         val = _value(v)
+        if k in _NAMED and isinstance(val, (int, float)) and not isinstance(val, bool):
+            val = v                    # a catalogue designation that reads as a number: 6308, 51110
         for prefix, table in (("fixed_C.", "T_fixed_C"), ("models.", "models"), ("parameters.", "network_parameters")):
             if k.startswith(prefix):
                 out.setdefault(table, {})[k[len(prefix):]] = val
