@@ -261,5 +261,5 @@ def test_with_validates_like_a_scene_file(kw, field):
 
 
 def test_with_accepts_names_and_tables():
-    s = S004.with_(lubricant={"name": "seed002-mg1"}, bearing="7210")
-    assert s.lubricant.name == "seed002-mg1" and s.bearing.name == "7210"
+    s = S004.with_(lubricant={"name": "iso-vg-68-mineral"}, bearing="7210")
+    assert s.lubricant.name == "iso-vg-68-mineral" and s.bearing.name == "7210"

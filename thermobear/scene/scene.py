@@ -91,6 +91,9 @@ MODEL_FIELDS = {
 _UNCERTAINTY = Field.table("ranges of estimated values: uncertainty.<key> = { range | factor | offset = [lo, hi], "
                            "distribution, source } (thermobear.schema.check_uncertainty)")
 
+#: The supplies that feed an oil (a grease there is refused: its thickener does not flow to the contacts)
+OIL_SUPPLIES = ("oil_bath", "oil_jet", "oil_air")
+
 _SUPPLY_FIELDS = {
     "supply": Field.choice(*SUPPLIES, doc="lubrication method"),
     "flow_L_h": Field.number("L/h", 0.0, 1e5, doc="oil flow through the bearing"),
@@ -581,7 +584,10 @@ def _check_scene(s: Scene, network_changed: bool = True):
 
 
 def _check_added(s: Scene):
-    """Oil level, seals and cage against the supply and the bearing."""
+    """Lubricant, oil level, seals and cage against the supply and the bearing."""
+    if getattr(s.lubricant, "kind", "oil") == "grease" and s.supply in OIL_SUPPLIES:
+        raise InputError("lubricant.name", s.lubricant.name, f"is a grease; supply = {s.supply!r} needs an oil "
+                         "(thermobear list lubricants), or supply = \"grease\"")
     if s.oil_level is not None and s.supply in ("grease", "dry_film"):
         raise InputError("lubricant.oil_level_mm", s.oil_level * 1e3, f"an oil level needs an oil supply "
                          f"(oil_bath, oil_jet or oil_air), not {s.supply}")
