@@ -117,3 +117,32 @@ def test_other_housings_and_oil_air_run(argv, capsys):
     assert r.P_W > 0 and r.steady.residual_K < 1e-3
     if "--Fr-N" in argv:
         assert d["operation"]["Fr_N"] == 1500.0 and d["operation"]["Fa_N"] == 0.0
+
+
+def test_init_help_states_the_load_defaults_init_writes(capsys):
+    """--Fa-N's help said '0.05 C0 for angular contact'; init writes 1.25 Fr tan(alpha0) (the axial reaction of
+    a half load zone): the help now states what init does."""
+    with pytest.raises(SystemExit):
+        main(["init", "--help"])
+    helptext = " ".join(capsys.readouterr().out.split())
+    assert "1.25 Fr tan(alpha0)" in helptext and "0.05 C0 for angular" not in helptext
+    d = tomllib.loads(_init(capsys, "7205B", "--lubrication", "grease"))
+    b = tb.bearing("7205B")
+    assert d["operation"]["Fa_N"] == pytest.approx(1.25 * d["operation"]["Fr_N"] * math.tan(b.alpha0), rel=2e-3)
+    assert d["operation"]["Fr_N"] == pytest.approx(0.05 * b.C0, rel=2e-3)
+
+
+def test_init_and_list_state_a_rating_the_catalogue_lacks(capsys):
+    """The seed 6210 has no C in the catalogue: init wrote 'C nan kN' and list '-', while every run rates it
+    with C from its geometry (ISO 281): both now show that C and say where it comes from."""
+    from thermobear.rating.life import load_ratings
+    C_iso = load_ratings(tb.bearing("6210"))[0]
+    line = next(ln for ln in _init(capsys, "6210", "--lubrication", "grease").splitlines() if ln.startswith("catalog"))
+    assert "nan" not in line and f"C {C_iso / 1e3:.3g} kN" in line and "C ISO 281 from the geometry" in line
+    assert main(["list", "bearings", "--series", "62", "--json"]) == 0
+    row = next(r for r in json.loads(capsys.readouterr().out) if r["designation"] == "6210")
+    assert row["C_kN"] == pytest.approx(C_iso / 1e3) and row["C_from"] == "ISO 281 from the geometry"
+    assert row["C0_kN"] == pytest.approx(23.2) and row["C0_from"] == "stated"
+    assert main(["list", "bearings", "--series", "62"]) == 0
+    text = next(ln for ln in capsys.readouterr().out.splitlines() if ln.startswith("6210 "))
+    assert f"{C_iso / 1e3:7.2f}*" in text

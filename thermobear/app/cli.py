@@ -175,10 +175,13 @@ def build_parser() -> argparse.ArgumentParser:
     it.add_argument("--housing", choices=list(HOUSINGS), default="block", help="housing type (default block)")
     it.add_argument("--speed-rpm", dest="speed_rpm", type=float, metavar="N",
                     help="speed [r/min] (default: half the thermal reference speed, ISO 15312)")
-    it.add_argument("--Fr-N", dest="Fr_N", type=float, metavar="F", help="radial load [N] (default: ISO 15312 "
-                    "reference load, 0.05 C0)")
-    it.add_argument("--Fa-N", dest="Fa_N", type=float, metavar="F", help="axial load [N] (default: 0.05 C0 for "
-                    "angular contact, 0.02 C0 for thrust bearings)")
+    it.add_argument("--Fr-N", dest="Fr_N", type=float, metavar="F", help="radial load [N] (default, with neither "
+                    "load given: ISO 15312's reference load 0.05 C0 of a radial bearing, 0 for a thrust bearing; "
+                    "with --Fa-N alone: 0)")
+    it.add_argument("--Fa-N", dest="Fa_N", type=float, metavar="F", help="axial load [N] (default, with neither "
+                    "load given: 0 for a deep groove bearing, the axial reaction 1.25 Fr tan(alpha0) of an angular "
+                    "contact bearing's half load zone, ISO 15312's 0.02 C0 for a thrust bearing; with --Fr-N alone: "
+                    "0, refused for an angular contact bearing)")
     it.add_argument("--out", metavar="FILE", help="write the scene to FILE (default: print it)")
     it.set_defaults(func=cmd_init)
 

@@ -34,6 +34,7 @@ from thermobear.contact.geometry import BallBearing, bearing
 from thermobear.coupled.speeds import ReferenceSpeed, reference_loads, thermal_reference_speed
 from thermobear.errors import InputError, NoSpeedRoot
 from thermobear.lubrication.lubricant import lubricant, lubricant_names
+from thermobear.rating.life import stated_ratings
 from thermobear.scene import scene_from_dict
 from thermobear.thermal.builders.layout import H_MOUNT_W_M2K, layout
 
@@ -228,8 +229,10 @@ def _check_number(field: str, v, positive: bool):
 def _bearing_rows(brg: BallBearing) -> list:
     est = ", ".join(brg.estimated) if brg.estimated else "none"
     dims = f"{brg.bore * 1e3:g} x {brg.outer_diameter * 1e3:g} x {brg.width * 1e3:g} mm"
+    C, C0, src = stated_ratings(brg)
+    computed = [f"{k} {how}" for k, how in zip(("C", "C0"), src) if how != "stated"]
     geo = (f"Z {brg.Z}, D_w {brg.D * 1e3:.4g} mm, dm {brg.dm * 1e3:.4g} mm, alpha0 {math.degrees(brg.alpha0):.3g} deg, "
-           f"C {brg.C / 1e3 if brg.C else float('nan'):.3g} kN, C0 {brg.C0 / 1e3 if brg.C0 else float('nan'):.3g} kN")
+           f"C {C / 1e3:.3g} kN, C0 {C0 / 1e3:.3g} kN" + (f" ({', '.join(computed)})" if computed else ""))
     return [("catalog", brg.name, f"{brg.kind.replace('_', ' ')}, {dims}; {geo}; estimated: {est} "
              "(thermobear list bearings --series ...); any geometry key overrides, e.g. D_mm = ...")]
 
