@@ -474,7 +474,13 @@ def _bearing_of(sec: dict) -> BallBearing:
         unc = {**{k: v for k, v in unc.items() if k not in over}, **over.get("uncertainty", {})}
         merged = {**table, **over, "uncertainty": unc} if unc else {k: v for k, v in {**table, **over}.items()
                                                                      if k != "uncertainty"}
-        return bearing_from_dict(merged, name=base.name, where="bearing")
+        try:
+            return bearing_from_dict(merged, name=base.name, where="bearing")
+        except InputError as e:              # the catalogue's bearing holds: say what the scene changed
+            changed = [f"{k} = {v!r} (catalogue: {table[k]!r})" if k in table else f"{k} = {v!r}"
+                       for k, v in over.items() if k != "uncertainty" and table.get(k) != v]
+            raise InputError(e.field, e.value, f"{e.expected}; the scene changes {base.name}'s "
+                             + ", ".join(changed)) from None
     return bearing_from_dict(sec, name=sec.get("name", "custom"), where="bearing")
 
 
