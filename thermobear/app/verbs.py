@@ -510,8 +510,11 @@ def cmd_sweep(args):
                          progress=Progress(enabled=not args.quiet), on_row=writer.write)
     except KeyboardInterrupt:
         writer.close()
-        where = ", ".join(writer.paths) if writer.paths else "nowhere (give --csv or --jsonl to keep rows)"
-        print(f"interrupted: kept {writer.count} of {total} rows in {where}", file=sys.stderr)
+        if not writer.count:
+            print(f"interrupted before the first of {total} rows finished: nothing written", file=sys.stderr)
+        else:
+            where = ", ".join(writer.paths) if writer.paths else "nowhere (give --csv or --jsonl to keep rows)"
+            print(f"interrupted: kept {writer.count} of {total} rows in {where}", file=sys.stderr)
         return EXIT_INTERRUPTED
     writer.close()
     wrote(writer.paths)
