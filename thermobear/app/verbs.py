@@ -410,6 +410,7 @@ def cmd_transient(args):
         print_json({"scene": scene.name, "t_s": run.t_s, "T_C": run.T_C, "P_W": run.P_W,
                     "breakdown_W": run.breakdown_W, "schedule": schedule,
                     "final_T_C": {n: float(run.T_C[n][-1]) for n in nodes},
+                    "t90_s": {n: t90_s(run.t_s, run.T_C[n]) for n in nodes},
                     "warnings": [w.as_dict() for w in run.warnings]})
     else:
         print(f"thermobear transient — {scene.name}: {args.t_end:g} s, {len(schedule)} schedule steps")
