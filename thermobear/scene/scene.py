@@ -572,7 +572,7 @@ def _check_scene(s: Scene, network_changed: bool = True):
     if s.supply == "oil_jet" and s.T_C is None and s.network is not None and s.T_oil_in_C is None:
         raise InputError("lubricant.T_in_C", None, "an oil-jet scene solved thermally needs the oil inlet temperature [°C]")
     if s.bearing.dm is not None:
-        validity.check("n_dm", s.n_rpm * s.bearing.dm * 1e3, "operation.n_rpm", warn=False)
+        validity.check("n_dm", s.n_rpm * s.bearing.dm * 1e3, "operation.n_rpm", warn=False, given=s.n_rpm)
     _check_added(s)
     if s.network is None:
         if s.T_fixed_C:
