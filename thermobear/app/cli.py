@@ -139,7 +139,9 @@ def build_parser() -> argparse.ArgumentParser:
     ca = sub.add_parser("calibrate", help="fit uncertain parameters to a rig log (least squares, with uncertainty)")
     _rig_args(ca)
     ca.add_argument("--param", action="append", required=True, metavar="NAME[=START]",
-                    help="parameter to fit: a [thermal.parameters] name, T_ambient_C, mu_boundary, skf.R1, ...")
+                    help="parameter to fit: a machine's builder estimate (builder.R_mount_m2K_W, builder.emissivity, "
+                    "...), a network value (<element or node>.<param>), a [thermal.parameters] name, T_ambient_C, "
+                    "mu_boundary, skf_R1, ... (--param x lists the scene's)")
     ca.add_argument("--max-nfev", type=int, default=60, help="budget of model evaluations (default 60)")
     _common(ca)
     ca.set_defaults(func=cmd_calibrate)
