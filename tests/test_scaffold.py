@@ -146,3 +146,22 @@ def test_init_and_list_state_a_rating_the_catalogue_lacks(capsys):
     assert main(["list", "bearings", "--series", "62"]) == 0
     text = next(ln for ln in capsys.readouterr().out.splitlines() if ln.startswith("6210 "))
     assert f"{C_iso / 1e3:7.2f}*" in text
+
+
+@pytest.mark.parametrize("designation, seals, sides", [("6204-2RS1", "RS1", 2), ("6204-RSH", "RSH", 1),
+                                                       ("6204-2Z", "shield", 2), ("6204 2rs1", "RS1", 2)])
+def test_init_reads_the_closure_suffix_of_a_designation(designation, seals, sides, capsys):
+    """A sealed or shielded bearing by its designation (6204-2RS1 was refused as an unknown catalogue name):
+    the catalogue bearing with its seals, which the run then counts (seal friction, the closed cavity)."""
+    d = tomllib.loads(_init(capsys, designation, "--lubrication", "grease", "--speed-rpm", "3000"))
+    assert d["bearing"]["catalog"] == "6204"
+    assert (d["bearing"]["seals"], d["bearing"]["seal_sides"]) == (seals, sides)
+    r = solve(scene_from_dict(d))
+    assert (r.breakdown_W["seal"] > 0) == (seals != "shield")
+
+
+def test_init_refuses_a_closure_on_a_thrust_bearing_and_unknown_suffixes(capsys):
+    assert main(["init", "51107-2Z", "--lubrication", "grease"]) == 2
+    assert "thrust ball bearing has no seals" in capsys.readouterr().err
+    assert main(["init", "6204-2XX", "--lubrication", "grease"]) == 2
+    assert "unknown catalog name; close: 6204" in capsys.readouterr().err

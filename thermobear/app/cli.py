@@ -171,7 +171,8 @@ def build_parser() -> argparse.ArgumentParser:
     spd.set_defaults(func=cmd_speed)
     it = sub.add_parser("init", help="write a commented scene for a catalogue bearing in a shaft and housing "
                         "(every default named with its source); thermobear run solves it")
-    it.add_argument("bearing", help='catalogue designation, e.g. 6208, "7205 B", 51107 (thermobear list bearings)')
+    it.add_argument("bearing", help='catalogue designation, e.g. 6208, "7205 B", 51107 (thermobear list bearings); '
+                    'a closure suffix sets the seals: 6204-2RS1, 6204-RSH, 6205-2Z')
     it.add_argument("--lubrication", required=True, choices=list(METHODS), help="lubrication method")
     it.add_argument("--oil", metavar="NAME", help="lubricant (default: ISO 15312's reference oil or grease)")
     it.add_argument("--housing", choices=list(HOUSINGS), default="block", help="housing type (default block)")
