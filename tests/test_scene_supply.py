@@ -41,3 +41,9 @@ def test_cli_grease_under_oil_is_bad_input(capsys, argv):
     code = main(argv)
     err = capsys.readouterr().err
     assert code == 2 and err.count("\n") == 1 and err.startswith("error: lubricant.name")
+
+
+@pytest.mark.parametrize("typo, close", [("iso-vg-68-minral", "iso-vg-68-mineral"), ("seed004-mineal", "seed004-mineral")])
+def test_a_typod_lubricant_is_refused_naming_the_closest_names_first(typo, close):
+    with pytest.raises(InputError, match=rf"^lubricant = '{typo}' — unknown name; close: {close}"):
+        tb.load_scene(BATH).with_(lubricant=typo)
