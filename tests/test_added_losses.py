@@ -1,4 +1,5 @@
 """Churning, seals and cage in a scene: keys, the model choice and why, the coupling parts, the solvers, the CLI."""
+import dataclasses
 import json
 from pathlib import Path
 
@@ -28,10 +29,14 @@ def test_model_choice_says_why():
     assert m["seals"][0] == "SKF 2004 RS1 ×1" and m["cage"][0] is False and "ball-centred" in m["cage"][1]
     assert m["drag"][0] is False
     assert choose_models(BATH.with_(models={"losses": "skf"}))["churning"][0] == "skf_2018"
-    assert choose_models(BATH.with_(oil_level_mm=0.0))["churning"] == (False, "oil level 0: no ball reaches the bath")
-    missing = choose_models(BATH.with_(oil_level_mm=None))["churning"]
+    bare = dataclasses.replace(BATH, network=None).with_(T_C=50.0)   # no network: the level alone decides
+    assert choose_models(bare.with_(oil_level_mm=0.0))["churning"] == (False, "oil level 0: no ball reaches the bath")
+    missing = choose_models(bare.with_(oil_level_mm=None))["churning"]
     assert missing[0] is False and "oil_level_mm" in missing[1]
-    no_level = scene_losses(BATH.with_(oil_level_mm=None, T_C=50.0, models={"losses": "skf"}))
+    for level in (0.0, None):           # the bath of a parametric housing needs its level, as in the file
+        with pytest.raises(tb.InputError, match=r"lubricant\.oil_level_mm"):
+            BATH.with_(oil_level_mm=level)
+    no_level = scene_losses(bare.with_(oil_level_mm=None, models={"losses": "skf"}))
     assert no_level.breakdown_W["churning"] == 0.0 and no_level.P_W > 0      # the SKF model runs, without drag
     jet = choose_models(JET)
     assert not jet["churning"][0] and not jet["seals"][0] and not jet["cage"][0]
@@ -76,7 +81,7 @@ def test_inconsistent_keys_are_refused():
 def test_losses_of_the_oil_bath_limits_and_level_trend():
     """Prescribed temperature: churning 0 at level 0, rising with the level; the seal loss is SKF's moment × ω;
     no seal → none; every loss family sums to the total and the heat sources conserve it."""
-    base = BATH.with_(T_C=50.0)
+    base = dataclasses.replace(BATH, network=None).with_(T_C=50.0)   # a parametric bath refuses level 0, as its file
     P = [scene_losses(base.with_(oil_level_mm=h)).breakdown_W["churning"] for h in (0.0, 4.0, 8.0, 20.0, 40.0)]
     assert P[0] == 0.0 and np.all(np.diff(P) > 0)
     r = scene_losses(base)

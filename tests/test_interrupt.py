@@ -105,3 +105,18 @@ def test_a_stopped_transient_returns_what_it_integrated():
     run = tb.transient(s, 3600.0, t_eval=[0.0, 10.0, 100.0, 1000.0, 3600.0], stop=stop)
     assert not run.completed and 0 < run.t_s.size < 5 and run.t_s[-1] < 3600.0
     assert all(np.all(np.isfinite(v)) for v in run.T_C.values()) and np.all(np.isfinite(run.P_W))
+
+
+def test_sweep_interrupted_before_its_first_row_says_nothing_was_written(tmp_path, monkeypatch, capsys):
+    """A Ctrl-C while the sweep still builds its points: exit 130, no file, and the line says so (it said
+    'kept 0 of N rows in out.csv', a file that was never created)."""
+    from thermobear.app import verbs
+    from thermobear.app.cli import main
+
+    def interrupted(*args, **kw):
+        raise KeyboardInterrupt
+    monkeypatch.setattr(verbs, "run_sweep", interrupted)
+    out = tmp_path / "sweep.csv"
+    assert main(["sweep", SCENE, "--n-rpm", "2000:8000:4", "--csv", str(out), "--quiet"]) == 130
+    err = capsys.readouterr().err
+    assert not out.exists() and "interrupted before the first of 4 rows finished: nothing written" in err

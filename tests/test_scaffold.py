@@ -117,3 +117,51 @@ def test_other_housings_and_oil_air_run(argv, capsys):
     assert r.P_W > 0 and r.steady.residual_K < 1e-3
     if "--Fr-N" in argv:
         assert d["operation"]["Fr_N"] == 1500.0 and d["operation"]["Fa_N"] == 0.0
+
+
+def test_init_help_states_the_load_defaults_init_writes(capsys):
+    """--Fa-N's help said '0.05 C0 for angular contact'; init writes 1.25 Fr tan(alpha0) (the axial reaction of
+    a half load zone): the help now states what init does."""
+    with pytest.raises(SystemExit):
+        main(["init", "--help"])
+    helptext = " ".join(capsys.readouterr().out.split())
+    assert "1.25 Fr tan(alpha0)" in helptext and "0.05 C0 for angular" not in helptext
+    d = tomllib.loads(_init(capsys, "7205B", "--lubrication", "grease"))
+    b = tb.bearing("7205B")
+    assert d["operation"]["Fa_N"] == pytest.approx(1.25 * d["operation"]["Fr_N"] * math.tan(b.alpha0), rel=2e-3)
+    assert d["operation"]["Fr_N"] == pytest.approx(0.05 * b.C0, rel=2e-3)
+
+
+def test_init_and_list_state_a_rating_the_catalogue_lacks(capsys):
+    """The seed 6210 has no C in the catalogue: init wrote 'C nan kN' and list '-', while every run rates it
+    with C from its geometry (ISO 281): both now show that C and say where it comes from."""
+    from thermobear.rating.life import load_ratings
+    C_iso = load_ratings(tb.bearing("6210"))[0]
+    line = next(ln for ln in _init(capsys, "6210", "--lubrication", "grease").splitlines() if ln.startswith("catalog"))
+    assert "nan" not in line and f"C {C_iso / 1e3:.3g} kN" in line and "C ISO 281 from the geometry" in line
+    assert main(["list", "bearings", "--series", "62", "--json"]) == 0
+    row = next(r for r in json.loads(capsys.readouterr().out) if r["designation"] == "6210")
+    assert row["C_kN"] == pytest.approx(C_iso / 1e3) and row["C_from"] == "ISO 281 from the geometry"
+    assert row["C0_kN"] == pytest.approx(23.2) and row["C0_from"] == "stated"
+    assert main(["list", "bearings", "--series", "62"]) == 0
+    text = next(ln for ln in capsys.readouterr().out.splitlines() if ln.startswith("6210 "))
+    assert f"{C_iso / 1e3:7.2f}*" in text
+
+
+@pytest.mark.parametrize("designation, seals, sides", [("6204-2RS1", "RS1", 2), ("6204-RSH", "RSH", 1),
+                                                       ("6204-2Z", "shield", 2), ("6204 2rs1", "RS1", 2)])
+def test_init_reads_the_closure_suffix_of_a_designation(designation, seals, sides, capsys):
+    """A sealed or shielded bearing by its designation (6204-2RS1 was refused as an unknown catalogue name):
+    the catalogue bearing with its seals, which the run then counts (seal friction, the closed cavity)."""
+    d = tomllib.loads(_init(capsys, designation, "--lubrication", "grease", "--speed-rpm", "3000"))
+    assert d["bearing"]["catalog"] == "6204"
+    assert (d["bearing"]["seals"], d["bearing"]["seal_sides"]) == (seals, sides)
+    r = solve(scene_from_dict(d))
+    assert (r.breakdown_W["seal"] > 0) == (seals != "shield")
+
+
+def test_init_refuses_a_closure_on_a_thrust_bearing_and_unknown_suffixes(capsys):
+    assert main(["init", "51107-2Z", "--lubrication", "grease"]) == 2
+    assert "thrust ball bearing has no seals" in capsys.readouterr().err
+    assert main(["init", "6204-2XX", "--lubrication", "grease"]) == 2
+    assert "unknown catalog name; close: 6204" in capsys.readouterr().err

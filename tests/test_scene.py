@@ -261,5 +261,12 @@ def test_with_validates_like_a_scene_file(kw, field):
 
 
 def test_with_accepts_names_and_tables():
-    s = S004.with_(lubricant={"name": "seed002-mg1"}, bearing="7210")
-    assert s.lubricant.name == "seed002-mg1" and s.bearing.name == "7210"
+    s = S004.with_(lubricant={"name": "iso-vg-68-mineral"}, bearing="7210")
+    assert s.lubricant.name == "iso-vg-68-mineral" and s.bearing.name == "7210"
+
+
+def test_speed_beyond_the_ndm_limit_is_refused_showing_the_speed_given():
+    """The field is operation.n_rpm: its value is the speed written (it showed n·dm, 4837040.0, as the speed)."""
+    s = load_scene(tb.example_path("block_6208_oil_bath.toml"))
+    with pytest.raises(InputError, match=r"^operation\.n_rpm = 80000(\.0)? — speed n·dm 4\.837e\+06 mm/min must lie in"):
+        s.with_(n_rpm=80000.0)

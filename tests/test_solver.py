@@ -124,7 +124,7 @@ def test_runaway_case_is_named():
     # very high speed, very viscous oil, poor cooling: no equilibrium below the lubricant's limit
     one = tb.scene.scene_from_dict({**{k: v for k, v in S004.raw.items() if k != "rig"}, "thermal": {"network": "one_node", "T_ambient_C": 25.0,
                                     "parameters": {"bearing_to_ambient.G_W_K": 0.05}},
-                                    "lubricant": {"name": "seed002-mg1", "supply": "oil_jet", "flow_L_h": 10.0,
+                                    "lubricant": {"name": "iso-vg-220-mineral", "supply": "oil_jet", "flow_L_h": 10.0,
                                                   "T_in_C": 30.0},
                                     "operation": {"n_rpm": 20000.0, "Fa_N": 2000.0}})
     with pytest.raises(ThermalRunaway) as e:          # iterates beyond the oil's data warn nothing: no answer

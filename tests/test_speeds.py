@@ -129,5 +129,22 @@ def test_din732_of_the_block_scene(block):
 def test_cli_speed_json(capsys, block):
     assert main(["speed", tb.example_path("block_6208_oil_bath.toml"), "--json", "--limit-C", "70"]) == 0
     rep = json.loads(capsys.readouterr().out)
-    assert abs(rep["model"]["T_C"] - 70.0) < 0.01
+    assert abs(rep["model"]["T_C"] - 70.0) < 0.01 and "jump" not in rep["model"]
     assert {"n_rpm", "T_C"} <= set(rep["iso15312"]) and {"n_rpm", "f_n", "T_C"} <= set(rep["din732"])
+
+
+def test_cli_speed_says_when_the_limit_is_jumped_and_prints_the_answers_warnings(capsys, tmp_path):
+    """A greased 6205 of `thermobear init`: its replenishment-starved losses let the rings stay below 70 °C until
+    the coupled model runs away near 5e4 rpm (n·dm 1.9e6, beyond the validated 1e6).  The text names the jump (the
+    answer missed the limit by 3 K) and, as every verb, prints the answer's warnings on stderr (they were kept
+    in the JSON only)."""
+    scene = tmp_path / "g6205.toml"
+    assert main(["init", "6205", "--lubrication", "grease", "--speed-rpm", "10000", "--out", str(scene)]) == 0
+    capsys.readouterr()
+    assert main(["speed", str(scene)]) == 0
+    out, err = capsys.readouterr()
+    assert "the limit is not reached at this speed" in out and "no equilibrium just above it" in out
+    assert "warning: OutsideValidity: operation.n_rpm: speed n·dm" in err
+    assert main(["speed", str(scene), "--json"]) == 0
+    rep = json.loads(capsys.readouterr().out)["model"]
+    assert abs(rep["residual_K"]) > 1.0 and "ThermalRunaway" in rep["jump"]

@@ -84,3 +84,18 @@ def test_bad_inputs():
         SD.stop_time(10.0, 1e-4, 0.5, 0.0)
     with pytest.raises(InputError, match="torque"):
         SD.integrate_spin_down(J, lambda w: -1.0, 10.0, 1.0)
+
+
+def test_spin_down_of_a_scene_whose_model_choice_is_the_film_load_model():
+    """A flooded, radially loaded 6208 lifts balls off the races: the model choice takes the film load model,
+    whose loads are solved one speed at a time — the coast-down tabulates its torque speed by speed (it was
+    refused as 'models.load_model = film', a key the scene never set) and starts from the scene's own torque."""
+    import thermobear as tb
+    from thermobear.coupled import scene_losses
+    from thermobear.models import plan
+    sc = tb.load_scene(tb.example_path("block_6208_oil_bath.toml")).with_(T_C=40.0)
+    models = plan(sc)[0]
+    assert models["load_model"][0] == "film"
+    (run,) = SD.spin_down_runs(sc, 0.01, [3000.0], n_table=24)
+    assert run["T0_Nm"] == pytest.approx(float(scene_losses(sc, models=models).torque_Nm), rel=1e-9)
+    assert np.isfinite(run["t_stop_s"]) and 0.0 < run["n"] < 1.0

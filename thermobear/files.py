@@ -9,6 +9,7 @@ way a file can be unreadable (missing, a folder, not UTF-8, not TOML) is one
 """
 from __future__ import annotations
 
+import difflib
 import hashlib
 import tomllib
 from pathlib import Path
@@ -77,12 +78,21 @@ def names_in(folder: Path) -> list[str]:
 
 
 def lookup(kind: str, sub: str, name: str, what: str) -> dict:
-    """Load ``<kind>/<sub>/<name>.toml`` or raise an InputError listing the known names."""
+    """Load ``<kind>/<sub>/<name>.toml`` or raise an InputError naming the closest known names first, then all.
+
+    >>> try:
+    ...     lookup("materials", "lubricants", "iso-vg-68-minral", "lubricant")
+    ... except InputError as e:
+    ...     print(str(e)[:76])
+    lubricant = 'iso-vg-68-minral' — unknown name; close: iso-vg-68-mineral, iso
+    """
     folder = data_dir(kind) / sub
     path = folder / f"{name}.toml"
     if not path.is_file():
-        known = ", ".join(names_in(folder))
-        raise InputError(what, name, f"unknown name; known: {known}")
+        names = names_in(folder)
+        close = difflib.get_close_matches(str(name), names, n=3, cutoff=0.6)
+        raise InputError(what, name, "unknown name; " + (f"close: {', '.join(close)}; " if close else "")
+                         + f"known: {', '.join(names)}")
     return read_toml(str(path))
 
 

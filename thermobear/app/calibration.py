@@ -27,6 +27,7 @@ from thermobear.lazy import lazy_module
 from thermobear.losses.skf import skf_constants
 from thermobear.scene import Scene
 from thermobear.scene.network import network_spec
+from thermobear.thermal.builders import Machine, build_network, estimates
 
 optimize = lazy_module("scipy.optimize")    # least_squares: loaded by its first use
 
@@ -34,6 +35,7 @@ __all__ = ["calibrate", "Calibration", "parameter_names"]
 
 _SCENE_SCALARS = ("T_ambient_C", "T_oil_in_C", "oil_flow_L_h", "mu_boundary", "mu_full_film")
 _SKF = ("skf_R1", "skf_S1", "skf_mu_EHL")
+_BUILDER = "builder."
 
 
 def _network_numeric_parameters(scene: Scene) -> dict:
@@ -52,16 +54,24 @@ def _network_numeric_parameters(scene: Scene) -> dict:
     return out
 
 
+def _builder_keys(scene: Scene) -> list:
+    """``builder.<key>`` of the estimates a network built from the scene's machine reads (none for a network file)."""
+    if not isinstance(scene.network, Machine):
+        return []
+    return [_BUILDER + k for k in estimates.sampled_keys(scene.network)]
+
+
 def parameter_names(scene: Scene) -> list:
     """Parameters :func:`calibrate` can fit for this scene.
 
-    Network parameters (``[thermal.parameters]`` keys and every numeric
-    ``<element or node>.<parameter>`` of the network), the scene scalars
-    T_ambient_C, T_oil_in_C, oil_flow_L_h, mu_boundary, mu_full_film, and —
-    for scenes on the SKF global model (``[models] losses = "skf"``) — skf_R1,
-    skf_S1, skf_mu_EHL.
+    For a network built from the scene's ``[shaft]`` / ``[housing]``, first the builders' estimates it reads
+    (``builder.R_mount_m2K_W``, ``builder.emissivity``, ``builder.k_air_still_W_mK``, …: the machine's own
+    unknowns, ``materials/network_builders.toml``, the network built again with the value); then network
+    parameters (``[thermal.parameters]`` keys and every numeric ``<element or node>.<parameter>`` of the
+    network), the scene scalars T_ambient_C, T_oil_in_C, oil_flow_L_h, mu_boundary, mu_full_film, and —
+    for scenes on the SKF global model (``[models] losses = "skf"``) — skf_R1, skf_S1, skf_mu_EHL.
     """
-    names = list(scene.network_parameters)
+    names = _builder_keys(scene) + list(scene.network_parameters)
     names += [k for k in _network_numeric_parameters(scene) if k not in names]
     names += list(_SCENE_SCALARS)
     if scene.models.get("losses") == "skf":
@@ -82,6 +92,8 @@ def _parse_param(scene: Scene, spec: str):
             x0 = float(start)
         except ValueError:
             raise InputError(f"--param {name}", start, "start value must be a number") from None
+    elif name.startswith(_BUILDER):
+        x0 = estimates.machine_value(scene.network, name[len(_BUILDER):])
     elif name in scene.network_parameters:
         x0 = scene.network_parameters[name]
     elif "." in name:
@@ -104,9 +116,13 @@ def _skf_table(scene):
     return skf_constants(b.kind, b.series)
 
 
-def _apply(scene: Scene, values: dict) -> Scene:
-    net = {k: v for k, v in values.items() if k in scene.network_parameters or "." in k}
+def _apply(scene: Scene, values: dict, cells: dict | None = None) -> Scene:
+    built = {k[len(_BUILDER):]: v for k, v in values.items() if k.startswith(_BUILDER)}
+    net = {k: v for k, v in values.items()
+           if (k in scene.network_parameters or "." in k) and not k.startswith(_BUILDER)}
     sc = scene.with_(network_parameters=net) if net else scene
+    if built:                    # the machine with the values, cut into the nominal's cells (its nodes kept)
+        sc = dataclasses.replace(sc, network=estimates.drawn(sc.network, built, cells))
     skf = {k: v for k, v in values.items() if k in _SKF}
     if skf:
         sc = sc.with_(models=skf)
@@ -227,10 +243,12 @@ def calibrate(scene: Scene, log: RigLog, params: list, mapping: dict, *, T0_C=No
             weights["torque_Nm"] = 100.0 / max(float(np.nanmean(np.abs(tq))), 1e-300)
     fit_channels = [c for c, n in mapping.items() if not special_target(n)]
     nfev = [0]
+    cells = ({k: g.n for k, g in build_network(scene.network).segments.items()}
+             if any(n.startswith(_BUILDER) for n in names) else None)
 
     def resid(x):
         nfev[0] += 1
-        sim = simulate_log(_apply(scene, values_of(x)), log, mapping, T0_C=T0_C)
+        sim = simulate_log(_apply(scene, values_of(x), cells), log, mapping, T0_C=T0_C)
         chans = fit_channels + (["torque_Nm"] if "torque_Nm" in weights else [])
         r = []
         for c in chans:
@@ -266,7 +284,7 @@ def calibrate(scene: Scene, log: RigLog, params: list, mapping: dict, *, T0_C=No
         scale = np.array([vals[n] if lg else sc for n, lg, sc in zip(names, logsp, lin)])
         cov = cov_x * np.outer(scale, scale)
         std = {n: float(np.sqrt(cov[i, i])) for i, n in enumerate(names)}
-    cal_scene = _apply(scene, vals)
+    cal_scene = _apply(scene, vals, cells)
     comp = compare(cal_scene, log, mapping, T0_C=T0_C)
     return Calibration(values=vals, std=std, start=dict(zip(names, x0.tolist())), cov=cov, rms_residual=rms,
                        dof=dof, nfev=nfev[0], comparison=comp, scene=cal_scene, message=msg)

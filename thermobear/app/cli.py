@@ -139,7 +139,9 @@ def build_parser() -> argparse.ArgumentParser:
     ca = sub.add_parser("calibrate", help="fit uncertain parameters to a rig log (least squares, with uncertainty)")
     _rig_args(ca)
     ca.add_argument("--param", action="append", required=True, metavar="NAME[=START]",
-                    help="parameter to fit: a [thermal.parameters] name, T_ambient_C, mu_boundary, skf.R1, ...")
+                    help="parameter to fit: a machine's builder estimate (builder.R_mount_m2K_W, builder.emissivity, "
+                    "...), a network value (<element or node>.<param>), a [thermal.parameters] name, T_ambient_C, "
+                    "mu_boundary, skf_R1, ... (--param x lists the scene's)")
     ca.add_argument("--max-nfev", type=int, default=60, help="budget of model evaluations (default 60)")
     _common(ca)
     ca.set_defaults(func=cmd_calibrate)
@@ -169,16 +171,20 @@ def build_parser() -> argparse.ArgumentParser:
     spd.set_defaults(func=cmd_speed)
     it = sub.add_parser("init", help="write a commented scene for a catalogue bearing in a shaft and housing "
                         "(every default named with its source); thermobear run solves it")
-    it.add_argument("bearing", help='catalogue designation, e.g. 6208, "7205 B", 51107 (thermobear list bearings)')
+    it.add_argument("bearing", help='catalogue designation, e.g. 6208, "7205 B", 51107 (thermobear list bearings); '
+                    'a closure suffix sets the seals: 6204-2RS1, 6204-RSH, 6205-2Z')
     it.add_argument("--lubrication", required=True, choices=list(METHODS), help="lubrication method")
     it.add_argument("--oil", metavar="NAME", help="lubricant (default: ISO 15312's reference oil or grease)")
     it.add_argument("--housing", choices=list(HOUSINGS), default="block", help="housing type (default block)")
     it.add_argument("--speed-rpm", dest="speed_rpm", type=float, metavar="N",
                     help="speed [r/min] (default: half the thermal reference speed, ISO 15312)")
-    it.add_argument("--Fr-N", dest="Fr_N", type=float, metavar="F", help="radial load [N] (default: ISO 15312 "
-                    "reference load, 0.05 C0)")
-    it.add_argument("--Fa-N", dest="Fa_N", type=float, metavar="F", help="axial load [N] (default: 0.05 C0 for "
-                    "angular contact, 0.02 C0 for thrust bearings)")
+    it.add_argument("--Fr-N", dest="Fr_N", type=float, metavar="F", help="radial load [N] (default, with neither "
+                    "load given: ISO 15312's reference load 0.05 C0 of a radial bearing, 0 for a thrust bearing; "
+                    "with --Fa-N alone: 0)")
+    it.add_argument("--Fa-N", dest="Fa_N", type=float, metavar="F", help="axial load [N] (default, with neither "
+                    "load given: 0 for a deep groove bearing, the axial reaction 1.25 Fr tan(alpha0) of an angular "
+                    "contact bearing's half load zone, ISO 15312's 0.02 C0 for a thrust bearing; with --Fr-N alone: "
+                    "0, refused for an angular contact bearing)")
     it.add_argument("--out", metavar="FILE", help="write the scene to FILE (default: print it)")
     it.set_defaults(func=cmd_init)
 

@@ -37,8 +37,10 @@ __all__ = ["plot_result", "plot_ball_loads", "plot_load_distribution", "plot_reg
 
 REGIME_COLORS = {"IVR": "tab:blue", "IVE": "tab:cyan", "PVR": "tab:orange", "EHL": "tab:red",
                  "unloaded": "lightgrey", "none": "lightgrey"}
+#: one colour per loss family of the breakdowns (local and SKF): churning, seal and cage were all grey
 FAMILY_COLORS = {"rolling": "tab:blue", "sliding": "tab:orange", "pivoting": "tab:green",
-                 "hysteresis": "tab:purple", "drag": "tab:brown"}
+                 "hysteresis": "tab:purple", "drag": "tab:brown", "churning": "tab:olive", "seal": "tab:pink",
+                 "cage": "tab:cyan"}
 #: machine part of a node (first matching prefix) → colour map of its family in heat-up plots
 NODE_FAMILIES = (("inner", "Reds"), ("shaft", "Oranges"), ("ball", "Purples"), ("cage", "Purples"),
                  ("seal", "Greys"), ("outer", "Blues"), ("housing", "Greens"), ("oil", "YlOrBr"),

@@ -28,12 +28,14 @@ from __future__ import annotations
 
 import difflib
 import math
+import re
 
 from thermobear import __version__
 from thermobear.contact.geometry import BallBearing, bearing
 from thermobear.coupled.speeds import ReferenceSpeed, reference_loads, thermal_reference_speed
 from thermobear.errors import InputError, NoSpeedRoot
 from thermobear.lubrication.lubricant import lubricant, lubricant_names
+from thermobear.rating.life import stated_ratings
 from thermobear.scene import scene_from_dict
 from thermobear.thermal.builders.layout import H_MOUNT_W_M2K, layout
 
@@ -54,9 +56,34 @@ DEFAULT_GREASE = "grease-lithium-mineral-vg100-nlgi2"
 
 
 # --------------------------------------------------------------------------- choices
-def _bearing(name: str) -> BallBearing:
-    """The catalogue bearing (InputError with close names when unknown)."""
-    return bearing(name)
+#: a designation's closure suffix (SKF: -2RS1 two contact seals, -RSH one, -2Z two shields, -RZ a non-contact seal)
+_CLOSURE = re.compile(r"^(?P<base>.+?)[- ]?(?P<two>2?)(?P<kind>RS1|RSH|RSL|RZ|Z)$", re.IGNORECASE)
+
+
+def _bearing(name: str) -> tuple[BallBearing, list]:
+    """The catalogue bearing of a designation, with the ``[bearing]`` rows of its closure suffix
+    (``6204-2RS1``: two RS1 contact seals; ``6204-Z``: one shield); InputError with close names when unknown."""
+    try:
+        return bearing(name), []
+    except InputError as exc:
+        m = _CLOSURE.match(str(name).strip())
+        if m is None:
+            raise
+        try:
+            brg = bearing(m["base"])
+        except InputError:
+            raise exc from None
+    if brg.kind == "thrust":
+        raise InputError("bearing", name, f"a thrust ball bearing has no seals or shields: {brg.name} without "
+                                          f"-{m['two']}{m['kind'].upper()}")
+    kind, sides = m["kind"].upper(), 2 if m["two"] else 1
+    seals = "shield" if kind in ("Z", "RZ") else kind
+    what = {"shield": "non-contact, the cavity closed; no friction in SKF 2004's seal model",
+            "RSL": "low-friction contact seal (SKF 2004 seal model)", "RSH": "contact seal (SKF 2004 seal model)",
+            "RS1": "contact seal (SKF 2004 seal model)"}[seals]
+    return brg, [("seals", seals, f"from the designation's -{m['two']}{kind}: {what}"),
+                 ("seal_sides", sides, f"{'two' if sides == 2 else 'one'} (the designation's "
+                                       f"{'2' if sides == 2 else 'single '}{kind})")]
 
 
 def _lubricant(name: str | None, supply: str, brg: BallBearing) -> tuple[str, str]:
@@ -225,11 +252,21 @@ def _check_number(field: str, v, positive: bool):
         raise InputError(field, v, "must be a finite number " + ("> 0" if positive else ">= 0"))
 
 
+def _suffix(closure: list) -> str:
+    """The closure suffix of a designation from its rows ("-2RS1", "-Z"; "" without seals)."""
+    if not closure:
+        return ""
+    seals, sides = closure[0][1], closure[1][1]
+    return f"-{'2' if sides == 2 else ''}{'Z' if seals == 'shield' else seals}"
+
+
 def _bearing_rows(brg: BallBearing) -> list:
     est = ", ".join(brg.estimated) if brg.estimated else "none"
     dims = f"{brg.bore * 1e3:g} x {brg.outer_diameter * 1e3:g} x {brg.width * 1e3:g} mm"
+    C, C0, src = stated_ratings(brg)
+    computed = [f"{k} {how}" for k, how in zip(("C", "C0"), src) if how != "stated"]
     geo = (f"Z {brg.Z}, D_w {brg.D * 1e3:.4g} mm, dm {brg.dm * 1e3:.4g} mm, alpha0 {math.degrees(brg.alpha0):.3g} deg, "
-           f"C {brg.C / 1e3 if brg.C else float('nan'):.3g} kN, C0 {brg.C0 / 1e3 if brg.C0 else float('nan'):.3g} kN")
+           f"C {C / 1e3:.3g} kN, C0 {C0 / 1e3:.3g} kN" + (f" ({', '.join(computed)})" if computed else ""))
     return [("catalog", brg.name, f"{brg.kind.replace('_', ' ')}, {dims}; {geo}; estimated: {est} "
              "(thermobear list bearings --series ...); any geometry key overrides, e.g. D_mm = ...")]
 
@@ -265,15 +302,15 @@ def scaffold(name: str, lubrication: str, *, oil: str | None = None, housing: st
     _check_number("--speed-rpm", n_rpm, True)
     _check_number("--Fr-N", Fr_N, False)
     _check_number("--Fa-N", Fa_N, False)
-    brg = _bearing(name)
+    brg, closure = _bearing(name)
     supply = METHODS[lubrication]
     oil, oil_src = _lubricant(oil, supply, brg)
     ref = _reference_speed(brg) if (n_rpm is None or supply == "oil_jet") else None
-    rows = {"bearing": _bearing_rows(brg), "lubricant": _lubrication(brg, supply, oil, oil_src, ref),
+    rows = {"bearing": _bearing_rows(brg) + closure, "lubricant": _lubrication(brg, supply, oil, oil_src, ref),
             "operation": _operation(brg, ref, n_rpm, Fr_N, Fa_N),
             "thermal": [("T_ambient_C", T_AMBIENT_REF_C, "°C: ISO 15312 reference ambient; network = \"parametric\" "
                          "is implied by [shaft] / [housing]")]}
-    title = f"{brg.name}-{lubrication}-{housing}"
+    title = f"{brg.name}{_suffix(closure)}-{lubrication}-{housing}"
     rows["scene"] = [("name", title, None),
                      ("description", f"{brg.name} on a steel shaft in a {housing} housing, {lubrication}", None),
                      ("source", f"thermobear init (thermobear {__version__}): catalogue, ISO 15312 reference "
@@ -285,13 +322,13 @@ def scaffold(name: str, lubrication: str, *, oil: str | None = None, housing: st
     rows["shaft"], rows["housing"] = _shaft_rows(sc.network, lay), _housing_rows(sc.network, lay, housing)
     d = {k: {key: v for key, v, _ in r} for k, r in rows.items()}
     scene_from_dict(d)                                       # the scene as written is a valid scene
-    lines = [f"# A {brg.name} in a {housing} housing, {lubrication}: written by "
+    lines = [f"# A {brg.name}{_suffix(closure)} in a {housing} housing, {lubrication}: written by "
              f"`{command or 'thermobear init ' + brg.name + ' --lubrication ' + lubrication}`.",
              "# Every key is used; units are in the key names; each comment says where the value comes from.",
              "# Solve it: thermobear run THIS_FILE  (--json; --set models.losses=skf for the SKF 2004 model).",
              "# The network is built from [shaft] and [housing] (examples/README.md, \"Machine keys\")."]
-    notes = {"bearing": "seals = \"RS1\" (none | shield | RSL | RSH | RS1) and cage = \"outer_ring\" add seal and "
-                        "cage losses",
+    notes = {"bearing": ("" if closure else "seals = \"RS1\" (none | shield | RSL | RSH | RS1) and ")
+             + "cage = \"outer_ring\" add" + ("" if closure else " seal and") + " cage losses",
              "operation": "T_C = 70.0 would prescribe the contacts' temperature (no thermal network)"}
     for sec in ("scene", "bearing", "lubricant", "operation", "thermal", "shaft", "housing"):
         _section(sec, rows[sec], lines, notes.get(sec))

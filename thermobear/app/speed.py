@@ -8,14 +8,18 @@ import warnings
 
 from thermobear.app.output import print_json
 from thermobear.app.verbs import load_scene_with
+from thermobear.coupled.limits import emit
 from thermobear.coupled.speeds import din732_safe_speed, hottest_ring_C, thermal_reference_speed, thermally_safe_speed
-from thermobear.coupled.steady import steady_states
+from thermobear.coupled.steady import steady_state, steady_states
 from thermobear.errors import InputError, NoSpeedRoot, OutsideValidity, SolverError
 from thermobear.scene import Scene
 
-__all__ = ["speed_report", "cmd_speed", "EXIT_SOLVER"]
+__all__ = ["speed_report", "cmd_speed", "EXIT_SOLVER", "JUMP_K"]
 
 EXIT_SOLVER = 3
+#: |limit − temperature| at the model's root beyond which the root is a jump across the limit [K] (the search
+#: stops within 1 rpm: a continuous rise misses the limit by hundredths of a kelvin there)
+JUMP_K = 0.1
 
 
 def _at_speeds(scene: Scene, speeds: dict, node) -> dict:
@@ -33,15 +37,36 @@ def _at_speeds(scene: Scene, speeds: dict, node) -> dict:
     return out
 
 
+def _above(scene: Scene, n_rpm: float, node) -> str:
+    """What lies just above a speed at which the temperature jumps past its limit (2 rpm up: the search's
+    tolerance is 1 rpm)."""
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", OutsideValidity)
+            st = steady_state(scene.with_(n_rpm=n_rpm + 2.0))
+    except (SolverError, InputError) as exc:
+        return f"no equilibrium just above it ({type(exc).__name__}: the losses outgrow the cooling)"
+    return f"{hottest_ring_C(st, node):.2f} °C just above it (a step of the model)"
+
+
 def speed_report(scene: Scene, *, limit_C: float = 70.0, node: str | None = None) -> dict:
     """The three speeds of a scene as plain data (what ``thermobear speed --json`` prints).
 
-    Each part that has no answer carries ``error`` (its one-line reason) instead of its numbers.
+    Each part that has no answer carries ``error`` (its one-line reason) instead of its numbers.  A model
+    speed at which the temperature jumps past the limit (|residual| > :data:`JUMP_K`: a thermal runaway
+    sets in before the limit is reached) carries ``jump``, what lies just above it.
     """
+    return _report(scene, limit_C, node)[0]
+
+
+def _report(scene: Scene, limit_C: float, node) -> tuple[dict, list]:
+    """:func:`speed_report` and the warnings of its answers (OutsideValidity objects)."""
+    ws: list = []
     rep = {"scene": scene.name, "bearing": scene.bearing.name, "limit_C": limit_C,
            "node": node or "hottest ring", "T_ambient_C": scene.T_ambient_C}
     try:
         r = thermal_reference_speed(scene.bearing)
+        ws += r.warnings
         rep["iso15312"] = {"n_rpm": r.n_rpm, "P_W": r.P_W, "Phi_r_W": r.Phi_r_W, "A_r_mm2": r.A_r_m2 * 1e6,
                            "q_r_W_m2": r.q_r_W_m2, "load_N": r.load_N, "lubricant": r.lubricant,
                            "residual_W": r.residual_W, "iterations": r.iterations,
@@ -50,9 +75,12 @@ def speed_report(scene: Scene, *, limit_C: float = 70.0, node: str | None = None
         rep["iso15312"] = {"error": " ".join(str(exc).split())}
     try:
         s = thermally_safe_speed(scene, limit_C=limit_C, node=node)
+        ws += s.warnings
         rep["model"] = {"n_rpm": s.n_rpm, "T_C": s.T_C, "residual_K": s.residual_K, "iterations": s.iterations,
                         "bracket_rpm": list(s.bracket_rpm), "monotonic": s.monotonic, "P_W": s.steady.P_W,
                         "warnings": [w.as_dict() for w in s.warnings]}
+        if abs(s.residual_K) > JUMP_K:
+            rep["model"]["jump"] = _above(scene, s.n_rpm, node)
     except NoSpeedRoot as exc:
         rep["model"] = {"error": " ".join(str(exc).split())}
     try:
@@ -65,7 +93,7 @@ def speed_report(scene: Scene, *, limit_C: float = 70.0, node: str | None = None
     temps = _at_speeds(scene, {"iso15312": rep["iso15312"].get("n_rpm"), "din732": rep["din732"].get("n_rpm")}, node)
     for k, T in temps.items():
         rep[k]["T_C"] = T
-    return rep
+    return rep, ws
 
 
 def _line(label: str, part: dict, what: str) -> str:
@@ -93,6 +121,9 @@ def summary(rep: dict) -> str:
         lines.append(f"    model: residual {mod['residual_K']:.1e} K, {mod['iterations']} iterations, power "
                      f"{mod['P_W']:.2f} W" + ("" if mod["monotonic"] else ", temperature not monotonic in speed "
                                                 "below the bracket (first crossing taken)"))
+        if "jump" in mod:
+            lines.append(f"    model: the limit is not reached at this speed — {node} {mod['T_C']:.2f} °C here, "
+                         f"{mod['jump']}: the speed bounds the equilibria, not the limit temperature")
     if "error" not in din:
         lines.append(f"    DIN 732: f_n = {din['f_n']:.3f} × n_θr {din['n_theta_r_rpm']:.0f} rpm (ISO 15312's "
                      f"equations); K_L {din['K_L']:.3f}, K_P {din['K_P']:.3f}; heat dissipated {din['Phi_W']:.2f} W")
@@ -100,7 +131,8 @@ def summary(rep: dict) -> str:
 
 
 def cmd_speed(args):
-    rep = speed_report(load_scene_with(args.scene, args.set), limit_C=args.limit_C, node=args.node)
+    rep, ws = _report(load_scene_with(args.scene, args.set), args.limit_C, args.node)
+    emit(ws)                                   # one line each on stderr, as every verb's answers
     if args.json:
         print_json(rep)
     else:

@@ -371,6 +371,15 @@ def fit_power_law(t, omega, J, *, omega0=None, n0=0.5, max_nfev=200, tol=1e-12):
                        iterations=int(res.nfev), method="least_squares", cov=cov[:2, :2])
 
 
+def _torque_table(scene, models, n_rpm) -> np.ndarray:
+    """The scene's friction torque [N m] at the speeds ``n_rpm`` [rpm] with ``models``: one vectorised
+    evaluation, or one per speed when the model choice took the film load model (its loads are solved at
+    one speed per call: the films of each speed carry their share)."""
+    if models["load_model"][0] == "film":
+        return np.array([float(scene_losses(scene.with_(n_rpm=float(n)), models=models).torque_Nm) for n in n_rpm])
+    return np.asarray(scene_losses(scene, models=models, n_rpm=n_rpm).torque_Nm, float)
+
+
 def spin_down_runs(scene, J, rpms, *, n_table: int = 80) -> list:
     r"""Coast-downs of a scene's rotor from each initial speed, fitted as seed 001 does.
 
@@ -397,7 +406,7 @@ def spin_down_runs(scene, J, rpms, *, n_table: int = 80) -> list:
         models = plan(sc)[0]
         w0 = rpm * np.pi / 30.0
         wg = w0 * np.logspace(-5, 0, n_table)
-        Tg = np.asarray(scene_losses(sc, models=models, n_rpm=wg * 30.0 / np.pi).torque_Nm, float)
+        Tg = _torque_table(sc, models, wg * 30.0 / np.pi)
         if np.any(~np.isfinite(Tg)) or np.any(Tg <= 0):
             raise InputError("spin-down", rpm, "the model torque must be > 0 at every speed below the initial one")
         lw, lT = np.log(wg), np.log(Tg)

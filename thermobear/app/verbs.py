@@ -34,6 +34,7 @@ from thermobear.losses.skf import SKF_BREAKDOWN_KEYS
 from thermobear.lubrication.lubricant import lubricant_names
 from thermobear.coupled.ratings import check_static_safety
 from thermobear.models import moments, plan
+from thermobear.rating.life import stated_ratings
 from thermobear.scene import load_scene
 from thermobear.scene.network import network_nodes
 from thermobear.validity import T_LUBRICANT_REFUSE_C
@@ -71,6 +72,10 @@ def _value(text: str):
         return text.strip()
 
 
+#: ``--set`` keys whose value is a name (a catalogue designation, a lubricant), never a number
+_NAMED = ("bearing", "lubricant")
+
+
 def overrides(items) -> dict:
     """``--set key=value`` items → :meth:`Scene.with_` keyword arguments (``models.<key>``,
     ``fixed_C.<node>``, ``parameters.<name>`` go into their tables)."""
@@ -80,6 +85,8 @@ def overrides(items) -> dict:
             raise InputError("--set", it, "expected key=value, e.g. --set n_rpm=6500 or --set models.losses=skf")
         k, v = (s.strip() for s in it.split("=", 1))
         val = _value(v)
+        if k in _NAMED and isinstance(val, (int, float)) and not isinstance(val, bool):
+            val = v                    # a catalogue designation that reads as a number: 6308, 51110
         for prefix, table in (("fixed_C.", "T_fixed_C"), ("models.", "models"), ("parameters.", "network_parameters")):
             if k.startswith(prefix):
                 out.setdefault(table, {})[k[len(prefix):]] = val
@@ -258,26 +265,32 @@ def cmd_init(args):
 
 def bearing_rows(series: str) -> list:
     """One row per catalogue bearing of a series: designation, boundary dimensions [mm], Z, D_w [mm],
-    alpha0 [deg], C and C0 [kN], the estimated values."""
+    alpha0 [deg], C and C0 [kN] (the catalogue's; one it lacks from the geometry, ``C_from``/``C0_from``
+    saying which), the estimated values."""
     rows = []
     for name in bearing_names(series=series):
         b = bearing(name)
+        C, C0, (C_from, C0_from) = stated_ratings(b)
         rows.append({"designation": name, "kind": b.kind, "d_mm": round(b.bore * 1e3, 6),
                      "D_mm": round(b.outer_diameter * 1e3, 6), "B_mm": round(b.width * 1e3, 6), "Z": b.Z,
                      "Dw_mm": round(b.D * 1e3, 6), "alpha0_deg": round(float(np.rad2deg(b.alpha0)), 6),
-                     "C_kN": None if b.C is None else b.C / 1e3, "C0_kN": None if b.C0 is None else b.C0 / 1e3,
+                     "C_kN": C / 1e3, "C0_kN": C0 / 1e3, "C_from": C_from, "C0_from": C0_from,
                      "estimated": list(b.estimated)})
     return rows
 
 
 def _print_bearing_rows(series, rows):
-    print(f"series {series}: {len(rows)} bearings (alpha0 of a deep groove bearing: its free contact angle from the "
-          "mid clearance; C, C0 by ISO 281 / ISO 76 from the geometry)")
+    alpha0 = {"deep_groove": "alpha0 of a deep groove bearing: its free contact angle from the mid clearance; ",
+              "angular_contact": "alpha0: the nominal contact angle (C 15°, E 25°, B 40°); ",
+              "thrust": ""}.get(rows[0]["kind"] if rows else "", "")
+    print(f"series {series}: {len(rows)} bearings ({alpha0}C, C0 from the catalogue, whose generated series compute "
+          "them by ISO 281 / ISO 76 from the estimated geometry; * computed here, not in the catalogue)")
     print(f"{'designation':12s} {'d x D x B [mm]':>18s} {'Z':>3s} {'D_w [mm]':>9s} {'alpha0':>7s} {'C [kN]':>8s} "
           f"{'C0 [kN]':>8s}  estimated")
     for r in rows:
         dims = f"{r['d_mm']:g} x {r['D_mm']:g} x {r['B_mm']:g}"
-        C, C0 = (f"{v:8.2f}" if v is not None else f"{'-':>8s}" for v in (r["C_kN"], r["C0_kN"]))
+        C, C0 = (f"{v:7.2f}{' ' if how == 'stated' else '*'}" for v, how in ((r["C_kN"], r["C_from"]),
+                                                                           (r["C0_kN"], r["C0_from"])))
         print(f"{r['designation']:12s} {dims:>18s} {r['Z']:3d} {r['Dw_mm']:9.4f} {r['alpha0_deg']:7.2f} {C} {C0}  "
               f"{', '.join(r['estimated']) or '-'}")
 
@@ -397,6 +410,7 @@ def cmd_transient(args):
         print_json({"scene": scene.name, "t_s": run.t_s, "T_C": run.T_C, "P_W": run.P_W,
                     "breakdown_W": run.breakdown_W, "schedule": schedule,
                     "final_T_C": {n: float(run.T_C[n][-1]) for n in nodes},
+                    "t90_s": {n: t90_s(run.t_s, run.T_C[n]) for n in nodes},
                     "warnings": [w.as_dict() for w in run.warnings]})
     else:
         print(f"thermobear transient — {scene.name}: {args.t_end:g} s, {len(schedule)} schedule steps")
@@ -497,8 +511,11 @@ def cmd_sweep(args):
                          progress=Progress(enabled=not args.quiet), on_row=writer.write)
     except KeyboardInterrupt:
         writer.close()
-        where = ", ".join(writer.paths) if writer.paths else "nowhere (give --csv or --jsonl to keep rows)"
-        print(f"interrupted: kept {writer.count} of {total} rows in {where}", file=sys.stderr)
+        if not writer.count:
+            print(f"interrupted before the first of {total} rows finished: nothing written", file=sys.stderr)
+        else:
+            where = ", ".join(writer.paths) if writer.paths else "nowhere (give --csv or --jsonl to keep rows)"
+            print(f"interrupted: kept {writer.count} of {total} rows in {where}", file=sys.stderr)
         return EXIT_INTERRUPTED
     writer.close()
     wrote(writer.paths)

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import difflib
 import numbers
+import re
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -168,11 +169,11 @@ class BallBearing:
         object.__setattr__(self, "Pd", float(Pd))
         object.__setattr__(self, "Z", int(self.Z))
         if self.bore is not None and not (0 < self.bore < self.dm - self.D):
-            raise InputError(f"{p}.bore", self.bore, f"bore must lie in (0, dm − D = {self.dm - self.D:.6g}) [m] "
+            raise InputError(f"{p}.bore", self.bore, f"bore must lie in (0, dm − D = {self.dm - self.D:.6g} m) "
                              "(the inner ring needs a wall under the raceway)")
         if self.outer_diameter is not None and not (self.outer_diameter > self.dm + self.D):
             raise InputError(f"{p}.outer_diameter", self.outer_diameter,
-                             f"outer diameter must exceed dm + D = {self.dm + self.D:.6g} [m]")
+                             f"outer diameter must exceed dm + D = {self.dm + self.D:.6g} m")
         if self.width is not None and not (self.width > 0):
             raise InputError(f"{p}.width", self.width, "width must be > 0 [m]")
         if self.C0 is not None and not (self.C0 > 0):
@@ -311,7 +312,8 @@ FIELDS = {
     "Z": Field.integer("-", 1, 200, doc="number of balls", required=True),
     "fi": Field.number("-", doc="inner osculation r/D", required=True),
     "fo": Field.number("-", doc="outer osculation r/D", required=True),
-    "Pd_mm": Field.number("mm", -10.0, 10.0, doc="diametral clearance (negative: preload)"),
+    "Pd_mm": Field.number("mm", 0.0, 10.0, doc="diametral clearance (>= 0; a preload arises from the fits and "
+                          "temperatures: shaft_fit, housing_fit)"),
     "alpha0_deg": Field.number("deg", 0.0, 90.0, doc="free contact angle"),
     "kind": Field.choice(*KINDS, doc="bearing type"),
     "bore_mm": Field.number("mm", 0.0, 5000.0, lo_open=True, doc="bore diameter"),
@@ -439,7 +441,7 @@ def _unknown_message(name, cat) -> str:
     seeds = sorted(read_toml(str(data_dir("materials") / "bearings.toml")))
     hint = f"close: {', '.join(close)}; " if close else ""
     return (f"unknown catalog name; {hint}seed bearings: {', '.join(seeds)}; series: "
-            f"{', '.join(bearing_series())} (list them with bearing_names(series=...))")
+            f"{', '.join(bearing_series())} (thermobear list bearings --series S; in Python bearing_names(series=S))")
 
 
 def radial_clearance(bore, group: str = "CN") -> tuple[float, float]:
@@ -462,8 +464,8 @@ def radial_clearance(bore, group: str = "CN") -> tuple[float, float]:
     for lo_mm, hi_mm, (cmin, cmax) in zip(tab["bore_over_mm"], tab["bore_incl_mm"], tab[f"{group}_um"]):
         if lo_mm < d_mm <= hi_mm + 1e-9:
             return cmin * 1e-6, cmax * 1e-6
-    raise InputError("bore", bore, f"ISO 5753-1 clearance table holds bores over {tab['bore_over_mm'][0]} "
-                     f"up to {tab['bore_incl_mm'][-1]} mm [m]")
+    raise InputError("bore", bore, f"ISO 5753-1's clearance table holds bores over {tab['bore_over_mm'][0]:g} mm up to "
+                     f"{tab['bore_incl_mm'][-1]:g} mm [m]")
 
 
 def bearing_from_dict(d: dict, name: str = "custom", where: str = "bearing") -> BallBearing:
@@ -481,11 +483,40 @@ def bearing_from_dict(d: dict, name: str = "custom", where: str = "bearing") -> 
         if mk in t:
             kw[mk] = material(t[mk])
     kind = t.get("kind", "deep_groove")
-    if t.get("clearance_group") is not None:
-        kw["clearance_group"] = _clearance(kw, t["clearance_group"], kind, where)
-    return BallBearing(Z=t["Z"], fi=t["fi"], fo=t["fo"], kind=kind, name=t.get("name", name), series=t.get("series"),
-                       C0=t["C0_kN"] * 1e3 if "C0_kN" in t else None, C=t["C_kN"] * 1e3 if "C_kN" in t else None,
-                       estimated=tuple(t.get("estimated", ())), uncertainty=unc, **kw)
+    try:
+        if t.get("clearance_group") is not None:
+            kw["clearance_group"] = _clearance(kw, t["clearance_group"], kind, where)
+        return BallBearing(Z=t["Z"], fi=t["fi"], fo=t["fo"], kind=kind, name=t.get("name", name),
+                           series=t.get("series"), C0=t["C0_kN"] * 1e3 if "C0_kN" in t else None,
+                           C=t["C_kN"] * 1e3 if "C_kN" in t else None, estimated=tuple(t.get("estimated", ())),
+                           uncertainty=unc, **kw)
+    except InputError as e:
+        raise in_table_units(e, where) from None
+
+
+#: BallBearing attribute → (key of a bearing table, factor from SI to the key's unit)
+_TABLE_KEYS = {"D": ("D_mm", 1e3), "dm": ("dm_mm", 1e3), "Pd": ("Pd_mm", 1e3), "bore": ("bore_mm", 1e3),
+               "outer_diameter": ("outer_diameter_mm", 1e3), "width": ("width_mm", 1e3),
+               "alpha0": ("alpha0_deg", 180.0 / np.pi), "C0": ("C0_kN", 1e-3), "C": ("C_kN", 1e-3)}
+_NUMBER = r"(-?\d+(?:\.\d*)?(?:e[+-]?\d+)?)"
+
+
+def in_table_units(e: InputError, where: str = "bearing") -> InputError:
+    """A :class:`BallBearing` error (its SI attributes: m, rad, N) restated in the keys and units of a bearing
+    table, as the scene or catalogue wrote them (``D_mm``, ``alpha0_deg``, ``C0_kN``).
+
+    >>> str(in_table_units(InputError("bearing[6208].Pd", 1.3e-05, "clearance must be < 2A = 1.016e-06 m")))
+    'bearing.Pd_mm = 0.013 — clearance must be < 2A = 0.001016 mm'
+    """
+    attr = e.field.rsplit(".", 1)[-1]
+    key, f = _TABLE_KEYS.get(attr, (attr, 1.0))
+    value = e.value
+    if attr in _TABLE_KEYS and isinstance(value, numbers.Real) and not isinstance(value, bool):
+        value = float(f"{value * f:.6g}")
+    text = re.sub(_NUMBER + r" m\b", lambda m: f"{float(m.group(1)) * 1e3:.6g} mm", e.expected)
+    text = re.sub(_NUMBER + r" rad\b", lambda m: f"{np.rad2deg(float(m.group(1))):.6g} deg", text)
+    text = text.replace("[m]", "[mm]").replace("[rad]", "[deg]").replace("[N]", "[kN]")
+    return InputError(f"{where}.{key}", value, text)
 
 
 def _attributes(t: dict) -> dict:

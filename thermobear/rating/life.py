@@ -27,7 +27,7 @@ from thermobear.rating.iso281 import (A_ISO_MAX, basic_rating_life, contaminatio
                                       reference_viscosity, viscosity_ratio)
 from thermobear.rating.iso16281 import ReferenceLife, rating_angle, reference_life
 
-__all__ = ["RatingLife", "rating_life", "load_ratings", "equivalent_loads"]
+__all__ = ["RatingLife", "rating_life", "load_ratings", "stated_ratings", "equivalent_loads"]
 
 
 @dataclass(frozen=True)
@@ -84,6 +84,21 @@ def load_ratings(brg: BallBearing) -> tuple[float, float]:
     a = rating_angle(brg)
     return (dynamic_load_rating(brg.D, brg.dm, brg.Z, a, brg.kind),
             float(static_load_rating(brg.D, brg.dm, brg.Z, a, brg.kind)))
+
+
+def stated_ratings(brg: BallBearing) -> tuple[float, float, tuple[str, str]]:
+    """(C, C0) of a bearing as its data state them [N] (the catalogue's or a scene's ``C_kN``, ``C0_kN``), each
+    one the data lack from its internal geometry (:func:`load_ratings`), and where each comes from.
+
+    >>> from thermobear.contact.geometry import bearing
+    >>> C, C0, src = stated_ratings(bearing("6210"))
+    >>> round(C), round(C0), src
+    (35074, 23200, ('ISO 281 from the geometry', 'stated'))
+    """
+    C_iso, C0_iso = load_ratings(brg)
+    geo = ("ISO 281 from the geometry", "ISO 76 from the geometry")
+    return (C_iso if brg.C is None else float(brg.C), C0_iso if brg.C0 is None else float(brg.C0),
+            (geo[0] if brg.C is None else "stated", geo[1] if brg.C0 is None else "stated"))
 
 
 def equivalent_loads(brg: BallBearing, Fr: float, Fa: float, C0: float) -> tuple[float, float]:

@@ -91,6 +91,9 @@ MODEL_FIELDS = {
 _UNCERTAINTY = Field.table("ranges of estimated values: uncertainty.<key> = { range | factor | offset = [lo, hi], "
                            "distribution, source } (thermobear.schema.check_uncertainty)")
 
+#: The supplies that feed an oil (a grease there is refused: its thickener does not flow to the contacts)
+OIL_SUPPLIES = ("oil_bath", "oil_jet", "oil_air")
+
 _SUPPLY_FIELDS = {
     "supply": Field.choice(*SUPPLIES, doc="lubrication method"),
     "flow_L_h": Field.number("L/h", 0.0, 1e5, doc="oil flow through the bearing"),
@@ -354,10 +357,9 @@ class Scene:
         new = dataclasses.replace(self, **kw)
         if new.network == PARAMETRIC:                                   # named now: build it from the sections
             new = dataclasses.replace(new, network=_machine(new))
-        elif isinstance(new.network, Machine) and {"bearing", "lubricant", "supply", "rotating"} & set(kw):
-            new = dataclasses.replace(new, network=_machine(new))       # the machine follows its bearing
-        _check_scene(new, network_changed=bool({"network", "network_parameters", "T_fixed_C", "bearing", "lubricant",
-                                                "supply", "rotating"} & set(kw)))
+        elif isinstance(new.network, Machine) and _MACHINE_KEYS & set(kw):
+            new = dataclasses.replace(new, network=_machine(new, at=new.network))  # the machine follows its bearing
+        _check_scene(new, network_changed=bool({"network", "network_parameters", "T_fixed_C", *_MACHINE_KEYS} & set(kw)))
         return new
 
 
@@ -472,7 +474,13 @@ def _bearing_of(sec: dict) -> BallBearing:
         unc = {**{k: v for k, v in unc.items() if k not in over}, **over.get("uncertainty", {})}
         merged = {**table, **over, "uncertainty": unc} if unc else {k: v for k, v in {**table, **over}.items()
                                                                      if k != "uncertainty"}
-        return bearing_from_dict(merged, name=base.name, where="bearing")
+        try:
+            return bearing_from_dict(merged, name=base.name, where="bearing")
+        except InputError as e:              # the catalogue's bearing holds: say what the scene changed
+            changed = [f"{k} = {v!r} (catalogue: {table[k]!r})" if k in table else f"{k} = {v!r}"
+                       for k, v in over.items() if k != "uncertainty" and table.get(k) != v]
+            raise InputError(e.field, e.value, f"{e.expected}; the scene changes {base.name}'s "
+                             + ", ".join(changed)) from None
     return bearing_from_dict(sec, name=sec.get("name", "custom"), where="bearing")
 
 
@@ -515,24 +523,38 @@ def _default_penetration(supply: str, lsec: dict) -> float:
     return 0.4 if supply == "oil_jet" and lsec.get("oil_feed", "jet") == "jet" else 1.0
 
 
-def _machine(s: Scene) -> Machine:
+#: The scene values a parametric network is built from (besides its [shaft] and [housing] tables): a
+#: :meth:`Scene.with_` of any of them builds the machine again (seals and shields close the cavity and add
+#: a seal node, the oil level sets the sump and the balls' share in the bath, the jet's penetration the
+#: oil stream through the bearing).
+_MACHINE_KEYS = frozenset({"bearing", "lubricant", "supply", "rotating", "seals", "oil_level", "jet_penetration"})
+
+
+def _machine(s: Scene, at: Machine | None = None) -> Machine:
     """The machine of a parametric scene, from its ``[shaft]``, ``[housing]`` and ``[lubricant]`` tables
-    (at the scene's own operating point: what the discretisation rule reads)."""
+    and the scene's bearing, lubrication, seals and oil level, at the scene's own operating point (what the
+    discretisation rule reads) — or, built again for an override (``at``: the machine the scene had), at
+    that machine's operating point, so that an override changes no cell count (a schedule step, a sweep's
+    points: one network)."""
     d = s.raw or {}
     sh = check_table(d.get("shaft", {}), SHAFT_FIELDS, "shaft")
     ho = check_table(d.get("housing", {}), HOUSING_FIELDS, "housing")
     lub = check_table(d.get("lubricant", {}), SECTIONS["lubricant"], "lubricant") if "lubricant" in d else {}
+    lub = {k: v for k, v in lub.items() if k != "oil_level_mm"}            # the scene's own (an override's)
+    if s.oil_level is not None:
+        lub["oil_level_mm"] = s.oil_level * 1e3
+    closure = "contact" if s.seals in CONTACT_SEALS else "shields" if s.seals == "shield" else "none"
     old = s.network if isinstance(s.network, Machine) else None
     if old is not None and not d:
         return dataclasses.replace(old, bearing=s.bearing, rotating=s.rotating,
-                                   lubrication=lubrication_of({}, s.lubricant, s.supply))
-    closure = "contact" if s.seals in CONTACT_SEALS else "shields" if s.seals == "shield" else "none"
+                                   lubrication=lubrication_of(lub, s.lubricant, s.supply),
+                                   housing=dataclasses.replace(old.housing, seals=closure))
     if s.supply == "oil_jet":
         lub = {**lub, "jet_penetration": s.jet_penetration}       # the drag's and the network's share alike
+    op = (dict(n_rpm=s.n_rpm, T_ambient_C=s.T_ambient_C, Fa=s.Fa, Fr=float(np.hypot(s.Fr, s.Fz))) if at is None
+          else dict(n_rpm=at.n_rpm, T_ambient_C=at.T_ambient_C, Fa=at.Fa, Fr=at.Fr))
     return machine_from_sections(sh, ho, lub, bearing=s.bearing, lubricant=s.lubricant, supply=s.supply,
-                                 rotating=s.rotating, n_rpm=s.n_rpm, T_ambient_C=s.T_ambient_C, Fa=s.Fa,
-                                 Fr=float(np.hypot(s.Fr, s.Fz)),
-                                 seals=closure)
+                                 rotating=s.rotating, seals=closure, **op)
 
 
 def _network_of(d: dict, th: dict):
@@ -550,7 +572,7 @@ def _check_scene(s: Scene, network_changed: bool = True):
     if s.supply == "oil_jet" and s.T_C is None and s.network is not None and s.T_oil_in_C is None:
         raise InputError("lubricant.T_in_C", None, "an oil-jet scene solved thermally needs the oil inlet temperature [°C]")
     if s.bearing.dm is not None:
-        validity.check("n_dm", s.n_rpm * s.bearing.dm * 1e3, "operation.n_rpm", warn=False)
+        validity.check("n_dm", s.n_rpm * s.bearing.dm * 1e3, "operation.n_rpm", warn=False, given=s.n_rpm)
     _check_added(s)
     if s.network is None:
         if s.T_fixed_C:
@@ -568,7 +590,10 @@ def _check_scene(s: Scene, network_changed: bool = True):
 
 
 def _check_added(s: Scene):
-    """Oil level, seals and cage against the supply and the bearing."""
+    """Lubricant, oil level, seals and cage against the supply and the bearing."""
+    if getattr(s.lubricant, "kind", "oil") == "grease" and s.supply in OIL_SUPPLIES:
+        raise InputError("lubricant.name", s.lubricant.name, f"is a grease; supply = {s.supply!r} needs an oil "
+                         "(thermobear list lubricants), or supply = \"grease\"")
     if s.oil_level is not None and s.supply in ("grease", "dry_film"):
         raise InputError("lubricant.oil_level_mm", s.oil_level * 1e3, f"an oil level needs an oil supply "
                          f"(oil_bath, oil_jet or oil_air), not {s.supply}")

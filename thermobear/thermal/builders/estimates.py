@@ -19,8 +19,8 @@ from dataclasses import replace
 from thermobear.files import data_dir, read_toml
 from thermobear.schema import Field, check_table, check_uncertainty
 
-__all__ = ["FIELDS", "FAMILY_KEYS", "POINT_KEYS", "values", "uncertainty", "value", "drawn", "sampled_keys",
-           "point_uncertainty"]
+__all__ = ["FIELDS", "FAMILY_KEYS", "POINT_KEYS", "values", "uncertainty", "value", "machine_value", "drawn",
+           "sampled_keys", "point_uncertainty"]
 
 FILE = "network_builders.toml"
 
@@ -100,6 +100,24 @@ def uncertainty() -> dict:
 def value(m, key: str) -> float:
     """The value of an estimate a machine uses: its drawn value (``m.estimates``), else the data's."""
     return dict(m.estimates).get(key, values()[key]) if m is not None else values()[key]
+
+
+def machine_value(m, key: str) -> float:
+    """The value of an estimate a machine uses [the key's unit]: the housing's emissivity, the grease fill and
+    the mounting joint (as R = 1/h) as the machine holds them, the constants as drawn or the data's.
+
+    >>> from thermobear.contact.geometry import bearing
+    >>> from thermobear.thermal.builders.machine import Machine
+    >>> machine_value(Machine(bearing("6208")), "k_air_still_W_mK") == values()["k_air_still_W_mK"]
+    True
+    """
+    if key == "emissivity":
+        return m.housing.emissivity
+    if key == "grease_fill" and m.lubrication.grease_fill is not None:
+        return m.lubrication.grease_fill
+    if key == "R_mount_m2K_W" and m.housing.mounting_h_W_m2K is not None:
+        return 1.0 / m.housing.mounting_h_W_m2K
+    return value(m, key)
 
 
 def drawn(m, draws: dict, cells: dict | None = None):
