@@ -17,6 +17,7 @@ from thermobear.coupled.pipeline import scene_load
 from thermobear.coupled.ratings import check_static_safety, scene_ratings, typical_fits
 from thermobear.errors import InputError, OutsideValidity
 from thermobear.rating import load_ratings
+from thermobear.rating.life import stated_ratings
 from thermobear.scene.scene import scene_from_dict
 
 EX = Path(__file__).resolve().parents[1] / "examples"
@@ -69,7 +70,7 @@ def test_overload_exits_2_before_any_solve_naming_load_limit_and_c0(capsys):
 def test_run_answers_ratings_in_text_and_json(capsys):
     code, out, _ = run(capsys, "run", BATH, "--json")
     d = json.loads(out)
-    C, C0 = load_ratings(tb.bearing("6208"))
+    C, C0, _ = stated_ratings(tb.bearing("6208"))          # the catalogue's, else from the geometry
     r = d["ratings"]
     assert code == 0 and r["C_N"] == pytest.approx(C) and r["C0_N"] == pytest.approx(C0)
     assert d["s0"] == pytest.approx(C0 / 2000.0) and {"mounted", "operating"} <= set(d["clearance_um"])
@@ -152,3 +153,31 @@ def test_every_catalogue_series_answers_with_its_ratings(name):
     assert d["s0"] == pytest.approx(r["C0_N"] / r["P0_N"], rel=1e-9) and d["s0"] > 1.0
     assert 0.0 < d["kappa"] and 0.0 < d["a_ISO"] <= 50.0
     assert d["L10m_h"] == pytest.approx(d["a_ISO"] * r["L10_h"], rel=1e-9)
+
+
+def test_ratings_use_the_c_and_c0_the_bearing_data_state():
+    """A stated C / C0 (catalogue or scene C_kN, C0_kN) is the rating the answer uses; the geometry's only where
+    the data give none (the life scales with the stated C cubed)."""
+    s = S.with_(bearing={"catalog": "6208", "C_kN": 40.0, "C0_kN": 25.0})
+    r, r0 = scene_ratings(s, _steady(40.0, 35.0)), scene_ratings(S, _steady(40.0, 35.0))
+    assert (r.C_N, r.C0_N) == (40000.0, 25000.0)
+    assert r.s0 == pytest.approx(25000.0 / r.P0_N, rel=1e-12)
+    assert r.L10_h / r0.L10_h == pytest.approx((40000.0 / r0.C_N) ** 3, rel=1e-9)
+
+
+def test_an_unloaded_bearing_has_no_fatigue_life_and_no_error(capsys):
+    s = S.with_(Fr=0.0, Fa=0.0)
+    r = scene_ratings(s, _steady(40.0, 35.0, Q=0.0))
+    assert r.P_N == 0.0 and r.L10_h == np.inf and r.L10m_h == np.inf and r.s0 == np.inf and r.a_ISO == 50.0
+    assert any("unloaded (P = 0), no fatigue life" in ln for ln in r.lines())
+    code, out, _ = run(capsys, "run", BATH, "--set", "Fr=0", "--json")
+    assert code == 0 and json.loads(out)["ratings"]["L10_h"] is None          # JSON has no infinity
+
+
+def test_a_thrust_bearing_reports_no_radial_clearance_or_fits():
+    s = tb.load_scene(str(EX / "seed002_grease_thrust_51107.toml"))
+    r = scene_ratings(s, tb.steady_state(s))
+    assert r.clearance_um["applies"] is False and "operating" not in r.clearance_um
+    text = "\n".join(r.lines())
+    assert "thrust bearing: no radial clearance" in text and "  fits " not in text and "H7" not in text
+    assert not any(w.quantity == "operating_clearance" for w in r.warnings)

@@ -10,6 +10,7 @@ from thermobear.errors import InputError, ThermalRunaway
 from thermobear.coupled import scene_load, scene_losses, solve, steady_state, steady_states, transient
 from thermobear.models import choose_models, film_options, open_contacts
 from thermobear.scene.network import network_spec
+from thermobear.scene.scene import scene_from_dict
 
 S004 = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
 S001 = tb.load_scene(tb.example_path("seed001_spin_down_3ball.toml"))
@@ -290,3 +291,16 @@ def test_outer_ring_rotation_does_not_take_the_inner_ring_high_speed_path():
     assert choose_models(sc)["high_speed"][0] == "no"
     with pytest.raises(InputError, match="inner"):
         choose_models(sc.with_(models={"high_speed": True}))
+
+
+@pytest.mark.parametrize("supply, name", [("oil_bath", "iso-vg-68-mineral"), ("oil_jet", "iso-vg-68-mineral"),
+                                          ("grease", "grease-lithium-mineral-vg100-nlgi2")])
+def test_a_scene_without_network_or_temperature_is_refused_by_name_whatever_its_supply(supply, name):
+    """A flooded supply has a film test in its model choice; without a dry solution (no network, no T_C) that
+    test must not run: the scene is refused as a grease scene is (thermal.network, exit 2), not an internal error."""
+    lub = {"name": name, "supply": supply, **({"oil_level_mm": 6.0} if supply == "oil_bath" else {}),
+           **({"flow_L_h": 10.0} if supply == "oil_jet" else {})}
+    s = scene_from_dict({"bearing": {"catalog": "6208"}, "lubricant": lub,
+                         "operation": {"n_rpm": 3000.0, "Fr_N": 2000.0}})
+    with pytest.raises(InputError, match="^thermal.network"):
+        tb.choose_models(s)

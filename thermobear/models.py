@@ -248,6 +248,8 @@ def _load_model_alternatives(scene: Scene, dry) -> list:
     if scene.supply not in FLOODED:
         return [(("jones_harris", jh + f"; {scene.supply}: contacts outside the load zone taken as starved (no "
                                        "film load)"), 1.0)]
+    if dry is None:                  # no network and no T_C: the model choice (choose_models) says what is missing
+        return [(("jones_harris", jh + "; no dry solution to test the films on"), 1.0)]
     if isinstance(dry, (SolverError, InputError)):  # the load step itself will say so (per point)
         return [(("jones_harris", jh + f"; the dry solution failed ({type(dry).__name__}), so no film test"), 1.0)]
     Z = scene.bearing.Z

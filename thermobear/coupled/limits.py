@@ -10,12 +10,12 @@ import warnings
 
 import numpy as np
 
-from thermobear.errors import ExtrapolationWarning, InputError
+from thermobear.errors import ExtrapolationWarning, InputError, OutsideValidity
 from thermobear.arrays import take
 from thermobear.loads.api import check_contacts, groove_angle, loads_text
 from thermobear.validity import LIMITS, P_MAX_REFUSE_PA, check, collect
 
-__all__ = ["p_max_Pa", "contact_pressure", "overloads", "point_warnings", "family_warnings", "emit"]
+__all__ = ["p_max_Pa", "contact_pressure", "overloads", "point_warnings", "family_warnings", "grease_limit", "emit"]
 
 
 def p_max_Pa(Q, a, b):
@@ -69,9 +69,40 @@ def overloads(scenes, contacts) -> dict:
     return out
 
 
+def grease_limit(scene) -> float | None:
+    """The upper operating temperature [°C] of a scene's grease as its data state it (``grease_T_max_C``: the
+    maker's, or a class's estimate with its range), None for an oil or a grease without one."""
+    lub = scene.lubricant
+    if lub.kind != "grease":
+        return None
+    T = lub.table.get("grease_T_max_C")
+    return None if T is None or np.ndim(T) else float(T)
+
+
+def _grease_warning(scene, x_C) -> list:
+    """An OutsideValidity warning when the bearing's contacts or cavity run above the grease's upper operating
+    temperature (:func:`grease_limit`): the thickener softens, the base oil bleeds and oxidises (SKF Group 2018,
+    *Rolling bearings*, relubrication: intervals halve every 15 K above 70 °C), and the grease models here are
+    those of a grease within its range."""
+    T_max = grease_limit(scene)
+    T = float(np.max(x_C))
+    if T_max is None or not T > T_max:
+        return []
+    lub = scene.lubricant
+    return [OutsideValidity(
+        f"lubricant {lub.name}: contact / cavity temperature {T:.1f} °C above the grease's upper operating "
+        f"temperature {T_max:g} °C (data: grease_T_max_C) — beyond it the thickener softens and the base oil bleeds "
+        "and oxidises (SKF 2018: relubrication intervals halve every 15 K above 70 °C); the grease's life, not only "
+        "its friction, is at stake",
+        quantity="grease_T", value=T, limit=f"<= {T_max:g} °C", source=f"materials/lubricants/{lub.name}.toml",
+        field="lubricant.name")]
+
+
 def point_warnings(scene, losses, x_C) -> list:
     """The OutsideValidity warnings of one solved operating point: speed, contact pressure, contact
-    and oil temperatures (the lubricant's validated range), the SKF model's Φ_bl."""
+    and oil temperatures (the lubricant's validated range; a grease's upper operating temperature), the SKF
+    model's Φ_bl."""
+    grease = _grease_warning(scene, x_C)
     with collect(replay=False) as got:
         check("n_dm", scene.n_rpm * scene.bearing.dm * 1e3, "operation.n_rpm", warn=True)
         check("lubricant_T", np.asarray(x_C, float), "contact / oil temperature", category=ExtrapolationWarning)
@@ -80,7 +111,7 @@ def point_warnings(scene, losses, x_C) -> list:
         skf = getattr(losses, "skf", None)
         if skf is not None:
             check("skf_phi_bl", np.asarray(skf.phi_bl, float), "models.losses = skf")
-    return list(got)
+    return list(got) + grease
 
 
 def _outside_warn(name, v) -> np.ndarray:
@@ -102,6 +133,8 @@ def family_warnings(scenes, losses, x_C, answered=None) -> list:
     B = len(scenes)
     n_dm = np.array([s.n_rpm * s.bearing.dm * 1e3 for s in scenes])
     flag = _outside_warn("n_dm", n_dm[:, None]) | _outside_warn("lubricant_T", x_C)
+    T_max = np.array([np.inf if grease_limit(s) is None else grease_limit(s) for s in scenes])
+    flag |= np.asarray(x_C, float).reshape(B, -1).max(axis=1) > T_max
     c = getattr(losses, "contacts", None)
     if c:
         p = np.concatenate([np.reshape(p_max_Pa(c[s]["Q"], c[s]["a"], c[s]["b"]), (B, -1)) for s in ("inner", "outer")], 1)

@@ -5,14 +5,16 @@ refused static safety (:data:`thermobear.validity.LIMITS` ``s0``: s0 < 0.5, twic
 limit as the refused contact pressure, 4200·2^(1/3) MPa, since p_max ∝ Q^(1/3)).  :func:`scene_ratings` gives the
 answers at the steady state's temperatures (:class:`Ratings`):
 
-* C0 (ISO 76:2006 [1]) and C (ISO 281:2007 [2]) from the internal geometry, P0 and P (F_r the resultant
-  √(F_r² + F_z²); the moments have no term in the standards' equivalent loads), s0 = C0/P0;
+* C0 (ISO 76:2006 [1]) and C (ISO 281:2007 [2]) as the bearing's data state them (catalogue or scene), else from
+  the internal geometry; P0 and P (F_r the resultant
+  √(F_r² + F_z²); the moments have no term in the standards' equivalent loads), s0 = C0/P0 (unloaded: s0 and the
+  lives infinite, a_ISO at its cap);
 * the largest Hertz pressure of each ring from the solved contacts (Harris 2001 eq 6.47);
 * κ = ν/ν1 (ISO 281 ν1 at the speed and d_m) with ν at the operating temperature — the mean of the inner and outer
   raceway temperatures of the steady state — e_C of the scene's contamination level (ISO 281 simplified table,
   :data:`thermobear.rating.iso281.CONTAMINATION_LEVELS`), a_ISO, L10 and L10m in hours, and the ISO/TS 16281 [3] reference life
   L10r of the solved ball loads (hours);
-* the operating clearance (:func:`thermobear.contact.fits.operating_clearance`) of the mounted bearing at the ring,
+* the operating clearance (:func:`thermobear.contact.fits.operating_clearance`) of the mounted radial bearing at the ring,
   ball, shaft and housing temperatures, with the scene's fits or the catalogue-typical fit for the load
   (:func:`typical_fits`), stated.
 
@@ -38,9 +40,9 @@ from thermobear.contact.geometry import BallBearing
 from thermobear.errors import InputError
 from thermobear.loads import loads_text
 from thermobear.rating.iso16281 import reference_life
-from thermobear.rating.iso281 import (basic_rating_life, contamination_factor, fatigue_load_limit,
+from thermobear.rating.iso281 import (A_ISO_MAX, basic_rating_life, contamination_factor, fatigue_load_limit,
                                       life_modification_factor, reference_viscosity, viscosity_ratio)
-from thermobear.rating.life import equivalent_loads, load_ratings
+from thermobear.rating.life import equivalent_loads, stated_ratings
 from thermobear.validity import LIMITS, check, collect
 
 __all__ = ["Ratings", "check_static_safety", "scene_clearance", "scene_ratings", "typical_fits"]
@@ -49,8 +51,10 @@ _LOAD_FIELDS = "operation (Fa_N, Fr_N, Fz_N)"
 
 
 def _static(scene):
-    """(C, C0, P, P0) of a scene's bearing and loads [N] (F_r the radial resultant)."""
-    C, C0 = load_ratings(scene.bearing)
+    """(C, C0, P, P0) of a scene's bearing and loads [N] (F_r the radial resultant); C and C0 as the bearing's data
+    state them (the catalogue's or the scene's ``C_kN`` / ``C0_kN``), else from its geometry
+    (:func:`~thermobear.rating.life.stated_ratings`)."""
+    C, C0 = stated_ratings(scene.bearing)[:2]
     P, P0 = equivalent_loads(scene.bearing, float(np.hypot(scene.Fr, scene.Fz)), float(scene.Fa), C0)
     return C, C0, P, P0
 
@@ -143,7 +147,6 @@ class Ratings:
 
     def lines(self) -> list:
         """A short table for the text answer."""
-        c = self.clearance_um
         p = self.p_max_Pa
         return ["Ratings (ISO 76, ISO 281, ISO/TS 16281)",
                 f"  C0 {self.C0_N:9.0f} N   P0 {self.P0_N:9.0f} N   s0 {self.s0:7.3g}",
@@ -151,11 +154,18 @@ class Ratings:
                 f"outer {p['outer'] / 1e6:6.0f} MPa",
                 f"  kappa {self.kappa:.3g} (nu {self.nu_m2_s * 1e6:.3g} cSt at {self.T_operating_C:.1f} °C, "
                 f"nu1 {self.nu1_m2_s * 1e6:.3g} cSt)   e_C {self.e_C:g} ({self.contamination})   a_ISO {self.a_ISO:.3g}",
-                f"  L10 {self.L10_h:.4g} h   L10m {self.L10m_h:.4g} h" +
-                ("" if self.L10r_h is None else f"   L10r {self.L10r_h:.4g} h"),
-                f"  clearance mounted {c['mounted']:.2f} um, operating {c['operating']:.2f} um, in the loads "
-                f"{c['used']:.2f} um" + (f" (fixed point, {c['iterations']} iterations, residual "
-                                         f"{c['residual_um']:.1e} um)" if "iterations" in c else " (as given)"),
+                ("  L10, L10m: unloaded (P = 0), no fatigue life" if not self.P_N > 0 else
+                 f"  L10 {self.L10_h:.4g} h   L10m {self.L10m_h:.4g} h" +
+                 ("" if self.L10r_h is None else f"   L10r {self.L10r_h:.4g} h")),
+                *self._clearance_lines()]
+
+    def _clearance_lines(self) -> list:
+        c = self.clearance_um
+        if "operating" not in c:
+            return [f"  clearance: {c.get('why', 'not applicable')}"]
+        return [f"  clearance mounted {c['mounted']:.2f} µm, operating {c['operating']:.2f} µm, in the loads "
+                f"{c['used']:.2f} µm" + (f" (fixed point, {c['iterations']} iterations, residual "
+                                         f"{c['residual_um']:.1e} µm)" if "iterations" in c else " (as given)"),
                 f"  fits {c['shaft_fit']} / {c['housing_fit']}: {c['fits_from']}"]
 
 
@@ -234,21 +244,31 @@ def scene_ratings(scene, steady, losses=None) -> Ratings:
     kappa = float(viscosity_ratio(nu, nu1))
     e_C = float(contamination_factor(scene.contamination, b.dm))
     kind = "thrust" if b.kind == "thrust" else "radial"
-    a_iso = float(life_modification_factor(kappa, e_C * float(fatigue_load_limit(C0, b.dm)) / P, kind))
     hours = 1e6 / (60.0 * n)
-    L10 = float(basic_rating_life(C, P))
     L10r = None
-    if c:
+    if P > 0:
+        a_iso = float(life_modification_factor(kappa, e_C * float(fatigue_load_limit(C0, b.dm)) / P, kind))
+        L10 = float(basic_rating_life(C, P))
+    else:                              # unloaded: no fatigue (ISO 281's a_ISO at its cap, the lives infinite)
+        a_iso, L10 = A_ISO_MAX, np.inf
+    if c and P > 0:
         ld = type("Balls", (), {"Q_i": np.ravel(c["inner"]["Q"]), "Q_o": np.ravel(c["outer"]["Q"])})
         L10r = float(reference_life(b, ld, C, rotating=scene.rotating).L10r) * hours
-    clear = getattr(steady, "clearance_um", None) or scene_clearance(scene, steady.T_C, steady.roles)
+    if b.kind == "thrust":
+        clear = {"applies": False, "why": "thrust bearing: no radial clearance or radial fits (its axial play is set "
+                                          "by the mounting)"}
+    else:
+        clear = getattr(steady, "clearance_um", None) or scene_clearance(scene, steady.T_C, steady.roles)
+    s0 = C0 / P0 if P0 > 0 else np.inf
     with collect(replay=False) as got:
-        check("s0", C0 / P0, _LOAD_FIELDS, what=f"P0 = {P0:.4g} N, C0 = {C0:.4g} N")
+        if P0 > 0:
+            check("s0", s0, _LOAD_FIELDS, what=f"P0 = {P0:.4g} N, C0 = {C0:.4g} N")
         check("kappa", kappa, "lubricant viscosity at the operating temperature",
               what=f"nu {nu * 1e6:.3g} cSt at {T_op:.1f} °C, nu1 {nu1 * 1e6:.3g} cSt")
-        check("operating_clearance", clear["operating"] * 1e-6, "bearing clearance",
-              what=f"mounted {clear['mounted']:.2f} um, fits {clear['shaft_fit']} / {clear['housing_fit']}")
-    return Ratings(C_N=C, C0_N=C0, P_N=P, P0_N=P0, s0=C0 / P0, p_max_Pa=p or {"inner": 0.0, "outer": 0.0},
+        if "operating" in clear:
+            check("operating_clearance", clear["operating"] * 1e-6, "bearing clearance",
+                  what=f"mounted {clear['mounted']:.2f} µm, fits {clear['shaft_fit']} / {clear['housing_fit']}")
+    return Ratings(C_N=C, C0_N=C0, P_N=P, P0_N=P0, s0=s0, p_max_Pa=p or {"inner": 0.0, "outer": 0.0},
                    T_operating_C=T_op, nu_m2_s=nu, nu1_m2_s=nu1, kappa=kappa, contamination=str(scene.contamination),
                    e_C=e_C, a_ISO=a_iso, L10_h=L10 * hours, L10m_h=a_iso * L10 * hours, L10r_h=L10r,
                    clearance_um=clear, warnings=list(got))

@@ -123,7 +123,8 @@ class RunResult:
             del r["warnings"]                   # in the answer's warnings
             d["ratings"] = r
             d.update(s0=r["s0"], kappa=r["kappa"], a_ISO=r["a_ISO"], L10m_h=r["L10m_h"],
-                     clearance_um={k: r["clearance_um"][k] for k in ("mounted", "operating", "used")})
+                     clearance_um={k: r["clearance_um"][k] for k in ("mounted", "operating", "used", "applies", "why")
+                                   if k in r["clearance_um"]})
         return d
 
     def summary(self) -> str:
