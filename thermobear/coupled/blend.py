@@ -21,16 +21,15 @@ import dataclasses
 
 import numpy as np
 
+from thermobear.coupled.pipeline import SWITCHED
 from thermobear.errors import OutsideValidity
 
 __all__ = ["blend_states", "blend_losses", "switch_label", "StackedBlend"]
 
-_SWITCHED = ("high_speed", "load_model")
-
 
 def switch_label(models: dict, others: list) -> str:
     """What distinguishes one alternative's models from the others' (e.g. ``load_model=film``)."""
-    keys = [k for k in _SWITCHED if any(o.get(k, (None,))[0] != models.get(k, (None,))[0] for o in others)]
+    keys = [k for k in SWITCHED if any(o.get(k, (None,))[0] != models.get(k, (None,))[0] for o in others)]
     return ", ".join(f"{k}={models[k][0]}" for k in keys) or "same models"
 
 
