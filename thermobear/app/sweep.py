@@ -35,7 +35,7 @@ import signal
 
 import numpy as np
 
-from thermobear.coupled import scene_losses, steady_states
+from thermobear.coupled import prepare, scene_losses, steady_states
 from thermobear.coupled.pipeline import scene_load
 from thermobear.errors import InputError, SolverError
 from thermobear.loads.highspeed import load_distribution_high_speed
@@ -101,13 +101,23 @@ def _finite_or_none(v):
     return float(v) if isinstance(v, (int, float, np.floating)) and np.isfinite(v) else None
 
 
-def _solve_chunk(scene: Scene, points: list, scenes: list | None = None) -> list:
+def _solve_chunk(scene: Scene, points: list, scenes: list | None = None, prepared=None) -> list:
     """Rows of a chunk of coupled points (runs in this process, a worker process or on Dask); ``scenes``:
-    the points' scenes when this process has built them already."""
+    the points' scenes when this process has built them already; ``prepared``: the base scene's
+    :func:`~thermobear.coupled.prepare`, for the points it serves."""
     if scenes is None:
         scenes = [scene.with_(**p) for p in points]
     return [_row(p, sc, exc=r) if isinstance(r, Exception) else _row(p, sc, st=r)
-            for p, sc, r in zip(points, scenes, steady_states(scenes))]
+            for p, sc, r in zip(points, scenes, steady_states(scenes, prepared=prepared))]
+
+
+def _prepared(scene: Scene):
+    """The base scene's network template and coupling, prepared once for every chunk this process solves (None
+    where the scene cannot be prepared: each point then says why)."""
+    try:
+        return prepare(scene)
+    except InputError:
+        return None
 
 
 def _losses_batch(sc: Scene, n_rpm, T_C, models: dict, load=None):
@@ -221,8 +231,9 @@ def _chunks(idx, processes):
 def _coupled_local(scene, points, idx, processes, emit, scenes):
     chunks = _chunks(idx, processes)
     if processes == 1 or len(chunks) == 1:
+        pre = _prepared(scene)
         for part in chunks:
-            for i, row in zip(part, _solve_chunk(scene, [points[i] for i in part], [scenes[i] for i in part])):
+            for i, row in zip(part, _solve_chunk(scene, [points[i] for i in part], [scenes[i] for i in part], pre)):
                 emit(i, row)
         return
     pool = multiprocessing.get_context().Pool(min(processes, len(chunks)), initializer=_worker_signals)

@@ -60,6 +60,7 @@ from thermobear.errors import (ExtrapolationWarning, InputError, NoConvergence, 
                                ThermalRunaway)
 from thermobear.loads.api import check_loads, contact_bounds
 from thermobear.models import plan_many
+from thermobear.rating.life import load_ratings
 from thermobear.scene import Scene
 from thermobear.thermal.solve import heat_paths, solve_linear
 
@@ -585,7 +586,7 @@ def _refused(scenes) -> list:
     for k, sc in enumerate(scenes):
         groups.setdefault((sc.bearing, sc.M is None, sc.My is None), []).append(k)
     for (brg, no_M, no_My), ks in groups.items():
-        bounds, checked = contact_bounds(brg), False
+        bounds, checked, C0 = contact_bounds(brg), False, None
         if len(ks) > 1:
             def col(attr):
                 return np.array([getattr(scenes[k], attr) for k in ks], float)
@@ -600,7 +601,9 @@ def _refused(scenes) -> list:
             try:
                 if not checked:
                     check_loads(brg, sc.Fa, sc.Fr, sc.M, sc.n_rpm, Fz=sc.Fz, My=sc.My, names=SCENE_LOADS, bounds=bounds)
-                check_static_safety(sc)
+                if C0 is None and not (brg.kind == "thrust" and (sc.Fr or sc.Fz)):
+                    C0 = load_ratings(brg)[1]              # (the one bearing's ISO 76 rating, for its scenes)
+                check_static_safety(sc, C0)
             except InputError as exc:
                 out[k] = exc
     return out
