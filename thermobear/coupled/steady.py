@@ -160,76 +160,111 @@ def _point_models_used(used: dict, nw: _Newton, b: int) -> dict:
 
 
 def _finish(fam: Family, net, src, cp: Coupling, template, nw: _Newton, tol_K, fams=None) -> list:
-    """Per point: a SteadyState from a full network solve with the converged losses, a SolverError,
+    """Per point: an :class:`_Answer` of a full network solve with the converged losses (its SteadyState built
+    when asked for: a dry start or an unsettled film round needs only a few of its numbers), a SolverError,
     or None (not converged: the caller decides it on the heating path); ``fams``: the families stacked in
     ``fam`` (:func:`_solve_rows`), whose model choices their points report."""
-    free = ~net.fixed
-    x_C = nw.x - _C0
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", ExtrapolationWarning)
-        r = src.result(x_C)
-    parts = src.parts_of(r, x_C.shape[:-1])
-    st = solve_linear(net, _sources_matrix(net, cp, parts), nw.T)
-    gap = np.abs(st.T_K[:, free] @ cp.C.T - nw.x).max(axis=1)
-    bal = np.atleast_1d(st.balance_W)
-    flows = {k: np.atleast_1d(v) for k, v in st.flows_W.items()}
-    paths = heat_paths(net, np.column_stack([np.broadcast_to(flows[e.name], (fam.B,)) for e in net.elements]))
-    warned = family_warnings(fam.scenes, r, x_C, nw.done & (nw.x.max(axis=1) <= T_LIMIT_K))
-    B = fam.B
-    tol = np.broadcast_to(np.asarray(tol_K, float), (B,)).tolist()
-    used = [u for f in (fams or [fam]) for u in [_models_used(f, r, template, cp)] * f.B]
-    contacts = getattr(r, "contacts", None)
-    T_cont = (0.5 * (np.asarray(contacts["inner"]["T_C"], float).mean(axis=-1)
-                     + np.asarray(contacts["outer"]["T_C"], float).mean(axis=-1)) if contacts else
-              0.5 * (x_C[:, 0] + x_C[:, 1]))
-
-    def rows(d):              # {key: (B,) or scalar} → per point, its {key: float}
-        cols = np.reshape([np.broadcast_to(np.asarray(v, float), (B,)) for v in d.values()], (len(d), B)).T
-        return [dict(zip(d, c)) for c in cols.tolist()]
-    T_all, bd_all, flows_all = (st.T_K - _C0).tolist(), rows(r.breakdown_W), rows(flows)
-    out_all = rows({k: q for k, (_, q) in paths.items()})
-    sources_all = _part_sources(cp, parts, [n for n, f in zip(net.nodes, free) if f])
-    P_all, M_all, T_cont_all, bal_all = (np.broadcast_to(np.asarray(v, float), (B,)).tolist()
-                                         for v in (r.P_W, r.torque_Nm, T_cont, bal))
+    solved = _Solved(fam, net, src, cp, template, nw, fams)
+    B, tol = fam.B, np.broadcast_to(np.asarray(tol_K, float), (fam.B,)).tolist()
     out = []
     for b in range(B):
         if not nw.done[b]:
             out.append(None)
             continue
-        T_C = dict(zip(net.nodes, T_all[b]))
+        T_C = dict(zip(net.nodes, solved.T_all[b]))
         hot = {k: v for k, v in T_C.items() if v + _C0 > T_LIMIT_K}
         if hot:
             node = max(hot, key=hot.get)
             out.append(ThermalRunaway(
                 f"no equilibrium below {T_LIMIT_K - _C0:g} °C (the lubricant's limit): the network cannot shed "
-                f"{parts[b].sum():.4g} W even at that temperature ({node} would reach {hot[node]:.4g} °C); more "
-                "cooling, less speed or a thinner oil is needed", iterations=int(nw.its[b]),
+                f"{solved.parts[b].sum():.4g} W even at that temperature ({node} would reach {hot[node]:.4g} °C); "
+                "more cooling, less speed or a thinner oil is needed", iterations=int(nw.its[b]),
                 residual=float(nw.step[b]), last=T_C, history=nw.history[b]))
             continue
-        if gap[b] > max(10 * tol[b], 1e-4):
+        if solved.gap[b] > max(10 * tol[b], 1e-4):
             out.append(NoConvergence(f"coupled temperatures of the final network solve differ from the fixed point "
-                                     f"by {gap[b]:.3g} K", iterations=int(nw.its[b]), residual=float(gap[b]),
-                                     last=T_C, history=nw.history[b]))
+                                     f"by {solved.gap[b]:.3g} K", iterations=int(nw.its[b]),
+                                     residual=float(solved.gap[b]), last=T_C, history=nw.history[b]))
             continue
-        out.append(SteadyState(
-            T_C=T_C, T_ball_C=T_C[cp.roles["ball"]], P_W=P_all[b], iterations=int(nw.its[b]),
-            residual_K=max(float(nw.step[b]), float(gap[b])), energy_balance_W=bal_all[b],
-            heat_flows_W=flows_all[b], models_used=_point_models_used(used[b], nw, b), history=nw.history[b],
-            roles=dict(cp.roles), warnings=warned[b], torque_Nm=M_all[b], breakdown_W=bd_all[b],
-            T_contacts_C=T_cont_all[b], batch_losses=r, row=b, heat_sources_W=sources_all[b],
-            heat_out_W=out_all[b], heat_out_to={k: to for k, (to, _) in paths.items()}))
+        out.append(_Answer(solved, b))
     return out
 
 
-def _part_sources(cp: Coupling, parts, free_nodes) -> list:
-    """Per point, loss part → {node: W}: the split of each part (parts (B, n_parts) [W]) over the
-    network's free nodes."""
-    per_part = []
+class _Solved:
+    """The converged points of one batched solve as arrays (:func:`_finish`): the losses at the fixed point,
+    the network solved with them, the flows and paths; a point's SteadyState made from them when asked for."""
+
+    def __init__(self, fam: Family, net, src, cp: Coupling, template, nw: _Newton, fams=None):
+        free, B = ~net.fixed, fam.B
+        x_C = nw.x - _C0
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ExtrapolationWarning)
+            r = src.result(x_C)
+        self.r, self.nw, self.cp, self.nodes = r, nw, cp, list(net.nodes)
+        self.parts = src.parts_of(r, x_C.shape[:-1])
+        st = solve_linear(net, _sources_matrix(net, cp, self.parts), nw.T)
+        self.gap = np.abs(st.T_K[:, free] @ cp.C.T - nw.x).max(axis=1)
+        flows = {k: np.atleast_1d(v) for k, v in st.flows_W.items()}
+        self.paths = heat_paths(net, np.column_stack([np.broadcast_to(flows[e.name], (B,)) for e in net.elements]))
+        self.warned = family_warnings(fam.scenes, r, x_C, nw.done & (nw.x.max(axis=1) <= T_LIMIT_K))
+        self.used = [u for f in (fams or [fam]) for u in [_models_used(f, r, template, cp)] * f.B]
+        contacts = getattr(r, "contacts", None)
+        T_cont = (0.5 * (np.asarray(contacts["inner"]["T_C"], float).mean(axis=-1)
+                         + np.asarray(contacts["outer"]["T_C"], float).mean(axis=-1)) if contacts else
+                  0.5 * (x_C[:, 0] + x_C[:, 1]))
+        self.T_all = (st.T_K - _C0).tolist()
+
+        def cols(d):              # {key: (B,) or scalar} → (keys, (B, k) array)
+            return list(d), np.reshape([np.broadcast_to(np.asarray(v, float), (B,)) for v in d.values()], (len(d), B)).T
+        self.bd, self.flows = cols(r.breakdown_W), cols(flows)
+        self.out = cols({k: q for k, (_, q) in self.paths.items()})
+        self.free_nodes = [n for n, f in zip(net.nodes, free) if f]
+        self.P, self.M, self.T_cont, self.bal = (np.broadcast_to(np.asarray(v, float), (B,)).tolist()
+                                                 for v in (r.P_W, r.torque_Nm, T_cont, np.atleast_1d(st.balance_W)))
+
+    def state(self, b: int) -> SteadyState:
+        """Point ``b``'s SteadyState."""
+        nw, cp = self.nw, self.cp
+        T_C = dict(zip(self.nodes, self.T_all[b]))
+        row = (lambda c: dict(zip(c[0], c[1][b].tolist())))  # noqa: E731
+        return SteadyState(
+            T_C=T_C, T_ball_C=T_C[cp.roles["ball"]], P_W=self.P[b], iterations=int(nw.its[b]),
+            residual_K=max(float(nw.step[b]), float(self.gap[b])), energy_balance_W=self.bal[b],
+            heat_flows_W=row(self.flows), models_used=_point_models_used(self.used[b], nw, b), history=nw.history[b],
+            roles=dict(cp.roles), warnings=self.warned[b], torque_Nm=self.M[b], breakdown_W=row(self.bd),
+            T_contacts_C=self.T_cont[b], batch_losses=self.r, row=b, heat_sources_W=_part_sources(cp, self.parts[b],
+                                                                                                  self.free_nodes),
+            heat_out_W=row(self.out), heat_out_to={k: to for k, (to, _) in self.paths.items()})
+
+
+class _Answer:
+    """One converged point of a batched solve (:class:`_Solved`): its contact temperature, power and node
+    temperatures at once, its SteadyState when asked for."""
+
+    __slots__ = ("solved", "row")
+
+    def __init__(self, solved: _Solved, row: int):
+        self.solved, self.row = solved, row
+
+    T_contacts_C = property(lambda self: self.solved.T_cont[self.row])
+    P_W = property(lambda self: self.solved.P[self.row])
+
+    def node_T(self) -> np.ndarray:
+        """Node temperatures [K] (as the state's T_C gives them)."""
+        return np.array([t + _C0 for t in self.solved.T_all[self.row]])
+
+    def state(self) -> SteadyState:
+        return self.solved.state(self.row)
+
+
+def _part_sources(cp: Coupling, parts, free_nodes) -> dict:
+    """Loss part → {node: W}: the split of each part of a point (parts (n_parts,) [W]) over the network's free
+    nodes."""
+    out = {}
     for j, name in enumerate(cp.parts):
         nz = np.flatnonzero(cp.S[:, j])
-        q = (cp.S[nz, j][None, :] * parts[:, j][:, None]).tolist()
-        per_part.append((name, [free_nodes[i] for i in nz], q))
-    return [{name: dict(zip(nodes, q[b])) for name, nodes, q in per_part} for b in range(parts.shape[0])]
+        out[name] = dict(zip([free_nodes[i] for i in nz], (cp.S[nz, j] * parts[j]).tolist()))
+    return out
 
 
 class _Part(NamedTuple):
@@ -241,13 +276,13 @@ class _Part(NamedTuple):
     tol_K: float | None = None     # their Newton tolerance [K] (None: the solve's)
 
 
-def _solve_rows(parts, template, cp: Coupling, tol_K) -> list:
+def _solve_rows(parts, template, cp: Coupling, tol_K, lazy: bool = False) -> list:
     """Steady states of families with given (batched) loads, stacked on the batch axis: ``parts``
     :class:`_Part` s (or their tuples) of one :func:`~thermobear.coupled.pipeline.stack_key`
     (e.g. the alternatives of points across a model switch: their own loads, the same contact model, losses and
     network).  One contact set, one network and one Newton iteration for all their points (each point's
     iterates its own, as solved alone), the heating path for the points it cannot decide.  Per part, per
-    point a SteadyState or a SolverError."""
+    point a SteadyState (``lazy``: its :class:`_Answer`) or a SolverError."""
     parts = [_Part(*p) for p in parts]
     fams, sizes = [p.fam for p in parts], [p.fam.B for p in parts]
     fam, cf = stack_families(fams)
@@ -267,7 +302,8 @@ def _solve_rows(parts, template, cp: Coupling, tol_K) -> list:
                              models=f.models, dry=tuple(f.dry[b] for b in keep))
                 kept.append((k, keep, _Part(sub, take(ld, np.array(keep), B),
                                             None if t is None else np.asarray(t)[keep], tk)))
-        for (k, keep, _), res in zip(kept, _solve_rows([p for _, _, p in kept], template, cp, tol_K) if kept else ()):
+        for (k, keep, _), res in zip(kept, _solve_rows([p for _, _, p in kept], template, cp, tol_K, lazy) if kept
+                                     else ()):
             for b, r in zip(keep, res):
                 out[k][b] = r
         return out
@@ -289,6 +325,8 @@ def _solve_rows(parts, template, cp: Coupling, tol_K) -> list:
             out[row] = exc
             continue
         out[row] = _finish(sub, net_b, src_b, cp, template, nw_b, tol[row:row + 1])[0]
+    if not lazy:
+        out = [o.state() if isinstance(o, _Answer) else o for o in out]
     return [out[a:a + B] for a, B in zip(cut, sizes)]
 
 
@@ -302,8 +340,9 @@ def _batched(load):
     return take(load, np.array([0]), 1) if np.ndim(load.delta_a) == 0 else load
 
 
-def _node_T(st: SteadyState, template) -> np.ndarray:
-    return np.array([st.T_C[n] + _C0 for n in template.nodes])
+def _node_T(st, template) -> np.ndarray:
+    """Node temperatures [K] of a SteadyState or an :class:`_Answer`."""
+    return st.node_T() if isinstance(st, _Answer) else np.array([st.T_C[n] + _C0 for n in template.nodes])
 
 
 def _is_film(fam: Family) -> bool:
@@ -360,12 +399,13 @@ class _FilmRows:
         nxt, k, hs = [], self.k, self.fam.models["high_speed"][0] == "yes"
         for j in self.live:
             st = self.results[j]
-            if not isinstance(st, SteadyState):
+            if not isinstance(st, _Answer):
                 self.out[j] = st
                 continue
             T_new, h = st.T_contacts_C, self.hist[j]
             h.append(dict(iteration=k, T_film_C=float(self.T_ref[j]), T_contacts_C=T_new, P_W=st.P_W))
             if abs(T_new - self.T_ref[j]) <= _FILM_TOL_K:
+                st = st.state()
                 st.models_used["load_distribution"] = (
                     "film in the contact law (" + ("high-speed, thermobear.loads.highspeed" if hs
                                                    else "low-speed, thermobear.loads.film") + ")",
@@ -426,11 +466,11 @@ def _solve_stack(fams, tol_K, template, cp: Coupling, res: list, starts_of, twin
                 if not isinstance(ld, Exception):   # (no dry equilibrium to start from: the film model decides alone)
                     parts.append(_Part(sub, ld, np.array([cold[i] for i in sub.index]), max(tol_K, 1e-3)))
                     who.append(fs)
-        for p, fs, out in zip(parts, who, _solve_rows(parts, template, cp, tol_K) if parts else ()):
+        for p, fs, out in zip(parts, who, _solve_rows(parts, template, cp, tol_K, lazy=True) if parts else ()):
             for i, r in zip(p[0].index, out):
                 if fs is None:
-                    res[i] = r
-                elif isinstance(r, SteadyState):
+                    res[i] = r.state() if isinstance(r, _Answer) else r
+                elif isinstance(r, _Answer):
                     fs.started(i, r)
     while active := [fs for fs in films if fs.live.size]:
         parts, who = [], []
@@ -438,7 +478,7 @@ def _solve_stack(fams, tol_K, template, cp: Coupling, res: list, starts_of, twin
             for p in fs.round():
                 parts.append(p)
                 who.append(fs)
-        for p, fs, out in zip(parts, who, _solve_rows(parts, template, cp, tol_K) if parts else ()):
+        for p, fs, out in zip(parts, who, _solve_rows(parts, template, cp, tol_K, lazy=True) if parts else ()):
             fs.results.update(zip((fs.pos[i] for i in p[0].index), out))
         for fs in active:
             fs.update()
