@@ -41,7 +41,6 @@ from __future__ import annotations
 
 import dataclasses
 import warnings
-from dataclasses import dataclass, field
 from typing import NamedTuple
 
 import numpy as np
@@ -49,222 +48,24 @@ import numpy as np
 from thermobear.arrays import take
 from thermobear.coupled.blend import blend_states
 from thermobear.coupled.clearance import clearance_loop
-from thermobear.coupled.newton import (_C0, T_LIMIT_K, _Histories, _Newton, _newton, _physical_path,  # noqa: F401
-                                      _slopes, _sources_matrix)
+from thermobear.coupled.newton import _C0, T_LIMIT_K, _newton, _physical_path, _slopes  # noqa: F401
 from thermobear.coupled.pipeline import (Family, concat_loads, families, family_contacts, family_film_loads,
                                         family_loads, film_temperature_C, split_failures, stack_families, stack_key)
-from thermobear.coupled.limits import emit, family_warnings, overloads
+from thermobear.coupled.limits import emit, overloads
 from thermobear.coupled.ratings import check_static_safety
 from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepare, prepared_for
-from thermobear.errors import (ExtrapolationWarning, InputError, NoConvergence, OutsideValidity, SolverError,
-                               ThermalRunaway)
+from thermobear.coupled.states import Answer, SteadyState, finish
+from thermobear.errors import ExtrapolationWarning, InputError, NoConvergence, OutsideValidity, SolverError
 from thermobear.loads.api import check_loads, contact_bounds
 from thermobear.models import plan_many
 from thermobear.rating.life import load_ratings
 from thermobear.scene import Scene
-from thermobear.thermal.solve import heat_paths, solve_linear
 
 __all__ = ["SteadyState", "steady_state", "steady_states", "T_LIMIT_K"]
 
 _FILM_TOL_K = 0.1                              #: film temperature fixed point tolerance [K]
 _FILM_MAXITER = 10
 SCENE_LOADS = ("operation.Fa_N", "operation.Fr_N", "operation.M_Nm", "operation.n_rpm")
-
-
-@dataclass
-class SteadyState:
-    """Coupled steady state of one operating point.
-
-    Attributes
-    ----------
-    T_C : dict                node → temperature [°C]
-    T_ball_C : float          ball temperature [°C]
-    P_W : float               total power loss [W]
-    losses : LossResult       losses at equilibrium (the SKF model: its result), a property
-    torque_Nm : float         friction torque on the rotating ring [N m]
-    breakdown_W : dict        loss family → power [W]
-    T_contacts_C : float      mean contact temperature [°C] (ball with each race)
-    iterations : int          fixed-point iterations
-    residual_K : float        last temperature change [K]
-    energy_balance_W : float  Σ sources − Σ heat to fixed nodes and the oil stream [W]
-    heat_flows_W : dict       element → heat flow [W] (signed along the element's ``between``)
-    heat_sources_W : dict     loss part → {node: W}: where each part of the loss heats the network
-    heat_out_W : dict         path (element) → W leaving the network through it into a fixed-temperature
-                              node or the oil stream (positive: out); sums to the heat of the sources
-    heat_out_to : dict        path → the boundary it leads to (a fixed node, or ``"stream"``)
-    models_used : dict        model → (choice, reason)
-    history : list            convergence history
-    clearance_um : dict       with ``models.clearance`` mounted / operating: the clearances [µm] (unmounted,
-                              mounted, operating at these temperatures, ``used`` by the loads), the fits, the
-                              fixed point's iterations, residual and history (:mod:`thermobear.coupled.clearance`);
-                              None: the bearing's own clearance (the ratings report its operating value)
-    roles : dict              role → node (ball, inner, outer, oil)
-    warnings : list           OutsideValidity warnings of this point's answer
-    """
-
-    T_C: dict
-    T_ball_C: float
-    P_W: float
-    iterations: int
-    residual_K: float
-    energy_balance_W: float
-    heat_flows_W: dict
-    models_used: dict
-    history: list = field(default_factory=list)
-    roles: dict = field(default_factory=dict)
-    warnings: list = field(default_factory=list)
-    torque_Nm: float = 0.0
-    breakdown_W: dict = field(default_factory=dict)
-    T_contacts_C: float = 0.0
-    heat_sources_W: dict = field(default_factory=dict)
-    heat_out_W: dict = field(default_factory=dict)
-    heat_out_to: dict = field(default_factory=dict)
-    batch_losses: object = field(default=None, repr=False)
-    row: int | None = None
-    clearance_um: dict | None = None
-
-    @property
-    def losses(self):
-        """The losses at equilibrium (:class:`~thermobear.losses.LossResult`; the SKF model: its
-        result): this point's slice of its family's batched result, taken when asked for."""
-        if self.row is None:
-            return self.batch_losses
-        return take(self.batch_losses, self.row, np.shape(self.batch_losses.P_W)[0])
-
-
-def _models_used(fam: Family, r, template, cp: Coupling) -> dict:
-    """The models a family's answers used (shared by its points; the thermal entry per point:
-    :func:`_point_models_used`)."""
-    used = dict(getattr(r, "models_used", {}))
-    used.update(fam.models)
-    lm, hs = fam.models["load_model"][0], fam.models["high_speed"][0]
-    used["load_distribution"] = (
-        "closed form, all balls equal" if lm == "closed_form" else
-        "Jones–Harris high-speed (centrifugal, gyroscopic)" if hs == "yes" else "Jones–Harris low-speed, rigid rings",
-        fam.models["load_model"][1])
-    if fam.scene.bearing.kind != "thrust":
-        used["centrifugal"] = (("in the ball equilibrium", "high-speed form") if hs == "yes" else
-                               ("F_c/cos α on the outer contact", "balls outside the load zone ride on the outer race"))
-    else:
-        used["centrifugal"] = ("none", "thrust bearing")
-    used["thermal"] = (f"network {template.name}", "")
-    used["node_roles"] = (cp.roles, "contact temperature = mean of ball and race nodes (seed 004 §4.5)")
-    return used
-
-
-def _point_models_used(used: dict, nw: _Newton, b: int) -> dict:
-    out = dict(used)
-    out["thermal"] = (used["thermal"][0], f"fixed point on {nw.x.shape[1]} coupled temperatures: {nw.method[b]}, "
-                                          f"{int(nw.its[b])} iterations, loop gain {nw.gain[b]:.2f}")
-    return out
-
-
-def _finish(fam: Family, net, src, cp: Coupling, template, nw: _Newton, tol_K, fams=None) -> list:
-    """Per point: an :class:`_Answer` of a full network solve with the converged losses (its SteadyState built
-    when asked for: a dry start or an unsettled film round needs only a few of its numbers), a SolverError,
-    or None (not converged: the caller decides it on the heating path); ``fams``: the families stacked in
-    ``fam`` (:func:`_solve_rows`), whose model choices their points report."""
-    solved = _Solved(fam, net, src, cp, template, nw, fams)
-    B, tol = fam.B, np.broadcast_to(np.asarray(tol_K, float), (fam.B,)).tolist()
-    out = []
-    for b in range(B):
-        if not nw.done[b]:
-            out.append(None)
-            continue
-        T_C = dict(zip(net.nodes, solved.T_all[b]))
-        hot = {k: v for k, v in T_C.items() if v + _C0 > T_LIMIT_K}
-        if hot:
-            node = max(hot, key=hot.get)
-            out.append(ThermalRunaway(
-                f"no equilibrium below {T_LIMIT_K - _C0:g} °C (the lubricant's limit): the network cannot shed "
-                f"{solved.parts[b].sum():.4g} W even at that temperature ({node} would reach {hot[node]:.4g} °C); "
-                "more cooling, less speed or a thinner oil is needed", iterations=int(nw.its[b]),
-                residual=float(nw.step[b]), last=T_C, history=nw.history[b]))
-            continue
-        if solved.gap[b] > max(10 * tol[b], 1e-4):
-            out.append(NoConvergence(f"coupled temperatures of the final network solve differ from the fixed point "
-                                     f"by {solved.gap[b]:.3g} K", iterations=int(nw.its[b]),
-                                     residual=float(solved.gap[b]), last=T_C, history=nw.history[b]))
-            continue
-        out.append(_Answer(solved, b))
-    return out
-
-
-class _Solved:
-    """The converged points of one batched solve as arrays (:func:`_finish`): the losses at the fixed point,
-    the network solved with them, the flows and paths; a point's SteadyState made from them when asked for."""
-
-    def __init__(self, fam: Family, net, src, cp: Coupling, template, nw: _Newton, fams=None):
-        free, B = ~net.fixed, fam.B
-        x_C = nw.x - _C0
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", ExtrapolationWarning)
-            r = src.result(x_C)
-        self.r, self.nw, self.cp, self.nodes = r, nw, cp, list(net.nodes)
-        self.parts = src.parts_of(r, x_C.shape[:-1])
-        st = solve_linear(net, _sources_matrix(net, cp, self.parts), nw.T)
-        self.gap = np.abs(st.T_K[:, free] @ cp.C.T - nw.x).max(axis=1)
-        flows = {k: np.atleast_1d(v) for k, v in st.flows_W.items()}
-        self.paths = heat_paths(net, np.column_stack([np.broadcast_to(flows[e.name], (B,)) for e in net.elements]))
-        self.warned = family_warnings(fam.scenes, r, x_C, nw.done & (nw.x.max(axis=1) <= T_LIMIT_K))
-        self.used = [u for f in (fams or [fam]) for u in [_models_used(f, r, template, cp)] * f.B]
-        contacts = getattr(r, "contacts", None)
-        T_cont = (0.5 * (np.asarray(contacts["inner"]["T_C"], float).mean(axis=-1)
-                         + np.asarray(contacts["outer"]["T_C"], float).mean(axis=-1)) if contacts else
-                  0.5 * (x_C[:, 0] + x_C[:, 1]))
-        self.T_all = (st.T_K - _C0).tolist()
-
-        def cols(d):              # {key: (B,) or scalar} → (keys, (B, k) array)
-            return list(d), np.reshape([np.broadcast_to(np.asarray(v, float), (B,)) for v in d.values()], (len(d), B)).T
-        self.bd, self.flows = cols(r.breakdown_W), cols(flows)
-        self.out = cols({k: q for k, (_, q) in self.paths.items()})
-        self.free_nodes = [n for n, f in zip(net.nodes, free) if f]
-        self.P, self.M, self.T_cont, self.bal = (np.broadcast_to(np.asarray(v, float), (B,)).tolist()
-                                                 for v in (r.P_W, r.torque_Nm, T_cont, np.atleast_1d(st.balance_W)))
-
-    def state(self, b: int) -> SteadyState:
-        """Point ``b``'s SteadyState."""
-        nw, cp = self.nw, self.cp
-        T_C = dict(zip(self.nodes, self.T_all[b]))
-        row = (lambda c: dict(zip(c[0], c[1][b].tolist())))  # noqa: E731
-        return SteadyState(
-            T_C=T_C, T_ball_C=T_C[cp.roles["ball"]], P_W=self.P[b], iterations=int(nw.its[b]),
-            residual_K=max(float(nw.step[b]), float(self.gap[b])), energy_balance_W=self.bal[b],
-            heat_flows_W=row(self.flows), models_used=_point_models_used(self.used[b], nw, b), history=nw.history[b],
-            roles=dict(cp.roles), warnings=self.warned[b], torque_Nm=self.M[b], breakdown_W=row(self.bd),
-            T_contacts_C=self.T_cont[b], batch_losses=self.r, row=b, heat_sources_W=_part_sources(cp, self.parts[b],
-                                                                                                  self.free_nodes),
-            heat_out_W=row(self.out), heat_out_to={k: to for k, (to, _) in self.paths.items()})
-
-
-class _Answer:
-    """One converged point of a batched solve (:class:`_Solved`): its contact temperature, power and node
-    temperatures at once, its SteadyState when asked for."""
-
-    __slots__ = ("solved", "row")
-
-    def __init__(self, solved: _Solved, row: int):
-        self.solved, self.row = solved, row
-
-    T_contacts_C = property(lambda self: self.solved.T_cont[self.row])
-    P_W = property(lambda self: self.solved.P[self.row])
-
-    def node_T(self) -> np.ndarray:
-        """Node temperatures [K] (as the state's T_C gives them)."""
-        return np.array([t + _C0 for t in self.solved.T_all[self.row]])
-
-    def state(self) -> SteadyState:
-        return self.solved.state(self.row)
-
-
-def _part_sources(cp: Coupling, parts, free_nodes) -> dict:
-    """Loss part → {node: W}: the split of each part of a point (parts (n_parts,) [W]) over the network's free
-    nodes."""
-    out = {}
-    for j, name in enumerate(cp.parts):
-        nz = np.flatnonzero(cp.S[:, j])
-        out[name] = dict(zip([free_nodes[i] for i in nz], (cp.S[nz, j] * parts[j]).tolist()))
-    return out
 
 
 class _Part(NamedTuple):
@@ -282,7 +83,7 @@ def _solve_rows(parts, template, cp: Coupling, tol_K, lazy: bool = False) -> lis
     (e.g. the alternatives of points across a model switch: their own loads, the same contact model, losses and
     network).  One contact set, one network and one Newton iteration for all their points (each point's
     iterates its own, as solved alone), the heating path for the points it cannot decide.  Per part, per
-    point a SteadyState (``lazy``: its :class:`_Answer`) or a SolverError."""
+    point a SteadyState (``lazy``: its :class:`~thermobear.coupled.states.Answer`) or a SolverError."""
     parts = [_Part(*p) for p in parts]
     fams, sizes = [p.fam for p in parts], [p.fam.B for p in parts]
     fam, cf = stack_families(fams)
@@ -312,7 +113,7 @@ def _solve_rows(parts, template, cp: Coupling, tol_K, lazy: bool = False) -> lis
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ExtrapolationWarning)
         nw = _newton(net, src, cp, tol if tol.min() < tol.max() else float(tol[0]), T0)
-    out = _finish(fam, net, src, cp, template, nw, tol, fams)
+    out = finish(fam, net, src, cp, template, nw, tol, fams)
     for row in [r for r, o in enumerate(out) if o is None]:
         k = int(np.searchsorted(cut, row, side="right")) - 1
         (f, ld, _, _), b = parts[k], row - cut[k]
@@ -324,9 +125,9 @@ def _solve_rows(parts, template, cp: Coupling, tol_K, lazy: bool = False) -> lis
         except SolverError as exc:
             out[row] = exc
             continue
-        out[row] = _finish(sub, net_b, src_b, cp, template, nw_b, tol[row:row + 1])[0]
+        out[row] = finish(sub, net_b, src_b, cp, template, nw_b, tol[row:row + 1])[0]
     if not lazy:
-        out = [o.state() if isinstance(o, _Answer) else o for o in out]
+        out = [o.state() if isinstance(o, Answer) else o for o in out]
     return [out[a:a + B] for a, B in zip(cut, sizes)]
 
 
@@ -341,8 +142,8 @@ def _batched(load):
 
 
 def _node_T(st, template) -> np.ndarray:
-    """Node temperatures [K] of a SteadyState or an :class:`_Answer`."""
-    return st.node_T() if isinstance(st, _Answer) else np.array([st.T_C[n] + _C0 for n in template.nodes])
+    """Node temperatures [K] of a SteadyState or an :class:`~thermobear.coupled.states.Answer`."""
+    return st.node_T() if isinstance(st, Answer) else np.array([st.T_C[n] + _C0 for n in template.nodes])
 
 
 def _is_film(fam: Family) -> bool:
@@ -399,7 +200,7 @@ class _FilmRows:
         nxt, k, hs = [], self.k, self.fam.models["high_speed"][0] == "yes"
         for j in self.live:
             st = self.results[j]
-            if not isinstance(st, _Answer):
+            if not isinstance(st, Answer):
                 self.out[j] = st
                 continue
             T_new, h = st.T_contacts_C, self.hist[j]
@@ -469,8 +270,8 @@ def _solve_stack(fams, tol_K, template, cp: Coupling, res: list, starts_of, twin
         for p, fs, out in zip(parts, who, _solve_rows(parts, template, cp, tol_K, lazy=True) if parts else ()):
             for i, r in zip(p[0].index, out):
                 if fs is None:
-                    res[i] = r.state() if isinstance(r, _Answer) else r
-                elif isinstance(r, _Answer):
+                    res[i] = r.state() if isinstance(r, Answer) else r
+                elif isinstance(r, Answer):
                     fs.started(i, r)
     while active := [fs for fs in films if fs.live.size]:
         parts, who = [], []
