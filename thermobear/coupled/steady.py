@@ -452,15 +452,15 @@ def _refused(scenes) -> list:
 
 def _dry_twins(owner, plans) -> dict:
     """Job → job: for a film-load-model alternative of a point, its alternative with the same model
-    choices but the dry Jones–Harris loads (the film fixed point's dry start), where the point has one."""
-    def sig(models):
-        return tuple(sorted((k, repr(v[0])) for k, v in models.items() if k != "load_model"))
-    dry = {(i, sig(m)): j for j, ((i, _), (m, _)) in enumerate(zip(owner, plans))
+    choices but the dry Jones–Harris loads (the film fixed point's dry start), where the point has one (the
+    alternatives of a point differ only in the switched choices, :data:`~thermobear.coupled.pipeline.SWITCHED`:
+    the same high-speed form)."""
+    dry = {(i, m["high_speed"][0]): j for j, ((i, _), (m, _)) in enumerate(zip(owner, plans))
            if m["load_model"][0] == "jones_harris"}
     out = {}
     for j, ((i, _), (m, _)) in enumerate(zip(owner, plans)):
-        if m["load_model"][0] == "film" and (i, sig(m)) in dry:
-            out[j] = dry[(i, sig(m))]
+        if m["load_model"][0] == "film" and (i, m["high_speed"][0]) in dry:
+            out[j] = dry[(i, m["high_speed"][0])]
     return out
 
 
