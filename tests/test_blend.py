@@ -5,10 +5,11 @@ from __future__ import annotations
 
 import warnings
 
+import numpy as np
 import pytest
 
 import thermobear as tb
-from thermobear.coupled.blend import blend_states
+from thermobear.coupled.blend import StackedBlend, blend_states
 from thermobear.errors import NoConvergence, OutsideValidity
 from thermobear.coupled.steady import SteadyState
 
@@ -52,3 +53,20 @@ def test_blend_limits(two):
     assert alone.P_W == a.P_W and alone.T_C == a.T_C
     assert any("model blend" in str(w) for w in alone.warnings)
     assert blend_states([(0.4, fail), (0.6, fail)], SteadyState) is fail
+
+
+def test_stacked_blend_interpolates_the_film_rows_in_the_film_temperature():
+    """A film-load-model alternative solved at two film temperatures: its rows weighted (1 − θ) and θ,
+    θ = (T_f − T_lo)/(T_hi − T_lo) with T_f = ½ (x_inner + x_outer); the other rows keep their weight."""
+    class Rows:                 # parts of K = 3 rows: row k gives k + 1 W on each part
+        diagonal = True
+
+        def parts(self, x):
+            return np.broadcast_to(np.arange(1.0, 4.0)[:, None], np.shape(x)[:-1] + (2,)).copy()
+
+    lower, upper = np.array([False, True, False]), np.array([False, False, True])
+    sb = StackedBlend(Rows(), [0.4, 0.6, 0.6], film=(lower, upper, 40.0, 43.0))
+    for T_f, th in ((40.0, 0.0), (41.5, 0.5), (43.0, 1.0), (43.3, 1.1)):
+        x = np.array([[T_f - 1.0, T_f + 1.0, 30.0]])
+        assert sb.parts(x)[0] == pytest.approx([0.4 + 0.6 * ((1 - th) * 2 + th * 3)] * 2)
+    assert not sb.diagonal                                     # θ reads both contact temperatures

@@ -7,9 +7,11 @@ import pytest
 import thermobear as tb
 from thermobear.coupled import steady_state, transient
 from thermobear.coupled.fixedpoint import solve_coupled
-from thermobear.coupled.steady import _C0, _slopes
+from thermobear.coupled.pipeline import families, family_loads
+from thermobear.coupled.sources import prepare
+from thermobear.coupled.steady import _C0, _slopes, _solve_rows
 from thermobear.coupled.transient import point_model
-from thermobear.models import choose_models
+from thermobear.models import choose_models, plan_many
 
 
 def _scene(name="seed004_oil_jet_7210.toml", **kw):
@@ -122,3 +124,25 @@ def test_a_point_past_the_lubricants_limit_fails_alone_in_its_batch():
     ok, hot = tb.steady_states([s, s.with_(n_rpm=28000.0)])
     assert isinstance(hot, tb.InputError) and "lubricant temperature" in str(hot)
     assert ok.T_C["balls"] == pytest.approx(tb.steady_state(s).T_C["balls"], abs=1e-6)
+
+
+def test_alternatives_stacked_in_one_solve_equal_each_solved_alone():
+    """The model alternatives of a point across both switch bands (three families: the high-speed form dry and
+    with the film law, the low-speed form with the film law) solved as one stacked batch give each family's
+    answer solved alone: the same equilibrium to round-off (each point's Newton iterates are its own)."""
+    s = _scene()
+    alts = plan_many([s])[0]
+    assert {(a.models["high_speed"][0], a.models["load_model"][0]) for a in alts} == {
+        ("yes", "film"), ("yes", "jones_harris"), ("no", "film")}
+    fams, _ = families([s] * len(alts), [(a.models, a.dry) for a in alts])
+    pre = prepare(s)
+    parts = [(f, family_loads(f, [45.0] * f.B)) for f in fams]
+    stacked = _solve_rows(parts, pre.template, pre.coupling, 1e-6)
+    for p, st in zip(parts, stacked):
+        alone = _solve_rows([p], pre.template, pre.coupling, 1e-6)[0][0]
+        assert isinstance(st[0], tb.SteadyState) and isinstance(alone, tb.SteadyState)
+        assert max(abs(st[0].T_C[n] - alone.T_C[n]) for n in alone.T_C) <= 1e-9
+        assert st[0].P_W == pytest.approx(alone.P_W, rel=1e-12)
+        assert st[0].iterations == alone.iterations
+        assert st[0].models_used["load_distribution"] == alone.models_used["load_distribution"]
+    assert len({round(st[0].P_W, 6) for st in stacked}) == 3          # three different answers

@@ -419,6 +419,20 @@ def test_continued_transient_follows_the_exact_exponential():
         solve_transient(net, {"b": P}, 10.0, continue_from=third, rtol=1e-6)
 
 
+def test_until_ends_the_run_at_its_step_and_the_next_run_goes_on():
+    # a run ended by ``until`` (where the RC node passes 40 °C) stops at that step, its state the last point
+    # also with t_eval; the run continued from there is the one exact exponential
+    C, G, P, net = 500.0, 2.0, 80.0, rc_net(500.0, 2.0)
+    first = solve_transient(net, {"b": P}, 1000.0, t_eval=[100.0, 1000.0], until=lambda t, T_K: T_K[0, 0] > 313.15)
+    assert first.completed and first.t[0] == 100.0 and 100.0 < first.t[-1] < 1000.0
+    exact = (lambda t: 20.0 + P / G * (1 - np.exp(-G * t / C)))  # noqa: E731
+    assert first.T_C["b"][-1] > 40.0 and exact(first.t[-1] * 0.9) < 40.0    # the step that passed 40 °C
+    assert first.T_C["b"][-1] == pytest.approx(exact(first.t[-1]), rel=1e-5)
+    rest = 1000.0 - first.t[-1]
+    second = solve_transient(net, {"b": P}, rest, t_eval=[rest], continue_from=first)
+    assert second.T_C["b"][-1] == pytest.approx(exact(1000.0), rel=1e-5)
+
+
 def test_transient_needs_capacities():
     net = net_of({"a": {}, "amb": {"T_C": 20.0}}, [cond("a", "amb", 1.0)])
     with pytest.raises(InputError, match="nodes.a.C_J_K"):

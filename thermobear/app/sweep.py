@@ -35,7 +35,7 @@ import signal
 
 import numpy as np
 
-from thermobear.coupled import scene_losses, steady_states
+from thermobear.coupled import prepare, scene_losses, steady_states
 from thermobear.coupled.pipeline import scene_load
 from thermobear.errors import InputError, SolverError
 from thermobear.loads.highspeed import load_distribution_high_speed
@@ -101,13 +101,23 @@ def _finite_or_none(v):
     return float(v) if isinstance(v, (int, float, np.floating)) and np.isfinite(v) else None
 
 
-def _solve_chunk(scene: Scene, points: list, scenes: list | None = None) -> list:
+def _solve_chunk(scene: Scene, points: list, scenes: list | None = None, prepared=None) -> list:
     """Rows of a chunk of coupled points (runs in this process, a worker process or on Dask); ``scenes``:
-    the points' scenes when this process has built them already."""
+    the points' scenes when this process has built them already; ``prepared``: the base scene's
+    :func:`~thermobear.coupled.prepare`, for the points it serves."""
     if scenes is None:
         scenes = [scene.with_(**p) for p in points]
     return [_row(p, sc, exc=r) if isinstance(r, Exception) else _row(p, sc, st=r)
-            for p, sc, r in zip(points, scenes, steady_states(scenes))]
+            for p, sc, r in zip(points, scenes, steady_states(scenes, prepared=prepared))]
+
+
+def _prepared(scene: Scene):
+    """The base scene's network template and coupling, prepared once for every chunk this process solves (None
+    where the scene cannot be prepared: each point then says why)."""
+    try:
+        return prepare(scene)
+    except InputError:
+        return None
 
 
 def _losses_batch(sc: Scene, n_rpm, T_C, models: dict, load=None):
@@ -212,17 +222,20 @@ def _chunk_job(args):
 
 
 def _chunks(idx, processes):
-    """Chunks of points solved together: large enough to batch well (≥ 16 points), at least 8 per
-    sweep (4 per process) so that rows stream out and an interrupted sweep keeps most of its work."""
-    size = max(16, min(CHUNK, -(-len(idx) // max(8, 4 * processes))))
+    """Chunks of points solved together: large enough to batch well (≥ 16 points; a chunk's load solves,
+    Newton iterations and film rounds cost per call: 4 chunks of a 1000-point sweep take 0.87 × the time of 8),
+    at least 4 per sweep (4 per process where several share it) so that rows stream out and an interrupted
+    sweep keeps most of its work."""
+    size = max(16, min(CHUNK, -(-len(idx) // (4 * processes))))
     return [idx[k:k + size] for k in range(0, len(idx), size)]
 
 
 def _coupled_local(scene, points, idx, processes, emit, scenes):
     chunks = _chunks(idx, processes)
     if processes == 1 or len(chunks) == 1:
+        pre = _prepared(scene)
         for part in chunks:
-            for i, row in zip(part, _solve_chunk(scene, [points[i] for i in part], [scenes[i] for i in part])):
+            for i, row in zip(part, _solve_chunk(scene, [points[i] for i in part], [scenes[i] for i in part], pre)):
                 emit(i, row)
         return
     pool = multiprocessing.get_context().Pool(min(processes, len(chunks)), initializer=_worker_signals)

@@ -21,16 +21,15 @@ import dataclasses
 
 import numpy as np
 
+from thermobear.coupled.pipeline import SWITCHED
 from thermobear.errors import OutsideValidity
 
 __all__ = ["blend_states", "blend_losses", "switch_label", "StackedBlend"]
 
-_SWITCHED = ("high_speed", "load_model")
-
 
 def switch_label(models: dict, others: list) -> str:
     """What distinguishes one alternative's models from the others' (e.g. ``load_model=film``)."""
-    keys = [k for k in _SWITCHED if any(o.get(k, (None,))[0] != models.get(k, (None,))[0] for o in others)]
+    keys = [k for k in SWITCHED if any(o.get(k, (None,))[0] != models.get(k, (None,))[0] for o in others)]
     return ", ".join(f"{k}={models[k][0]}" for k in keys) or "same models"
 
 
@@ -145,23 +144,44 @@ def blend_losses(parts):
 
 
 class StackedBlend:
-    """One operating point's model alternatives as one loss source: ``source`` evaluates the K
+    r"""One operating point's model alternatives as one loss source: ``source`` evaluates the K
     alternatives as K stacked points of one batch (one call: their contact sets differ, their loss
     options do not), and the parts and results are weighted with ``weights`` (K,).  The transient's
-    heat sources across a switch band (the steady state blends whole answers)."""
+    heat sources across a switch band (the steady state blends whole answers).
 
-    def __init__(self, source, weights):
+    ``film``: ``(lower, upper, T_lo, T_hi)`` — rows (masks (K,)) of film-load-model alternatives solved with
+    their films at T_lo and T_hi [°C]: a row's weight w becomes w (1 − θ) (lower) or w θ (upper),
+
+    .. math:: \theta = \frac{T_f - T_{lo}}{T_{hi} - T_{lo}}, \qquad T_f = \tfrac12 (x_{inner} + x_{outer}),
+
+    the losses interpolated linearly in the film temperature T_f (the mean contact temperature) between two
+    load solutions, so that the film loads follow the temperatures continuously (θ held within
+    [−0.5, 1.5]: beyond, the caller moves the pair)."""
+
+    def __init__(self, source, weights, film=None):
         self.source, self.w = source, np.asarray(weights, float)
-        self.diagonal = source.diagonal
+        self.diagonal = source.diagonal and film is None      # θ reads both contact temperatures
         self.K = self.w.size
+        self.film = film
 
     def _stack(self, x_C):
         x = np.asarray(x_C, float)
         return np.repeat(x[..., None, :], self.K, axis=-2)        # (..., n_x) → (..., K, n_x)
 
+    def weights(self, x_C):
+        """The weights (K,) or, with ``film``, (..., K) at coupled temperatures (..., n_x) [°C]."""
+        if self.film is None:
+            return self.w
+        lower, upper, T_lo, T_hi = self.film
+        x = np.asarray(x_C, float)
+        th = np.clip((0.5 * (x[..., 0] + x[..., 1]) - T_lo) / (T_hi - T_lo), -0.5, 1.5)[..., None]
+        return np.where(lower, self.w * (1.0 - th), np.where(upper, self.w * th, self.w))
+
     def parts(self, x_C):
         """Weighted loss parts (..., n_parts) [W] at coupled temperatures (..., n_x) [°C]."""
-        return np.einsum("k,...kp->...p", self.w, self.source.parts(self._stack(x_C)))
+        if self.film is None:
+            return np.einsum("k,...kp->...p", self.w, self.source.parts(self._stack(x_C)))
+        return np.einsum("...k,...kp->...p", self.weights(x_C), self.source.parts(self._stack(x_C)))
 
     def parts_of(self, r, shape):
         """The weighted loss parts (``shape`` + (n_parts,)) [W] of a result of :meth:`result` (the parts
@@ -172,10 +192,13 @@ class StackedBlend:
         """The alternatives' results with power, torque, breakdown and contact powers weighted (the
         per-contact arrays keep the alternatives' axis)."""
         r = self.source.result(self._stack(x_C))
+        w = self.weights(x_C)
 
         def wsum(v):
             v = np.asarray(v, float)
-            return np.tensordot(v, self.w, axes=([-1], [0])) if v.shape[-1:] == (self.K,) else v
+            if v.shape[-1:] != (self.K,):
+                return v
+            return np.tensordot(v, w, axes=([-1], [0])) if self.film is None else (v * w).sum(axis=-1)
         return dataclasses.replace(r, P_W=wsum(r.P_W), torque_Nm=wsum(r.torque_Nm),
                                    breakdown_W={k: wsum(v) for k, v in r.breakdown_W.items()},
                                    contact_W={k: wsum(v) for k, v in r.contact_W.items()})

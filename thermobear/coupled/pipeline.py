@@ -14,6 +14,7 @@ solution the model choice computed), or the film load model at a film temperatur
 """
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -29,7 +30,8 @@ from thermobear.models import DryRow, moments, plan, refuse_unloaded_thrust
 from thermobear.scene import Scene
 
 __all__ = ["Family", "families", "dry_loads", "film_temperature_C", "closed_form_axial", "stack_loads", "family_loads",
-           "family_film_loads", "family_contacts", "scene_load", "scene_contacts", "film_scene_load"]
+           "family_film_loads", "family_contacts", "stack_key", "stack_families", "concat_loads", "SWITCHED", "scene_load",
+           "scene_contacts", "film_scene_load"]
 
 
 def film_temperature_C(scene: Scene) -> float:
@@ -268,13 +270,62 @@ def family_loads(fam: Family, T_film_C=None) -> LoadDistribution:
     return load_distribution(sc.bearing, Fa=Fa, Fr=Fr, M=M, stiffness=stiff, refuse_overload=False, **F5)
 
 
-def family_contacts(fam: Family, load: LoadDistribution) -> ContactSet:
-    """Temperature-independent contact data of a family (ellipses, kinematics), batch (B,)."""
+def family_contacts(fam: Family, load: LoadDistribution, centrifugal=None) -> ContactSet:
+    """Temperature-independent contact data of a family (ellipses, kinematics), batch (B,); ``centrifugal``:
+    one flag per point where the points' loads come from different forms (:func:`stack_families`), default
+    the family's (F_c on the outer contacts unless the high-speed form put it in the ball equilibrium)."""
     sc, m = fam.scene, fam.models
+    cf = m["high_speed"][0] != "yes" if centrifugal is None else centrifugal
     return prepare_contacts(sc.bearing, fam.values("Fa"), fam.values("Fr"), fam.values("n_rpm"),
                             M=None if sc.M is None else fam.values("M"), rotating=sc.rotating,
-                            hertz_method=m["hertz"][0], centrifugal=m["high_speed"][0] != "yes", load=load,
-                            control=m["kinematics"][0])
+                            hertz_method=m["hertz"][0], centrifugal=cf, load=load, control=m["kinematics"][0])
+
+
+#: The model choices in which the alternatives of a point across a switch band differ (:data:`~thermobear.models.
+#: BLEND_BANDS`): families that differ only in these share contact model, losses and network, and are solved
+#: stacked on the batch axis (:func:`stack_families`).
+SWITCHED = ("high_speed", "load_model")
+
+
+def stack_key(fam: Family):
+    """What the families of one stacked solve share: everything of a family but the switched choices."""
+    return _key(fam.scene, {k: v for k, v in fam.models.items() if k not in SWITCHED})
+
+
+def stack_families(fams) -> tuple:
+    """(one Family over the points of ``fams`` in order, (B,) flags of F_c on the outer contact): families of
+    one :func:`stack_key`, each with its own loads, solved as one batch.  The stack's ``models`` are the
+    first family's (the choices the families share are read from it; the switched ones are per family)."""
+    if len(fams) == 1:
+        f = fams[0]
+        return f, f.models["high_speed"][0] != "yes"
+    cf = np.concatenate([np.full(f.B, f.models["high_speed"][0] != "yes") for f in fams])
+    return Family(scenes=sum((f.scenes for f in fams), ()), index=sum((f.index for f in fams), ()),
+                  models=fams[0].models, dry=sum((f.dry for f in fams), ())), (bool(cf[0]) if cf.all() or not cf.any()
+                                                                               else cf)
+
+
+def concat_loads(loads, sizes) -> LoadDistribution:
+    """One batched load distribution from batched ones (``sizes``: their batch sizes), along the batch axis; a
+    field that is one number in a part (e.g. no moment) is repeated over its points."""
+    if len(loads) == 1:
+        return loads[0]
+    out = {}
+    for f in dataclasses.fields(LoadDistribution):
+        vals = [getattr(ld, f.name) for ld in loads]
+        if f.name == "psi":
+            out[f.name] = vals[0]
+        elif f.name in ("residual", "iterations"):
+            out[f.name] = max(vals)
+        elif all(v is None for v in vals):
+            out[f.name] = None
+        elif all(np.ndim(v) == 0 for v in vals) and len({float(v) for v in vals}) == 1:
+            out[f.name] = vals[0]
+        else:
+            tail = next(np.shape(v)[1:] for v in vals if np.ndim(v) > 0)
+            out[f.name] = np.concatenate([np.broadcast_to(np.asarray(v, float), (B,) + tail)
+                                          for v, B in zip(vals, sizes)])
+    return LoadDistribution(**out)
 
 
 def _one(scene: Scene, models=None):

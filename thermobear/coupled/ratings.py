@@ -39,7 +39,8 @@ from thermobear.contact.fits import operating_clearance
 from thermobear.contact.geometry import BallBearing
 from thermobear.errors import InputError
 from thermobear.loads import loads_text
-from thermobear.rating.iso16281 import reference_life
+from thermobear.rating.iso16281 import rating_angle, reference_life
+from thermobear.rating.iso76 import static_equivalent_load
 from thermobear.rating.iso281 import (A_ISO_MAX, basic_rating_life, contamination_factor, fatigue_load_limit,
                                       life_modification_factor, reference_viscosity, viscosity_ratio)
 from thermobear.rating.life import equivalent_loads, stated_ratings
@@ -59,9 +60,10 @@ def _static(scene):
     return C, C0, P, P0
 
 
-def check_static_safety(scene) -> None:
+def check_static_safety(scene, C0=None) -> None:
     """Refuse (InputError, before any solve) a scene whose static safety s0 = C0/P0 is below the refused limit
-    (:data:`thermobear.validity.LIMITS` ``s0``), naming the loads, the limit and the bearing's C0.
+    (:data:`thermobear.validity.LIMITS` ``s0``), naming the loads, the limit and the bearing's C0 (``C0`` [N]: its
+    stated or ISO 76 rating, :func:`~thermobear.rating.life.stated_ratings`, where the caller has it, e.g. once for the scenes of one bearing).
 
     >>> import thermobear as tb
     >>> s = tb.load_scene(tb.example_path("oil_bath_6208.toml"))
@@ -75,7 +77,8 @@ def check_static_safety(scene) -> None:
     b = scene.bearing
     if b.kind == "thrust" and (scene.Fr or scene.Fz):
         return                                    # no ISO P0 for it: the load solvers say what is wrong
-    _, C0, _, P0 = _static(scene)
+    C0 = stated_ratings(b)[1] if C0 is None else C0
+    P0 = float(static_equivalent_load(float(np.hypot(scene.Fr, scene.Fz)), float(scene.Fa), rating_angle(b), b.kind))
     if P0 > 0:
         check("s0", C0 / P0, _LOAD_FIELDS, warn=False, given=loads_text(scene.Fa, scene.Fr, None, scene.Fz),
               what=f"P0 = {P0:.4g} N against C0 = {C0:.4g} N of {b.name or 'the bearing'}, ISO 76")

@@ -26,6 +26,14 @@ temperature of the solution: an outer fixed point on that temperature (a few loa
 round's film load distributions solved for the family's points in one batched call, from the last ones, first the
 dry loads of the model choice).  Its dry start: the point's dry alternative where that is solved too.
 
+The model alternatives of the points (two to four inside a switch band, :mod:`thermobear.coupled.blend`) form
+families that differ only in the load model and the high-speed form: they share the contact model, the losses
+and the network, and are solved **stacked** on the batch axis (:func:`~thermobear.coupled.pipeline.stack_key`;
+Newton method: :mod:`thermobear.coupled.newton`): the dry families with the film families' dry starts in one
+batched Newton iteration, then each round of the film fixed points of every film family in one more — loads
+solved per family, contact sets, networks and iterations shared.  A point's iterates are its own, so the
+stacked answers are those of each family solved alone.
+
 The returned states are full network solves with the converged losses: their energy balance
 closes to machine precision, and their coupled temperatures are checked against the fixed point.
 """
@@ -33,374 +41,99 @@ from __future__ import annotations
 
 import dataclasses
 import warnings
-from dataclasses import dataclass, field
+from typing import NamedTuple
 
 import numpy as np
 
 from thermobear.arrays import take
 from thermobear.coupled.blend import blend_states
 from thermobear.coupled.clearance import clearance_loop
-from thermobear.coupled.fixedpoint import solve_coupled
-from thermobear.coupled.pipeline import (Family, families, family_contacts, family_film_loads, family_loads,
-                                        film_temperature_C, split_failures)
-from thermobear.coupled.limits import emit, family_warnings, overloads
+from thermobear.coupled.newton import _C0, T_LIMIT_K, _newton, _physical_path, _slopes  # noqa: F401
+from thermobear.coupled.pipeline import (Family, concat_loads, families, family_contacts, family_film_loads,
+                                        family_loads, film_temperature_C, split_failures, stack_families, stack_key)
+from thermobear.coupled.limits import emit, overloads
 from thermobear.coupled.ratings import check_static_safety
 from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepare, prepared_for
-from thermobear.errors import (ExtrapolationWarning, InputError, NoConvergence, OutsideValidity, SolverError,
-                               ThermalRunaway)
+from thermobear.coupled.states import Answer, SteadyState, finish
+from thermobear.errors import ExtrapolationWarning, InputError, NoConvergence, OutsideValidity, SolverError
 from thermobear.loads.api import check_loads, contact_bounds
 from thermobear.models import plan_many
+from thermobear.rating.life import stated_ratings
 from thermobear.scene import Scene
-from thermobear.thermal.solve import batched_solve, heat_paths, solve_linear
-from thermobear.validity import T_LUBRICANT_REFUSE_C
 
 __all__ = ["SteadyState", "steady_state", "steady_states", "T_LIMIT_K"]
 
-_C0 = 273.15
-T_LIMIT_K = T_LUBRICANT_REFUSE_C[1] + _C0     #: an equilibrium beyond the lubricant's limit is runaway
 _FILM_TOL_K = 0.1                              #: film temperature fixed point tolerance [K]
 _FILM_MAXITER = 10
 SCENE_LOADS = ("operation.Fa_N", "operation.Fr_N", "operation.M_Nm", "operation.n_rpm")
 
 
-@dataclass
-class SteadyState:
-    """Coupled steady state of one operating point.
+class _Part(NamedTuple):
+    """The points of one family in a stacked solve (:func:`_solve_rows`)."""
 
-    Attributes
-    ----------
-    T_C : dict                node → temperature [°C]
-    T_ball_C : float          ball temperature [°C]
-    P_W : float               total power loss [W]
-    losses : LossResult       losses at equilibrium (the SKF model: its result), a property
-    torque_Nm : float         friction torque on the rotating ring [N m]
-    breakdown_W : dict        loss family → power [W]
-    T_contacts_C : float      mean contact temperature [°C] (ball with each race)
-    iterations : int          fixed-point iterations
-    residual_K : float        last temperature change [K]
-    energy_balance_W : float  Σ sources − Σ heat to fixed nodes and the oil stream [W]
-    heat_flows_W : dict       element → heat flow [W] (signed along the element's ``between``)
-    heat_sources_W : dict     loss part → {node: W}: where each part of the loss heats the network
-    heat_out_W : dict         path (element) → W leaving the network through it into a fixed-temperature
-                              node or the oil stream (positive: out); sums to the heat of the sources
-    heat_out_to : dict        path → the boundary it leads to (a fixed node, or ``"stream"``)
-    models_used : dict        model → (choice, reason)
-    history : list            convergence history
-    clearance_um : dict       with ``models.clearance`` mounted / operating: the clearances [µm] (unmounted,
-                              mounted, operating at these temperatures, ``used`` by the loads), the fits, the
-                              fixed point's iterations, residual and history (:mod:`thermobear.coupled.clearance`);
-                              None: the bearing's own clearance (the ratings report its operating value)
-    roles : dict              role → node (ball, inner, outer, oil)
-    warnings : list           OutsideValidity warnings of this point's answer
-    """
-
-    T_C: dict
-    T_ball_C: float
-    P_W: float
-    iterations: int
-    residual_K: float
-    energy_balance_W: float
-    heat_flows_W: dict
-    models_used: dict
-    history: list = field(default_factory=list)
-    roles: dict = field(default_factory=dict)
-    warnings: list = field(default_factory=list)
-    torque_Nm: float = 0.0
-    breakdown_W: dict = field(default_factory=dict)
-    T_contacts_C: float = 0.0
-    heat_sources_W: dict = field(default_factory=dict)
-    heat_out_W: dict = field(default_factory=dict)
-    heat_out_to: dict = field(default_factory=dict)
-    batch_losses: object = field(default=None, repr=False)
-    row: int | None = None
-    clearance_um: dict | None = None
-
-    @property
-    def losses(self):
-        """The losses at equilibrium (:class:`~thermobear.losses.LossResult`; the SKF model: its
-        result): this point's slice of its family's batched result, taken when asked for."""
-        if self.row is None:
-            return self.batch_losses
-        return take(self.batch_losses, self.row, np.shape(self.batch_losses.P_W)[0])
+    fam: Family
+    load: object                   # their (batched) LoadDistribution
+    T0: object = None              # (B, n) Newton starts [K] (rows of NaN: the network's), or None
+    tol_K: float | None = None     # their Newton tolerance [K] (None: the solve's)
 
 
-class _Histories:
-    """Per-point convergence histories of the batched Newton iteration, kept as arrays per iteration
-    and turned into a point's list of dicts only when asked for (most points never are)."""
-
-    def __init__(self, B: int):
-        self.records: list = []            # per iteration: (iteration, points, x [K], step, mean step, P [W])
-        self.explicit: dict = {}           # point → a history given whole (the heating path)
-        self.B = B
-
-    def add(self, it, idx, x, s, mean, P):
-        pos = np.full(self.B, -1)
-        pos[idx] = np.arange(idx.size)
-        self.records.append((it, pos.tolist(), x, s.tolist(), mean.tolist(), P.tolist()))
-
-    def __getitem__(self, b: int) -> list:
-        if b in self.explicit:
-            return self.explicit[b]
-        return [dict(iteration=it, T_K=x[pos[b]].copy(), residual_K=s[pos[b]], mean_residual_K=mean[pos[b]],
-                     P_W=P[pos[b]], step="newton") for it, pos, x, s, mean, P in self.records if pos[b] >= 0]
-
-
-@dataclass
-class _Newton:
-    """Per-point outcome of the batched Newton iteration."""
-
-    T: np.ndarray            # (B, n) node temperatures [K]
-    x: np.ndarray            # (B, n_x) coupled temperatures [K]
-    done: np.ndarray         # (B,) converged to a stable equilibrium
-    its: np.ndarray          # (B,) iterations
-    step: np.ndarray         # (B,) last step [K]
-    gain: np.ndarray         # (B,) loop gain
-    history: object          # per point (indexable), list of dicts
-    method: tuple = ()       # per point, how it converged
-
-
-def _slopes(src, cp: Coupling, x_C, h=0.05):
-    """Loss parts P (B, n_parts) [W] at x [°C] and ∂P/∂x (B, n_parts, n_x) [W/K] by forward differences."""
-    if src.diagonal:       # each part reads its own temperature: x and x + h in one evaluation
-        Pm = src.parts(np.stack([x_C, x_C + h]))
-        return Pm[0], (Pm[1] - Pm[0])[:, :, None] * cp.incidence()[None] / h
-    n = x_C.shape[-1]
-    X = np.repeat(x_C[None], n + 1, axis=0)
-    for k in range(n):
-        X[k + 1, :, k] += h
-    Pm = src.parts(X)
-    return Pm[0], np.stack([(Pm[k + 1] - Pm[0]) / h for k in range(n)], axis=-1)
-
-
-def _loop_gain(Aff, SdP, C):
-    """Largest real eigenvalue of C A_ff⁻¹ S ∂P/∂x per point (B,) (``SdP`` = S ∂P/∂x, (B, n_free, n_x));
-    NaN where it is not defined."""
-    M = C @ batched_solve(Aff, SdP)
-    ok = np.isfinite(M).all(axis=(1, 2))
-    out = np.full(M.shape[0], np.nan)
-    if ok.any():
-        out[ok] = np.linalg.eigvals(M[ok]).real.max(axis=1)
-    return out
-
-
-def _newton(net, src, cp: Coupling, tol_K, T0=None, maxiter: int = 30, h: float = 0.05) -> _Newton:
-    """Batched Newton on the free node temperatures (see the module docstring)."""
-    B, free, fixed = net.B, ~net.fixed, net.fixed
-    T = net.initial_T_K()
-    if T0 is not None:              # a start per point (rows of NaN: the default start)
-        T0 = np.asarray(T0, float)
-        T = np.where(np.isfinite(T0).all(axis=1, keepdims=True) & ~fixed, T0, T)
-    Tb = T[:, fixed]
-    done, bad = np.zeros(B, bool), np.zeros(B, bool)
-    its, step, gain = np.zeros(B, int), np.full(B, np.inf), np.full(B, np.nan)
-    hist = _Histories(B)
-    dG = None
-    for it in range(1, maxiter + 1):
-        live = ~(done | bad)
-        if not live.any():
-            break
-        x = T[:, free] @ cp.C.T
-        P, dP = _slopes(src, cp, x - _C0, h)
-        fresh = live & (step > 1.0)
-        if dG is None or fresh.any():  # the slopes of the conductances re-evaluated while a point's step > 1 K;
-            G, dG_new = net.dconductances(T)     # below, each point keeps its last ones (same as alone)
-            dG = dG_new if dG is None else [(k, m, np.where(fresh, dn, do)) for (k, m, dn), (_, _, do) in zip(dG_new, dG)]
-        else:
-            G = net.conductances(T)
-        Aff, Afb = net.blocks(G)
-        Tf = T[:, free]
-        SdP = cp.S @ dP                                          # (B, n_free, n_x)
-        R = (Aff @ Tf[..., None] + Afb @ Tb[..., None])[..., 0] - P @ cp.S.T
-        J = Aff + net.dAT_free(T, dG) - SdP @ cp.C
-        dT = batched_solve(J, -R)
-        finite = np.isfinite(dT).all(axis=1)
-        bad |= live & ~finite
-        live &= finite
-        dT = np.where(live[:, None], dT, 0.0)
-        s = np.where(live, np.abs(dT).max(axis=1, initial=0.0), np.inf)
-        # the loop gain at the first iterate, whenever the step does not shrink, and at the answer
-        check = live & ((it == 1) | (s >= step) | (s <= tol_K))
-        if check.any():
-            gain = np.where(check, _loop_gain(Aff, SdP, cp.C), gain)
-        step = np.where(live, s, step)
-        dT *= np.minimum(1.0, 50.0 / np.maximum(np.abs(dT).max(axis=1, initial=0.0), 1e-300))[:, None]
-        idx = np.flatnonzero(live)
-        hist.add(it, idx, x[idx], s[idx], (dT[idx] @ cp.C.T).mean(axis=1), P[idx].sum(axis=1))
-        T[:, free] = Tf + dT
-        its = np.where(live, it, its)
-        conv = live & (s <= tol_K)
-        done |= conv
-        bad |= live & ~conv & ((gain >= 1.0) | (~np.isfinite(gain)) | ((T[:, free] @ cp.C.T).max(axis=1) > T_LIMIT_K))
-    done &= np.isfinite(gain) & (gain < 1.0)
-    return _Newton(T=T, x=T[:, free] @ cp.C.T, done=done, its=its, step=step, gain=gain, history=hist,
-                   method=("newton",) * B)
-
-
-def _sources_matrix(net, cp: Coupling, parts) -> np.ndarray:
-    """(B, n) node sources [W] of the loss parts (B, n_parts)."""
-    P = np.zeros((net.B, len(net.nodes)))
-    P[:, ~net.fixed] = parts @ cp.S.T
-    return P
-
-
-def _physical_path(net, src, cp: Coupling, tol_K) -> _Newton:
-    """One point (B = 1) decided on the heating path (:func:`~thermobear.coupled.fixedpoint.solve_coupled`:
-    Anderson mixing, then Picard from ambient); raises ThermalRunaway or NoConvergence."""
-    free, fixed = ~net.fixed, net.fixed
-    state = {"T": net.initial_T_K()}
-    Tb = state["T"][:, fixed]
-
-    def update(x_K):
-        parts = src.parts((np.asarray(x_K) - _C0)[None])
-        P = _sources_matrix(net, cp, parts)
-        Aff, Afb = net.blocks(net.conductances(state["T"]))   # linearised at the last iterate
-        Tf = batched_solve(Aff, P[:, free] - np.einsum("bij,bj->bi", Afb, Tb))
-        state["T"] = np.where(fixed, state["T"], 0.0)
-        state["T"][:, free] = Tf
-        return (Tf @ cp.C.T)[0], float(parts.sum())
-
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", ExtrapolationWarning)
-        res = solve_coupled(update, (state["T"][:, free] @ cp.C.T)[0], tol_K=tol_K, T_limit_K=T_LIMIT_K)
-    x = res.T_K[None]
-    T = state["T"]
-    hist = _Histories(1)
-    hist.explicit[0] = res.history
-    return _Newton(T=T, x=x, done=np.array([True]), its=np.array([res.iterations]), step=np.array([res.residual_K]),
-                   gain=np.array([res.loop_gain]), history=hist, method=(res.method,))
-
-
-def _models_used(fam: Family, r, template, cp: Coupling) -> dict:
-    """The models a family's answers used (shared by its points; the thermal entry per point:
-    :func:`_point_models_used`)."""
-    used = dict(getattr(r, "models_used", {}))
-    used.update(fam.models)
-    lm, hs = fam.models["load_model"][0], fam.models["high_speed"][0]
-    used["load_distribution"] = (
-        "closed form, all balls equal" if lm == "closed_form" else
-        "Jones–Harris high-speed (centrifugal, gyroscopic)" if hs == "yes" else "Jones–Harris low-speed, rigid rings",
-        fam.models["load_model"][1])
-    if fam.scene.bearing.kind != "thrust":
-        used["centrifugal"] = (("in the ball equilibrium", "high-speed form") if hs == "yes" else
-                               ("F_c/cos α on the outer contact", "balls outside the load zone ride on the outer race"))
-    else:
-        used["centrifugal"] = ("none", "thrust bearing")
-    used["thermal"] = (f"network {template.name}", "")
-    used["node_roles"] = (cp.roles, "contact temperature = mean of ball and race nodes (seed 004 §4.5)")
-    return used
-
-
-def _point_models_used(used: dict, nw: _Newton, b: int) -> dict:
-    out = dict(used)
-    out["thermal"] = (used["thermal"][0], f"fixed point on {nw.x.shape[1]} coupled temperatures: {nw.method[b]}, "
-                                          f"{int(nw.its[b])} iterations, loop gain {nw.gain[b]:.2f}")
-    return out
-
-
-def _finish(fam: Family, net, src, cp: Coupling, template, nw: _Newton, tol_K) -> list:
-    """Per point: a SteadyState from a full network solve with the converged losses, a SolverError,
-    or None (not converged: the caller decides it on the heating path)."""
-    free = ~net.fixed
-    x_C = nw.x - _C0
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", ExtrapolationWarning)
-        r = src.result(x_C)
-    parts = src.parts_of(r, x_C.shape[:-1])
-    st = solve_linear(net, _sources_matrix(net, cp, parts), nw.T)
-    gap = np.abs(st.T_K[:, free] @ cp.C.T - nw.x).max(axis=1)
-    bal = np.atleast_1d(st.balance_W)
-    flows = {k: np.atleast_1d(v) for k, v in st.flows_W.items()}
-    paths = heat_paths(net, np.column_stack([np.broadcast_to(flows[e.name], (fam.B,)) for e in net.elements]))
-    warned = family_warnings(fam.scenes, r, x_C, nw.done & (nw.x.max(axis=1) <= T_LIMIT_K))
-    B = fam.B
-    used = _models_used(fam, r, template, cp)
-    contacts = getattr(r, "contacts", None)
-    T_cont = (0.5 * (np.asarray(contacts["inner"]["T_C"], float).mean(axis=-1)
-                     + np.asarray(contacts["outer"]["T_C"], float).mean(axis=-1)) if contacts else
-              0.5 * (x_C[:, 0] + x_C[:, 1]))
-
-    def rows(d):              # {key: (B,) or scalar} → per point, its {key: float}
-        cols = np.reshape([np.broadcast_to(np.asarray(v, float), (B,)) for v in d.values()], (len(d), B)).T
-        return [dict(zip(d, c)) for c in cols.tolist()]
-    T_all, bd_all, flows_all = (st.T_K - _C0).tolist(), rows(r.breakdown_W), rows(flows)
-    out_all = rows({k: q for k, (_, q) in paths.items()})
-    sources_all = _part_sources(cp, parts, [n for n, f in zip(net.nodes, free) if f])
-    P_all, M_all, T_cont_all, bal_all = (np.broadcast_to(np.asarray(v, float), (B,)).tolist()
-                                         for v in (r.P_W, r.torque_Nm, T_cont, bal))
-    out = []
-    for b in range(B):
-        if not nw.done[b]:
-            out.append(None)
-            continue
-        T_C = dict(zip(net.nodes, T_all[b]))
-        hot = {k: v for k, v in T_C.items() if v + _C0 > T_LIMIT_K}
-        if hot:
-            node = max(hot, key=hot.get)
-            out.append(ThermalRunaway(
-                f"no equilibrium below {T_LIMIT_K - _C0:g} °C (the lubricant's limit): the network cannot shed "
-                f"{parts[b].sum():.4g} W even at that temperature ({node} would reach {hot[node]:.4g} °C); more "
-                "cooling, less speed or a thinner oil is needed", iterations=int(nw.its[b]),
-                residual=float(nw.step[b]), last=T_C, history=nw.history[b]))
-            continue
-        if gap[b] > max(10 * tol_K, 1e-4):
-            out.append(NoConvergence(f"coupled temperatures of the final network solve differ from the fixed point "
-                                     f"by {gap[b]:.3g} K", iterations=int(nw.its[b]), residual=float(gap[b]),
-                                     last=T_C, history=nw.history[b]))
-            continue
-        out.append(SteadyState(
-            T_C=T_C, T_ball_C=T_C[cp.roles["ball"]], P_W=P_all[b], iterations=int(nw.its[b]),
-            residual_K=max(float(nw.step[b]), float(gap[b])), energy_balance_W=bal_all[b],
-            heat_flows_W=flows_all[b], models_used=_point_models_used(used, nw, b), history=nw.history[b],
-            roles=dict(cp.roles), warnings=warned[b], torque_Nm=M_all[b], breakdown_W=bd_all[b],
-            T_contacts_C=T_cont_all[b], batch_losses=r, row=b, heat_sources_W=sources_all[b],
-            heat_out_W=out_all[b], heat_out_to={k: to for k, (to, _) in paths.items()}))
-    return out
-
-
-def _part_sources(cp: Coupling, parts, free_nodes) -> list:
-    """Per point, loss part → {node: W}: the split of each part (parts (B, n_parts) [W]) over the
-    network's free nodes."""
-    per_part = []
-    for j, name in enumerate(cp.parts):
-        nz = np.flatnonzero(cp.S[:, j])
-        q = (cp.S[nz, j][None, :] * parts[:, j][:, None]).tolist()
-        per_part.append((name, [free_nodes[i] for i in nz], q))
-    return [{name: dict(zip(nodes, q[b])) for name, nodes, q in per_part} for b in range(parts.shape[0])]
-
-
-def _solve_loaded(fam: Family, load, template, cp: Coupling, tol_K, T0=None) -> list:
-    """Steady states of a family with given (batched) loads: Newton for all points, the heating
-    path for the points it cannot decide.  Per point a SteadyState or a SolverError."""
-    contacts = family_contacts(fam, load)
+def _solve_rows(parts, template, cp: Coupling, tol_K, lazy: bool = False) -> list:
+    """Steady states of families with given (batched) loads, stacked on the batch axis: ``parts``
+    :class:`_Part` s (or their tuples) of one :func:`~thermobear.coupled.pipeline.stack_key`
+    (e.g. the alternatives of points across a model switch: their own loads, the same contact model, losses and
+    network).  One contact set, one network and one Newton iteration for all their points (each point's
+    iterates its own, as solved alone), the heating path for the points it cannot decide.  Per part, per
+    point a SteadyState (``lazy``: its :class:`~thermobear.coupled.states.Answer`) or a SolverError."""
+    parts = [_Part(*p) for p in parts]
+    fams, sizes = [p.fam for p in parts], [p.fam.B for p in parts]
+    fam, cf = stack_families(fams)
+    load = concat_loads([p.load for p in parts], sizes)
+    T0 = None if all(p.T0 is None for p in parts) else np.concatenate(
+        [np.full((p.fam.B, len(template.nodes)), np.nan) if p.T0 is None else np.asarray(p.T0, float) for p in parts])
+    tol = np.concatenate([np.full(p.fam.B, tol_K if p.tol_K is None else p.tol_K) for p in parts])
+    contacts = family_contacts(fam, load, cf)
     over = overloads(fam.scenes, contacts)
-    if over:                        # refused points apart; the others solved as a family of their own
-        keep = [b for b in range(fam.B) if b not in over]
-        out = [over.get(b) for b in range(fam.B)]
-        if keep:
-            sub = Family(scenes=tuple(fam.scenes[b] for b in keep), index=tuple(fam.index[b] for b in keep),
-                         models=fam.models, dry=tuple(fam.dry[b] for b in keep))
-            T0k = None if T0 is None else np.asarray(T0)[keep]
-            for b, r in zip(keep, _solve_loaded(sub, take(load, np.array(keep), fam.B), template, cp, tol_K, T0k)):
-                out[b] = r
+    cut = np.cumsum([0] + sizes)
+    if over:                        # refused points apart; the others solved as a stack of their own
+        out, kept = [[over.get(a + b) for b in range(B)] for a, B in zip(cut, sizes)], []
+        for k, ((f, ld, t, tk), a, B) in enumerate(zip(parts, cut, sizes)):
+            keep = [b for b in range(B) if a + b not in over]
+            if keep:
+                sub = Family(scenes=tuple(f.scenes[b] for b in keep), index=tuple(f.index[b] for b in keep),
+                             models=f.models, dry=tuple(f.dry[b] for b in keep))
+                kept.append((k, keep, _Part(sub, take(ld, np.array(keep), B),
+                                            None if t is None else np.asarray(t)[keep], tk)))
+        for (k, keep, _), res in zip(kept, _solve_rows([p for _, _, p in kept], template, cp, tol_K, lazy) if kept
+                                     else ()):
+            for b, r in zip(keep, res):
+                out[k][b] = r
         return out
     net = family_network(fam, template, contacts)
     src = loss_sources(fam, contacts)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ExtrapolationWarning)
-        nw = _newton(net, src, cp, tol_K, T0)
-    out = _finish(fam, net, src, cp, template, nw, tol_K)
-    for b in [b for b, o in enumerate(out) if o is None]:
-        sub = Family(scenes=(fam.scenes[b],), index=(fam.index[b],), models=fam.models, dry=(fam.dry[b],))
-        load_b = take(load, b, fam.B) if fam.B > 1 else load
-        cs_b = family_contacts(sub, _batched(load_b))
+        nw = _newton(net, src, cp, tol if tol.min() < tol.max() else float(tol[0]), T0)
+    out = finish(fam, net, src, cp, template, nw, tol, fams)
+    for row in [r for r, o in enumerate(out) if o is None]:
+        k = int(np.searchsorted(cut, row, side="right")) - 1
+        (f, ld, _, _), b = parts[k], row - cut[k]
+        sub = Family(scenes=(f.scenes[b],), index=(f.index[b],), models=f.models, dry=(f.dry[b],))
+        cs_b = family_contacts(sub, _batched(take(ld, b, f.B) if f.B > 1 else ld))
         net_b, src_b = family_network(sub, template, cs_b), loss_sources(sub, cs_b)
         try:
-            nw_b = _physical_path(net_b, src_b, cp, tol_K)
+            nw_b = _physical_path(net_b, src_b, cp, float(tol[row]))
         except SolverError as exc:
-            out[b] = exc
+            out[row] = exc
             continue
-        out[b] = _finish(sub, net_b, src_b, cp, template, nw_b, tol_K)[0]
-    return out
+        out[row] = finish(sub, net_b, src_b, cp, template, nw_b, tol[row:row + 1])[0]
+    if not lazy:
+        out = [o.state() if isinstance(o, Answer) else o for o in out]
+    return [out[a:a + B] for a, B in zip(cut, sizes)]
+
+
+def _solve_loaded(fam: Family, load, template, cp: Coupling, tol_K, T0=None) -> list:
+    """:func:`_solve_rows` of one family."""
+    return _solve_rows([(fam, load, T0)], template, cp, tol_K)[0]
 
 
 def _batched(load):
@@ -408,124 +141,196 @@ def _batched(load):
     return take(load, np.array([0]), 1) if np.ndim(load.delta_a) == 0 else load
 
 
-def _solve_family(fam: Family, tol_K, load=None, prepared=None, starts=None) -> list:
-    """Per point of a family: a SteadyState or the exception that stopped it (``starts``: the film
-    load model's dry starts already solved, :func:`_film_family`)."""
+def _node_T(st, template) -> np.ndarray:
+    """Node temperatures [K] of a SteadyState or an :class:`~thermobear.coupled.states.Answer`."""
+    return st.node_T() if isinstance(st, Answer) else np.array([st.T_C[n] + _C0 for n in template.nodes])
+
+
+def _is_film(fam: Family) -> bool:
+    return fam.models["load_model"][0] == "film"
+
+
+class _FilmRows:
+    """The film load model's fixed point on the film temperature for the points of a family (module
+    docstring): a dry start, then film load updates, each followed by a steady state started from the last,
+    until the film temperature moves by ≤ ``_FILM_TOL_K``.  Driven round by round (:func:`_solve_stack`), so
+    that the rounds of several families share one stacked solve."""
+
+    def __init__(self, fam: Family, template):
+        self.fam, self.template = fam, template
+        self.pos = {i: k for k, i in enumerate(fam.index)}
+        self.T_ref = np.array([film_temperature_C(s) for s in fam.scenes])
+        self.start = np.full((fam.B, len(template.nodes)), np.nan)
+        self.out, self.hist, self.film = [None] * fam.B, [[] for _ in range(fam.B)], {}
+        self.live, self.k, self.results = np.arange(fam.B), 0, {}
+
+    def started(self, i, st: SteadyState):
+        """Point ``i``'s dry start: the answer of its dry twin or of its own dry start."""
+        self.T_ref[self.pos[i]], self.start[self.pos[i]] = st.T_contacts_C, _node_T(st, self.template)
+
+    def dry(self, index) -> Family:
+        """The family of the dry starts of points ``index`` (the dry Jones–Harris loads of the model choice)."""
+        f, rows = self.fam, [self.pos[i] for i in index]
+        return Family(scenes=tuple(f.scenes[b] for b in rows), index=tuple(index), dry=tuple(f.dry[b] for b in rows),
+                      models={**f.models, "load_model": ("jones_harris", "start of the film fixed point")})
+
+    def round(self) -> list:
+        """The next load update: ``[(sub-family, film loads, Newton starts), ...]`` of the live points (a
+        sub-family whose loads failed goes to :attr:`results`); the loads start from the last ones."""
+        self.k += 1
+        f, live, film = self.fam, self.live, self.film
+        sub = Family(scenes=tuple(f.scenes[j] for j in live), index=tuple(f.index[j] for j in live),
+                     models=f.models, dry=tuple(f.dry[j] for j in live))
+        last = (take(film[live[0]][0], np.array([film[j][1] for j in live]), film[live[0]][2])
+                if self.k > 1 and len({id(film[j][0]) for j in live}) == 1 else None)
+        out, self.results = [], {}
+        for part, ld in split_failures(family_film_loads, sub, self.T_ref[live], last):
+            idx = [self.pos[i] for i in part.index]
+            if isinstance(ld, Exception):
+                self.results.update((j, ld) for j in idx)
+                continue
+            ld, solution = ld
+            film.update({j: (solution, r, part.B) for r, j in enumerate(idx)})
+            out.append((part, ld, self.start[idx]))
+        return out
+
+    def update(self):
+        """The load update's answers (:attr:`results`, point → SteadyState or exception): the points whose
+        film temperature settled are done, the others go on from their answer."""
+        nxt, k, hs = [], self.k, self.fam.models["high_speed"][0] == "yes"
+        for j in self.live:
+            st = self.results[j]
+            if not isinstance(st, Answer):
+                self.out[j] = st
+                continue
+            T_new, h = st.T_contacts_C, self.hist[j]
+            h.append(dict(iteration=k, T_film_C=float(self.T_ref[j]), T_contacts_C=T_new, P_W=st.P_W))
+            if abs(T_new - self.T_ref[j]) <= _FILM_TOL_K:
+                st = st.state()
+                st.models_used["load_distribution"] = (
+                    "film in the contact law (" + ("high-speed, thermobear.loads.highspeed" if hs
+                                                   else "low-speed, thermobear.loads.film") + ")",
+                    f"films at the mean contact temperature {self.T_ref[j]:.2f} °C ({k} load updates from "
+                    f"{h[0]['T_film_C']:.2f} °C)")
+                st.history = list(st.history) + [dict(e, step="film") for e in h]
+                self.out[j] = st
+                continue
+            self.T_ref[j], self.start[j] = T_new, _node_T(st, self.template)
+            nxt.append(j)
+        self.live = np.array(nxt, int)
+        if k < _FILM_MAXITER:
+            return
+        for j in self.live:
+            h = self.hist[j]
+            self.out[j] = NoConvergence(
+                f"film load model: the film temperature did not settle within {_FILM_TOL_K} K in {_FILM_MAXITER} "
+                f"load updates (last {h[-2]['T_contacts_C']:.2f} → {h[-1]['T_contacts_C']:.2f} °C)",
+                iterations=_FILM_MAXITER, residual=abs(h[-1]["T_contacts_C"] - h[-1]["T_film_C"]), history=h)
+        self.live = self.live[:0]
+
+
+def _solve_stack(fams, tol_K, template, cp: Coupling, res: list, starts_of, twin_of: dict):
+    """The families of one stack key (:func:`~thermobear.coupled.pipeline.stack_key`), solved together into
+    ``res`` (job → answer): the dry families and the film families' dry starts in one stacked solve, then the
+    film fixed points' load updates, each round one stacked solve of every film family's live points.
+
+    ``starts_of(fam)``: point → ``(state, twin)`` of the answers solved so far (:func:`_starts`): with ``twin``
+    the point's dry start (its models on the dry Jones–Harris loads, to this tolerance), otherwise another
+    alternative of the point, whose node temperatures start its dry start's Newton iteration (the same
+    equilibrium, reached in fewer steps); ``twin_of``: job → its dry twin's job.  A dry start is solved to
+    1e-3 K (or ``tol_K`` if larger), from the network's start where no other alternative is solved yet."""
+    films = [_FilmRows(f, template) for f in fams if _is_film(f)]
+    here = {i for f in fams if not _is_film(f) for i in f.index}      # solved in the first stacked solve
+    tried: set = set()
+    for first in (True, False):
+        parts, who = [], []
+        for f in [f for f in fams if not _is_film(f)] if first else ():
+            for sub, ld in split_failures(family_loads, f):
+                if isinstance(ld, Exception):
+                    for i in sub.index:
+                        res[i] = ld
+                    continue
+                parts.append((sub, ld, None))
+                who.append(None)
+        for fs in films:
+            given, cold = starts_of(fs.fam), {}
+            for i in [i for i in fs.fam.index if i not in tried]:
+                got = given.get(i)
+                if got is not None and got[1]:
+                    fs.started(i, got[0])
+                elif not (first and twin_of.get(i) in here):      # (else: its twin's answer, after this solve)
+                    cold[i] = np.full(len(template.nodes), np.nan) if got is None else _node_T(got[0], template)
+                else:
+                    continue
+                tried.add(i)
+            for sub, ld in split_failures(family_loads, fs.dry(list(cold))) if cold else ():
+                if not isinstance(ld, Exception):   # (no dry equilibrium to start from: the film model decides alone)
+                    parts.append(_Part(sub, ld, np.array([cold[i] for i in sub.index]), max(tol_K, 1e-3)))
+                    who.append(fs)
+        for p, fs, out in zip(parts, who, _solve_rows(parts, template, cp, tol_K, lazy=True) if parts else ()):
+            for i, r in zip(p[0].index, out):
+                if fs is None:
+                    res[i] = r.state() if isinstance(r, Answer) else r
+                elif isinstance(r, Answer):
+                    fs.started(i, r)
+    while active := [fs for fs in films if fs.live.size]:
+        parts, who = [], []
+        for fs in active:
+            for p in fs.round():
+                parts.append(p)
+                who.append(fs)
+        for p, fs, out in zip(parts, who, _solve_rows(parts, template, cp, tol_K, lazy=True) if parts else ()):
+            fs.results.update(zip((fs.pos[i] for i in p[0].index), out))
+        for fs in active:
+            fs.update()
+    for fs in films:
+        for i, r in zip(fs.fam.index, fs.out):
+            res[i] = r
+
+
+def _solve_family(fam: Family, tol_K, load=None, prepared=None, ctx=None) -> list:
+    """Per point of a family: a SteadyState or the exception that stopped it (``ctx``: ``(res, starts_of,
+    twin_of)`` of :func:`_solve_stack`; with injected ``load`` none)."""
     try:
         pre = prepared_for(fam.scene, prepared if prepared is not None and prepared.serves(fam.scene) else None)
     except InputError as exc:
         return [exc] * fam.B
-    template, cp = pre.template, pre.coupling
     if load is not None:
-        return _solve_loaded(fam, load, template, cp, tol_K)
-    if fam.models["load_model"][0] == "film":
-        return _film_family(fam, template, cp, tol_K, starts)
-    out = [None] * fam.B
-    pos = {i: k for k, i in enumerate(fam.index)}
-    for sub, ld in split_failures(family_loads, fam):
-        res = [ld] * sub.B if isinstance(ld, Exception) else _solve_loaded(sub, ld, template, cp, tol_K)
-        for i, r in zip(sub.index, res):
-            out[pos[i]] = r
-    return out
+        return _solve_loaded(fam, load, pre.template, pre.coupling, tol_K)
+    _solve_stack([fam], tol_K, pre.template, pre.coupling, *ctx)
+    return [ctx[0][i] for i in fam.index]
 
 
-def _points_apart(fam: Family, tol_K, load, prepared, starts=None) -> list:
+def _points_apart(fam: Family, tol_K, load, prepared, ctx=None) -> list:
     """:func:`_solve_family`; when a point's iterate leaves what the models can represent (an
     InputError, e.g. a lubricant past its refusal temperature), each point again on its own, so
     that the error is that point's and the others are solved."""
     try:
-        return _solve_family(fam, tol_K, load, prepared, starts)
+        return _solve_family(fam, tol_K, load, prepared, ctx)
     except InputError as exc:
         if fam.B == 1:
             return [exc]
     out = []
     for b in range(fam.B):
         one = Family(scenes=(fam.scenes[b],), index=(fam.index[b],), models=fam.models, dry=(fam.dry[b],))
-        out += _points_apart(one, tol_K, None if load is None else _batched(take(load, b, fam.B)), prepared, starts)
+        out += _points_apart(one, tol_K, None if load is None else _batched(take(load, b, fam.B)), prepared, ctx)
     return out
 
 
-def _node_T(st: SteadyState, template) -> np.ndarray:
-    return np.array([st.T_C[n] + _C0 for n in template.nodes])
-
-
-def _film_family(fam: Family, template, cp: Coupling, tol_K, starts=None) -> list:
-    """The film load model's fixed point on the film temperature for a family (module docstring):
-    a dry start, then film load updates, each followed by a steady state started from the last.
-
-    ``starts``: point (``fam.index``) → ``(state, twin)``, a steady state of the same operating point the
-    caller solved already: with ``twin`` the same models but the dry Jones–Harris loads, to a tolerance at
-    least as tight as the start's (that point's dry start, not solved again); otherwise another model
-    alternative of the point, whose node temperatures start the Newton iteration of its dry start (the
-    same equilibrium, reached in fewer steps)."""
-    B = fam.B
-    pos = {i: k for k, i in enumerate(fam.index)}
-    starts = {i: v for i, v in (starts or {}).items() if i in pos}
-    T_ref = np.array([film_temperature_C(s) for s in fam.scenes])
-    start = np.full((B, len(template.nodes)), np.nan)
-    near = start.copy()                   # the dry start's Newton start (NaN: the network's own)
-    for i, (st, twin) in starts.items():
-        if twin:
-            T_ref[pos[i]], start[pos[i]] = st.T_contacts_C, _node_T(st, template)
-        else:
-            near[pos[i]] = _node_T(st, template)
-    cold = [b for b, i in enumerate(fam.index) if not (i in starts and starts[i][1])]
-    dry = Family(scenes=tuple(fam.scenes[b] for b in cold), index=tuple(fam.index[b] for b in cold),
-                 dry=tuple(fam.dry[b] for b in cold),
-                 models={**fam.models, "load_model": ("jones_harris", "start of the film fixed point")})
-    for sub, ld in split_failures(family_loads, dry) if cold else ():
-        if isinstance(ld, Exception):
-            continue          # no dry equilibrium to start from: the film model decides on its own
-        rows = [pos[i] for i in sub.index]
-        for i, st in zip(sub.index, _solve_loaded(sub, ld, template, cp, max(tol_K, 1e-3), near[rows])):
-            if isinstance(st, SteadyState):
-                T_ref[pos[i]], start[pos[i]] = st.T_contacts_C, _node_T(st, template)
-    out, hist, film = [None] * B, [[] for _ in range(B)], {}
-    live = np.arange(B)
-    for k in range(1, _FILM_MAXITER + 1):
-        if live.size == 0:
-            break
-        sub = Family(scenes=tuple(fam.scenes[j] for j in live), index=tuple(fam.index[j] for j in live),
-                     models=fam.models, dry=tuple(fam.dry[j] for j in live))
-        results = {}           # (the film loads start from the last ones: the same loads, other films)
-        last = (take(film[live[0]][0], np.array([film[j][1] for j in live]), film[live[0]][2])
-                if k > 1 and len({id(film[j][0]) for j in live}) == 1 else None)
-        for part, ld in split_failures(family_film_loads, sub, T_ref[live], last):
-            idx = [pos[i] for i in part.index]
-            if not isinstance(ld, Exception):
-                ld, solution = ld
-                film.update({j: (solution, r, part.B) for r, j in enumerate(idx)})
-            res = [ld] * part.B if isinstance(ld, Exception) else _solve_loaded(part, ld, template, cp, tol_K,
-                                                                                start[idx])
-            results.update(zip(idx, res))
-        nxt = []
-        for j in live:
-            st = results[j]
-            if not isinstance(st, SteadyState):
-                out[j] = st
-                continue
-            T_new = st.T_contacts_C
-            hist[j].append(dict(iteration=k, T_film_C=float(T_ref[j]), T_contacts_C=T_new, P_W=st.P_W))
-            if abs(T_new - T_ref[j]) <= _FILM_TOL_K:
-                st.models_used["load_distribution"] = (
-                    "film in the contact law (" + ("high-speed, thermobear.loads.highspeed"
-                                                   if fam.models["high_speed"][0] == "yes"
-                                                   else "low-speed, thermobear.loads.film") + ")",
-                    f"films at the mean contact temperature {T_ref[j]:.2f} °C ({k} load updates from "
-                    f"{hist[j][0]['T_film_C']:.2f} °C)")
-                st.history = list(st.history) + [dict(h, step="film") for h in hist[j]]
-                out[j] = st
-                continue
-            T_ref[j], start[j] = T_new, _node_T(st, template)
-            nxt.append(j)
-        live = np.array(nxt, int)
-    for j in live:
-        h = hist[j]
-        out[j] = NoConvergence(f"film load model: the film temperature did not settle within {_FILM_TOL_K} K in "
-                               f"{_FILM_MAXITER} load updates (last {h[-2]['T_contacts_C']:.2f} → "
-                               f"{h[-1]['T_contacts_C']:.2f} °C)", iterations=_FILM_MAXITER,
-                               residual=abs(h[-1]["T_contacts_C"] - h[-1]["T_film_C"]), history=h)
-    return out
+def _solve_group(fams, tol_K, load, prepared, ctx):
+    """The families of one stack key into ``ctx[0]`` (job → answer): stacked (:func:`_solve_stack`); where an
+    InputError stops the stack, family by family (the dry ones first), then point by point."""
+    if load is None and len(fams) > 1:
+        try:
+            pre = prepared_for(fams[0].scene, prepared if prepared is not None and prepared.serves(fams[0].scene)
+                               else None)
+            _solve_stack(fams, tol_K, pre.template, pre.coupling, *ctx)
+            return
+        except InputError:
+            pass
+    for fam in sorted(fams, key=_is_film):
+        for i, r in zip(fam.index, _points_apart(fam, tol_K, None if load is None else _batched(load), prepared, ctx)):
+            ctx[0][i] = r
 
 
 def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> list:
@@ -595,19 +400,19 @@ def _steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> 
         warnings.simplefilter("ignore", OutsideValidity)
         shared: list = [prepared] if prepared is not None else []   # one prepare per machine of this call
         twins = _dry_twins(owner, plans)
-        # the dry families first: their answers are the dry starts of the film load model's fixed points
-        for fam in sorted(fams, key=lambda f: f.models["load_model"][0] == "film"):
-            pre = next((p for p in shared if p.serves(fam.scene)), None)
-            if pre is None and fam.scene.network is not None:
+        ctx = (res, lambda fam: _starts(fam, twins, owner, alts_of, plans, res), twins)
+        groups: dict = {}       # the alternatives of a point share a stack key: each group solved on its own
+        for fam in fams:
+            groups.setdefault(stack_key(fam), []).append(fam)
+        for group in groups.values():
+            pre = next((p for p in shared if p.serves(group[0].scene)), None)
+            if pre is None and group[0].scene.network is not None:
                 try:
-                    pre = prepare(fam.scene)
+                    pre = prepare(group[0].scene)
                     shared.append(pre)
                 except InputError:
                     pre = None              # the family's own solve names the error per point
-            starts = _starts(fam, twins, owner, alts_of, plans, res)
-            for j, r in zip(fam.index, _points_apart(fam, tol_K, None if load is None else _batched(load), pre,
-                                                     starts)):
-                res[j] = r
+            _solve_group(group, tol_K, load, pre, ctx)
     for i, ks in alts_of.items():
         out[i] = blend_states([(owner[k][1], res[k]) for k in ks], SteadyState)
     return out
@@ -622,7 +427,7 @@ def _refused(scenes) -> list:
     for k, sc in enumerate(scenes):
         groups.setdefault((sc.bearing, sc.M is None, sc.My is None), []).append(k)
     for (brg, no_M, no_My), ks in groups.items():
-        bounds, checked = contact_bounds(brg), False
+        bounds, checked, C0 = contact_bounds(brg), False, None
         if len(ks) > 1:
             def col(attr):
                 return np.array([getattr(scenes[k], attr) for k in ks], float)
@@ -637,7 +442,9 @@ def _refused(scenes) -> list:
             try:
                 if not checked:
                     check_loads(brg, sc.Fa, sc.Fr, sc.M, sc.n_rpm, Fz=sc.Fz, My=sc.My, names=SCENE_LOADS, bounds=bounds)
-                check_static_safety(sc)
+                if C0 is None and not (brg.kind == "thrust" and (sc.Fr or sc.Fz)):
+                    C0 = stated_ratings(brg)[1]            # (the one bearing's C0, for its scenes)
+                check_static_safety(sc, C0)
             except InputError as exc:
                 out[k] = exc
     return out
@@ -645,15 +452,15 @@ def _refused(scenes) -> list:
 
 def _dry_twins(owner, plans) -> dict:
     """Job → job: for a film-load-model alternative of a point, its alternative with the same model
-    choices but the dry Jones–Harris loads (the film fixed point's dry start), where the point has one."""
-    def sig(models):
-        return tuple(sorted((k, repr(v[0])) for k, v in models.items() if k != "load_model"))
-    dry = {(i, sig(m)): j for j, ((i, _), (m, _)) in enumerate(zip(owner, plans))
+    choices but the dry Jones–Harris loads (the film fixed point's dry start), where the point has one (the
+    alternatives of a point differ only in the switched choices, :data:`~thermobear.coupled.pipeline.SWITCHED`:
+    the same high-speed form)."""
+    dry = {(i, m["high_speed"][0]): j for j, ((i, _), (m, _)) in enumerate(zip(owner, plans))
            if m["load_model"][0] == "jones_harris"}
     out = {}
     for j, ((i, _), (m, _)) in enumerate(zip(owner, plans)):
-        if m["load_model"][0] == "film" and (i, sig(m)) in dry:
-            out[j] = dry[(i, sig(m))]
+        if m["load_model"][0] == "film" and (i, m["high_speed"][0]) in dry:
+            out[j] = dry[(i, m["high_speed"][0])]
     return out
 
 

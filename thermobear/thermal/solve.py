@@ -39,6 +39,7 @@ import scipy.sparse as sp
 
 from thermobear.errors import InputError, NoConvergence
 from thermobear.lazy import lazy_module
+from thermobear.thermal.boundary import LinearBoundary  # noqa: F401  (re-exported: the transient's fixed_C)
 from thermobear.thermal.network import ThermalNetwork
 
 integrate = lazy_module("scipy.integrate")  # BDF, Radau: loaded by the first transient
@@ -281,6 +282,16 @@ class TransientResult:
     network: ThermalNetwork = field(default=None, repr=False)
     integrator: object = field(default=None, repr=False)
 
+    def end_rate_K_s(self) -> np.ndarray:
+        """dT/dt of every node at the end of the run, (B, n) [K/s] (fixed nodes 0): the slope of the
+        integrator's interpolant over its last step (no balance evaluated); zeros for a run without a step."""
+        out = np.zeros(self.T_K.shape[1:])
+        sv = None if self.integrator is None else self.integrator.solver
+        if sv is not None and sv.t_old is not None:
+            dense, eps = sv.dense_output(), 1e-3 * (sv.t - sv.t_old)
+            out[:, ~self.network.fixed] = ((dense(sv.t) - dense(sv.t - eps)) / eps).reshape(out.shape[0], -1)
+        return out
+
 
 @dataclass(frozen=True)
 class _Boundary:
@@ -339,7 +350,7 @@ def _start(net, T0_C, bnd=None):
 def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_C=None, breakpoints=(),
                     fixed_C: Callable | None = None, t_eval=None, rtol: float = 1e-8, atol: float = 1e-8,
                     method: str = "BDF", max_step: float = np.inf, stop: Callable | None = None,
-                    continue_from: TransientResult | None = None) -> TransientResult:
+                    continue_from: TransientResult | None = None, until: Callable | None = None) -> TransientResult:
     r"""Transient temperatures of a thermal network at its operating points.
 
     Parameters
@@ -367,6 +378,10 @@ def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_
     method : str                ``"BDF"`` or ``"Radau"``
     stop : callable             optional ``stop() -> bool`` checked between steps: True ends the run
                                 early, keeping what was integrated (``completed`` False)
+    until : callable            optional ``until(t, T_K) -> bool`` of the run's time [s] and node temperatures
+                                (B, n) [K] after each step: True ends the run at that step (completed, its last time — reported
+                                also with ``t_eval`` — before ``t_end``; e.g. where a temperature leaves the
+                                range its sources hold for)
     continue_from : TransientResult
                                 a completed run this one continues: from its end state (``T0_C``
                                 None), its clock starting at 0 there, the integrator keeping its step
@@ -422,11 +437,14 @@ def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_
         y = integ.solver.y.copy()
     nfev0 = integ.nfev
     for a, b in zip(edges[:-1], edges[1:]):
-        sol, ok = integ.segment(net, sources, C, bnd, a, b, y, t_eval, stop, fresh=not (a == 0.0 and continue_from))
+        sol, ok = integ.segment(net, sources, C, bnd, a, b, y, t_eval, stop, fresh=not (a == 0.0 and continue_from),
+                                until=until)
         y = sol.y[:, -1].copy()
         pieces.append((sol, a, b))
         if not ok:
             completed = False
+            break
+        if sol.until:
             break
     t_all, T_all = _collect(pieces, net, t_eval, B, nf, bnd)
     P, report = sources(t_all, T_all) if t_all.size else (None, {})
@@ -510,15 +528,19 @@ class _Integrator:
 
         else the integration restarts there (order 1, history discarded), as at a breakpoint."""
         sv = self.solver
+        if net is self.net and sources is self.sources and bnd.fixed_C is None and self.bnd.fixed_C is None:
+            self._set(net, sources, C, bnd, a, b, sv.t - a)      # the same problem goes on: no kink
+            return True
         f_old = self.rhs(sv.t, sv.y)
         self._set(net, sources, C, bnd, a, b, sv.t - a)
         f_new = self.rhs(sv.t, sv.y)
         scale = self.atol + self.rtol * np.abs(sv.y)
         return sv.step_size * np.linalg.norm((f_new - f_old) / scale) / math.sqrt(scale.size) <= 1.0
 
-    def segment(self, net, sources, C, bnd, a, b, y0, t_eval, stop, fresh=True):
+    def segment(self, net, sources, C, bnd, a, b, y0, t_eval, stop, fresh=True, until=None):
         """Integrate [a, b] of a run: (solution, finished).  ``fresh`` False: continue the integrator from
-        its last state (``y0`` is that state) with this problem, its clock going on."""
+        its last state (``y0`` is that state) with this problem, its clock going on.  ``until(t, T_K)`` True after
+        a step ends the segment there (its state the solution's last point)."""
         if not (fresh or self.solver is None) and self._kink_within_tolerance(net, sources, C, bnd, a, b):
             # the bound of the integration moved on: the one change of scipy's OdeSolver state a
             # continuation needs (history, step size and Jacobian are kept)
@@ -542,79 +564,30 @@ class _Integrator:
             if te is None:
                 ts.append(t_now)
                 ys.append(solver.y.copy())
-                continue
-            hi = np.searchsorted(te, t_now, side="right")
-            if hi > k:                                # requested times inside the step: dense output
-                dense = solver.dense_output()
-                for t in te[k:hi]:
-                    ts.append(float(t))
-                    ys.append(solver.y.copy() if t == t_now else dense(t + self.offset))
-                k = hi
+            else:
+                hi = np.searchsorted(te, t_now, side="right")
+                if hi > k:                            # requested times inside the step: dense output
+                    dense = solver.dense_output()
+                    for t in te[k:hi]:
+                        ts.append(float(t))
+                        ys.append(solver.y.copy() if t == t_now else dense(t + self.offset))
+                    k = hi
+            if until is not None and solver.status == "running" and until(t_now, self._state(solver.t, solver.y)[1]):
+                if ts[-1] != t_now:                   # the run ends at this step: its state is the last point
+                    ts.append(t_now)
+                    ys.append(solver.y.copy())
+                return _Segment(np.array(ts), np.array(ys).T, until=True), True
         return _Segment(np.array(ts), np.array(ys).T), True
-
-
-@dataclass(frozen=True)
-class LinearBoundary:
-    r"""Logged temperatures of fixed nodes as a ``fixed_C(t)`` of :func:`solve_transient`: linear
-    between the samples, refused outside them (a log is not extrapolated).
-
-    .. math:: T(t) = T_k + (T_{k+1} - T_k) \frac{t - t_k}{t_{k+1} - t_k}, \quad t_k \le t \le t_{k+1}
-
-    Attributes
-    ----------
-    t_s : ndarray       sample times [s], strictly increasing
-    T_C : dict          node → temperatures at t_s [°C]
-    source : str        what the samples are (named in errors, e.g. the log's column)
-
-    Examples
-    --------
-    >>> b = LinearBoundary.of([0.0, 60.0], {"ambient": [20.0, 26.0]})
-    >>> b(15.0)
-    {'ambient': 21.5}
-    """
-
-    t_s: np.ndarray
-    T_C: dict
-    source: str = "boundary"
-
-    @classmethod
-    def of(cls, t_s, T_C: dict, source: str = "boundary") -> "LinearBoundary":
-        """Checked: times finite and strictly increasing (at least two), values finite [°C]."""
-        t = np.asarray(t_s, float)
-        if t.ndim != 1 or t.size < 2 or not np.all(np.isfinite(t)) or np.any(np.diff(t) <= 0):
-            raise InputError(f"{source}: t_s", None, "at least two times, finite and strictly increasing [s]")
-        vals = {}
-        for node, v in T_C.items():
-            a = np.asarray(v, float)
-            if a.shape != t.shape or not np.all(np.isfinite(a)):
-                raise InputError(f"{source}: {node}", None, f"{t.size} finite temperatures, one per time [°C]")
-            vals[node] = a
-        return cls(t_s=t, T_C=vals, source=source)
-
-    @property
-    def span_s(self) -> tuple:
-        """(first, last) sample time [s]."""
-        return float(self.t_s[0]), float(self.t_s[-1])
-
-    def shifted(self, dt_s: float) -> "LinearBoundary":
-        """The same samples with times t_s − dt_s (a run that starts at dt_s on the samples' clock)."""
-        return LinearBoundary(t_s=self.t_s - dt_s, T_C=self.T_C, source=self.source)
-
-    def __call__(self, t) -> dict:
-        t0, t1 = self.span_s
-        tol = 1e-9 * max(t1 - t0, 1.0)
-        if not (t0 - tol <= t <= t1 + tol):
-            raise InputError(self.source, float(t), f"outside the logged times [{t0:g}, {t1:g}] s: "
-                             "a logged boundary is not extrapolated")
-        return {n: float(np.interp(t, self.t_s, v)) for n, v in self.T_C.items()}
 
 
 @dataclass
 class _Segment:
-    """Times and states (n_free·B, n_t) of one integrated segment."""
+    """Times and states (n_free·B, n_t) of one integrated segment (``until``: ended early by the run's
+    ``until``, its last state kept in the output)."""
 
     t: np.ndarray
     y: np.ndarray
+    until: bool = False
 
 
 def _collect(pieces, net, t_eval, B, nf, bnd):
@@ -624,6 +597,7 @@ def _collect(pieces, net, t_eval, B, nf, bnd):
     ts, Ts = [], []
     for sol, a, b in pieces:
         keep = np.ones(sol.t.size, bool) if t_eval is None else np.isin(sol.t, t_eval)
+        keep[-1] |= sol.until                         # a run ended by ``until``: its last state
         tt, ys = sol.t[keep], sol.y[:, keep]
         if ts and ts[-1].size and tt.size and tt[0] == ts[-1][-1]:
             tt, ys = tt[1:], ys[:, 1:]
