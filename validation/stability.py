@@ -103,7 +103,9 @@ def jones_harris_high_speed():
 
 # ------------------------------------------------------------------------------------------- C
 COUPLED_G = (0.3, 1.0)
-COUPLED_LUBS = ("seed002-pg2", "seed004-mineral", "seed002-mg1")
+#: oils spanning the viscosities of seed 002's base oils (PG2 32.5, MG1 230 cSt at 40 °C) around seed 004's; under the
+#: scene's oil jet (a grease is refused under an oil supply)
+COUPLED_LUBS = ("iso-vg-32-pao", "seed004-mineral", "iso-vg-220-mineral")
 COUPLED_N = (1000.0, 2000.0, 4000.0, 6000.0, 8000.0, 12000.0, 16000.0)
 
 
