@@ -9,8 +9,9 @@ fixed point re-solves the loads), with Eyring traction and the inlet-heating and
 — ≈ 4.6 s (×7, both measured in one run), the nominal point alone ≈ 0.1 s.
 Timed on one core: a child process with single-threaded BLAS (``OPENBLAS_NUM_THREADS=1`` … set before
 numpy loads — BLAS threads sharing one pinned core slow the least-squares ranking tenfold) pinned to one
-CPU where the OS allows it; median of ``repeat`` runs after one warm-up run; the stages (sampling,
-solving, statistics) are timed apart on one run.  Never asserted in tests.
+CPU where the OS allows it; the CPU time of the process (``time.process_time``, as ``bench_all.py``: the
+wall time of a core shared with other work swings ×2), median of ``repeat`` runs after one warm-up run;
+the stages (sampling, solving, statistics) are timed apart on one run.  Never asserted in tests.
 
 Run:  python validation/bench_uncertainty.py [N]      (``bench(n)`` returns the numbers as a dict)
 """
@@ -57,17 +58,17 @@ def one_core():
 
 def _stages(scene, n) -> dict:
     """Seconds of each stage of one run (the same work as steady_state(..., uncertainty=n))."""
-    t = [time.perf_counter()]
+    t = [time.process_time()]
     nominal_steady_state(scene)
-    t.append(time.perf_counter())
+    t.append(time.process_time())
     sm = sample_scenes(scene, n, seed=0)
-    t.append(time.perf_counter())
+    t.append(time.process_time())
     res = tb.steady_states(sm.scenes)
-    t.append(time.perf_counter())
+    t.append(time.process_time())
     out = steady_outputs(res)
     bands(out)
     ranking(sm.inputs, sm.X, out)
-    t.append(time.perf_counter())
+    t.append(time.process_time())
     names = ("nominal", "sampling", "batched solve", "bands and ranking")
     return {k: t[i + 1] - t[i] for i, k in enumerate(names)}
 
@@ -89,7 +90,7 @@ def _bench_here(n: int, repeat: int) -> dict:
 
         def run():
             holder["r"] = tb.steady_state(scene, uncertainty=n)
-        t = median_time(run, repeat)
+        t = median_time(run, repeat, clock=time.process_time)
         stages = _stages(scene, n)
     r = holder["r"]
     return {"n": n, "seconds": t, "target_s": TARGET_S if n == 1000 else TARGET_S * n / 1000,
@@ -100,7 +101,7 @@ def _bench_here(n: int, repeat: int) -> dict:
 def report(d: dict) -> str:
     """The numbers as a few lines of text."""
     lines = [f"{d['n']} samples of the seed-004 steady state ({d['inputs']} estimated inputs, bearing geometry in "
-             f"{d['groups']} families): {d['seconds']:.2f} s on one core (CPU {d['cpu']}), median of {d['repeat']} — "
+             f"{d['groups']} families): {d['seconds']:.2f} s CPU on one core (CPU {d['cpu']}), median of {d['repeat']} — "
              f"target {d['target_s']:g} s {'met' if d['met'] else 'MISSED'}; {d['per_sample_ms']:.2f} ms per sample; "
              f"{d['failed']} failed samples",
              "stages of one run: " + ", ".join(f"{k} {v:.2f} s" for k, v in d["stages_s"].items())]
