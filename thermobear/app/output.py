@@ -10,8 +10,11 @@ import csv
 import io
 import json
 import os
+import signal
 import sys
+import threading
 import time
+from contextlib import contextmanager
 from pathlib import Path
 
 import numpy as np
@@ -123,6 +126,21 @@ def flatten(d, pre=""):
     return out
 
 
+@contextmanager
+def _signals_held():
+    """SIGINT and SIGTERM held (delivered on exit) where the platform can block signals (POSIX main thread)."""
+    block = getattr(signal, "pthread_sigmask", None)
+    held = {signal.SIGINT, signal.SIGTERM}
+    if block is None or threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    old = block(signal.SIG_BLOCK, held)
+    try:
+        yield
+    finally:
+        block(signal.SIG_SETMASK, old)
+
+
 class RowWriter:
     """Rows written as they finish: CSV (``index`` column first) and/or JSON lines, each flushed.
 
@@ -136,6 +154,12 @@ class RowWriter:
         self.count = 0
 
     def write(self, index: int, row: dict):
+        """Write one row and count it as one step: an interrupt (SIGINT, SIGTERM) arriving meanwhile is held until
+        both are done, so that ``count`` is always the number of rows in the files."""
+        with _signals_held():
+            self._write(index, row)
+
+    def _write(self, index: int, row: dict):
         flat = flatten(row)
         if self.csv_path is not None:
             if self._csv is None:
