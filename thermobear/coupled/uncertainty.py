@@ -181,8 +181,8 @@ def uncertain_inputs(scene: Scene, prepared=None) -> list:
     if isinstance(scene.network, Machine):
         unc = estimates.uncertainty()
         for key in estimates.sampled_keys(scene.network):
-            out.append(Input(f"builder.{key}", unc[key], _nominal_draw(unc[key], _builder_value(scene.network, key)),
-                             level="family"))
+            nominal = estimates.machine_value(scene.network, key)
+            out.append(Input(f"builder.{key}", unc[key], _nominal_draw(unc[key], nominal), level="family"))
     brg = scene.bearing
     for key, u in brg.uncertainty.items():
         if key in _RATINGS:
@@ -191,18 +191,6 @@ def uncertain_inputs(scene: Scene, prepared=None) -> list:
         v = getattr(brg, attr) if attr else None
         out.append(Input(f"bearing.{key}", u, _nominal_draw(u, None if v is None else v * scale), level="family"))
     return out
-
-
-def _builder_value(m: Machine, key: str) -> float:
-    """The value of a builder's estimate a machine uses [the key's unit]: the housing's emissivity, the
-    grease fill and the mounting joint as the machine holds them, the constants as drawn or the data's."""
-    if key == "emissivity":
-        return m.housing.emissivity
-    if key == "grease_fill" and m.lubrication.grease_fill is not None:
-        return m.lubrication.grease_fill
-    if key == "R_mount_m2K_W" and m.housing.mounting_h_W_m2K is not None:
-        return 1.0 / m.housing.mounting_h_W_m2K
-    return estimates.value(m, key)
 
 
 def design(n: int, d: int, seed=None, method: str = "lhs") -> np.ndarray:
@@ -301,7 +289,7 @@ def _family_at(scene: Scene, ins, draws, cells=None) -> tuple:
     for i, x in zip(ins, draws):
         kind, key = i.address.split(".", 1)
         if kind == "builder":
-            built[key] = float(i.uncertainty.apply(_builder_value(net, key), x))
+            built[key] = float(i.uncertainty.apply(estimates.machine_value(net, key), x))
             continue
         attr, scale = _BEARING_KEYS[key]
         vals[key] = i.uncertainty.apply(getattr(brg, attr) * scale, x)
