@@ -122,6 +122,14 @@ def test_solver_error_exit_3(capsys, monkeypatch):
     assert code == 3 and err.strip() == "error: ThermalRunaway: losses grow faster than dissipation above 180 °C"
 
 
+def test_runaway_of_a_built_oil_bath_network_is_exit_3_not_bad_input(capsys):
+    # 6208 in an oil bath at 30 000 rpm: the heating path passes the oil's 250 °C limit; a bath node
+    # beyond it on the way is the runaway's (exit 3, named, 250 °C in the reason), not bad input (exit 2)
+    code, out, err = run(capsys, "run", EX / "oil_bath_6208.toml", "--set", "n_rpm=30000", "--json")
+    assert code == 3 and err.startswith("error: ThermalRunaway:") and "250 °C" in err and "nan" not in err
+    assert out == ""
+
+
 def test_console_script_bad_input_no_traceback(tmp_path):
     exe = shutil.which("thermobear", path=str(Path(sys.executable).parent))
     cmd = [exe] if exe else [sys.executable, "-m", "thermobear.app.cli"]

@@ -538,3 +538,19 @@ def test_heat_balance_jacobian_matches_finite_differences():
         col = (flux(Tp) - flux(Tm)) / (2 * h)
         np.testing.assert_allclose(J[:, :, c], col[:, free], rtol=1e-4, atol=1e-6 * np.abs(J).max())
     assert np.abs(net.dAT_free(T, dG)).max() > 1e-3       # the dependence is not negligible here
+
+
+def test_free_convection_in_oil_at_the_oils_limits_is_finite_and_continuous():
+    # a node at the lubricant's refusal temperature (an iterate of a coupled solve may reach it): the
+    # expansion coefficient's ±1 K difference stays inside the oil's range instead of refusing it
+    from thermobear.lubrication.lubricant import lubricant
+    from thermobear.validity import T_LUBRICANT_REFUSE_C
+    oil = lubricant("iso-vg-68-mineral")
+    e = el.Convection("c", "convection", ("a", "b"), 0, 1, {"correlation": "plate_vertical", "fluid": "oil",
+                                                            "L_m": 0.05, "A_m2": 1e-3})
+    lo, hi = (t + 273.15 for t in T_LUBRICANT_REFUSE_C)
+    for T_wall, T_fluid, T_in in ((hi + 10.0, hi, hi - 0.5), (lo, lo - 10.0, lo + 0.5)):
+        G = e.conductance(np.array([T_wall]), np.array([T_fluid]), oil)
+        G_in = e.conductance(np.array([T_in + 5.0]), np.array([T_in - 5.0]), oil)
+        assert np.isfinite(G).all() and G[0] > 0
+        assert G[0] == pytest.approx(G_in[0], rel=0.05)     # no step at the limit

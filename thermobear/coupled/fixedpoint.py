@@ -298,14 +298,14 @@ def _picard(ev, x0, damping, *, tol_K, tol_energy_rel, max_iter, T_limit_K, labe
             lam = loop_gain(lambda T: ev(T)[0], x)
             accelerating = bool(np.isfinite(lam) and lam >= 1.0)
         if heating and (np.max(g) > T_limit_K or accelerating):
-            gain = steps[-1] / steps[-2] if len(steps) >= 2 else float("nan")
-            why = (f"passes the limit T_limit_K = {T_limit_K:g} K" if np.max(g) > T_limit_K
-                   else "heats by growing increments")
+            why = (f"passes the limit T_limit_K = {T_limit_K:g} K ({T_limit_K - 273.15:g} °C)"
+                   if np.max(g) > T_limit_K else "heats by growing increments")
+            gain = (f"path gain dT_out/dT_in ≈ {steps[-1] / steps[-2]:.3g}" if len(steps) >= 2 and steps[-2]
+                    else f"{len(steps)} heating step{'s' * (len(steps) != 1)}")
             raise ThermalRunaway(
                 f"thermal runaway: the heating path from T0 {why} (mean residual +{np.mean(f):.3g} K, "
-                f"path gain dT_out/dT_in ≈ {gain:.3g} ≥ 1: the losses grow faster with temperature than "
-                "the dissipation)", iterations=len(history), residual=float(np.max(np.abs(f))),
-                last=x, history=history)
+                f"{gain}: the losses grow faster with temperature than the dissipation)",
+                iterations=len(history), residual=float(np.max(np.abs(f))), last=x, history=history)
         x_new = x + damping * f
         steps.append(float(np.mean(x_new - x)))
         x = x_new

@@ -178,7 +178,8 @@ class Convection(Element):
         T_C = _oil_T(Tf)
         rho, cp, k = oil.rho(T_C), oil.cp(T_C), oil.k_th(T_C)
         nu = oil.nu(T_C) * 1e-6
-        beta = (oil.rho(T_C - 1.0) - oil.rho(T_C + 1.0)) / (2.0 * rho)      # −(1/ρ) dρ/dT
+        lo, hi = np.maximum(T_C - 1.0, T_LUBRICANT_REFUSE_C[0]), np.minimum(T_C + 1.0, T_LUBRICANT_REFUSE_C[1])
+        beta = (oil.rho(lo) - oil.rho(hi)) / ((hi - lo) * rho)      # −(1/ρ) dρ/dT, ±1 K inside the oil's range
         return {"k": k, "nu": nu, "Pr": nu * rho * cp / k, "beta": beta}
 
     def h(self, Ti, Tj, oil=None, shared=None):
