@@ -127,3 +127,50 @@ def test_speed_arrays_are_refused(scene):
     with pytest.raises(InputError) as e:
         scene_losses(scene.with_(T_C=50.0), n_rpm=np.array([3200.0, 4800.0]))
     assert e.value.field == "models.load_model"
+
+
+def _iterate_film(T_contacts, T0, n=20):
+    """The film fixed point's updates on a model answer ``T_contacts(T_film)`` [°C] from ``T0``."""
+    from thermobear.coupled.steady import _FILM_TOL_K, _film_jump, next_film_temperature
+    h, T = [], T0
+    for k in range(n):
+        h.append(dict(iteration=k + 1, T_film_C=T, T_contacts_C=T_contacts(T), P_W=1.0))
+        if abs(h[-1]["T_contacts_C"] - T) <= _FILM_TOL_K:
+            return T, h, None
+        jump = _film_jump(h)
+        if jump is not None:
+            return T, h, jump
+        T = next_film_temperature(h)
+    return T, h, None
+
+
+def test_film_fixed_point_is_substitution_while_it_contracts():
+    # gain −0.3: the plain substitution's own sequence, converged to the tolerance
+    T, h, jump = _iterate_film(lambda T: 50.0 - 0.3 * (T - 40.0), 20.0)
+    assert jump is None and abs(T - (50.0 + 12.0) / 1.3) < 0.1
+    assert all(b["T_film_C"] == a["T_contacts_C"] for a, b in zip(h[:-1], h[1:]))
+
+
+@pytest.mark.parametrize("gain", [-1.0, -1.5, -4.0])
+def test_film_fixed_point_converges_where_substitution_cannot(gain):
+    # a loop gain ≤ −1 (a 2-cycle or a divergence under substitution): the bracketed secant finds the root
+    root = 30.0
+    T, h, jump = _iterate_film(lambda T: root + gain * (T - root) + 0.02 * (T - root) ** 2, -10.0)
+    assert jump is None and abs(T - root) < 0.1 and len(h) <= 12
+
+
+def test_film_fixed_point_names_a_jump_of_the_answer():
+    # no root: the answer jumps across the film temperature 1.2 °C (two equilibria on either side)
+    T, h, jump = _iterate_film(lambda T: 10.0 if T < 1.2 else -9.0, -11.0)
+    assert jump is not None and "no film temperature fixed point" in jump.reason and jump.history
+
+
+def test_cold_started_oil_bath_is_a_named_jump_not_an_oscillation():
+    # 6208 in a bath at −30 °C: SKF's replenishment Φ_rs ≈ 0.003 makes the losses rise with temperature,
+    # so two equilibria lie on either side of a film temperature near 1 °C
+    from thermobear.errors import NoConvergence
+    s = tb.load_scene(tb.example_path("oil_bath_6208.toml")).with_(T_ambient_C=-30.0, T_oil_in_C=-30.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        with pytest.raises(NoConvergence, match="no film temperature fixed point"):
+            steady_state(s)

@@ -153,25 +153,36 @@ def _sources_matrix(net, cp: Coupling, parts) -> np.ndarray:
     return P
 
 
+_NETWORK_MAXITER = 50     #: passes of the network's conductances to its own temperatures in one heating-path update
+
+
 def _physical_path(net, src, cp: Coupling, tol_K) -> _Newton:
     """One point (B = 1) decided on the heating path (:func:`~thermobear.coupled.fixedpoint.solve_coupled`:
-    Anderson mixing, then Picard from ambient); raises ThermalRunaway or NoConvergence."""
+    Anderson mixing, then Picard from ambient); raises ThermalRunaway or NoConvergence.  Each update is
+    the network's steady state with the losses at the coupled temperatures, its temperature-dependent
+    conductances iterated to its own temperatures (else the update would depend on the last iterate's,
+    and a fixed point in the coupled temperatures need not be the network's)."""
     free, fixed = ~net.fixed, net.fixed
     state = {"T": net.initial_T_K()}
     Tb = state["T"][:, fixed]
 
     def update(x_K):
         parts = src.parts((np.asarray(x_K) - _C0)[None])
-        P = _sources_matrix(net, cp, parts)
-        Aff, Afb = net.blocks(net.conductances(state["T"]))   # linearised at the last iterate
-        Tf = batched_solve(Aff, P[:, free] - np.einsum("bij,bj->bi", Afb, Tb))
-        state["T"] = np.where(fixed, state["T"], 0.0)
-        state["T"][:, free] = Tf
+        P = _sources_matrix(net, cp, parts)[:, free]
+        for _ in range(_NETWORK_MAXITER):     # the network with these sources, its conductances at its own temperatures
+            T_was = state["T"][:, free]
+            Aff, Afb = net.blocks(net.conductances(state["T"]))
+            Tf = batched_solve(Aff, P - np.einsum("bij,bj->bi", Afb, Tb))
+            state["T"] = np.where(fixed, state["T"], 0.0)
+            state["T"][:, free] = Tf
+            if np.max(np.abs(Tf - T_was)) <= 1e-3 * tol_K:
+                break
         return (Tf @ cp.C.T)[0], float(parts.sum())
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ExtrapolationWarning)
         res = solve_coupled(update, (state["T"][:, free] @ cp.C.T)[0], tol_K=tol_K, T_limit_K=T_LIMIT_K)
+        update(res.T_K)             # the network at the answer (the loop gain's probes moved it)
     x = res.T_K[None]
     T = state["T"]
     hist = _Histories(1)

@@ -64,7 +64,8 @@ from thermobear.scene import Scene
 __all__ = ["SteadyState", "steady_state", "steady_states", "T_LIMIT_K"]
 
 _FILM_TOL_K = 0.1                              #: film temperature fixed point tolerance [K]
-_FILM_MAXITER = 10
+_FILM_MAXITER = 20
+_FILM_JUMP_K = 1e-3                            #: a bracket this narrow with answers apart by > the tolerance: a jump [K]
 SCENE_LOADS = ("operation.Fa_N", "operation.Fr_N", "operation.M_Nm", "operation.n_rpm")
 
 
@@ -150,6 +151,68 @@ def _is_film(fam: Family) -> bool:
     return fam.models["load_model"][0] == "film"
 
 
+def next_film_temperature(history) -> float:
+    r"""The next film temperature [°C] of a point's film fixed point, from its load updates so far
+    (``history``: dicts with ``T_film_C``, the film temperature of the loads, and ``T_contacts_C``, the
+    mean contact temperature of the answer on them).
+
+    Plain substitution, :math:`T_{k+1} = T_c(T_k)`, while it contracts.  Once the residual
+    :math:`r(T) = T_c(T) - T` changes sign without halving (the loads' response to the film
+    temperature is a loop gain ≤ −1: a cold start, where the films at the cold temperature lift the
+    balls into a loss that heats them past it, and back), the root of r between the last two film
+    temperatures of opposite residual by regula falsi with the Illinois modification (Dowell &
+    Jarratt 1971), which keeps the bracket and converges superlinearly:
+
+    .. math:: T_{k+1} = T_k - r_k \frac{T_k - T_j}{r_k - w\,r_j}, \qquad w = 2^{-(m-1)}
+
+    with j the last update of opposite residual and m the number of the latest updates on r_k's side.
+
+    References
+    ----------
+    .. [1] Dowell, M. & Jarratt, P. (1971). A modified regula falsi method for computing the root of an
+       equation. BIT 11, 168–174.
+
+    Examples
+    --------
+    >>> h = [dict(T_film_C=-11.0, T_contacts_C=47.8), dict(T_film_C=47.8, T_contacts_C=-10.9)]
+    >>> round(next_film_temperature(h), 2)
+    18.43
+    >>> next_film_temperature(h[:1])          # substitution
+    47.8
+    """
+    T, r, j = _bracket(history)
+    if j is None:
+        return history[-1]["T_contacts_C"]
+    m = len(r) - 1 - j                          # the latest updates on r[-1]'s side (since j)
+    w = 0.5 ** (m - 1)
+    return T[-1] - r[-1] * (T[-1] - T[j]) / (r[-1] - w * r[j])
+
+
+def _bracket(history):
+    """(film temperatures, residuals, j): j the last update whose residual is opposite to the last one's
+    once the substitution oscillates without halving (None: substitution goes on)."""
+    T = [e["T_film_C"] for e in history]
+    r = [e["T_contacts_C"] - e["T_film_C"] for e in history]
+    oscillates = any(a * b < 0 and abs(b) > 0.5 * abs(a) for a, b in zip(r[:-1], r[1:]))
+    opposite = [k for k in range(len(r) - 1) if r[k] * r[-1] < 0]
+    return T, r, opposite[-1] if oscillates and opposite else None
+
+
+def _film_jump(history) -> NoConvergence | None:
+    """The named failure of a film fixed point whose bracket has closed (to ``_FILM_JUMP_K``) on a jump
+    of the answer (answers on both sides still apart by more than the tolerance), else None."""
+    T, r, j = _bracket(history)
+    if j is None or abs(T[-1] - T[j]) > _FILM_JUMP_K:
+        return None
+    a, b = history[j], history[-1]
+    return NoConvergence(
+        f"film load model: no film temperature fixed point — at film temperatures {a['T_film_C']:.2f} and "
+        f"{b['T_film_C']:.2f} °C the answers are {a['T_contacts_C']:.2f} °C ({a['P_W']:.4g} W) and "
+        f"{b['T_contacts_C']:.2f} °C ({b['P_W']:.4g} W): the loads or the thermal equilibrium jump there (a ball "
+        "lifting off, or two equilibria of losses that rise with temperature, e.g. a starved cold start)",
+        iterations=len(history), residual=abs(r[-1]), history=history)
+
+
 class _FilmRows:
     """The film load model's fixed point on the film temperature for the points of a family (module
     docstring): a dry start, then film load updates, each followed by a steady state started from the last,
@@ -215,7 +278,11 @@ class _FilmRows:
                 st.history = list(st.history) + [dict(e, step="film") for e in h]
                 self.out[j] = st
                 continue
-            self.T_ref[j], self.start[j] = T_new, _node_T(st, self.template)
+            jump = _film_jump(h)
+            if jump is not None:
+                self.out[j] = jump
+                continue
+            self.T_ref[j], self.start[j] = next_film_temperature(h), _node_T(st, self.template)
             nxt.append(j)
         self.live = np.array(nxt, int)
         if k < _FILM_MAXITER:
