@@ -77,9 +77,11 @@ def test_run_answers_ratings_in_text_and_json(capsys):
     assert r["L10_h"] == pytest.approx((C / 2000.0) ** 3 * 1e6 / (60 * 3000.0), rel=1e-12)
     assert r["L10m_h"] == pytest.approx(r["a_ISO"] * r["L10_h"]) and r["L10r_h"] > 0
     assert 0 < r["p_max_Pa"]["outer"] < r["p_max_Pa"]["inner"] < 4.2e9
-    assert any(w["quantity"] == "kappa" for w in d["warnings"])          # κ = 5.1 > 4: a_ISO at κ = 4
+    # κ > 4: ISO 281 takes κ = 4 — stated with the ratings, not a warning (below 0.1 it is one)
+    assert r["kappa"] > 4 and not any(w["quantity"] == "kappa" for w in d["warnings"])
     code, out, _ = run(capsys, "run", BATH)
     assert "Ratings (ISO 76, ISO 281, ISO/TS 16281)" in out and "L10m" in out and "k5 / H7" in out
+    assert "a_ISO at kappa = 4, ISO 281" in out
 
 
 def test_life_falls_with_load_as_the_cube():

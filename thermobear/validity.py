@@ -22,7 +22,7 @@ The limits (the README's table is :func:`limits_table`, with the reasoning and s
 | Hertz contact size / radius of curvature | – | outside [0, 1] | > 0.2 |
 | lubricant temperature | °C | outside [-40, 250] | outside [-20, 150] |
 | static safety s0 | – | < 0.5 | < 1 |
-| viscosity ratio κ = ν/ν1 | – | – | outside [0.1, 4] |
+| viscosity ratio κ = ν/ν1 | – | – | < 0.1 |
 | operating radial clearance | µm | – | < 0 |
 | load (Fa, Fr or M/ℜ_i), when not 0 | N | < 1e-06 | – |
 | speed, when not 0 | rpm | < 1e-06 | – |
@@ -144,9 +144,10 @@ LIMITS = {
                "equivalent load twice C0: the refused contact pressure (4200·2^(1/3) MPa, p ∝ Q^(1/3)) at the "
                "standard's load distribution, where the deformation (Palmgren 1959, ∝ Q²) is 4× ISO 76's"),
     "kappa": Limit(
-        "viscosity ratio κ = ν/ν1", "-", (None, None), (0.1, 4.0),
-        source="ISO 281:2007 §9.3.3: a_ISO is defined for 0.1 <= κ <= 4 (evaluated at the bound outside; below "
-               "0.1 the film no longer separates the surfaces, a_ISO does not apply)"),
+        "viscosity ratio κ = ν/ν1", "-", (None, None), (0.1, None),
+        source="ISO 281:2007 §9.3.3: a_ISO is defined for 0.1 <= κ <= 4; above 4 the standard takes κ = 4 (a "
+               "thicker film adds no life: stated with the ratings, not warned); below 0.1 the film no longer "
+               "separates the surfaces and a_ISO does not apply (evaluated at 0.1)"),
     "operating_clearance": Limit(
         "operating radial clearance", "µm", (None, None), (0.0, None), scale=1e6,
         source="clearance consumed by the fits, the temperatures and the speed: a radial preload (Harris & "

@@ -156,7 +156,8 @@ class Ratings:
                 f"  C  {self.C_N:9.0f} N   P  {self.P_N:9.0f} N   p_max inner {p['inner'] / 1e6:6.0f} MPa, "
                 f"outer {p['outer'] / 1e6:6.0f} MPa",
                 f"  kappa {self.kappa:.3g} (nu {self.nu_m2_s * 1e6:.3g} cSt at {self.T_operating_C:.1f} °C, "
-                f"nu1 {self.nu1_m2_s * 1e6:.3g} cSt)   e_C {self.e_C:g} ({self.contamination})   a_ISO {self.a_ISO:.3g}",
+                f"nu1 {self.nu1_m2_s * 1e6:.3g} cSt{'; a_ISO at kappa = 4, ISO 281' if self.kappa > 4.0 else ''})   "
+                f"e_C {self.e_C:g} ({self.contamination})   a_ISO {self.a_ISO:.3g}",
                 ("  L10, L10m: unloaded (P = 0), no fatigue life" if not self.P_N > 0 else
                  f"  L10 {self.L10_h:.4g} h   L10m {self.L10m_h:.4g} h" +
                  ("" if self.L10r_h is None else f"   L10r {self.L10r_h:.4g} h")),
