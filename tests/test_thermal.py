@@ -171,6 +171,56 @@ def test_ball_race_contacts_in_parallel_unloaded_excluded():
     assert el.ball_race_conductance(42.7, 27.0, a, b) == pytest.approx(3 * one, rel=1e-14)
 
 
+def test_rolling_contact_exchange_is_the_integral_of_the_semi_infinite_contact_flux():
+    # Bergman et al. 2011 §5.7: two semi-infinite solids in contact exchange e_eff ΔT / √(π t); a surface
+    # point at y crosses the ellipse's chord 2b√(1 − y²/a²) at u: integrate numerically over the ellipse
+    from scipy.integrate import quad
+    from thermobear.thermal.conduction import rolling_contact_conductance
+    e_eff, a, b, u = 6200.0, 9e-4, 8e-5, 2.9
+
+    def chord(y):
+        L = 2 * b * math.sqrt(max(1 - (y / a) ** 2, 0.0))
+        return e_eff * 2 * math.sqrt(u * L / math.pi)         # ∫_0^L e/√(π x/u) dx
+    G_num = quad(chord, -a, a, limit=200)[0]
+    assert rolling_contact_conductance(e_eff, a, b, u) == pytest.approx(G_num, rel=1e-7)
+    # scaling: ∝ √u (0 at rest), ∝ a, ∝ √b
+    assert rolling_contact_conductance(e_eff, a, b, 0.0) == 0.0
+    assert rolling_contact_conductance(e_eff, a, b, 4 * u) == pytest.approx(2 * G_num, rel=1e-12)
+    assert rolling_contact_conductance(e_eff, 2 * a, 4 * b, u) == pytest.approx(4 * G_num, rel=1e-12)
+
+
+def test_rolling_ball_race_conductance_limits():
+    from thermobear.thermal.conduction import rolling_contact_conductance, thermal_effusivity
+    k, a, b = 42.7, np.array([9e-4, 0.0]), np.array([8e-5, 0.0])
+    e = thermal_effusivity(k, 7830.0, 460.0)
+    assert e == pytest.approx(math.sqrt(k * 7830.0 * 460.0), rel=1e-14)
+    Gs = el.ball_race_conductance(k, k, a, b)
+    # at rest: the stationary constriction; fast: the rolling exchange (Pe = u b / 2κ ≈ 40 at 12 m/s)
+    assert el.ball_race_conductance(k, k, a, b, u=np.zeros(2), e_ball=e, e_ring=e) == pytest.approx(Gs, rel=1e-14)
+    Gr = rolling_contact_conductance(e / 2, a[0], b[0], 12.0)
+    G = el.ball_race_conductance(k, k, a, b, u=np.full(2, 12.0), e_ball=e, e_ring=e)
+    assert Gr > 10 * Gs and G == pytest.approx(Gr, rel=0.01) and G > max(Gr, Gs)
+    # an oil film in series: below both, and the plane layer's resistance h / (k_f π a b) added
+    Gf = el.ball_race_conductance(k, k, a, b, u=np.full(2, 12.0), e_ball=e, e_ring=e, h_film=np.full(2, 5e-7),
+                                  k_film=0.13)
+    assert 1 / Gf == pytest.approx(1 / G + 5e-7 / (0.13 * math.pi * a[0] * b[0]), rel=1e-12)
+    with pytest.raises(InputError):
+        el.ball_race_conductance(k, k, a, b, u=np.full(2, 12.0))
+
+
+def test_meniscus_conduction_is_the_gap_integral():
+    # k/h over the gap h = h0 + x²/2Rx + y²/2Ry out to where it reaches h_m (an ellipse), numerically
+    from scipy.integrate import quad
+    from thermobear.thermal.conduction import meniscus_conductance
+    k, Rx, Ry, h0, hm = 0.13, 3e-3, 0.1, 1e-6, 3e-5
+    # in polar coordinates of the scaled plane (x = √Rx r cos θ, y = √Ry r sin θ): dA = √(Rx Ry) r dr dθ
+    r_m = math.sqrt(2 * (hm - h0))
+    G_num = 2 * math.pi * math.sqrt(Rx * Ry) * quad(lambda r: k * r / (h0 + r * r / 2), 0.0, r_m)[0]
+    assert meniscus_conductance(k, Rx, Ry, h0, hm) == pytest.approx(G_num, rel=1e-10)
+    assert meniscus_conductance(k, Rx, Ry, h0, h0) == 0.0 and meniscus_conductance(k, Rx, Ry, h0, 0.5 * h0) == 0.0
+    assert meniscus_conductance(k, Rx, Ry, h0, 10 * hm) > meniscus_conductance(k, Rx, Ry, h0, hm)
+
+
 def test_harris_coefficient_and_scaling():
     k, Pr, u, nu, x = 0.03, 2.0, 12.0, 2e-5, 0.02
     h = el.h_harris(k, Pr, u, nu, x)

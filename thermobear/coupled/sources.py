@@ -272,7 +272,11 @@ def network_context(fam: Family, contacts: ContactSet | None = None) -> dict:
           "omega_outer_rad_s": 0.0 * omega if inner else omega, "oil_fraction": _oil_fraction(fam, n)}
     if contacts is not None:
         ctx["contacts"] = {s: {"a_m": np.asarray(contacts.sides[s]["a"], float),
-                               "b_m": np.asarray(contacts.sides[s]["b"], float)} for s in ("inner", "outer")}
+                               "b_m": np.asarray(contacts.sides[s]["b"], float),
+                               "u_m_s": np.asarray(contacts.sides[s]["u"], float),
+                               "Q_N": np.asarray(contacts.sides[s]["Q"], float),
+                               "Rx_m": np.asarray(contacts.sides[s]["Rx"], float),
+                               "Ry_m": np.asarray(contacts.sides[s]["Ry"], float)} for s in ("inner", "outer")}
         op["omega_cage_rad_s"] = np.asarray(contacts.omega_cage, float)
         op["omega_ball_rad_s"] = np.asarray(contacts.omega_ball, float).mean(axis=-1)
     ctx["op"] = op

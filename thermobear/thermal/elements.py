@@ -30,7 +30,9 @@ import numpy as np
 from thermobear.arrays import checked
 from thermobear.lubrication.air import T_RANGE_K as AIR_T_RANGE_K
 from thermobear.lubrication.air import air_properties
-from thermobear.thermal.conduction import (ball_race_conductance, constriction_resistance,  # noqa: F401
+from thermobear.lubrication.film import film_thickness
+from thermobear.thermal.conduction import (ball_race_conductance, constriction_resistance, meniscus_conductance,  # noqa: F401
+                                           thermal_effusivity,
                                            planar_conductance, shell_conductance)
 from thermobear.thermal.convection import (HARRIS_COEFFICIENTS, SIGMA_SB, advection_conductance,  # noqa: F401
                                            air_film_properties, h_forced_cylinder, h_forced_plate,
@@ -127,12 +129,40 @@ class BallRaceContact(Element):
 
     The per-ball semi-axes ``a_m``, ``b_m`` (shape (..., Z)) come from the mechanics (the network
     reads ``contacts.<inner|outer>.a_m`` / ``.b_m``), else from the element's fallback.
+
+    ``exchange = "rolling"``: the surfaces' exchange as they roll through the contacts at the
+    contacts' entrainment speeds (``contacts.<side>.u_m_s``; the materials' k, ρ, c_p), through the
+    lubricant's central film (Hamrock–Dowson, :func:`~thermobear.lubrication.film.film_thickness`, at
+    the mean of the two nodes' temperatures and the contacts' loads and radii), and with ``h_meniscus_m``
+    the conduction through the lubricant filling the gap around each loaded contact out to that gap
+    (:func:`~thermobear.thermal.conduction.meniscus_conductance`) — with the mechanics' contacts only;
+    the fallback contacts are stationary.  Default ``"stationary"``.
     """
 
+    def depends_on(self):
+        return (self.i, self.j) if self.p.get("exchange") == "rolling" else ()    # the film at the nodes' mean
+
     def conductance(self, Ti, Tj, oil=None, shared=None):
-        kb = self.p["k_ball_W_mK"] if "k_ball_W_mK" in self.p else self.p["material_ball"].k
-        kr = self.p["k_ring_W_mK"] if "k_ring_W_mK" in self.p else self.p["material_ring"].k
-        return ball_race_conductance(kb, kr, self.p["a_m"], self.p["b_m"])
+        p = self.p
+        kb = p["k_ball_W_mK"] if "k_ball_W_mK" in p else p["material_ball"].k
+        kr = p["k_ring_W_mK"] if "k_ring_W_mK" in p else p["material_ring"].k
+        if "u_m" not in p:
+            return ball_race_conductance(kb, kr, p["a_m"], p["b_m"])
+        mb, mr = p["material_ball"], p["material_ring"]
+        film = {}
+        if oil is not None and "Q_N" in p:
+            T_C = _oil_T(0.5 * (np.asarray(Ti, float) + np.asarray(Tj, float)))[..., None]
+            Q = p["Q_N"]
+            run = (Q > 0) & (p["u_m"] > 0)
+            h = film_thickness(np.where(run, Q, 1.0), p["Rx_m"], p["Ry_m"], np.where(run, p["u_m"], 1.0), oil.eta(T_C),
+                               oil.alpha_p_at(T_C), p["E_prime"], kind="central")
+            film = dict(h_film=np.where(run, h, 0.0), k_film=oil.k_th(T_C))
+        G = ball_race_conductance(kb, kr, p["a_m"], p["b_m"], u=p["u_m"], e_ball=thermal_effusivity(mb.k, mb.rho, mb.cp),
+                                  e_ring=thermal_effusivity(mr.k, mr.rho, mr.cp), **film)
+        if film and "h_meniscus_m" in p:
+            Gm = meniscus_conductance(film["k_film"], p["Rx_m"], p["Ry_m"], np.where(run, h, 1.0), p["h_meniscus_m"])
+            G = G + np.sum(np.where(run & (p["a_m"] > 0), Gm, 0.0), axis=-1)
+        return G
 
 
 class Convection(Element):
@@ -253,7 +283,8 @@ ELEMENT_TYPES = {
     "planar": dict(cls=Planar, required=("A_m2", "length_m"), optional=(), one_of=(("k_W_mK", "material"),)),
     "interface": dict(cls=Interface, required=("h_W_m2K", "A_m2"), optional=(), one_of=()),
     "ball_race_contact": dict(cls=BallRaceContact, required=("contact",),
-                              optional=("a_fallback_m", "b_fallback_m", "n_balls", "Q_fallback_N"),
+                              optional=("a_fallback_m", "b_fallback_m", "n_balls", "Q_fallback_N", "exchange",
+                                        "h_meniscus_m"),
                               one_of=(("k_ball_W_mK", "material_ball"), ("k_ring_W_mK", "material_ring"))),
     "convection": dict(cls=Convection, required=("correlation", "A_m2"),
                        optional=("u_m_s", "x_m", "oil_fraction", "fluid", "D_m", "L_m", "u_air_m_s", "h_W_m2K",
@@ -272,5 +303,6 @@ CORRELATION_KEYS = {
 }
 
 #: Keys that are strings, not numbers or expressions.
-STRING_KEYS = {"contact": ("inner", "outer"), "correlation": CORRELATIONS, "fluid": ("oil_air", "oil", "air")}
+STRING_KEYS = {"contact": ("inner", "outer"), "correlation": CORRELATIONS, "fluid": ("oil_air", "oil", "air"),
+               "exchange": ("stationary", "rolling")}
 MATERIAL_KEYS = ("material", "material_ball", "material_ring")

@@ -310,6 +310,8 @@ def _instantiate(e: ElementTemplate, ctx, B, oil, sample=None) -> Element:
                 p[_MATERIAL_K[key]] = _check_value(f"{e.field}.{key}", "k_W_mK", _material_value(sample, p[key], "k_W_mK"))
     if e.type == "ball_race_contact":
         p["a_m"], p["b_m"], p["semi_axes_from"] = _semi_axes(e, p, ctx, B)
+        if p.get("exchange") == "rolling" and p["semi_axes_from"] == "context":
+            p.update(_rolling(e, p, ctx, B))
     if e.type in ("convection", "advection") and oil is None:
         needs = (e.type == "advection" and not ("rho_kg_m3" in p and "cp_J_kgK" in p)) or (
             e.type == "convection" and p["correlation"] in HARRIS_COEFFICIENTS and p.get("fluid", "oil_air") != "air"
@@ -340,6 +342,29 @@ def _semi_axes(e: ElementTemplate, p, ctx, B):
                          "not in the context and no fallback (a_fallback_m + b_fallback_m, or Q_fallback_N) given")
     return (np.broadcast_to(p["a_fb"], (B, p["a_fb"].size)), np.broadcast_to(p["b_fb"], (B, p["b_fb"].size)),
             p["fallback_from"])
+
+
+def _rolling(e: ElementTemplate, p, ctx, B) -> dict:
+    """Per-ball entrainment speeds of a raceway's contacts (B, Z) from the context for a rolling ball–race
+    exchange, with their loads, radii and the bearing's E' for the film where the context has them (the
+    ball and ring materials need k, rho and cp)."""
+    c = lookup(ctx["contacts"], p["contact"])
+    u = lookup(c, "u_m_s")
+    if u is MISSING:
+        raise InputError(f"contacts.{p['contact']}.u_m_s", None,
+                         "exchange = \"rolling\" needs the contacts' entrainment speeds in the context")
+    for m in ("material_ball", "material_ring"):
+        if m not in p or p[m].cp is None:
+            raise InputError(f"{e.field}.{m}", None, "exchange = \"rolling\" needs a material with k, rho and cp "
+                             "(the effusivity √(k ρ c_p))")
+    shape = p["a_m"].shape
+    out = {"u_m": np.broadcast_to(np.asarray(u, float), shape)}
+    film = {k: lookup(c, k) for k in ("Q_N", "Rx_m", "Ry_m")}
+    brg = ctx.get("bearing")
+    Ep = lookup(brg, "E_prime") if brg is not None else MISSING
+    if Ep is not MISSING and all(v is not MISSING for v in film.values()):
+        out.update({k: np.broadcast_to(np.asarray(v, float), shape) for k, v in film.items()}, E_prime=float(Ep))
+    return out
 
 
 def _param(fld, key, v, ctx):

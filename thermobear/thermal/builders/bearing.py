@@ -45,6 +45,15 @@ def free_volume(lay: Layout) -> float:
     return math.pi / 4 * ((lay.dm + lay.D) ** 2 - (lay.dm - lay.D) ** 2) * lay.B - lay.Z * math.pi * lay.D**3 / 6
 
 
+def _exchange(m: Machine) -> dict:
+    """Keys of the ball–race contact elements: rolling, lubricated contacts with the lubricant around them out
+    to the estimated meniscus gap (``contact_exchange = "rolling"``), or the Hertz constriction alone."""
+    if m.lubrication.contact_exchange == "stationary":
+        return {"estimated": ["Q_fallback_N"]}
+    return {"exchange": "rolling", "h_meniscus_m": estimates.value(m, "meniscus_gap_m"),
+            "estimated": ["Q_fallback_N", "h_meniscus_m"]}
+
+
 def q_fallback(m: Machine, lay: Layout) -> float:
     """Ball load for the contacts when the mechanics gives none [N]: the axial load shared by all balls,
     or Stribeck's 4.37 F_r/(Z cos α) (zero clearance), at least 1 N (the solver's contacts replace it)."""
@@ -86,13 +95,15 @@ def add_rings(spec: NetworkSpec, m: Machine, lay: Layout, fluid: dict, sump=None
     spec.node("outer_ring", volume_m3=v_out, material="bearing.ring_material", estimated=est,
               description="outer ring, outside half (its seat face's temperature)")
     Q = q_fallback(m, lay)
+    exchange = _exchange(m)
     spec.element("inner_ring_radial", "shell", ("inner_ring", "inner_race"), material="bearing.ring_material",
                  r1_m=d / 2, r2_m=(dm - D) / 2, L_m=B)
     for side, a, b in (("inner", "inner_race", "balls"), ("outer", "balls", "outer_race")):
         spec.element(f"{side}_contacts", "ball_race_contact", (a, b), contact=side,
                      material_ball="bearing.ball_material", material_ring="bearing.ring_material", Q_fallback_N=Q,
-                     estimated=["Q_fallback_N"], description="Hertz contacts (the mechanics' semi-axes; the "
-                     "fallback load only without them)")
+                     **exchange, description="Hertz contacts (the mechanics' semi-axes; the fallback load only "
+                     "without them)" + (", the surfaces' exchange as they roll through them, through the oil film, "
+                                        "and the lubricant around them out to the meniscus gap" if len(exchange) > 1 else ""))
     spec.element("outer_ring_radial", "shell", ("outer_race", "outer_ring"), material="bearing.ring_material",
                  r1_m=(dm + D) / 2, r2_m=OD / 2, L_m=B)
     links = [("inner_race", f"abs({_I} - {_C}) * {(dm - D) / 2!r}", B, math.pi * (dm - D) * B),
@@ -118,7 +129,7 @@ def add_thrust_washers(spec: NetworkSpec, m: Machine, lay: Layout, fluid: dict, 
     for side, a, b in (("inner", "shaft_washer", "balls"), ("outer", "balls", "housing_washer")):
         spec.element(f"{a if side == 'inner' else b}_contacts", "ball_race_contact", (a, b), contact=side,
                      material_ball="bearing.ball_material", material_ring="bearing.ring_material", Q_fallback_N=Q,
-                     estimated=["Q_fallback_N"])
+                     **_exchange(m))
     A_face = math.pi * dm * D
     links = [("shaft_washer", f"abs({_I} - {_C}) * {dm / 2!r}", D, A_face), ("balls", f"{_W} * {D / 2!r}", D,
              lay.Z * math.pi * D**2), ("housing_washer", f"abs({_O} - {_C}) * {dm / 2!r}", D, A_face)]

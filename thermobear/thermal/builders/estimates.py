@@ -38,6 +38,7 @@ FIELDS = {
     "grease_fill": Field.number("-", 0.0, 1.0, lo_open=True, doc="grease fill of the free volume"),
     "k_seal_W_mK": Field.number("W/(m K)", 0.0, lo_open=True, doc="conductivity of a contact seal's rubber"),
     "cage_film_m": Field.number("m", 0.0, lo_open=True, doc="oil film in a cage pocket"),
+    "meniscus_gap_m": Field.number("m", 0.0, lo_open=True, doc="gap at which the lubricant around a ball-race contact ends"),
     "k_air_still_W_mK": Field.number("W/(m K)", 0.0, lo_open=True, doc="air of a still cavity"),
     "web_fraction": Field.number("-", 0.0, 1.0, lo_open=True, doc="pillow block's web width / body diameter"),
     **{k: Field.number("-", 1.0, 1.0, doc=f"multiplier of {e[1]}.{e[2]} as the builder writes it")
@@ -62,6 +63,7 @@ FAMILY_KEYS = {
     "grease_fill": "the grease's capacity and conduction",
     "k_air_still_W_mK": "the still mixture's conduction from both races",
     "web_fraction": "a pillow block's web (every outer cell) and its covered side",
+    "meniscus_gap_m": "both raceways' contacts (the lubricant around each)",
 }
 #: drawn per point: key → (element or node, its key) holding the value (the multipliers: the value × a factor)
 POINT_KEYS = {"k_seal_W_mK": ("seal--outer_ring", "k_W_mK"), "cage_film_m": ("cage--balls", "length_m"),

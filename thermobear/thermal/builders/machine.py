@@ -122,7 +122,9 @@ class Lubrication:
     0.4 for jets, Brossier et al. 2021; 1 for circulating oil and oil–air), oil_level [m] (SKF's H:
     above the lowest point of the outer-ring raceway), sump_volume [m³], grease_fill [-], air_flow
     [m³/s] (oil–air), rho_cp [J/(m³ K)], k [W/(m K)] of the lubricant (at 40 °C), oil_air_C_J_K
-    (the mixture's capacity given).
+    (the mixture's capacity given), contact_exchange (``rolling``: the balls' contacts as rolling,
+    lubricated contacts with the lubricant around them; ``stationary``: the Hertz constriction alone, as
+    the seed papers' hand networks).
     """
 
     supply: str = "oil_jet"
@@ -135,6 +137,7 @@ class Lubrication:
     rho_cp: float = 1.7e6
     k: float = 0.13
     oil_air_C_J_K: float | None = None
+    contact_exchange: str = "rolling"
 
 
 @dataclass(frozen=True)
@@ -192,7 +195,8 @@ def check_machine(m: Machine) -> None:
                             ("shaft.surface", m.shaft.surface, ("air", "enclosed")),
                             ("rotating", m.rotating, ("inner", "outer")),
                             ("housing.seals", m.housing.seals, SEALS),
-                            ("lubricant.oil_feed", m.lubrication.feed, OIL_FEEDS)):
+                            ("lubricant.oil_feed", m.lubrication.feed, OIL_FEEDS),
+                            ("lubrication.contact_exchange", m.lubrication.contact_exchange, ("rolling", "stationary"))):
         if v not in allowed:
             raise InputError(fld, v, f"one of {', '.join(allowed)}")
     b = m.bearing

@@ -16,7 +16,10 @@ __all__ = ["seed004_machine", "seed002_machine", "DIFFERENCES"]
 
 #: What the built networks model differently from the hand-written ones.
 DIFFERENCES = {
-    "both": ("the shaft and housing are cut by the discretisation rule (the hand housing is one node); the seats "
+    "both": ("the ball–race contacts as the hand networks' (Hertz constriction alone: the rigs' machines say "
+             "contact_exchange = 'stationary'; a machine's default adds the rolling exchange, the film and the "
+             "lubricant around the contacts); "
+             "the shaft and housing are cut by the discretisation rule (the hand housing is one node); the seats "
              "are in series with the half cells of the shaft and housing (the hand networks join the nodes "
              "directly); the still mixture conducts between the races (or washers) and the oil–air node"),
     "seed004": ("the shaft inside the housing and the housing's bore exchange with the cavity's mixture; the "
@@ -43,7 +46,7 @@ def seed004_machine(bearing: BallBearing, n_rpm: float = 3200.0, T_ambient_C: fl
     housing = Housing(type="round", material="aisi-52100", outer_diameter=0.16, axial_length=0.06,
                       offset=-B / 2 - 0.010 + 0.03, end_left="adiabatic", end_right="air", mounting="frame",
                       mounting_G_W_K=42.7 * 1e-3 / 0.05, emissivity=0.8, fit_h_W_m2K=2000.0)
-    lub = Lubrication(supply="oil_jet", feed="jet", beta=0.4, oil_air_C_J_K=4.0)
+    lub = Lubrication(supply="oil_jet", feed="jet", beta=0.4, oil_air_C_J_K=4.0, contact_exchange="stationary")
     return Machine(bearing=bearing, shaft=shaft, housing=housing, lubrication=lub, rotating="inner", n_rpm=n_rpm,
                    T_ambient_C=T_ambient_C, Fa=450.0, Fr=325.0, name="seed004_built",
                    description="seed 004 rig built from its dimensions (thermobear.thermal.builders.rigs)")
@@ -64,7 +67,7 @@ def seed002_machine(bearing: BallBearing, n_rpm: float = 1000.0, T_ambient_C: fl
                       end_left="mounted", end_right="air", mounting="frame",
                       mounting_G_W_K=300.0 * 3.141592653589793 / 4 * 0.05**2, air="forced", air_speed=2.0,
                       shape_convection="forced_cylinder", emissivity=0.0, fit_h_W_m2K=3000.0)
-    lub = Lubrication(supply="grease", rho_cp=rho_cp, k=k)
+    lub = Lubrication(supply="grease", rho_cp=rho_cp, k=k, contact_exchange="stationary")
     m = Machine(bearing=bearing, shaft=shaft, housing=housing, lubrication=lub, rotating="inner", n_rpm=n_rpm,
                 T_ambient_C=T_ambient_C, Fa=7000.0, name="seed002_built",
                 description="seed 002 rig built from its dimensions (thermobear.thermal.builders.rigs)")
