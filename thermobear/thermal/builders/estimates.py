@@ -163,7 +163,8 @@ def sampled_keys(m) -> list:
             "oil_held": lub.supply != "grease" and lub.oil_air_C_J_K is None,
             "grease_fill": lub.supply == "grease" and lub.oil_air_C_J_K is None
             and _default(lub.grease_fill, "grease_fill"),
-            "k_air_still_W_mK": True, "web_fraction": h.type == "pillow"}
+            "k_air_still_W_mK": True, "web_fraction": h.type == "pillow",
+            "meniscus_gap_m": lub.contact_exchange == "rolling"}
     return [k for k in FAMILY_KEYS if keys[k]]
 
 
