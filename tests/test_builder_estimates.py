@@ -152,7 +152,8 @@ _BY_FAMILY = {(r"(inner|outer)_(ring|race)|(shaft|housing)_washer", "volume_m3")
               (r".*--ambient_radiation.*|.*--ambient_.*radiation.*", "emissivity"): "emissivity",
               (r".*--housing_foot", "G_W_K"): "web_fraction",
               (r"oil_air", "C_J_K"): ("oil_held", "grease_fill"),
-              (r".*--oil_air_grease", "A_m2"): "grease_fill"}
+              (r".*--oil_air_grease", "A_m2"): "grease_fill",
+              (r".*_contacts", "h_meniscus_m"): "meniscus_gap_m"}
 #: estimated values left without a range, and why
 _EXEMPT = {(r".*_contacts", "Q_fallback_N"): "used only when the mechanics gives no contacts (the solvers give them)",
            (r"seal--inner_ring", "length_m"): "the lip band's G = k A / L: its one factor is on A_m2",

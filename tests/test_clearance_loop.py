@@ -61,7 +61,7 @@ def test_given_clearance_is_the_old_answer(jet):
     st, given = tb.steady_state(jet), tb.steady_state(jet.with_(models={"clearance": "given"}))
     assert st.models_used["clearance"][0] == "given" and st.clearance_um is None
     assert given.P_W == st.P_W and given.T_C == st.T_C
-    assert st.P_W == pytest.approx(28.572925372286146, rel=1e-9)     # main's number for this scene
+    assert st.P_W == pytest.approx(29.86175401839089, rel=1e-9)      # main's number for this scene (rolling contacts)
 
 
 def test_mounted_clearance_uses_the_fits_at_20C(jet):

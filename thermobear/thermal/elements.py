@@ -151,12 +151,12 @@ class BallRaceContact(Element):
         mb, mr = p["material_ball"], p["material_ring"]
         film = {}
         if oil is not None and "Q_N" in p:
-            T_C = _oil_T(0.5 * (np.asarray(Ti, float) + np.asarray(Tj, float)))[..., None]
+            T_C = _oil_T(0.5 * (np.asarray(Ti, float) + np.asarray(Tj, float)))     # (B,): a per-point oil's axis
             Q = p["Q_N"]
             run = (Q > 0) & (p["u_m"] > 0)
-            h = film_thickness(np.where(run, Q, 1.0), p["Rx_m"], p["Ry_m"], np.where(run, p["u_m"], 1.0), oil.eta(T_C),
-                               oil.alpha_p_at(T_C), p["E_prime"], kind="central")
-            film = dict(h_film=np.where(run, h, 0.0), k_film=oil.k_th(T_C))
+            h = film_thickness(np.where(run, Q, 1.0), p["Rx_m"], p["Ry_m"], np.where(run, p["u_m"], 1.0),
+                               oil.eta(T_C)[..., None], oil.alpha_p_at(T_C)[..., None], p["E_prime"], kind="central")
+            film = dict(h_film=np.where(run, h, 0.0), k_film=np.asarray(oil.k_th(T_C), float)[..., None])
         G = ball_race_conductance(kb, kr, p["a_m"], p["b_m"], u=p["u_m"], e_ball=thermal_effusivity(mb.k, mb.rho, mb.cp),
                                   e_ring=thermal_effusivity(mr.k, mr.rho, mr.cp), **film)
         if film and "h_meniscus_m" in p:
