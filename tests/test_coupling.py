@@ -126,3 +126,19 @@ def test_picard_does_not_call_a_stable_non_normal_map_runaway():
     c = np.array([6.0, 3.0])                       # equilibrium 330 K and 465 K, below the limit
     r = solve_coupled(lambda T: J @ (T - 300.0) + c + 300.0, [300.0, 300.0], method="picard")
     np.testing.assert_allclose(r.T_K - 300.0, np.linalg.solve(np.eye(2) - J, c), atol=1e-5)
+
+
+def test_physical_path_settles_a_creeping_heating_path_near_the_fold():
+    # one node whose loop gain at the equilibrium is 0.995 (just below the fold where equilibria end):
+    # plain Picard from ambient creeps (error × 0.995 per step, 100 steps leave 60 % of it); the path is
+    # restarted from Aitken's extrapolation and settles on the equilibrium, not a NoConvergence
+    from thermobear.coupled.fixedpoint import _Update, _physical_path
+    T_eq, lam = 350.0, 0.995
+    G = lambda T: T_eq + lam * (T - T_eq) + 1e-5 * (T - T_eq) ** 2          # noqa: E731
+    ev = _Update(lambda T: G(T), 1)
+    res = _physical_path(ev, np.array([300.0]), tol_K=1e-6, tol_energy_rel=1e-6, max_iter=100, T_limit_K=573.15)
+    assert res.T_K[0] == pytest.approx(T_eq, abs=1e-4) and res.method == "picard-aitken"
+    # beyond the fold (no equilibrium: G(T) > T everywhere) the same path is a named runaway
+    ev = _Update(lambda T: T + 0.01 + 2e-5 * (T - 300.0), 1)
+    with pytest.raises(ThermalRunaway):
+        _physical_path(ev, np.array([300.0]), tol_K=1e-6, tol_energy_rel=1e-6, max_iter=100, T_limit_K=573.15)

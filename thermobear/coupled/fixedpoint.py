@@ -327,7 +327,9 @@ def _picard(ev, x0, damping, *, tol_K, tol_energy_rel, max_iter, T_limit_K, labe
 
 
 def _physical_path(ev, x0, **opts):
-    """Plain Picard from T0 (decides runaway); on oscillation, Picard damped by the estimated gain."""
+    """Plain Picard from T0 (decides runaway); where it creeps monotonically (a loop gain just below 1, near
+    the fold where the equilibrium ends), restarted from Aitken's extrapolation of its last increments; on
+    oscillation, Picard damped by the estimated gain."""
     try:
         return _picard(ev, x0, 1.0, **opts)
     except ThermalRunaway:
@@ -339,6 +341,8 @@ def _physical_path(ev, x0, **opts):
         d1 = np.mean(h[-1]["T_K"] - h[-2]["T_K"])
         d0 = np.mean(h[-2]["T_K"] - h[-3]["T_K"])
         lam = d1 / d0 if d0 else -1.0
+        if 0.0 < lam < 1.0:
+            return _creeping(ev, h, lam, exc, **opts)
         beta = float(np.clip(1.0 / (1.0 - lam), 0.02, 0.9)) if lam < 0 else 0.5
         try:
             return _picard(ev, x0, beta, **opts)
@@ -346,3 +350,27 @@ def _physical_path(ev, x0, **opts):
             raise NoConvergence(f"accelerated and damped (β = {beta:.3g}) iterations failed: {exc2.reason}",
                                 iterations=exc2.iterations, residual=exc2.residual, last=exc2.last,
                                 history=exc2.history) from None
+
+
+def _creeping(ev, h, lam, exc, restarts: int = 5, **opts):
+    r"""Picard restarted from Aitken's Δ² extrapolation of a monotonically creeping path: increments
+    shrinking by the ratio λ ∈ (0, 1) sum to the fixed point at x + Δx λ/(1 − λ) (Aitken 1926); the
+    restarted Picard decides convergence or runaway from there.  NoConvergence ``exc`` when the restarts
+    do not settle."""
+    for _ in range(restarts):
+        x = h[-1]["T_K"] + (h[-1]["T_K"] - h[-2]["T_K"]) * lam / (1.0 - lam)
+        try:
+            res = _picard(ev, np.minimum(x, opts["T_limit_K"]), 1.0, **opts)
+            res.method = "picard-aitken"
+            return res
+        except ThermalRunaway:
+            raise
+        except NoConvergence as again:
+            h = again.history
+            if len(h) < 3:
+                break
+            d1, d0 = np.mean(h[-1]["T_K"] - h[-2]["T_K"]), np.mean(h[-2]["T_K"] - h[-3]["T_K"])
+            lam = d1 / d0 if d0 else -1.0
+            if not 0.0 < lam < 1.0:
+                break
+    raise exc
