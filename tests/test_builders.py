@@ -317,6 +317,7 @@ def test_scene_sections_build_the_machine_in_si():
     ("shaft", "diameter_mm", 35.0, r"shaft\.diameter_mm = 35.0 — the inner ring's seat is the bearing bore"),
     ("lubricant", "grease_fill", 0.3, r"lubricant\.grease_fill = 0.3 — applies to supply = \"grease\""),
     ("lubricant", "oil_level_mm", -1.0, r"lubricant\.oil_level_mm = -1.0 — must be in \[0, 10000\]"),
+    ("lubricant", "oil_level_mm", 200.0, r"lubricant\.oil_level_mm = 200.0 — at most .* mm: there the bath fills"),
     ("thermal", "network", "one_node", r"thermal\.network = 'one_node' — \[housing\] describe"),
 ])
 def test_bad_machine_keys_are_refused_by_name(section, key, value, match):

@@ -72,6 +72,11 @@ def _level(m: Machine, lay: Layout) -> float:
     if H <= 0:
         raise InputError("lubricant.oil_level_mm", H * 1e3, "an oil bath needs a level above the outer raceway's "
                          "lowest point (> 0)")
+    H_max = lay.R_seat + (lay.dm + lay.D) / 2       # the bath fills the housing's bore
+    if H > H_max:
+        raise InputError("lubricant.oil_level_mm", H * 1e3, f"at most {H_max * 1e3:.4g} mm: there the bath fills the "
+                         f"housing's bore ({2 * lay.R_seat * 1e3:.4g} mm across); SKF's static level is the lowest "
+                         f"ball's centre, D/2 = {lay.D / 2 * 1e3:.3g} mm")
     return H - (lay.dm + lay.D) / 2
 
 
