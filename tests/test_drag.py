@@ -126,3 +126,16 @@ def test_bad_input():
         warnings.simplefilter("error")
         with pytest.raises(ExtrapolationWarning):
             drag_coefficient_sphere(5e5)
+
+
+def test_cavity_oil_fraction_by_supply():
+    # oil jets and oil–air: Parker's fraction of the oil flow through the bearing (an oil–air feed of a few mL/h
+    # gives ≈ 1 % at moderate speed, falling as 1/n); grease, bath, dry film: air; at standstill: none
+    from thermobear.losses.drag import cavity_oil_fraction, oil_volume_fraction_parker
+    W, n, dm = 0.005e-3 / 3600, np.array([3700.0, 7400.0, 0.0]), 0.06
+    for supply in ("oil_jet", "oil_air"):
+        X = cavity_oil_fraction(supply, W, n, dm)
+        assert X[:2] == pytest.approx(oil_volume_fraction_parker(W * 6e7, n[:2], 60.0), rel=1e-14) and X[2] == 0.0
+        assert X[1] == pytest.approx(X[0] / 2, rel=1e-12)
+    for supply in ("grease", "oil_bath", "dry_film"):
+        assert not cavity_oil_fraction(supply, W, n, dm).any()

@@ -327,8 +327,10 @@ def test_oil_flow_per_operating_point_and_other_supplies():
                              oil_flow_m3_s=flow[k])
         assert r.breakdown_W["drag"][k] == pytest.approx(rk.breakdown_W["drag"], rel=1e-12)
     air = evaluate_losses(cs, OIL, 50.0, supply="grease").breakdown_W["drag"]
-    mist = evaluate_losses(cs, OIL, 50.0, supply="oil_air").breakdown_W["drag"]
+    mist = evaluate_losses(cs, OIL, 50.0, supply="oil_air", oil_flow_m3_s=0.005e-3 / 3600).breakdown_W["drag"]
     assert np.all(0 < air) and np.all(air < mist) and np.all(mist < r.breakdown_W["drag"])
+    # oil–air without oil: the balls run in air
+    assert evaluate_losses(cs, OIL, 50.0, supply="oil_air").breakdown_W["drag"] == pytest.approx(air, rel=1e-12)
     assert np.all(evaluate_losses(cs, OIL, 50.0, supply="oil_bath").breakdown_W["drag"] == 0.0)
 
 

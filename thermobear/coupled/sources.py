@@ -27,7 +27,7 @@ import numpy as np
 from thermobear.errors import InputError
 from thermobear.losses import ContactSet, LossResult, evaluate_losses
 from thermobear.losses.cage import CageLand
-from thermobear.losses.drag import oil_volume_fraction_parker
+from thermobear.losses.drag import cavity_oil_fraction
 from thermobear.losses.seals import seal_friction
 from thermobear.losses.skf import SKF_BREAKDOWN_KEYS, skf_friction
 from thermobear.models import (added_losses, cage_land, film_options, oil_level, plan, refuse_unloaded_thrust,
@@ -252,7 +252,7 @@ def network_context(fam: Family, contacts: ContactSet | None = None) -> dict:
     ``omega_cage_rad_s`` and the balls' spin speed about their own axes ``omega_ball_rad_s`` (the
     kinematics of the contacts, :func:`thermobear.contact.kinematics.caged_ball_kinematics`), and the
     oil volume fraction ``oil_fraction`` of the oil–air mixture (Parker 1984,
-    :func:`thermobear.losses.drag.oil_volume_fraction_parker`, as the drag model uses it)."""
+    :func:`thermobear.losses.drag.cavity_oil_fraction`, as the drag model uses it)."""
     sc = fam.scene
     n = fam.values("n_rpm")
     T_in = fam.values("T_oil_in_C")
@@ -284,17 +284,9 @@ def network_context(fam: Family, contacts: ContactSet | None = None) -> dict:
 
 
 def _oil_fraction(fam: Family, n_rpm) -> np.ndarray:
-    """Oil volume fraction of the oil–air mixture per point: Parker's for oil jets, 1 % for oil–air,
-    0 otherwise (the drag model's choices, :func:`thermobear.losses.evaluate_losses`)."""
-    sc = fam.scene
-    if sc.supply == "oil_jet":
-        W = _through_flow(fam) * 1e6 * 60.0
-        run = n_rpm > 0
-        X = np.zeros(n_rpm.shape)
-        if run.any():
-            X[run] = oil_volume_fraction_parker(W[run], n_rpm[run], sc.bearing.dm * 1e3)
-        return X
-    return np.full(n_rpm.shape, 0.01 if sc.supply == "oil_air" else 0.0)
+    """Oil volume fraction of the oil–air mixture per point (:func:`~thermobear.losses.drag.cavity_oil_fraction`,
+    as the drag model takes it)."""
+    return cavity_oil_fraction(fam.scene.supply, _through_flow(fam), n_rpm, fam.scene.bearing.dm)
 
 
 def family_network(fam: Family, template: NetworkTemplate, contacts: ContactSet | None) -> ThermalNetwork:

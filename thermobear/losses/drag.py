@@ -43,7 +43,7 @@ from thermobear.arrays import above
 from thermobear.errors import ExtrapolationWarning, InputError
 from thermobear.lubrication.air import air_properties as _air
 
-__all__ = ["oil_volume_fraction_parker", "mixture_density", "mixture_viscosity", "air_properties",
+__all__ = ["oil_volume_fraction_parker", "cavity_oil_fraction", "mixture_density", "mixture_viscosity", "air_properties",
            "drag_coefficient_sphere", "drag_power_pouly", "drag_loss", "DragLoss", "immersed_fraction",
            "churning_loss", "ChurningLoss"]
 
@@ -116,6 +116,44 @@ def oil_volume_fraction_parker(W_oil_cm3_min, n_rpm, dm_mm, convention="fraction
                       "speed too low for the correlation", ExtrapolationWarning, stacklevel=2)
         X = np.minimum(X, 1.0)
     return _out(X)
+
+
+def cavity_oil_fraction(supply: str, oil_flow_m3_s, n_rpm, dm_m):
+    r"""Oil volume fraction of the mixture in a bearing's cavity by the supply [-].
+
+    Parameters
+    ----------
+    supply : str               ``oil_jet`` or ``oil_air``: Parker's fraction of the oil flow through the bearing
+                               (:func:`oil_volume_fraction_parker`); any other supply (grease, oil bath, dry
+                               film): 0 (the balls run in air; a bath's drag is the churning term)
+    oil_flow_m3_s : array_like oil flow through the bearing [m³/s]
+    n_rpm : array_like         shaft speed [r/min], ≥ 0 (0: no mixture is churned up, X = 0)
+    dm_m : float               pitch diameter [m]
+
+    Returns
+    -------
+    ndarray  X in [0, 1], the shape of the broadcast inputs
+
+    Notes
+    -----
+    Parker's correlation (Parker 1984) gives the cavity's share of the oil flow that passes through it and
+    speed; an oil–air supply passes its oil the same way, only less of it (a few mL/h: X of the order of 1 %
+    at moderate speed, falling as 1/n).
+
+    Examples
+    --------
+    >>> round(float(cavity_oil_fraction("oil_air", 0.005e-3 / 3600, 3700.0, 0.06)), 4)
+    0.0102
+    >>> float(cavity_oil_fraction("grease", 0.0, 3700.0, 0.06))
+    0.0
+    """
+    n = np.asarray(n_rpm, dtype=float)
+    W = np.broadcast_to(np.asarray(oil_flow_m3_s, dtype=float) * 1e6 * 60.0, n.shape)     # [cm³/min]
+    X = np.zeros(np.broadcast_shapes(n.shape, W.shape))
+    run = n > 0
+    if supply in ("oil_jet", "oil_air") and run.any():
+        X[run] = oil_volume_fraction_parker(W[run], n[run], dm_m * 1e3)
+    return X
 
 
 def _fraction(X):

@@ -495,7 +495,7 @@ def _reasons(used, reg, oil, rolling_model, traction, mu_full_film, mu_boundary,
         "starvation": (f"SKF Φ_rs (K_rs {K_RS.get(supply, 0):g}) on the rolling force" if starvation
                        else "fully flooded", ""),
         "drag": ("Pouly 2010 sphere drag" if drag and supply not in ("oil_bath", "dry_film") else "none",
-                 {"oil_jet": "Parker oil fraction", "oil_air": "oil fraction 1 %", "grease": "air only"}.get(
+                 {"oil_jet": "Parker oil fraction", "oil_air": "Parker oil fraction of the oil–air feed", "grease": "air only"}.get(
                      supply, "not modelled for this supply")),
     })
     if oil_level_m is not None:

@@ -10,7 +10,7 @@ import numpy as np
 
 from thermobear.errors import InputError
 from thermobear.losses.cage import cage_loss
-from thermobear.losses.drag import churning_loss, drag_loss, immersed_fraction, oil_volume_fraction_parker
+from thermobear.losses.drag import cavity_oil_fraction, churning_loss, drag_loss, immersed_fraction
 from thermobear.losses.skf import K_RS, phi_rs
 from thermobear.lubrication.thermal_film import (thermal_inlet_viscosity, thermal_loading_parameter,
                                                  thermal_reduction_gupta)
@@ -75,20 +75,13 @@ def property_at(prop, T, per_point=False):
 def drag_power(cs, oil, T_oil, eta_oil, supply, oil_flow_m3_s):
     """Drag power of the balls [W] at oil–air mixture temperatures ``T_oil`` [°C] (*lead, *batch),
     where the oil's viscosity is ``eta_oil`` [Pa s]:
-    :func:`~thermobear.losses.drag.drag_loss` with Parker's oil fraction (oil jet), 1 % (oil–air)
-    or air alone (grease); 0 where the bearing stands still."""
+    :func:`~thermobear.losses.drag.drag_loss` with the cavity's oil fraction
+    (:func:`~thermobear.losses.drag.cavity_oil_fraction`: Parker's for oil jets and oil–air, air alone otherwise);
+    0 where the bearing stands still."""
     brg, batch = cs.brg, cs.batch
     run = cs.omega_cage > 0                       # (a subnormal speed: a cage speed of 0)
     all_run = bool(run.all())
-    if supply == "oil_jet":
-        W = np.asarray(oil_flow_m3_s, float) * 1e6 * 60.0                             # [cm³/min]
-        if all_run:
-            X = oil_volume_fraction_parker(W, cs.n_rpm, brg.dm * 1e3)
-        else:
-            X = np.zeros(batch)
-            X[run] = oil_volume_fraction_parker(np.broadcast_to(W, batch)[run], cs.n_rpm[run], brg.dm * 1e3)
-    else:
-        X = 0.01 if supply == "oil_air" else 0.0
+    X = cavity_oil_fraction(supply, oil_flow_m3_s, np.where(run, cs.n_rpm, 0.0), brg.dm)
     wc = cs.omega_cage if all_run else np.where(run, cs.omega_cage, 1.0)
     if T_oil.size <= _FEW and oil.points is None:  # a few states: the formulas on Python floats
         each = (np.broadcast_to(v, T_oil.shape).ravel().tolist() for v in (T_oil, eta_oil, wc, X))

@@ -4,7 +4,7 @@ r"""Lubrication in the network: the cavity's mixture, the oil supplied and drain
   with 5 % of it held as oil films and droplets (estimated: the hand-written seed-004 network's 2 g
   of oil in a 7210), or with the grease fill; the races and balls exchange with it by the laminar
   flat plate (:mod:`~thermobear.thermal.builders.bearing`) in the oil–air mixture of the operating
-  point (``op.oil_fraction``: Parker's for jets, 1 % for oil–air) or, for grease and dry films, in air.
+  point (``op.oil_fraction``: Parker's for jets and oil–air) or, for grease and dry films, in air.
 * Oil jet: one-way advection from the inlet (``scene.T_oil_in_C``) through the mixture of the
   penetrating share β of the flow (0.4, Brossier et al. 2021, as seed 004 §4.5 uses; the rest
   splashes off and is not modelled).  Circulating oil: all of it (β = 1) passes through the
