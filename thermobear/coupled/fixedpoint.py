@@ -356,7 +356,8 @@ def _creeping(ev, h, lam, exc, restarts: int = 5, **opts):
     r"""Picard restarted from Aitken's Δ² extrapolation of a monotonically creeping path: increments
     shrinking by the ratio λ ∈ (0, 1) sum to the fixed point at x + Δx λ/(1 − λ) (Aitken 1926); the
     restarted Picard decides convergence or runaway from there.  NoConvergence ``exc`` when the restarts
-    do not settle."""
+    do not settle.  (Aitken, A. C. 1926, "On Bernoulli's numerical solution of algebraic equations",
+    Proc. R. Soc. Edinburgh 46, 289–305.)"""
     for _ in range(restarts):
         x = h[-1]["T_K"] + (h[-1]["T_K"] - h[-2]["T_K"]) * lam / (1.0 - lam)
         try:

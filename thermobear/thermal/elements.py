@@ -157,8 +157,8 @@ class BallRaceContact(Element):
             h = film_thickness(np.where(run, Q, 1.0), p["Rx_m"], p["Ry_m"], np.where(run, p["u_m"], 1.0),
                                oil.eta(T_C)[..., None], oil.alpha_p_at(T_C)[..., None], p["E_prime"], kind="central")
             film = dict(h_film=np.where(run, h, 0.0), k_film=np.asarray(oil.k_th(T_C), float)[..., None])
-        G = ball_race_conductance(kb, kr, p["a_m"], p["b_m"], u=p["u_m"], e_ball=thermal_effusivity(mb.k, mb.rho, mb.cp),
-                                  e_ring=thermal_effusivity(mr.k, mr.rho, mr.cp), **film)
+        G = ball_race_conductance(kb, kr, p["a_m"], p["b_m"], u=p["u_m"], e_ball=thermal_effusivity(kb, mb.rho, mb.cp),
+                                  e_ring=thermal_effusivity(kr, mr.rho, mr.cp), **film)
         if film and "h_meniscus_m" in p:
             Gm = meniscus_conductance(film["k_film"], p["Rx_m"], p["Ry_m"], np.where(run, h, 1.0), p["h_meniscus_m"])
             G = G + np.sum(np.where(run & (p["a_m"] > 0), Gm, 0.0), axis=-1)
