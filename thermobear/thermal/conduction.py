@@ -247,7 +247,10 @@ def meniscus_conductance(k_fluid, Rx, Ry, h0, h_m):
     (the area of the contact itself, where the gap is the film, taken as the annulus's inner edge: the
     rigid paraboloid shifted by the flattened ellipse gives the same integral).  The conforming groove
     (R_y ≫ R_x) makes the filled gap long across the race: it carries more heat than the Hertz contact.
-    Where the meniscus ends (h_m) is a property of the lubrication (flooded or starved inlet).
+    Where the meniscus ends (h_m) is a property of the lubrication (flooded or starved inlet).  The
+    paraboloid holds while the filled region stays inside the groove, √(2 R_y h_m) below the ball's
+    radius (a 6205's inner race: h_m up to ≈ 75 µm); beyond, the groove's shoulders end the region and
+    this overestimates G_m by the logarithm's excess (6 % at 100 µm there).
 
     Examples
     --------
