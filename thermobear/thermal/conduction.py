@@ -205,9 +205,7 @@ def ball_race_conductance(k_ball, k_ring, a, b, u=None, e_ball=None, e_ring=None
     kr = checked("k_W_mK", k_ring)[..., None]
     loaded = (a > 0) & (b > 0)
     aa, bb = np.where(loaded, a, 1.0), np.where(loaded, b, 1.0)
-    major, minor = np.maximum(aa, bb), np.minimum(aa, bb)
-    Km = ellipk(1.0 - (minor / major) ** 2)
-    G = 2.0 * np.pi * major / (Km * (1.0 / kb + 1.0 / kr))
+    G = 1.0 / (constriction_resistance(kb, aa, bb) + constriction_resistance(kr, aa, bb))
     if u is not None:
         if e_ball is None or e_ring is None:
             raise InputError("e_ball, e_ring", None, "the effusivities of ball and ring are needed with a rolling speed u")
