@@ -12,7 +12,7 @@ import thermobear as tb
 from thermobear.app.cli import main
 from thermobear.coupled.speeds import (din732_safe_speed, reference_lubricant, thermal_reference_speed,
                                        thermally_safe_speed)
-from thermobear.errors import InputError, NoSpeedRoot
+from thermobear.errors import ContactLimit, InputError, NoSpeedRoot
 from thermobear.rating.speeds import (din732_parameters, din732_speed_ratio, palmgren_moments, reference_conditions,
                                       reference_heat_flow_density, reference_surface, standard_reference_speed)
 
@@ -148,3 +148,21 @@ def test_cli_speed_says_when_the_limit_is_jumped_and_prints_the_answers_warnings
     assert main(["speed", str(scene), "--json"]) == 0
     rep = json.loads(capsys.readouterr().out)["model"]
     assert abs(rep["residual_K"]) > 1.0 and "ThermalRunaway" in rep["jump"]
+
+
+def test_safe_speed_ends_where_the_contacts_cannot_carry_the_loads(tmp_path):
+    # a 7311 B under its init loads (Fa 2710 N, Fr 2580 N): with speed the balls' centrifugal force turns
+    # the inner contacts of the lightly loaded balls towards the groove's edge; the ellipse passes it near
+    # 8300 rpm, before the hottest ring reaches 70 °C (it is 59 °C at 7100 rpm)
+    path = tmp_path / "a7311.toml"
+    assert main(["init", "7311B", "--lubrication", "oil-air", "--out", str(path)]) == 0
+    sc = tb.load_scene(path)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        with pytest.raises(NoSpeedRoot, match="highest speed at which the contacts carry the loads") as e:
+            thermally_safe_speed(sc, limit_C=70.0, points=5)
+        n_c = float(str(e.value).split("no speed up to ")[1].split(" rpm")[0])
+        assert tb.steady_state(sc.with_(n_rpm=n_c)).P_W > 0.0           # carried at the speed named …
+        with pytest.raises(ContactLimit, match="groove bottom"):        # … and not 0.5 % above it
+            tb.steady_state(sc.with_(n_rpm=1.005 * n_c))
+        assert thermally_safe_speed(sc, limit_C=50.0, points=5).n_rpm < n_c   # a crossing below it: found

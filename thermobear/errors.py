@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = [
-    "ThermobearError", "InputError", "SolverError", "NoEquilibrium",
+    "ThermobearError", "InputError", "ContactLimit", "SolverError", "NoEquilibrium",
     "NoConvergence", "ThermalRunaway", "ThermalPreloadRunaway", "NoSpeedRoot", "OutsideValidity",
     "ExtrapolationWarning",
 ]
@@ -36,6 +36,11 @@ class InputError(ThermobearError, ValueError):
         super().__init__(msg)
 
 
+class ContactLimit(InputError):
+    """An operating point's loads that its contacts cannot carry: the maximum contact pressure beyond the
+    refused limit, or a contact ellipse past its groove's equator (over the shoulder).  An InputError of
+    the loads; a speed search meets it at a speed the bearing cannot run under those loads (e.g. the
+    centrifugal force turning the inner contacts towards the groove's edge) and ends its range there."""
 
 
 class SolverError(ThermobearError, RuntimeError):

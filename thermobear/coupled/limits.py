@@ -10,7 +10,7 @@ import warnings
 
 import numpy as np
 
-from thermobear.errors import ExtrapolationWarning, InputError, OutsideValidity
+from thermobear.errors import ContactLimit, ExtrapolationWarning, InputError, OutsideValidity
 from thermobear.arrays import take
 from thermobear.loads.api import check_contacts, groove_angle, loads_text
 from thermobear.validity import LIMITS, P_MAX_REFUSE_PA, check, collect
@@ -45,7 +45,7 @@ def contact_pressure(contacts, field: str = "operation (Fa_N, Fr_N, M_Nm)", warn
 
 
 def overloads(scenes, contacts) -> dict:
-    """Points whose loads the contacts cannot carry: index → InputError naming the loads, for a contact
+    """Points whose loads the contacts cannot carry: index → ContactLimit (an InputError) naming the loads, for a contact
     set over the points of ``scenes``: the maximum contact pressure beyond
     :data:`thermobear.validity.P_MAX_REFUSE_PA` (twice the ISO 76 static rating load) or a contact ellipse
     past its groove's equator (:func:`thermobear.loads.check_contacts`, the messages made only for the
@@ -63,9 +63,10 @@ def overloads(scenes, contacts) -> dict:
         one = {s: {k: np.reshape(sides[s][k], (B, -1))[b] for k in ("Q", "alpha", "a", "b")} for s in sides}
         try:
             check_contacts(sc.bearing, one, "operation (Fa_N, Fr_N, M_Nm)",
-                           given=loads_text(sc.Fa, sc.Fr, sc.M, sc.Fz, sc.My) + f" ({sc.bearing.name})")
+                           given=loads_text(sc.Fa, sc.Fr, sc.M, sc.Fz, sc.My)
+                           + (f" at {sc.n_rpm:.6g} rpm" if sc.n_rpm > 0 else "") + f" ({sc.bearing.name})")
         except InputError as exc:
-            out[int(b)] = exc
+            out[int(b)] = ContactLimit(exc.field, exc.value, exc.expected)
     return out
 
 

@@ -17,7 +17,11 @@ speed the validity limits accept (n·d_m ≤ 4e6 mm/min, :data:`thermobear.valid
 the first crossing (the lowest speed that meets the condition: the conservative one when the
 ladder is not monotonic, which the result reports) and refines it with Brent's method
 (:func:`scipy.optimize.brentq`).  No crossing raises :class:`~thermobear.errors.NoSpeedRoot` naming
-why ("… at no speed up to …", "… already at …").
+why ("… at no speed up to …", "… already at …").  The coupled search also ends its range at the speed
+where the scene's contacts can no longer carry its loads (:class:`~thermobear.errors.ContactLimit`: in
+an angular contact bearing the balls' centrifugal force turns the inner contacts towards the groove's
+edge until the ellipse passes it); with no crossing below it, that speed is found by bisection and
+named in the NoSpeedRoot.
 """
 from __future__ import annotations
 
@@ -29,7 +33,7 @@ import numpy as np
 from thermobear.contact.geometry import BallBearing
 from thermobear.coupled.sources import prepare
 from thermobear.coupled.steady import SteadyState, steady_state, steady_states
-from thermobear.errors import InputError, NoConvergence, NoSpeedRoot, OutsideValidity, ThermalRunaway
+from thermobear.errors import ContactLimit, InputError, NoConvergence, NoSpeedRoot, OutsideValidity, ThermalRunaway
 from thermobear.lazy import lazy_module
 from thermobear.losses import bearing_losses
 from thermobear.lubrication.lubricant import Lubricant, lubricant
@@ -244,9 +248,11 @@ def _one(scene, prepared):
         return exc
 
 
-def _ladder_T(scenes, node, prepared, limit_C) -> np.ndarray:
-    """Node temperatures of the ladder's steady states (a point without an equilibrium below the lubricant's
-    limit: inf); another error at or below the first crossing is raised."""
+def _ladder_T(scenes, node, prepared, limit_C) -> tuple:
+    """(node temperatures of the ladder's steady states, index of the first rung whose contacts cannot carry
+    the loads or None): a point without an equilibrium below the lubricant's limit is inf; the rungs from a
+    :class:`~thermobear.errors.ContactLimit` on are cut off (it is raised at the first rung); another error
+    at or below the first crossing is raised."""
     T, errors = [], {}
     try:
         results = steady_states(scenes, prepared=prepared)
@@ -254,7 +260,10 @@ def _ladder_T(scenes, node, prepared, limit_C) -> np.ndarray:
         if not _beyond(exc):
             raise
         results = [_one(sc, prepared) for sc in scenes]
-    for k, r in enumerate(results):
+    stop = next((k for k, r in enumerate(results) if isinstance(r, ContactLimit)), None)
+    if stop == 0:
+        raise results[0]
+    for k, r in enumerate(results[:stop]):
         if isinstance(r, Exception):
             T.append(np.inf)
             if not _beyond(r):
@@ -266,7 +275,39 @@ def _ladder_T(scenes, node, prepared, limit_C) -> np.ndarray:
     for k, e in errors.items():
         if i is None or k <= i:
             raise e
-    return T
+    return T, stop
+
+
+def _contact_limit(scene, prepared, lo, hi, node, rtol=2e-3) -> tuple:
+    """(speed [rpm], ``node``'s temperature there [°C], the ContactLimit just above it): bisection in log speed
+    between ``lo`` (its contacts carry the loads) and ``hi`` (they do not) to ``rtol`` relative."""
+    exc, T_lo = None, None
+    while hi / lo > 1.0 + rtol:
+        mid = float(np.sqrt(lo * hi))
+        try:
+            T_lo, lo = hottest_ring_C(steady_state(scene.with_(n_rpm=mid), prepared=prepared), node), mid
+        except ContactLimit as e:
+            hi, exc = mid, e
+        except (ThermalRunaway, InputError) as e:
+            if not _beyond(e):
+                raise
+            T_lo, lo = np.inf, mid                    # beyond the lubricant's limit, but the contacts carry it
+    if T_lo is None:
+        T_lo = hottest_ring_C(steady_state(scene.with_(n_rpm=lo), prepared=prepared), node)
+    if exc is None:
+        try:
+            steady_state(scene.with_(n_rpm=float(hi)), prepared=prepared)
+        except ContactLimit as e:
+            exc = e
+    return lo, T_lo, exc
+
+
+def _contact_no_root(scene, limit_C, what, n_c, T_c, exc) -> NoSpeedRoot:
+    """The NoSpeedRoot of a search that meets the contacts' limit ``n_c`` [rpm] below the temperature limit."""
+    why = exc.expected if exc is not None else "contacts cannot carry the loads"
+    return NoSpeedRoot(f"{scene.name}: the limit {limit_C:g} °C on {what} is reached at no speed up to {n_c:.6g} rpm, "
+                       f"the highest speed at which the contacts carry the loads ({T_c:.2f} °C there); above it the "
+                       f"{why}", residual=T_c - limit_C)
 
 
 def thermally_safe_speed(scene: Scene, *, limit_C: float = 70.0, node: str | None = None, n_min_rpm=None,
@@ -307,8 +348,11 @@ def thermally_safe_speed(scene: Scene, *, limit_C: float = 70.0, node: str | Non
     ladder = np.geomspace(bottom, top, points)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OutsideValidity)         # the answer's own warnings are kept
-        T = _ladder_T([scene.with_(n_rpm=float(n)) for n in ladder], node, prep, limit_C)
+        T, stop = _ladder_T([scene.with_(n_rpm=float(n)) for n in ladder], node, prep, limit_C)
         i = _first_crossing(ladder, T - limit_C)
+        if i is None and stop is not None:
+            n_c, T_c, exc = _contact_limit(scene, prep, float(ladder[stop - 1]), float(ladder[stop]), node)
+            raise _contact_no_root(scene, limit_C, what, n_c, T_c, exc)
         if i is None:
             raise NoSpeedRoot(f"{scene.name}: the limit {limit_C:g} °C on {what} is reached at no speed up to "
                               f"{top:.6g} rpm (n·dm limit of the models; {T[-1]:.2f} °C there)",
@@ -317,17 +361,24 @@ def thermally_safe_speed(scene: Scene, *, limit_C: float = 70.0, node: str | Non
             raise NoSpeedRoot(f"{scene.name}: the limit {limit_C:g} °C on {what} is exceeded already at "
                               f"{bottom:.6g} rpm ({T[0]:.2f} °C)", residual=T[0] - limit_C)
 
-        seen = {}
+        seen, refused = {}, []
 
         def excess(n):
             try:
                 seen[n] = steady_state(scene.with_(n_rpm=float(n)), prepared=prep)
                 return hottest_ring_C(seen[n], node) - limit_C
             except (ThermalRunaway, InputError) as e:
+                refused.append(float(n))
                 if not _beyond(e):
                     raise
                 return 1e3                                      # no equilibrium: beyond any limit
-        n, r = optimize.brentq(excess, ladder[i - 1], ladder[i], xtol=xtol_rpm, full_output=True)
+        try:
+            n, r = optimize.brentq(excess, ladder[i - 1], ladder[i], xtol=xtol_rpm, full_output=True)
+        except ContactLimit:          # between the rungs (the top one ran away first): the search ends there
+            n_c, T_c, exc = _contact_limit(scene, prep, float(ladder[i - 1]), refused[-1], node)
+            if not T_c >= limit_C:
+                raise _contact_no_root(scene, limit_C, what, n_c, T_c, exc) from None
+            n, r = optimize.brentq(excess, ladder[i - 1], n_c, xtol=xtol_rpm, full_output=True)
     if not r.converged:
         raise NoConvergence(f"{scene.name}: Brent did not converge ({r.flag})", iterations=r.iterations)
     st = seen[n] if n in seen else steady_state(scene.with_(n_rpm=float(n)), prepared=prep)
