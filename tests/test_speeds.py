@@ -159,10 +159,20 @@ def test_safe_speed_ends_where_the_contacts_cannot_carry_the_loads(tmp_path):
     sc = tb.load_scene(path)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        with pytest.raises(NoSpeedRoot, match="highest speed at which the contacts carry the loads") as e:
-            thermally_safe_speed(sc, limit_C=70.0, points=5)
-        n_c = float(str(e.value).split("no speed up to ")[1].split(" rpm")[0])
+        # 9 rungs: the one at 18 050 rpm is refused (ContactLimit); 5 rungs: the top one, 45 714 rpm, runs away
+        # (no equilibrium), and Brent's search between 7127 rpm and it meets the contacts' limit
+        for points in (9, 5):
+            with pytest.raises(NoSpeedRoot, match="highest speed at which the contacts carry the loads") as e:
+                thermally_safe_speed(sc, limit_C=70.0, points=points)
+            n_c = float(str(e.value).split("no speed up to ")[1].split(" rpm")[0])
+            T_c = float(str(e.value).split("carry the loads (")[1].split(" °C")[0])
+            assert 7127.0 < n_c < 18050.0 and 59.46 < T_c < 70.0
         assert tb.steady_state(sc.with_(n_rpm=n_c)).P_W > 0.0           # carried at the speed named …
         with pytest.raises(ContactLimit, match="groove bottom"):        # … and not 0.5 % above it
             tb.steady_state(sc.with_(n_rpm=1.005 * n_c))
-        assert thermally_safe_speed(sc, limit_C=50.0, points=5).n_rpm < n_c   # a crossing below it: found
+        # a limit the hottest ring passes below the contacts' limit, between its last rung and it: found there
+        for points in (9, 5):
+            r = thermally_safe_speed(sc, limit_C=T_c - 0.5, points=points, xtol_rpm=0.5)
+            assert 7127.0 < r.n_rpm < n_c and abs(r.T_C - (T_c - 0.5)) < 0.01
+            assert points == 5 or r.bracket_rpm[1] == pytest.approx(n_c, rel=3e-3)    # (9: from the contacts' limit)
+        assert thermally_safe_speed(sc, limit_C=50.0, points=5).n_rpm < 7127.0   # a crossing on the ladder

@@ -350,9 +350,12 @@ def thermally_safe_speed(scene: Scene, *, limit_C: float = 70.0, node: str | Non
         warnings.simplefilter("ignore", OutsideValidity)         # the answer's own warnings are kept
         T, stop = _ladder_T([scene.with_(n_rpm=float(n)) for n in ladder], node, prep, limit_C)
         i = _first_crossing(ladder, T - limit_C)
+        lo, hi = (float(ladder[i - 1]), float(ladder[i])) if i else (None, None)
         if i is None and stop is not None:
             n_c, T_c, exc = _contact_limit(scene, prep, float(ladder[stop - 1]), float(ladder[stop]), node)
-            raise _contact_no_root(scene, limit_C, what, n_c, T_c, exc)
+            if not T_c >= limit_C:
+                raise _contact_no_root(scene, limit_C, what, n_c, T_c, exc)
+            i, lo, hi = stop, float(ladder[stop - 1]), n_c      # the crossing lies below the contacts' limit
         if i is None:
             raise NoSpeedRoot(f"{scene.name}: the limit {limit_C:g} °C on {what} is reached at no speed up to "
                               f"{top:.6g} rpm (n·dm limit of the models; {T[-1]:.2f} °C there)",
@@ -373,19 +376,20 @@ def thermally_safe_speed(scene: Scene, *, limit_C: float = 70.0, node: str | Non
                     raise
                 return 1e3                                      # no equilibrium: beyond any limit
         try:
-            n, r = optimize.brentq(excess, ladder[i - 1], ladder[i], xtol=xtol_rpm, full_output=True)
+            n, r = optimize.brentq(excess, lo, hi, xtol=xtol_rpm, full_output=True)
         except ContactLimit:          # between the rungs (the top one ran away first): the search ends there
-            n_c, T_c, exc = _contact_limit(scene, prep, float(ladder[i - 1]), refused[-1], node)
+            n_c, T_c, exc = _contact_limit(scene, prep, lo, refused[-1], node)
             if not T_c >= limit_C:
                 raise _contact_no_root(scene, limit_C, what, n_c, T_c, exc) from None
-            n, r = optimize.brentq(excess, ladder[i - 1], n_c, xtol=xtol_rpm, full_output=True)
+            hi = n_c
+            n, r = optimize.brentq(excess, lo, hi, xtol=xtol_rpm, full_output=True)
     if not r.converged:
         raise NoConvergence(f"{scene.name}: Brent did not converge ({r.flag})", iterations=r.iterations)
     st = seen[n] if n in seen else steady_state(scene.with_(n_rpm=float(n)), prepared=prep)
     Tn = hottest_ring_C(st, node)
     rise = T[int(np.argmin(T[:i + 1])):i + 1]       # from the coolest ladder point up to the crossing
     return SafeSpeed(scene=scene.name, n_rpm=float(n), limit_C=float(limit_C), node=node or "hottest ring", T_C=Tn,
-                     residual_K=Tn - limit_C, iterations=int(r.iterations), bracket_rpm=(ladder[i - 1], ladder[i]),
+                     residual_K=Tn - limit_C, iterations=int(r.iterations), bracket_rpm=(lo, hi),
                      monotonic=bool(np.all(np.diff(rise) > 0.0)), steady=st, warnings=list(st.warnings))
 
 
