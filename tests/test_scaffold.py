@@ -165,3 +165,14 @@ def test_init_refuses_a_closure_on_a_thrust_bearing_and_unknown_suffixes(capsys)
     assert "thrust ball bearing has no seals" in capsys.readouterr().err
     assert main(["init", "6204-2XX", "--lubrication", "grease"]) == 2
     assert "unknown catalog name; close: 6204" in capsys.readouterr().err
+
+
+def test_init_takes_iso_76_c0_from_the_geometry_where_the_catalogue_has_none(capsys):
+    """The seed-002 three-ball thrust bearing has no catalogue C0: init refused it ("bearing.C0_kN"), while every
+    run rates it with ISO 76's C0 from its geometry; init now takes ISO 15312's reference load from that C0."""
+    from thermobear.rating.life import load_ratings
+    C0 = load_ratings(tb.bearing("51205-3ball"))[1]
+    text = _init(capsys, "51205-3ball", "--lubrication", "grease")
+    line = next(ln for ln in text.splitlines() if ln.startswith("Fa_N"))
+    assert float(line.split("=")[1].split("#")[0]) == pytest.approx(0.02 * C0, rel=5e-3)
+    assert f"C0 = {C0 / 1e3:.2f} kN (ISO 76 from the geometry)" in line

@@ -124,7 +124,8 @@ def _operation(brg, ref: ReferenceSpeed | None, n_rpm, Fr_N, Fa_N) -> list:
     if Fr_N is None and Fa_N is None:
         loads = reference_loads(brg)
         fa, fr = loads.get("Fa", 0.0), loads.get("Fr", 0.0)
-        C0 = f"C0 = {brg.C0 / 1e3:.2f} kN (catalogue, ISO 76)"
+        C0, how = stated_ratings(brg)[1:]
+        C0 = f"C0 = {C0 / 1e3:.2f} kN ({'catalogue, ISO 76' if how[1] == 'stated' else how[1]})"
         src_fr = f"N: 0.05 C0, ISO 15312 reference load of radial bearings, {C0}"
         src_fa = {"thrust": f"N: 0.02 C0, ISO 15312 reference load of thrust bearings, {C0}",
                   "angular_contact": "N: 1.25 Fr tan(alpha0), the axial reaction of a half load zone (Sjövall; Harris "

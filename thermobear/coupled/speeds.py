@@ -38,6 +38,7 @@ from thermobear.lazy import lazy_module
 from thermobear.losses import bearing_losses
 from thermobear.lubrication.lubricant import Lubricant, lubricant
 from thermobear.rating.iso76 import static_equivalent_load
+from thermobear.rating.life import stated_ratings
 from thermobear.rating.speeds import (din732_heat_flow, din732_parameters, din732_speed_ratio, palmgren_coefficients,
                                       palmgren_load, palmgren_moments, reference_conditions,
                                       reference_heat_flow_density, reference_surface, standard_reference_speed)
@@ -118,7 +119,8 @@ def _first_crossing(n, g):
 
 
 def reference_loads(brg: BallBearing) -> dict:
-    """ISO 15312's reference load of ``brg`` as scene loads {"Fa": N, "Fr": N}: the fraction of C0 of
+    """ISO 15312's reference load of ``brg`` as scene loads {"Fa": N, "Fr": N}: the fraction of C0 (as the data
+    state it, else ISO 76's from the geometry: :func:`~thermobear.rating.life.stated_ratings`) of
     :func:`~thermobear.rating.speeds.reference_conditions`, and for an angular contact bearing the axial
     reaction of a half load zone (:data:`AXIAL_REACTION`).
 
@@ -126,10 +128,8 @@ def reference_loads(brg: BallBearing) -> dict:
     >>> {k: round(v) for k, v in reference_loads(tb.bearing("6208")).items()}
     {'Fr': 994}
     """
-    if brg.C0 is None:
-        raise InputError("bearing.C0_kN", None, "ISO 15312's reference load is a fraction of C0")
     ref = reference_conditions(brg.kind)
-    loads = {ref.load: ref.load_fraction * brg.C0}
+    loads = {ref.load: ref.load_fraction * stated_ratings(brg)[1]}
     if brg.kind == "angular_contact":                 # the axial reaction of a half load zone (ε = 0.5)
         loads["Fa"] = AXIAL_REACTION * loads["Fr"] * float(np.tan(brg.alpha0))
     return loads
