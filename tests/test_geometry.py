@@ -111,3 +111,18 @@ def test_an_edited_material_file_is_read_again(tmp_path, monkeypatch):
 def test_a_bore_that_leaves_no_ring_wall_is_refused():
     with pytest.raises(InputError, match="bore"):
         tb.bearing("6210").with_(bore=69e-3)
+
+
+def test_custom_deep_groove_bearing_without_a_clearance_takes_iso_5753_normal_group():
+    """A bearing table with its geometry and a bore but no Pd_mm, alpha0_deg or clearance_group took Pd = 0
+    silently (and the fits then consumed it); it takes ISO 5753-1's normal group, as the catalogue's do."""
+    from thermobear.contact.geometry import bearing_from_dict, radial_clearance
+    geo = dict(kind="deep_groove", D_mm=12.7, dm_mm=60.0, Z=9, fi=0.515, fo=0.525, bore_mm=40.0)
+    b = bearing_from_dict(geo)
+    lo, hi = radial_clearance(40e-3, "CN")
+    assert b.clearance_group == "CN" and b.Pd == pytest.approx(0.5 * (lo + hi))
+    assert b.Pd == bearing("6208").Pd                                   # the catalogue's 40 mm bore, CN
+    assert bearing_from_dict({**geo, "clearance_group": "C3"}).Pd > b.Pd
+    assert bearing_from_dict({**geo, "Pd_mm": 0.0}).Pd == 0.0           # a stated clearance wins
+    no_bore = {k: v for k, v in geo.items() if k != "bore_mm"}
+    assert bearing_from_dict(no_bore).Pd == 0.0 and bearing_from_dict(no_bore).clearance_group is None

@@ -473,7 +473,10 @@ def bearing_from_dict(d: dict, name: str = "custom", where: str = "bearing") -> 
 
     A deep groove bearing without ``Pd_mm`` but with ``clearance_group`` and ``bore_mm`` takes Pd
     as the mid value of that ISO 5753-1 group; an explicit ``Pd_mm`` wins, and the group is kept only
-    if Pd lies in its range.  Unknown keys raise InputError naming them; so do missing required keys.
+    if Pd lies in its range.  With none of ``Pd_mm``, ``alpha0_deg``, ``clearance_group`` stated, a deep
+    groove bearing with a bore takes the normal group CN (what a bearing is delivered with unless another
+    group is ordered, ISO 5753-1:2009 §4), as the catalogue's do; without a bore, Pd = 0.  Unknown keys
+    raise InputError naming them; so do missing required keys.
     """
     t = check_table(d, FIELDS, where)
     unc = check_uncertainty(t.get("uncertainty", {}), {k: FIELDS[k] for k in t if FIELDS[k].kind in ("number", "integer")},
@@ -484,8 +487,11 @@ def bearing_from_dict(d: dict, name: str = "custom", where: str = "bearing") -> 
             kw[mk] = material(t[mk])
     kind = t.get("kind", "deep_groove")
     try:
-        if t.get("clearance_group") is not None:
-            kw["clearance_group"] = _clearance(kw, t["clearance_group"], kind, where)
+        group = t.get("clearance_group")
+        if group is None and kind == "deep_groove" and "bore" in kw and not {"Pd_mm", "alpha0_deg"} & set(t):
+            group = "CN"                      # the normal group, as delivered (ISO 5753-1)
+        if group is not None:
+            kw["clearance_group"] = _clearance(kw, group, kind, where)
         return BallBearing(Z=t["Z"], fi=t["fi"], fo=t["fo"], kind=kind, name=t.get("name", name),
                            series=t.get("series"), C0=t["C0_kN"] * 1e3 if "C0_kN" in t else None,
                            C=t["C_kN"] * 1e3 if "C_kN" in t else None, estimated=tuple(t.get("estimated", ())),

@@ -454,16 +454,17 @@ def din732_safe_speed(scene: Scene, *, limit_C: float = 70.0) -> Din732Speed:
     if not np.isfinite(dT_A) or dT_A <= 0.0:
         raise InputError("limit_C", limit_C, f"above the ambient {scene.T_ambient_C:g} °C (no heat leaves the bearing)")
     ref = reference_conditions(brg.kind)
+    C0 = stated_ratings(brg)[1]                       # the data's, else ISO 76's from the geometry
     A_s = float(reference_surface(brg.bore, brg.outer_diameter, brg.width, brg.kind))
-    f0r, f1r = palmgren_coefficients(brg.kind, "oil_bath", ref.load_fraction * brg.C0, brg.C0)
-    n_r, _, _ = standard_reference_speed(A_s, brg.dm, ref.load_fraction * brg.C0, f0r, float(f1r), ref.nu_cSt,
+    f0r, f1r = palmgren_coefficients(brg.kind, "oil_bath", ref.load_fraction * C0, C0)
+    n_r, _, _ = standard_reference_speed(A_s, brg.dm, ref.load_fraction * C0, f0r, float(f1r), ref.nu_cSt,
                                          n_max_rpm=_ceiling_rpm(brg))
     oil_L_min, dT_oil = 0.0, 0.0
     if scene.supply == "oil_jet" and scene.T_oil_in_C is not None:
         oil_L_min, dT_oil = scene.oil_flow * 6e4, max(limit_C - scene.T_oil_in_C, 0.0)
     Phi = float(din732_heat_flow(A_s, dT_A, oil_flow_L_min=oil_L_min, dT_oil=dT_oil))
     P0 = static_equivalent_load(scene.Fr, scene.Fa, brg.alpha0, brg.kind)
-    f0, f1 = palmgren_coefficients(brg.kind, _SUPPLIES[scene.supply], P0, brg.C0)
+    f0, f1 = palmgren_coefficients(brg.kind, _SUPPLIES[scene.supply], P0, C0)
     P1 = float(palmgren_load(brg.kind, scene.Fa, scene.Fr, brg.alpha0))
     nu = float(scene.lubricant.nu(limit_C))
     M0, M1 = palmgren_moments(n_r, nu, P1, brg.dm, f0, f1)
