@@ -10,7 +10,7 @@ from scipy.optimize import brentq
 
 import thermobear as tb
 from thermobear.app.cli import main
-from thermobear.coupled.speeds import (din732_safe_speed, reference_lubricant, thermal_reference_speed,
+from thermobear.coupled.speeds import (din732_safe_speed, reference_loads, reference_lubricant, thermal_reference_speed,
                                        thermally_safe_speed)
 from thermobear.errors import ContactLimit, InputError, NoSpeedRoot
 from thermobear.rating.speeds import (din732_parameters, din732_speed_ratio, palmgren_moments, reference_conditions,
@@ -176,3 +176,14 @@ def test_safe_speed_ends_where_the_contacts_cannot_carry_the_loads(tmp_path):
             assert 7127.0 < r.n_rpm < n_c and abs(r.T_C - (T_c - 0.5)) < 0.01
             assert points == 5 or r.bracket_rpm[1] == pytest.approx(n_c, rel=3e-3)    # (9: from the contacts' limit)
         assert thermally_safe_speed(sc, limit_C=50.0, points=5).n_rpm < 7127.0   # a crossing on the ladder
+
+
+def test_din732_of_a_bearing_without_a_catalogue_c0_takes_iso_76s(block):
+    """A bearing whose data state no C0 (a scene's own geometry) was an internal error (None × float) in DIN 732;
+    it takes ISO 76's C0 from the geometry, as the ratings and ISO 15312's reference load do."""
+    from thermobear.rating.life import load_ratings
+    bare = block.with_(bearing=block.bearing.with_(C0=None))
+    C0 = load_ratings(block.bearing)[1]
+    stated = block.with_(bearing=block.bearing.with_(C0=C0))
+    assert din732_safe_speed(bare).n_rpm == pytest.approx(din732_safe_speed(stated).n_rpm, rel=1e-12)
+    assert reference_loads(bare.bearing)["Fr"] == pytest.approx(0.05 * C0)
