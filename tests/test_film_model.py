@@ -118,6 +118,31 @@ def test_film_cells_of_a_heat_up_converge(scene, monkeypatch):
     assert fine.T_C["inner_ring"][-1] - fine.T_C["inner_ring"][0] > 5.0           # the film temperature moves
 
 
+def test_film_cells_batched_ahead_equal_one_by_one_and_fall_back_alone(scene, monkeypatch):
+    """The grid nodes a heat-up moves towards are solved in one batched call with the node it meets; their loads
+    are those solved node by node (to the load solver's tolerance), and a batch that fails leaves the node met
+    solved alone (here every batch of more than one node is made to fail)."""
+    s = scene.with_(Fr=1300.0)
+    t = np.linspace(0.0, 1800.0, 7)
+    batched = tb.transient(s, 1800.0, t_eval=t)
+    monkeypatch.setattr(transient_module, "_FILM_AHEAD", 1)
+    alone = tb.transient(s, 1800.0, t_eval=t)
+    real, failed = transient_module.family_film_loads, []
+
+    def fails_in_batches(fam, T, last):
+        if len(T) > 1:
+            failed.append(len(T))
+            raise tb.NoConvergence("a batch that fails")
+        return real(fam, T, last)
+    monkeypatch.setattr(transient_module, "_FILM_AHEAD", 8)
+    monkeypatch.setattr(transient_module, "family_film_loads", fails_in_batches)
+    fallback = tb.transient(s, 1800.0, t_eval=t)
+    for other in (alone, fallback):
+        assert max(np.abs(batched.T_C[n] - other.T_C[n]).max() for n in other.T_C) < 1e-8
+    assert failed and max(failed) == 8
+    assert batched.T_C["inner_ring"][-1] - batched.T_C["inner_ring"][0] > 9.0      # 3+ grid nodes crossed
+
+
 def test_transient_outputs_are_ordered_and_unique(scene):
     tr = tb.transient(scene.with_(n_rpm=3200.0), t_end_s=500.0)
     assert np.all(np.diff(tr.t_s) > 0) and tr.t_s[0] == 0.0 and tr.t_s[-1] == 500.0
