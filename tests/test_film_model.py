@@ -203,3 +203,22 @@ def test_cold_started_oil_bath_settles_where_substitution_would_cycle():
     assert r[0] > 20.0 and r[1] < -20.0                              # the substitution's swing
     assert abs(r[-1]) <= 0.1 and len(film) <= 10
     assert st.T_contacts_C == pytest.approx(film[-1]["T_film_C"], abs=0.1)
+
+
+def test_loads_of_cold_films_that_run_away_are_not_the_verdict(tmp_path):
+    """A 16002 in an oil bath at −30 °C (init defaults, 12 000 rpm): with the films of the cold start the balls'
+    losses run away (425 W) — this was the point's ThermalRunaway, though the films thin as the bearing warms
+    and its heat-up settles near −10 °C.  Such a runaway is now a residual toward the limit; the point ends on the
+    film fixed point's own verdict (here the jump between a starved cold equilibrium and a warm one)."""
+    from thermobear.app.cli import main
+    path = tmp_path / "b.toml"
+    assert main(["init", "16002", "--lubrication", "oil-bath", "--out", str(path)]) == 0
+    s = tb.load_scene(path).with_(T_ambient_C=-30.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        with pytest.raises(tb.NoConvergence, match="no film temperature fixed point") as e:
+            steady_state(s.with_(models=FILM))
+        assert e.value.history[0].get("runaway") and e.value.history[1]["T_film_C"] > 240.0
+        assert "heat-up from ambient" in str(e.value)
+        tr = tb.transient(s, 1800.0, t_eval=[0.0, 1800.0])
+    assert max(T[-1] for T in tr.T_C.values()) < 0.0                 # the heat-up settles cold

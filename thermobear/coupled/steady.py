@@ -55,7 +55,8 @@ from thermobear.coupled.limits import emit, overloads
 from thermobear.coupled.ratings import check_static_safety
 from thermobear.coupled.sources import Coupling, family_network, loss_sources, prepare, prepared_for
 from thermobear.coupled.states import Answer, SteadyState, finish
-from thermobear.errors import ExtrapolationWarning, InputError, NoConvergence, OutsideValidity, SolverError
+from thermobear.errors import (ExtrapolationWarning, InputError, NoConvergence, OutsideValidity, SolverError,
+                               ThermalRunaway)
 from thermobear.loads.api import check_loads, contact_bounds
 from thermobear.models import plan_many
 from thermobear.rating.life import stated_ratings
@@ -66,6 +67,7 @@ __all__ = ["SteadyState", "steady_state", "steady_states", "T_LIMIT_K"]
 _FILM_TOL_K = 0.1                              #: film temperature fixed point tolerance [K]
 _FILM_MAXITER = 20
 _FILM_JUMP_K = 1e-3                            #: a bracket this narrow with answers apart by > the tolerance: a jump [K]
+_FILM_HOT_C = T_LIMIT_K - _C0 - 1.0             #: the answer taken for loads whose equilibrium runs away [°C]
 SCENE_LOADS = ("operation.Fa_N", "operation.Fr_N", "operation.M_Nm", "operation.n_rpm")
 
 
@@ -205,11 +207,15 @@ def _film_jump(history) -> NoConvergence | None:
     if j is None or abs(T[-1] - T[j]) > _FILM_JUMP_K:
         return None
     a, b = history[j], history[-1]
+
+    def answer(e):
+        return (f"no equilibrium below {_FILM_HOT_C + 1.0:g} °C" if e.get("runaway") else
+                f"{e['T_contacts_C']:.2f} °C ({e['P_W']:.4g} W)")
     return NoConvergence(
         f"film load model: no film temperature fixed point — at film temperatures {a['T_film_C']:.2f} and "
-        f"{b['T_film_C']:.2f} °C the answers are {a['T_contacts_C']:.2f} °C ({a['P_W']:.4g} W) and "
-        f"{b['T_contacts_C']:.2f} °C ({b['P_W']:.4g} W): the loads or the thermal equilibrium jump there (a ball "
-        "lifting off, or two equilibria of losses that rise with temperature, e.g. a starved cold start)",
+        f"{b['T_film_C']:.2f} °C the answers are {answer(a)} and {answer(b)}: the loads or the thermal equilibrium "
+        "jump there (a ball lifting off, or two equilibria of losses that rise with temperature, e.g. a starved cold "
+        "start); the heat-up from ambient (thermobear transient) shows where the bearing settles",
         iterations=len(history), residual=abs(r[-1]), history=history)
 
 
@@ -262,11 +268,21 @@ class _FilmRows:
         film temperature settled are done, the others go on from their answer."""
         nxt, k, hs = [], self.k, self.fam.models["high_speed"][0] == "yes"
         for j in self.live:
-            st = self.results[j]
+            st, h = self.results[j], self.hist[j]
+            if isinstance(st, ThermalRunaway) and self.T_ref[j] < _FILM_HOT_C:
+                # the loads of films colder than the limit run away: the answer lies beyond the limit, where the
+                # films are thinner: a residual toward it (not the point's verdict: loads at hot films decide)
+                h.append(dict(iteration=k, T_film_C=float(self.T_ref[j]), T_contacts_C=_FILM_HOT_C,
+                              P_W=float(st.history[-1]["P_W"]) if st.history else 0.0, runaway=True))
+                self.out[j] = _film_jump(h)
+                if self.out[j] is None:
+                    self.T_ref[j], self.start[j] = next_film_temperature(h), np.nan
+                    nxt.append(j)
+                continue
             if not isinstance(st, Answer):
                 self.out[j] = st
                 continue
-            T_new, h = st.T_contacts_C, self.hist[j]
+            T_new = st.T_contacts_C
             h.append(dict(iteration=k, T_film_C=float(self.T_ref[j]), T_contacts_C=T_new, P_W=st.P_W))
             if abs(T_new - self.T_ref[j]) <= _FILM_TOL_K:
                 st = st.state()
