@@ -250,3 +250,28 @@ def test_film_solve_from_a_given_dry_solution_is_the_same_equilibrium():
         a, b = getattr(own[0], k), getattr(given[0], k)
         assert np.max(np.abs(a - b)) <= 1e-12 * np.max(np.abs(a)), k
     assert given[0].iterations == own[0].iterations and given[0].residual < 1e-10
+
+
+def test_viscosity_continuation_of_several_cases_is_the_same_equilibrium(monkeypatch):
+    # cases whose film stage fails from the dry solution are re-solved together by continuation in viscosity;
+    # with two or more of them the scaled viscosities (rows, 1) were broadcast against the stage's (rows,)
+    # parameters into (rows, rows) — an internal error.  Here every first film-stage solve is made to fail:
+    # the continuation reaches the direct solution of each case.
+    import dataclasses
+    import thermobear.loads.highspeed as hs
+    Fr = np.array([25.0, 750.0, 325.0])
+    eta = np.array([0.0456, 0.0221, 0.0124])
+    direct = load_distribution_high_speed_full(B, 450.0, Fr, n_rpm=4800.0, film=dict(eta=eta, alpha_p=2e-8))
+    real, seen = hs.newton, []
+
+    def first_film_solve_fails(pb, z, opt):
+        r = real(pb, z, opt)
+        if getattr(pb, "film", None) is not None and not seen:
+            seen.append(len(z))
+            return dataclasses.replace(r, converged=np.zeros_like(r.converged))
+        return r
+    monkeypatch.setattr(hs, "newton", first_film_solve_fails)
+    cont = load_distribution_high_speed_full(B, 450.0, Fr, n_rpm=4800.0, film=dict(eta=eta, alpha_p=2e-8))
+    assert seen == [3]
+    for k in ("Q_i", "Q_o"):
+        np.testing.assert_allclose(getattr(cont[0], k), getattr(direct[0], k), rtol=1e-7, atol=1e-9)

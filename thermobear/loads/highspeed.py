@@ -544,7 +544,7 @@ def _film_stage(pb, z, st0, its, eta, ap, opt, loads, n_b):
 
         def solve(rows, zz, frac, stage):
             sub = pb.rows(idx[rows])
-            sub.film = _FilmLaw(pb.brg, eta[idx[rows]] * frac, ap[idx[rows]])
+            sub.film = _FilmLaw(pb.brg, eta[idx[rows]] * np.reshape(frac, (-1, 1)), ap[idx[rows]])   # (rows, 1)
             sub.fz = {"W": fzW[rows].copy(), "Q": fzQ[rows].copy()}
             out = newton(sub, zz, opt)
             fzW[rows], fzQ[rows] = out.state.W, out.state.Q
