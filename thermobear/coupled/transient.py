@@ -450,8 +450,9 @@ class _FilmCells:
         j = (T - self.T0) / self.step
         if abs(j - round(j)) > 1e-9:
             return []
-        d = self.step if T > T_from else -self.step
-        return [T + m * d for m in range(1, _FILM_AHEAD) if (k, T + m * d) not in self.solved]
+        d = 1 if T > T_from else -1
+        nodes = [self.T0 + (round(j) + m * d) * self.step for m in range(1, _FILM_AHEAD)]   # as :meth:`cell` makes them
+        return [T_m for T_m in nodes if (k, T_m) not in self.solved]
 
     def _solve(self, k: int, alt, Ts: list, start):
         K = len(Ts)
