@@ -451,7 +451,7 @@ class _FilmCells:
         if abs(j - round(j)) > 1e-9:
             return []
         d = 1 if T > T_from else -1
-        nodes = [self.T0 + (round(j) + m * d) * self.step for m in range(1, _FILM_AHEAD)]   # as :meth:`cell` makes them
+        nodes = [self.T0 + (round(j) + m * d) * self.step for m in range(1, _FILM_AHEAD)]  # as cell() makes them
         return [T_m for T_m in nodes if (k, T_m) not in self.solved]
 
     def _solve(self, k: int, alt, Ts: list, start):
