@@ -2,9 +2,9 @@
 
 Public names only; the pipeline and the one place each concern lives: ARCHITECTURE.md.
 """
-from thermobear.errors import (ThermobearError, InputError, ContactLimit, SolverError, NoEquilibrium, NoConvergence,  # noqa: F401
-                               ThermalRunaway, ThermalPreloadRunaway, NoSpeedRoot, OutsideValidity,
-                               ExtrapolationWarning)
+from thermobear.errors import (ThermobearError, InputError, ContactLimit, SolverError,  # noqa: F401
+                               NoEquilibrium, NoConvergence, ThermalRunaway, ThermalPreloadRunaway, NoSpeedRoot,
+                               OutsideValidity, ExtrapolationWarning)
 from thermobear.files import example_path  # noqa: F401
 from thermobear.contact.materials import Material, material, material_names, reduced_modulus  # noqa: F401
 from thermobear.contact.hertz import hertz, HertzContact  # noqa: F401
