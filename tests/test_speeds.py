@@ -150,7 +150,7 @@ def test_cli_speed_says_when_the_limit_is_jumped_and_prints_the_answers_warnings
     assert abs(rep["residual_K"]) > 1.0 and "ThermalRunaway" in rep["jump"]
 
 
-def test_safe_speed_ends_where_the_contacts_cannot_carry_the_loads(tmp_path):
+def test_safe_speed_ends_where_the_contacts_cannot_carry_the_loads(tmp_path, capsys):
     # a 7311 B under its init loads (Fa 2710 N, Fr 2580 N): with speed the balls' centrifugal force turns
     # the inner contacts of the lightly loaded balls towards the groove's edge; the ellipse passes it near
     # 8300 rpm, before the hottest ring reaches 70 °C (it is 59 °C at 7100 rpm)
@@ -164,8 +164,8 @@ def test_safe_speed_ends_where_the_contacts_cannot_carry_the_loads(tmp_path):
         for points in (9, 5):
             with pytest.raises(NoSpeedRoot, match="highest speed at which the contacts carry the loads") as e:
                 thermally_safe_speed(sc, limit_C=70.0, points=points)
-            n_c = float(str(e.value).split("no speed up to ")[1].split(" rpm")[0])
-            T_c = float(str(e.value).split("carry the loads (")[1].split(" °C")[0])
+            n_c, T_c = e.value.contact_limit_rpm, e.value.T_C
+            assert f"no speed up to {n_c:.6g} rpm" in str(e.value) and f"({T_c:.2f} °C there)" in str(e.value)
             assert 7127.0 < n_c < 18050.0 and 59.46 < T_c < 70.0
         assert tb.steady_state(sc.with_(n_rpm=n_c)).P_W > 0.0           # carried at the speed named …
         with pytest.raises(ContactLimit, match="groove bottom"):        # … and not 0.5 % above it
@@ -176,6 +176,9 @@ def test_safe_speed_ends_where_the_contacts_cannot_carry_the_loads(tmp_path):
             assert 7127.0 < r.n_rpm < n_c and abs(r.T_C - (T_c - 0.5)) < 0.01
             assert points == 5 or r.bracket_rpm[1] == pytest.approx(n_c, rel=3e-3)    # (9: from the contacts' limit)
         assert thermally_safe_speed(sc, limit_C=50.0, points=5).n_rpm < 7127.0   # a crossing on the ladder
+    assert main(["speed", str(path), "--json"]) == 3                   # the model part has no answer: exit 3
+    rep = json.loads(capsys.readouterr().out)["model"]
+    assert rep["contact_limit_rpm"] == pytest.approx(n_c, rel=3e-3) and "error" in rep
 
 
 def test_din732_of_a_bearing_without_a_catalogue_c0_takes_iso_76s(block):

@@ -83,6 +83,8 @@ def _report(scene: Scene, limit_C: float, node) -> tuple[dict, list]:
             rep["model"]["jump"] = _above(scene, s.n_rpm, node)
     except NoSpeedRoot as exc:
         rep["model"] = {"error": " ".join(str(exc).split())}
+        if hasattr(exc, "contact_limit_rpm"):          # the search ended where the contacts stop carrying the loads
+            rep["model"].update(contact_limit_rpm=exc.contact_limit_rpm, T_C_at_contact_limit=exc.T_C)
     try:
         d = din732_safe_speed(scene, limit_C=limit_C)
         rep["din732"] = {"n_rpm": d.n_rpm, "f_n": d.f_n, "K_L": d.K_L, "K_P": d.K_P,

@@ -305,9 +305,11 @@ def _contact_limit(scene, prepared, lo, hi, node, rtol=2e-3) -> tuple:
 def _contact_no_root(scene, limit_C, what, n_c, T_c, exc) -> NoSpeedRoot:
     """The NoSpeedRoot of a search that meets the contacts' limit ``n_c`` [rpm] below the temperature limit."""
     why = exc.expected if exc is not None else "contacts cannot carry the loads"
-    return NoSpeedRoot(f"{scene.name}: the limit {limit_C:g} °C on {what} is reached at no speed up to {n_c:.6g} rpm, "
-                       f"the highest speed at which the contacts carry the loads ({T_c:.2f} °C there); above it the "
-                       f"{why}", residual=T_c - limit_C)
+    out = NoSpeedRoot(f"{scene.name}: the limit {limit_C:g} °C on {what} is reached at no speed up to {n_c:.6g} rpm, "
+                      f"the highest speed at which the contacts carry the loads ({T_c:.2f} °C there); above it the "
+                      f"{why}", residual=T_c - limit_C)
+    out.contact_limit_rpm, out.T_C = n_c, T_c          # the numbers, for a report
+    return out
 
 
 def thermally_safe_speed(scene: Scene, *, limit_C: float = 70.0, node: str | None = None, n_min_rpm=None,
