@@ -190,3 +190,56 @@ def test_din732_of_a_bearing_without_a_catalogue_c0_takes_iso_76s(block):
     stated = block.with_(bearing=block.bearing.with_(C0=C0))
     assert din732_safe_speed(bare).n_rpm == pytest.approx(din732_safe_speed(stated).n_rpm, rel=1e-12)
     assert reference_loads(bare.bearing)["Fr"] == pytest.approx(0.05 * C0)
+
+
+class _State:
+    """A steady state as the safe-speed search reads it (hottest ring, warnings)."""
+
+    def __init__(self, T):
+        self.T_C, self.roles, self.warnings = {"i": T, "o": T - 1.0}, {"inner": "i", "outer": "o"}, []
+
+
+def _fold(n):
+    """A machine whose equilibria end at 20 000 rpm (runaway above) with the ring at 40 °C, whose heating path
+    no longer settles in the last 5 % below that fold (loop gain near 1)."""
+    if n >= 20000.0:
+        raise tb.ThermalRunaway("runaway")
+    if n >= 19000.0:
+        raise tb.NoConvergence("the heating path creeps near the fold")
+    return _State(20.0 + n / 1000.0)
+
+
+def test_safe_speed_closing_on_the_runaway_edge_takes_an_unsettled_path_as_beyond(block, monkeypatch):
+    # the limit 50 °C is never reached: Brent closes on the fold between the last equilibrium and the runaway
+    # rung, where the heating path may not settle (a NoConvergence): that is the edge, not the search's failure
+    import thermobear.coupled.speeds as sp
+
+    def many(scenes, prepared=None):
+        out = []
+        for sc in scenes:
+            try:
+                out.append(_fold(sc.n_rpm))
+            except tb.SolverError as e:
+                out.append(e)
+        return out
+    monkeypatch.setattr(sp, "steady_states", many)
+    monkeypatch.setattr(sp, "steady_state", lambda sc, prepared=None: _fold(sc.n_rpm))
+    monkeypatch.setattr(sp, "prepare", lambda sc: None)
+    r = thermally_safe_speed(block, limit_C=50.0, n_min_rpm=1000.0, n_max_rpm=40000.0, points=5, xtol_rpm=1.0)
+    assert 18990.0 < r.n_rpm < 19000.0 and r.T_C < 50.0 and r.bracket_rpm[1] > 20000.0
+    # below a rung with an equilibrium (no runaway above the bracket) a NoConvergence is the search's failure
+    monkeypatch.setattr(sp, "steady_state", lambda sc, prepared=None: (_ for _ in ()).throw(tb.NoConvergence("x")))
+    with pytest.raises(tb.NoConvergence):
+        thermally_safe_speed(block, limit_C=30.0, n_min_rpm=1000.0, n_max_rpm=40000.0, points=5, xtol_rpm=1.0)
+
+
+def test_cli_speed_reports_a_solver_failure_of_the_model_and_keeps_the_standards(block, monkeypatch, capsys):
+    import thermobear.app.speed as app_speed
+
+    def fails(*a, **k):
+        raise tb.NoConvergence("high-speed load distribution did not reach equilibrium at a probe speed")
+    monkeypatch.setattr(app_speed, "thermally_safe_speed", fails)
+    assert main(["speed", tb.example_path("block_6208_oil_bath.toml"), "--json"]) == 3
+    rep = json.loads(capsys.readouterr().out)
+    assert rep["model"]["error"].startswith("NoConvergence: high-speed") and "n_rpm" in rep["iso15312"]
+    assert "n_rpm" in rep["din732"]

@@ -81,8 +81,9 @@ def _report(scene: Scene, limit_C: float, node) -> tuple[dict, list]:
                         "warnings": [w.as_dict() for w in s.warnings]}
         if abs(s.residual_K) > JUMP_K:
             rep["model"]["jump"] = _above(scene, s.n_rpm, node)
-    except NoSpeedRoot as exc:
-        rep["model"] = {"error": " ".join(str(exc).split())}
+    except SolverError as exc:                          # (a probe speed's failure: the other answers stand)
+        rep["model"] = {"error": " ".join(str(exc).split()) if isinstance(exc, NoSpeedRoot) else
+                        f"{type(exc).__name__}: " + " ".join(str(exc).split())}
         if hasattr(exc, "contact_limit_rpm"):          # the search ended where the contacts stop carrying the loads
             rep["model"].update(contact_limit_rpm=exc.contact_limit_rpm, T_C_at_contact_limit=exc.T_C)
     try:

@@ -366,15 +366,17 @@ def thermally_safe_speed(scene: Scene, *, limit_C: float = 70.0, node: str | Non
             raise NoSpeedRoot(f"{scene.name}: the limit {limit_C:g} °C on {what} is exceeded already at "
                               f"{bottom:.6g} rpm ({T[0]:.2f} °C)", residual=T[0] - limit_C)
 
-        seen, refused = {}, []
+        seen, refused, edge = {}, [], not np.isfinite(T[i]) if i < T.size else False
 
         def excess(n):
             try:
                 seen[n] = steady_state(scene.with_(n_rpm=float(n)), prepared=prep)
                 return hottest_ring_C(seen[n], node) - limit_C
-            except (ThermalRunaway, InputError) as e:
+            except (ThermalRunaway, InputError, NoConvergence) as e:
                 refused.append(float(n))
-                if not _beyond(e):
+                # below a runaway rung the search closes on the fold where the equilibria end: there the heating
+                # path's loop gain nears 1 and it may not settle — as undecided as a runaway for the root
+                if not (_beyond(e) or (edge and isinstance(e, NoConvergence))):
                     raise
                 return 1e3                                      # no equilibrium: beyond any limit
         try:
