@@ -142,3 +142,32 @@ def test_physical_path_settles_a_creeping_heating_path_near_the_fold():
     ev = _Update(lambda T: T + 0.01 + 2e-5 * (T - 300.0), 1)
     with pytest.raises(ThermalRunaway):
         _physical_path(ev, np.array([300.0]), tol_K=1e-6, tol_energy_rel=1e-6, max_iter=100, T_limit_K=573.15)
+
+
+def test_heating_path_past_a_fold_settles_on_the_hotter_equilibrium_not_runaway():
+    # losses that rise in a step with temperature (a logistic: a starved cold state whose replenishment
+    # recovers as it warms), one node: just past the fold where the cool equilibrium ends the heating path
+    # creeps past its ghost with growing increments and a loop gain ≥ 1 — which alone was called runaway —
+    # and goes on to the hot equilibrium, 396 K, far below the limit: the update maps the limit below itself
+    b, w, Tm = 120.0, 5.0, 340.0
+
+    def P(T, a):
+        return a + b / (1.0 + np.exp(-(np.asarray(T, float) - Tm) / w))
+
+    grid = np.linspace(TA, Tm, 4001)
+
+    def cool_root(a):                                # a cool equilibrium below Tm exists
+        return bool(np.min(TA + P(grid, a) / G - grid) <= 0.0)
+    lo, hi = 0.0, 120.0                              # cool root at lo, none at hi
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if cool_root(mid) else (lo, mid)
+    a = hi + 0.05                                    # just past the fold
+    hot = brentq(lambda T: TA + P(T, a) / G - T, Tm, 573.15)
+    for method in ("picard", "anderson"):
+        r = solve_coupled(lambda T: (TA + P(T, a) / G, float(np.sum(P(T, a)))), [TA], method=method, max_iter=400)
+        assert r.T_K[0] == pytest.approx(hot, abs=1e-5) and r.loop_gain < 1.0
+    # the same map with losses that outgrow the cooling up to the limit is still a runaway
+    with pytest.raises(ThermalRunaway):
+        solve_coupled(lambda T: (TA + (P(T, a) + 0.02 * (T - TA) ** 2) / G, 1.0), [TA], method="picard",
+                      max_iter=400)

@@ -37,24 +37,26 @@ def _at_speeds(scene: Scene, speeds: dict, node) -> dict:
     return out
 
 
-def _above(scene: Scene, n_rpm: float, node) -> str:
-    """What lies just above a speed at which the temperature jumps past its limit (2 rpm up: the search's
-    tolerance is 1 rpm)."""
+def _across(scene: Scene, n_rpm: float, node, residual_K: float) -> str:
+    """What lies on the other side of a speed at which the temperature steps past its limit (2 rpm away: the
+    search's tolerance is 1 rpm): above it where the root lies below the limit, below it where it lies above."""
+    where = "just above it" if residual_K < 0 else "just below it"
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", OutsideValidity)
-            st = steady_state(scene.with_(n_rpm=n_rpm + 2.0))
+            st = steady_state(scene.with_(n_rpm=n_rpm + (2.0 if residual_K < 0 else -2.0)))
     except (SolverError, InputError) as exc:
-        return f"no equilibrium just above it ({type(exc).__name__}: the losses outgrow the cooling)"
-    return f"{hottest_ring_C(st, node):.2f} °C just above it (a step of the model)"
+        return f"no equilibrium {where} ({type(exc).__name__}: the losses outgrow the cooling)"
+    return f"{hottest_ring_C(st, node):.2f} °C {where} (a step of the model)"
 
 
 def speed_report(scene: Scene, *, limit_C: float = 70.0, node: str | None = None) -> dict:
     """The three speeds of a scene as plain data (what ``thermobear speed --json`` prints).
 
     Each part that has no answer carries ``error`` (its one-line reason) instead of its numbers.  A model
-    speed at which the temperature jumps past the limit (|residual| > :data:`JUMP_K`: a thermal runaway
-    sets in before the limit is reached) carries ``jump``, what lies just above it.
+    speed at which the temperature jumps past the limit (|residual| > :data:`JUMP_K`: a runaway, or a step to a
+    hotter equilibrium where a cooler one ends, sets in before the limit is reached) carries ``jump``, what lies
+    on the other side of it.
     """
     return _report(scene, limit_C, node)[0]
 
@@ -80,7 +82,7 @@ def _report(scene: Scene, limit_C: float, node) -> tuple[dict, list]:
                         "bracket_rpm": list(s.bracket_rpm), "monotonic": s.monotonic, "P_W": s.steady.P_W,
                         "warnings": [w.as_dict() for w in s.warnings]}
         if abs(s.residual_K) > JUMP_K:
-            rep["model"]["jump"] = _above(scene, s.n_rpm, node)
+            rep["model"]["jump"] = _across(scene, s.n_rpm, node, s.residual_K)
     except SolverError as exc:                          # (a probe speed's failure: the other answers stand)
         rep["model"] = {"error": " ".join(str(exc).split()) if isinstance(exc, NoSpeedRoot) else
                         f"{type(exc).__name__}: " + " ".join(str(exc).split())}
@@ -125,8 +127,9 @@ def summary(rep: dict) -> str:
                      f"{mod['P_W']:.2f} W" + ("" if mod["monotonic"] else ", temperature not monotonic in speed "
                                                 "below the bracket (first crossing taken)"))
         if "jump" in mod:
-            lines.append(f"    model: the limit is not reached at this speed — {node} {mod['T_C']:.2f} °C here, "
-                         f"{mod['jump']}: the speed bounds the equilibria, not the limit temperature")
+            lines.append(f"    model: the limit is {'not reached' if mod['residual_K'] < 0 else 'passed by a step'} at "
+                         f"this speed — {node} {mod['T_C']:.2f} °C here, {mod['jump']}: the speed bounds the "
+                         "equilibria, not the limit temperature")
     if "error" not in din:
         lines.append(f"    DIN 732: f_n = {din['f_n']:.3f} × n_θr {din['n_theta_r_rpm']:.0f} rpm (ISO 15312's "
                      f"equations); K_L {din['K_L']:.3f}, K_P {din['K_P']:.3f}; heat dissipated {din['Phi_W']:.2f} W")

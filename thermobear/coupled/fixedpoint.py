@@ -21,10 +21,14 @@ and of seed 004 §4.5).
   the start temperatures, which for a monotone system is the sequence of
   quasi-steady states a bearing heating from ambient goes through.  It is
   declared when that path, heating monotonically, passes ``T_limit_K`` or
-  heats by non-decreasing increments over four steps (path gain ≥ 1; this
-  early test assumes the losses are convex in T along the path, as for
-  exponential or power-law growth — losses that fall with T never trigger
-  it) — and raised
+  heats by non-decreasing increments over four steps with a loop gain ≥ 1
+  at its iterate, unless the update maps the limit below itself: then a
+  hotter equilibrium lies between (losses that rise in a step with
+  temperature, e.g. a starved cold state whose replenishment recovers, whose
+  cool equilibrium ends at a fold), which the path goes on to reach; it is
+  found by the same map iterated down from the limit (a monotone map between
+  a sub- and a super-solution has a fixed point between them: Amann 1976,
+  SIAM Review 18:620) — and raised
   as :class:`~thermobear.errors.ThermalRunaway` with the reason, the last
   iterate and the history.  Divergence or oscillation that is not runaway
   raises :class:`~thermobear.errors.NoConvergence`.
@@ -276,6 +280,7 @@ def _picard(ev, x0, damping, *, tol_K, tol_energy_rel, max_iter, T_limit_K, labe
     g, P = ev(x)
     f = _record(history, x, g, P, "start")
     steps: list = []                                       # mean temperature increments
+    bounded = False                                        # the update maps the limit below itself
     method = label or ("picard" if damping == 1.0 else "picard-damped")
     for _ in range(max_iter):
         if not np.all(np.isfinite(g)):
@@ -291,12 +296,33 @@ def _picard(ev, x0, damping, *, tol_K, tol_energy_rel, max_iter, T_limit_K, labe
             x, g, P, f = xv, gv, Pv, fv
             continue
         heating = len(steps) >= 1 and all(s > 0 for s in steps) and np.mean(f) > 0
-        accelerating = len(steps) >= 4 and all(b >= a for a, b in zip(steps[-4:-1], steps[-3:]))
+        accelerating = (not bounded and len(steps) >= 4
+                        and all(b >= a for a, b in zip(steps[-4:-1], steps[-3:])))
         if heating and accelerating and np.max(g) <= T_limit_K:
             # growing increments alone are not proof: a stable but non-normal map (e.g. a Jordan block
             # with eigenvalues < 1) amplifies its differences for a few steps.  Decide on the loop gain.
             lam = loop_gain(lambda T: ev(T)[0], x)
             accelerating = bool(np.isfinite(lam) and lam >= 1.0)
+            if accelerating:
+                # nor is a loop gain ≥ 1 here: past the fold where a cool equilibrium ends, the path may be
+                # crossing to a hotter one.  Where the update maps the limit below itself, a monotone path
+                # from below stays below it and settles between (the fixed point of a monotone map between a
+                # sub- and a super-solution, Amann 1976): go on heating.
+                g_lim, _ = ev(np.full_like(x, T_limit_K))
+                bounded = bool(np.all(np.isfinite(g_lim)) and np.all(g_lim <= T_limit_K))
+                accelerating = not bounded
+                if bounded and label != "picard-from-limit":
+                    # the path creeps past the fold's ghost; the same map iterated down from the limit (a
+                    # super-solution) settles on the hotter equilibrium, the one the path goes on to reach
+                    # where no third lies between (checked: not below the path)
+                    try:
+                        down = _picard(ev, np.full_like(x, T_limit_K), 1.0, tol_K=tol_K, tol_energy_rel=tol_energy_rel,
+                                       max_iter=max_iter, T_limit_K=T_limit_K, label="picard-from-limit")
+                    except NoConvergence:
+                        down = None
+                    if down is not None and np.all(down.T_K >= x - tol_K):
+                        down.history = history + down.history
+                        return down
         if heating and (np.max(g) > T_limit_K or accelerating):
             why = (f"passes the limit T_limit_K = {T_limit_K:g} K ({T_limit_K - 273.15:g} °C)"
                    if np.max(g) > T_limit_K else "heats by growing increments")
