@@ -30,7 +30,7 @@ import numpy as np
 
 from thermobear.contact.geometry import BallBearing
 from thermobear.contact.hertz import hertz
-from thermobear.errors import InputError
+from thermobear.errors import ContactLimit, InputError
 from thermobear.validity import LIMITS, P_MAX_REFUSE_PA, check
 
 __all__ = ["check_loads", "check_contacts", "contact_bounds", "contact_limits", "groove_angle", "loads_text",
@@ -65,7 +65,8 @@ def check_contacts(brg: BallBearing, sides, field: str, *, warn: bool = False, g
     ``sides``: ``"inner"`` / ``"outer"`` → mapping with the contacts' Q [N], alpha [rad], a, b [m] (a
     :class:`~thermobear.losses.ContactSet`'s ``sides``, a :class:`~thermobear.losses.LossResult`'s
     ``contacts``).  Raises InputError naming ``field`` (showing ``given``, e.g. the loads) beyond the refused
-    limits (:data:`thermobear.validity.LIMITS` ``p_max``, ``contact_angle``); returns the warnings (``warn``).
+    limits (:data:`thermobear.validity.LIMITS` ``p_max``, ``contact_angle``) — a :class:`~thermobear.errors.ContactLimit`;
+    returns the warnings (``warn``).
     """
     out = []
     for side, f in (("inner", brg.fi), ("outer", brg.fo)):
@@ -73,9 +74,12 @@ def check_contacts(brg: BallBearing, sides, field: str, *, warn: bool = False, g
         Q, a, b = (np.asarray(c[k], float) for k in ("Q", "a", "b"))
         with np.errstate(divide="ignore", invalid="ignore"):
             p = np.where(Q > 0, 1.5 * Q / (np.pi * a * b), 0.0)
-        out += check("p_max", p, field, what=f"{side} contacts", warn=warn, given=given)
         theta = np.where(Q > 0, groove_angle(brg, c["alpha"], a, f), 0.0)
-        out += check("contact_angle", theta, field, what=f"{side} contacts", warn=warn, given=given)
+        try:
+            out += check("p_max", p, field, what=f"{side} contacts", warn=warn, given=given)
+            out += check("contact_angle", theta, field, what=f"{side} contacts", warn=warn, given=given)
+        except InputError as exc:            # loads the contacts cannot carry: the named kind of bad input
+            raise ContactLimit(exc.field, exc.value, exc.expected) from None
     return out
 
 
@@ -167,8 +171,11 @@ def check_loads(brg: BallBearing, Fa, Fr, M=None, n_rpm=0.0, *, Fz=0.0, My=None,
     if p_least > P_MAX_REFUSE_PA:
         given = (Fa, Fr, M)[k]
         given = np.asarray(given).item() if np.size(given) == 1 else given
-        check("p_max", p_least, names[k], what=f"at least: the largest ball load of {brg.name or 'the bearing'}, "
-                                                f"{least[k]:.4g} N or more", warn=False, given=given)
+        try:
+            check("p_max", p_least, names[k], what=f"at least: the largest ball load of {brg.name or 'the bearing'}, "
+                                                    f"{least[k]:.4g} N or more", warn=False, given=given)
+        except InputError as exc:            # loads the contacts cannot carry (ContactLimit)
+            raise ContactLimit(exc.field, exc.value, exc.expected) from None
 
 
 def contact_limits(brg: BallBearing, Q_i, Q_o, alpha_i, alpha_o):
