@@ -64,9 +64,9 @@ def check_contacts(brg: BallBearing, sides, field: str, *, warn: bool = False, g
 
     ``sides``: ``"inner"`` / ``"outer"`` → mapping with the contacts' Q [N], alpha [rad], a, b [m] (a
     :class:`~thermobear.losses.ContactSet`'s ``sides``, a :class:`~thermobear.losses.LossResult`'s
-    ``contacts``).  Raises InputError naming ``field`` (showing ``given``, e.g. the loads) beyond the refused
-    limits (:data:`thermobear.validity.LIMITS` ``p_max``, ``contact_angle``) — a :class:`~thermobear.errors.ContactLimit`;
-    returns the warnings (``warn``).
+    ``contacts``).  Raises :class:`~thermobear.errors.ContactLimit` (an InputError) naming ``field`` (showing
+    ``given``, e.g. the loads) beyond the refused limits (:data:`thermobear.validity.LIMITS` ``p_max``,
+    ``contact_angle``); returns the warnings (``warn``).
     """
     out = []
     for side, f in (("inner", brg.fi), ("outer", brg.fo)):
