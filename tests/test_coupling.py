@@ -171,3 +171,18 @@ def test_heating_path_past_a_fold_settles_on_the_hotter_equilibrium_not_runaway(
     with pytest.raises(ThermalRunaway):
         solve_coupled(lambda T: (TA + (P(T, a) + 0.02 * (T - TA) ** 2) / G, 1.0), [TA], method="picard",
                       max_iter=400)
+
+
+def test_runaway_stays_runaway_where_the_update_is_undefined_at_the_limit():
+    # the test of the limit (does the update map it below itself?) cannot be made where the update refuses
+    # such temperatures (a lubricant's property range): nothing is proven, the runaway stands (not the InputError)
+    theta = 20.0
+    P0 = 1.02 * G * theta / math.e                   # 2 % beyond the tangency: the path creeps, then accelerates
+
+    def update(T):
+        if np.max(T) > 500.0:
+            raise InputError("T_C", float(np.max(T)) - 273.15, "a lubricant temperature up to 226.85 °C")
+        P = P0 * np.exp((T - TA) / theta)
+        return TA + P / G, float(np.sum(P))
+    with pytest.raises(ThermalRunaway):
+        solve_coupled(update, [TA], method="picard", max_iter=400)

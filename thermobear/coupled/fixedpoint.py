@@ -308,7 +308,10 @@ def _picard(ev, x0, damping, *, tol_K, tol_energy_rel, max_iter, T_limit_K, labe
                 # crossing to a hotter one.  Where the update maps the limit below itself, a monotone path
                 # from below stays below it and settles between (the fixed point of a monotone map between a
                 # sub- and a super-solution, Amann 1976): go on heating.
-                g_lim, _ = ev(np.full_like(x, T_limit_K))
+                try:
+                    g_lim, _ = ev(np.full_like(x, T_limit_K))
+                except InputError:                       # the update is not defined there: nothing proven
+                    g_lim = np.full_like(x, np.inf)
                 bounded = bool(np.all(np.isfinite(g_lim)) and np.all(g_lim <= T_limit_K))
                 accelerating = not bounded
                 if bounded and label != "picard-from-limit":
@@ -318,7 +321,7 @@ def _picard(ev, x0, damping, *, tol_K, tol_energy_rel, max_iter, T_limit_K, labe
                     try:
                         down = _picard(ev, np.full_like(x, T_limit_K), 1.0, tol_K=tol_K, tol_energy_rel=tol_energy_rel,
                                        max_iter=max_iter, T_limit_K=T_limit_K, label="picard-from-limit")
-                    except NoConvergence:
+                    except (NoConvergence, ThermalRunaway, InputError):      # not a verdict on the heating path
                         down = None
                     if down is not None and np.all(down.T_K >= x - tol_K):
                         down.history = history + down.history
