@@ -305,27 +305,12 @@ def _picard(ev, x0, damping, *, tol_K, tol_energy_rel, max_iter, T_limit_K, labe
             accelerating = bool(np.isfinite(lam) and lam >= 1.0)
             if accelerating:
                 # nor is a loop gain ≥ 1 here: past the fold where a cool equilibrium ends, the path may be
-                # crossing to a hotter one.  Where the update maps the limit below itself, a monotone path
-                # from below stays below it and settles between (the fixed point of a monotone map between a
-                # sub- and a super-solution, Amann 1976): go on heating.
-                try:
-                    g_lim, _ = ev(np.full_like(x, T_limit_K))
-                except InputError:                       # the update is not defined there: nothing proven
-                    g_lim = np.full_like(x, np.inf)
-                bounded = bool(np.all(np.isfinite(g_lim)) and np.all(g_lim <= T_limit_K))
+                # crossing to a hotter one (:func:`_past_fold`)
+                bounded, hot = _past_fold(ev, x, history, label, tol_K=tol_K, tol_energy_rel=tol_energy_rel,
+                                          max_iter=max_iter, T_limit_K=T_limit_K)
+                if hot is not None:
+                    return hot
                 accelerating = not bounded
-                if bounded and label != "picard-from-limit":
-                    # the path creeps past the fold's ghost; the same map iterated down from the limit (a
-                    # super-solution) settles on the hotter equilibrium, the one the path goes on to reach
-                    # where no third lies between (checked: not below the path)
-                    try:
-                        down = _picard(ev, np.full_like(x, T_limit_K), 1.0, tol_K=tol_K, tol_energy_rel=tol_energy_rel,
-                                       max_iter=max_iter, T_limit_K=T_limit_K, label="picard-from-limit")
-                    except (NoConvergence, ThermalRunaway, InputError):      # not a verdict on the heating path
-                        down = None
-                    if down is not None and np.all(down.T_K >= x - tol_K):
-                        down.history = history + down.history
-                        return down
         if heating and (np.max(g) > T_limit_K or accelerating):
             why = (f"passes the limit T_limit_K = {T_limit_K:g} K ({T_limit_K - 273.15:g} °C)"
                    if np.max(g) > T_limit_K else "heats by growing increments")
@@ -354,6 +339,29 @@ def _picard(ev, x0, damping, *, tol_K, tol_energy_rel, max_iter, T_limit_K, labe
     raise NoConvergence(f"{method}: max |G(T) − T| = {np.max(np.abs(f)):.3g} K after {max_iter} iterations",
                         iterations=len(history), residual=float(np.max(np.abs(f))), last=x, history=history)
 
+
+def _past_fold(ev, x, history, label, *, T_limit_K, **opts):
+    """(bounded, hotter equilibrium or None) of a heating path at ``x`` that heats by growing increments with a
+    loop gain ≥ 1.  Where the update maps the limit below itself (``bounded``), a monotone path from below stays
+    below it and settles between (a monotone map between a sub- and a super-solution has a fixed point between
+    them: Amann 1976, SIAM Review 18:620); the same map iterated down from the limit settles on the hotter
+    equilibrium the path goes on to reach, where no third lies between (checked: not below the path).  Where the
+    update is not defined at the limit (a lubricant's range) nothing is proven: not bounded."""
+    try:
+        g_lim, _ = ev(np.full_like(x, T_limit_K))
+    except InputError:
+        return False, None
+    bounded = bool(np.all(np.isfinite(g_lim)) and np.all(g_lim <= T_limit_K))
+    if not bounded or label == "picard-from-limit":
+        return bounded, None
+    try:
+        down = _picard(ev, np.full_like(x, T_limit_K), 1.0, T_limit_K=T_limit_K, label="picard-from-limit", **opts)
+    except (NoConvergence, ThermalRunaway, InputError):      # not a verdict on the heating path
+        return bounded, None
+    if not np.all(down.T_K >= x - opts["tol_K"]):
+        return bounded, None
+    down.history = history + down.history
+    return bounded, down
 
 def _physical_path(ev, x0, **opts):
     """Plain Picard from T0 (decides runaway); where it creeps monotonically (a loop gain just below 1, near

@@ -45,8 +45,8 @@ def contact_pressure(contacts, field: str = "operation (Fa_N, Fr_N, M_Nm)", warn
 
 
 def overloads(scenes, contacts) -> dict:
-    """Points whose loads the contacts cannot carry: index → ContactLimit (an InputError) naming the loads, for a contact
-    set over the points of ``scenes``: the maximum contact pressure beyond
+    """Points whose loads the contacts cannot carry: index → ContactLimit (an InputError) naming the loads,
+    for a contact set over the points of ``scenes``: the maximum contact pressure beyond
     :data:`thermobear.validity.P_MAX_REFUSE_PA` (twice the ISO 76 static rating load) or a contact ellipse
     past its groove's equator (:func:`thermobear.loads.check_contacts`, the messages made only for the
     points outside)."""
@@ -65,8 +65,8 @@ def overloads(scenes, contacts) -> dict:
             check_contacts(sc.bearing, one, "operation (Fa_N, Fr_N, M_Nm)",
                            given=loads_text(sc.Fa, sc.Fr, sc.M, sc.Fz, sc.My)
                            + (f" at {sc.n_rpm:.6g} rpm" if sc.n_rpm > 0 else "") + f" ({sc.bearing.name})")
-        except InputError as exc:
-            out[int(b)] = ContactLimit(exc.field, exc.value, exc.expected)
+        except ContactLimit as exc:
+            out[int(b)] = exc
     return out
 
 
