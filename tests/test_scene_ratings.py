@@ -14,7 +14,8 @@ import thermobear as tb
 from thermobear.app.cli import main
 from thermobear.contact.fits import operating_clearance
 from thermobear.coupled.pipeline import scene_load
-from thermobear.coupled.ratings import check_static_safety, scene_ratings, typical_fits
+from thermobear.coupled.ratings import (check_static_safety, operating_lives, rating_samples, scene_ratings,
+                                        typical_fits)
 from thermobear.errors import InputError, OutsideValidity
 from thermobear.rating import load_ratings
 from thermobear.rating.life import stated_ratings
@@ -183,3 +184,36 @@ def test_a_thrust_bearing_reports_no_radial_clearance_or_fits():
     text = "\n".join(r.lines())
     assert "thrust bearing: no radial clearance" in text and "  fits " not in text and "H7" not in text
     assert not any(w.quantity == "operating_clearance" for w in r.warnings)
+
+
+def test_operating_lives_fall_as_the_oil_thins():
+    """κ = ν/ν1 falls with the operating temperature (the oil thins), and with it a_ISO and L10m (ISO 281
+    §9.3.3); L10 does not depend on it; each element of the batch equals the scalar call."""
+    T = np.linspace(30.0, 110.0, 9)
+    lv = operating_lives(S, T)
+    assert np.all(np.diff(lv["kappa"]) < 0) and np.all(np.diff(lv["a_ISO"]) <= 0)
+    assert np.all(np.diff(lv["L10m_h"]) <= 0) and lv["L10m_h"][-1] < lv["L10m_h"][0]
+    for k, t in enumerate(T):
+        one = operating_lives(S, float(t))
+        assert isinstance(one["kappa"], float)
+        for key in ("kappa", "a_ISO", "L10m_h"):
+            assert one[key] == pytest.approx(lv[key][k], rel=1e-12)
+    with pytest.raises(InputError, match="n_rpm"):
+        operating_lives(S.with_(n_rpm=0.0), 40.0)
+
+
+def test_rating_samples_equal_each_points_ratings():
+    """The batched design answers of many solved points (an uncertainty band's samples) are those of
+    scene_ratings point by point: two speeds and two loads (four groups), a failed point NaN."""
+    scenes = [S.with_(n_rpm=n, Fr_N=f) for n in (2000.0, 4000.0) for f in (500.0, 3000.0)]
+    states = [tb.steady_state(s) for s in scenes]
+    out = rating_samples(scenes + scenes[:1], states + [None])
+    for i, (s, st) in enumerate(zip(scenes, states)):
+        rt = scene_ratings(s, st)
+        for key, v in (("T_operating_C", rt.T_operating_C), ("kappa", rt.kappa), ("a_ISO", rt.a_ISO),
+                       ("L10m_h", rt.L10m_h), ("clearance_op_um", rt.clearance_um["operating"])):
+            assert out[f"ratings.{key}"][i] == pytest.approx(v, rel=1e-12), (i, key)
+    assert all(np.isnan(v[-1]) for v in out.values())
+    thrust = tb.load_scene(str(EX / "seed002_grease_thrust_51107.toml"))
+    got = rating_samples([thrust], [tb.steady_state(thrust)])
+    assert "ratings.kappa" in got and "ratings.clearance_op_um" not in got   # no radial clearance

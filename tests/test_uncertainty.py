@@ -12,6 +12,7 @@ import pytest
 import thermobear as tb
 from thermobear.app.cli import main
 from thermobear.coupled import uncertainty as unc
+from thermobear.coupled.ratings import scene_ratings
 from thermobear.coupled.uncertainty import (Input, sample_scenes, steady_uncertainty, transient_uncertainty,
                                             uncertain_inputs)
 from thermobear.errors import InputError
@@ -145,11 +146,17 @@ def test_zero_width_ranges_give_zero_width_bands_at_the_nominal(s004):
     ins = _narrow(uncertain_inputs(s004), 0.0)
     r = steady_uncertainty(s004, 12, seed=1, inputs=ins)
     assert not r.failed
+    rt = scene_ratings(s004, r.nominal)          # the one point's design answers, scalar path
+    answers = {"ratings.T_operating_C": rt.T_operating_C, "ratings.kappa": rt.kappa, "ratings.a_ISO": rt.a_ISO,
+               "ratings.L10m_h": rt.L10m_h, "ratings.clearance_op_um": rt.clearance_um["operating"]}
+    assert set(answers) <= set(r.bands)
     for key, b in r.bands.items():
         nom = r.nominal.T_C[key[4:]] if key.startswith("T_C.") else (
-            r.nominal.P_W if key == "P_W" else float(r.nominal.breakdown_W[key.split(".")[1]]))
+            r.nominal.P_W if key == "P_W" else answers[key] if key in answers
+            else float(r.nominal.breakdown_W[key.split(".")[1]]))
         assert b["p5"] == pytest.approx(nom, rel=1e-9, abs=1e-9), key
         assert b["p95"] == pytest.approx(nom, rel=1e-9, abs=1e-9), key
+    assert r.nominal_values == pytest.approx(answers, rel=1e-12)
 
 
 def test_bands_contain_the_nominal_neighbourhood(s004):
@@ -288,9 +295,12 @@ def test_cli_run_uncertainty_json_and_table(capsys):
     assert u["design"] == {"n": 8, "seed": 2, "method": "lhs", "groups": 8, "sensitivity": "src"}
     assert set(u["bands"]["T_C.inner_ring"]) == {"p5", "p50", "p95", "n"}
     assert u["failed"]["count"] == 0 and u["sensitivity"]["P_W"]["inputs"]
+    life = u["bands"]["ratings.L10m_h"]                      # the design answers carry their bands too
+    assert 0 < life["p5"] <= life["p50"] <= life["p95"] and u["nominal_values"]["ratings.L10m_h"] > 0
     assert main(["run", SEED004, "--uncertainty", "8"]) == 0
     out = capsys.readouterr().out
     assert "p95" in out and "Failed samples: 0 of 8" in out and "Inputs ranked for P_W" in out
+    assert "L10m_h [h]" in out and "kappa [-]" in out and "clearance_op_um [µm]" in out
     assert main(["run", SEED004, "--uncertainty", "0"]) == 2
 
 

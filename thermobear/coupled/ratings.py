@@ -46,7 +46,8 @@ from thermobear.rating.iso281 import (A_ISO_MAX, basic_rating_life, contaminatio
 from thermobear.rating.life import equivalent_loads, stated_ratings
 from thermobear.validity import LIMITS, check, collect
 
-__all__ = ["Ratings", "check_static_safety", "scene_clearance", "scene_ratings", "typical_fits"]
+__all__ = ["RATING_OUTPUTS", "Ratings", "check_static_safety", "operating_lives", "operating_temperature_C",
+           "rating_samples", "scene_clearance", "scene_ratings", "typical_fits"]
 
 _LOAD_FIELDS = "operation (Fa_N, Fr_N, Fz_N)"
 
@@ -173,18 +174,25 @@ class Ratings:
                 f"  fits {c['shaft_fit']} / {c['housing_fit']}: {c['fits_from']}"]
 
 
+def _num(v):
+    """A float, or an array of one per operating point."""
+    return float(v) if np.ndim(v) == 0 else np.asarray(v, float)
+
+
 def _node_T(T, roles, names, role):
-    """Temperature of the first node of ``names`` the network has, else of the node of ``role`` [°C]."""
+    """Temperature [°C] (a float, or an array over operating points) of the first node of ``names`` the network
+    has, else of the node of ``role``."""
     for n in names:
         if n in T:
-            return float(T[n]), n
+            return _num(T[n]), n
     node = roles.get(role)
-    return float(T[node]), node
+    return _num(T[node]), node
 
 
 def scene_clearance(scene, T_C: dict, roles: dict) -> dict:
     """Unmounted, mounted (fits at 20 °C) and operating diametral clearance [µm] of a scene's bearing at the node
-    temperatures ``T_C`` (node → °C; ``roles``: role → node), with the scene's fits or the typical ones for its
+    temperatures ``T_C`` (node → °C, or → an array of one per operating point: then the operating clearance and the
+    temperatures are arrays too; ``roles``: role → node), with the scene's fits or the typical ones for its
     load (:func:`typical_fits`), as :func:`~thermobear.contact.fits.operating_clearance` gives them: the ring
     temperatures from the nodes ``inner_ring`` / ``outer_ring`` (else the inner / outer role), the balls', the
     shaft's and housing's (else the ring's), the inner ring's speed when it rotates.
@@ -211,7 +219,7 @@ def scene_clearance(scene, T_C: dict, roles: dict) -> dict:
     mounted = operating_clearance(b, shaft=shaft, housing=housing)
     op = operating_clearance(b, shaft=shaft, housing=housing, T_inner_C=Ti, T_outer_C=To, T_ball_C=Tb,
                              T_shaft_C=Ts, T_housing_C=Th, n_rpm=n_in)
-    out.update(unmounted=b.Pd * 1e6, mounted=float(mounted.Pd) * 1e6, operating=float(op.Pd) * 1e6, used=b.Pd * 1e6,
+    out.update(unmounted=b.Pd * 1e6, mounted=float(mounted.Pd) * 1e6, operating=_num(op.Pd) * 1e6, used=b.Pd * 1e6,
                temperatures_C={"inner ring": Ti, "outer ring": To, "balls": Tb, "shaft": Ts, "housing": Th},
                nodes={"inner ring": ni, "outer ring": no, "balls": nb, "shaft": ns, "housing": nh})
     return out
@@ -237,24 +245,11 @@ def scene_ratings(scene, steady, losses=None) -> Ratings:
             Q, a, bb = (np.asarray(c[side][k], float) for k in ("Q", "a", "b"))
             with np.errstate(divide="ignore", invalid="ignore"):
                 p[side] = float(np.max(np.where(Q > 0, 1.5 * Q / (np.pi * a * bb), 0.0)))
-    Tin, _ = _node_T(steady.T_C, steady.roles, (), "inner")
-    Tout, _ = _node_T(steady.T_C, steady.roles, (), "outer")
-    T_op = 0.5 * (Tin + Tout)
-    nu = float(scene.lubricant.nu(T_op)) * 1e-6          # [cSt] → [m²/s]
-    n = float(scene.n_rpm)
-    if not n > 0:
-        raise InputError("operation.n_rpm", n, "ratings in hours need a speed > 0 [rpm]")
-    nu1 = float(reference_viscosity(n, b.dm))
-    kappa = float(viscosity_ratio(nu, nu1))
-    e_C = float(contamination_factor(scene.contamination, b.dm))
-    kind = "thrust" if b.kind == "thrust" else "radial"
-    hours = 1e6 / (60.0 * n)
+    T_op = operating_temperature_C(steady.T_C, steady.roles)
+    lv = operating_lives(scene, T_op)
+    nu, nu1, kappa, e_C, a_iso = (float(lv[k]) for k in ("nu_m2_s", "nu1_m2_s", "kappa", "e_C", "a_ISO"))
+    hours = 1e6 / (60.0 * float(scene.n_rpm))
     L10r = None
-    if P > 0:
-        a_iso = float(life_modification_factor(kappa, e_C * float(fatigue_load_limit(C0, b.dm)) / P, kind))
-        L10 = float(basic_rating_life(C, P))
-    else:                              # unloaded: no fatigue (ISO 281's a_ISO at its cap, the lives infinite)
-        a_iso, L10 = A_ISO_MAX, np.inf
     if c and P > 0:
         ld = type("Balls", (), {"Q_i": np.ravel(c["inner"]["Q"]), "Q_o": np.ravel(c["outer"]["Q"])})
         L10r = float(reference_life(b, ld, C, rotating=scene.rotating).L10r) * hours
@@ -274,5 +269,93 @@ def scene_ratings(scene, steady, losses=None) -> Ratings:
                   what=f"mounted {clear['mounted']:.2f} µm, fits {clear['shaft_fit']} / {clear['housing_fit']}")
     return Ratings(C_N=C, C0_N=C0, P_N=P, P0_N=P0, s0=s0, p_max_Pa=p or {"inner": 0.0, "outer": 0.0},
                    T_operating_C=T_op, nu_m2_s=nu, nu1_m2_s=nu1, kappa=kappa, contamination=str(scene.contamination),
-                   e_C=e_C, a_ISO=a_iso, L10_h=L10 * hours, L10m_h=a_iso * L10 * hours, L10r_h=L10r,
+                   e_C=e_C, a_ISO=a_iso, L10_h=float(lv["L10_h"]), L10m_h=float(lv["L10m_h"]), L10r_h=L10r,
                    clearance_um=clear, warnings=list(got))
+
+
+def operating_temperature_C(T_C: dict, roles: dict):
+    """The operating temperature of ISO 281's viscosity ratio [°C]: the mean of the inner and outer raceway
+    (role) nodes of ``T_C`` (node → °C, or → arrays of one per operating point)."""
+    return 0.5 * (_node_T(T_C, roles, (), "inner")[0] + _node_T(T_C, roles, (), "outer")[0])
+
+
+def operating_lives(scene, T_op_C, nu_m2_s=None) -> dict:
+    r"""ISO 281 [2] viscosity ratio, life modification factor and lives of a scene's bearing and loads at operating
+    temperatures ``T_op_C`` [°C] (a float, or an array of one per operating point, e.g. the samples of an
+    uncertainty band; :func:`operating_temperature_C`); ``nu_m2_s``: the lubricant's kinematic viscosity there
+    [m²/s] (default: the scene's lubricant at ``T_op_C``).
+
+    .. math:: \kappa = \nu / \nu_1, \qquad L_{10m} = a_{ISO}(\kappa, e_C C_u / P)\, (C/P)^3 \frac{10^6}{60 n}\ \mathrm{h}
+
+    Returns a dict of ``nu_m2_s``, ``nu1_m2_s`` [m²/s], ``kappa``, ``e_C``, ``a_ISO`` [-], ``L10_h``, ``L10m_h`` [h]
+    (unloaded, P = 0: a_ISO at its cap, the lives infinite).
+
+    >>> import thermobear as tb
+    >>> lv = operating_lives(tb.load_scene(tb.example_path("oil_bath_6208.toml")), np.array([40.0, 80.0]))
+    >>> [round(float(k), 2) for k in lv["kappa"]], bool(lv["L10m_h"][0] > lv["L10m_h"][1])
+    ([6.44, 1.4], True)
+    """
+    b = scene.bearing
+    C, C0, P, _ = _static(scene)
+    n = float(scene.n_rpm)
+    if not n > 0:
+        raise InputError("operation.n_rpm", n, "ratings in hours need a speed > 0 [rpm]")
+    T = np.asarray(T_op_C, float)
+    nu = np.asarray(scene.lubricant.nu(T), float) * 1e-6 if nu_m2_s is None else np.asarray(nu_m2_s, float)
+    nu1 = float(reference_viscosity(n, b.dm))
+    kappa = np.asarray(viscosity_ratio(nu, nu1), float)
+    e_C = float(contamination_factor(scene.contamination, b.dm))
+    hours = 1e6 / (60.0 * n)
+    if P > 0:
+        kind = "thrust" if b.kind == "thrust" else "radial"
+        a_iso = np.asarray(life_modification_factor(kappa, e_C * float(fatigue_load_limit(C0, b.dm)) / P, kind), float)
+        L10 = float(basic_rating_life(C, P))
+    else:                              # unloaded: no fatigue (ISO 281's a_ISO at its cap, the lives infinite)
+        a_iso, L10 = np.full(kappa.shape, A_ISO_MAX), np.inf
+    return {"nu_m2_s": _num(nu), "nu1_m2_s": nu1, "kappa": _num(kappa), "e_C": e_C, "a_ISO": _num(a_iso),
+            "L10_h": L10 * hours, "L10m_h": _num(a_iso * (L10 * hours))}
+
+
+#: the design answers an uncertainty band gives (:func:`rating_samples`): output name → unit
+RATING_OUTPUTS = {"ratings.T_operating_C": "°C", "ratings.kappa": "-", "ratings.a_ISO": "-", "ratings.L10m_h": "h",
+                  "ratings.clearance_op_um": "µm"}
+
+
+def rating_samples(scenes, states) -> dict:
+    """The design answers of many solved operating points, e.g. the samples of an uncertainty band: output name
+    (:data:`RATING_OUTPUTS`) → (n,) values, one per scene and its steady state (``states``: SteadyStates, or None
+    where a point did not solve: NaN there).  The operating temperature, κ, a_ISO and L10m of :func:`operating_lives`
+    and the operating clearance of :func:`scene_clearance` (radial bearings; with ``models.clearance`` =
+    operating the fixed point's), each evaluated once per bearing and operating point for the arrays of
+    temperatures of its samples — the same functions :func:`scene_ratings` evaluates for one point.
+
+    >>> import thermobear as tb
+    >>> s = tb.load_scene(tb.example_path("oil_bath_6208.toml"))
+    >>> st = tb.steady_state(s)
+    >>> out = rating_samples([s, s], [st, None])
+    >>> round(float(out["ratings.kappa"][0]), 3) == round(scene_ratings(s, st).kappa, 3), bool(np.isnan(out["ratings.kappa"][1]))
+    (True, True)
+    """
+    n = len(scenes)
+    out = {k: np.full(n, np.nan) for k in RATING_OUTPUTS}
+    groups: dict = {}
+    for i, (sc, st) in enumerate(zip(scenes, states)):
+        if st is not None and sc.n_rpm > 0:
+            groups.setdefault((sc.bearing, sc.Fa, sc.Fr, sc.Fz, sc.n_rpm, sc.rotating, sc.contamination, sc.shaft_fit,
+                               sc.housing_fit, tuple(sorted(st.roles.items()))), []).append(i)
+    for idx in groups.values():
+        sc, st0 = scenes[idx[0]], states[idx[0]]
+        T = {k: np.array([states[i].T_C[k] for i in idx]) for k in st0.T_C}
+        T_op = operating_temperature_C(T, st0.roles)
+        nu = np.array([float(scenes[i].lubricant.nu(t)) for i, t in zip(idx, T_op.tolist())]) * 1e-6   # [cSt] → [m²/s]
+        lv = operating_lives(sc, T_op, nu)
+        for key, v in (("T_operating_C", T_op), ("kappa", lv["kappa"]), ("a_ISO", lv["a_ISO"]), ("L10m_h", lv["L10m_h"])):
+            out[f"ratings.{key}"][idx] = v
+        if sc.bearing.kind == "thrust":
+            continue
+        given = [getattr(states[i], "clearance_um", None) for i in idx]
+        if all(g and "operating" in g for g in given):
+            out["ratings.clearance_op_um"][idx] = [g["operating"] for g in given]
+        else:
+            out["ratings.clearance_op_um"][idx] = scene_clearance(sc, T, st0.roles)["operating"]
+    return {k: v for k, v in out.items() if np.isfinite(v).any()}

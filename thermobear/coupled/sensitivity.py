@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from thermobear.coupled.ratings import RATING_OUTPUTS
 from thermobear.errors import InputError
 from thermobear.lazy import lazy_module
 
@@ -142,10 +143,11 @@ def summary_lines(res, top: int = 8) -> list:
              f"  {'':26s} {'nominal':>9s} {'p5':>9s} {'p50':>9s} {'p95':>9s}"]
     for key, b in res.bands.items():
         kind, _, name = key.partition(".")
-        unit = "°C" if kind == "T_C" else "W"
-        v = _nominal_value(nom, key)
-        lines.append(f"  {(name or key) + ' [' + unit + ']':26s} {'' if v is None else f'{v:9.2f}':>9s} "
-                     f"{last(b['p5']):9.2f} {last(b['p50']):9.2f} {last(b['p95']):9.2f}")
+        unit = RATING_OUTPUTS.get(key) or ("°C" if kind == "T_C" else "W")
+        v = res.nominal_values.get(key, _nominal_value(nom, key) if kind != "ratings" else None)
+        f = ".4g" if key in RATING_OUTPUTS else ".2f"
+        lines.append(f"  {(name or key) + ' [' + unit + ']':26s} {'' if v is None else f'{v:9{f}}':>9s} "
+                     f"{last(b['p5']):9{f}} {last(b['p50']):9{f}} {last(b['p95']):9{f}}")
     fc = res.failed_count
     lines += ["", f"Failed samples: {len(res.failed)} of {res.n}" + (
         " (" + ", ".join(f"{k} {v}" for k, v in sorted(fc.items())) + ")" if fc else "")]

@@ -19,7 +19,10 @@ address                   where the range lives                        how it va
 ========================  ===========================================  =====================
 
 Ranges the thermal solution does not read are not sampled: a rig's inertia (``rig.J_kg_m2``, the
-spin-down's), a bearing's load ratings (``C0_kN``, ``C_kN``: life and static safety).
+spin-down's), a bearing's load ratings (``C0_kN``, ``C_kN``: life and static safety).  The design answers of
+a steady state vary with each sample's temperatures (and its bearing geometry, where C comes from it): their
+bands (``ratings.*``: operating temperature, κ, a_ISO, L10m, operating clearance) come from
+:func:`~thermobear.coupled.ratings.rating_samples`, the functions of the point's own ratings.
 
 The samples are a Latin hypercube (default) or a scrambled Sobol' sequence of
 :mod:`scipy.stats.qmc`, seeded: the same seed gives the same draws.  Each draw u ∈ (0, 1) becomes a
@@ -58,6 +61,7 @@ import numpy as np
 from thermobear.contact.geometry import bearing_values
 from thermobear.contact.materials import PROPERTIES, material
 from thermobear.coupled.pipeline import Family, families, family_contacts, family_loads
+from thermobear.coupled.ratings import rating_samples
 from thermobear.coupled.sensitivity import SENSITIVITY, bands, ranking, summary_lines
 from thermobear.coupled.sources import family_network, loss_sources, prepared_for
 from thermobear.coupled import steady as _steady
@@ -354,6 +358,8 @@ class UncertaintyResult:
     t_s : ndarray                           output times of a transient [s] (None for a steady state)
     focus : tuple                           nodes the text table ranks the inputs for (the rig's
                                             measured nodes, else the balls)
+    nominal_values : dict                   output → the nominal answer's value, for the outputs the
+                                            nominal answer does not hold itself (``ratings.*``)
     """
 
     nominal: object
@@ -371,6 +377,7 @@ class UncertaintyResult:
     t_s: np.ndarray | None = None
     group: np.ndarray = field(default=None, repr=False)
     focus: tuple = ()
+    nominal_values: dict = field(default_factory=dict)
 
     def summary(self, top: int = 8) -> str:
         """A text table: bands, failed samples, inputs ranked (:func:`~thermobear.coupled.sensitivity.summary_lines`)."""
@@ -391,6 +398,7 @@ class UncertaintyResult:
                            "sensitivity": self.sensitivity_method},
                 "inputs": [i.as_dict() for i in self.inputs],
                 "bands": {k: {q: arr(v) for q, v in b.items()} for k, b in self.bands.items()},
+                "nominal_values": dict(self.nominal_values),
                 "t_s": arr(self.t_s),
                 "sensitivity": self.sensitivity,
                 "failed": {"count": len(self.failed), "by_error": self.failed_count,
@@ -407,8 +415,10 @@ def _fail(exc) -> dict:
     return {"error": type(exc).__name__, "message": str(exc)}
 
 
-def steady_outputs(results) -> dict:
-    """Output name → (n,) values of the samples' SteadyStates (NaN for a failed sample)."""
+def steady_outputs(results, scenes=None) -> dict:
+    """Output name → (n,) values of the samples' SteadyStates (NaN for a failed sample); with the samples'
+    ``scenes`` also their design answers (:func:`~thermobear.coupled.ratings.rating_samples`: ``ratings.kappa``,
+    ``ratings.L10m_h``, ``ratings.clearance_op_um``, …)."""
     ok = {i: r for i, r in enumerate(results) if isinstance(r, SteadyState)}
     if not ok:
         return {}
@@ -422,6 +432,8 @@ def steady_outputs(results) -> dict:
         out["P_W"][i] = r.P_W
         for k, v in loss[i].items():
             out[f"breakdown_W.{k}"][i] = float(v)
+    if scenes is not None:
+        out.update(rating_samples(scenes, [r if isinstance(r, SteadyState) else None for r in results]))
     return out
 
 
@@ -464,11 +476,12 @@ def steady_uncertainty(scene: Scene, n: int, *, seed=None, method: str = "lhs", 
         for k, r in zip(runnable, _solve_split([sm.scenes[k] for k in runnable], tol_K, prepared)):
             results[k] = r
     failed = {k: _fail(r) for k, r in enumerate(results) if isinstance(r, Exception)}
-    outputs = steady_outputs(results)
+    outputs = steady_outputs(results, sm.scenes)
     return UncertaintyResult(nominal=nominal, inputs=sm.inputs, X=sm.X, outputs=outputs, bands=bands(outputs),
                              sensitivity=ranking(sm.inputs, sm.X, outputs, sensitivity), failed=failed, n=sm.X.shape[0],
                              seed=seed, method=method, groups=sm.groups, sensitivity_method=sensitivity, group=sm.group,
-                             focus=_focus(scene, nominal.T_C))
+                             focus=_focus(scene, nominal.T_C),
+                             nominal_values={k: float(v[0]) for k, v in rating_samples([scene], [nominal]).items()})
 
 
 def _solve_split(scenes, tol_K, prepared) -> list:
