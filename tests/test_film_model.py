@@ -222,3 +222,32 @@ def test_loads_of_cold_films_that_run_away_are_not_the_verdict(tmp_path):
         assert "heat-up from ambient" in str(e.value)
         tr = tb.transient(s, 1800.0, t_eval=[0.0, 1800.0])
     assert max(T[-1] for T in tr.T_C.values()) < 0.0                 # the heat-up settles cold
+
+
+def test_a_heat_up_settled_at_a_jump_of_the_loads_stays_there_and_says_so(tmp_path):
+    """A 16002 in an oil bath at −20 °C, film load model in the low-speed form: the film temperature has no fixed
+    point, the loads jump near −5.6 °C (steady_state names it).  The heat-up's film cell interpolates the loads
+    across the jump and settles inside it; the loads solved at that film temperature change the losses by a few %
+    and move it away.  Before, one held piece then ran to the end with its loads 4 K off the film temperature, and
+    the end state depended on the run's length (−12.0 °C inner ring at 1e4 s, −6.9 °C at 1e5 s).  Now a held piece
+    ends after 2 K of drift, the heat-up goes back to the cell's loads and stays at the jump however long it runs,
+    and a named warning says so, also where the run ends inside the cell (1e5 s); a heat-up that settles where the
+    loads are smooth has none."""
+    from thermobear.app.cli import main
+    path = tmp_path / "c.toml"
+    assert main(["init", "16002", "--lubrication", "oil-bath", "--out", str(path)]) == 0
+    s = tb.load_scene(path).with_(T_ambient_C=-20.0, models={"load_model": "film", "high_speed": False})
+    ends, said = [], []
+    for t_end in (1e4, 1e5):
+        with warnings.catch_warnings(record=True) as got:
+            warnings.simplefilter("always")
+            tr = tb.transient(s, t_end, t_eval=np.linspace(0.0, t_end, 201))
+        ends.append((tr.T_C["inner_ring"][-1], tr.P_W[-1]))
+        said.append([w for w in tr.warnings if w.quantity == "film load jump"])
+        assert [str(w.message) for w in got if getattr(w.message, "quantity", "") == "film load jump"]
+        late = tr.t_s > 0.5 * t_end
+        assert np.ptp(tr.T_C["balls"][late]) < 0.01              # settled at the jump, not cycling across it
+    assert all(len(w) == 1 and "no fixed point" in str(w[0]) for w in said)
+    assert abs(ends[0][0] - ends[1][0]) < 0.05 and ends[0][1] == pytest.approx(ends[1][1], rel=1e-3)
+    smooth = tb.transient(s.with_(T_ambient_C=20.0), 1e5, t_eval=[0.0, 1e5])
+    assert not [w for w in smooth.warnings if w.quantity == "film load jump"]

@@ -18,7 +18,12 @@ integrator goes on from piece to piece (``continue_from``: its order, step size 
 afresh only at a schedule's step, or where the sources step beyond the tolerances' scale).  Once the film
 temperature settles — at its present rate it would move less than 0.25 K over the longer of the rest of the
 segment and the time the segment has run — the loads are held at its value (pieces of ≈ 2 K of drift, loads
-re-solved at each one's start), so that a long heat-up ends at the steady state.  Against pieces of 0.05 K
+re-solved at each one's start, a piece ended where the film temperature drifts by more), so that a long heat-up
+ends at the steady state.  Where the loads jump at a film temperature (a ball lifting off; the film temperature
+has no fixed point, :func:`thermobear.coupled.steady.steady_state` names the jump) the cell's interpolation
+settles across the jump and the loads held there move the heat-up away: it goes on with the cell's interpolated
+loads, where it stays at the jump, and says so (a named OutsideValidity warning, also where a run ends settled
+inside a cell whose held loads change the losses by more than 1 %).  Against pieces of 0.05 K
 (loads at each piece's start), at rtol = atol = 1e-8, the cells keep seed 004's heat-ups (3200 rpm; 4800 rpm
 under 1300 N radial; 8070 rpm under 750 N) within 1.7, 2.2 and 0.8 mK and the oil-bath 6208's, whose losses
 vary with T_f in 0.3 % waves about 6 K long, within 76 mK, where pieces of ≈ 2 K held at their start
@@ -63,6 +68,8 @@ _FILM_CELL_K = 3.0      # film temperatures at which the film loads are solved: 
 _FILM_AHEAD = 8         # grid nodes whose film loads are solved in one batched call (the node met and the next 7)
 _FILM_SETTLED_K = 0.25  # a heat-up whose film temperature moves less to the end holds its loads there [K]
 _CLEAR_DRIFT_M = 0.5e-6  # operating-clearance drift per piece [m] (models.clearance = "operating")
+_JUMP_REL = 0.01        # a settled heat-up whose held loads change its losses by more moves away: a jump of the loads
+                        # (the blended model switches keep their steps below 1 %, thermobear.models.BLEND_BANDS)
 
 
 @dataclass
@@ -254,6 +261,8 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
     cells: dict = {}        # scene (id) → its _FilmCells: the loads solved for it during the run
     last_film = None        # (film temperature's rate at its end [K/s], scene) of the last piece
     started: dict = {}      # scene (id) → the time its first piece started [s]
+    jump, jumped = None, set()   # the warning of a settled heat-up that the loads held at its film temperature
+    #                              moved (a jump of the loads), the scenes (id) it happened to: held no more
     with warnings.catch_warnings():
         # property calls at the integrator's trial states may lie beyond a correlation's data; the
         # validity of the states reported is checked once, on the series (limits.point_warnings)
@@ -282,7 +291,7 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
             if film and not clear:     # a cell of the film grid, unless the heat-up has settled
                 horizon = max(te - ts, ts - started.setdefault(id(sc), ts))   # the rest, or as long as it ran
                 nodes, (t_cross, drift) = fc.cell(T_film), _crossing(fc, fc.cell(T_film), T_film, horizon, last_film, sc)
-                if drift <= _FILM_SETTLED_K:
+                if drift <= _FILM_SETTLED_K and id(sc) not in jumped:     # (past a jump of the loads: the cell's)
                     nodes, t_cross = (T_film,), None
             elif film:                 # a piece at its own operating clearance: a scene of its own
                 nodes = (T_film,)
@@ -298,6 +307,9 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
                 pm = _piece_model(sc_p, alts, load, pre if pre.serves(sc_p) else None, fc, nodes,
                                   dominant=kept[2] if kept[0] is sc_p and _dominant_kept(alts) else None)
                 sources = heat_sources(pm)
+            held = film and not clear and len(nodes) == 1        # settled: the loads held at its film temperature
+            step = (_loss_step(kept[3], sources, pm.network, T_state) if held and kept[0] is sc_p
+                    and kept[1] is not None and len(kept[1]) == 2 else 0.0)   # ... against the cell's interpolated ones
             kept = (sc_p, nodes, pm, sources)
             net, cp = pm.network, pm.coupling
             first = first or (models, cp.roles, list(net.nodes))
@@ -314,22 +326,18 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
             tr = solve_transient(net, sources, te - ts, T0_C=None if prev else _T0(T_state, net), t_eval=seg,
                                  rtol=rtol, atol=atol, stop=stop, continue_from=prev,
                                  fixed_C=None if boundary is None else boundary.shifted(ts),
-                                 until=_cell_exit(fc, nodes, net, cp.roles, t_cross) if len(nodes) > 1 else None)
+                                 until=(_cell_exit(fc, nodes, net, cp.roles, t_cross) if len(nodes) > 1 else
+                                        _drift_exit(nodes[0], net, cp.roles) if film else None))
             if tr.completed and tr.t.size and float(tr.t[-1]) < te - ts:     # it left its film cell: the rest from there
                 pieces.insert(i + 1, (ts + float(tr.t[-1]), te, sc, last_seg))
                 te, last_seg, split = ts + float(tr.t[-1]), False, True
+                if held and step > _JUMP_REL:
+                    jumped.add(id(sc))
+                    jump = jump or _jump_warning(nodes[0], te, _film_of(_T_nodes_of(tr, net), cp.roles, sc), step)
             prev = tr if split and tr.completed else None  # the next piece goes on with this one's integrator
-            t_abs = np.asarray(tr.t) + ts
-            keep = np.ones(t_abs.size, bool) if t_eval is None else np.isin(np.round(t_abs, 9), np.round(t_eval, 9))
-            if not last_seg and tr.completed:
-                keep &= t_abs < te                    # the step's instant is reported by the next segment
-            out_t.append(t_abs[keep])
-            for n, v in tr.T_C.items():
-                out_T.setdefault(n, []).append(np.asarray(v)[keep])
-            for n, v in tr.report.items():
-                out_rep.setdefault(n, []).append(np.asarray(v, float)[keep])
+            _append(out_t, out_T, out_rep, tr, ts, te, t_eval, last_seg)
             if tr.t.size:
-                T_state = {n: float(np.asarray(v)[-1]) for n, v in tr.T_C.items() if n in net.free_nodes}
+                T_state = _T_nodes_of(tr, net)
             if not tr.completed:
                 completed = False
                 break
@@ -342,6 +350,8 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
                     f.append(_CLEAR_DRIFT_M / max(abs(c1 - c["operating"]) * 1e-6, 1e-15))
                 film_dt = (te - ts) * float(np.clip(min(f), 0.5, 4.0))
             _check_limit(T_state, te)
+        if completed and film and len(nodes) == 2 and jump is None:   # ends settled inside a cell: the loads there?
+            jump = _settled_jump(kept, alts, load, pre, fc, T_state, cp.roles, last_film, te - started.get(id(sc), ts), te)
     got = []
     if out_t:
         ro, cat = first[1], np.concatenate
@@ -349,8 +359,37 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
         x = [0.5 * (Tb + cat(out_T[ro["inner"]])), 0.5 * (Tb + cat(out_T[ro["outer"]])), cat(out_T[ro["oil"]])]
         for _, _, sc, _ in pieces[:i + 1]:
             got += [w for w in point_warnings(sc, None, np.concatenate(x)) if str(w) not in map(str, got)]
+    got += [jump] if jump is not None else []
     emit(got)
     return _assemble(out_t, out_T, out_rep, first, seg_changes, got, completed)
+
+
+def _append(out_t, out_T, out_rep, tr, ts, te, t_eval, last_seg):
+    """A piece's times (absolute [s]), node temperatures and report appended to the run's lists: the times of
+    ``t_eval`` (all the integrator's without), the step's instant left to the next segment."""
+    t_abs = np.asarray(tr.t) + ts
+    keep = np.ones(t_abs.size, bool) if t_eval is None else np.isin(np.round(t_abs, 9), np.round(t_eval, 9))
+    if not last_seg and tr.completed:
+        keep &= t_abs < te                    # the step's instant is reported by the next segment
+    out_t.append(t_abs[keep])
+    for n, v in tr.T_C.items():
+        out_T.setdefault(n, []).append(np.asarray(v)[keep])
+    for n, v in tr.report.items():
+        out_rep.setdefault(n, []).append(np.asarray(v, float)[keep])
+
+
+def _settled_jump(kept, alts, load, pre, fc, T_state, roles, last_film, elapsed_s, t_s):
+    """The jump warning (:func:`_jump_warning`) of a heat-up that ends settled — its film temperature, at its rate
+    at the end, moving less than ``_FILM_SETTLED_K`` over the ``elapsed_s`` it ran — inside a film cell (its losses
+    interpolated between the cell's nodes), where the loads solved at its film temperature change the losses by
+    more than ``_JUMP_REL`` (one more load solve); else None."""
+    sc_p, _, _, sources = kept
+    if last_film is None or abs(last_film[0]) * elapsed_s > _FILM_SETTLED_K:
+        return None
+    T_end = _film_of(T_state, roles, sc_p)
+    held = _piece_model(sc_p, alts, load, pre if pre.serves(sc_p) else None, fc, (T_end,))
+    step = _loss_step(sources, heat_sources(held), held.network, T_state)
+    return _jump_warning(T_end, t_s, None, step) if step > _JUMP_REL else None
 
 
 def _film_weights(net, roles) -> np.ndarray:
@@ -386,6 +425,52 @@ def _cell_exit(cells: "_FilmCells", nodes, net, roles, t_cross=None):
         T = float((T_K @ c)[0])
         return T < lo or T > hi or t > t_max
     return until
+
+
+def _drift_exit(T_film, net, roles):
+    """``until(t, T_K)`` of a piece whose film loads are held at ``T_film`` [°C]: True once the film temperature
+    has drifted from it by more than ``_FILM_DRIFT_K``, so that the next piece re-solves the loads where the heat-up
+    went (a piece's length comes from the drift rate of the last one: a heat-up that settled and then moves — the
+    loads held at the settled film temperature differ from the cell's interpolated ones, e.g. across a jump of the
+    loads — is caught here)."""
+    c = _film_weights(net, roles)
+    lo, hi = T_film - _FILM_DRIFT_K + _C0, T_film + _FILM_DRIFT_K + _C0
+
+    def until(t, T_K) -> bool:
+        T = float((T_K @ c)[0])
+        return T < lo or T > hi
+    return until
+
+
+def _T_nodes_of(tr, net) -> dict:
+    """Free node → its temperature [°C] at the end of a piece (as ``T_state``)."""
+    return {n: float(np.asarray(v)[-1]) for n, v in tr.T_C.items() if n in net.free_nodes}
+
+
+def _loss_step(before, after, net, T_state) -> float:
+    """Relative change [-] of the total loss at the node temperatures ``T_state`` (free node → °C) from the
+    sources ``before`` to ``after`` (:func:`heat_sources`)."""
+    T = net.T_fixed_K.copy()
+    for n, v in T_state.items():
+        T[:, net.index[n]] = v + _C0
+    P0, P1 = (float(s(0.0, T)[0].sum()) for s in (before, after))
+    return abs(P1 - P0) / max(abs(P0), 1e-300)
+
+
+def _jump_warning(T_held, t_s, T_now, step) -> OutsideValidity:
+    """The named warning of a heat-up that had settled at the film temperature ``T_held`` [°C] and that the film
+    loads solved there moved to ``T_now`` [°C] (at ``t_s`` [s]), their losses ``step`` [-] off those of the cell's
+    loads interpolated in the film temperature: the loads jump at that film temperature (the settled state was
+    that of the interpolation across the jump), it has no fixed point there (``T_now`` None: the run ends there)."""
+    moved = (f"and move it away (past {T_now:.2f} °C at t = {t_s:.4g} s)" if T_now is not None else
+             f"(the heat-up ends there, t = {t_s:.4g} s)")
+    return OutsideValidity(
+        f"film load model: the heat-up settled at a film temperature of {T_held:.2f} °C, where the loads solved at "
+        f"that temperature change the losses by {100 * step:.3g} % {moved}: the loads jump there and the film "
+        f"temperature has no fixed point (thermobear run names the jump); the heat-up stays at the jump, the loads "
+        f"interpolated across it between the film temperatures of its cell ({_FILM_CELL_K:g} K apart)",
+        quantity="film load jump", value=T_held, limit="a film temperature the loads do not jump at",
+        source="thermobear.coupled.transient", field="models.load_model")
 
 
 def _alternatives(sc: Scene, load) -> list:
