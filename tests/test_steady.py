@@ -98,6 +98,22 @@ def test_a_failing_point_does_not_stop_the_others():
     assert out[2].P_W == pytest.approx(steady_state(s).P_W, rel=1e-12)
 
 
+@pytest.mark.parametrize("name", ["seed004_oil_jet_7210.toml", "block_6208_oil_bath.toml"])
+def test_a_point_at_rest_and_unloaded_names_its_isolated_balls_and_stops_no_other(name):
+    """At rest and unloaded the balls exchange no heat (contacts without load, the mixture still): their
+    temperature is not determined.  It was a batch-wide 'singular conductance matrix' (or, on the heating
+    path, a lubricant evaluated at NaN: an InputError) that stopped every point solved with it (a whole sweep)."""
+    s = tb.load_scene(tb.example_path(name))
+    idle, loaded = s.with_(n_rpm=0.0, Fa=0.0, Fr=0.0), s.with_(n_rpm=0.0)
+    out = tb.steady_states([s, idle, loaded])
+    assert isinstance(out[1], tb.NoConvergence) and "balls exchange no heat" in str(out[1])
+    assert isinstance(out[0], tb.SteadyState) and isinstance(out[2], tb.SteadyState)
+    assert out[0].T_C["balls"] == pytest.approx(steady_state(s).T_C["balls"], abs=1e-6)
+    assert out[2].P_W == pytest.approx(0.0, abs=1e-9)                     # loaded at rest: no losses
+    with pytest.raises(tb.NoConvergence, match="balls exchange no heat"):
+        steady_state(idle)
+
+
 def test_coupling_conserves_each_loss_part_and_matches_the_pouly_split():
     """Every loss part's heat goes somewhere whole (columns of S sum to 1); the three default parts split
     as split_losses does (½ ball, ½ race; drag to the mixture); contact temperatures are ball/race means."""

@@ -24,8 +24,8 @@ import numpy as np
 
 from thermobear.coupled.fixedpoint import solve_coupled
 from thermobear.coupled.sources import Coupling
-from thermobear.errors import ExtrapolationWarning
-from thermobear.thermal.solve import batched_solve
+from thermobear.errors import ExtrapolationWarning, NoConvergence
+from thermobear.thermal.solve import batched_solve, isolated_nodes
 from thermobear.validity import T_LUBRICANT_REFUSE_C
 
 __all__ = ["T_LIMIT_K"]
@@ -146,6 +146,15 @@ def _newton(net, src, cp: Coupling, tol_K, T0=None, maxiter: int = 30, h: float 
                    method=("newton",) * B)
 
 
+def no_exchange(names: str, **kw) -> NoConvergence:
+    """The failure of an operating point whose network leaves nodes without any conductance (``names``,
+    :func:`~thermobear.thermal.solve.isolated_nodes`): their temperatures are not determined."""
+    return NoConvergence(
+        f"no steady state: {names or 'a group of nodes'} exchange no heat with the rest of the network at this "
+        "operating point (e.g. the balls of a bearing at rest and unloaded: their contacts carry no load and the "
+        "lubricant around them is still), so that no temperature is determined for them", **kw)
+
+
 def _sources_matrix(net, cp: Coupling, parts) -> np.ndarray:
     """(B, n) node sources [W] of the loss parts (B, n_parts)."""
     P = np.zeros((net.B, len(net.nodes)))
@@ -171,8 +180,11 @@ def _physical_path(net, src, cp: Coupling, tol_K) -> _Newton:
         P = _sources_matrix(net, cp, parts)[:, free]
         for _ in range(_NETWORK_MAXITER):     # the network with these sources, its conductances at its own temperatures
             T_was = state["T"][:, free]
-            Aff, Afb = net.blocks(net.conductances(state["T"]))
+            G = net.conductances(state["T"])
+            Aff, Afb = net.blocks(G)
             Tf = batched_solve(Aff, P - np.einsum("bij,bj->bi", Afb, Tb))
+            if not np.isfinite(Tf).all():
+                raise no_exchange(isolated_nodes(net, G)[0], iterations=0)
             state["T"] = np.where(fixed, state["T"], 0.0)
             state["T"][:, free] = Tf
             if np.max(np.abs(Tf - T_was)) <= 1e-3 * tol_K:

@@ -17,11 +17,11 @@ import numpy as np
 
 from thermobear.arrays import take
 from thermobear.coupled.limits import family_warnings
-from thermobear.coupled.newton import _C0, T_LIMIT_K, _Newton, _sources_matrix
+from thermobear.coupled.newton import _C0, T_LIMIT_K, _Newton, _sources_matrix, no_exchange
 from thermobear.coupled.pipeline import Family
 from thermobear.coupled.sources import Coupling
 from thermobear.errors import ExtrapolationWarning, NoConvergence, ThermalRunaway
-from thermobear.thermal.solve import heat_paths, solve_linear
+from thermobear.thermal.solve import heat_paths, isolated_nodes, solve_linear
 
 __all__ = ["SteadyState"]
 
@@ -126,6 +126,9 @@ def finish(fam: Family, net, src, cp: Coupling, template, nw: _Newton, tol_K, fa
         if not nw.done[b]:
             out.append(None)
             continue
+        if solved.singular[b]:
+            out.append(no_exchange(solved.isolated[b], iterations=int(nw.its[b]), history=nw.history[b]))
+            continue
         T_C = dict(zip(net.nodes, solved.T_all[b]))
         hot = {k: v for k, v in T_C.items() if v + _C0 > T_LIMIT_K}
         if hot:
@@ -157,7 +160,9 @@ class Solved:
             r = src.result(x_C)
         self.r, self.nw, self.cp, self.nodes = r, nw, cp, list(net.nodes)
         self.parts = src.parts_of(r, x_C.shape[:-1])
-        st = solve_linear(net, _sources_matrix(net, cp, self.parts), nw.T)
+        st = solve_linear(net, _sources_matrix(net, cp, self.parts), nw.T, singular="nan")
+        self.singular = ~np.isfinite(st.T_K).all(axis=1)       # (a point whose nodes exchange no heat: named)
+        self.isolated = isolated_nodes(net, st.G_W_K) if self.singular.any() else [""] * B
         self.gap = np.abs(st.T_K[:, free] @ cp.C.T - nw.x).max(axis=1)
         flows = {k: np.atleast_1d(v) for k, v in st.flows_W.items()}
         self.paths = heat_paths(net, np.column_stack([np.broadcast_to(flows[e.name], (B,)) for e in net.elements]))

@@ -45,7 +45,7 @@ from thermobear.thermal.network import ThermalNetwork
 integrate = lazy_module("scipy.integrate")  # BDF, Radau: loaded by the first transient
 
 __all__ = ["SteadyResult", "TransientResult", "solve_steady", "solve_linear", "solve_transient", "split_losses",
-           "sources_matrix", "batched_solve", "heat_out", "heat_paths", "LinearBoundary"]
+           "sources_matrix", "batched_solve", "heat_out", "heat_paths", "isolated_nodes", "LinearBoundary"]
 
 _C0 = 273.15
 
@@ -241,10 +241,16 @@ def solve_steady(net: ThermalNetwork, sources_W=None, *, T_guess_K=None, tol_K: 
     return _result(net, T, G, P, it, res)
 
 
-def solve_linear(net: ThermalNetwork, sources_W, T_K) -> SteadyResult:
+def solve_linear(net: ThermalNetwork, sources_W, T_K, *, singular: str = "raise") -> SteadyResult:
     """Temperatures of the free nodes for sources (B, n) [W] with the conductances at ``T_K`` (B, n)
     [K] held (one linear solve): the last step of a coupled solution, whose flows and temperatures
-    then come from the same conductances (the energy balance closes to machine precision)."""
+    then come from the same conductances (the energy balance closes to machine precision).
+
+    An operating point whose conductance matrix is singular (a free node that exchanges no heat, e.g. the
+    balls of a bearing at rest and unloaded): ``singular="raise"`` a NoConvergence naming the nodes
+    (:func:`isolated_nodes`), ``"nan"`` its row of temperatures NaN (the others solved)."""
+    if singular not in ("raise", "nan"):
+        raise InputError("singular", singular, "'raise' or 'nan'")
     free, fixed = ~net.fixed, net.fixed
     T = np.array(T_K, dtype=float)
     T[:, fixed] = net.T_fixed_K[:, fixed]
@@ -252,9 +258,20 @@ def solve_linear(net: ThermalNetwork, sources_W, T_K) -> SteadyResult:
     Aff, Afb = net.blocks(G)
     P = np.asarray(sources_W, float)
     T[:, free] = batched_solve(Aff, P[:, free] - np.einsum("bij,bj->bi", Afb, T[:, fixed]))
-    if not np.all(np.isfinite(T)):
-        raise NoConvergence("singular conductance matrix (a node without conductance?)", iterations=1)
+    if singular == "raise" and not np.all(np.isfinite(T)):
+        bad = int(np.argmax(~np.isfinite(T).all(axis=1)))
+        raise NoConvergence(f"singular conductance matrix: {isolated_nodes(net, G)[bad] or 'a group of nodes'} "
+                            "exchange no heat with the rest of the network", iterations=1)
     return _result(net, T, G, P, 1, 0.0)
+
+
+def isolated_nodes(net: ThermalNetwork, G) -> list:
+    """Per operating point, the free nodes without any conductance [-] at the conductances G (B, n_el) [W/K]:
+    the nodes whose temperature no steady state determines (a singular conductance matrix), joined by ", "."""
+    Aff, Afb = net.blocks(G)
+    none = (np.abs(Aff).sum(axis=2) + np.abs(Afb).sum(axis=2)) == 0.0
+    names = [n for n, f in zip(net.nodes, ~net.fixed) if f]
+    return [", ".join(n for n, z in zip(names, row) if z) for row in none]
 
 
 @dataclass
