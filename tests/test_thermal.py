@@ -604,3 +604,19 @@ def test_free_convection_in_oil_at_the_oils_limits_is_finite_and_continuous():
         G_in = e.conductance(np.array([T_in + 5.0]), np.array([T_in - 5.0]), oil)
         assert np.isfinite(G).all() and G[0] > 0
         assert G[0] == pytest.approx(G_in[0], rel=0.05)     # no step at the limit
+
+
+def test_the_output_pass_in_chunks_equals_one_call(monkeypatch):
+    """The losses at the output times are evaluated in chunks of times (a 100 000-point heat-up held every
+    contact's losses at every time at once: 3.7 GB); the series are those of one call."""
+    import thermobear as tb
+    import thermobear.thermal.solve as solve
+    s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
+    t = np.linspace(0.0, 600.0, 1201)
+    whole = tb.transient(s, 600.0, t_eval=t)
+    monkeypatch.setattr(solve, "_OUTPUT_CHUNK", 100)
+    chunked = tb.transient(s, 600.0, t_eval=t)
+    assert chunked.t_s.size == 1201
+    np.testing.assert_allclose(chunked.P_W, whole.P_W, rtol=1e-12)
+    for k, v in whole.breakdown_W.items():
+        np.testing.assert_allclose(chunked.breakdown_W[k], v, rtol=1e-12, atol=1e-15)

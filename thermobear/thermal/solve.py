@@ -464,7 +464,7 @@ def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_
         if sol.until:
             break
     t_all, T_all = _collect(pieces, net, t_eval, B, nf, bnd)
-    P, report = sources(t_all, T_all) if t_all.size else (None, {})
+    report = _output_pass(sources, t_all, T_all)
     squeeze = (lambda v: v[:, 0] if B == 1 else v)  # noqa: E731
     integ.last = TransientResult(t=t_all, T_K=T_all, T_C={n: squeeze(T_all[..., k] - _C0) for k, n in enumerate(net.nodes)},
                                  report={k: squeeze(np.asarray(v, float)) for k, v in report.items()},
@@ -605,6 +605,20 @@ class _Segment:
     t: np.ndarray
     y: np.ndarray
     until: bool = False
+
+
+_OUTPUT_CHUNK = 512    #: output times whose sources are evaluated in one call (their losses: tens of kB per time)
+
+
+def _output_pass(sources, t_all, T_all) -> dict:
+    """What ``sources`` reports at the output times (name → (n_t, ...) arrays), evaluated in chunks of
+    ``_OUTPUT_CHUNK`` times, so that a long log's heat-up does not hold every contact's losses at every
+    output time at once."""
+    if not t_all.size:
+        return {}
+    got = [sources(t_all[k:k + _OUTPUT_CHUNK], T_all[k:k + _OUTPUT_CHUNK])[1]
+           for k in range(0, t_all.size, _OUTPUT_CHUNK)]
+    return {name: np.concatenate([np.asarray(g[name], float) for g in got], axis=0) for name in got[0]}
 
 
 def _collect(pieces, net, t_eval, B, nf, bnd):
