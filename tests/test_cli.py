@@ -364,3 +364,12 @@ def test_node_families_group_a_machines_parts():
     from thermobear.app.plots import node_family
     assert [node_family(n) for n in ("inner_race", "shaft_seat_3_r2", "housing_foot", "balls", "oil_sump", "frame")] \
         == ["inner", "shaft", "housing", "ball", "oil", ""]
+
+
+def test_one_warning_line_per_fact(capsys):
+    """A lubricant temperature beyond its data is met by each of its properties in turn (β, η, k, ν) and by
+    the contact temperature check: one fact, one warning line (there were five)."""
+    assert main(["run", str(EX / "seed004_oil_jet_7210.toml"), "--set", "T_C=200"]) == 0
+    err = capsys.readouterr().err.strip().splitlines()
+    temp = [ln for ln in err if "lubricant temperature 200 °C" in ln]
+    assert len(temp) == 1 and temp[0].startswith("warning: ExtrapolationWarning: ")

@@ -36,7 +36,7 @@ from thermobear.app.speed import cmd_speed
 from thermobear.app.verbs import (EXIT_INTERRUPTED, cmd_calibrate, cmd_compare, cmd_init, cmd_list, cmd_loads, cmd_run,
                                   cmd_spin_down, cmd_sweep, cmd_transient)
 from thermobear import __version__
-from thermobear.errors import InputError, NoEquilibrium, SolverError, ThermobearError
+from thermobear.errors import InputError, NoEquilibrium, OutsideValidity, SolverError, ThermobearError
 
 __all__ = ["main", "build_parser", "EXIT_BAD_INPUT", "EXIT_SOLVER", "EXIT_INTERRUPTED"]
 
@@ -203,11 +203,15 @@ def _one_line(e) -> str:
 
 
 def _show_warning(seen):
-    """One line per warning on stderr (no source lines), each message once."""
+    """One line per warning on stderr (no source lines), each fact once: a message once, and an
+    OutsideValidity of the same quantity, value and range as one already shown (e.g. a lubricant temperature
+    beyond its data, met by each property of the lubricant in turn) not again."""
     def show(message, category, filename, lineno, file=None, line=None):
         text = f"warning: {category.__name__}: {_one_line(message)}"
-        if text not in seen:
-            seen.add(text)
+        fact = ((getattr(message, "quantity", ""), repr(getattr(message, "value", None)), getattr(message, "limit", ""))
+                if isinstance(message, OutsideValidity) and getattr(message, "quantity", "") else text)
+        if text not in seen and fact not in seen:
+            seen.update((text, fact))
             print(text, file=sys.stderr)
     return show
 
