@@ -13,6 +13,7 @@ import pytest
 import thermobear as tb
 from thermobear.app.cli import main
 from thermobear.contact.fits import operating_clearance
+from thermobear.contact.materials import material
 from thermobear.coupled.pipeline import scene_load
 from thermobear.coupled.ratings import (check_static_safety, operating_lives, rating_samples, scene_ratings,
                                         typical_fits)
@@ -81,7 +82,7 @@ def test_run_answers_ratings_in_text_and_json(capsys):
     # κ > 4: ISO 281 takes κ = 4 — stated with the ratings, not a warning (below 0.1 it is one)
     assert r["kappa"] > 4 and not any(w["quantity"] == "kappa" for w in d["warnings"])
     code, out, _ = run(capsys, "run", BATH)
-    assert "Ratings (ISO 76, ISO 281, ISO/TS 16281)" in out and "L10m" in out and "k5 / H7" in out
+    assert "Ratings (ISO 76, ISO 281, ISO/TS 16281)" in out and "L10m" in out and "k5 (13.5 µm) / H7 (-21.5 µm)" in out
     assert "a_ISO at kappa = 4, ISO 281" in out
 
 
@@ -110,9 +111,14 @@ def test_kappa_rises_as_the_bearing_cools():
 def test_operating_clearance_falls_as_the_inner_ring_warms_and_is_the_fit_formula():
     cl = [scene_ratings(S, _steady(T, 40.0)).clearance_um for T in (40.0, 60.0, 80.0)]
     assert cl[0]["operating"] > cl[1]["operating"] > cl[2]["operating"]
+    # the scene describes its machine: the seats of its network's joints (k5 / H7, probable), its shaft's and
+    # housing's materials (the ratings took the load-typical fits of a bare bearing before: j6 or k5)
+    m = S.network
     hand = operating_clearance(S.bearing, shaft="k5", housing="H7", T_inner_C=60.0, T_outer_C=40.0, T_ball_C=50.0,
-                               T_shaft_C=60.0, T_housing_C=40.0, n_rpm=3000.0)
+                               T_shaft_C=60.0, T_housing_C=40.0, n_rpm=3000.0, shaft_bore=m.shaft.bore,
+                               shaft_material=material(m.shaft.material), housing_material=material(m.housing.material))
     assert cl[1]["operating"] == pytest.approx(float(hand.Pd) * 1e6, abs=1e-9)
+    assert cl[1]["shaft_fit"] == "k5 (13.5 µm)" and "network's joints" in cl[1]["fits_from"]
     assert cl[2]["operating"] < 0                                   # C0 6208 (13 µm) consumed by 40 K
     r = scene_ratings(S, _steady(80.0, 40.0))
     assert any(isinstance(w, OutsideValidity) and w.quantity == "operating_clearance" for w in r.warnings)
@@ -217,3 +223,29 @@ def test_rating_samples_equal_each_points_ratings():
     thrust = tb.load_scene(str(EX / "seed002_grease_thrust_51107.toml"))
     got = rating_samples([thrust], [tb.steady_state(thrust)])
     assert "ratings.kappa" in got and "ratings.clearance_op_um" not in got   # no radial clearance
+
+
+def test_a_machines_clearance_takes_the_seats_of_its_network(tmp_path):
+    """A scene that describes its machine: its operating clearance takes the seats its network's joints take —
+    the [shaft] / [housing] interference_um it gives (init writes them), else the builders' probable fit.  It took
+    the load-typical fit of a bare bearing (j6 at the ISO 15312 reference load of a 6208) while the network sat the
+    ring on k5, and ignored interference_um."""
+    from thermobear.thermal.builders import seat_interferences
+    path = tmp_path / "x.toml"
+    assert main(["init", "6208", "--lubrication", "oil-bath", "--out", str(path)]) == 0
+    s = tb.load_scene(path)
+    (I_i, why_i), (I_o, _) = seat_interferences(s.network)
+    assert why_i == "[shaft] interference_um" and I_i == pytest.approx(13.5e-6)
+    st = tb.steady_state(s)
+    c = scene_ratings(s, st).clearance_um
+    tight = dict(s.raw["shaft"], interference_um=30.0)
+    s2 = scene_from_dict({**s.raw, "shaft": tight}, path=s.path)
+    c2 = scene_ratings(s2, st).clearance_um
+    assert c["mounted"] > c2["mounted"]                              # a tighter seat takes more clearance
+    hand = operating_clearance(s.bearing, I_inner_m=30e-6, I_outer_m=I_o, shaft_bore=s2.network.shaft.bore,
+                               shaft_material=material(s2.network.shaft.material),
+                               housing_material=material(s2.network.housing.material))
+    assert c2["mounted"] == pytest.approx(float(hand.Pd) * 1e6, rel=1e-12)
+    assert c2["shaft_fit"] == "30.0 µm" and "interference_um" in c2["fits_from"]
+    with pytest.raises(InputError, match="I_inner_m"):
+        operating_clearance(s.bearing, I_inner_m=float("nan"))

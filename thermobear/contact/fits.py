@@ -344,7 +344,8 @@ def operating_clearance(brg: BallBearing, *, shaft: str | None = None, housing: 
                         housing_diameter: float = np.inf, Pd_unmounted: float | None = None,
                         alpha_ring: float | None = None, alpha_ball: float | None = None,
                         alpha_shaft: float | None = None, alpha_housing: float | None = None,
-                        shaft_material=None, housing_material=None) -> OperatingClearance:
+                        shaft_material=None, housing_material=None, I_inner_m=None,
+                        I_outer_m=None) -> OperatingClearance:
     r"""Operating radial clearance of a mounted bearing at its temperatures and speed.
 
     Parameters
@@ -362,6 +363,8 @@ def operating_clearance(brg: BallBearing, *, shaft: str | None = None, housing: 
     alpha_ring, alpha_ball, alpha_shaft, alpha_housing : float  thermal expansion coefficients [1/K]
                                (default: AISI 52100, :func:`steel_expansion`)
     shaft_material, housing_material : Material   elastic constants of the seats (default: the ring material)
+    I_inner_m, I_outer_m : float  diametral interference of a seat at 20 °C [m] (negative: clearance), given instead
+                               of its class's (e.g. the seat of a machine's network); a ring with neither sits free
 
     Returns
     -------
@@ -419,19 +422,21 @@ def operating_clearance(brg: BallBearing, *, shaft: str | None = None, housing: 
                                                                   rm.E, rm.nu)
     zero = 0.0 * (Ti + To + Tb + Ts + Th + w)
     I_i = I_o = p_i = p_o = fit_i = fit_o = zero
-    if shaft is not None:
+    if shaft is not None or I_inner_m is not None:
         d = _needs(brg.bore, "bore", "a shaft fit")
         a, b = 0.5 * d, 0.5 * d_i
-        I0 = fit_interference(d, shaft, "inner")[_INTERFERENCE.index(interference)]
+        I0 = (fit_interference(d, shaft, "inner")[_INTERFERENCE.index(interference)] if I_inner_m is None
+              else _finite(I_inner_m, "I_inner_m"))
         loosen = 2.0 * (rotating_ring_displacement(a, a, b, w, rm.rho, rm.E, rm.nu)
                         - rotating_ring_displacement(a, 0.5 * shaft_bore, a, w, sm.rho, sm.E, sm.nu))
         I_i = I0 + a_s * d * (Ts - T_REF_C) - a_r * d * (Ti - T_REF_C) - loosen + zero
         p_i = fit_pressure(I_i, d, shaft_bore, d_i, sm.E, sm.nu, rm.E, rm.nu)
         fit_i = -2.0 * lame_displacement(b, a, b, p_in=p_i, E=rm.E, nu=rm.nu)
-    if housing is not None:
+    if housing is not None or I_outer_m is not None:
         Dh = _needs(brg.outer_diameter, "outer_diameter", "a housing fit")
         e, f = 0.5 * d_o, 0.5 * Dh
-        I0 = fit_interference(Dh, housing, "outer")[_INTERFERENCE.index(interference)]
+        I0 = (fit_interference(Dh, housing, "outer")[_INTERFERENCE.index(interference)] if I_outer_m is None
+              else _finite(I_outer_m, "I_outer_m"))
         I_o = I0 - a_h * Dh * (Th - T_REF_C) + a_r * Dh * (To - T_REF_C) + zero
         p_o = fit_pressure(I_o, Dh, d_o, housing_diameter, rm.E, rm.nu, hm.E, hm.nu)
         fit_o = 2.0 * lame_displacement(e, e, f, p_out=p_o, E=rm.E, nu=rm.nu)
@@ -440,6 +445,13 @@ def operating_clearance(brg: BallBearing, *, shaft: str | None = None, housing: 
     return OperatingClearance(Pd=Pd, Pd_unmounted=float(Pd0), fit_inner=fit_i, fit_outer=fit_o, thermal=thermal,
                               centrifugal=cf, interference_inner=I_i, interference_outer=I_o, pressure_inner=p_i,
                               pressure_outer=p_o)
+
+
+def _finite(v, name) -> float:
+    v = float(v)
+    if not (np.isfinite(v) and abs(v) < 1e-3):
+        raise InputError(name, v, "a seat's diametral interference must be finite and within ±1 mm [m]")
+    return v
 
 
 def _needs(v, name, what):

@@ -37,6 +37,7 @@ import numpy as np
 
 from thermobear.contact.fits import operating_clearance
 from thermobear.contact.geometry import BallBearing
+from thermobear.contact.materials import material
 from thermobear.errors import InputError
 from thermobear.loads import loads_text
 from thermobear.rating.iso16281 import rating_angle, reference_life
@@ -44,6 +45,7 @@ from thermobear.rating.iso76 import static_equivalent_load
 from thermobear.rating.iso281 import (A_ISO_MAX, basic_rating_life, contamination_factor, fatigue_load_limit,
                                       life_modification_factor, reference_viscosity, viscosity_ratio)
 from thermobear.rating.life import equivalent_loads, stated_ratings
+from thermobear.thermal.builders import Machine, seat_interferences
 from thermobear.validity import LIMITS, check, collect
 
 __all__ = ["RATING_OUTPUTS", "Ratings", "check_static_safety", "operating_lives", "operating_temperature_C",
@@ -192,8 +194,11 @@ def _node_T(T, roles, names, role):
 def scene_clearance(scene, T_C: dict, roles: dict) -> dict:
     """Unmounted, mounted (fits at 20 °C) and operating diametral clearance [µm] of a scene's bearing at the node
     temperatures ``T_C`` (node → °C, or → an array of one per operating point: then the operating clearance and the
-    temperatures are arrays too; ``roles``: role → node), with the scene's fits or the typical ones for its
-    load (:func:`typical_fits`), as :func:`~thermobear.contact.fits.operating_clearance` gives them: the ring
+    temperatures are arrays too; ``roles``: role → node), with the scene's fits (``shaft_fit``, ``housing_fit``), else —
+    a scene that describes its machine — the seats of its network's joints
+    (:func:`thermobear.thermal.builders.seat_interferences`: its ``interference_um`` or the usual fit, with its shaft's
+    and housing's materials), else the typical fits for its load (:func:`typical_fits`), as
+    :func:`~thermobear.contact.fits.operating_clearance` gives them: the ring
     temperatures from the nodes ``inner_ring`` / ``outer_ring`` (else the inner / outer role), the balls', the
     shaft's and housing's (else the ring's), the inner ring's speed when it rotates.
 
@@ -201,7 +206,7 @@ def scene_clearance(scene, T_C: dict, roles: dict) -> dict:
     >>> s = tb.load_scene(tb.example_path("oil_bath_6208.toml"))
     >>> c = scene_clearance(s, {"ball": 20.0, "ir": 20.0, "or": 20.0}, {"ball": "ball", "inner": "ir", "outer": "or"})
     >>> round(c["mounted"], 2), c["shaft_fit"]
-    (1.69, 'k5')
+    (1.69, 'k5 (13.5 µm)')
     """
     b = scene.bearing
     C, _, P, _ = _static(scene)
@@ -209,16 +214,30 @@ def scene_clearance(scene, T_C: dict, roles: dict) -> dict:
     shaft, housing = scene.shaft_fit or typ[0], scene.housing_fit or typ[1]
     given = scene.shaft_fit is not None and scene.housing_fit is not None
     out = {"shaft_fit": shaft, "housing_fit": housing, "fits_from": "the scene" if given else typ[2]}
+    seats = {}
+    if isinstance(scene.network, Machine) and scene.shaft_fit is None and scene.housing_fit is None:
+        # a machine described by its dimensions: the seats of its network's joints (its interference or the
+        # usual fit, thermobear.thermal.builders.seat_interferences), the shaft's and housing's materials
+        m = scene.network
+        (I_i, why_i), (I_o, why_o) = seat_interferences(m)
+        shaft = housing = None
+        seats = dict(I_inner_m=I_i, I_outer_m=I_o, shaft_bore=m.shaft.bore, shaft_material=material(m.shaft.material),
+                     housing_material=material(m.housing.material))
+        label = (lambda I, why: f"{why.split(' ')[0]} ({I * 1e6:.1f} µm)" if "probable" in why  # noqa: E731
+                 else f"{I * 1e6:.1f} µm")
+        out.update(shaft_fit=label(I_i, why_i), housing_fit=label(I_o, why_o),
+                   fits_from=f"the machine's seats, as its network's joints: shaft {why_i}, housing {why_o}")
     if b.bore is None or b.outer_diameter is None:
         out["fits_from"] = "no fit: the bearing has no bore / outside diameter"
         shaft = housing = None
+        seats = {}
     (Ti, ni), (To, no) = _node_T(T_C, roles, ("inner_ring",), "inner"), _node_T(T_C, roles, ("outer_ring",), "outer")
     Tb, nb = _node_T(T_C, roles, (), "ball")
     (Ts, ns), (Th, nh) = _node_T(T_C, roles, ("shaft",), "inner"), _node_T(T_C, roles, ("housing",), "outer")
     n_in = scene.n_rpm if scene.rotating == "inner" else 0.0
-    mounted = operating_clearance(b, shaft=shaft, housing=housing)
+    mounted = operating_clearance(b, shaft=shaft, housing=housing, **seats)
     op = operating_clearance(b, shaft=shaft, housing=housing, T_inner_C=Ti, T_outer_C=To, T_ball_C=Tb,
-                             T_shaft_C=Ts, T_housing_C=Th, n_rpm=n_in)
+                             T_shaft_C=Ts, T_housing_C=Th, n_rpm=n_in, **seats)
     out.update(unmounted=b.Pd * 1e6, mounted=float(mounted.Pd) * 1e6, operating=_num(op.Pd) * 1e6, used=b.Pd * 1e6,
                temperatures_C={"inner ring": Ti, "outer ring": To, "balls": Tb, "shaft": Ts, "housing": Th},
                nodes={"inner ring": ni, "outer ring": no, "balls": nb, "shaft": ns, "housing": nh})
@@ -233,7 +252,7 @@ def scene_ratings(scene, steady, losses=None) -> Ratings:
     >>> s = tb.load_scene(tb.example_path("oil_bath_6208.toml"))
     >>> r = scene_ratings(s, tb.steady_state(s))
     >>> round(r.C0_N), round(r.s0, 2), r.clearance_um["shaft_fit"]
-    (19886, 9.94, 'k5')
+    (19886, 9.94, 'k5 (13.5 µm)')
     """
     b = scene.bearing
     C, C0, P, P0 = _static(scene)

@@ -236,8 +236,8 @@ class Scene:
     Fz : float                    radial load along z, at ψ = 90° [N]
     My : float | None             moment about y [N m]; M and My None hold both tilts, either frees both
     contamination : str           ISO 281 cleanliness level (e_C of a_ISO)
-    shaft_fit, housing_fit : str | None   ISO 286 tolerance classes of the seats (None: the catalogue-typical
-                                  fit for the load, :func:`thermobear.coupled.ratings.typical_fits`)
+    shaft_fit, housing_fit : str | None   ISO 286 tolerance classes of the seats (None: a machine's seats, else the
+                                  catalogue-typical fit for the load, :func:`thermobear.coupled.ratings.scene_clearance`)
     T_C : float | None            prescribed contact temperature [°C] (None: solve the thermal network)
     oil_flow : float              supplied oil flow [m^3/s] (oil jet)
     jet_penetration : float       share of it that passes through the bearing [-] (seed 004 §4.5 β;

@@ -11,8 +11,9 @@ and seed-002 rigs expressed with these builders), ``spec`` (the table being writ
 """
 from thermobear.thermal.builders.assemble import build_network
 from thermobear.thermal.builders.axisym import segment_count
+from thermobear.thermal.builders.layout import seat_interferences
 from thermobear.thermal.builders.machine import Housing, Lubrication, Machine, Shaft
 from thermobear.thermal.builders.spec import BuiltNetwork, Cell, Surface
 
-__all__ = ["build_network", "segment_count", "Machine", "Shaft", "Housing", "Lubrication", "BuiltNetwork", "Cell",
-           "Surface"]
+__all__ = ["build_network", "segment_count", "seat_interferences", "Machine", "Shaft", "Housing", "Lubrication",
+           "BuiltNetwork", "Cell", "Surface"]

@@ -21,7 +21,7 @@ from thermobear.thermal.convection import (h_free_vertical_plate, h_harris, h_na
                                            h_radiation, h_rotating_cylinder, mixed_convection)
 from thermobear.lubrication.air import air_properties
 
-__all__ = ["Layout", "layout", "DT_REF_K", "H_MOUNT_W_M2K"]
+__all__ = ["Layout", "layout", "seat_interferences", "DT_REF_K", "H_MOUNT_W_M2K"]
 
 DT_REF_K = 20.0          #: surface excess over ambient at which the rule estimates free convection [K]
 #: bolted joint, Bergman et al. 2011 Table 3.2 (air, 0.1 MPa) [W/(m² K)]: the data's nominal
@@ -147,9 +147,7 @@ def layout(m: Machine) -> Layout:
                          'give mounting = "frame"')
     A, G, hm = _mounting(m, d, end_left, h.end_right, OD / 2)
     inner_rot = m.rotating == "inner"
-    dl = s.interference if s.interference is not None else probable_interference(
-        b.bore, ("k5" if b.bore <= 0.1 else "m5") if inner_rot else "g6")
-    do = h.interference if h.interference is not None else probable_interference(OD, "H7" if inner_rot else "N7")
+    (dl, _), (do, _) = seat_interferences(m)
     h_in, h_out = _seat_h(m, d["R_h"], dl, do)
     return Layout(B=B, bore=b.bore, OD=OD, dm=b.dm, D=b.D, Z=int(b.Z), r_s=d_s / 2, r_si=s.bore / 2,
                   z_s0=-B / 2 - L_l, z_s1=B / 2 + L_r, shape=d["shape"], R_seat=OD / 2, R_h=d["R_h"], z_h0=z_h0,
@@ -158,6 +156,22 @@ def layout(m: Machine) -> Layout:
                   end_right=h.end_right, mount_area=A, mount_G=G, mount_h=hm, delta_inner=dl, delta_outer=do,
                   h_inner=h_in, h_outer=h_out,
                   omega_shaft=(m.n_rpm * math.pi / 30.0) if inner_rot else 0.0, T_amb_K=m.T_ambient_C + _C0)
+
+
+def seat_interferences(m: Machine) -> tuple:
+    """((δ_inner, why), (δ_outer, why)): the diametral interference [m] (negative: clearance) of the inner ring's
+    seat on the shaft and of the outer ring's in the housing, and where each comes from: the machine's
+    ``interference`` when given, else the probable interference of the usual fit (:mod:`thermobear.thermal.builders.fits`:
+    shaft k5, m5 above 100 mm, housing H7 under a rotating inner ring; shaft g6, housing N7 under a rotating outer
+    ring).  The seats of the network's joints, and of the operating clearance of its scene's ratings."""
+    b, inner_rot = m.bearing, m.rotating == "inner"
+    out = []
+    for given, d, seat, where in ((m.shaft.interference, b.bore, ("k5" if b.bore <= 0.1 else "m5") if inner_rot
+                                   else "g6", "shaft"),
+                                  (m.housing.interference, b.outer_diameter, "H7" if inner_rot else "N7", "housing")):
+        out.append((given, f"[{where}] interference_um") if given is not None else
+                   (probable_interference(d, seat), f"{seat} (probable)"))
+    return tuple(out)
 
 
 def _seat_h(m: Machine, R_h: float, delta_inner: float, delta_outer: float) -> tuple:
