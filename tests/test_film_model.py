@@ -251,3 +251,14 @@ def test_a_heat_up_settled_at_a_jump_of_the_loads_stays_there_and_says_so(tmp_pa
     assert abs(ends[0][0] - ends[1][0]) < 0.05 and ends[0][1] == pytest.approx(ends[1][1], rel=1e-3)
     smooth = tb.transient(s.with_(T_ambient_C=20.0), 1e5, t_eval=[0.0, 1e5])
     assert not [w for w in smooth.warnings if w.quantity == "film load jump"]
+
+
+def test_a_heat_up_started_near_the_lubricants_limit_cools_without_asking_past_it():
+    """Seed 004 started at 249 °C: the film cell around it reached 252 °C, past the oil's refusal temperature
+    (250 °C), and the heat-up was refused as bad input (exit 2) before it could cool; the film grid now ends at
+    the lubricant's limit, and the jet cools the bearing."""
+    s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        tr = tb.transient(s, 600.0, T0_C=249.0, t_eval=[0.0, 600.0])
+    assert tr.T_C["inner_ring"][0] == pytest.approx(249.0) and tr.T_C["inner_ring"][-1] < 200.0

@@ -58,6 +58,7 @@ from thermobear.models import Alternative, plan, plan_many
 from thermobear.scene import Scene
 from thermobear.thermal import ThermalNetwork, solve_transient
 from thermobear.thermal.solve import LinearBoundary
+from thermobear.validity import T_LUBRICANT_REFUSE_C
 
 __all__ = ["TransientRun", "transient", "PointModel", "point_model", "heat_sources"]
 
@@ -505,9 +506,11 @@ class _FilmCells:
         self.scene, self.T0, self.step, self.solved = scene, float(T0), _FILM_CELL_K if step is None else step, {}
 
     def cell(self, T_film) -> tuple:
-        """The grid's film temperatures (T_lo, T_hi) [°C] around ``T_film``."""
+        """The grid's film temperatures (T_lo, T_hi) [°C] around ``T_film``, inside the lubricant's range (a cell
+        reaching past its limit ends there: the heat-up beyond is a runaway, :func:`_check_limit`)."""
         j = math.floor((T_film - self.T0) / self.step)
-        return self.T0 + j * self.step, self.T0 + (j + 1) * self.step
+        lo, hi = T_LUBRICANT_REFUSE_C
+        return max(self.T0 + j * self.step, lo), min(self.T0 + (j + 1) * self.step, hi)
 
     def load(self, k: int, alt, T=None):
         """One-point loads of alternative ``k`` (``alt``): with the films at ``T`` [°C], or its own (not of the
@@ -537,7 +540,8 @@ class _FilmCells:
             return []
         d = 1 if T > T_from else -1
         nodes = [self.T0 + (round(j) + m * d) * self.step for m in range(1, _FILM_AHEAD)]  # as cell() makes them
-        return [T_m for T_m in nodes if (k, T_m) not in self.solved]
+        lo, hi = T_LUBRICANT_REFUSE_C
+        return [T_m for T_m in nodes if (k, T_m) not in self.solved and lo <= T_m <= hi]
 
     def _solve(self, k: int, alt, Ts: list, start):
         K = len(Ts)
