@@ -16,13 +16,14 @@ References
 from __future__ import annotations
 
 import dataclasses
+import warnings
 import math
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from thermobear.app.rig import Comparison, RigLog, compare, simulate_log, special_target
-from thermobear.errors import InputError, NoConvergence
+from thermobear.errors import InputError, NoConvergence, OutsideValidity
 from thermobear.lazy import lazy_module
 from thermobear.losses.skf import skf_constants
 from thermobear.scene import Scene
@@ -240,7 +241,11 @@ def calibrate(scene: Scene, log: RigLog, params: list, mapping: dict, *, T0_C=No
     if "torque_Nm" in log.columns:
         tq = log["torque_Nm"]
         if np.any(~np.isnan(tq)):
-            weights["torque_Nm"] = 100.0 / max(float(np.nanmean(np.abs(tq))), 1e-300)
+            mean = float(np.nanmean(np.abs(tq)))
+            if not mean > 0:
+                raise InputError("torque_Nm", 0.0, "a torque to fit must not be zero in every row (its residuals "
+                                 "are weighed in % of its mean)")
+            weights["torque_Nm"] = 100.0 / mean
     fit_channels = [c for c, n in mapping.items() if not special_target(n)]
     nfev = [0]
     cells = ({k: g.n for k, g in build_network(scene.network).segments.items()}
@@ -258,11 +263,15 @@ def calibrate(scene: Scene, log: RigLog, params: list, mapping: dict, *, T0_C=No
         return np.concatenate(r) if r else np.zeros(0)
 
     xs0 = np.ones(len(names))
-    r0 = resid(xs0)
-    m, p = r0.size, len(names)
-    if m < p:
-        raise InputError("--param", ", ".join(names), f"{p} parameters but only {m} measured values")
-    res = optimize.least_squares(resid, xs0, method="trf", diff_step=diff_step, max_nfev=max_nfev, x_scale=1.0)
+    with warnings.catch_warnings():
+        # the trial values' warnings (a trial far from the answer may run hot): the answer's are the comparison's
+        warnings.simplefilter("ignore", OutsideValidity)
+        warnings.simplefilter("ignore", RuntimeWarning)
+        r0 = resid(xs0)
+        m, p = r0.size, len(names)
+        if m < p:
+            raise InputError("--param", ", ".join(names), f"{p} parameters but only {m} measured values")
+        res = optimize.least_squares(resid, xs0, method="trf", diff_step=diff_step, max_nfev=max_nfev, x_scale=1.0)
     rms = float(np.sqrt(np.mean(res.fun**2))) if m else 0.0
     if res.status <= 0:
         raise NoConvergence(f"calibration did not converge: {res.message}", iterations=int(res.nfev),

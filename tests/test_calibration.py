@@ -1,0 +1,38 @@
+"""thermobear.app.calibration: what a fit says besides its values — warnings of the answer only, and a torque
+column it cannot weigh refused by name."""
+from __future__ import annotations
+
+import warnings
+from pathlib import Path
+
+import pytest
+
+from thermobear.app.calibration import calibrate
+from thermobear.app.rig import channel_map, read_log
+from thermobear.errors import InputError, OutsideValidity
+from thermobear.scene.scene import load_scene
+
+LOGS = Path(__file__).resolve().parents[1] / "examples" / "logs"
+
+
+def test_trial_values_warn_nothing_the_answer_does_not():
+    """Started at G = 1e-6 W/K, the fit's first trials run the bearing at 190 °C (beyond the grease's range);
+    the fitted G = 0.85 W/K does not: no warning (there were four, of the trials)."""
+    scene = load_scene(LOGS / "synthetic_heatup_scene.toml")
+    log = read_log(LOGS / "synthetic_heatup_7210.csv")
+    with warnings.catch_warnings(record=True) as got:
+        warnings.simplefilter("always")
+        cal = calibrate(scene, log, ["bearing_to_ambient.G_W_K=1e-6"], channel_map(scene, log))
+    assert cal.values["bearing_to_ambient.G_W_K"] == pytest.approx(0.85, rel=0.01)
+    assert not [w for w in got if issubclass(w.category, (OutsideValidity, RuntimeWarning))]
+
+
+def test_a_torque_column_of_zeros_is_refused_by_name(tmp_path):
+    """Torque residuals are weighed in % of the mean torque: a column of zeros made that weight overflow and the
+    fit end on 'models.skf_R1 = nan' after four RuntimeWarnings; it is refused naming the column."""
+    scene = load_scene(LOGS / "seed002_skf_scene.toml")
+    p = tmp_path / "zero.csv"
+    p.write_text("n_rpm,torque_Nm,T_III_C\n1000,0,49.8\n2000,0,60\n", encoding="utf-8")
+    log = read_log(p)
+    with pytest.raises(InputError, match="^torque_Nm = 0.0 — a torque to fit must not be zero"):
+        calibrate(scene, log, ["skf_R1"], channel_map(scene, log))
