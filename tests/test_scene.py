@@ -4,6 +4,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -270,3 +271,24 @@ def test_speed_beyond_the_ndm_limit_is_refused_showing_the_speed_given():
     s = load_scene(tb.example_path("block_6208_oil_bath.toml"))
     with pytest.raises(InputError, match=r"^operation\.n_rpm = 80000(\.0)? — speed n·dm 4\.837e\+06 mm/min must lie in"):
         s.with_(n_rpm=80000.0)
+
+
+@pytest.mark.parametrize("v", [np.int64(3000), np.float32(3000.0), np.array(3000.0), np.array(3000)],
+                         ids=["int64", "float32", "0-d float", "0-d int"])
+def test_with_accepts_any_real_number_converted_to_float_once(v):
+    s = S004.with_(n_rpm=v, Fa=np.float64(400.0), T_fixed_C={"outer_ring": np.float32(40.0)})
+    assert type(s.n_rpm) is float and s.n_rpm == 3000.0
+    assert type(s.Fa) is float and s.Fa == 400.0
+    assert type(s.T_fixed_C["outer_ring"]) is float and s.T_fixed_C["outer_ring"] == 40.0
+
+
+@pytest.mark.parametrize("v", ["3000", True, np.bool_(True), np.nan, np.float64(np.inf), np.array([1.0, 2.0]), 1 + 2j])
+def test_with_still_refuses_text_bools_non_finite_and_arrays(v):
+    with pytest.raises(InputError, match="n_rpm"):
+        S004.with_(n_rpm=v)
+
+
+def test_schedule_of_numpy_numbers_runs_as_of_floats():
+    a = tb.transient(S004, 20.0, schedule=[(np.float32(10.0), {"n_rpm": np.int64(3500), "Fa": np.array(500.0)})])
+    b = tb.transient(S004, 20.0, schedule=[(10.0, {"n_rpm": 3500.0, "Fa": 500.0})])
+    assert a.P_W[-1] == b.P_W[-1]

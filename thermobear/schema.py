@@ -33,6 +33,7 @@ models.drag = 'false' — must be true or false (a TOML boolean, without quotes)
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
@@ -40,7 +41,7 @@ from scipy.special import ndtri
 
 from thermobear.errors import InputError
 
-__all__ = ["Field", "check_table", "check_value", "describe", "Uncertainty", "check_uncertainty",
+__all__ = ["Field", "check_table", "check_value", "real_number", "describe", "Uncertainty", "check_uncertainty",
            "UNCERTAINTY_FIELDS", "UNCERTAINTY_KINDS", "DISTRIBUTIONS"]
 
 
@@ -123,14 +124,29 @@ class Field:
         return f"finite{u}"
 
 
+def real_number(value):
+    """``value`` as a float when it is a real number — a Python or numpy integer or float, or a 0-d
+    numeric array — else None (a bool, text, a complex number, an array of several values).
+
+    >>> real_number(3), real_number(np.float32(0.5)), real_number(np.array(2)), real_number(True), real_number("1")
+    (3.0, 0.5, 2.0, None, None)
+    """
+    if isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind in "iuf":
+        value = value[()]
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        return None
+    return float(value)
+
+
 def check_value(value, f: Field, where: str):
-    """The typed value of one key (see :class:`Field`), or InputError naming ``where``."""
+    """The typed value of one key (see :class:`Field`), or InputError naming ``where``.  A number may be
+    any real number (:func:`real_number`: numpy scalars and 0-d arrays too), converted to float once."""
     k = f.kind
     if k in ("number", "integer"):
         what = "a whole number" if k == "integer" else "a number"
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
+        v = real_number(value)
+        if v is None:
             raise InputError(where, value, f"must be {what} {f.range_text()} (a TOML number, without quotes)")
-        v = float(value)
         if not math.isfinite(v):
             raise InputError(where, value, f"must be finite: {what} {f.range_text()}")
         if k == "integer" and v != int(v):
@@ -156,11 +172,10 @@ def check_value(value, f: Field, where: str):
             raise InputError(where, value, "must be a list of names, e.g. [\"D_mm\", \"fi\"]")
         return tuple(value)
     if k == "interval":
-        if (not isinstance(value, (list, tuple)) or len(value) != 2
-                or any(isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) for v in value)
-                or value[0] > value[1]):
+        pair = [real_number(v) for v in value] if isinstance(value, (list, tuple)) else []
+        if len(pair) != 2 or None in pair or not all(map(math.isfinite, pair)) or pair[0] > pair[1]:
             raise InputError(where, value, "must be two finite numbers [lo, hi] with lo <= hi")
-        return (float(value[0]), float(value[1]))
+        return (pair[0], pair[1])
     if k == "table":
         if not isinstance(value, dict):
             raise InputError(where, value, "must be a table, e.g. { key = value }")
