@@ -8,6 +8,8 @@ import pytest
 import thermobear as tb
 from thermobear.errors import InputError, ThermalRunaway
 from thermobear.coupled import scene_load, scene_losses, solve, steady_state, steady_states, transient
+from thermobear.coupled.pipeline import film_temperature_C
+from thermobear.coupled.transient import _film_of, point_model
 from thermobear.models import choose_models, film_options, open_contacts
 from thermobear.scene.network import network_spec
 from thermobear.scene.scene import scene_from_dict
@@ -304,3 +306,33 @@ def test_a_scene_without_network_or_temperature_is_refused_by_name_whatever_its_
                          "operation": {"n_rpm": 3000.0, "Fr_N": 2000.0}})
     with pytest.raises(InputError, match="^thermal.network"):
         tb.choose_models(s)
+
+
+@pytest.mark.parametrize("name", ["seed004_oil_jet_7210.toml", "oil_bath_6208.toml"])
+def test_transient_starts_from_a_dict_of_node_temperatures(name):
+    """A dict start (node → °C) runs where the film loads need its film temperature: every free node at
+    40 °C is the uniform start at 40 °C; a start giving one node starts that node there."""
+    s = tb.load_scene(tb.example_path(name))
+    free = point_model(s).network.free_nodes
+    uniform, given = transient(s, 100.0, T0_C=40.0), transient(s, 100.0, T0_C={n: 40.0 for n in free})
+    assert np.array_equal(uniform.P_W, given.P_W)
+    one = transient(s, 100.0, T0_C={"inner_ring": 40.0})
+    assert one.T_C["inner_ring"][0] == 40.0 and one.completed and np.all(np.isfinite(one.P_W))
+
+
+def test_film_temperature_of_a_dict_start_is_the_mean_of_the_contact_nodes_it_gives():
+    roles = {"ball": "balls", "inner": "inner_race", "outer": "outer_race"}
+    assert _film_of({"balls": 30.0, "inner_race": 36.0, "outer_race": 26.0}, roles, S004) == 30.5
+    assert _film_of({"balls": 30.0, "inner_race": 36.0}, roles, S004) == 32.0
+    assert _film_of({"inner_ring": 40.0}, roles, S004) == film_temperature_C(S004)
+
+
+def test_dict_start_at_the_operating_clearance_is_the_uniform_start():
+    """The clearance of a dict start's first piece: the nodes it leaves out at the scene's temperature."""
+    s = tb.load_scene(tb.example_path("oil_bath_6208.toml")).with_(models={"clearance": "operating"})
+    msgs = []
+    for T0 in (s.T_ambient_C, {"inner_ring": s.T_ambient_C}):
+        with pytest.raises(tb.ThermalPreloadRunaway) as e:
+            transient(s, 100.0, T0_C=T0)
+        msgs.append(str(e.value))
+    assert msgs[0] == msgs[1]

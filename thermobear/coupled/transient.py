@@ -176,12 +176,17 @@ def _report(r, shape):
 
 
 def _film_of(T_state, roles, scene) -> float:
-    """Mean contact temperature [°C] (ball with each race) of a state node → °C; the scene's default."""
-    if not isinstance(T_state, dict) or roles is None:
+    """Mean contact temperature [°C], ¼ (2 T_ball + T_inner + T_outer), of a start temperature or a state
+    (node → °C): the mean over the contact nodes it gives (a dict start may give some of them: their
+    weighted mean), else the scene's default (:func:`~thermobear.coupled.pipeline.film_temperature_C`)."""
+    if not isinstance(T_state, dict):
         return float(T_state) if np.ndim(T_state) == 0 and T_state is not None else film_temperature_C(scene)
-    Tb = T_state.get(roles["ball"], np.nan)
-    T = 0.25 * (2.0 * Tb + T_state.get(roles["inner"], np.nan) + T_state.get(roles["outer"], np.nan))
+    given = [(w, T_state[roles[r]]) for r, w in _FILM_WEIGHTS if roles[r] in T_state]
+    T = sum(w * float(v) for w, v in given) / sum(w for w, _ in given) if given else np.nan
     return float(T) if np.isfinite(T) else film_temperature_C(scene)
+
+
+_FILM_WEIGHTS = (("ball", 2.0), ("inner", 1.0), ("outer", 1.0))   # of the mean contact temperature (_film_of)
 
 
 def _pieces(scenes, t_end_s):
@@ -277,7 +282,7 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
             clear = load is None and alts[0].models["clearance"][0] == "operating"
             sc_p = sc
             if clear:                         # the clearance at the piece's start temperatures
-                c = _piece_clearance(sc, T_state, first[1] if first else None, clear_hist, ts)
+                c = _piece_clearance(sc, T_state, first[1] if first else pre.coupling.roles, clear_hist, ts)
                 if c["operating"] <= 0:
                     err = preload_runaway(sc, c, clear_hist, f"during the heat-up at t = {ts:g} s")
                     err.last = _assemble(out_t, out_T, out_rep, first, seg_changes, [], False) if out_t else None
@@ -286,7 +291,8 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
                 alts = _alternatives(sc_p, load)
             models = max(alts, key=lambda a: a.weight).models
             film = load is None and any(a.models["load_model"][0] == "film" for a in alts)
-            T_film, split, nodes = (_film_of(T_state, first[1] if first else None, sc) if film else None), False, (None,)
+            T_film, split, nodes = (_film_of(T_state, first[1] if first else pre.coupling.roles, sc) if film else None), \
+                False, (None,)
             fc = cells.setdefault(id(sc_p), _FilmCells(sc_p, T_film if film else 0.0))
             t_cross = None
             if film and not clear:     # a cell of the film grid, unless the heat-up has settled
@@ -347,7 +353,7 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
             if film or clear:  # next piece: ≈ _FILM_DRIFT_K of film-temperature drift, _CLEAR_DRIFT_M of clearance
                 f = [_FILM_DRIFT_K / max(abs(_film_of(T_state, cp.roles, sc) - T_film), 1e-9)] if film else []
                 if clear:
-                    c1 = scene_clearance(sc, _T_nodes(T_state, cp.roles), cp.roles)["operating"]
+                    c1 = scene_clearance(sc, _T_nodes(T_state, cp.roles, sc), cp.roles)["operating"]
                     f.append(_CLEAR_DRIFT_M / max(abs(c1 - c["operating"]) * 1e-6, 1e-15))
                 film_dt = (te - ts) * float(np.clip(min(f), 0.5, 4.0))
             _check_limit(T_state, te)
@@ -608,18 +614,19 @@ def _piece_model(sc: Scene, alts, load, prepared, cells: _FilmCells, nodes, domi
                                           else None))
 
 
-def _T_nodes(T_state, roles) -> dict:
-    """Node → °C of a piece's start state (a uniform start: the roles' nodes at that temperature)."""
+def _T_nodes(T_state, roles, scene) -> dict:
+    """Node → °C of a piece's start state (a uniform start: the roles' nodes at that temperature; a dict start
+    that leaves a role's node out: that node imposed, else at the scene's film temperature, as :func:`_film_of`)."""
     if isinstance(T_state, dict):
-        return T_state
+        missing = [n for n in roles.values() if n not in T_state]
+        return {**{n: film_temperature_C(scene) for n in missing}, **scene.T_fixed_C, **T_state} if missing else T_state
     return {n: float(T_state) for n in roles.values()}
 
 
 def _piece_clearance(sc: Scene, T_state, roles, hist: list, t_s: float) -> dict:
     """The operating clearance [µm] (:func:`~thermobear.coupled.ratings.scene_clearance`) at a piece's start,
     appended to the heat-up's clearance history."""
-    roles = roles or {"inner": "inner", "outer": "outer", "ball": "ball"}
-    c = scene_clearance(sc, _T_nodes(T_state, roles), roles)
+    c = scene_clearance(sc, _T_nodes(T_state, roles, sc), roles)
     T = c["temperatures_C"]
     hist.append(dict(t_s=t_s, operating_um=c["operating"], T_inner_ring_C=T["inner ring"],
                      T_outer_ring_C=T["outer ring"], T_balls_C=T["balls"],
