@@ -123,3 +123,15 @@ def test_uniform_warming_scales_the_bearing():
     assert expanded_bearing(b, 30.0, 0.0).alpha0 < b.alpha0 < expanded_bearing(b, 0.0, 30.0).alpha0
     with pytest.raises(InputError, match="no clearance left"):
         expanded_bearing(tb.bearing("6208"), 60.0, 0.0)
+
+
+def test_seat_materials_by_catalogue_name_equal_the_materials():
+    b = tb.bearing("6208")
+    by_name = tb.operating_clearance("6208", shaft="k5", housing="H7", shaft_material="aluminium-en-ac-42100",
+                                     housing_material="cast-iron-gjl-250")
+    given = tb.operating_clearance(b, shaft="k5", housing="H7", shaft_material=tb.material("aluminium-en-ac-42100"),
+                                   housing_material=tb.material("cast-iron-gjl-250"))
+    assert by_name == given
+    assert by_name.pressure_inner < tb.operating_clearance(b, shaft="k5", housing="H7").pressure_inner
+    with pytest.raises(InputError, match="^shaft_material = 3 — must be a Material"):
+        tb.operating_clearance(b, shaft="k5", shaft_material=3)

@@ -126,3 +126,14 @@ def test_custom_deep_groove_bearing_without_a_clearance_takes_iso_5753_normal_gr
     assert bearing_from_dict({**geo, "Pd_mm": 0.0}).Pd == 0.0           # a stated clearance wins
     no_bore = {k: v for k, v in geo.items() if k != "bore_mm"}
     assert bearing_from_dict(no_bore).Pd == 0.0 and bearing_from_dict(no_bore).clearance_group is None
+
+
+def test_materials_by_catalogue_name_in_with_and_the_constructor():
+    b = bearing("6208").with_(ball_material="si3n4")
+    assert b.ball_material == tb.material("si3n4") and b.E_prime == bearing("6208").with_(
+        ball_material=tb.material("si3n4")).E_prime
+    assert BallBearing(D=11.5e-3, dm=43.5e-3, Z=7, fi=0.52, fo=0.53, ring_material="m50").ring_material == tb.material("m50")
+    with pytest.raises(InputError, match=r"ball_material = 7 — must be a Material"):
+        bearing("6208").with_(ball_material=7)
+    with pytest.raises(InputError, match="^material = 'x'"):
+        bearing("6208").with_(ring_material="x")

@@ -117,3 +117,9 @@ def test_sub_physical_loads_and_speeds_are_refused_and_zero_is_not():
 def test_inputs_that_do_not_broadcast_are_refused_by_name():
     with pytest.raises(InputError, match=r"^Fa, Fr, M, n_rpm = 'shapes \(2,\), \(3,\), \(\), \(\)' — must broadcast"):
         load_distribution(B, [450.0, 500.0], [100.0, 200.0, 300.0])
+
+
+def test_load_distribution_takes_a_catalogue_name_and_refuses_other_objects():
+    assert np.array_equal(load_distribution("7210", 450.0, 650.0).Q_i, load_distribution(B, 450.0, 650.0).Q_i)
+    with pytest.raises(InputError, match="^brg = 7210 — must be a BallBearing"):
+        load_distribution(7210, 450.0, 650.0)

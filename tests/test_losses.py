@@ -360,3 +360,15 @@ def test_a_subnormal_speed_is_refused_not_turned_into_infinite_torque():
     # n = 1e-308 rpm gave ω_cage = 0 (drag refused "omega_c") or 1/ω = inf (torque)
     with pytest.raises(InputError, match="^n_rpm = 1e-308 — speed, when not 0 must be >= 1e-06"):
         losses(n_rpm=1e-308)
+
+
+def test_bearing_losses_take_catalogue_names_of_bearing_and_oil():
+    by_name = bearing_losses("7210", "seed004-mineral", 450.0, 650.0, 4800.0, 50.0, **JET)
+    assert by_name.P_W == bearing_losses(B7210, OIL, 450.0, 650.0, 4800.0, 50.0, **JET).P_W
+
+
+@pytest.mark.parametrize("args, field", [((5, OIL), "brg"), ((B7210, 5), "oil"), ((B7210, None), "oil"),
+                                         (("no-such-bearing", OIL), "bearing"), ((B7210, "no-such-oil"), "lubricant")])
+def test_bearing_losses_refuse_other_objects_by_name(args, field):
+    with pytest.raises(InputError, match=f"^{field} ="):
+        bearing_losses(*args, 450.0, 650.0, 4800.0, 50.0, **JET)

@@ -88,3 +88,10 @@ def test_maker_ratings_can_replace_the_iso_values():
     r = rating_life(b, Fr=1000.0, C_N=23400.0, C0_N=11600.0)
     assert r.C_N == 23400.0 and r.L10_Mrev == pytest.approx(23.4**3)
     assert isinstance(r, RatingLife)
+
+
+def test_rating_life_takes_a_bearing_name_and_refuses_a_load_distribution_that_is_not_one():
+    kw = dict(Fr=2000.0, nu_m2_s=30e-6, n_rpm=3000.0)
+    assert rating_life("6208", **kw).L10m_Mrev == rating_life(bearing("6208"), **kw).L10m_Mrev
+    with pytest.raises(InputError, match="^ld = 'x' — must be a LoadDistribution"):
+        rating_life(bearing("6208"), "x")

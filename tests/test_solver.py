@@ -336,3 +336,10 @@ def test_dict_start_at_the_operating_clearance_is_the_uniform_start():
             transient(s, 100.0, T0_C=T0)
         msgs.append(str(e.value))
     assert msgs[0] == msgs[1]
+
+
+@pytest.mark.parametrize("call", [choose_models, tb.prepare, solve, lambda s: transient(s, 100.0)],
+                         ids=["choose_models", "prepare", "solve", "transient"])
+def test_scene_functions_refuse_what_is_not_a_scene_by_name(call):
+    with pytest.raises(InputError, match="^scene = 'x' — must be a Scene"):
+        call("x")

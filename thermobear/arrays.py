@@ -21,6 +21,27 @@ def checked(name, v, *, lo=0.0, strict=True, what=""):
     return v
 
 
+def instance_of(value, cls, field: str, lookup=None, *, needs=()):
+    """An object argument: ``value`` when it is a ``cls`` (or has every attribute in ``needs``), a catalogue
+    name through ``lookup`` (e.g. :func:`~thermobear.contact.geometry.bearing`) where one is given; else
+    InputError naming ``field`` and what it accepts.
+
+    >>> instance_of(2.0, float, "x")
+    2.0
+    >>> try:
+    ...     instance_of("7210", dict, "brg")
+    ... except InputError as e:
+    ...     print(e)
+    brg = '7210' — must be a dict
+    """
+    if isinstance(value, cls) or (needs and all(hasattr(value, a) for a in needs)):
+        return value
+    if lookup is not None and isinstance(value, str):
+        return lookup(value)
+    shown = value if isinstance(value, (str, int, float)) else type(value).__name__
+    raise InputError(field, shown, f"must be a {cls.__name__}" + (" or its catalogue name" if lookup else ""))
+
+
 def _within(v, lo, strict):
     """All finite and > lo (>= lo): two reductions (a few values: compared as Python floats); NaN fails
     every comparison."""

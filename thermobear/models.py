@@ -66,7 +66,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from thermobear.arrays import smooth_weight, take
+from thermobear.arrays import instance_of, smooth_weight, take
 from thermobear.errors import InputError, NoEquilibrium, SolverError
 from thermobear.loads import LoadDistribution, load_distribution, needs_high_speed
 from thermobear.loads.highspeed import load_distribution_high_speed_full
@@ -523,7 +523,7 @@ def added_losses(scene: Scene) -> dict:
 def plan(scene: Scene) -> tuple:
     """(models, dry load distribution or None) of the scene's dominant alternative (the largest weight,
     :func:`plan_many`): :func:`choose_models` and the dry solution it solved."""
-    alts = plan_many([scene])[0]
+    alts = plan_many([instance_of(scene, Scene, "scene")])[0]
     if isinstance(alts, Exception):
         raise alts
     a = max(alts, key=lambda a: a.weight)

@@ -52,7 +52,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from thermobear.contact.geometry import BallBearing
+from thermobear.arrays import instance_of
+from thermobear.contact.geometry import BallBearing, bearing
+from thermobear.contact.materials import Material, material
 from thermobear.errors import InputError
 from thermobear.files import data_dir, lookup, read_toml
 
@@ -350,7 +352,7 @@ def operating_clearance(brg: BallBearing, *, shaft: str | None = None, housing: 
 
     Parameters
     ----------
-    brg : BallBearing          needs ``bore`` and ``outer_diameter`` for a fit
+    brg : BallBearing          needs ``bore`` and ``outer_diameter`` for a fit (or its catalogue name)
     shaft, housing : str       ISO 286 classes of the seats (``"k5"``, ``"H7"``); ``None``: no fit on that ring
     T_inner_C, T_outer_C : array_like  ring temperatures [°C]
     T_ball_C : array_like      ball temperature [°C] (default: the mean of the rings')
@@ -362,7 +364,8 @@ def operating_clearance(brg: BallBearing, *, shaft: str | None = None, housing: 
     Pd_unmounted : float       clearance before mounting [m] (default: the bearing's ``Pd``)
     alpha_ring, alpha_ball, alpha_shaft, alpha_housing : float  thermal expansion coefficients [1/K]
                                (default: AISI 52100, :func:`steel_expansion`)
-    shaft_material, housing_material : Material   elastic constants of the seats (default: the ring material)
+    shaft_material, housing_material : Material   elastic constants of the seats (default: the ring material), or
+                               a material's catalogue name (:func:`~thermobear.contact.materials.material`)
     I_inner_m, I_outer_m : float  diametral interference of a seat at 20 °C [m] (negative: clearance), given instead
                                of its class's (e.g. the seat of a machine's network); a ring with neither sits free
 
@@ -393,6 +396,9 @@ def operating_clearance(brg: BallBearing, *, shaft: str | None = None, housing: 
     """
     if interference not in _INTERFERENCE:
         raise InputError("interference", interference, f"must be one of {', '.join(_INTERFERENCE)}")
+    brg = instance_of(brg, BallBearing, "brg", bearing)
+    shaft_material, housing_material = (None if m is None else instance_of(m, Material, name, material) for m, name
+                                        in ((shaft_material, "shaft_material"), (housing_material, "housing_material")))
     a_st = None
     alphas = []
     for v in (alpha_ring, alpha_ball, alpha_shaft, alpha_housing):

@@ -24,6 +24,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from thermobear.arrays import instance_of
 from thermobear.files import data_dir, read_toml
 from thermobear.errors import InputError, NoConvergence
 from thermobear.schema import Field, check_table, check_uncertainty, check_value
@@ -57,7 +58,7 @@ class BallBearing:
     alpha0 : float        free contact angle [rad]; required for angular contact,
                           π/2 for thrust; derived from Pd for deep groove if not given
     kind : str            ``"deep_groove"``, ``"angular_contact"`` or ``"thrust"``
-    ball_material, ring_material : Material   (default AISI 52100)
+    ball_material, ring_material : Material   (default AISI 52100), or a material's catalogue name
     name : str            label
     bore, outer_diameter, width : float   boundary dimensions [m] (optional; the SKF
                           model and thermal networks need them)
@@ -119,6 +120,8 @@ class BallBearing:
         p = f"bearing[{self.name}]"
         if self.kind not in KINDS:
             raise InputError(f"{p}.kind", self.kind, f"must be one of {', '.join(KINDS)}")
+        for fld in ("ball_material", "ring_material"):     # a Material, or its catalogue name
+            object.__setattr__(self, fld, instance_of(getattr(self, fld), Material, f"{p}.{fld}", material))
         for fld in ("D", "dm"):
             v = getattr(self, fld)
             if isinstance(v, bool) or not isinstance(v, numbers.Real) or not (np.isfinite(v) and v > 0):

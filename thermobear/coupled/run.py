@@ -7,6 +7,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from thermobear.arrays import instance_of
 from thermobear.coupled.blend import blend_losses
 from thermobear.coupled.limits import emit, point_warnings
 from thermobear.coupled.ratings import Ratings, check_static_safety, scene_ratings
@@ -160,6 +161,7 @@ def solve(scene: Scene) -> RunResult:
     >>> r.P_W > 0, r.steady.iterations < 10
     (True, True)
     """
+    scene = instance_of(scene, Scene, "scene")
     check_loads(scene.bearing, scene.Fa, scene.Fr, scene.M, scene.n_rpm, Fz=scene.Fz, My=scene.My,
                 names=SCENE_LOADS)             # before any solve, as steady_states
     check_static_safety(scene)

@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from thermobear.arrays import instance_of
 from thermobear.errors import InputError
 from thermobear.losses import ContactSet, LossResult, evaluate_losses
 from thermobear.losses.cage import CageLand
@@ -485,6 +486,7 @@ def prepare(scene: Scene) -> Prepared:
     >>> p.serves(s.with_(n_rpm=6500.0)), p.serves(s.with_(bearing="6210"))
     (True, False)
     """
+    scene = instance_of(scene, Scene, "scene")
     if scene.network is None:
         raise InputError("thermal.network", None, "a scene with a thermal network (no network: nothing to prepare)")
     template = network_template(scene, fixed_placeholders=True)

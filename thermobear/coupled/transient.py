@@ -52,7 +52,7 @@ from thermobear.coupled.sources import Coupling, family_network, loss_parts, los
 from thermobear.coupled.steady import T_LIMIT_K, _batched
 from thermobear.errors import ExtrapolationWarning, InputError, OutsideValidity, SolverError, ThermalRunaway
 from thermobear.losses import prepare_contacts
-from thermobear.arrays import take
+from thermobear.arrays import instance_of, take
 from thermobear.coupled.blend import StackedBlend
 from thermobear.models import Alternative, plan, plan_many
 from thermobear.scene import Scene
@@ -224,6 +224,7 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
     -------
     TransientRun
     """
+    scene = instance_of(scene, Scene, "scene")
     if not (np.isfinite(t_end_s) and t_end_s > 0):
         raise InputError("t_end_s", t_end_s, "end time must be > 0 [s]")
     if load is not None and schedule:

@@ -17,7 +17,8 @@ from dataclasses import fields
 
 import numpy as np
 
-from thermobear.contact.geometry import BallBearing
+from thermobear.arrays import instance_of
+from thermobear.contact.geometry import BallBearing, bearing
 from thermobear.contact.kinematics import entrainment_speed
 from thermobear.errors import InputError
 from thermobear.loads.film import film_load_distribution
@@ -62,7 +63,7 @@ def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, Fz
 
     Parameters
     ----------
-    brg : BallBearing
+    brg : BallBearing   or its catalogue name (:func:`~thermobear.contact.geometry.bearing`)
     Fa : array_like     axial load on the inner ring [N], ≥ 0 (along +x)
     Fr : array_like     radial load on the inner ring along y, towards ψ = 0 [N]
     M : array_like      moment in the x–y plane [N m]: it loads the balls at ψ = 0 towards +x (= −M_z);
@@ -132,6 +133,7 @@ def load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, n_rpm=0.0, *, Fz
     >>> [round(v * 1e3, 2) for v in (side.theta_y, inplane.theta)]
     [-1.69, -1.69]
     """
+    brg = instance_of(brg, BallBearing, "brg", bearing)
     ld = _load_distribution(brg, Fa, Fr, M, n_rpm, Fz, My, form, film, stiffness, control, tol, maxiter, start,
                             continuation, tilt_arm)
     if refuse_overload:

@@ -49,7 +49,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from thermobear.contact.geometry import BallBearing
+from thermobear.arrays import instance_of
+from thermobear.contact.geometry import BallBearing, bearing
 from thermobear.contact.hertz import hertz
 from thermobear.contact.kinematics import caged_ball_kinematics, common_cage_speed, free_orbital_speed
 from thermobear.errors import InputError
@@ -64,11 +65,13 @@ from thermobear.losses.terms import (added_powers, drag_power, inlet_viscosity, 
                                      temperature_stack)
 from thermobear.losses.traction import STRIP_NODES, StripContacts, check_film_viscosity, strip_contacts
 from thermobear.lubrication.film import REGIMES, EHLContacts, ehl_contacts, specific_film_thickness
+from thermobear.lubrication.lubricant import Lubricant, lubricant
 from thermobear.validity import check as check_limit
 
 __all__ = ["LossResult", "ContactSet", "ContactArrays", "bearing_losses", "prepare_contacts", "evaluate_losses",
            "BREAKDOWN_KEYS", "ROLLING_MODELS", "TRACTION_MODELS"]
 
+_OIL = ("eta", "alpha_p_at", "rho")      # what evaluate_losses reads of a lubricant
 BREAKDOWN_KEYS = ("sliding", "rolling", "pivoting", "hysteresis", "drag", "churning", "seal", "cage")
 ROLLING_MODELS = ("auto", "auto_sharp", "biboulet_ivr", "biboulet_ehl", "biboulet_transition", "biboulet_dominant",
                   "houpert_ivr", "houpert_ehl", "biboulet_pvr")
@@ -592,8 +595,8 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
 
     Parameters
     ----------
-    brg : BallBearing
-    oil : Lubricant                 (grease: its base oil)
+    brg : BallBearing               or its catalogue name (:func:`~thermobear.contact.geometry.bearing`)
+    oil : Lubricant                 (grease: its base oil), or its catalogue name
     Fa, Fr : array_like             axial / radial load [N]
     n_rpm : array_like              speed of the rotating ring [rpm]
     T_C : array_like                temperature of contacts and oil where the next three are not given [°C]
@@ -641,6 +644,7 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
     >>> max(r.breakdown_W, key=r.breakdown_W.get), bool(abs(r.torque_Nm * 4800 * np.pi / 30 / r.P_W - 1) < 1e-12)
     ('rolling', True)
     """
+    brg, oil = instance_of(brg, BallBearing, "brg", bearing), instance_of(oil, Lubricant, "oil", lubricant, needs=_OIL)
     shapes = [np.shape(v) for v in (Fa, Fr, n_rpm, T_C)] + [np.shape(T_oil_C) if T_oil_C is not None else ()]
     try:
         batch = np.broadcast_shapes(*shapes)

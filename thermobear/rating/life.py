@@ -17,7 +17,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from thermobear.errors import InputError, SolverError
-from thermobear.contact.geometry import BallBearing
+from thermobear.arrays import instance_of
+from thermobear.contact.geometry import BallBearing, bearing
 from thermobear.loads.static import LoadDistribution, load_distribution
 from thermobear.rating.iso76 import (contact_pressures, f0_radial, pressure_ratio, static_equivalent_load,
                                      static_load_rating, static_safety_factor)
@@ -158,7 +159,7 @@ def rating_life(brg: BallBearing, ld: LoadDistribution | None = None, *, Fa=None
 
     Parameters
     ----------
-    brg : BallBearing
+    brg : BallBearing                 or its catalogue name (:func:`~thermobear.contact.geometry.bearing`)
     ld : LoadDistribution, optional   one load case; computed from Fa, Fr (rigid rings, low speed,
                                       :func:`thermobear.loads.static.load_distribution`) if not given
     Fa, Fr : float                    axial and radial load [N] (default: those of ``ld``)
@@ -193,9 +194,8 @@ def rating_life(brg: BallBearing, ld: LoadDistribution | None = None, *, Fa=None
     >>> round(r.C_N), round(r.L10_Mrev), round(r.L10r_Mrev), round(r.s0, 2)
     (22381, 11212, 11518, 11.49)
     """
-    if not isinstance(brg, BallBearing):
-        raise InputError("brg", type(brg).__name__, "must be a BallBearing")
-    Fa, Fr = _loads(ld, Fa, Fr)
+    brg = instance_of(brg, BallBearing, "brg", bearing)
+    Fa, Fr = _loads(None if ld is None else instance_of(ld, LoadDistribution, "ld"), Fa, Fr)
     C_iso, C0_iso = load_ratings(brg)
     C = C_iso if C_N is None else float(C_N)
     C0 = C0_iso if C0_N is None else float(C0_N)
