@@ -372,3 +372,25 @@ def test_bearing_losses_take_catalogue_names_of_bearing_and_oil():
 def test_bearing_losses_refuse_other_objects_by_name(args, field):
     with pytest.raises(InputError, match=f"^{field} ="):
         bearing_losses(*args, 450.0, 650.0, 4800.0, 50.0, **JET)
+
+
+@pytest.mark.filterwarnings("ignore:Parker's oil fraction")
+def test_per_point_parameters_broadcast_over_the_batch_each_point_equal_to_its_scalar_call():
+    """Flow, roughness, friction coefficients and seal torque given one per operating point (here with loads
+    per point, and with scalar loads): each point is the call with its own values (to the load solver's
+    round-off), in a mixed regime (300 rpm, 90 °C) where the roughness and μ_a matter."""
+    kw = dict(oil_flow_m3_s=np.array([1e-6, 2e-6]), Rq_ball=[0.3e-6, 0.6e-6], mu_boundary=[0.1, 0.2],
+              mu_full_film=[0.04, 0.06], seal_torque_Nm=[0.0, 0.1])
+    for Fa in (np.array([450.0, 500.0]), 450.0):
+        r = bearing_losses(B7210, OIL, Fa, 650.0, 300.0, 90.0, **kw)
+        assert r.P_W.shape == (2,)
+        for k in range(2):
+            one = bearing_losses(B7210, OIL, np.broadcast_to(Fa, 2)[k], 650.0, 300.0, 90.0,
+                                 **{n: v[k] for n, v in kw.items()})
+            assert r.P_W[k] == pytest.approx(one.P_W, rel=1e-12)
+    assert r.breakdown_W["seal"][0] == 0.0 < r.breakdown_W["seal"][1]
+
+
+def test_per_point_parameters_of_another_shape_are_refused_by_name():
+    with pytest.raises(InputError, match=r"^mu_boundary = 'shape \(3,\)' — one value, or one per operating point"):
+        bearing_losses(B7210, OIL, [450.0, 500.0], 650.0, 300.0, 90.0, mu_boundary=[0.1, 0.2, 0.3])

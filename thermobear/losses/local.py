@@ -609,8 +609,10 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
     supply : str                    ``"oil_jet"`` (drag with Parker's oil fraction), ``"oil_air"``,
                                     ``"grease"`` (drag in air), ``"oil_bath"`` or ``"dry_film"`` (no drag term)
     oil_flow_m3_s : array_like      oil flow through the bearing [m³/s] (oil jet)
-    Rq_ball, Rq_ring : float        RMS roughness [m]
-    mu_boundary, mu_full_film : float  μ_a and μ_e of seed 000 eq 18 [-]
+    Rq_ball, Rq_ring : array_like   RMS roughness [m]
+    mu_boundary, mu_full_film : array_like  μ_a and μ_e of seed 000 eq 18 [-]
+                                    (these, the flow, the oil level and the seal torque: one value, or one per
+                                    operating point, broadcast with the loads, speeds and temperatures)
     rolling_model : str             ``"auto"`` (by regime, seed 004, smooth across boundaries),
                                     ``"auto_sharp"`` (the paper's sharp selection) or one of ``ROLLING_MODELS``
     hertz_method : str              ``"exact"`` or an approximation (``thermobear.contact.hertz.METHODS``)
@@ -651,13 +653,32 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
     except ValueError:
         raise InputError("Fa, Fr, n_rpm, T_C, T_oil_C", "shapes " + ", ".join(map(str, shapes)),
                          "must broadcast together (numpy rules)") from None
+    batch, pp = _per_point(batch, dict(oil_flow_m3_s=oil_flow_m3_s, Rq_ball=Rq_ball, Rq_ring=Rq_ring,
+                                       mu_boundary=mu_boundary, mu_full_film=mu_full_film,
+                                       seal_torque_Nm=seal_torque_Nm, oil_level_m=oil_level_m))
     check_loads(brg, Fa, Fr, M, n_rpm)                    # before any solve: what no answer exists for
     check_limit("n_dm", np.asarray(n_rpm, float) * brg.dm * 1e3, "n_rpm")    # warns beyond the validated speed
     cs = prepare_contacts(brg, Fa, Fr, np.broadcast_to(np.asarray(n_rpm, float), batch), M=M, rotating=rotating,
                           hertz_method=hertz_method, control=control, centrifugal=centrifugal, load=load)
     check_contacts(brg, cs.sides, "Fa, Fr, M", warn=True, given=loads_text(Fa, Fr, M))
     return evaluate_losses(cs, oil, T_C, T_inner_C=T_inner_C, T_outer_C=T_outer_C, T_oil_C=T_oil_C, supply=supply,
-                           oil_flow_m3_s=oil_flow_m3_s, Rq_ball=Rq_ball, Rq_ring=Rq_ring, mu_boundary=mu_boundary,
-                           mu_full_film=mu_full_film, rolling_model=rolling_model, drag=drag, traction=traction,
-                           inlet_heating=inlet_heating, starvation=starvation, oil_level_m=oil_level_m,
-                           seal_torque_Nm=seal_torque_Nm, cage=cage)
+                           rolling_model=rolling_model, drag=drag, traction=traction, inlet_heating=inlet_heating,
+                           starvation=starvation, cage=cage, **pp)
+
+
+def _per_point(batch: tuple, params: dict):
+    """(batch, params) of :func:`bearing_losses`: the operating points' shape extended by the parameters given one
+    per operating point (numpy broadcasting; each point then equals the call with its values), and the parameters as
+    :func:`evaluate_losses` takes them (roughnesses and friction coefficients with two axes for the contacts)."""
+    loads = batch
+    for name, v in params.items():
+        try:
+            batch = np.broadcast_shapes(batch, np.shape(v)) if v is not None else batch
+        except ValueError:
+            raise InputError(name, f"shape {np.shape(v)}", f"one value, or one per operating point: a shape "
+                             f"broadcasting with {loads}, the shape of the loads, speed and temperatures") from None
+    return batch, {k: np.broadcast_to(np.asarray(v, float), batch)[..., None, None]
+                   if k in _PER_CONTACT and np.ndim(v) else v for k, v in params.items()}
+
+
+_PER_CONTACT = ("Rq_ball", "Rq_ring", "mu_boundary", "mu_full_film")   # against the contacts' (…, 2, Z) in evaluate_losses
