@@ -394,3 +394,21 @@ def test_per_point_parameters_broadcast_over_the_batch_each_point_equal_to_its_s
 def test_per_point_parameters_of_another_shape_are_refused_by_name():
     with pytest.raises(InputError, match=r"^mu_boundary = 'shape \(3,\)' — one value, or one per operating point"):
         bearing_losses(B7210, OIL, [450.0, 500.0], 650.0, 300.0, 90.0, mu_boundary=[0.1, 0.2, 0.3])
+
+
+@pytest.mark.parametrize("kw, message", [
+    (dict(mu_boundary=np.nan), r"^mu_boundary = nan — friction coefficient must lie in \[0, 1\]"),
+    (dict(mu_boundary=-0.1), r"^mu_boundary = -0.1 — friction coefficient must lie in \[0, 1\]"),
+    (dict(mu_full_film=np.inf), r"^mu_full_film = inf — friction coefficient must lie in \[0, 1\]"),
+    (dict(mu_boundary=[0.1, np.nan]), r"^mu_boundary = \[0.1, nan\] — friction"),
+    (dict(mu_boundary="x"), r"^mu_boundary = 'x' — must be a number"),
+    (dict(seal_torque_Nm=np.nan), r"^seal_torque_Nm = nan — must be finite and >= 0 \[N m\]"),
+    (dict(seal_torque_Nm=-1.0), r"^seal_torque_Nm = -1.0 — must be finite and >= 0 \[N m\]"),
+    (dict(oil_flow_m3_s=np.inf), r"^oil_flow_m3_s = inf — must be finite and >= 0 \[m³/s\]"),
+    (dict(oil_flow_m3_s=-1.0), r"^oil_flow_m3_s = -1.0 — must be finite"),
+    (dict(Rq_ball=-1e-7), r"^Rq_ball = -1e-07 — must be finite and >= 0 \[m\]"),
+    (dict(oil_level_m=np.nan, supply="oil_bath"), r"^oil_level_m = nan — must be finite"),
+])
+def test_friction_coefficients_flow_roughness_and_seal_torque_are_checked_as_a_scenes(kw, message):
+    with pytest.raises(InputError, match=message):
+        bearing_losses(B7210, OIL, 450.0, 650.0, 4800.0, 50.0, **{**JET, **kw})

@@ -49,7 +49,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from thermobear.arrays import instance_of
+from thermobear.arrays import checked, instance_of, within
 from thermobear.contact.geometry import BallBearing, bearing
 from thermobear.contact.hertz import hertz
 from thermobear.contact.kinematics import caged_ball_kinematics, common_cage_speed, free_orbital_speed
@@ -669,16 +669,27 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
 def _per_point(batch: tuple, params: dict):
     """(batch, params) of :func:`bearing_losses`: the operating points' shape extended by the parameters given one
     per operating point (numpy broadcasting; each point then equals the call with its values), and the parameters as
-    :func:`evaluate_losses` takes them (roughnesses and friction coefficients with two axes for the contacts)."""
+    :func:`evaluate_losses` takes them (roughnesses and friction coefficients with two axes for the contacts).
+    Each is checked as a scene's: finite and >= 0, the friction coefficients in [0, 1]."""
     loads = batch
     for name, v in params.items():
+        if v is None:
+            continue
         try:
-            batch = np.broadcast_shapes(batch, np.shape(v)) if v is not None else batch
+            a = np.asarray(v, dtype=float)
+        except (TypeError, ValueError):
+            raise InputError(name, v, "must be a number, or an array of numbers") from None
+        if name.startswith("mu_") and not within(a, 0.0, 1.0):                 # NaN fails
+            raise InputError(name, v, "friction coefficient must lie in [0, 1] [-] (as a scene's [lubricant] key)")
+        checked(name, a, lo=0.0, strict=False, what=f" [{_UNITS.get(name, '-')}]")
+        try:
+            batch = np.broadcast_shapes(batch, a.shape)
         except ValueError:
-            raise InputError(name, f"shape {np.shape(v)}", f"one value, or one per operating point: a shape "
+            raise InputError(name, f"shape {a.shape}", f"one value, or one per operating point: a shape "
                              f"broadcasting with {loads}, the shape of the loads, speed and temperatures") from None
     return batch, {k: np.broadcast_to(np.asarray(v, float), batch)[..., None, None]
                    if k in _PER_CONTACT and np.ndim(v) else v for k, v in params.items()}
 
 
 _PER_CONTACT = ("Rq_ball", "Rq_ring", "mu_boundary", "mu_full_film")   # against the contacts' (…, 2, Z) in evaluate_losses
+_UNITS = {"oil_flow_m3_s": "m³/s", "Rq_ball": "m", "Rq_ring": "m", "seal_torque_Nm": "N m", "oil_level_m": "m"}
