@@ -343,3 +343,32 @@ def test_dict_start_at_the_operating_clearance_is_the_uniform_start():
 def test_scene_functions_refuse_what_is_not_a_scene_by_name(call):
     with pytest.raises(InputError, match="^scene = 'x' — must be a Scene"):
         call("x")
+
+
+def test_scene_losses_takes_the_scenes_model_keys_checked_as_scene_with():
+    assert scene_losses(S004, T_C=50.0, models={}).P_W == scene_losses(S004, T_C=50.0).P_W
+    film = scene_losses(S004, T_C=50.0, models={"load_model": "film"})
+    assert film.P_W == scene_losses(S004.with_(models={"load_model": "film"}), T_C=50.0).P_W
+    with pytest.raises(InputError, match=r"^models.load_model = 'x' — must be one of"):
+        scene_losses(S004, T_C=50.0, models={"load_model": "x"})
+    with pytest.raises(InputError, match=r"^models = 'x' — must be a table"):
+        scene_losses(S004, T_C=50.0, models="x")
+
+
+@pytest.mark.parametrize("kw, message", [
+    (dict(rtol=-1.0), r"^rtol = -1.0 — must be > 0"),
+    (dict(rtol=np.nan), r"^rtol = nan — must be finite"),
+    (dict(atol=0.0), r"^atol = 0.0 — must be > 0 \[K\]"),
+    (dict(schedule="x"), r"^schedule = 'str' — a list of steps"),
+    (dict(schedule=[(10.0,)]), r"^schedule\[0\] = \(10.0,\) — a step \(t_s, \{override"),
+    (dict(schedule=[("x", {"n_rpm": 100.0})]), r"^schedule\[0\]\.t_s = 'x' — step times must lie in \[0, 100\)"),
+    (dict(stop="x"), r"^stop = 'str' — a callable"),
+    (dict(T0_C=300.0), r"^T0_C = 300.0 — must be in \[-40, 250\] \[°C\]"),
+    (dict(T0_C={"inner_ring": np.nan}), r"^T0_C\['inner_ring'\] = nan — must be finite"),
+    (dict(t_end_s="x"), r"^t_end_s = 'x' — must be a number > 0 \[s\]"),
+    (dict(t_end_s=-1.0), r"^t_end_s = -1.0 — must be > 0 \[s\]"),
+])
+def test_transient_refuses_bad_arguments_at_its_entry_by_the_name_given(kw, message):
+    kw = {"t_end_s": 100.0, **kw}
+    with pytest.raises(InputError, match=message):
+        transient(S004, kw.pop("t_end_s"), **kw)

@@ -163,3 +163,21 @@ def test_alternatives_stacked_in_one_solve_equal_each_solved_alone():
         assert st[0].iterations == alone.iterations
         assert st[0].models_used["load_distribution"] == alone.models_used["load_distribution"]
     assert len({round(st[0].P_W, 6) for st in stacked}) == 3          # three different answers
+
+
+_S004 = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
+
+
+@pytest.mark.parametrize("tol, message", [(0, r"^tol_K = 0 — must be > 0 \[K\]"), (-1.0, r"^tol_K = -1.0 — must be > 0"),
+                                          (np.nan, r"^tol_K = nan — must be finite"), ("x", r"^tol_K = 'x' — must be a number")])
+def test_steady_state_refuses_a_tolerance_that_is_not_finite_and_positive(tol, message):
+    with pytest.raises(tb.InputError, match=message):
+        steady_state(_S004, tol_K=tol)
+
+
+def test_steady_states_refuses_a_scene_for_the_list_and_steady_state_a_non_scene():
+    with pytest.raises(tb.InputError, match=r"^scenes = 'Scene' — a list of Scene"):
+        tb.steady_states(_S004)
+    with pytest.raises(tb.InputError, match=r"^scene = 'x' — must be a Scene"):
+        steady_state("x")
+    assert tb.steady_states((_S004,), tol_K=np.float32(1e-6))[0].P_W == steady_state(_S004).P_W

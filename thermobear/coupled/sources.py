@@ -407,8 +407,10 @@ def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oi
     model (:func:`thermobear.losses.evaluate_losses`) or the SKF model, as the scene's models say.
 
     ``n_rpm`` and the temperatures may be arrays (one operating point each, vectorised; the loads
-    of the scene); ``load`` / ``contacts`` inject a load distribution / prepared contacts; ``dry``
-    is the dry load distribution the model choice ``models`` solved (:func:`~thermobear.models.plan_many`).
+    of the scene); ``load`` / ``contacts`` inject a load distribution / prepared contacts; ``models`` the model
+    choice (name → (choice, reason), :func:`~thermobear.models.plan_many`), or keys of the scene's ``[models]``
+    table (``{"load_model": "film"}``, as :meth:`Scene.with_`); ``dry`` the dry load distribution the model
+    choice solved.
 
     >>> import thermobear as tb
     >>> s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
@@ -416,6 +418,8 @@ def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oi
     >>> max(r.breakdown_W, key=r.breakdown_W.get), r.models_used["load_distribution"][0]
     ('rolling', 'Jones–Harris high-speed (centrifugal, gyroscopic)')
     """
+    if models is not None and not (models and isinstance(models, dict) and all(type(v) is tuple for v in models.values())):
+        scene, models = scene.with_(models=models), None  # the scene's [models] keys: checked as Scene.with_ does
     if models is None:
         models, dry = plan(scene)
     if T_C is None:

@@ -45,7 +45,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from thermobear.arrays import take
+from thermobear.arrays import instance_of, take
 from thermobear.coupled.blend import blend_states
 from thermobear.coupled.clearance import clearance_loop
 from thermobear.coupled.newton import _C0, T_LIMIT_K, _newton, _physical_path, _slopes  # noqa: F401
@@ -61,6 +61,7 @@ from thermobear.loads.api import check_loads, contact_bounds
 from thermobear.models import plan_many
 from thermobear.rating.life import stated_ratings
 from thermobear.scene import Scene
+from thermobear.schema import Field, check_value
 
 __all__ = ["SteadyState", "steady_state", "steady_states", "T_LIMIT_K"]
 
@@ -68,6 +69,7 @@ _FILM_TOL_K = 0.1                              #: film temperature fixed point t
 _FILM_MAXITER = 20
 _FILM_JUMP_K = 1e-3                            #: a bracket this narrow with answers apart by > the tolerance: a jump [K]
 _FILM_HOT_C = T_LIMIT_K - _C0 - 1.0             #: the answer taken for loads whose equilibrium runs away [°C]
+_TOL_K = Field.number("K", 0.0, lo_open=True)  #: what tol_K accepts: a finite tolerance > 0 [K]
 SCENE_LOADS = ("operation.Fa_N", "operation.Fr_N", "operation.M_Nm", "operation.n_rpm")
 
 
@@ -438,7 +440,9 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> l
            operating at their clearance's fixed point (:func:`~thermobear.coupled.clearance.clearance_loop`;
            a consumed clearance: :class:`~thermobear.errors.ThermalPreloadRunaway`)
     """
-    scenes = list(scenes)
+    if isinstance(scenes, Scene) or not hasattr(scenes, "__iter__"):
+        raise InputError("scenes", type(scenes).__name__, "a list of Scene (steady_state solves one scene)")
+    scenes, tol_K = list(scenes), check_value(tol_K, _TOL_K, "tol_K")
     out = _steady_states(scenes, tol_K=tol_K, load=load, prepared=prepared)
     if load is None:
         out = clearance_loop(scenes, out, lambda scs: _steady_states(scs, tol_K=tol_K, prepared=prepared))
@@ -584,7 +588,7 @@ def steady_state(scene: Scene, *, tol_K: float = 1e-6, load=None, prepared=None)
     """
     if prepared is not None:
         prepared_for(scene, prepared)                    # refuse one prepared for another family
-    r = steady_states([scene], tol_K=tol_K, load=load, prepared=prepared)[0]
+    r = steady_states([instance_of(scene, Scene, "scene")], tol_K=tol_K, load=load, prepared=prepared)[0]
     if isinstance(r, Exception):
         raise r
     return r

@@ -56,6 +56,8 @@ from thermobear.arrays import instance_of, take
 from thermobear.coupled.blend import StackedBlend
 from thermobear.models import Alternative, plan, plan_many
 from thermobear.scene import Scene
+from thermobear.scene.scene import SECTIONS
+from thermobear.schema import Field, check_value, real_number
 from thermobear.thermal import ThermalNetwork, solve_transient
 from thermobear.thermal.solve import LinearBoundary
 from thermobear.validity import T_LUBRICANT_REFUSE_C
@@ -102,15 +104,19 @@ class TransientRun:
 
 def _segments(scene: Scene, schedule, t_end_s):
     """[(t_start, scene)] of a schedule ``[(t_s, overrides), ...]``: times increasing, in [0, t_end)."""
-    steps = list(schedule or [])
+    if schedule is not None and not isinstance(schedule, (list, tuple)):
+        raise InputError("schedule", type(schedule).__name__, "a list of steps (t_s, {override: value, ...})")
     out = [(0.0, scene)]
-    for k, (t, ch) in enumerate(steps):
-        if not (np.isfinite(t) and 0 <= t < t_end_s):
-            raise InputError(f"schedule[{k}].t_s", t, f"step times must lie in [0, {t_end_s:g}) s")
-        if k > 0 and t <= steps[k - 1][0]:
+    for k, step in enumerate(schedule or []):
+        if not (isinstance(step, (list, tuple)) and len(step) == 2 and isinstance(step[1], dict)):
+            raise InputError(f"schedule[{k}]", step, "a step (t_s, {override: value, ...})")
+        t, ch = real_number(step[0]), step[1]
+        if t is None or not (np.isfinite(t) and 0 <= t < t_end_s):
+            raise InputError(f"schedule[{k}].t_s", step[0], f"step times must lie in [0, {t_end_s:g}) s")
+        if k > 0 and t <= out[-1][0]:
             raise InputError(f"schedule[{k}].t_s", t, f"step times must increase (the step before is at "
-                             f"{steps[k - 1][0]:g} s; two steps at one time would be merged)")
-        out.append((float(t), out[-1][1].with_(**ch)))
+                             f"{out[-1][0]:g} s; two steps at one time would be merged)")
+        out.append((t, out[-1][1].with_(**ch)))
     return out
 
 
@@ -224,15 +230,13 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
     -------
     TransientRun
     """
-    scene = instance_of(scene, Scene, "scene")
-    if not (np.isfinite(t_end_s) and t_end_s > 0):
-        raise InputError("t_end_s", t_end_s, "end time must be > 0 [s]")
+    scene, T0_C = instance_of(scene, Scene, "scene"), _start_of(T0_C)
+    t_end_s, rtol, atol = (check_value(v, _POSITIVE[k], k) for k, v in (("t_end_s", t_end_s), ("rtol", rtol),
+                                                                          ("atol", atol)))
+    if stop is not None and not callable(stop):
+        raise InputError("stop", type(stop).__name__, "a callable stop() -> bool, or None")
     if load is not None and schedule:
         raise InputError("load", "LoadDistribution", "injected loads hold one operating point: no schedule")
-    if T0_C is not None and not isinstance(T0_C, dict):
-        if not np.isfinite(T0_C):
-            raise InputError("T0_C", T0_C, "start temperature must be finite [°C]")
-        scene.with_(T_ambient_C=float(T0_C))                    # the accepted range of a scene temperature
     if t_eval is not None:
         t_eval = np.asarray(t_eval, float)
         if t_eval.ndim != 1 or np.any(~np.isfinite(t_eval)) or np.any((t_eval < 0) | (t_eval > t_end_s)) \
@@ -244,6 +248,17 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
     pre = prepared_for(scene, prepared)
     return _run(_pieces(_segments(scene, schedule, t_end_s), t_end_s), scene, T0_C, t_eval, rtol, atol, load, stop, pre,
                 boundary)
+
+
+_POSITIVE = {k: Field.number(u, 0.0, lo_open=True) for k, u in (("t_end_s", "s"), ("rtol", "-"), ("atol", "K"))}
+
+
+def _start_of(T0_C):
+    """``T0_C`` checked: None, a temperature [°C] or node → temperature, in a scene temperature's range."""
+    if isinstance(T0_C, dict):
+        return {check_value(n, Field.text(), "T0_C (node)"): check_value(v, SECTIONS["thermal"]["T_ambient_C"],
+                                                                        f"T0_C[{n!r}]") for n, v in T0_C.items()}
+    return None if T0_C is None else check_value(T0_C, SECTIONS["thermal"]["T_ambient_C"], "T0_C")
 
 
 def _imposed(boundary, scene: Scene, t_end_s):

@@ -691,5 +691,5 @@ def _per_point(batch: tuple, params: dict):
                    if k in _PER_CONTACT and np.ndim(v) else v for k, v in params.items()}
 
 
-_PER_CONTACT = ("Rq_ball", "Rq_ring", "mu_boundary", "mu_full_film")   # against the contacts' (…, 2, Z) in evaluate_losses
+_PER_CONTACT = ("Rq_ball", "Rq_ring", "mu_boundary", "mu_full_film")   # against the contacts (…, 2, Z)
 _UNITS = {"oil_flow_m3_s": "m³/s", "Rq_ball": "m", "Rq_ring": "m", "seal_torque_Nm": "N m", "oil_level_m": "m"}
