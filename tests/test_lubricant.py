@@ -10,6 +10,7 @@ import warnings
 import numpy as np
 import pytest
 
+import thermobear as tb
 from thermobear.errors import ExtrapolationWarning, InputError
 from thermobear.lubrication.lubricant import (Lubricant, cragoe_cp, cragoe_k_th, density_api, gold_alpha_p,
                                   lubricant, lubricant_names, walther_nu_from_Z, walther_Z)
@@ -254,3 +255,24 @@ def test_one_temperature_equals_the_array_path():
         oil.rho(300.0)
     with pytest.raises(InputError):
         oil.nu(float("nan"))
+
+
+def test_a_viscosity_the_walther_form_cannot_represent_is_refused_at_construction():
+    """ASTM D341's log10 log10 Z needs Z = ν + 0.7 + exp(…) > 1, ν > 0.1153 cSt: below, ν(T) was NaN."""
+    with pytest.raises(InputError, match=r"^lubricant\[custom\]\.nu100_cSt = 0.1 — kinematic viscosity must be > 0.1153"):
+        tb.Lubricant(36.0, 0.1, 864.0)
+    with pytest.raises(InputError, match=r"^lubricant\[custom\]\.nu40_cSt = \[36\. +0\.1\] — kinematic"):
+        tb.Lubricant([36.0, 0.1], [7.8, 0.05], 864.0)
+    with pytest.raises(InputError, match=r"^lubricant\[custom\]\.eta_Pa_s = 1e-07 — kinematic viscosity must be"):
+        tb.Lubricant.from_single_point(1e-7, 40.0, 870.0)
+    with pytest.raises(InputError, match=r"^lubricant\[custom\]\.nu100_cSt = 0.12 — with nu40_cSt = 36.0 the D341 line"):
+        tb.Lubricant(36.0, 0.12, 864.0)                    # representable at 100 °C, but ν(-40 °C) overflowed to NaN
+    oil = tb.Lubricant(0.3, 0.12, 864.0)                   # finite at every accepted temperature
+    assert np.all(np.isfinite(oil.nu(np.array([-40.0, 40.0, 100.0, 250.0]))))
+
+
+def test_per_point_values_of_different_lengths_are_refused_by_name():
+    for args in (([36.0, 40.0], [7.8, 8.0, 9.0], 864.0), ([36.0, 40.0], 8.0, [864.0, 870.0, 880.0])):
+        with pytest.raises(InputError, match=r"^lubricant\[custom\] = \[2, 3\] — per-point values must share one length"):
+            tb.Lubricant(*args)
+    assert tb.Lubricant([36.0, 40.0], [7.8, 8.0], 864.0).points == 2

@@ -95,3 +95,12 @@ def test_rating_life_takes_a_bearing_name_and_refuses_a_load_distribution_that_i
     assert rating_life("6208", **kw).L10m_Mrev == rating_life(bearing("6208"), **kw).L10m_Mrev
     with pytest.raises(InputError, match="^ld = 'x' — must be a LoadDistribution"):
         rating_life(bearing("6208"), "x")
+
+
+@pytest.mark.parametrize("kw, message", [(dict(C0_N=0.0), r"^C0_N = 0.0 — must be > 0 \[N\]"),
+                                         (dict(C_N=-1.0), r"^C_N = -1.0 — must be > 0 \[N\]"),
+                                         (dict(C_N=np.nan), r"^C_N = nan — must be finite"),
+                                         (dict(C0_N="x"), r"^C0_N = 'x' — must be a number")])
+def test_stated_load_ratings_must_be_finite_and_positive(kw, message):
+    with pytest.raises(InputError, match=message):
+        rating_life(bearing("6208"), Fa=0.0, Fr=2000.0, nu_m2_s=30e-6, n_rpm=3000.0, **kw)

@@ -46,7 +46,7 @@ from thermobear.schema import Field, check_table, check_uncertainty
 from thermobear.validity import T_LUBRICANT_REFUSE_C, T_LUBRICANT_WARN_C, check as check_limit
 from thermobear.units import ZERO_C_K
 from thermobear.lubrication.walther import (_num, _scalar, _xp, walther_fit, walther_nu, walther_nu_from_Z,  # noqa: F401
-                                            walther_temperature_coefficient, walther_Z)
+                                            walther_temperature_coefficient, walther_Z, NU_MIN_CST)
 
 __all__ = [
     "Lubricant", "lubricant", "lubricant_names",
@@ -246,6 +246,22 @@ def _positive(field, v):
     return _scalar(v)
 
 
+def _viscosity(field, nu, given=None):
+    """A kinematic viscosity [cSt] the D341 form represents (:data:`~thermobear.lubrication.walther.NU_MIN_CST`);
+    ``given``: the input it comes from, shown as the field's value."""
+    if not np.all(walther_Z(nu) > 1.0):
+        raise InputError(field, nu if given is None else given, f"kinematic viscosity must be > {NU_MIN_CST:.4g} cSt: "
+                         "ASTM D341's log10 log10 Z (Z = ν + 0.7 + exp(…)) needs Z > 1")
+    return nu
+
+
+def _one_length(name, values):
+    """The values given per operating point (arrays) share one length B, else InputError."""
+    sizes = sorted({np.size(v) for v in values if v is not None and np.ndim(v)})
+    if len(sizes) > 1:
+        raise InputError(f"lubricant[{name}]", sizes, "per-point values must share one length B")
+
+
 class Lubricant:
     r"""An oil, or a grease through its base oil.
 
@@ -290,12 +306,16 @@ class Lubricant:
                  k_th=None, cp=None, name="custom", kind="oil", base_oil="mineral",
                  thickener=None, description="", estimated=(), eyring_stress=None, limiting_shear=None,
                  uncertainty=None):
-        nu40 = _positive(f"lubricant[{name}].nu40_cSt", nu40_cSt)
-        nu100 = _positive(f"lubricant[{name}].nu100_cSt", nu100_cSt)
+        _one_length(name, (nu40_cSt, nu100_cSt, rho15, alpha_p, gold_s, gold_t, k_th, cp, eyring_stress, limiting_shear))
+        nu40 = _viscosity(f"lubricant[{name}].nu40_cSt", _positive(f"lubricant[{name}].nu40_cSt", nu40_cSt))
+        nu100 = _viscosity(f"lubricant[{name}].nu100_cSt", _positive(f"lubricant[{name}].nu100_cSt", nu100_cSt))
         if not np.all(nu100 < nu40):
             raise InputError(f"lubricant[{name}].nu100_cSt", nu100_cSt,
                              f"must be < nu40_cSt = {nu40_cSt} (viscosity falls with temperature)")
         A, B = walther_fit(nu40, _T40_K, nu100, _T100_K)
+        if not np.all(A - B * np.log10(T_VALID_C[0] + ZERO_C_K) < np.log10(308.0)):      # log10 log10 Z at -40 °C
+            raise InputError(f"lubricant[{name}].nu100_cSt", nu100_cSt, f"with nu40_cSt = {nu40_cSt} the D341 line is so "
+                             f"steep that ν overflows (beyond 1e308 cSt) at {T_VALID_C[0]:g} °C, an accepted temperature")
         self._setup(A, B, rho15, alpha_p, gold_s, gold_t, k_th, cp, name, kind, base_oil,
                     thickener, description, estimated, eyring_stress, limiting_shear, uncertainty)
 
@@ -325,9 +345,8 @@ class Lubricant:
         self.limiting_shear = _positive(f"lubricant[{name}].limiting_shear_coefficient",
                                         fam["limiting_shear_coefficient"] if limiting_shear is None else limiting_shear)
         self.uncertainty = dict(uncertainty or {})
+        _one_length(name, self._numbers().values())
         sizes = {np.size(v) for v in self._numbers().values() if np.ndim(v)}
-        if len(sizes) > 1:
-            raise InputError(f"lubricant[{name}]", sorted(sizes), "per-point values must share one length B")
         self.points = sizes.pop() if sizes else None     # B when values are given per operating point
         self.table = {}                                   # the data-file values it was built from (from_dict)
 
@@ -422,6 +441,7 @@ class Lubricant:
         True
         """
         name = kw.get("name", "custom")
+        _one_length(name, (eta_Pa_s, T_C, rho15, walther_B, alpha_p))
         eta = _positive(f"lubricant[{name}].eta_Pa_s", eta_Pa_s)
         if not (np.all(np.isfinite(T_C)) and np.all((T_VALID_C[0] <= np.asarray(T_C)) & (np.asarray(T_C) <= T_VALID_C[1]))):
             raise InputError(f"lubricant[{name}].T_C", T_C,
@@ -431,7 +451,7 @@ class Lubricant:
             raise InputError(f"lubricant[{name}].walther_B", walther_B,
                              "D341 slope must lie in 0...10 (typical mineral oils 3-4)")
         rho15 = _positive(f"lubricant[{name}].rho15", rho15)
-        nu_ref = eta / (_scalar(density_api(rho15, T_C)) * 1e-6)
+        nu_ref = _viscosity(f"lubricant[{name}].eta_Pa_s", eta / (_scalar(density_api(rho15, T_C)) * 1e-6), eta_Pa_s)
         A = _scalar(np.log10(np.log10(walther_Z(nu_ref)))) + walther_B * np.log10(T_C + ZERO_C_K)
         obj = cls.__new__(cls)
         obj._setup(A, walther_B, rho15, alpha_p, kw.get("gold_s"), kw.get("gold_t"), kw.get("k_th"),

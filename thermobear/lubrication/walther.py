@@ -9,7 +9,15 @@ import math
 
 import numpy as np
 
-__all__ = ["walther_Z", "walther_nu_from_Z", "walther_fit", "walther_nu", "walther_temperature_coefficient"]
+__all__ = ["walther_Z", "walther_nu_from_Z", "walther_fit", "walther_nu", "walther_temperature_coefficient",
+           "NU_MIN_CST"]
+
+#: The smallest kinematic viscosity the D341 form represents [cSt]: log10 log10 Z needs Z > 1, and
+#: :func:`walther_Z` (ν) = 1 at ν = 0.11527 cSt (below it ν(T) is NaN).
+#:
+#: >>> abs(float(walther_Z(NU_MIN_CST)) - 1.0) < 1e-6
+#: True
+NU_MIN_CST = 0.1152738
 
 
 def _xp(x):

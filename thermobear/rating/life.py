@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from thermobear.errors import InputError, SolverError
+from thermobear.schema import Field, check_value
 from thermobear.arrays import instance_of
 from thermobear.contact.geometry import BallBearing, bearing
 from thermobear.loads.static import LoadDistribution, load_distribution
@@ -144,6 +145,9 @@ def _loads(ld, Fa, Fr):
     return float(Fa), float(Fr)
 
 
+_RATING = Field.number("N", 0.0, lo_open=True)      #: a load rating given: finite and > 0 [N]
+
+
 def _osculation_note(brg):
     lim = (0.54, 0.54) if brg.kind == "thrust" else (0.52, 0.53)
     if brg.fi > lim[0] + 1e-12 or brg.fo > lim[1] + 1e-12:
@@ -197,8 +201,8 @@ def rating_life(brg: BallBearing, ld: LoadDistribution | None = None, *, Fa=None
     brg = instance_of(brg, BallBearing, "brg", bearing)
     Fa, Fr = _loads(None if ld is None else instance_of(ld, LoadDistribution, "ld"), Fa, Fr)
     C_iso, C0_iso = load_ratings(brg)
-    C = C_iso if C_N is None else float(C_N)
-    C0 = C0_iso if C0_N is None else float(C0_N)
+    C = C_iso if C_N is None else check_value(C_N, _RATING, "C_N")
+    C0 = C0_iso if C0_N is None else check_value(C0_N, _RATING, "C0_N")
     P, P0 = equivalent_loads(brg, Fr, Fa, C0)
     s0 = float(static_safety_factor(C0, P0))
     L10 = float(basic_rating_life(C, P))
