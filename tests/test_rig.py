@@ -12,6 +12,7 @@ import pytest
 from thermobear.errors import InputError
 from thermobear.app.calibration import calibrate
 from thermobear.app.rig import channel_map, compare, metrics, read_log
+from thermobear.coupled import transient
 from thermobear.scene.scene import load_scene
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -278,3 +279,40 @@ def test_impose_needs_a_known_node(tmp_path, synthetic_scene):
     with pytest.raises(InputError) as e:
         channel_map(synthetic_scene, log, {"T_bearing_C": "impose:spindle"})
     assert e.value.field == "rig.map.T_bearing_C"
+
+
+def _with_column(tmp_path, name, values_of_t, out="loads.csv"):
+    """The shipped synthetic heat-up log with one more column, its value a function of t [s]."""
+    lines = (LOGS / "synthetic_heatup_7210.csv").read_text(encoding="utf-8").splitlines()
+    rows = [l if l.startswith("#") else (f"{l},{name}" if l.startswith("t_s") else f"{l},{values_of_t(float(l.split(',')[0]))}")
+            for l in lines]
+    return read_log(_write(tmp_path, "\n".join(rows) + "\n", out))
+
+
+def test_transient_log_load_columns_step_the_operating_point(tmp_path, synthetic_scene):
+    """Fa_N / Fr_N columns of a transient log drive the run as n_rpm does: the first row's loads start
+    it, a change steps the schedule at that row (they used to be ignored: metrics equal to the plain log)."""
+    plain = read_log(LOGS / "synthetic_heatup_7210.csv")
+    m = channel_map(synthetic_scene, plain)
+    base = compare(synthetic_scene, plain, m).simulated["T_bearing_C"]
+    t = plain.t_s
+    bnd = (t, {"ambient": plain["T_room_C"]})
+    step = _with_column(tmp_path, "Fa_N", lambda x: 1000 if x < 900 else 6000)
+    c = compare(synthetic_scene, step, m)
+    assert c.mode.endswith("; 1 step from Fa_N")
+    direct = transient(synthetic_scene.with_(Fa=1000.0), float(t[-1]), schedule=[(900.0, {"Fa_N": 6000.0})],
+                       t_eval=t, T0_C=float(plain["T_room_C"][0]), rtol=1e-6, atol=1e-5, boundary=bnd)
+    np.testing.assert_allclose(c.simulated["T_bearing_C"], direct.T_C["bearing"], rtol=1e-9)
+    assert c.simulated["T_bearing_C"][-1] > base[-1] + 10.0            # 6 kN axial: far more heat
+    np.testing.assert_allclose(c.simulated["T_bearing_C"][t < 900], base[t < 900], rtol=1e-9)
+    const = _with_column(tmp_path, "Fr_N", lambda x: 3000, "fr.csv")
+    c = compare(synthetic_scene, const, m)
+    assert c.mode.endswith("; logged load held: Fr_N 3000 N")
+    direct = transient(synthetic_scene.with_(Fr=3000.0), float(t[-1]), t_eval=t, T0_C=float(plain["T_room_C"][0]),
+                       rtol=1e-6, atol=1e-5, boundary=bnd)
+    np.testing.assert_allclose(c.simulated["T_bearing_C"], direct.T_C["bearing"], rtol=1e-9)
+    assert abs(c.simulated["T_bearing_C"][-1] - base[-1]) > 1.0
+    gap = _with_column(tmp_path, "Fr_N", lambda x: "" if x == 600 else 3000, "gap.csv")
+    with pytest.raises(InputError) as e:
+        compare(synthetic_scene, gap, m)
+    assert e.value.field == "gap.csv: column Fr_N"

@@ -15,7 +15,7 @@ def log_bands(scene: Scene, log: RigLog, mapping: dict, n: int, *, T0_C=None, se
               groups: int | None = None):
     """The model's 5/50/95 % band of every mapped temperature channel over ``n`` samples of the
     estimated inputs (:mod:`thermobear.coupled.uncertainty`): a transient log by the sampled heat-up
-    at the log's times (one operating point: no speed steps; its ``impose:<node>`` channels the logged
+    at the log's times (one operating point: no speed or load steps; its ``impose:<node>`` channels the logged
     boundary of every sample, as :func:`~thermobear.app.rig.simulate_log` runs it), a steady log row by
     row.  Returns (channel → dict(p5, p50, p95) over the rows, design dict)."""
     chans = {ch: nd for ch, nd in mapping.items() if not special_target(nd)}
@@ -23,7 +23,7 @@ def log_bands(scene: Scene, log: RigLog, mapping: dict, n: int, *, T0_C=None, se
         sc, steps, bnd = _log_inputs(scene, log, mapping)
         if steps:
             raise InputError("--uncertainty", n, "bands of a transient log need one operating point (this log "
-                             "steps its speed)")
+                             "steps its speed or loads)")
         t = np.asarray(log.t_s, float) - float(log.t_s[0])
         if T0_C is None and bnd is not None and "ambient" in bnd.T_C:
             T0_C = float(bnd.T_C["ambient"][0])           # as simulate_log: from the logged room

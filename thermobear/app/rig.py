@@ -13,7 +13,8 @@ named columns, units in the names::
 * ``T_<name>_C`` a temperature channel [°C];
 * ``n_rpm``      speed [rpm] (transient: steps become a schedule; steady: one
   operating point per row);
-* ``torque_Nm``  friction torque [N m]; ``Fa_N``, ``Fr_N`` loads [N];
+* ``torque_Nm``  friction torque [N m]; ``Fa_N``, ``Fr_N`` loads [N] (transient: steps become a
+  schedule, as ``n_rpm``; steady: the row's loads, an empty cell the scene's);
   ``lubricant``  a lubricant name per row (steady logs).
 
 Empty cells are missing values (skipped by the metrics).  Each temperature
@@ -29,8 +30,9 @@ the torque is compared at the measured bearing temperature — how seed 004 (§4
 against its rig).  A steady log imposes each row's value on its equilibrium.  A transient log
 runs the heat-up with the channel as a *time-varying boundary*: linear between the logged rows
 (an empty cell is bridged linearly from its neighbours; the first and last rows must be given),
-never extrapolated — the run covers the log's rows only.  The speed steps of ``n_rpm`` and the
-imposed channels reach the integrator the same way (:func:`thermobear.coupled.transient`,
+never extrapolated — the run covers the log's rows only.  The speed and load steps of ``n_rpm``,
+``Fa_N`` and ``Fr_N`` (a change at a row applies from that row on; every row must give them) and
+the imposed channels reach the integrator the same way (:func:`thermobear.coupled.transient`,
 ``schedule`` and ``boundary``).  The run starts at the log's first row, at ``T0_C`` (default:
 the logged value of an imposed ``ambient`` node at that row, else the scene's ambient
 temperature).  A node can be imposed by one channel only, and an imposed node is not compared.
@@ -353,18 +355,26 @@ def _imposed(mapping: dict) -> dict:
     return {ch: n[len(IMPOSE):] for ch, n in mapping.items() if n.startswith(IMPOSE)}
 
 
+_DRIVES = ("n_rpm", "Fa_N", "Fr_N")          # transient-log columns that drive the operating point (scene keys)
+
+
 def _log_inputs(scene: Scene, log: RigLog, mapping: dict):
     """What a transient log drives, on the run's clock (0 at the log's first row): the scene at the
-    first row, the schedule of speed steps, the logged boundary (None without imposed channels)."""
+    first row, the schedule of its speed and load steps (``n_rpm``, ``Fa_N``, ``Fr_N``), the logged
+    boundary (None without imposed channels)."""
     name, t = Path(log.path).name, log.t_s
     t0 = float(t[0])
-    steps, sc = [], scene
-    if "n_rpm" in log.columns:
-        n = log["n_rpm"]
-        if np.any(np.isnan(n)):
-            raise InputError(f"{name}: column n_rpm", None, "speed missing in some rows")
-        steps = [(float(t[k]) - t0, {"n_rpm": float(n[k])}) for k in range(1, n.size) if n[k] != n[k - 1]]
-        sc = scene.with_(n_rpm=float(n[0]))
+    drives = [c for c in _DRIVES if c in log.columns]
+    for c in drives:
+        if np.any(np.isnan(log[c])):
+            raise InputError(f"{name}: column {c}", None, f"{'speed' if c == 'n_rpm' else 'load'} missing in some "
+                             "rows (a transient log's operating point is stepped from every row)")
+    steps = []
+    for k in range(1, t.size):
+        ch = {c: float(log[c][k]) for c in drives if log[c][k] != log[c][k - 1]}
+        if ch:
+            steps.append((float(t[k]) - t0, ch))
+    sc = scene.with_(**{c: float(log[c][0]) for c in drives}) if drives else scene
     imposed = _imposed(mapping)
     if not imposed:
         return sc, steps, None
@@ -392,14 +402,19 @@ def _mode(log: RigLog, mapping: dict, steps=()) -> str:
         return out + (f"; imposed per row: {arrows}" if arrows else "")
     out = (f"transient with logged boundary {arrows} (linear between rows)" if arrows
            else "transient (heat-up from the start temperature)")
-    return out + (f"; {len(steps)} speed step{'s' * (len(steps) != 1)} from n_rpm" if steps else "")
+    stepped = [c for c in _DRIVES if any(c in ch for _, ch in steps)]
+    if stepped:
+        what = "speed step" if stepped == ["n_rpm"] else "step"
+        out += f"; {len(steps)} {what}{'s' * (len(steps) != 1)} from {', '.join(stepped)}"
+    held = [f"{c} {float(log[c][0]):g} N" for c in ("Fa_N", "Fr_N") if c in log.columns and c not in stepped]
+    return out + (f"; logged load held: {', '.join(held)}" if held else "")
 
 
 def simulate_log(scene: Scene, log: RigLog, mapping: dict, *, rtol: float = 1e-6, T0_C=None, dense: int = 0) -> dict:
     """Simulate what the log measured: channel → simulated array (and ``torque_Nm``).
 
     Transient logs run :func:`thermobear.coupled.transient` from the log's first row to its last,
-    the speed steps of ``n_rpm`` as its schedule and the ``"impose:<node>"`` channels as its
+    the speed and load steps of ``n_rpm``, ``Fa_N``, ``Fr_N`` as its schedule and the ``"impose:<node>"`` channels as its
     logged boundary (time-varying, linear between rows; see the module docstring); the start
     temperature ``T0_C`` [°C] defaults to the logged ambient (an imposed ``ambient`` node), else
     the scene's ambient temperature.  Steady logs run :func:`thermobear.coupled.solve` once per
