@@ -316,3 +316,23 @@ def test_transient_log_load_columns_step_the_operating_point(tmp_path, synthetic
     with pytest.raises(InputError) as e:
         compare(synthetic_scene, gap, m)
     assert e.value.field == "gap.csv: column Fr_N"
+
+
+def test_transient_log_change_on_the_last_row_is_ignored(tmp_path, synthetic_scene):
+    """A speed or load change on the log's last row (t = t_end) has no time to act: the run is the
+    log's without it, the mode line says so (it used to be refused naming 'schedule[0].t_s', a
+    schedule the user never wrote); the last row's torque is at the speed still running."""
+    plain = read_log(LOGS / "synthetic_heatup_7210.csv")
+    m = channel_map(synthetic_scene, plain)
+    base = compare(synthetic_scene, plain, m).simulated["T_bearing_C"]
+    for col, before, after in (("n_rpm", 3000, 4000), ("Fa_N", 1000, 6000)):
+        log = _with_column(tmp_path, col, lambda x: before if x < 1800 else after, f"{col}.csv")
+        c = compare(synthetic_scene, log, m)
+        np.testing.assert_allclose(c.simulated["T_bearing_C"], base, rtol=1e-9)
+        assert c.mode.endswith(f"; the change of {col} on the last row (t = 1800 s) has no time to act: ignored")
+    lines = (tmp_path / "n_rpm.csv").read_text(encoding="utf-8").splitlines()
+    log = read_log(_write(tmp_path, "\n".join(l if l.startswith("#") else l + (",torque_Nm" if l.startswith("t_s")
+                                                                              else ",0.1") for l in lines) + "\n"))
+    c = compare(synthetic_scene, log, m)
+    tq = c.simulated["torque_Nm"]
+    assert tq[-1] == pytest.approx(tq[-2], rel=0.02)             # at 3000 rpm, not the P_W(3000) / ω(4000)

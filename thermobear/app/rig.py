@@ -31,9 +31,9 @@ against its rig).  A steady log imposes each row's value on its equilibrium.  A 
 runs the heat-up with the channel as a *time-varying boundary*: linear between the logged rows
 (an empty cell is bridged linearly from its neighbours; the first and last rows must be given),
 never extrapolated — the run covers the log's rows only.  The speed and load steps of ``n_rpm``,
-``Fa_N`` and ``Fr_N`` (a change at a row applies from that row on; every row must give them) and
-the imposed channels reach the integrator the same way (:func:`thermobear.coupled.transient`,
-``schedule`` and ``boundary``).  The run starts at the log's first row, at ``T0_C`` (default:
+``Fa_N`` and ``Fr_N`` (a change at a row applies from that row on, one on the last row has no time
+to act and is ignored; every row must give them) and the imposed channels reach the integrator
+the same way (:func:`thermobear.coupled.transient`, ``schedule`` and ``boundary``).  The run starts at the log's first row, at ``T0_C`` (default:
 the logged value of an imposed ``ambient`` node at that row, else the scene's ambient
 temperature).  A node can be imposed by one channel only, and an imposed node is not compared.
 
@@ -370,7 +370,7 @@ def _log_inputs(scene: Scene, log: RigLog, mapping: dict):
             raise InputError(f"{name}: column {c}", None, f"{'speed' if c == 'n_rpm' else 'load'} missing in some "
                              "rows (a transient log's operating point is stepped from every row)")
     steps = []
-    for k in range(1, t.size):
+    for k in range(1, t.size - 1):         # a change on the last row has no time to act: ignored
         ch = {c: float(log[c][k]) for c in drives if log[c][k] != log[c][k - 1]}
         if ch:
             steps.append((float(t[k]) - t0, ch))
@@ -407,7 +407,10 @@ def _mode(log: RigLog, mapping: dict, steps=()) -> str:
         what = "speed step" if stepped == ["n_rpm"] else "step"
         out += f"; {len(steps)} {what}{'s' * (len(steps) != 1)} from {', '.join(stepped)}"
     held = [f"{c} {float(log[c][0]):g} N" for c in ("Fa_N", "Fr_N") if c in log.columns and c not in stepped]
-    return out + (f"; logged load held: {', '.join(held)}" if held else "")
+    out += f"; logged load held: {', '.join(held)}" if held else ""
+    last = [c for c in _DRIVES if c in log.columns and log.n_rows > 1 and log[c][-1] != log[c][-2]]
+    return out + (f"; the change of {', '.join(last)} on the last row (t = {float(log.t_s[-1]):g} s) has no time to "
+                  "act: ignored" if last else "")
 
 
 def simulate_log(scene: Scene, log: RigLog, mapping: dict, *, rtol: float = 1e-6, T0_C=None, dense: int = 0) -> dict:
@@ -471,7 +474,9 @@ def _output_times(t, dense: int):
 
 
 def _speed_at(log: RigLog, t):
-    return np.asarray(log["n_rpm"], float)[np.clip(np.searchsorted(log.t_s, t, side="right") - 1, 0, None)]
+    """The logged speed in effect at the times ``t`` [s] (a change on the last row is not run)."""
+    k = np.searchsorted(log.t_s, t, side="right") - 1
+    return np.asarray(log["n_rpm"], float)[np.clip(k, 0, max(log.n_rows - 2, 0))]
 
 
 @dataclass
