@@ -56,6 +56,17 @@ def test_malformed_logs_name_the_field(tmp_path, text, field):
     assert field in str(e.value)
 
 
+def test_log_with_a_utf8_bom_reads_as_without(tmp_path):
+    """Excel's "CSV UTF-8" starts with a byte-order mark; it was read into the first column's name
+    ('\\ufefft_s' — unknown column)."""
+    text = "t_s,T_IR_C\n0,20\n60,25.5\n"
+    p = tmp_path / "bom.csv"
+    p.write_bytes(b"\xef\xbb\xbf" + text.encode("utf-8"))
+    log = read_log(p)
+    assert list(log.columns) == ["t_s", "T_IR_C"] and log.kind == "transient"
+    np.testing.assert_array_equal(log["T_IR_C"], read_log(_write(tmp_path, text))["T_IR_C"])
+
+
 def test_missing_log_file():
     with pytest.raises(InputError, match="file not found"):
         read_log("/nonexistent/log.csv")

@@ -131,7 +131,7 @@ def read_log(path) -> RigLog:
     if not p.is_file():
         raise InputError("log", str(path), "file not found")
     try:
-        text = p.read_text(encoding="utf-8")
+        text = p.read_text(encoding="utf-8-sig")         # Excel's "CSV UTF-8" starts with a BOM
     except UnicodeDecodeError:
         raise InputError("log", str(path), "not a UTF-8 text (CSV) file") from None
     comments, body = [], []
