@@ -1,6 +1,7 @@
 """Speeds: ISO 15312 reference conditions and heat flow, DIN 732's speed ratio, the model's thermal
 reference speed and the thermally safe speed of a scene's cooling (root meets its condition, trends,
 failures named)."""
+import dataclasses
 import json
 import warnings
 
@@ -9,9 +10,10 @@ import pytest
 from scipy.optimize import brentq
 
 import thermobear as tb
+import thermobear.app.speed as app_speed
 from thermobear.app.cli import main
-from thermobear.coupled.speeds import (din732_safe_speed, reference_loads, reference_lubricant, thermal_reference_speed,
-                                       thermally_safe_speed)
+from thermobear.coupled.speeds import (din732_safe_speed, hottest_ring_C, reference_loads, reference_lubricant,
+                                       thermal_reference_speed, thermally_safe_speed)
 from thermobear.errors import ContactLimit, InputError, NoSpeedRoot
 from thermobear.rating.speeds import (din732_parameters, din732_speed_ratio, palmgren_moments, reference_conditions,
                                       reference_heat_flow_density, reference_surface, standard_reference_speed)
@@ -245,3 +247,48 @@ def test_cli_speed_reports_a_solver_failure_of_the_model_and_keeps_the_standards
     rep = json.loads(capsys.readouterr().out)
     assert rep["model"]["error"].startswith("NoConvergence: high-speed") and "n_rpm" in rep["iso15312"]
     assert "n_rpm" in rep["din732"]
+
+
+def test_cli_speed_limit_at_the_ambient_exits_3_with_one_error_line(block, capsys):
+    """A limit at the ambient: the model has no answer (exit 3) — that exit comes with one `error:` line on
+    stderr (it sat only in the stdout table), and DIN 732's reason reads the right way round (it said
+    'limit_C = 25.0 — above the ambient', the value it refused)."""
+    assert main(["speed", tb.example_path("block_6208_oil_bath.toml"), "--limit-C", "25"]) == 3
+    out, err = capsys.readouterr()
+    errors = [ln for ln in err.splitlines() if ln.startswith("error:")]
+    assert len(errors) == 1 and errors[0].startswith("error: thermally safe speed (model): ") and "exceeded" in errors[0]
+    assert "thermally safe speed, this scene's cooling (model)" in out                    # the table is kept
+    assert "limit_C = 25.0 — must be above the ambient 25 °C" in out
+    assert "Traceback" not in err
+
+
+def test_speed_refuses_a_node_that_is_not_free(block, capsys):
+    """A fixed-temperature node does not follow the speed: `--node ambient` reported a 'safe speed' at the
+    ambient's 25.00 °C; it is refused naming --node (exit 2, nothing printed), and by the library naming node."""
+    with pytest.raises(InputError, match="fixed-temperature") as e:
+        thermally_safe_speed(block, node="ambient", points=3)
+    assert e.value.field == "node"
+    assert main(["speed", tb.example_path("block_6208_oil_bath.toml"), "--node", "ambient"]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and err.startswith("error: --node = 'ambient' — a fixed-temperature (boundary) node")
+    assert len(err.splitlines()) == 1
+
+
+def test_cli_speed_temperature_at_a_speed_does_not_depend_on_the_other_speeds(block, monkeypatch, capsys):
+    """The scene's temperatures at the ISO 15312 and DIN 732 speeds were one batch: a DIN speed the models refuse
+    (n·dm beyond 4e6 mm/min, as --limit-C 240 gives a 6208) made the ISO row 'no equilibrium (InputError)' too,
+    and --json put that string in the numeric T_C.  Each speed is its own: T_C a number or null with T_C_error."""
+    monkeypatch.setattr(app_speed, "din732_safe_speed",
+                        lambda scene, limit_C: dataclasses.replace(din732_safe_speed(scene, limit_C=limit_C),
+                                                                   n_rpm=80000.0))
+    assert main(["speed", tb.example_path("block_6208_oil_bath.toml"), "--json"]) == 0
+    rep = json.loads(capsys.readouterr().out)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        T_iso = hottest_ring_C(tb.steady_state(block.with_(n_rpm=rep["iso15312"]["n_rpm"])))
+    assert rep["iso15312"]["T_C"] == pytest.approx(T_iso, abs=1e-3) and "T_C_error" not in rep["iso15312"]
+    assert rep["din732"]["T_C"] is None and rep["din732"]["T_C_error"].startswith("not modelled (InputError: "
+                                                                                  "operation.n_rpm = 80000.0")
+    assert main(["speed", tb.example_path("block_6208_oil_bath.toml")]) == 0
+    out = capsys.readouterr().out
+    assert f"hottest ring in this scene {T_iso:7.2f} °C" in out and "—  not modelled (InputError: operation.n_rpm" in out

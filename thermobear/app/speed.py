@@ -4,12 +4,14 @@ DIN 732's thermally safe speed (the standard's method), each with the scene's ho
 temperature at that speed."""
 from __future__ import annotations
 
+import sys
 import warnings
 
 from thermobear.app.output import print_json
 from thermobear.app.verbs import load_scene_with
 from thermobear.coupled.limits import emit
-from thermobear.coupled.speeds import din732_safe_speed, hottest_ring_C, thermal_reference_speed, thermally_safe_speed
+from thermobear.coupled.speeds import (check_node, din732_safe_speed, hottest_ring_C, thermal_reference_speed,
+                                      thermally_safe_speed)
 from thermobear.coupled.steady import steady_state, steady_states
 from thermobear.errors import InputError, NoSpeedRoot, OutsideValidity, SolverError
 from thermobear.scene import Scene
@@ -23,18 +25,29 @@ JUMP_K = 0.1
 
 
 def _at_speeds(scene: Scene, speeds: dict, node) -> dict:
-    """Hottest ring (or ``node``) of the scene's steady state at each named speed [°C], or why there is none."""
+    """Hottest ring (or ``node``) of the scene's steady state at each named speed [°C], or the exception that
+    says why there is none (each speed on its own: one past the lubricant's limit does not take the others)."""
     names = [k for k, v in speeds.items() if v is not None]
-    out = {}
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OutsideValidity)
         try:
             res = steady_states([scene.with_(n_rpm=speeds[k]) for k in names])
-        except InputError as exc:           # a point past the lubricant's limit can stop the batch
-            res = [exc] * len(names)
-    for k, r in zip(names, res):
-        out[k] = f"no equilibrium ({type(r).__name__})" if isinstance(r, Exception) else hottest_ring_C(r, node)
-    return out
+        except InputError:                  # a speed the models refuse, or a point past the lubricant's limit,
+            res = [_one(scene, speeds[k]) for k in names]        # stops the batch: one by one
+    return {k: r if isinstance(r, Exception) else hottest_ring_C(r, node) for k, r in zip(names, res)}
+
+
+def _one(scene: Scene, n_rpm: float):
+    try:
+        return steady_state(scene.with_(n_rpm=n_rpm))
+    except (SolverError, InputError) as exc:
+        return exc
+
+
+def _why_not(exc: Exception) -> str:
+    """Why a speed has no temperature of the scene, one line."""
+    what = "no equilibrium" if isinstance(exc, SolverError) or "lubricant temperature" in str(exc) else "not modelled"
+    return f"{what} ({type(exc).__name__}: {' '.join(str(exc).split())})"
 
 
 def _across(scene: Scene, n_rpm: float, node, residual_K: float) -> str:
@@ -61,8 +74,11 @@ def speed_report(scene: Scene, *, limit_C: float = 70.0, node: str | None = None
     return _report(scene, limit_C, node)[0]
 
 
-def _report(scene: Scene, limit_C: float, node) -> tuple[dict, list]:
-    """:func:`speed_report` and the warnings of its answers (OutsideValidity objects)."""
+def _report(scene: Scene, limit_C: float, node, node_field: str = "node") -> tuple[dict, list]:
+    """:func:`speed_report` and the warnings of its answers (OutsideValidity objects); InputError naming
+    ``node_field`` for a node that is not a free node of the scene's network."""
+    if node is not None and scene.network is not None:
+        check_node(scene, node, field=node_field)
     ws: list = []
     rep = {"scene": scene.name, "bearing": scene.bearing.name, "limit_C": limit_C,
            "node": node or "hottest ring", "T_ambient_C": scene.T_ambient_C}
@@ -97,7 +113,10 @@ def _report(scene: Scene, limit_C: float, node) -> tuple[dict, list]:
         rep["din732"] = {"error": " ".join(str(exc).split())}
     temps = _at_speeds(scene, {"iso15312": rep["iso15312"].get("n_rpm"), "din732": rep["din732"].get("n_rpm")}, node)
     for k, T in temps.items():
-        rep[k]["T_C"] = T
+        if isinstance(T, Exception):        # a number field holds a number or null; the reason beside it
+            rep[k].update(T_C=None, T_C_error=_why_not(T))
+        else:
+            rep[k]["T_C"] = T
     return rep, ws
 
 
@@ -105,7 +124,7 @@ def _line(label: str, part: dict, what: str) -> str:
     if "error" in part:
         return f"  {label:58s} —  {part['error']}"
     T = part.get("T_C")
-    T = f"{T:7.2f} °C" if isinstance(T, float) else str(T)
+    T = f"{T:7.2f} °C" if T is not None else f"—  {part.get('T_C_error', 'not evaluated')}"
     return f"  {label:58s} {part['n_rpm']:9.0f} rpm   {what} {T}"
 
 
@@ -137,10 +156,14 @@ def summary(rep: dict) -> str:
 
 
 def cmd_speed(args):
-    rep, ws = _report(load_scene_with(args.scene, args.set), args.limit_C, args.node)
+    rep, ws = _report(load_scene_with(args.scene, args.set), args.limit_C, args.node, "--node")
     emit(ws)                                   # one line each on stderr, as every verb's answers
     if args.json:
         print_json(rep)
     else:
         print(summary(rep))
-    return EXIT_SOLVER if "error" in rep["model"] else 0
+    if "error" in rep["model"]:                # the answer the verb is for: exit 3 with its reason on stderr
+        err = rep["model"]["error"]
+        print(f"error: thermally safe speed (model): {err}", file=sys.stderr)
+        return EXIT_SOLVER
+    return 0

@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from thermobear.contact.geometry import BallBearing
-from thermobear.coupled.sources import prepare
+from thermobear.coupled.sources import prepare, prepared_for
 from thermobear.coupled.steady import SteadyState, steady_state, steady_states
 from thermobear.errors import ContactLimit, InputError, NoConvergence, NoSpeedRoot, OutsideValidity, ThermalRunaway
 from thermobear.lazy import lazy_module
@@ -48,7 +48,7 @@ from thermobear.validity import LIMITS, collect
 optimize = lazy_module("scipy.optimize")    # brentq: loaded by its first use
 
 __all__ = ["ReferenceSpeed", "SafeSpeed", "Din732Speed", "reference_lubricant", "reference_loads", "thermal_reference_speed",
-           "thermally_safe_speed", "din732_safe_speed", "hottest_ring_C"]
+           "thermally_safe_speed", "din732_safe_speed", "hottest_ring_C", "check_node"]
 
 _N_DM_REFUSE = LIMITS["n_dm"].refuse[1]          #: mm/min
 #: Fa / (Fr tan α) of a single angular contact bearing loaded over half its balls (load zone ε = 0.5,
@@ -202,6 +202,19 @@ def hottest_ring_C(st: SteadyState, node: str | None = None) -> float:
     return float(max(st.T_C[st.roles["inner"]], st.T_C[st.roles["outer"]]))
 
 
+def check_node(scene: Scene, node: str | None, *, field: str = "node", prepared=None) -> None:
+    """InputError naming ``field`` unless ``node`` (None: the hottest ring) is a free node of the scene's network,
+    one whose temperature is solved: a fixed-temperature node (a boundary, or imposed by ``thermal.fixed_C``)
+    does not follow the speed, and a speed search on it would answer nothing."""
+    if node is None:
+        return
+    tpl = prepared_for(scene, prepared).template
+    if node not in tpl.free_nodes:
+        what = ("a fixed-temperature (boundary) node: its temperature does not follow the speed" if node in
+                tpl.fixed_nodes else "no such node")
+        raise InputError(field, node, f"{what}; a free node of the scene's network: {', '.join(tpl.free_nodes)}")
+
+
 @dataclass
 class SafeSpeed:
     """The thermally safe speed of a scene's own cooling (the coupled model).
@@ -329,7 +342,7 @@ def thermally_safe_speed(scene: Scene, *, limit_C: float = 70.0, node: str | Non
     Raises
     ------
     NoSpeedRoot   the limit is reached at no speed up to the top of the range, or exceeded already at its bottom
-    InputError    a bad limit, node or range
+    InputError    a bad limit, node (not a free node of the network: :func:`check_node`) or range
 
     >>> import thermobear as tb
     >>> s = tb.load_scene(tb.example_path("block_6208_oil_bath.toml"))
@@ -346,6 +359,7 @@ def thermally_safe_speed(scene: Scene, *, limit_C: float = 70.0, node: str | Non
     if not 0.0 < bottom < top:
         raise InputError("n_min_rpm", n_min_rpm, f"a speed in (0, {top:.6g}) rpm below n_max_rpm")
     prep = prepare(scene)
+    check_node(scene, node, prepared=prep)
     what = "the hottest ring" if node is None else f"node {node}"
     ladder = np.geomspace(bottom, top, points)
     with warnings.catch_warnings():
@@ -456,7 +470,8 @@ def din732_safe_speed(scene: Scene, *, limit_C: float = 70.0) -> Din732Speed:
         raise InputError("lubricant.supply", scene.supply, f"DIN 732 here: one of {', '.join(_SUPPLIES)}")
     dT_A = limit_C - scene.T_ambient_C
     if not np.isfinite(dT_A) or dT_A <= 0.0:
-        raise InputError("limit_C", limit_C, f"above the ambient {scene.T_ambient_C:g} °C (no heat leaves the bearing)")
+        raise InputError("limit_C", limit_C, f"must be above the ambient {scene.T_ambient_C:g} °C (at or below it no heat "
+                         "leaves the bearing)")
     ref = reference_conditions(brg.kind)
     C0 = stated_ratings(brg)[1]                       # the data's, else ISO 76's from the geometry
     A_s = float(reference_surface(brg.bore, brg.outer_diameter, brg.width, brg.kind))
