@@ -167,6 +167,17 @@ def test_init_refuses_a_closure_on_a_thrust_bearing_and_unknown_suffixes(capsys)
     assert "unknown catalog name; close: 6204" in capsys.readouterr().err
 
 
+@pytest.mark.parametrize("method", ["grease", "oil-bath", "oil-jet"])
+def test_init_names_a_bundled_bearing_without_boundary_dimensions(method, capsys):
+    """iso-dgbb (ISO/TS 16281's example: D_w, d_m, Z, no d x D x B) was refused as `bore = nan — must be
+    finite and > 0 [m]`, a field the user never gave; the line names the bearing and what it lacks."""
+    assert main(["init", "iso-dgbb", "--lubrication", method]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and len(err.strip().splitlines()) == 1
+    assert err.startswith("error: bearing = 'iso-dgbb' — a bundled bearing without boundary dimensions (bore_mm, "
+                          "outer_diameter_mm, width_mm): a parametric network needs the bearing's boundary dimensions")
+
+
 def test_init_takes_iso_76_c0_from_the_geometry_where_the_catalogue_has_none(capsys):
     """The seed-002 three-ball thrust bearing has no catalogue C0: init refused it ("bearing.C0_kN"), while every
     run rates it with ISO 76's C0 from its geometry; init now takes ISO 15312's reference load from that C0."""

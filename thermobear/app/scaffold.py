@@ -304,6 +304,11 @@ def scaffold(name: str, lubrication: str, *, oil: str | None = None, housing: st
     _check_number("--Fr-N", Fr_N, False)
     _check_number("--Fa-N", Fa_N, False)
     brg, closure = _bearing(name)
+    missing = [f"{k}_mm" for k in ("bore", "outer_diameter", "width") if getattr(brg, k) is None]
+    if missing:
+        raise InputError("bearing", name, f"a bundled bearing without boundary dimensions ({', '.join(missing)}): a "
+                         "parametric network needs the bearing's boundary dimensions; a catalogue bearing with "
+                         "d x D x B (thermobear list bearings)")
     supply = METHODS[lubrication]
     oil, oil_src = _lubricant(oil, supply, brg)
     ref = _reference_speed(brg) if (n_rpm is None or supply == "oil_jet") else None
