@@ -1,9 +1,13 @@
 """Spin-down: ODE integration vs closed forms, the two fits, energy balance, named errors."""
 import math
 
+import json
+
 import numpy as np
 import pytest
 
+import thermobear as tb
+from thermobear.app.cli import main
 from thermobear.errors import InputError, NoConvergence
 from thermobear.losses import rolling as R
 from thermobear.app import spindown as SD
@@ -99,3 +103,36 @@ def test_spin_down_of_a_scene_whose_model_choice_is_the_film_load_model():
     (run,) = SD.spin_down_runs(sc, 0.01, [3000.0], n_table=24)
     assert run["T0_Nm"] == pytest.approx(float(scene_losses(sc, models=models).torque_Nm), rel=1e-9)
     assert np.isfinite(run["t_stop_s"]) and 0.0 < run["n"] < 1.0
+
+
+def _cli_spin_down(tmp_path, capsys, text, *extra):
+    log = tmp_path / "sd.csv"
+    log.write_text(text, encoding="utf-8")
+    code = main(["spin-down", tb.example_path("seed001_spin_down_3ball.toml"), "--J", "1e-4", "--log", str(log), *extra])
+    return code, *capsys.readouterr()
+
+
+def test_cli_spin_down_log_with_an_empty_torque_cell(tmp_path, capsys):
+    """An empty torque cell (not measured) printed 'nan   +nan%' in the table; it prints '-' (JSON: null)."""
+    text = "n_rpm,Fa_N,torque_Nm\n60,0.375,1.3947e-04\n90,0.375,\n"
+    code, out, err = _cli_spin_down(tmp_path, capsys, text)
+    assert code == 0 and "nan" not in out.lower()
+    row = next(ln for ln in out.splitlines() if ln.split() and ln.split()[0] == "90")
+    assert row.split()[-2:] == ["-", "-"]
+    row = next(ln for ln in out.splitlines() if ln.split() and ln.split()[0] == "60")
+    assert row.split()[-2] == "1.3947e-04" and row.endswith("%")
+    code, out, err = _cli_spin_down(tmp_path, capsys, text, "--json")
+    runs = json.loads(out)["runs"]
+    assert code == 0 and runs[1]["T_log_Nm"] is None and runs[1]["T_error"] is None and runs[0]["T_log_Nm"] > 0
+
+
+def test_cli_spin_down_log_refuses_a_lubricant_column(tmp_path, capsys):
+    """A lubricant per row was silently ignored (rows naming different greases gave identical answers): a
+    spin-down runs the scene's lubricant, so the column is refused, naming it (exit 2, nothing printed)."""
+    text = "n_rpm,Fa_N,torque_Nm,lubricant\n60,0.375,1.39e-04,seed002-mg1\n90,0.375,1.64e-04,seed002-pg2\n"
+    code, out, err = _cli_spin_down(tmp_path, capsys, text)
+    assert code == 2 and out == ""
+    assert err.startswith("error: sd.csv: column = 'lubricant' — a spin-down log runs the scene's lubricant")
+    assert len(err.splitlines()) == 1
+    code, out, err = _cli_spin_down(tmp_path, capsys, "n_rpm,Fr_N,torque_Nm\n60,5,1.39e-04\n")   # Fr_N as Fa_N
+    assert code == 2 and "its Fr_N differs from the scene's Fr = 0 N" in err

@@ -7,6 +7,7 @@ kept and said where).
 """
 from __future__ import annotations
 
+import math
 import signal
 import sys
 import tomllib
@@ -607,13 +608,14 @@ def cmd_spin_down(args):
     for r in rpms:
         if not r > 0:
             raise InputError("--rpm", r, "initial speeds must be > 0 [rpm]")
-    if log is not None and "Fa_N" in log.columns and np.any(np.abs(log["Fa_N"] - scene.Fa) > 1e-6 * max(scene.Fa, 1)):
-        raise InputError("--log", args.log, f"its Fa_N differs from the scene's Fa = {scene.Fa:g} N (another rig set-up)")
+    if log is not None:
+        _check_spin_down_log(scene, log, args.log)
     runs = spin_down_runs(scene, float(J), rpms)
     if log is not None:
         for r in runs:
             k = np.flatnonzero(np.isclose(log["n_rpm"], r["n0_rpm"]))
-            r["T_log_Nm"] = float(log["torque_Nm"][k[0]]) if k.size else None
+            T = float(log["torque_Nm"][k[0]]) if k.size else math.nan
+            r["T_log_Nm"] = T if math.isfinite(T) else None              # an empty cell: not measured
             r["T_error"] = r["T0_Nm"] / r["T_log_Nm"] - 1 if r["T_log_Nm"] else None
     pub = [{k: v for k, v in r.items() if not k.startswith("_")} for r in runs]
     if args.json:
@@ -635,6 +637,19 @@ def cmd_spin_down(args):
     return 0
 
 
+def _check_spin_down_log(scene, log, path):
+    """A spin-down log is one rig set-up, the scene's: its loads must be the scene's, and a lubricant per row
+    (which the runs would not apply) is refused."""
+    name = Path(path).name
+    if "lubricant" in log.columns:
+        raise InputError(f"{name}: column", "lubricant", "a spin-down log runs the scene's lubricant: one log per "
+                         "lubricant (--set lubricant=NAME), without the column")
+    for col, F in (("Fa_N", scene.Fa), ("Fr_N", scene.Fr)):
+        if col in log.columns and np.any(np.abs(log[col] - F) > 1e-6 * max(F, 1)):
+            raise InputError("--log", path, f"its {col} differs from the scene's {col[:2]} = {F:g} N (another rig "
+                             "set-up)")
+
+
 def _print_spin_down(scene, J, pub, with_log):
     print(f"thermobear spin-down — {scene.name}: J = {J:g} kg m², T = {scene.T_C:g} °C; "
           "K*, n from t_max and φ_max (seed 001 eqs 20–21)")
@@ -643,7 +658,8 @@ def _print_spin_down(scene, J, pub, with_log):
     for r in pub:
         line = (f"{r['n0_rpm']:8.0f} {r['t_stop_s']:10.2f} {r['phi_max_rad']:10.2f} {r['K_star']:13.4e} "
                 f"{r['n']:6.3f} {r['T0_Nm']:12.4e}")
-        if with_log and r.get("T_log_Nm"):
-            line += f" {r['T_log_Nm']:10.4e} {100 * r['T_error']:+6.1f}%"
+        if with_log:
+            line += (f" {r['T_log_Nm']:10.4e}" if r["T_log_Nm"] is not None else f" {'-':>10s}")
+            line += f" {100 * r['T_error']:+6.1f}%" if r["T_error"] is not None else f" {'-':>7s}"
         print(line)
 
