@@ -179,6 +179,18 @@ def test_transient_bad_input_writes_nothing(capsys, tmp_path, args, field):
     assert not out_csv.exists() and not (tmp_path / "nofolder").exists()
 
 
+def test_schedule_or_log_that_is_a_folder_says_so(capsys, tmp_path):
+    """`--schedule /tmp` said 'file not found' for a folder that exists (so did a log path)."""
+    code, _, err = run(capsys, "transient", SYNTH, "--t-end", 60, "--schedule", tmp_path)
+    assert_bad_input(code, err, "--schedule")
+    assert err.strip().endswith("— is a folder, not a schedule file (TOML)")
+    code, _, err = run(capsys, "transient", SYNTH, "--t-end", 60, "--schedule", tmp_path / "none.toml")
+    assert err.strip().endswith("— file not found")
+    code, _, err = run(capsys, "compare", SYNTH, tmp_path)
+    assert_bad_input(code, err, "log")
+    assert err.strip().endswith("— is a folder, not a log file (CSV)")
+
+
 def test_transient_refuses_prescribed_temperature(capsys):
     code, _, err = run(capsys, "transient", SEED000, "--t-end", 10)
     assert_bad_input(code, err, "operation.T_C")

@@ -129,7 +129,7 @@ def read_log(path) -> RigLog:
     """
     p = Path(path)
     if not p.is_file():
-        raise InputError("log", str(path), "file not found")
+        raise InputError("log", str(path), "is a folder, not a log file (CSV)" if p.is_dir() else "file not found")
     try:
         text = p.read_text(encoding="utf-8-sig")         # Excel's "CSV UTF-8" starts with a BOM
     except UnicodeDecodeError:

@@ -326,7 +326,8 @@ def read_schedule(path, scene=None, t_end_s=None) -> list:
     each step is checked against the scene (:meth:`Scene.with_`) when one is given."""
     p = Path(path)
     if not p.is_file():
-        raise InputError("--schedule", str(path), "file not found")
+        raise InputError("--schedule", str(path), "is a folder, not a schedule file (TOML)" if p.is_dir()
+                         else "file not found")
     d = read_toml(str(p.resolve()))
     if set(d) - {"step"} or not isinstance(d.get("step"), list) or not d["step"]:
         raise InputError(f"{p.name}", ", ".join(sorted(d)) or None,
