@@ -41,6 +41,16 @@ def test_scene_bearing_errors_in_the_scenes_keys_and_units(keys, message):
         _scene(**keys)
 
 
+@pytest.mark.parametrize("Z", [0, 1, 2, 201])
+def test_number_of_balls_range_is_the_same_in_both_checks(Z):
+    """Z = 0 was refused as 'must be in [1, 200]' (the scene key's range) and Z = 2 as 'an integer >= 3' (the
+    bearing's): one range, [3, 200], in both messages."""
+    with pytest.raises(InputError, match=r"^bearing\.Z = \d+ — must be in \[3, 200\]"):
+        _scene(Z=Z)
+    with pytest.raises(InputError, match=r"number of balls must be an integer in \[3, 200\]$"):
+        tb.bearing("6208").with_(Z=Z)
+
+
 def test_preload_is_not_a_negative_clearance():
     """Pd_mm was documented '(negative: preload)' and accepted down to -10 by the table check, then refused by the
     bearing: the key's range is now what the bearing accepts."""

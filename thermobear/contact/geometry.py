@@ -38,6 +38,8 @@ __all__ = ["BallBearing", "bearing", "bearing_names", "bearing_series", "bearing
 KINDS = ("deep_groove", "angular_contact", "thrust")
 #: ISO 5753-1 radial internal clearance groups in the data file (normal, larger, larger still).
 CLEARANCE_GROUPS = ("CN", "C3", "C4")
+#: number of balls a bearing may have: 3 hold the rings (seed 001's three-ball rig), 200 beyond any catalogue bearing
+Z_RANGE = (3, 200)
 
 
 def _default_steel() -> Material:
@@ -128,8 +130,8 @@ class BallBearing:
                 raise InputError(f"{p}.{fld}", v, "must be a finite length > 0 [m]")
         if self.D >= self.dm:
             raise InputError(f"{p}.D", self.D, f"ball diameter must be smaller than the pitch diameter dm = {self.dm} m")
-        if int(self.Z) != self.Z or self.Z < 3:
-            raise InputError(f"{p}.Z", self.Z, "number of balls must be an integer >= 3")
+        if int(self.Z) != self.Z or not Z_RANGE[0] <= self.Z <= Z_RANGE[1]:
+            raise InputError(f"{p}.Z", self.Z, f"number of balls must be an integer in [{Z_RANGE[0]}, {Z_RANGE[1]}]")
         if self.D > self.dm * np.sin(np.pi / self.Z) * (1 + 1e-9):
             raise InputError(f"{p}.Z", self.Z, f"{self.Z} balls of D = {self.D * 1e3:.4g} mm do not fit on "
                              f"dm = {self.dm * 1e3:.4g} mm (need D <= dm sin(pi/Z))")
@@ -312,7 +314,7 @@ _MM_KEYS = {"D_mm": "D", "dm_mm": "dm", "Pd_mm": "Pd", "bore_mm": "bore",
 FIELDS = {
     "D_mm": Field.number("mm", 0.0, 1000.0, lo_open=True, doc="ball diameter", required=True),
     "dm_mm": Field.number("mm", 0.0, 5000.0, lo_open=True, doc="pitch diameter", required=True),
-    "Z": Field.integer("-", 1, 200, doc="number of balls", required=True),
+    "Z": Field.integer("-", *Z_RANGE, doc="number of balls", required=True),
     "fi": Field.number("-", doc="inner osculation r/D", required=True),
     "fo": Field.number("-", doc="outer osculation r/D", required=True),
     "Pd_mm": Field.number("mm", 0.0, 10.0, doc="diametral clearance (>= 0; a preload arises from the fits and "
