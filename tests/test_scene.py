@@ -261,6 +261,15 @@ def test_with_validates_like_a_scene_file(kw, field):
     assert field in str(e.value)
 
 
+def test_a_network_parameter_nothing_reads_is_refused():
+    """An undotted thermal parameter is a scene value the network's expressions read (scene.<name>); one no
+    expression reads was accepted and ignored silently."""
+    with pytest.raises(InputError, match=r"^thermal\.parameters\.foo = 1\.0 — network oil_jet_ball_bearing reads no "
+                                         r"scene value 'foo' \(it reads T_ambient_C, T_oil_in_C, oil_flow_m3_s\)"):
+        S004.with_(network_parameters={"foo": 1.0})
+    assert S004.with_(network_parameters={"T_ambient_C": 21.0}).network_parameters["T_ambient_C"] == 21.0
+
+
 def test_with_accepts_names_and_tables():
     s = S004.with_(lubricant={"name": "iso-vg-68-mineral"}, bearing="7210")
     assert s.lubricant.name == "iso-vg-68-mineral" and s.bearing.name == "7210"

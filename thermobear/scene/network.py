@@ -12,6 +12,7 @@ imposed nodes, ``[rig.map]`` targets) is checked against the network here, when 
 from __future__ import annotations
 
 import copy
+import re
 from pathlib import Path
 
 from thermobear.contact.materials import material_names
@@ -75,9 +76,15 @@ def _override(spec: dict, parameters: dict, name: str) -> None:
     """Apply ``"<element or node>.<parameter>" = value`` overrides, in place."""
     elements = spec.get("elements", [])
     nodes = spec.get("nodes", {})
+    read = set()
     for key, val in parameters.items():
-        if "." not in key:
-            continue                      # a context value the network reads as scene.<key>
+        if "." not in key:                # a context value the network reads as scene.<key>
+            read = read or _scene_names(spec)
+            if key not in read:
+                raise InputError(f"thermal.parameters.{key}", val, f"network {name} reads no scene value '{key}' "
+                                 f"(it reads {', '.join(sorted(read)) or 'none'}); a node's or element's parameter is "
+                                 "'<name>.<parameter>'")
+            continue
         target, param = key.rsplit(".", 1)
         hits = [e for e in elements if e.get("name") == target]
         if target in nodes:
@@ -93,6 +100,23 @@ def _override(spec: dict, parameters: dict, name: str) -> None:
             h[param] = val
             if isinstance(h.get("uncertainty"), dict):      # the scene's value replaces the estimate and its range
                 h["uncertainty"] = {k: v for k, v in h["uncertainty"].items() if k != param}
+
+
+def _scene_names(spec) -> set:
+    """The scene values a network's expressions read (``scene.<name>`` in any of its strings)."""
+    out: set = set()
+
+    def walk(v):
+        if isinstance(v, str):
+            out.update(re.findall(r"\bscene\.([A-Za-z_]\w*)", v))
+        elif isinstance(v, dict):
+            for x in v.values():
+                walk(x)
+        elif isinstance(v, (list, tuple)):
+            for x in v:
+                walk(x)
+    walk(spec)
+    return out
 
 
 def network_spec(network: str, scene_path: str | None = None, *, parameters: dict | None = None,
