@@ -4,7 +4,7 @@ import pytest
 
 from thermobear.errors import InputError
 from thermobear.contact.kinematics import (ball_kinematics, cage_speed, caged_ball_kinematics, common_cage_speed,
-                                   entrainment_speed)
+                                           entrainment_speed, free_orbital_speed)
 
 D, DM = 12.7e-3, 70e-3
 
@@ -97,3 +97,20 @@ def test_caged_equals_free_when_the_cage_runs_at_the_balls_own_speed():
 
 def test_common_cage_speed_weights_and_limits():
     assert common_cage_speed([[10.0, 20.0], [5.0, 7.0]], [[1.0, 3.0], [0.0, 0.0]]).tolist() == [17.5, 6.0]
+
+
+@pytest.mark.parametrize("args, field", [
+    ((np.nan, 0.0, 0.3, 0.28, 0.0127, 0.07), "omega_i"), ((500.0, np.inf, 0.3, 0.28, 0.0127, 0.07), "omega_o"),
+    ((500.0, 0.0, np.nan, 0.28, 0.0127, 0.07), "alpha_i"), ((500.0, 0.0, 0.3, 0.28, 0.0, 0.07), "D"),
+    ((500.0, 0.0, 0.3, 0.28, 0.1, 0.07), "D"), ((500.0, 0.0, 0.3, 0.28, 0.0127, 0.0), "dm"),
+    (([1.0, 2.0, 3.0], [1.0, 2.0], 0.3, 0.28, 0.0127, 0.07), "omega_i, omega_o"),
+])
+def test_ball_kinematics_refuse_what_has_no_kinematics_by_name(args, field):
+    """NaN speeds or angles, a ball of zero size or larger than the pitch circle, a pitch circle of zero: the
+    kinematics came back NaN or ±inf (or a ZeroDivisionError); refused naming the argument, as is a batch
+    whose arrays do not broadcast."""
+    for f in (ball_kinematics, free_orbital_speed):
+        with pytest.raises(InputError, match=f"^{field}"):
+            f(*args)
+    with pytest.raises(InputError, match="^beta"):
+        ball_kinematics(500.0, 0.0, 0.3, 0.28, 0.0127, 0.07, beta=np.nan)

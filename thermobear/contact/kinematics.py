@@ -124,10 +124,34 @@ def ball_kinematics(omega_i, omega_o, alpha_i, alpha_o, D, dm, control: str = "o
     (23.75, 5.24, 5.24)
     """
     _check_control(control)
-    wi, wo = np.asarray(omega_i, dtype=float), np.asarray(omega_o, dtype=float)
-    ai, ao = np.asarray(alpha_i, dtype=float), np.asarray(alpha_o, dtype=float)
+    wi, wo, ai, ao, D, dm = _inputs(omega_i, omega_o, alpha_i, alpha_o, D, dm)
+    if beta is not None and not np.all(np.isfinite(np.asarray(beta, dtype=float))):
+        raise InputError("beta", beta, "the imposed pitch angle must be finite [rad]")
     omega_c, omega_R, beta, co, ci = _cage_spin(wi, wo, ai, ao, D, dm, control, beta)
     return _speeds(wi, wo, ai, ao, beta, omega_c, omega_R, co, ci)
+
+
+def _inputs(omega_i, omega_o, alpha_i, alpha_o, D, dm) -> tuple:
+    """The ring speeds and contact angles as float arrays (finite, broadcasting together), D and dm as floats
+    (0 < D < dm); else an InputError naming the argument."""
+    arrs = []
+    for name, v, unit in (("omega_i", omega_i, "rad/s"), ("omega_o", omega_o, "rad/s"), ("alpha_i", alpha_i, "rad"),
+                          ("alpha_o", alpha_o, "rad")):
+        a = np.asarray(v, dtype=float)
+        if not np.all(np.isfinite(a)):
+            raise InputError(name, v, f"must be finite [{unit}]")
+        arrs.append(a)
+    try:
+        np.broadcast_shapes(*(a.shape for a in arrs))
+    except ValueError:
+        raise InputError("omega_i, omega_o, alpha_i, alpha_o", [a.shape for a in arrs],
+                         "must broadcast together (numpy rules)") from None
+    D, dm = (float(np.asarray(v, dtype=float)) for v in (D, dm))
+    if not (np.isfinite(dm) and dm > 0.0):
+        raise InputError("dm", dm, "the pitch diameter must be finite and > 0 [m]")
+    if not (np.isfinite(D) and 0.0 < D < dm):
+        raise InputError("D", D, f"the ball diameter must lie in (0, dm = {dm:g}) [m]")
+    return (*arrs, D, dm)
 
 
 def free_orbital_speed(omega_i, omega_o, alpha_i, alpha_o, D, dm, control: str = "outer"):
@@ -139,8 +163,8 @@ def free_orbital_speed(omega_i, omega_o, alpha_i, alpha_o, D, dm, control: str =
     True
     """
     _check_control(control)
-    wi, wo = np.asarray(omega_i, dtype=float), np.asarray(omega_o, dtype=float)
-    return _cage_spin(wi, wo, np.asarray(alpha_i, dtype=float), np.asarray(alpha_o, dtype=float), D, dm, control)[0]
+    wi, wo, ai, ao, D, dm = _inputs(omega_i, omega_o, alpha_i, alpha_o, D, dm)
+    return _cage_spin(wi, wo, ai, ao, D, dm, control)[0]
 
 
 def _speeds(wi, wo, ai, ao, beta, omega_c, omega_R, co, ci) -> BallKinematics:
