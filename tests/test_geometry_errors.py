@@ -11,7 +11,7 @@ import pytest
 
 import thermobear as tb
 from thermobear.app.cli import main
-from thermobear.contact.geometry import bearing_from_dict, bearing_table
+from thermobear.contact.geometry import bearing, bearing_from_dict, bearing_table
 from thermobear.errors import InputError
 from thermobear.scene.scene import scene_from_dict
 
@@ -77,3 +77,15 @@ def test_unknown_designation_points_to_the_command_that_lists_the_series(capsys)
     assert main(["init", "6204-2XX", "--lubrication", "grease"]) == 2
     err = capsys.readouterr().err
     assert "close: 6204" in err and "thermobear list bearings --series" in err
+
+
+@pytest.mark.parametrize("kw, field", [
+    (dict(Z=float("nan")), "Z"), (dict(Z=None), "Z"), (dict(Z=float("inf")), "Z"), (dict(Pd="x"), "Pd"),
+    (dict(alpha0="x"), "alpha0"), (dict(C0=float("inf")), "C0"), (dict(width=float("nan")), "width"),
+    (dict(foo=1), "foo"), (dict(K_nominal=(1.0, 1.0, 1.0)), "K_nominal"),
+])
+def test_bearing_with_refuses_what_is_not_a_finite_number_or_a_field_by_name(kw, field):
+    """BallBearing.with_ (and the constructor) answered these with bare ValueError / TypeError /
+    OverflowError (Z = NaN, None, inf; Pd or alpha0 text; an unknown keyword), or accepted C0 = inf."""
+    with pytest.raises(InputError, match=rf"^bearing\[6208\]\.{field}"):
+        bearing("6208").with_(**kw)

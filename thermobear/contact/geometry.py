@@ -20,7 +20,7 @@ from __future__ import annotations
 import difflib
 import numbers
 import re
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field, fields, replace
 
 import numpy as np
 
@@ -130,6 +130,12 @@ class BallBearing:
                 raise InputError(f"{p}.{fld}", v, "must be a finite length > 0 [m]")
         if self.D >= self.dm:
             raise InputError(f"{p}.D", self.D, f"ball diameter must be smaller than the pitch diameter dm = {self.dm} m")
+        for fld, unit in (("Z", "-"), ("alpha0", "rad"), ("Pd", "m"), ("bore", "m"), ("outer_diameter", "m"),
+                          ("width", "m"), ("C0", "N"), ("C", "N")):
+            v = getattr(self, fld)
+            if (v is not None or fld == "Z") and (isinstance(v, bool) or not isinstance(v, numbers.Real)
+                                                   or not np.isfinite(v)):
+                raise InputError(f"{p}.{fld}", v, f"must be a finite number [{unit}]")
         if int(self.Z) != self.Z or not Z_RANGE[0] <= self.Z <= Z_RANGE[1]:
             raise InputError(f"{p}.Z", self.Z, f"number of balls must be an integer in [{Z_RANGE[0]}, {Z_RANGE[1]}]")
         if self.D > self.dm * np.sin(np.pi / self.Z) * (1 + 1e-9):
@@ -138,7 +144,7 @@ class BallBearing:
         for fld in ("fi", "fo"):
             v = getattr(self, fld)
             if isinstance(v, bool) or not isinstance(v, numbers.Real):
-                raise InputError(f"{p}.{fld}", v, "osculation must be a number in (0.5, 0.6] (groove radius / ball diameter)")
+                raise InputError(f"{p}.{fld}", v, "osculation must be a number (groove radius / ball diameter)")
             check_limit("osculation", v, f"{p}.{fld}", warn=False)
         A = (self.fi + self.fo - 1.0) * self.D
         a0, Pd = self.alpha0, self.Pd
@@ -293,6 +299,10 @@ class BallBearing:
         Derived clearance data follow the change: a new ``Pd`` re-derives ``alpha0`` of a
         deep groove bearing, a new ``alpha0`` re-derives ``Pd``; either drops ``clearance_group``
         unless it is given too."""
+        unknown = sorted(set(changes) - {f.name for f in fields(self) if f.init})
+        if unknown:
+            raise InputError(f"bearing[{self.name}].{unknown[0]}", changes[unknown[0]],
+                             f"unknown field; accepted: {', '.join(f.name for f in fields(self) if f.init)}")
         kind = changes.get("kind", self.kind)
         if ("Pd" in changes or "alpha0" in changes) and "clearance_group" not in changes:
             changes["clearance_group"] = None # the group no longer names where Pd came from
