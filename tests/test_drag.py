@@ -139,3 +139,14 @@ def test_cavity_oil_fraction_by_supply():
         assert X[1] == pytest.approx(X[0] / 2, rel=1e-12)
     for supply in ("grease", "oil_bath", "dry_film"):
         assert not cavity_oil_fraction(supply, W, n, dm).any()
+
+
+@pytest.mark.parametrize("key, value", [("D", np.inf), ("dm", np.inf), ("omega_c", np.inf), ("rho_oil", np.inf),
+                                        ("mu_oil", np.inf), ("Z", np.nan), ("A_c", np.nan), ("A_c", -1e-4)])
+def test_drag_refuses_infinite_or_undefined_inputs_by_name(key, value):
+    """An infinite diameter, speed, density or viscosity has no finite drag: they passed the check ("the formulas
+    take it as their limit") and came back NaN (or a ZeroDivisionError, or a bare ValueError for Z = NaN)."""
+    args = dict(Z=15, D=12.7e-3, dm=70e-3, omega_c=300.0, X=0.01, rho_oil=857.0, mu_oil=0.0494, T_K=303.15)
+    args[key] = value
+    with pytest.raises(InputError, match=f"^{key} = "):
+        drag_loss(**args)

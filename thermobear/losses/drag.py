@@ -33,6 +33,8 @@ definitions found nothing beyond seed 004's wording):
 """
 from __future__ import annotations
 
+import math
+import numbers
 import warnings
 from dataclasses import dataclass
 
@@ -51,13 +53,13 @@ _P_ATM = 101325.0
 
 
 def _pos(name, x, allow_zero=False):
-    """``x`` (a Python float, or as a float array) checked > 0 (>= 0) by its minimum, which NaN
-    fails too (an infinite value passes: the formulas take it as their limit)."""
+    """``x`` (a Python float, or as a float array) checked finite and > 0 (>= 0) (NaN and ±inf fail: an infinite
+    density, speed or diameter has no finite drag)."""
     if isinstance(x, float):
-        lo, a = x, x
+        lo, a = (x if math.isfinite(x) else -1.0), x
     else:
         a = np.asarray(x, dtype=float)
-        lo = 1.0 if above(a, 0.0, not allow_zero) else -1.0
+        lo = 1.0 if above(a, 0.0, not allow_zero) and np.all(np.isfinite(a)) else -1.0
     if not (lo >= 0 if allow_zero else lo > 0):
         raise InputError(name, x, "must be finite and " + (">= 0" if allow_zero else "> 0"))
     return a
@@ -352,8 +354,10 @@ def drag_loss(Z, D, dm, omega_c, X, rho_oil, mu_oil, T_K, p_Pa=_P_ATM, cd_method
     (26.8, 2287, 0.403)
     """
     if check:
-        if int(Z) != Z or Z < 1:
+        if isinstance(Z, bool) or not isinstance(Z, numbers.Real) or not math.isfinite(Z) or int(Z) != Z or Z < 1:
             raise InputError("Z", Z, "number of balls must be an integer >= 1")
+        if A_c is not None:
+            _pos("A_c", A_c)
         _pos("D", D)
         _pos("dm", dm)
         omega_c, X = _pos("omega_c", omega_c), _fraction(X)
