@@ -180,3 +180,14 @@ def test_deep_groove_axial_load_needs_C0_and_unknown_series_lists_known():
                    S2=36.5, K_z=3.1)
     with pytest.raises(InputError, match="known: .*62"):
         skf_constants("deep_groove", "99")
+
+
+@pytest.mark.parametrize("kw, field", [(dict(M_seal_Nmm=np.nan), "M_seal_Nmm"), (dict(M_seal_Nmm=-5.0), "M_seal_Nmm"),
+                                       (dict(V_M=np.nan), "V_M"), (dict(H_mm=-1.0), "H_mm")])
+def test_skf_moment_refuses_an_undefined_seal_moment_or_drag_input_by_name(kw, field):
+    """A NaN seal moment or drag factor gave M_total = NaN; a negative seal moment a smaller friction."""
+    from thermobear.contact.geometry import bearing
+    from thermobear.losses.skf import skf_friction
+    with pytest.raises(InputError, match=f"^{field}"):
+        skf_friction(bearing("6210"), 20.0, 3000, 0.0, 1000.0, lubrication="oil_bath" if "V_M" in kw or "H_mm" in kw
+                     else "oil_jet", **kw)

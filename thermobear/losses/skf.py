@@ -485,6 +485,10 @@ def skf_moment(d_mm, D_mm, kind, nu_cSt, n_rpm, Fa, Fr, *, R1, S1, R2=None, R3=N
         for name, val in (("R2", R2), ("S2", S2)) + ((("R3", R3), ("S3", S3)) if kind == "angular_contact" else ()):
             if val is None:
                 raise InputError(name, None, f"SKF constant required for a {kind} bearing")
+    _check_positive("M_seal_Nmm", M_seal_Nmm, allow_zero=True)
+    for name, val in (("V_M", V_M), ("H_mm", H_mm)):
+        if val is not None:
+            _check_positive(name, val, allow_zero=True)
     if lubrication == "oil_bath" and V_M is None and H_mm is None:
         raise InputError("oil_level_mm", None, "oil-bath lubrication needs the oil level H above the lowest "
                          "point of the outer-ring raceway [mm] (or SKF's drag factor V_M)")
