@@ -249,3 +249,18 @@ def test_a_machines_clearance_takes_the_seats_of_its_network(tmp_path):
     assert c2["shaft_fit"] == "30.0 µm" and "interference_um" in c2["fits_from"]
     with pytest.raises(InputError, match="I_inner_m"):
         operating_clearance(s.bearing, I_inner_m=float("nan"))
+
+
+def test_rating_samples_read_each_samples_lubricant_draws():
+    """An uncertainty sample draws the oil's viscosity (lubricant.nu100_cSt): its κ is that of its own oil at its
+    own temperature (the bands read the nominal oil's, so κ, a_ISO and L10m moved with the temperature alone)."""
+    st = tb.steady_state(S)
+    lo, hi = S.with_(samples={"lubricant.nu100_cSt": 8.0}), S.with_(samples={"lubricant.nu100_cSt": 9.6})
+    out = rating_samples([lo, hi, S], [st, st, st])
+    T = st.T_C
+    for k, sc in enumerate((lo, hi)):
+        lub = sc.lubricant.sampled({"nu100_cSt": np.array([sc.samples["lubricant.nu100_cSt"]])})
+        T_op = 0.5 * (T[st.roles["inner"]] + T[st.roles["outer"]])
+        want = operating_lives(sc, T_op, float(np.ravel(lub.nu(T_op))[0]) * 1e-6)["kappa"]
+        assert out["ratings.kappa"][k] == pytest.approx(want, rel=1e-12)
+    assert out["ratings.kappa"][0] < out["ratings.kappa"][2] < out["ratings.kappa"][1]   # thinner oil, lower κ

@@ -335,6 +335,17 @@ def operating_lives(scene, T_op_C, nu_m2_s=None) -> dict:
             "L10_h": L10 * hours, "L10m_h": _num(a_iso * (L10 * hours))}
 
 
+def _sampled_lubricant(scenes):
+    """The lubricant of scenes of one group (the same drawn keys) with each one's drawn values (``lubricant.<key>`` of
+    :attr:`Scene.samples`) per point (:meth:`~thermobear.lubrication.lubricant.Lubricant.sampled`), the
+    scenes' own where nothing is drawn."""
+    keys = [k for k in scenes[0].samples if k.startswith("lubricant.")]      # (the group's scenes share them)
+    if not keys:
+        return scenes[0].lubricant
+    draws = {k[len("lubricant."):]: np.array([s.samples[k] for s in scenes], float) for k in keys}
+    return scenes[0].lubricant.sampled(draws)
+
+
 #: the design answers an uncertainty band gives (:func:`rating_samples`): output name → unit
 RATING_OUTPUTS = {"ratings.T_operating_C": "°C", "ratings.kappa": "-", "ratings.a_ISO": "-", "ratings.L10m_h": "h",
                   "ratings.clearance_op_um": "µm"}
@@ -361,13 +372,13 @@ def rating_samples(scenes, states) -> dict:
     for i, (sc, st) in enumerate(zip(scenes, states)):
         if st is not None and sc.n_rpm > 0:
             groups.setdefault((sc.bearing, sc.Fa, sc.Fr, sc.Fz, sc.n_rpm, sc.rotating, sc.contamination, sc.shaft_fit,
-                               sc.housing_fit, tuple(sorted(st.roles.items()))), []).append(i)
+                               sc.housing_fit, tuple(sorted(st.roles.items())),
+                               tuple(sorted(k for k in sc.samples if k.startswith("lubricant.")))), []).append(i)
     for idx in groups.values():
         sc, st0 = scenes[idx[0]], states[idx[0]]
         T = {k: np.array([states[i].T_C[k] for i in idx]) for k in st0.T_C}
         T_op = operating_temperature_C(T, st0.roles)
-        nu = np.array([float(scenes[i].lubricant.nu(t)) for i, t in zip(idx, T_op.tolist())]) * 1e-6   # [cSt] → [m²/s]
-        lv = operating_lives(sc, T_op, nu)
+        lv = operating_lives(sc, T_op, _sampled_lubricant([scenes[i] for i in idx]).nu(T_op) * 1e-6)  # cSt → m²/s
         for key, v in (("T_operating_C", T_op), ("kappa", lv["kappa"]), ("a_ISO", lv["a_ISO"]), ("L10m_h", lv["L10m_h"])):
             out[f"ratings.{key}"][idx] = v
         if sc.bearing.kind == "thrust":
