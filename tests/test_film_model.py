@@ -258,7 +258,8 @@ def test_a_heat_up_started_near_the_lubricants_limit_cools_without_asking_past_i
     (250 °C), and the heat-up was refused as bad input (exit 2) before it could cool; the film grid now ends at
     the lubricant's limit, and the jet cools the bearing."""
     s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        tr = tb.transient(s, 600.0, T0_C=249.0, t_eval=[0.0, 600.0])
-    assert tr.T_C["inner_ring"][0] == pytest.approx(249.0) and tr.T_C["inner_ring"][-1] < 200.0
+    for T0 in (249.0, 250.0, -40.0):              # (at the range's ends themselves: a cell of zero width, NaN)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            tr = tb.transient(s, 600.0, T0_C=T0, t_eval=[0.0, 600.0])
+        assert tr.T_C["inner_ring"][0] == pytest.approx(T0) and -40.0 < tr.T_C["inner_ring"][-1] < 200.0

@@ -532,7 +532,10 @@ class _FilmCells:
         reaching past its limit ends there: the heat-up beyond is a runaway, :func:`_check_limit`)."""
         j = math.floor((T_film - self.T0) / self.step)
         lo, hi = T_LUBRICANT_REFUSE_C
-        return max(self.T0 + j * self.step, lo), min(self.T0 + (j + 1) * self.step, hi)
+        a, b = max(self.T0 + j * self.step, lo), min(self.T0 + (j + 1) * self.step, hi)
+        if b - a < 1e-9 * self.step:          # at the range's end itself: the last cell inside it
+            a, b = (b - self.step, b) if b >= hi else (a, a + self.step)
+        return a, b
 
     def load(self, k: int, alt, T=None):
         """One-point loads of alternative ``k`` (``alt``): with the films at ``T`` [°C], or its own (not of the
