@@ -8,7 +8,6 @@ import pytest
 import thermobear as tb
 from thermobear.errors import InputError, ThermalRunaway
 from thermobear.coupled import scene_load, scene_losses, solve, steady_state, steady_states, transient
-from thermobear.coupled.pipeline import film_temperature_C
 from thermobear.coupled.transient import _film_of, point_model
 from thermobear.models import choose_models, film_options, open_contacts
 from thermobear.scene.network import network_spec
@@ -320,11 +319,15 @@ def test_transient_starts_from_a_dict_of_node_temperatures(name):
     assert one.T_C["inner_ring"][0] == 40.0 and one.completed and np.all(np.isfinite(one.P_W))
 
 
-def test_film_temperature_of_a_dict_start_is_the_mean_of_the_contact_nodes_it_gives():
-    roles = {"ball": "balls", "inner": "inner_race", "outer": "outer_race"}
+def test_film_temperature_of_a_dict_start_is_the_mean_of_the_contact_nodes_where_the_integrator_starts_them():
+    """The nodes a dict start leaves out start at the ambient (as solve_transient starts them): the film
+    temperature, the first cell and the first operating clearance are those of the state integrated."""
+    roles = {"ball": "balls", "inner": "inner_race", "outer": "outer_race", "oil": "oil_air"}
     assert _film_of({"balls": 30.0, "inner_race": 36.0, "outer_race": 26.0}, roles, S004) == 30.5
-    assert _film_of({"balls": 30.0, "inner_race": 36.0}, roles, S004) == 32.0
-    assert _film_of({"inner_ring": 40.0}, roles, S004) == film_temperature_C(S004)
+    assert _film_of({"balls": 30.0, "inner_race": 36.0}, roles, S004) == (60.0 + 36.0 + S004.T_ambient_C) / 4
+    assert _film_of({"inner_ring": 40.0}, roles, S004) == S004.T_ambient_C
+    tr = transient(S004, 1.0, T0_C={"balls": 60.0}, t_eval=[0.0, 1.0])
+    assert [tr.T_C[n][0] for n in ("balls", "inner_race", "outer_race")] == [60.0, S004.T_ambient_C, S004.T_ambient_C]
 
 
 def test_dict_start_at_the_operating_clearance_is_the_uniform_start():

@@ -183,16 +183,16 @@ def _report(r, shape):
 
 def _film_of(T_state, roles, scene) -> float:
     """Mean contact temperature [°C], ¼ (2 T_ball + T_inner + T_outer), of a start temperature or a state
-    (node → °C): the mean over the contact nodes it gives (a dict start may give some of them: their
-    weighted mean), else the scene's default (:func:`~thermobear.coupled.pipeline.film_temperature_C`)."""
+    (node → °C; a dict start's nodes left out at the start the integrator gives them, :func:`_T_nodes`), else
+    the scene's default (:func:`~thermobear.coupled.pipeline.film_temperature_C`)."""
     if not isinstance(T_state, dict):
         return float(T_state) if np.ndim(T_state) == 0 and T_state is not None else film_temperature_C(scene)
-    given = [(w, T_state[roles[r]]) for r, w in _FILM_WEIGHTS if roles[r] in T_state]
-    T = sum(w * float(v) for w, v in given) / sum(w for w, _ in given) if given else np.nan
+    T_all = _T_nodes(T_state, roles, scene)
+    T = sum(w * float(T_all[roles[r]]) for r, w in _FILM_WEIGHTS)
     return float(T) if np.isfinite(T) else film_temperature_C(scene)
 
 
-_FILM_WEIGHTS = (("ball", 2.0), ("inner", 1.0), ("outer", 1.0))   # of the mean contact temperature (_film_of)
+_FILM_WEIGHTS = (("ball", 0.5), ("inner", 0.25), ("outer", 0.25))   # of the mean contact temperature (_film_of)
 
 
 def _pieces(scenes, t_end_s):
@@ -419,7 +419,7 @@ def _film_weights(net, roles) -> np.ndarray:
     """(n,): the film temperature c · T of node temperatures T — the mean contact temperature,
     ¼ (2 T_ball + T_inner + T_outer) = ½ (x_inner + x_outer) (:func:`_film_of`)."""
     c = np.zeros(len(net.nodes))
-    for role, w in (("ball", 0.5), ("inner", 0.25), ("outer", 0.25)):
+    for role, w in _FILM_WEIGHTS:
         c[net.index[roles[role]]] += w
     return c
 
@@ -635,10 +635,12 @@ def _piece_model(sc: Scene, alts, load, prepared, cells: _FilmCells, nodes, domi
 
 def _T_nodes(T_state, roles, scene) -> dict:
     """Node → °C of a piece's start state (a uniform start: the roles' nodes at that temperature; a dict start
-    that leaves a role's node out: that node imposed, else at the scene's film temperature, as :func:`_film_of`)."""
+    that leaves a role's node out: that node imposed, else where the integrator starts it,
+    :func:`~thermobear.thermal.solve_transient`: at the ambient)."""
     if isinstance(T_state, dict):
         missing = [n for n in roles.values() if n not in T_state]
-        return {**{n: film_temperature_C(scene) for n in missing}, **scene.T_fixed_C, **T_state} if missing else T_state
+        start = scene.T_fixed_C.get("ambient", scene.T_ambient_C)
+        return {**{n: start for n in missing}, **scene.T_fixed_C, **T_state} if missing else T_state
     return {n: float(T_state) for n in roles.values()}
 
 

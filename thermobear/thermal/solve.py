@@ -345,19 +345,19 @@ class _Boundary:
 
 def _start(net, T0_C, bnd=None):
     """(B, n) start temperatures: fixed nodes at theirs (at t = 0), free nodes at ``T0_C`` (°C, a
-    number, a (B,) array, or node → °C), default the fixed node ``ambient`` (else the mean fixed T)."""
+    number, a (B,) array, or node → °C), default (and the nodes a dict leaves out) the fixed node
+    ``ambient`` (else the mean fixed T)."""
     free, fixed = ~net.fixed, net.fixed
     T = net.T_fixed_K.copy() if bnd is None else bnd.T_K(0.0)
-    if T0_C is None:
-        a = net.index.get("ambient")
+    a = net.index.get("ambient")
+    if T0_C is None or isinstance(T0_C, dict):
         T[:, free] = (T[:, [a]] if a is not None and fixed[a] else T[:, fixed].mean(axis=1, keepdims=True))
-    elif isinstance(T0_C, dict):
-        T[:, free] = T[:, fixed].mean(axis=1, keepdims=True)
+    if isinstance(T0_C, dict):
         for name, v in T0_C.items():
             if name not in net.index or fixed[net.index[name]]:
                 raise InputError("T0_C", name, "a free node name")
             T[:, net.index[name]] = np.asarray(v, float) + _C0
-    else:
+    elif T0_C is not None:
         T[:, free] = np.asarray(T0_C, float).reshape(-1, 1) + _C0
     if not np.all(np.isfinite(T)):
         raise InputError("T0_C", T0_C, "start temperatures must be finite [°C]")
