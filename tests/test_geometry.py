@@ -135,5 +135,5 @@ def test_materials_by_catalogue_name_in_with_and_the_constructor():
     assert BallBearing(D=11.5e-3, dm=43.5e-3, Z=7, fi=0.52, fo=0.53, ring_material="m50").ring_material == tb.material("m50")
     with pytest.raises(InputError, match=r"ball_material = 7 — must be a Material"):
         bearing("6208").with_(ball_material=7)
-    with pytest.raises(InputError, match="^material = 'x'"):
+    with pytest.raises(InputError, match=r"^bearing\[6208\]\.ring_material = 'x' — unknown name"):
         bearing("6208").with_(ring_material="x")

@@ -368,7 +368,7 @@ def test_bearing_losses_take_catalogue_names_of_bearing_and_oil():
 
 
 @pytest.mark.parametrize("args, field", [((5, OIL), "brg"), ((B7210, 5), "oil"), ((B7210, None), "oil"),
-                                         (("no-such-bearing", OIL), "bearing"), ((B7210, "no-such-oil"), "lubricant")])
+                                         (("no-such-bearing", OIL), "brg"), ((B7210, "no-such-oil"), "oil")])
 def test_bearing_losses_refuse_other_objects_by_name(args, field):
     with pytest.raises(InputError, match=f"^{field} ="):
         bearing_losses(*args, 450.0, 650.0, 4800.0, 50.0, **JET)
@@ -412,3 +412,13 @@ def test_per_point_parameters_of_another_shape_are_refused_by_name():
 def test_friction_coefficients_flow_roughness_and_seal_torque_are_checked_as_a_scenes(kw, message):
     with pytest.raises(InputError, match=message):
         bearing_losses(B7210, OIL, 450.0, 650.0, 4800.0, 50.0, **{**JET, **kw})
+
+
+def test_a_mistyped_catalogue_name_is_refused_under_the_arguments_name():
+    """The catalogue's answer ('unknown catalog name; close: 6208 …') under the name of the argument the user gave
+    (it named the catalogue's own field: 'bearing = …', 'material = …')."""
+    import thermobear as tb
+    with pytest.raises(InputError, match=r"^brg = '62O8' — unknown catalog name; close: .*6208"):
+        tb.bearing_losses("62O8", "seed004-mineral", Fa=0.0, Fr=500.0, n_rpm=1000.0, T_C=40.0)
+    with pytest.raises(InputError, match=r"^shaft_material = 'steel-typo' — unknown name; close: steel-c45"):
+        tb.operating_clearance(tb.bearing("6208"), shaft="k5", shaft_material="steel-typo")

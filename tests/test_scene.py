@@ -301,3 +301,9 @@ def test_schedule_of_numpy_numbers_runs_as_of_floats():
     a = tb.transient(S004, 20.0, schedule=[(np.float32(10.0), {"n_rpm": np.int64(3500), "Fa": np.array(500.0)})])
     b = tb.transient(S004, 20.0, schedule=[(10.0, {"n_rpm": 3500.0, "Fa": 500.0})])
     assert a.P_W[-1] == b.P_W[-1]
+
+
+def test_an_integer_beyond_the_float_range_is_refused_by_name():
+    """n_rpm = 10**400 (a Python int) raised a bare OverflowError converting to float."""
+    with pytest.raises(InputError, match=r"^n_rpm = "):
+        S004.with_(n_rpm=10**400)

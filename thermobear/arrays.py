@@ -37,7 +37,10 @@ def instance_of(value, cls, field: str, lookup=None, *, needs=()):
     if isinstance(value, cls) or (needs and all(hasattr(value, a) for a in needs)):
         return value
     if lookup is not None and isinstance(value, str):
-        return lookup(value)
+        try:
+            return lookup(value)
+        except InputError as exc:          # the catalogue's answer, under the argument's name
+            raise InputError(field, value, exc.expected) from None
     shown = value if isinstance(value, (str, int, float)) else type(value).__name__
     raise InputError(field, shown, f"must be a {cls.__name__}" + (" or its catalogue name" if lookup else ""))
 

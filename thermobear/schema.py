@@ -135,7 +135,10 @@ def real_number(value):
         value = value[()]
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
         return None
-    return float(value)
+    try:
+        return float(value)
+    except OverflowError:                 # an integer beyond the float range: refused as not finite
+        return float("inf") if value > 0 else float("-inf")
 
 
 def check_value(value, f: Field, where: str):
