@@ -264,3 +264,13 @@ def test_rating_samples_read_each_samples_lubricant_draws():
         want = operating_lives(sc, T_op, float(np.ravel(lub.nu(T_op))[0]) * 1e-6)["kappa"]
         assert out["ratings.kappa"][k] == pytest.approx(want, rel=1e-12)
     assert out["ratings.kappa"][0] < out["ratings.kappa"][2] < out["ratings.kappa"][1]   # thinner oil, lower κ
+
+
+def test_a_machine_with_one_fit_stated_keeps_the_other_rings_seat():
+    """A machine scene that states the shaft's fit only: the housing sits on its network's seat (it fell back to
+    the load-typical housing fit and said the fits came from the load)."""
+    raw = {**S.raw, "bearing": {**S.raw["bearing"], "shaft_fit": "m5"}}
+    s = scene_from_dict(raw, path=S.path)
+    c = scene_ratings(s, _steady(50.0, 50.0)).clearance_um
+    assert c["shaft_fit"] == "m5" and c["housing_fit"] == "H7 (-21.5 µm)"
+    assert "housing H7 (probable)" in c["fits_from"] and "other ring's fit from the scene" in c["fits_from"]

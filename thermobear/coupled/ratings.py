@@ -215,18 +215,24 @@ def scene_clearance(scene, T_C: dict, roles: dict) -> dict:
     given = scene.shaft_fit is not None and scene.housing_fit is not None
     out = {"shaft_fit": shaft, "housing_fit": housing, "fits_from": "the scene" if given else typ[2]}
     seats = {}
-    if isinstance(scene.network, Machine) and scene.shaft_fit is None and scene.housing_fit is None:
-        # a machine described by its dimensions: the seats of its network's joints (its interference or the
-        # usual fit, thermobear.thermal.builders.seat_interferences), the shaft's and housing's materials
+    if isinstance(scene.network, Machine) and not given:
+        # a machine described by its dimensions: a ring whose fit the scene does not state sits on the seat of its
+        # network's joint (its interference or the usual fit, thermobear.thermal.builders.seat_interferences)
         m = scene.network
         (I_i, why_i), (I_o, why_o) = seat_interferences(m)
-        shaft = housing = None
-        seats = dict(I_inner_m=I_i, I_outer_m=I_o, shaft_bore=m.shaft.bore, shaft_material=material(m.shaft.material),
+        seats = dict(shaft_bore=m.shaft.bore, shaft_material=material(m.shaft.material),
                      housing_material=material(m.housing.material))
         label = (lambda I, why: f"{why.split(' ')[0]} ({I * 1e6:.1f} µm)" if "probable" in why  # noqa: E731
                  else f"{I * 1e6:.1f} µm")
-        out.update(shaft_fit=label(I_i, why_i), housing_fit=label(I_o, why_o),
-                   fits_from=f"the machine's seats, as its network's joints: shaft {why_i}, housing {why_o}")
+        whys = []
+        if scene.shaft_fit is None:
+            shaft, seats["I_inner_m"], out["shaft_fit"] = None, I_i, label(I_i, why_i)
+            whys.append(f"shaft {why_i}")
+        if scene.housing_fit is None:
+            housing, seats["I_outer_m"], out["housing_fit"] = None, I_o, label(I_o, why_o)
+            whys.append(f"housing {why_o}")
+        out["fits_from"] = ("the machine's seats, as its network's joints: " + ", ".join(whys)
+                            + ("" if len(whys) == 2 else "; the other ring's fit from the scene"))
     if b.bore is None or b.outer_diameter is None:
         out["fits_from"] = "no fit: the bearing has no bore / outside diameter"
         shaft = housing = None

@@ -410,8 +410,11 @@ def _settled_jump(kept, alts, load, pre, fc, T_state, roles, last_film, elapsed_
     if last_film is None or abs(last_film[0]) * elapsed_s > _FILM_SETTLED_K:
         return None
     T_end = _film_of(T_state, roles, sc_p)
-    held = _piece_model(sc_p, alts, load, pre if pre.serves(sc_p) else None, fc, (T_end,))
-    step = _loss_step(sources, heat_sources(held), held.network, T_state)
+    try:
+        held = _piece_model(sc_p, alts, load, pre if pre.serves(sc_p) else None, fc, (T_end,))
+        step = _loss_step(sources, heat_sources(held), held.network, T_state)
+    except (InputError, SolverError):      # a check after the run: it never costs the run (no warning then)
+        return None
     return _jump_warning(T_end, t_s, None, step) if step > _JUMP_REL else None
 
 
