@@ -263,3 +263,25 @@ def test_a_heat_up_started_near_the_lubricants_limit_cools_without_asking_past_i
             warnings.simplefilter("ignore")
             tr = tb.transient(s, 600.0, T0_C=T0, t_eval=[0.0, 600.0])
         assert tr.T_C["inner_ring"][0] == pytest.approx(T0) and -40.0 < tr.T_C["inner_ring"][-1] < 200.0
+
+
+def test_the_end_of_run_jump_check_never_costs_the_run(tmp_path, monkeypatch):
+    """The check after a run that ends settled inside a film cell solves the loads once more; if that fails, the
+    finished heat-up is still the answer (without the warning)."""
+    from thermobear.app.cli import main
+    tr_mod = importlib.import_module("thermobear.coupled.transient")
+    path = tmp_path / "c.toml"
+    assert main(["init", "16002", "--lubrication", "oil-bath", "--out", str(path)]) == 0
+    s = tb.load_scene(path).with_(T_ambient_C=-20.0, models={"load_model": "film", "high_speed": False})
+    piece = tr_mod._piece_model
+
+    def failing(sc, alts, load, prepared, cells, nodes, dominant=None):
+        if len(nodes) == 1:
+            raise tb.NoConvergence("film loads: no solution here", iterations=1)
+        return piece(sc, alts, load, prepared, cells, nodes, dominant)
+    monkeypatch.setattr(tr_mod, "_piece_model", failing)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        tr = tb.transient(s, 1e5, t_eval=[0.0, 1e5])
+    assert tr.completed and tr.T_C["inner_ring"][-1] == pytest.approx(-6.9, abs=0.1)    # at the jump
+    assert not [w for w in tr.warnings if w.quantity == "film load jump"]
