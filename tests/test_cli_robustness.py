@@ -11,6 +11,7 @@ import json
 import math
 import os
 import tomllib
+from pathlib import Path
 
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -154,3 +155,14 @@ def test_a_non_utf8_scene_names_the_file(tmp_path, capsys, text):
     assert code == 2 and "not UTF-8" in err and str(path) in err and len(err.strip().splitlines()) == 1
 
 
+
+
+def test_a_scene_with_a_utf8_byte_order_mark_runs_as_without(tmp_path, capsys):
+    """Some editors write a byte-order mark before UTF-8 text; tomllib read it as an invalid character (exit 2)."""
+    src = Path(tb.example_path("seed004_oil_jet_7210.toml"))
+    path = tmp_path / "bom.toml"
+    path.write_bytes(b"\xef\xbb\xbf" + src.read_bytes())
+    assert main(["run", str(path), "--json"]) == 0
+    bom = json.loads(capsys.readouterr().out)
+    assert main(["run", str(src), "--json"]) == 0
+    assert bom["P_W"] == json.loads(capsys.readouterr().out)["P_W"]

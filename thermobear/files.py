@@ -54,7 +54,7 @@ def _parse_toml(digest: bytes, data: bytes, path: str) -> dict:
     hit = _PARSED.get(digest)
     if hit is None:
         try:
-            text = data.decode("utf-8")
+            text = data.decode("utf-8-sig")        # (a byte-order mark first, as some editors write it: skipped)
         except UnicodeDecodeError as exc:
             raise InputError(path, None, f"is not UTF-8 text (TOML files are UTF-8; byte {exc.start} is "
                                          f"0x{data[exc.start]:02x})") from None
