@@ -90,3 +90,15 @@ def test_the_answers_warnings_are_its_own():
     hot = tb.steady_state(S004.with_(n_rpm=16000.0))
     names = [w.quantity for w in hot.warnings]
     assert len(names) == len(set(map(str, hot.warnings)))
+
+
+def test_a_bearing_at_speed_without_load_is_warned():
+    """The rings of an unloaded bearing are held centred, which is not the limit of a small load (seed 004's 7210
+    at 40 °C: 19 W unloaded, 45 W under 1 µN axial): the answer says so; a loaded one, or one at rest, does not."""
+    import thermobear as tb
+    s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
+    unloaded = tb.steady_state(s.with_(Fa=0.0, Fr=0.0))
+    assert [w for w in unloaded.warnings if w.quantity == "unloaded"]
+    assert not [w for w in tb.steady_state(s).warnings if w.quantity == "unloaded"]
+    from thermobear.coupled.limits import point_warnings
+    assert not [w for w in point_warnings(s.with_(Fa=0.0, Fr=0.0, n_rpm=0.0), None, [20.0]) if w.quantity == "unloaded"]
