@@ -285,3 +285,22 @@ def test_the_end_of_run_jump_check_never_costs_the_run(tmp_path, monkeypatch):
         tr = tb.transient(s, 1e5, t_eval=[0.0, 1e5])
     assert tr.completed and tr.T_C["inner_ring"][-1] == pytest.approx(-6.9, abs=0.1)    # at the jump
     assert not [w for w in tr.warnings if w.quantity == "film load jump"]
+
+
+def test_a_heat_up_passing_the_limit_between_piece_ends_is_a_runaway():
+    """A grease block started at 249.9 °C: its contacts pass 250 °C within seconds, then the housing cools them;
+    the series was refused as bad input (exit 2, 'contact / oil temperature = … 252.9') — it is the heat-up's
+    ThermalRunaway, as at a piece's end."""
+    s = tb.load_scene(tb.example_path("block_6208_grease.toml"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        with pytest.raises(tb.ThermalRunaway, match="passes the lubricant's limit 250 °C"):
+            tb.transient(s, 600.0, T0_C=249.9)
+
+
+def test_a_schedule_step_to_loads_the_bearing_cannot_carry_is_refused_before_the_run():
+    """A step (or a rig log's load column) to 1e6 N on the 7210 ran into a 1.2e5 °C runaway (exit 3); its static
+    safety is checked with the first operating point's, before any solve, naming the step."""
+    s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
+    with pytest.raises(InputError, match=r"^schedule step at t = 900 s: operation \(Fa_N, Fr_N, Fz_N\)"):
+        tb.transient(s, 1800.0, schedule=[(900.0, {"Fa_N": 1e6})])

@@ -244,10 +244,16 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
             raise InputError("t_eval", t_eval, f"output times must increase within [0, {t_end_s}] s")
     if boundary is not None:
         boundary, scene = _imposed(boundary, scene, t_end_s)
-    check_static_safety(scene)                                  # before any solve
+    segments = _segments(scene, schedule, t_end_s)
+    for t_s, sc in segments:                                    # every step's loads, before any solve
+        try:
+            check_static_safety(sc)
+        except InputError as exc:
+            if t_s == 0.0:
+                raise
+            raise InputError(f"schedule step at t = {t_s:g} s: {exc.field}", exc.value, exc.expected) from None
     pre = prepared_for(scene, prepared)
-    return _run(_pieces(_segments(scene, schedule, t_end_s), t_end_s), scene, T0_C, t_eval, rtol, atol, load, stop, pre,
-                boundary)
+    return _run(_pieces(segments, t_end_s), scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary)
 
 
 _POSITIVE = {k: Field.number(u, 0.0, lo_open=True) for k, u in (("t_end_s", "s"), ("rtol", "-"), ("atol", "K"))}
@@ -380,6 +386,7 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
         ro, cat = first[1], np.concatenate
         Tb = cat(out_T[ro["ball"]])
         x = [0.5 * (Tb + cat(out_T[ro["inner"]])), 0.5 * (Tb + cat(out_T[ro["outer"]])), cat(out_T[ro["oil"]])]
+        _check_series(x, cat(out_t))
         for _, _, sc, _ in pieces[:i + 1]:
             got += [w for w in point_warnings(sc, None, np.concatenate(x)) if str(w) not in map(str, got)]
     got += [jump] if jump is not None else []
@@ -663,6 +670,18 @@ def _T0(T_state, net):
     if isinstance(T_state, dict):
         return {n: v for n, v in T_state.items() if n in net.free_nodes}
     return T_state
+
+
+def _check_series(x, t_s):
+    """ThermalRunaway where the contact or oil temperatures of the heat-up (``x``: three series [°C] over the
+    output times ``t_s`` [s]) pass the lubricant's limit between two pieces' ends (a start near the limit that
+    passes it and comes back), as :func:`_check_limit` names one at a piece's end."""
+    x = np.asarray(x, float)
+    if x.size and x.max() > T_LIMIT_K - _C0:
+        k = int(np.argmax((x > T_LIMIT_K - _C0).any(axis=0)))
+        raise ThermalRunaway(f"the heat-up passes the lubricant's limit {T_LIMIT_K - _C0:g} °C (contact / oil "
+                             f"temperature {x[:, k].max():.4g} °C at t = {t_s[k]:g} s): no equilibrium the bearing "
+                             "could run at there", iterations=0)
 
 
 def _check_limit(T_state: dict, te):
