@@ -10,12 +10,13 @@ import warnings
 
 import numpy as np
 
-from thermobear.errors import ContactLimit, ExtrapolationWarning, InputError, OutsideValidity
+from thermobear.errors import ContactLimit, ExtrapolationWarning, InputError, OutsideValidity, ThermalRunaway
 from thermobear.arrays import take
 from thermobear.loads.api import check_contacts, groove_angle, loads_text
-from thermobear.validity import LIMITS, P_MAX_REFUSE_PA, check, collect
+from thermobear.validity import LIMITS, P_MAX_REFUSE_PA, T_LUBRICANT_REFUSE_C, check, collect
 
-__all__ = ["p_max_Pa", "contact_pressure", "overloads", "point_warnings", "family_warnings", "grease_limit", "emit"]
+__all__ = ["p_max_Pa", "contact_pressure", "overloads", "point_warnings", "family_warnings", "grease_limit", "emit",
+           "runaway_at", "runaway_in"]
 
 
 def p_max_Pa(Q, a, b):
@@ -175,3 +176,26 @@ def emit(ws, stacklevel: int = 3):
     """Issue an answer's warnings to the caller (Python warnings; the command line prints each once)."""
     for w in ws:
         warnings.warn(w, stacklevel=stacklevel)
+
+
+def runaway_at(T_state: dict, t_s: float) -> None:
+    """ThermalRunaway where a heat-up's node temperatures (``T_state``: node → °C at a piece's end ``t_s`` [s])
+    pass the lubricant's limit (:data:`thermobear.validity.T_LUBRICANT_REFUSE_C`)."""
+    hot = {n: v for n, v in T_state.items() if v > T_LUBRICANT_REFUSE_C[1]}
+    if hot:
+        node = max(hot, key=hot.get)
+        raise ThermalRunaway(f"the heat-up passes the lubricant's limit {T_LUBRICANT_REFUSE_C[1]:g} °C ({node} at "
+                             f"{hot[node]:.4g} °C by t = {t_s:g} s): no equilibrium the bearing could run at",
+                             iterations=0, last=T_state)
+
+
+def runaway_in(x_C, t_s) -> None:
+    """ThermalRunaway where a heat-up's contact or oil temperatures (``x_C``: three series [°C] over the output
+    times ``t_s`` [s]) pass the lubricant's limit between two pieces' ends (a start near it that passes it and
+    comes back), as :func:`runaway_at` names one at a piece's end."""
+    x = np.asarray(x_C, float)
+    hi = T_LUBRICANT_REFUSE_C[1]
+    if x.size and x.max() > hi:
+        k = int(np.argmax((x > hi).any(axis=0)))
+        raise ThermalRunaway(f"the heat-up passes the lubricant's limit {hi:g} °C (contact / oil temperature "
+                             f"{x[:, k].max():.4g} °C at t = {t_s[k]:g} s)", iterations=0)

@@ -43,14 +43,14 @@ from dataclasses import dataclass, field, fields
 
 import numpy as np
 
-from thermobear.coupled.limits import emit, point_warnings
+from thermobear.coupled.limits import emit, point_warnings, runaway_at, runaway_in
 from thermobear.coupled.clearance import scene_at_clearance, preload_runaway
 from thermobear.coupled.ratings import check_static_safety, scene_clearance
 from thermobear.coupled.pipeline import (Family, family_contacts, family_film_loads, family_loads, film_temperature_C,
                                         stack_loads)
 from thermobear.coupled.sources import Coupling, family_network, loss_parts, loss_sources, prepared_for
-from thermobear.coupled.steady import T_LIMIT_K, _batched
-from thermobear.errors import ExtrapolationWarning, InputError, OutsideValidity, SolverError, ThermalRunaway
+from thermobear.coupled.steady import _batched
+from thermobear.errors import ExtrapolationWarning, InputError, OutsideValidity, SolverError
 from thermobear.losses import prepare_contacts
 from thermobear.arrays import instance_of, take
 from thermobear.coupled.blend import StackedBlend
@@ -378,7 +378,7 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
                     c1 = scene_clearance(sc, _T_nodes(T_state, cp.roles, sc), cp.roles)["operating"]
                     f.append(_CLEAR_DRIFT_M / max(abs(c1 - c["operating"]) * 1e-6, 1e-15))
                 film_dt = (te - ts) * float(np.clip(min(f), 0.5, 4.0))
-            _check_limit(T_state, te)
+            runaway_at(T_state, te)
         if completed and film and len(nodes) == 2 and jump is None:   # ends settled inside a cell: the loads there?
             jump = _settled_jump(kept, alts, load, pre, fc, T_state, cp.roles, last_film, te - started.get(id(sc), ts), te)
     got = []
@@ -386,7 +386,7 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
         ro, cat = first[1], np.concatenate
         Tb = cat(out_T[ro["ball"]])
         x = [0.5 * (Tb + cat(out_T[ro["inner"]])), 0.5 * (Tb + cat(out_T[ro["outer"]])), cat(out_T[ro["oil"]])]
-        _check_series(x, cat(out_t))
+        runaway_in(x, cat(out_t))
         for _, _, sc, _ in pieces[:i + 1]:
             got += [w for w in point_warnings(sc, None, np.concatenate(x)) if str(w) not in map(str, got)]
     got += [jump] if jump is not None else []
@@ -539,7 +539,8 @@ class _FilmCells:
 
     def cell(self, T_film) -> tuple:
         """The grid's film temperatures (T_lo, T_hi) [°C] around ``T_film``, inside the lubricant's range (a cell
-        reaching past its limit ends there: the heat-up beyond is a runaway, :func:`_check_limit`)."""
+        reaching past its limit ends there: the heat-up beyond is a runaway,
+        :func:`~thermobear.coupled.limits.runaway_at`)."""
         j = math.floor((T_film - self.T0) / self.step)
         lo, hi = T_LUBRICANT_REFUSE_C
         a, b = max(self.T0 + j * self.step, lo), min(self.T0 + (j + 1) * self.step, hi)
@@ -670,27 +671,6 @@ def _T0(T_state, net):
     if isinstance(T_state, dict):
         return {n: v for n, v in T_state.items() if n in net.free_nodes}
     return T_state
-
-
-def _check_series(x, t_s):
-    """ThermalRunaway where the contact or oil temperatures of the heat-up (``x``: three series [°C] over the
-    output times ``t_s`` [s]) pass the lubricant's limit between two pieces' ends (a start near the limit that
-    passes it and comes back), as :func:`_check_limit` names one at a piece's end."""
-    x = np.asarray(x, float)
-    if x.size and x.max() > T_LIMIT_K - _C0:
-        k = int(np.argmax((x > T_LIMIT_K - _C0).any(axis=0)))
-        raise ThermalRunaway(f"the heat-up passes the lubricant's limit {T_LIMIT_K - _C0:g} °C (contact / oil "
-                             f"temperature {x[:, k].max():.4g} °C at t = {t_s[k]:g} s): no equilibrium the bearing "
-                             "could run at there", iterations=0)
-
-
-def _check_limit(T_state: dict, te):
-    hot = {n: v for n, v in T_state.items() if v + _C0 > T_LIMIT_K}
-    if hot:
-        node = max(hot, key=hot.get)
-        raise ThermalRunaway(f"the heat-up passes the lubricant's limit {T_LIMIT_K - _C0:g} °C ({node} at "
-                             f"{hot[node]:.4g} °C by t = {te:g} s): no equilibrium the bearing could run at",
-                             iterations=0, last=T_state)
 
 
 def _assemble(out_t, out_T, out_rep, first, seg_changes, got, completed) -> TransientRun:
