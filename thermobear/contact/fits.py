@@ -52,7 +52,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from thermobear.arrays import instance_of
+from thermobear.arrays import instance_of, within
 from thermobear.contact.geometry import BallBearing, bearing
 from thermobear.contact.materials import Material, material
 from thermobear.errors import InputError
@@ -454,10 +454,9 @@ def operating_clearance(brg: BallBearing, *, shaft: str | None = None, housing: 
 
 
 def _finite(v, name) -> float:
-    v = float(v)
-    if not (np.isfinite(v) and abs(v) < 1e-3):
-        raise InputError(name, v, "a seat's diametral interference must be finite and within ±1 mm [m]")
-    return v
+    if not within(np.atleast_1d(np.asarray(v, dtype=float)), -1e-3, 1e-3) or np.size(v) != 1:
+        raise InputError(name, v, "a seat's diametral interference: one finite number within ±1 mm [m]")
+    return float(v)
 
 
 def _needs(v, name, what):

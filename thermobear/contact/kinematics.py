@@ -30,6 +30,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from thermobear.arrays import finite_range
 from thermobear.arrays import out as _f
 
 from thermobear.errors import InputError
@@ -138,7 +139,7 @@ def _inputs(omega_i, omega_o, alpha_i, alpha_o, D, dm) -> tuple:
     for name, v, unit in (("omega_i", omega_i, "rad/s"), ("omega_o", omega_o, "rad/s"), ("alpha_i", alpha_i, "rad"),
                           ("alpha_o", alpha_o, "rad")):
         a = np.asarray(v, dtype=float)
-        if not np.all(np.isfinite(a)):
+        if a.size and finite_range(a) is None:
             raise InputError(name, v, f"must be finite [{unit}]")
         arrs.append(a)
     try:
@@ -154,16 +155,20 @@ def _inputs(omega_i, omega_o, alpha_i, alpha_o, D, dm) -> tuple:
     return (*arrs, D, dm)
 
 
-def free_orbital_speed(omega_i, omega_o, alpha_i, alpha_o, D, dm, control: str = "outer"):
+def free_orbital_speed(omega_i, omega_o, alpha_i, alpha_o, D, dm, control: str = "outer", *, check: bool = True):
     """No-slip orbital speed of each ball [rad/s]: ``ball_kinematics(...).omega_c`` without the contact
-    speeds (the input of :func:`common_cage_speed`).
+    speeds (the input of :func:`common_cage_speed`); ``check`` False: the inputs are a solved bearing's, already
+    checked (the loss evaluation's hot path).
 
     >>> bool(np.isclose(free_orbital_speed(300.0, 0.0, 0.7, 0.7, 0.0127, 0.07),
     ...                 ball_kinematics(300.0, 0.0, 0.7, 0.7, 0.0127, 0.07).omega_c))
     True
     """
     _check_control(control)
-    wi, wo, ai, ao, D, dm = _inputs(omega_i, omega_o, alpha_i, alpha_o, D, dm)
+    if check:
+        wi, wo, ai, ao, D, dm = _inputs(omega_i, omega_o, alpha_i, alpha_o, D, dm)
+    else:
+        wi, wo, ai, ao = (np.asarray(v, dtype=float) for v in (omega_i, omega_o, alpha_i, alpha_o))
     return _cage_spin(wi, wo, ai, ao, D, dm, control)[0]
 
 

@@ -29,7 +29,7 @@ from thermobear.losses import ContactSet, prepare_contacts
 from thermobear.models import DryRow, moments, plan, refuse_unloaded_thrust
 from thermobear.scene import Scene
 
-__all__ = ["Family", "families", "dry_loads", "film_temperature_C", "closed_form_axial", "stack_loads", "family_loads",
+__all__ = ["Family", "families", "dry_loads", "film_temperature_C", "sampled_lubricant", "closed_form_axial", "stack_loads", "family_loads",
            "family_film_loads", "family_contacts", "stack_key", "stack_families", "concat_loads", "SWITCHED", "scene_load",
            "scene_contacts", "film_scene_load"]
 
@@ -145,9 +145,7 @@ class Family:
     def lubricant(self):
         """The family's lubricant: the scenes' own, with its drawn values (``lubricant.<key>``) per point
         (:meth:`thermobear.lubrication.lubricant.Lubricant.sampled`)."""
-        draws = self.samples("lubricant.")
-        lub = self.scene.lubricant
-        return lub.sampled({k[len("lubricant."):]: v for k, v in draws.items()}) if draws else lub
+        return sampled_lubricant(self.scenes)
 
     def loads(self) -> dict:
         """The points' loads as the load solvers take them: Fa, Fr, M, Fz, My, (B,) arrays (M, My: None when
@@ -157,6 +155,17 @@ class Family:
         for i, k in enumerate(("M", "My")):
             out[k] = None if held else np.array([moments(s)[i] for s in self.scenes], float)
         return out
+
+
+def sampled_lubricant(scenes):
+    """The lubricant of scenes that draw the same keys (a family, a group of uncertainty samples): the first
+    one's, with each scene's drawn values (``lubricant.<key>`` of :attr:`Scene.samples`) per point
+    (:meth:`thermobear.lubrication.lubricant.Lubricant.sampled`); the scenes' own where nothing is drawn."""
+    keys = [k for k in scenes[0].samples if k.startswith("lubricant.")]
+    if not keys:
+        return scenes[0].lubricant
+    return scenes[0].lubricant.sampled({k[len("lubricant."):]: np.array([s.samples[k] for s in scenes], float)
+                                        for k in keys})
 
 
 def _key(scene: Scene, models: dict):

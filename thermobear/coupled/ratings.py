@@ -38,6 +38,7 @@ import numpy as np
 from thermobear.contact.fits import operating_clearance
 from thermobear.contact.geometry import BallBearing
 from thermobear.contact.materials import material
+from thermobear.coupled.pipeline import sampled_lubricant
 from thermobear.errors import InputError
 from thermobear.loads import loads_text
 from thermobear.rating.iso16281 import rating_angle, reference_life
@@ -341,17 +342,6 @@ def operating_lives(scene, T_op_C, nu_m2_s=None) -> dict:
             "L10_h": L10 * hours, "L10m_h": _num(a_iso * (L10 * hours))}
 
 
-def _sampled_lubricant(scenes):
-    """The lubricant of scenes of one group (the same drawn keys) with each one's drawn values (``lubricant.<key>`` of
-    :attr:`Scene.samples`) per point (:meth:`~thermobear.lubrication.lubricant.Lubricant.sampled`), the
-    scenes' own where nothing is drawn."""
-    keys = [k for k in scenes[0].samples if k.startswith("lubricant.")]      # (the group's scenes share them)
-    if not keys:
-        return scenes[0].lubricant
-    draws = {k[len("lubricant."):]: np.array([s.samples[k] for s in scenes], float) for k in keys}
-    return scenes[0].lubricant.sampled(draws)
-
-
 #: the design answers an uncertainty band gives (:func:`rating_samples`): output name → unit
 RATING_OUTPUTS = {"ratings.T_operating_C": "°C", "ratings.kappa": "-", "ratings.a_ISO": "-", "ratings.L10m_h": "h",
                   "ratings.clearance_op_um": "µm"}
@@ -384,7 +374,7 @@ def rating_samples(scenes, states) -> dict:
         sc, st0 = scenes[idx[0]], states[idx[0]]
         T = {k: np.array([states[i].T_C[k] for i in idx]) for k in st0.T_C}
         T_op = operating_temperature_C(T, st0.roles)
-        lv = operating_lives(sc, T_op, _sampled_lubricant([scenes[i] for i in idx]).nu(T_op) * 1e-6)  # cSt → m²/s
+        lv = operating_lives(sc, T_op, sampled_lubricant([scenes[i] for i in idx]).nu(T_op) * 1e-6)  # cSt → m²/s
         for key, v in (("T_operating_C", T_op), ("kappa", lv["kappa"]), ("a_ISO", lv["a_ISO"]), ("L10m_h", lv["L10m_h"])):
             out[f"ratings.{key}"][idx] = v
         if sc.bearing.kind == "thrust":

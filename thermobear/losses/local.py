@@ -279,7 +279,7 @@ def prepare_contacts(brg: BallBearing, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=None, rot
     # one rigid cage: every ball orbits at the load-weighted mean of the balls' no-slip orbital
     # speeds (they differ when the contact angles do: combined and high-speed loads); a ball
     # outside the load zone follows the cage and rolls on the race that carries it
-    free = free_orbital_speed(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, control=control)
+    free = free_orbital_speed(w_i[ex], w_o[ex], ai, ao, brg.D, brg.dm, control=control, check=False)
     w_cage = np.asarray(common_cage_speed(np.broadcast_to(free, sh), Qi), float)
     omega_c = np.broadcast_to(w_cage[ex], sh)
     cf = np.asarray(centrifugal, bool)
