@@ -11,6 +11,7 @@ import pytest
 from ht.conv_free_immersed import Nu_horizontal_plate_VDI, Nu_vertical_plate_Churchill
 
 import thermobear as tb
+from thermobear.contact.fits import fit_interference
 from thermobear.contact.materials import material
 from thermobear.errors import InputError
 from thermobear.lubrication.air import air_properties
@@ -105,8 +106,22 @@ def test_probable_fits_from_the_tolerance_tables():
     assert probable_interference(0.080, "H7") == pytest.approx(-21.5e-6)
     assert probable_interference(0.052, "N7") == pytest.approx(17.5e-6)
     assert probable_interference(0.040, "g6") < 0
-    with pytest.raises(InputError):
+    with pytest.raises(InputError, match="bearing.bore_mm.*interference_um"):
         probable_interference(0.5, "k5")
+    with pytest.raises(InputError, match="bearing.bore_mm"):
+        probable_interference(0.002, "g6")
+    with pytest.raises(InputError, match="seat"):
+        probable_interference(0.040, "k9")
+
+
+@pytest.mark.parametrize("seat, ring", [("k5", "inner"), ("m5", "inner"), ("g6", "inner"), ("H7", "outer"),
+                                        ("N7", "outer")])
+def test_the_networks_seats_and_the_operating_clearance_read_one_fit_table(seat, ring):
+    """One ISO 286 / ISO 492 table: the probable interference of a built network's seat is the middle of the fit
+    the operating clearance uses, at every size step from 3 to 400 mm (a 10 mm bore lies in ISO 286's 6–10 mm step)."""
+    for d_mm in (4.0, 6.0, 10.0, 12.0, 18.0, 40.0, 80.0, 100.0, 150.0, 250.0, 400.0):
+        assert probable_interference(d_mm * 1e-3, seat) == fit_interference(d_mm * 1e-3, seat, ring)[1]
+    assert probable_interference(0.010, "k5") == pytest.approx(8e-6, abs=1e-12)      # k5 +1/+7, bore 0/−8
     s = material("aisi-52100")
     tight, _ = seat_conductance(20e-6, 0.04, 0.0, 0.047, material("steel-c45"), s, 1.1e-6)
     loose, _ = seat_conductance(5e-6, 0.04, 0.0, 0.047, material("steel-c45"), s, 1.1e-6)

@@ -185,7 +185,7 @@ def _shaft_rows(m, lay) -> list:
         ("end_right", s.end_right, "free | fixed | adiabatic"),
         ("surface", s.surface, "air: the shaft outside the housing in the room's air"),
         ("interference_um", round(1e6 * lay.delta_inner, 2), "µm diametral: probable interference of a k5 seat "
-         "(m5 above 100 mm), ISO 286 (builders' fits.py)"),
+         "(m5 above 100 mm), ISO 286 / ISO 492 (materials/iso286_fits.toml)"),
     ]
 
 
@@ -213,7 +213,7 @@ def _housing_rows(m, lay, housing: str) -> list:
              ("air", h.air, "still | forced (then air_speed_m_s)"),
              ("emissivity", h.emissivity, "- painted cast iron 0.8-0.95 (Bergman et al. 2011 Table A.11)"),
              ("interference_um", round(1e6 * lay.delta_outer, 2), "µm diametral (negative: clearance): probable H7 "
-              "seat, ISO 286 (builders' fits.py)")]
+              "seat, ISO 286 / ISO 492 (materials/iso286_fits.toml)")]
     return rows
 
 

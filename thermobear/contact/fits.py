@@ -65,7 +65,7 @@ __all__ = ["T_REF_C", "seat_deviations", "ring_deviations", "fit_interference", 
 T_REF_C = 20.0          #: reference temperature of sizes and clearances [°C] (ISO 1)
 _INTERFERENCE = ("min", "mean", "max")
 #: The tolerance classes of seats :func:`seat_deviations` knows (materials/iso286_fits.toml).
-SHAFT_CLASSES = tuple(f"{z}{g}" for z in ("h", "js", "k", "m", "n", "p") for g in (5, 6, 7)) + ("j5", "j6")
+SHAFT_CLASSES = tuple(f"{z}{g}" for z in ("g", "h", "js", "k", "m", "n", "p") for g in (5, 6, 7)) + ("j5", "j6")
 HOUSING_CLASSES = tuple(f"{z}{g}" for z in ("H", "JS") for g in (5, 6, 7)) + ("J7", "K7", "M7", "N7", "P7")
 
 
@@ -95,8 +95,8 @@ def seat_deviations(diameter, zone: str):
 
     Parameters
     ----------
-    diameter : float   nominal size [m], 10 mm < d ≤ 400 mm
-    zone : str         a shaft class (lower-case letter: h, j, js, k, m, n, p; grades 5–7, e.g. ``"k5"``) or a
+    diameter : float   nominal size [m], 3 mm < d ≤ 400 mm
+    zone : str         a shaft class (lower-case letter: g, h, j, js, k, m, n, p; grades 5–7, e.g. ``"k5"``) or a
                        housing class (upper case: H, JS of grades 5–7; J7, K7, M7, N7, P7)
 
     Returns
@@ -105,13 +105,15 @@ def seat_deviations(diameter, zone: str):
 
     Notes
     -----
-    A shaft's limits are its fundamental deviation ei and ei + IT (h: es = 0; js: ±IT/2), a hole's ES − IT and
-    ES (H: EI = 0; JS: ±IT/2); IT grades and deviations of ISO 286-1:2010 Tables 1–5 [4].
+    A shaft's limits are its fundamental deviation ei and ei + IT (g, h: es − IT and es, h: es = 0; js: ±IT/2), a
+    hole's ES − IT and ES (H: EI = 0; JS: ±IT/2); IT grades and deviations of ISO 286-1:2010 Tables 1–5 [4].
 
     Examples
     --------
     >>> [round(v * 1e6) for v in seat_deviations(0.040, "k5")], [round(v * 1e6) for v in seat_deviations(0.080, "H7")]
     ([2, 13], [0, 30])
+    >>> [round(v * 1e6) for v in seat_deviations(0.040, "g6")]
+    [-25, -9]
     """
     t = _table()["iso286"]
     d_mm = float(diameter) * 1e3
@@ -127,6 +129,9 @@ def seat_deviations(diameter, zone: str):
         lo, hi = -it, 0.0
     elif letter == "H":
         lo, hi = 0.0, it
+    elif letter.islower() and letter in t["shaft_es_um"]:
+        es = float(t["shaft_es_um"][letter][k])
+        lo, hi = es - it, es
     elif letter.islower() and letter in t["shaft_ei_um"] and not (letter == "j" and grade == "7"):
         ei = float(t["shaft_ei_um"][letter][k])
         lo, hi = ei, ei + it
@@ -134,7 +139,7 @@ def seat_deviations(diameter, zone: str):
         es = float(t["hole_ES_um"][z][k])
         lo, hi = es - it, es
     else:
-        known = ["h5-7", "js5-7", "j5", "j6", "k5-7", "m5-7", "n5-7", "p5-7", "H5-7", "JS5-7"] + list(t["hole_ES_um"])
+        known = ["g5-7", "h5-7", "js5-7", "j5", "j6", "k5-7", "m5-7", "n5-7", "p5-7", "H5-7", "JS5-7"] + list(t["hole_ES_um"])
         raise InputError("zone", zone, f"tolerance class not tabulated; known: {', '.join(known)}")
     return lo * 1e-6, hi * 1e-6
 

@@ -5,7 +5,7 @@ usual recommendation for ball bearings under a rotating inner-ring load: shaft k
 100 mm), housing H7; with a rotating outer ring: shaft g6, housing N7 — SKF 2018, *Rolling
 bearings* catalogue 17000 EN, "Selecting fits").  The probable (mean) diametral interference is
 the difference of the mid-tolerances of the seat (ISO 286-2) and of the ring (ISO 492 normal
-tolerance class).  The joint conductance (:func:`seat_conductance`):
+tolerance class): :func:`thermobear.contact.fits.fit_interference`, the tables the operating clearance uses.  The joint conductance (:func:`seat_conductance`):
 
 * interference δ > 0: Lamé contact pressure (:func:`~thermobear.thermal.conduction.fit_pressure`)
   and the plastic-contact joint conductance with air in the gaps
@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import math
 
+from thermobear.contact.fits import fit_interference
 from thermobear.contact.materials import Material
 from thermobear.errors import InputError
 from thermobear.thermal.builders import estimates
@@ -58,35 +59,18 @@ P_MAX_RATIO = 0.02
 K_AIR_GAP_W_MK = 0.029       #: air at 60 °C (materials/air_1atm.toml: 0.0287 W/m K at 333 K)
 M_AIR_M = _EST["M_gas_m"]    #: gas rarefaction parameter of air at 1 atm (estimated, Yovanovich 2005)
 
-# Diameter steps [mm] (upper bounds) and deviations [µm] (ISO 286-2 tables; ISO 492 normal class).
-_STEPS = (18, 30, 50, 80, 120, 180, 250)
-_SHAFT = {   # (lower, upper) deviations of the shaft seat
-    "k5": ((1, 9), (2, 11), (2, 13), (2, 15), (3, 18), (3, 21), (4, 24)),
-    "m5": ((7, 15), (8, 17), (9, 20), (11, 24), (13, 28), (15, 33), (17, 37)),
-    "g6": ((-17, -6), (-20, -7), (-25, -9), (-29, -10), (-34, -12), (-39, -14), (-44, -15)),
-}
-_HOUSING = {  # (lower, upper) deviations of the housing bore
-    "H7": ((0, 18), (0, 21), (0, 25), (0, 30), (0, 35), (0, 40), (0, 46)),
-    "N7": ((-23, -5), (-28, -7), (-33, -8), (-39, -9), (-45, -10), (-52, -12), (-60, -14)),
-}
-_BORE_LOW = (-8, -10, -12, -15, -20, -25, -30)    # ISO 492 normal: Δdmp lower deviation (upper 0)
-_OD_LOW = (-8, -9, -11, -13, -15, -18, -30)       # ISO 492 normal: ΔDmp lower deviation (upper 0)
-
-
-def _step(d_m, what):
-    d = d_m * 1e3
-    for i, hi in enumerate(_STEPS):
-        if d <= hi:
-            return i
-    raise InputError(what, d_m, f"the fit tables cover diameters up to {_STEPS[-1]} mm; give the interference")
+_RING = {"k5": "inner", "m5": "inner", "g6": "inner", "H7": "outer", "N7": "outer"}
 
 
 def probable_interference(d_m: float, seat: str) -> float:
     """Mean diametral interference of a ring on its seat [m] (negative: clearance).
 
+    The middle of the fit's range, :func:`thermobear.contact.fits.fit_interference` (ISO 286 limits of the seat,
+    ISO 492 normal class of the ring; the tables of ``materials/iso286_fits.toml``).
+
     Parameters
     ----------
-    d_m : float   seat diameter [m] (bearing bore for a shaft seat, outside diameter for a housing)
+    d_m : float   seat diameter [m] (bearing bore for a shaft seat, outside diameter for a housing), 3–400 mm
     seat : str    shaft ``"k5"``, ``"m5"``, ``"g6"`` or housing ``"H7"``, ``"N7"``
 
     >>> round(probable_interference(0.040, "k5") * 1e6, 1)     # k5 +2/+13, bore 0/-12
@@ -94,14 +78,15 @@ def probable_interference(d_m: float, seat: str) -> float:
     >>> round(probable_interference(0.080, "H7") * 1e6, 1)     # H7 0/+30, OD 0/-13
     -21.5
     """
-    i = _step(d_m, "bearing.bore_mm" if seat in _SHAFT else "bearing.outer_diameter_mm")
-    if seat in _SHAFT:
-        lo, hi = _SHAFT[seat][i]
-        return 1e-6 * (0.5 * (lo + hi) - 0.5 * _BORE_LOW[i])
-    if seat in _HOUSING:
-        lo, hi = _HOUSING[seat][i]
-        return 1e-6 * (0.5 * _OD_LOW[i] - 0.5 * (lo + hi))
-    raise InputError("seat", seat, f"one of {', '.join([*_SHAFT, *_HOUSING])}")
+    ring = _RING.get(seat)
+    if ring is None:
+        raise InputError("seat", seat, f"one of {', '.join(_RING)}")
+    try:
+        return float(fit_interference(d_m, seat, ring)[1])
+    except InputError:
+        field, key = ("bearing.bore_mm", "[shaft]") if ring == "inner" else ("bearing.outer_diameter_mm", "[housing]")
+        raise InputError(field, d_m * 1e3, f"the fit tables (ISO 286, ISO 492) cover seats of 3 to 400 mm; give "
+                         f"{key} interference_um") from None
 
 
 def seat_conductance(delta_m: float, d_m: float, d_inner_m: float, d_outer_m: float, inner: Material,
