@@ -347,3 +347,7 @@ def test_transient_log_change_on_the_last_row_is_ignored(tmp_path, synthetic_sce
     c = compare(synthetic_scene, log, m)
     tq = c.simulated["torque_Nm"]
     assert tq[-1] == pytest.approx(tq[-2], rel=0.02)             # at 3000 rpm, not the P_W(3000) / ω(4000)
+    huge = _with_column(tmp_path, "Fr_N", lambda x: 1000 if x < 1800 else 1e7, "huge.csv")
+    with pytest.raises(InputError, match="static safety") as e:       # not run, yet no bearing carries it
+        compare(synthetic_scene, huge, m)
+    assert e.value.field.startswith("huge.csv: last row (t = 1800 s): operation")

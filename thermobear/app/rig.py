@@ -32,7 +32,7 @@ runs the heat-up with the channel as a *time-varying boundary*: linear between t
 (an empty cell is bridged linearly from its neighbours; the first and last rows must be given),
 never extrapolated — the run covers the log's rows only.  The speed and load steps of ``n_rpm``,
 ``Fa_N`` and ``Fr_N`` (a change at a row applies from that row on, one on the last row has no time
-to act and is ignored; every row must give them) and the imposed channels reach the integrator
+to act and is ignored, though a load there that the bearing cannot carry is refused; every row must give them) and the imposed channels reach the integrator
 the same way (:func:`thermobear.coupled.transient`, ``schedule`` and ``boundary``).  The run starts at the log's first row, at ``T0_C`` (default:
 the logged value of an imposed ``ambient`` node at that row, else the scene's ambient
 temperature).  A node can be imposed by one channel only, and an imposed node is not compared.
@@ -55,6 +55,7 @@ from pathlib import Path
 import numpy as np
 
 from thermobear.coupled import solve, transient
+from thermobear.coupled.ratings import check_static_safety
 from thermobear.errors import InputError
 from thermobear.scene import Scene
 from thermobear.scene.network import network_nodes as scene_network_nodes
@@ -375,6 +376,13 @@ def _log_inputs(scene: Scene, log: RigLog, mapping: dict):
         if ch:
             steps.append((float(t[k]) - t0, ch))
     sc = scene.with_(**{c: float(log[c][0]) for c in drives}) if drives else scene
+    loads = [c for c in drives if c != "n_rpm"]
+    if loads and t.size > 1 and any(log[c][-1] != log[c][-2] for c in loads):
+        try:                                # not run, but a load no bearing carries is a wrong log: refused
+            check_static_safety(sc.with_(**{c: float(log[c][-1]) for c in loads}))
+        except InputError as exc:
+            raise InputError(f"{name}: last row (t = {float(t[-1]):g} s): {exc.field}", exc.value,
+                             exc.expected) from None
     imposed = _imposed(mapping)
     if not imposed:
         return sc, steps, None
