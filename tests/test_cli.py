@@ -298,6 +298,19 @@ def test_spin_down_against_seed001_log(capsys, tmp_path):
     assert sorted(p.name for p in (tmp_path / "p").glob("*.png")) == ["spin_down.png", "spin_down_torque.png"]
 
 
+def test_a_spin_down_log_column_it_does_not_use_is_named(capsys, tmp_path):
+    """A temperature column of a spin-down log was ignored silently: the runs are at the scene's T_C."""
+    rows = [l for l in (LOGS / "seed001_table2_torque.csv").read_text(encoding="utf-8").splitlines()
+            if l and not l.startswith("#")]
+    log = tmp_path / "with_T.csv"
+    log.write_text("\n".join([rows[0] + ",T_race_C"] + [r + ",40" for r in rows[1:]]) + "\n", encoding="utf-8")
+    code, out, err = run(capsys, "spin-down", SEED001, "--J", "1e-4", "--log", log, "--json")
+    assert code == 0 and len(json.loads(out)["runs"]) == len(rows) - 1
+    assert "with_T.csv: column T_race_C not used" in err and "operation.T_C = 26.5 °C" in err
+    _, _, err = run(capsys, "spin-down", SEED001, "--J", "1e-4", "--log", LOGS / "seed001_table2_torque.csv", "--json")
+    assert "not used" not in err
+
+
 def test_spin_down_needs_inertia(capsys, tmp_path):
     # a copy of the seed 001 scene without its [rig] table: the inertia is missing
     text = open(SEED001).read().split("\n[rig]")[0]

@@ -11,6 +11,7 @@ import math
 import signal
 import sys
 import tomllib
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -642,6 +643,11 @@ def _check_spin_down_log(scene, log, path):
     """A spin-down log is one rig set-up, the scene's: its loads must be the scene's, and a lubricant per row
     (which the runs would not apply) is refused."""
     name = Path(path).name
+    unused = [c for c in log.columns if c not in ("n_rpm", "torque_Nm", "Fa_N", "Fr_N", "lubricant")]
+    if unused:                          # never silently: the runs compare the torque only
+        warnings.warn(f"{name}: column{'s' * (len(unused) > 1)} {', '.join(unused)} not used: a spin-down run "
+                      f"compares the torque at the initial speed, its contacts at operation.T_C = {scene.T_C:g} °C",
+                      UserWarning, stacklevel=3)
     if "lubricant" in log.columns:
         raise InputError(f"{name}: column", "lubricant", "a spin-down log runs the scene's lubricant: one log per "
                          "lubricant (--set lubricant=NAME), without the column")
