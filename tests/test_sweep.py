@@ -41,6 +41,7 @@ def test_prescribed_sweep_equals_single_solves(seed004):
             assert r["breakdown_W"][k] == pytest.approx(v, rel=1e-12, abs=1e-15)
         assert r["models"]["drag"] == single.models_used["drag"][0]
         assert r["models"]["load_model"] == single.models_used["load_model"][0]
+        assert r["warnings"] == [str(w) for w in single.warnings]       # (they were always [] here)
     # Fr 1500 N lifts balls off the races: those points run the film load model, one by one
     assert {r["models"]["load_model"] for r in rows if r["n_rpm"] > 0} == {"jones_harris", "film"}
     # physics of the rows: standstill dissipates nothing; losses fall with temperature (viscosity)
@@ -48,6 +49,19 @@ def test_prescribed_sweep_equals_single_solves(seed004):
     by = {(r["n_rpm"], r["Fr"], r["Fa"], r["T_C"]): r["P_W"] for r in rows}
     assert by[(8070.0, 50.0, 225.0, 30.0)] > by[(8070.0, 50.0, 225.0, 70.0)]
     assert by[(8070.0, 50.0, 225.0, 30.0)] > by[(3200.0, 50.0, 225.0, 30.0)]
+
+
+def test_prescribed_rows_carry_the_warnings_of_a_single_run(seed004):
+    """A prescribed point's row states its validity as `run` does (an unloaded bearing at speed, an oil under a
+    grease supply); the rows' warnings were always empty."""
+    sc = seed004.with_(T_C=50.0, supply="grease")
+    rows = run_sweep(sc, {"n_rpm": [3000.0], "Fa": [0.0, 500.0], "Fr": [0.0]})
+    for r in rows:
+        with pytest.warns(tb.OutsideValidity):
+            single = solve(sc.with_(n_rpm=r["n_rpm"], Fa=r["Fa"], Fr=r["Fr"]))
+        assert r["warnings"] == [str(w) for w in single.warnings] and r["warnings"]
+    assert ["unloaded" in w for w in rows[0]["warnings"]] == [False, True]
+    assert all("is an oil, supply = grease" in r["warnings"][0] for r in rows)
 
 
 def test_prescribed_pure_axial_uses_the_closed_form(seed002):

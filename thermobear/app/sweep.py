@@ -40,6 +40,7 @@ from thermobear.coupled.pipeline import scene_load
 from thermobear.errors import InputError, SolverError
 from thermobear.loads.highspeed import load_distribution_high_speed
 from thermobear.arrays import take
+from thermobear.coupled.limits import family_warnings
 from thermobear.coupled.pipeline import film_scene_load
 from thermobear.models import moments, plan, plan_many
 from thermobear.scene import Scene
@@ -147,12 +148,14 @@ def _prescribed_group(scenes, points, models, members):
         r = _losses_batch(sc, n, T, models, load=load)
     P, M = np.atleast_1d(r.P_W), np.atleast_1d(r.torque_Nm)
     bd = {k: np.broadcast_to(np.atleast_1d(v), P.shape) for k, v in r.breakdown_W.items()}
+    # each point's validity, as `run` states it for a prescribed temperature (coupled.limits.point_warnings)
+    warned = family_warnings([scenes[i] for i in members], r, np.repeat(T[:, None], 3, axis=1))
     rows = {}
     for j, i in enumerate(members):
         row = _base_row(points[i])
         row.update(P_W=float(P[j]), torque_Nm=float(M[j]), breakdown_W={k: float(v[j]) for k, v in bd.items()},
                    temperatures_C={"contacts (prescribed)": float(T[j])}, models=_choices(models), status="ok",
-                   reason="", iterations=0, residual_K=0.0, warnings=[])
+                   reason="", iterations=0, residual_K=0.0, warnings=[str(w) for w in warned[j]])
         rows[i] = row
     return rows
 

@@ -120,11 +120,29 @@ def _unloaded_warning(scene) -> list:
         limit="a load > 0", source="thermobear.coupled.limits", field="operation (Fa_N, Fr_N)")]
 
 
+def _oil_as_grease(scene) -> bool:
+    """An oil's data under ``supply = "grease"``."""
+    return scene.supply == "grease" and getattr(scene.lubricant, "kind", "oil") != "grease"
+
+
+def _oil_as_grease_warning(scene) -> list:
+    """An OutsideValidity warning for an oil's data under a grease supply: the grease models use it as the base oil,
+    and no grease upper operating temperature (``grease_T_max_C``, :func:`grease_limit`) is checked."""
+    if not _oil_as_grease(scene):
+        return []
+    name = scene.lubricant.name
+    return [OutsideValidity(
+        f"lubricant {name} is an oil, supply = grease: taken as the grease's base oil, and no grease operating "
+        "temperature limit is checked (its data has no grease_T_max_C); a grease of the list (thermobear list "
+        "lubricants) states its own", quantity="lubricant kind", value="oil", limit="a grease",
+        source=f"materials/lubricants/{name}.toml", field="lubricant.name")]
+
+
 def point_warnings(scene, losses, x_C) -> list:
     """The OutsideValidity warnings of one solved operating point: speed, contact pressure, contact
-    and oil temperatures (the lubricant's validated range; a grease's upper operating temperature), the SKF
-    model's Φ_bl, a bearing at speed without load."""
-    grease = _grease_warning(scene, x_C) + _unloaded_warning(scene)
+    and oil temperatures (the lubricant's validated range; a grease's upper operating temperature; an oil's data
+    under a grease supply), the SKF model's Φ_bl, a bearing at speed without load."""
+    grease = _grease_warning(scene, x_C) + _oil_as_grease_warning(scene) + _unloaded_warning(scene)
     with collect(replay=False) as got:
         check("n_dm", scene.n_rpm * scene.bearing.dm * 1e3, "operation.n_rpm", warn=True)
         check("lubricant_T", np.asarray(x_C, float), "contact / oil temperature", category=ExtrapolationWarning)
@@ -157,7 +175,7 @@ def family_warnings(scenes, losses, x_C, answered=None) -> list:
     flag = _outside_warn("n_dm", n_dm[:, None]) | _outside_warn("lubricant_T", x_C)
     T_max = np.array([np.inf if grease_limit(s) is None else grease_limit(s) for s in scenes])
     flag |= np.asarray(x_C, float).reshape(B, -1).max(axis=1) > T_max
-    flag |= np.array([_unloaded(s) for s in scenes])
+    flag |= np.array([_unloaded(s) or _oil_as_grease(s) for s in scenes])
     c = getattr(losses, "contacts", None)
     if c:
         p = np.concatenate([np.reshape(p_max_Pa(c[s]["Q"], c[s]["a"], c[s]["b"]), (B, -1)) for s in ("inner", "outer")], 1)
