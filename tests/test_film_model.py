@@ -267,7 +267,8 @@ def test_a_heat_up_started_near_the_lubricants_limit_cools_without_asking_past_i
 
 def test_the_end_of_run_jump_check_never_costs_the_run(tmp_path, monkeypatch):
     """The check after a run that ends settled inside a film cell solves the loads once more; if that fails, the
-    finished heat-up is still the answer (without the warning)."""
+    finished heat-up is still the answer (without the warning).  (The run is kept in its grid cells to the end, as
+    one that settles only at its end: settled earlier, it goes on in the fine cells, whose loads are checked then.)"""
     from thermobear.app.cli import main
     tr_mod = importlib.import_module("thermobear.coupled.transient")
     path = tmp_path / "c.toml"
@@ -280,6 +281,8 @@ def test_the_end_of_run_jump_check_never_costs_the_run(tmp_path, monkeypatch):
             raise tb.NoConvergence("film loads: no solution here", iterations=1)
         return piece(sc, alts, load, prepared, cells, nodes, dominant)
     monkeypatch.setattr(tr_mod, "_piece_model", failing)
+    monkeypatch.setattr(tr_mod._Settling, "cell", lambda self, fc, T_film, ts, te, sc, last: (fc.cell(T_film), np.inf,
+                                                                                              False))
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         tr = tb.transient(s, 1e5, t_eval=[0.0, 1e5])

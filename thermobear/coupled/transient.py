@@ -17,13 +17,19 @@ left its cell by a tenth of its width (``until`` of :func:`~thermobear.thermal.s
 integrator goes on from piece to piece (``continue_from``: its order, step size and Jacobian kept; it starts
 afresh only at a schedule's step, or where the sources step beyond the tolerances' scale).  Once the film
 temperature settles — at its present rate it would move less than 0.25 K over the longer of the rest of the
-segment and the time the segment has run — the loads are held at its value (pieces of ≈ 2 K of drift, loads
-re-solved at each one's start, a piece ended where the film temperature drifts by more), so that a long heat-up
-ends at the steady state.  Where the loads jump at a film temperature (a ball lifting off; the film temperature
-has no fixed point, :func:`thermobear.coupled.steady.steady_state` names the jump) the cell's interpolation
-settles across the jump and the loads held there move the heat-up away: it goes on with the cell's interpolated
-loads, where it stays at the jump, and says so (a named OutsideValidity warning, also where a run ends settled
-inside a cell whose held loads change the losses by more than 1 %).  Against pieces of 0.05 K
+segment and the time the segment has run, asked at each piece's start (a piece in a cell lasts at most as long
+as the segment has run, so that the question comes up again) — the heat-up goes on in cells eight times finer
+(0.375 K: an interpolation error 64 times smaller), till it moves 2 K away: it ends at the steady state, the
+same for every run length past settling (a 16002 in an oil bath at −10 °C settled 0.17 K off the fixed point in
+its 3 K cell, and the loads held at the settled film temperature moved its inner ring's end by up to 0.28 K
+with the run's length; in the fine cells its end is one state from 1e4 to 1e6 s, 3 mK off the fixed point,
+validation/CHANGES.md).
+Where the loads jump at a film temperature (a ball lifting off; the film temperature has no fixed point,
+:func:`thermobear.coupled.steady.steady_state` names the jump) the cell's interpolation settles across the jump,
+and the fine cell's loads there change the losses by more than 1 %: the heat-up goes on with the grid cell's
+interpolated loads, where it stays at the jump, and says so (a named OutsideValidity warning, also where a run
+ends settled inside a grid cell whose loads at its film temperature change the losses by more than 1 %).  Against
+pieces of 0.05 K
 (loads at each piece's start), at rtol = atol = 1e-8, the cells keep seed 004's heat-ups (3200 rpm; 4800 rpm
 under 1300 N radial; 8070 rpm under 750 N) within 1.7, 2.2 and 0.8 mK and the oil-bath 6208's, whose losses
 vary with T_f in 0.3 % waves about 6 K long, within 76 mK, where pieces of ≈ 2 K held at their start
@@ -68,9 +74,10 @@ _FILM_DT0_S = 20.0      # first piece of a film-load-model transient [s]
 _FILM_DRIFT_K = 2.0     # film-temperature drift per piece [K] where the loads are re-solved at each piece's start
 _FILM_CELL_K = 3.0      # film temperatures at which the film loads are solved: a grid this far apart [K]
 _FILM_AHEAD = 8         # grid nodes whose film loads are solved in one batched call (the node met and the next 7)
-_FILM_SETTLED_K = 0.25  # a heat-up whose film temperature moves less to the end holds its loads there [K]
+_FILM_SETTLED_K = 0.25  # a heat-up whose film temperature moves less to the end goes on in the fine cells there [K]
+_FILM_FINE = 8          # the fine cells of a settled heat-up: the grid's cut in this many (interpolation error ∝ w²)
 _CLEAR_DRIFT_M = 0.5e-6  # operating-clearance drift per piece [m] (models.clearance = "operating")
-_JUMP_REL = 0.01        # a settled heat-up whose held loads change its losses by more moves away: a jump of the loads
+_JUMP_REL = 0.01        # a settled heat-up whose fine cell's loads change its losses by more: a jump of the loads
                         # (the blended model switches keep their steps below 1 %, thermobear.models.BLEND_BANDS)
 
 
@@ -226,9 +233,7 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
     film_dt, completed, i, plans, clear_hist, prev, kept = None, True, -1, {}, [], None, (None, None, None, None)
     cells: dict = {}        # scene (id) → its _FilmCells: the loads solved for it during the run
     last_film = None        # (film temperature's rate at its end [K/s], scene) of the last piece
-    started: dict = {}      # scene (id) → the time its first piece started [s]
-    jump, jumped = None, set()   # the warning of a settled heat-up that the loads held at its film temperature
-    #                              moved (a jump of the loads), the scenes (id) it happened to: held no more
+    settling = _Settling()  # per scene: where its heat-up settled (fine cells there), past a jump of the loads
     with warnings.catch_warnings():
         # property calls at the integrator's trial states may lie beyond a correlation's data; the
         # validity of the states reported is checked once, on the series (limits.point_warnings)
@@ -254,12 +259,9 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
             T_film, split, nodes = (_film_of(T_state, first[1] if first else pre.coupling.roles, sc) if film else None), \
                 False, (None,)
             fc = cells.setdefault(id(sc_p), _FilmCells(sc_p, T_film if film else 0.0))
-            t_cross = None
-            if film and not clear:     # a cell of the film grid, unless the heat-up has settled
-                horizon = max(te - ts, ts - started.setdefault(id(sc), ts))   # the rest, or as long as it ran
-                nodes, (t_cross, drift) = fc.cell(T_film), _crossing(fc, fc.cell(T_film), T_film, horizon, last_film, sc)
-                if drift <= _FILM_SETTLED_K and id(sc) not in jumped:     # (past a jump of the loads: the cell's)
-                    nodes, t_cross = (T_film,), None
+            t_max, settled = np.inf, False
+            if film and not clear:     # a cell of the film grid, a fine one where the heat-up has settled
+                nodes, t_max, settled = settling.cell(fc, T_film, ts, te, sc, last_film)
             elif film:                 # a piece at its own operating clearance: a scene of its own
                 nodes = (T_film,)
             if clear or len(nodes) == 1 and film:    # pieces of ≈ _FILM_DRIFT_K of film-temperature drift,
@@ -268,15 +270,11 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
                 if ts + film_dt < te - 1e-9 * te:
                     pieces.insert(i + 1, (ts + film_dt, te, sc, last_seg))
                     te, last_seg, split = ts + film_dt, False, True
-            if kept[0] is sc_p and kept[1] == nodes:      # the same scene and film cell: the same sources
-                pm, sources = kept[2], kept[3]
-            else:
-                pm = _piece_model(sc_p, alts, load, pre if pre.serves(sc_p) else None, fc, nodes,
-                                  dominant=kept[2] if kept[0] is sc_p and _dominant_kept(alts) else None)
-                sources = heat_sources(pm)
-            held = film and not clear and len(nodes) == 1        # settled: the loads held at its film temperature
-            step = (_loss_step(kept[3], sources, pm.network, T_state) if held and kept[0] is sc_p
-                    and kept[1] is not None and len(kept[1]) == 2 else 0.0)   # ... against the cell's interpolated ones
+            pm, sources = _sources_of(kept, sc_p, alts, load, pre, fc, nodes)
+            if settled and kept[0] is sc_p and len(kept[1]) == 2 and settling.jumps(
+                    sc, T_film, ts, _loss_step(kept[3], sources, pm.network, T_state)):  # the fine cell's loads
+                nodes, t_max = fc.cell(T_film), np.inf      # against the grid cell's: a jump, the grid cell's stay
+                pm, sources = _sources_of(kept, sc_p, alts, load, pre, fc, nodes)
             kept = (sc_p, nodes, pm, sources)
             net, cp = pm.network, pm.coupling
             first = first or (models, cp.roles, list(net.nodes))
@@ -293,14 +291,11 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
             tr = solve_transient(net, sources, te - ts, T0_C=None if prev else _T0(T_state, net), t_eval=seg,
                                  rtol=rtol, atol=atol, stop=stop, continue_from=prev,
                                  fixed_C=None if boundary is None else boundary.shifted(ts),
-                                 until=(_cell_exit(fc, nodes, net, cp.roles, t_cross) if len(nodes) > 1 else
+                                 until=(_cell_exit(nodes, net, cp.roles, t_max) if len(nodes) > 1 else
                                         _drift_exit(nodes[0], net, cp.roles) if film else None))
             if tr.completed and tr.t.size and float(tr.t[-1]) < te - ts:     # it left its film cell: the rest from there
                 pieces.insert(i + 1, (ts + float(tr.t[-1]), te, sc, last_seg))
                 te, last_seg, split = ts + float(tr.t[-1]), False, True
-                if held and step > _JUMP_REL:
-                    jumped.add(id(sc))
-                    jump = jump or _jump_warning(nodes[0], te, _film_of(_T_nodes_of(tr, net), cp.roles, sc), step)
             prev = tr if split and tr.completed else None  # the next piece goes on with this one's integrator
             _append(out_t, out_T, out_rep, tr, ts, te, t_eval, last_seg)
             if tr.t.size:
@@ -317,8 +312,10 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
                     f.append(_CLEAR_DRIFT_M / max(abs(c1 - c["operating"]) * 1e-6, 1e-15))
                 film_dt = (te - ts) * float(np.clip(min(f), 0.5, 4.0))
             runaway_at(T_state, te)
-        if completed and film and len(nodes) == 2 and jump is None:   # ends settled inside a cell: the loads there?
-            jump = _settled_jump(kept, alts, load, pre, fc, T_state, cp.roles, last_film, te - started.get(id(sc), ts), te)
+        if completed and film and len(nodes) == 2 and settling.warning is None and id(sc) not in settling.at:
+            # ends settled inside a grid cell: the loads there?
+            settling.warning = _settled_jump(kept, alts, load, pre, fc, T_state, cp.roles, last_film,
+                                             te - settling.started.get(id(sc), ts), te)
     got = []
     if out_t:
         ro, cat = first[1], np.concatenate
@@ -327,7 +324,7 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
         runaway_in(x, cat(out_t))
         for _, _, sc, _ in pieces[:i + 1]:
             got += [w for w in point_warnings(sc, None, np.concatenate(x)) if str(w) not in map(str, got)]
-    got += [jump] if jump is not None else []
+    got += [settling.warning] if settling.warning is not None else []
     emit(got)
     return _assemble(out_t, out_T, out_rep, first, seg_changes, got, completed)
 
@@ -346,11 +343,63 @@ def _append(out_t, out_T, out_rep, tr, ts, te, t_eval, last_seg):
         out_rep.setdefault(n, []).append(np.asarray(v, float)[keep])
 
 
+class _Settling:
+    """Where the heat-up of each scene (id) settles: the time its first piece started (``started`` [s]), the film
+    temperature it settled at (``at`` [°C]: its pieces then in the fine cells there), the scenes past a jump of the
+    loads (``jumped``: the grid's cells to the end) and the jump's warning (``warning``, the first)."""
+
+    def __init__(self):
+        self.started, self.at, self.jumped, self.warning = {}, {}, set(), None
+
+    def cell(self, fc: "_FilmCells", T_film, ts, te, sc, last_film) -> tuple:
+        """(nodes, t_max [s], settled) of a piece of scene ``sc`` in [ts, te] starting at the film temperature
+        ``T_film`` [°C]: its grid cell, ended after ``t_max`` (twice the expected crossing, at most as long as
+        the scene has run: whether it settles is asked again), until the film temperature settles — at its rate at
+        the end of the last piece (``last_film``) it would move less than ``_FILM_SETTLED_K`` over the longer of
+        the rest and the time the scene has run; from then on (``settled`` True on the first), the fine cell
+        there, till it moves ``_FILM_DRIFT_K`` away."""
+        ran = ts - self.started.setdefault(id(sc), ts)
+        nodes = fc.cell(T_film)
+        t_cross, drift = _crossing(fc, nodes, T_film, max(te - ts, ran), last_film, sc)
+        at = self.at.get(id(sc))
+        if at is not None and abs(T_film - at) > _FILM_DRIFT_K:       # moved on from where it settled
+            del self.at[id(sc)]
+        elif at is None and drift <= _FILM_SETTLED_K and id(sc) not in self.jumped:
+            self.at[id(sc)] = T_film
+            return fc.cell(T_film, fine=True), np.inf, True
+        if id(sc) in self.at:
+            return fc.cell(T_film, fine=True), np.inf, False
+        return nodes, min(np.inf if t_cross is None else 2.0 * t_cross, max(ran, _FILM_DT0_S)), False
+
+    def jumps(self, sc, T_film, t_s, step) -> bool:
+        """True where a heat-up of scene ``sc`` settled at ``T_film`` [°C] (at ``t_s`` [s]), whose fine cell's loads
+        change the losses by ``step`` [-] against its grid cell's, past a jump of the loads (``step`` >
+        ``_JUMP_REL``): it goes on in its grid cells, and the jump's warning (:func:`_jump_warning`) says so."""
+        if step <= _JUMP_REL:
+            return False
+        self.jumped.add(id(sc))
+        del self.at[id(sc)]
+        self.warning = self.warning or _jump_warning(T_film, t_s, step)
+        return True
+
+
+def _sources_of(kept, sc_p, alts, load, pre, fc, nodes) -> tuple:
+    """(point model, heat sources) of a piece of scene ``sc_p`` in the film cell ``nodes``: the last piece's
+    (``kept``) in the same scene and cell, else :func:`_piece_model` (its family, network and coupling the last
+    piece's where they serve, :func:`_dominant_kept`)."""
+    if kept[0] is sc_p and kept[1] == nodes:
+        return kept[2], kept[3]
+    pm = _piece_model(sc_p, alts, load, pre if pre.serves(sc_p) else None, fc, nodes,
+                      dominant=kept[2] if kept[0] is sc_p and _dominant_kept(alts) else None)
+    return pm, heat_sources(pm)
+
+
 def _settled_jump(kept, alts, load, pre, fc, T_state, roles, last_film, elapsed_s, t_s):
     """The jump warning (:func:`_jump_warning`) of a heat-up that ends settled — its film temperature, at its rate
-    at the end, moving less than ``_FILM_SETTLED_K`` over the ``elapsed_s`` it ran — inside a film cell (its losses
-    interpolated between the cell's nodes), where the loads solved at its film temperature change the losses by
-    more than ``_JUMP_REL`` (one more load solve); else None."""
+    at the end, moving less than ``_FILM_SETTLED_K`` over the ``elapsed_s`` it ran — inside a grid cell (its losses
+    interpolated between the cell's nodes; one that settled earlier went on in the fine cells, checked then), where
+    the loads solved at its film temperature change the losses by more than ``_JUMP_REL`` (one more load solve);
+    else None."""
     sc_p, _, _, sources = kept
     if last_film is None or abs(last_film[0]) * elapsed_s > _FILM_SETTLED_K:
         return None
@@ -360,7 +409,7 @@ def _settled_jump(kept, alts, load, pre, fc, T_state, roles, last_film, elapsed_
         step = _loss_step(sources, heat_sources(held), held.network, T_state)
     except (InputError, SolverError):      # a check after the run: it never costs the run (no warning then)
         return None
-    return _jump_warning(T_end, t_s, None, step) if step > _JUMP_REL else None
+    return _jump_warning(T_end, t_s, step) if step > _JUMP_REL else None
 
 
 def _film_weights(net, roles) -> np.ndarray:
@@ -383,14 +432,13 @@ def _crossing(cells: "_FilmCells", nodes, T_film, horizon, last, scene) -> tuple
     return gap / max(abs(rate), 1e-12), abs(rate) * horizon
 
 
-def _cell_exit(cells: "_FilmCells", nodes, net, roles, t_cross=None):
+def _cell_exit(nodes, net, roles, t_max=np.inf):
     """``until(t, T_K)`` of :func:`~thermobear.thermal.solve_transient`: True once the film temperature (the
     mean contact temperature of the node temperatures) has left the film cell ``nodes`` by a tenth of its width,
-    so that the next piece starts inside the next cell — or, with ``t_cross`` [s] (its expected crossing), after
-    twice that time (the heat-up slowing down: whether it settles in this cell is asked again)."""
-    c = _film_weights(net, roles)
-    lo, hi = nodes[0] - 0.1 * cells.step + _C0, nodes[-1] + 0.1 * cells.step + _C0
-    t_max = np.inf if t_cross is None else 2.0 * t_cross
+    so that the next piece starts inside the next cell — or after ``t_max`` [s] (the heat-up slowing down: whether
+    it has settled in this cell is asked again, :meth:`_Settling.cell`)."""
+    c, w = _film_weights(net, roles), 0.1 * (nodes[-1] - nodes[0])
+    lo, hi = nodes[0] - w + _C0, nodes[-1] + w + _C0
 
     def until(t, T_K) -> bool:
         T = float((T_K @ c)[0])
@@ -399,11 +447,9 @@ def _cell_exit(cells: "_FilmCells", nodes, net, roles, t_cross=None):
 
 
 def _drift_exit(T_film, net, roles):
-    """``until(t, T_K)`` of a piece whose film loads are held at ``T_film`` [°C]: True once the film temperature
-    has drifted from it by more than ``_FILM_DRIFT_K``, so that the next piece re-solves the loads where the heat-up
-    went (a piece's length comes from the drift rate of the last one: a heat-up that settled and then moves — the
-    loads held at the settled film temperature differ from the cell's interpolated ones, e.g. across a jump of the
-    loads — is caught here)."""
+    """``until(t, T_K)`` of a piece whose film loads are held at ``T_film`` [°C] (a piece at its own operating
+    clearance): True once the film temperature has drifted from it by more than ``_FILM_DRIFT_K``, so that the next
+    piece re-solves the loads where the heat-up went (a piece's length comes from the drift rate of the last one)."""
     c = _film_weights(net, roles)
     lo, hi = T_film - _FILM_DRIFT_K + _C0, T_film + _FILM_DRIFT_K + _C0
 
@@ -428,16 +474,14 @@ def _loss_step(before, after, net, T_state) -> float:
     return abs(P1 - P0) / max(abs(P0), 1e-300)
 
 
-def _jump_warning(T_held, t_s, T_now, step) -> OutsideValidity:
-    """The named warning of a heat-up that had settled at the film temperature ``T_held`` [°C] and that the film
-    loads solved there moved to ``T_now`` [°C] (at ``t_s`` [s]), their losses ``step`` [-] off those of the cell's
-    loads interpolated in the film temperature: the loads jump at that film temperature (the settled state was
-    that of the interpolation across the jump), it has no fixed point there (``T_now`` None: the run ends there)."""
-    moved = (f"and move it away (past {T_now:.2f} °C at t = {t_s:.4g} s)" if T_now is not None else
-             f"(the heat-up ends there, t = {t_s:.4g} s)")
+def _jump_warning(T_held, t_s, step) -> OutsideValidity:
+    """The named warning of a heat-up that had settled at the film temperature ``T_held`` [°C] (at ``t_s`` [s])
+    where the film loads solved there have losses ``step`` [-] off those of the cell's loads interpolated in the
+    film temperature, more than ``_JUMP_REL``: the loads jump at that film temperature (the settled state is that
+    of the interpolation across the jump), it has no fixed point there."""
     return OutsideValidity(
-        f"film load model: the heat-up settled at a film temperature of {T_held:.2f} °C, where the loads solved at "
-        f"that temperature change the losses by {100 * step:.3g} % {moved}: the loads jump there and the film "
+        f"film load model: the heat-up settled at a film temperature of {T_held:.2f} °C (t = {t_s:.4g} s), where the "
+        f"loads solved at that temperature change the losses by {100 * step:.3g} %: the loads jump there and the film "
         f"temperature has no fixed point (thermobear run names the jump); the heat-up stays at the jump, the loads "
         f"interpolated across it between the film temperatures of its cell ({_FILM_CELL_K:g} K apart)",
         quantity="film load jump", value=T_held, limit="a film temperature the loads do not jump at",
@@ -466,8 +510,9 @@ def _dominant_kept(alts) -> bool:
 
 class _FilmCells:
     """The film temperatures at which a scene's alternatives have their loads during a heat-up: for the film
-    load model the nodes of a grid T0 + j Δ [°C] (the cells its losses are interpolated over) and, where the
-    heat-up settles inside a cell, the film temperatures of its last pieces — each solved once per alternative,
+    load model the nodes of a grid T0 + j Δ [°C] (the cells its losses are interpolated over), of the grid
+    ``_FILM_FINE`` times finer where the heat-up settles, and the film temperatures of the pieces at their own
+    operating clearance and of the check after a run — each solved once per alternative,
     its Newton started from the alternative's nearest film temperature solved (the same loads, other films: the
     same equilibrium in fewer iterations; :func:`~thermobear.coupled.pipeline.family_film_loads`); the other
     alternatives' loads once."""
@@ -475,15 +520,17 @@ class _FilmCells:
     def __init__(self, scene: Scene, T0: float, step: float | None = None):
         self.scene, self.T0, self.step, self.solved = scene, float(T0), _FILM_CELL_K if step is None else step, {}
 
-    def cell(self, T_film) -> tuple:
-        """The grid's film temperatures (T_lo, T_hi) [°C] around ``T_film``, inside the lubricant's range (a cell
+    def cell(self, T_film, fine: bool = False) -> tuple:
+        """The grid's film temperatures (T_lo, T_hi) [°C] around ``T_film`` (``fine``: of the grid ``_FILM_FINE``
+        times finer, whose every ``_FILM_FINE``-th node is the grid's), inside the lubricant's range (a cell
         reaching past its limit ends there: the heat-up beyond is a runaway,
         :func:`~thermobear.coupled.limits.runaway_at`)."""
-        j = math.floor((T_film - self.T0) / self.step)
+        n = _FILM_FINE if fine else 1
+        j, w = math.floor((T_film - self.T0) / self.step * n), self.step / n
         lo, hi = T_LUBRICANT_REFUSE_C
-        a, b = max(self.T0 + j * self.step, lo), min(self.T0 + (j + 1) * self.step, hi)
-        if b - a < 1e-9 * self.step:          # at the range's end itself: the last cell inside it
-            a, b = (b - self.step, b) if b >= hi else (a, a + self.step)
+        a, b = max(self.T0 + j / n * self.step, lo), min(self.T0 + (j + 1) / n * self.step, hi)
+        if b - a < 1e-9 * w:                  # at the range's end itself: the last cell inside it
+            a, b = (b - w, b) if b >= hi else (a, a + w)
         return a, b
 
     def load(self, k: int, alt, T=None):
