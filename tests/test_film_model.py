@@ -253,6 +253,28 @@ def test_a_heat_up_settled_at_a_jump_of_the_loads_stays_there_and_says_so(tmp_pa
     assert not [w for w in smooth.warnings if w.quantity == "film load jump"]
 
 
+def test_a_settled_heat_up_ends_at_one_state_however_long_it_runs(tmp_path):
+    """A 16002 in an oil bath at −10 °C, film load model in the low-speed form: the loads are smooth (a film
+    temperature fixed point at 7.1 °C) but vary enough across a 3 K film cell that the cell's interpolated loads
+    settle 0.17 K off it.  Before, the end state depended on the run's length (inner ring 6.49 °C at 1e4 s, ending
+    inside the cell; 6.23 °C at 1e5 s, ending on loads held at the settled film temperature, which were not the
+    fixed point either).  A settled heat-up now goes on in cells eight times finer: every length past settling ends
+    at one state (to the integrator's tolerance), the steady state's."""
+    from thermobear.app.cli import main
+    path = tmp_path / "c.toml"
+    assert main(["init", "16002", "--lubrication", "oil-bath", "--out", str(path)]) == 0
+    s = tb.load_scene(path).with_(T_ambient_C=-10.0, models={"load_model": "film", "high_speed": False})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        runs = [tb.transient(s, t_end, t_eval=[0.0, t_end]) for t_end in (1e4, 1e5, 2e5)]
+        st = steady_state(s)
+    for tr in runs[1:]:
+        assert max(abs(tr.T_C[n][-1] - runs[0].T_C[n][-1]) for n in tr.T_C) < 0.003
+        assert tr.P_W[-1] == pytest.approx(runs[0].P_W[-1], rel=1e-4)
+    assert runs[0].T_C["inner_ring"][-1] == pytest.approx(st.T_C["inner_ring"], abs=0.03)
+    assert not [w for tr in runs for w in tr.warnings if w.quantity == "film load jump"]
+
+
 def test_a_heat_up_started_near_the_lubricants_limit_cools_without_asking_past_it():
     """Seed 004 started at 249 °C: the film cell around it reached 252 °C, past the oil's refusal temperature
     (250 °C), and the heat-up was refused as bad input (exit 2) before it could cool; the film grid now ends at
