@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from thermobear.coupled.newton import _C0
+from thermobear.coupled.newton import _C0, _slopes
 from thermobear.coupled.pipeline import Family, family_contacts, family_loads
 from thermobear.coupled.sources import Coupling, family_network, loss_parts, loss_sources, prepared_for
 from thermobear.coupled.steady import _batched
@@ -56,7 +56,8 @@ def point_model(scene: Scene, models: dict | None = None, *, T_film_C=None, load
 def heat_sources(pm: PointModel):
     """``sources(t, T_K)`` of :func:`thermobear.thermal.solve_transient` for a point model: the node
     sources of the losses at the node temperatures, and (with a leading time axis, the output pass)
-    the report P_W and P_<loss family> [W]."""
+    the report P_W and P_<loss family> [W]; its ``jacobian(t, T_K)``, ∂P/∂T of the free nodes, completes the
+    integrator's Jacobian with the losses' feedback (viscosity falls as the contacts warm)."""
     net, src, cp = pm.network, pm.source, pm.coupling
     free = ~net.fixed
 
@@ -72,6 +73,17 @@ def heat_sources(pm: PointModel):
         P = np.zeros(T_K.shape)
         P[..., free] = parts @ cp.S.T
         return P, rep
+
+    def jacobian(t, T_K):
+        """∂P/∂T of the free nodes (B, n_free, n_free) [W/K] at node temperatures (B, n) [K]: S ∂P/∂x C, the
+        loss parts' slopes by forward differences in one stacked evaluation (as the steady Newton's)."""
+        x = T_K[..., free] @ cp.C.T - _C0
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ExtrapolationWarning)
+            _, dP = _slopes(src, cp, x)
+        return cp.S @ dP @ cp.C
+
+    sources.jacobian = jacobian
     return sources
 
 

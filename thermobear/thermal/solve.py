@@ -377,7 +377,11 @@ def solve_transient(net: ThermalNetwork, sources: Callable, t_end: float, *, T0_
                                 (..., B, n) [K] (the output pass calls it once with a leading time
                                 axis), P the injected heat of the same shape [W], report a dict of
                                 arrays (..., B) to record (e.g. the loss breakdown); or a (B, n)
-                                matrix / dict of constant sources
+                                matrix / dict of constant sources.  A callable may carry
+                                ``sources.jacobian(t, T_K)``: ∂P/∂T of the free nodes (B, n_free,
+                                n_free) [W/K], which the integrator's Jacobian adds to the network's
+                                (without it: the network's alone, the sources' feedback left to the
+                                corrector's iterations)
     t_end : float               end time [s]
     T0_C : float, array, dict   initial temperature of the free nodes [°C] (default: ambient)
     breakpoints : sequence      times [s] where inputs step: the integration restarts there; inside a
@@ -530,9 +534,10 @@ class _Integrator:
         return q.ravel() * self.Cinv
 
     def jac(self, tau, yf):
-        _, T = self._state(tau, yf)
+        t, T = self._state(tau, yf)
         Aff, _ = self.net.blocks(self.net.conductances(T))
-        Jb = -Aff / self.Cb[:, :, None]
+        dP = getattr(self.sources, "jacobian", None)          # the sources' own feedback, where they give it
+        Jb = (-Aff if dP is None else dP(t, T) - Aff) / self.Cb[:, :, None]
         return Jb[0] if self.B == 1 else sp.block_diag(list(Jb), format="csc")
 
     def _kink_within_tolerance(self, net, sources, C, bnd, a, b) -> bool:
