@@ -126,10 +126,12 @@ def test_kappa_monotone_and_a_iso_monotone_capped_continuous():
         a = life_modification_factor(k, load)
         assert np.all(np.diff(a) >= -1e-12)                                 # better film, longer life
         assert a.min() >= 0.1 - 1e-12 and a.max() <= 50.0
-    # branches meet at kappa = 0.4 and 1 (the standard's rounded constants leave a 0.5 % step at 0.4)
+    # branches meet at kappa = 0.4 and 1 (ISO 281's five-digit exponents 0.054381 / 0.19087 / 0.071739 leave a
+    # 0.05 % step at 0.4; rounded to 0.054 / 0.19 / 0.071, as they were here, a 1 % step)
     for kb in (0.4, 1.0):
-        assert life_modification_factor(kb * (1 - 1e-9), 0.1) == pytest.approx(life_modification_factor(kb, 0.1),
-                                                                                rel=1e-2)
+        for load in (0.05, 0.2, 0.5):
+            assert life_modification_factor(kb * (1 - 1e-9), load) == pytest.approx(
+                life_modification_factor(kb, load), rel=1e-3)
     # more load (smaller e_C Cu/P) -> smaller a_ISO; a light load reaches the cap of 50
     x = np.linspace(0.0, 5.0, 200)
     a = life_modification_factor(2.0, x)
@@ -147,6 +149,11 @@ def test_a_iso_by_hand_radial_and_thrust():
     assert life_modification_factor(1.0, 0.25) == pytest.approx(hand, rel=1e-12)
     assert life_modification_factor(1.0, 0.75, "thrust") == pytest.approx(hand, rel=1e-12)
     assert modified_rating_life(hand, 100.0) == pytest.approx(100 * hand)
+    # the lower branches by hand with the standard's exponents: κ = 0.2 (x 2.2649, y 0.054381), κ = 0.6 (1.9987,
+    # 0.19087), κ = 2 (1.9987, 0.071739)
+    for k, x, y in ((0.2, 2.2649, 0.054381), (0.6, 1.9987, 0.19087), (2.0, 1.9987, 0.071739)):
+        hand = 0.1 * (1 - (2.5671 - x / k ** y) ** 0.83 * 0.25 ** (1 / 3)) ** -9.3
+        assert life_modification_factor(k, 0.25) == pytest.approx(hand, rel=1e-12)
 
 
 def test_contamination_levels_and_fatigue_load_limit():
