@@ -90,6 +90,17 @@ def test_maker_ratings_can_replace_the_iso_values():
     assert isinstance(r, RatingLife)
 
 
+def test_a_stated_rating_the_geometry_does_not_give_is_named():
+    """The 7210 states C0 = 25.5 kN (seed 004), its geometry gives 28.6 kN under ISO 76: rating_life uses the
+    geometry's and says so (a scene's ratings use the stated: s0 12.75 there, 14.29 here); given, no note."""
+    r = rating_life(bearing("7210"), Fr=2000.0, Fa=1000.0)
+    assert [n for n in r.notes if n.startswith("C0 = 28.58 kN from the geometry")] and r.s0 == pytest.approx(14.29, abs=0.01)
+    assert not [n for n in r.notes if n.startswith("C = ")]
+    given = rating_life(bearing("7210"), Fr=2000.0, Fa=1000.0, C0_N=25500.0)
+    assert not [n for n in given.notes if "from the geometry" in n] and given.s0 == pytest.approx(12.75)
+    assert not [n for n in rating_life(bearing("6208"), Fr=2000.0).notes if "from the geometry" in n]
+
+
 def test_rating_life_takes_a_bearing_name_and_refuses_a_load_distribution_that_is_not_one():
     kw = dict(Fr=2000.0, nu_m2_s=30e-6, n_rpm=3000.0)
     assert rating_life("6208", **kw).L10m_Mrev == rating_life(bearing("6208"), **kw).L10m_Mrev

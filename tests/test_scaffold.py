@@ -84,6 +84,10 @@ def test_defaults_follow_iso_15312_reference_conditions(capsys):
     # every key line says where its value comes from
     keys = [ln for ln in text.splitlines() if "=" in ln and not ln.startswith(("#", "["))]
     assert keys and all("#" in ln for ln in keys if not ln.startswith(("name =", "description =", "source =")))
+    # the catalogue's C0 of a 6208 is ISO 76 of its estimated geometry, not a maker's number: said so (it read
+    # "catalogue, ISO 76"); the 7210's is the one seed 004 states
+    assert "C0 = 19.89 kN (catalogue: ISO 76 from its internal geometry)" in text
+    assert "C0 = 25.50 kN (stated in the catalogue)" in _init(capsys, "7210", "--lubrication", "oil-bath")
     for name in ("51107", "7205B"):                       # axial (thrust) / radial with its axial reaction
         d = tomllib.loads(_init(capsys, name, "--lubrication", "grease"))
         loads = reference_loads(tb.bearing(name))

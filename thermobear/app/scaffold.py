@@ -35,7 +35,7 @@ from thermobear.contact.geometry import BallBearing, bearing
 from thermobear.coupled.speeds import ReferenceSpeed, reference_loads, thermal_reference_speed
 from thermobear.errors import InputError, NoSpeedRoot
 from thermobear.lubrication.lubricant import lubricant, lubricant_names
-from thermobear.rating.life import stated_ratings
+from thermobear.rating.life import load_ratings, stated_ratings
 from thermobear.scene import scene_from_dict
 from thermobear.thermal.builders.layout import H_MOUNT_W_M2K, layout
 
@@ -125,7 +125,10 @@ def _operation(brg, ref: ReferenceSpeed | None, n_rpm, Fr_N, Fa_N) -> list:
         loads = reference_loads(brg)
         fa, fr = loads.get("Fa", 0.0), loads.get("Fr", 0.0)
         C0, how = stated_ratings(brg)[1:]
-        C0 = f"C0 = {C0 / 1e3:.2f} kN ({'catalogue, ISO 76' if how[1] == 'stated' else how[1]})"
+        if how[1] == "stated":             # the catalogue's: ISO 76 of its (estimated) geometry, or a maker's value
+            how = ("", "catalogue: ISO 76 from its internal geometry" if abs(C0 / load_ratings(brg)[1] - 1.0) < 5e-3
+                   else "stated in the catalogue")
+        C0 = f"C0 = {C0 / 1e3:.2f} kN ({how[1]})"
         src_fr = f"N: 0.05 C0, ISO 15312 reference load of radial bearings, {C0}"
         src_fa = {"thrust": f"N: 0.02 C0, ISO 15312 reference load of thrust bearings, {C0}",
                   "angular_contact": "N: 1.25 Fr tan(alpha0), the axial reaction of a half load zone (Sjövall; Harris "

@@ -156,6 +156,18 @@ def _osculation_note(brg):
     return None
 
 
+def _stated_notes(brg, C_iso, C0_iso) -> list:
+    """Notes where the bearing's data state a rating (``C_kN``, ``C0_kN``) more than 0.5 % from the ISO value of its
+    geometry that :func:`rating_life` used (``C_iso``, ``C0_iso``; None: a rating the caller gave)."""
+    out = []
+    for name, iso, stated, arg in (("C", C_iso, brg.C, "C_N"), ("C0", C0_iso, brg.C0, "C0_N")):
+        if iso is not None and stated is not None and abs(float(stated) / iso - 1.0) > 5e-3:
+            out.append(f"{name} = {iso / 1e3:.4g} kN from the geometry (ISO {'281' if name == 'C' else '76'}); the "
+                       f"bearing's data state {float(stated) / 1e3:.4g} kN, which a scene's ratings use: give "
+                       f"{arg}={float(stated):.6g} for that")
+    return out
+
+
 def rating_life(brg: BallBearing, ld: LoadDistribution | None = None, *, Fa=None, Fr=None, nu_m2_s=None,
                 n_rpm=None, contamination="normal_cleanliness", rotating="inner", C_N=None,
                 C0_N=None) -> RatingLife:
@@ -183,7 +195,8 @@ def rating_life(brg: BallBearing, ld: LoadDistribution | None = None, *, Fa=None
 
     Notes
     -----
-    C, C0: ISO 281:2007 / ISO 76:2006 from D, dm, Z, α (not the catalogue's stored values).
+    C, C0: ISO 281:2007 / ISO 76:2006 from D, dm, Z, α (not the catalogue's stored values; where those differ by
+    more than 0.5 %, a note says so — a scene's ratings, :func:`stated_ratings`, use the stored ones).
     P = X Fr + Y Fa (ISO 281 Table 3), P0 = max(X0 Fr + Y0 Fa, Fr) (ISO 76 Table 1),
     L10 = (C/P)³, L10r from the ball loads (ISO/TS 16281); with ν and n:
     κ = ν/ν1(n, dm), C_u = C0/22 (dm ≤ 100 mm), a_ISO(κ, e_C C_u/P) ≤ 50, L10m = a_ISO L10 and
@@ -212,6 +225,7 @@ def rating_life(brg: BallBearing, ld: LoadDistribution | None = None, *, Fa=None
     osc = _osculation_note(brg)
     if osc:
         notes.append(osc)
+    notes += _stated_notes(brg, C_iso if C_N is None else None, C0_iso if C0_N is None else None)
     kw = {}
     if ld is None:
         try:
