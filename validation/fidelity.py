@@ -477,7 +477,7 @@ def score_seed004(levels=LEVELS) -> list[Score]:
     fns = {"L0": level0, "L1": level1, "L2": level2,
            "L3": lambda s, n, T: at_ring_temperature("L3", s, n, T),
            "L4": lambda s, n, T: at_ring_temperature("L4", s, n, T)}
-    notes = {"L0": "72B constants (unconfirmed, skf_constants.toml); uniform T",
+    notes = {"L0": "72B constants (SKF 10000 EN 72xx BECBP, transcribed: skf_constants.toml); uniform T",
              "L1": "uniform T (no network: balls and oil at the rings' temperature)",
              "L2": "uniform T (no network: balls and oil at the rings' temperature)",
              "L3": "rings imposed at T, balls and oil–air from the network (seed 004 §4.5)",
@@ -533,8 +533,9 @@ LADDER = ("L0", "L1", "L2", "L3", "L4")
 #: (family, "La→Lb") for a step where the error rises).  A miss without an entry is reported as not diagnosed.
 MISSING = {
     ("seed004 P ratio", "L0"):
-        "SKF 2004's angular-contact sliding load grows with its centrifugal term F_g = R3 d_m⁴ n² (M_sl ×3.3 from "
-        "3200 to 6500 rpm with the unconfirmed 72B constants) and weighs more as ν falls: ratio 3.5–4.4",
+        "SKF 2004's angular-contact sliding load grows with its centrifugal term F_g = R3 d_m⁴ n² (M_sl ×3.7 from "
+        "3200 to 6500 rpm with the 72B constants of SKF 10000 EN; ×3.3 with the 2005 values recalled before) and weighs "
+        "more as ν falls: ratio 4.1–5.1 (3.5–4.4 with the recalled values)",
     ("seed004 P ratio", "L2"):
         "no thermal network (contacts at the rings' T, while L3's network puts the balls −7 … +13 K from the rings "
         "at 3200 rpm and +7 … +31 K at 6500 rpm, the 30 °C jet cooling them) and a "
