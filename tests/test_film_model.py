@@ -354,3 +354,24 @@ def test_the_heat_ups_jacobian_carries_the_losses_feedback(example, T_start_C):
     fd = np.column_stack(cols)
     assert np.abs(fd).max() > 0.05                        # the feedback is there to be carried: ≥ 0.05 W/K
     np.testing.assert_allclose(J, fd, rtol=0, atol=0.02 * np.abs(fd).max())
+
+
+def test_films_thicker_than_the_clearance_are_named_as_a_preload():
+    """A 6208 in a bath of ISO VG 220 at −10 °C, 1500 rpm, Fr 2 kN: the flooded films take up more than the
+    clearance, and the film load model loads every ball — Σ Q 74 kN on the inner race for the dry solution's 2.3 kN,
+    647 W — which `run` and `sweep` gave without a word.  Named now (quantity "film preload"); a light load that the
+    films of the unloaded balls merely double (Fr 50 N: ×2–3.7, adding < 0.05 C0) and the warm bath are not."""
+    from thermobear.app.sweep import run_sweep
+    s = tb.load_scene(tb.example_path("oil_bath_6208.toml")).with_(n_rpm=1500.0, Fr=2000.0, Fa=0.0,
+                                                                   lubricant="iso-vg-220-mineral")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        cold = tb.solve(s.with_(T_C=-10.0))
+        warm = tb.solve(s.with_(T_C=20.0))
+        light = tb.solve(s.with_(T_C=40.0, n_rpm=8000.0, Fr=50.0, lubricant="iso-vg-32-mineral"))
+        rows = run_sweep(s, {"T_C": [-10.0, 20.0]})
+    pre = [w for w in cold.warnings if w.quantity == "film preload"]
+    assert cold.models_used["load_model"][0] == "film" and len(pre) == 1 and pre[0].value > 20
+    assert not [w for r in (warm, light) for w in r.warnings if w.quantity == "film preload"]
+    assert light.models_used["load_model"][0] == "film"
+    assert [any("film-induced preload" in w for w in r["warnings"]) for r in rows] == [True, False]

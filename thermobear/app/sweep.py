@@ -127,8 +127,9 @@ def _losses_batch(sc: Scene, n_rpm, T_C, models: dict, load=None):
                         load=scene_load(sc, models) if load is None else load)
 
 
-def _prescribed_group(scenes, points, models, members):
-    """Rows of one group of prescribed-temperature points (one vectorised loss evaluation)."""
+def _prescribed_group(scenes, points, models, members, dry=None):
+    """Rows of one group of prescribed-temperature points (one vectorised loss evaluation); ``dry``: point → its dry
+    load distribution (a preload by the films of the film load model is named)."""
     sc = scenes[members[0]]
     n = np.array([scenes[i].n_rpm for i in members], float)
     T = np.array([scenes[i].T_C for i in members], float)
@@ -149,7 +150,9 @@ def _prescribed_group(scenes, points, models, members):
     P, M = np.atleast_1d(r.P_W), np.atleast_1d(r.torque_Nm)
     bd = {k: np.broadcast_to(np.atleast_1d(v), P.shape) for k, v in r.breakdown_W.items()}
     # each point's validity, as `run` states it for a prescribed temperature (coupled.limits.point_warnings)
-    warned = family_warnings([scenes[i] for i in members], r, np.repeat(T[:, None], 3, axis=1))
+    film = models["load_model"][0] == "film" and dry is not None and models["losses"][0] == "local"
+    warned = family_warnings([scenes[i] for i in members], r, np.repeat(T[:, None], 3, axis=1),
+                             dry=[dry.get(i) for i in members] if film else None)
     rows = {}
     for j, i in enumerate(members):
         row = _base_row(points[i])
@@ -172,20 +175,21 @@ def _prescribed(scenes, points, idx, emit):
         for a in alts:
             key = (tuple((k, repr(v)) for k, v in points[i].items() if k not in _VECTOR_KEYS),
                    tuple(sorted((k, repr(v[0])) for k, v in a.models.items() if k != "thermal")))
-            groups.setdefault(key, (a.models, []))[1].append((i, a.weight))
+            groups.setdefault(key, (a.models, []))[1].append((i, a.weight, a.dry))
     parts: dict = {}
     for models, members in groups.values():
-        ids = [i for i, _ in members]
+        ids = [i for i, _, _ in members]
+        dry = {i: d for i, _, d in members}
         try:
-            rows = _prescribed_group(scenes, points, models, ids)
+            rows = _prescribed_group(scenes, points, models, ids, dry)
         except (SolverError, InputError):     # each point alone: a failure stays on its own row
             rows = {}
             for i in ids:
                 try:
-                    rows.update(_prescribed_group(scenes, points, models, [i]))
+                    rows.update(_prescribed_group(scenes, points, models, [i], dry))
                 except (SolverError, InputError) as exc:
                     rows[i] = _row(points[i], scenes[i], exc=exc)
-        for i, w in members:
+        for i, w, _ in members:
             parts.setdefault(i, []).append((w, rows[i]))
     for i in sorted(parts):
         emit(i, _blend_rows(parts[i]))

@@ -13,10 +13,11 @@ import numpy as np
 from thermobear.errors import ContactLimit, ExtrapolationWarning, InputError, OutsideValidity, ThermalRunaway
 from thermobear.arrays import take
 from thermobear.loads.api import check_contacts, groove_angle, loads_text
+from thermobear.rating.life import stated_ratings
 from thermobear.validity import LIMITS, P_MAX_REFUSE_PA, T_LUBRICANT_REFUSE_C, check, collect
 
 __all__ = ["p_max_Pa", "contact_pressure", "overloads", "point_warnings", "family_warnings", "grease_limit", "emit",
-           "runaway_at", "runaway_in"]
+           "runaway_at", "runaway_in", "FILM_PRELOAD_RATIO", "FILM_PRELOAD_C0"]
 
 
 def p_max_Pa(Q, a, b):
@@ -138,11 +139,65 @@ def _oil_as_grease_warning(scene) -> list:
         source=f"materials/lubricants/{name}.toml", field="lubricant.name")]
 
 
-def point_warnings(scene, losses, x_C) -> list:
+#: The film load model's Σ Q over the dry solution's above which the films preload the bearing (a warning), where
+#: the films also add more than FILM_PRELOAD_C0 C0 (ISO 15312's light reference load, 0.05 C0): at light loads the
+#: films of the balls outside the load zone legitimately double a small Σ Q (a 6208 oil bath under Fr 50 N: ×2–3.7)
+FILM_PRELOAD_RATIO = 2.0
+FILM_PRELOAD_C0 = 0.05
+
+
+def _dry_sum(dry) -> float:
+    """Σ Q of the inner contacts [N] of a point's dry load distribution (a DryRow, a LoadDistribution; None: NaN)."""
+    if dry is None:
+        return np.nan
+    ld = dry.load() if hasattr(dry, "load") else dry
+    return float(np.sum(ld.Q_i))
+
+
+def _film_ratio(scenes, losses, dry) -> np.ndarray:
+    """Per point (B,): Σ Q of the inner contacts of ``losses`` (mean ball load × Z, over model alternatives too)
+    over that of the point's dry load distribution (``dry``: one per point, None: no check → NaN); NaN too where the
+    films add less than :data:`FILM_PRELOAD_C0` C0."""
+    B = len(scenes)
+    c = getattr(losses, "contacts", None)
+    if not c or dry is None:
+        return np.full(B, np.nan)
+    Q = np.reshape(np.asarray(c["inner"]["Q"], float), (B, -1)).mean(axis=1) * np.array([s.bearing.Z for s in scenes])
+    Q_dry = np.array([_dry_sum(d) for d in dry])
+    with np.errstate(all="ignore"):
+        ratio = Q / Q_dry
+    for b in np.flatnonzero(ratio > FILM_PRELOAD_RATIO):          # the bearing's C0 only where it is asked
+        if not Q[b] - Q_dry[b] > FILM_PRELOAD_C0 * stated_ratings(scenes[b].bearing)[1]:
+            ratio[b] = np.nan
+    return ratio
+
+
+def _film_preload_warning(scene, ratio: float, dry) -> list:
+    """An OutsideValidity warning where the film load model's ball loads exceed the dry solution's by more than
+    :data:`FILM_PRELOAD_RATIO` (and by more than :data:`FILM_PRELOAD_C0` C0): the fully flooded films on both races of each ball (Hamrock–Dowson thicknesses,
+    which a starved inlet would thin) take up more than the clearance and preload every ball; the hysteresis and
+    sliding losses follow those loads."""
+    if not ratio > FILM_PRELOAD_RATIO:
+        return []
+    Q_dry = _dry_sum(dry)
+    return [OutsideValidity(
+        f"film-induced preload: with the films in the contact laws the balls carry Σ Q = {ratio * Q_dry / 1e3:.3g} kN "
+        f"on the inner race, {ratio:.3g} × the {Q_dry / 1e3:.3g} kN of the dry solution — the fully flooded films "
+        "(Hamrock–Dowson, no starvation) are thicker than the clearance leaves them, and the hysteresis and sliding "
+        "losses follow these loads; a starved inlet (cold, viscous oil) makes thinner films, so this is an upper "
+        "bound (models.load_model = jones_harris gives the dry loads)", quantity="film preload", value=float(ratio),
+        limit=f"<= {FILM_PRELOAD_RATIO:g} × the dry loads", source="thermobear.coupled.limits",
+        field="models.load_model")]
+
+
+def point_warnings(scene, losses, x_C, dry=None) -> list:
     """The OutsideValidity warnings of one solved operating point: speed, contact pressure, contact
     and oil temperatures (the lubricant's validated range; a grease's upper operating temperature; an oil's data
-    under a grease supply), the SKF model's Φ_bl, a bearing at speed without load."""
+    under a grease supply), the SKF model's Φ_bl, a bearing at speed without load; with ``dry`` (the point's dry load
+    distribution, where the film load model gave ``losses``' loads) a preload by the films."""
     grease = _grease_warning(scene, x_C) + _oil_as_grease_warning(scene) + _unloaded_warning(scene)
+    if dry is not None:
+        grease += _film_preload_warning(scene, float(_film_ratio([scene], losses, [dry])[0]), dry)
     with collect(replay=False) as got:
         check("n_dm", scene.n_rpm * scene.bearing.dm * 1e3, "operation.n_rpm", warn=True)
         check("lubricant_T", np.asarray(x_C, float), "contact / oil temperature", category=ExtrapolationWarning)
@@ -166,16 +221,18 @@ def _outside_warn(name, v) -> np.ndarray:
     return out
 
 
-def family_warnings(scenes, losses, x_C, answered=None) -> list:
+def family_warnings(scenes, losses, x_C, answered=None, dry=None) -> list:
     """:func:`point_warnings` of the B points of a family (batched ``losses``, ``x_C`` (B, 3)): the
     ranges checked for all points at once, the messages made only for the points outside (and
-    ``answered``: a mask of the points that have an answer)."""
+    ``answered``: a mask of the points that have an answer); ``dry``: per point its dry load distribution, where the
+    film load model gave the loads (a preload by the films is named)."""
     B = len(scenes)
     n_dm = np.array([s.n_rpm * s.bearing.dm * 1e3 for s in scenes])
     flag = _outside_warn("n_dm", n_dm[:, None]) | _outside_warn("lubricant_T", x_C)
     T_max = np.array([np.inf if grease_limit(s) is None else grease_limit(s) for s in scenes])
     flag |= np.asarray(x_C, float).reshape(B, -1).max(axis=1) > T_max
     flag |= np.array([_unloaded(s) or _oil_as_grease(s) for s in scenes])
+    flag |= _film_ratio(scenes, losses, dry) > FILM_PRELOAD_RATIO
     c = getattr(losses, "contacts", None)
     if c:
         p = np.concatenate([np.reshape(p_max_Pa(c[s]["Q"], c[s]["a"], c[s]["b"]), (B, -1)) for s in ("inner", "outer")], 1)
@@ -186,7 +243,7 @@ def family_warnings(scenes, losses, x_C, answered=None) -> list:
     if answered is not None:
         flag &= np.asarray(answered, bool)
     for b in np.flatnonzero(flag):
-        out[b] = point_warnings(scenes[b], take(losses, b, B), x_C[b])
+        out[b] = point_warnings(scenes[b], take(losses, b, B), x_C[b], None if dry is None else dry[b])
     return out
 
 

@@ -175,7 +175,8 @@ def solve(scene: Scene) -> RunResult:
             r = blend_losses([(a.weight, scene_losses(scene, models=a.models, dry=None if a.dry is None else a.dry.load()))
                               for a in alts])
         T = float(scene.T_C)
-        ws = point_warnings(scene, r, [T, T, T])
+        ws = point_warnings(scene, r, [T, T, T], dry=next((a.dry for a in alts if a.dry is not None
+                                                          and a.models["load_model"][0] == "film"), None))
         emit(ws)
         return RunResult(scene=scene, P_W=float(r.P_W), torque_Nm=float(r.torque_Nm),
                          breakdown_W={k: float(v) for k, v in r.breakdown_W.items()},
