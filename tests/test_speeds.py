@@ -150,7 +150,9 @@ def test_cli_speed_says_when_the_limit_is_jumped_and_prints_the_answers_warnings
     assert "warning: OutsideValidity: operation.n_rpm: speed n·dm" in err
     assert main(["speed", str(scene), "--json"]) == 0
     rep = json.loads(capsys.readouterr().out)["model"]
-    below = float(rep["jump"].split(" °C just below")[0])
+    node, below = rep["jump"].split(" °C just below")[0].split()            # "<node> <T> °C just below it ..."
+    below = float(below)
+    assert node in ("inner_race", "outer_race")
     assert rep["residual_K"] > 1.0 and below < 70.0 < rep["T_C"]                 # the step across the limit
 
 
@@ -287,8 +289,33 @@ def test_cli_speed_temperature_at_a_speed_does_not_depend_on_the_other_speeds(bl
         warnings.simplefilter("ignore")
         T_iso = hottest_ring_C(tb.steady_state(block.with_(n_rpm=rep["iso15312"]["n_rpm"])))
     assert rep["iso15312"]["T_C"] == pytest.approx(T_iso, abs=1e-3) and "T_C_error" not in rep["iso15312"]
+    at = rep["iso15312"]["T_node"]
     assert rep["din732"]["T_C"] is None and rep["din732"]["T_C_error"].startswith("not modelled (InputError: "
                                                                                   "operation.n_rpm = 80000.0")
     assert main(["speed", tb.example_path("block_6208_oil_bath.toml")]) == 0
     out = capsys.readouterr().out
-    assert f"hottest ring in this scene {T_iso:7.2f} °C" in out and "—  not modelled (InputError: operation.n_rpm" in out
+    assert f"{at} {T_iso:.2f} °C in this scene" in out and "—  not modelled (InputError: operation.n_rpm" in out
+
+
+def test_cli_speed_names_the_node_it_limits(tmp_path, capsys):
+    """`speed` said "hottest ring 70.00 °C" where the node at 70 °C was outer_race (the raceway layer; the ring
+    body outer_ring was at 67.2 °C): the label names the node limited at each speed, the header the nodes the
+    hotter race is taken from, and the temperature is that node's in `run` at that speed."""
+    scene = tmp_path / "spindle.toml"
+    assert main(["init", "7014C", "--lubrication", "oil-air", "--speed-rpm", "12000", "--Fa-N", "600",
+                 "--out", str(scene)]) == 0
+    capsys.readouterr()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        assert main(["speed", str(scene), "--json"]) == 0
+        rep = json.loads(capsys.readouterr().out)
+        st = tb.steady_state(tb.load_scene(scene).with_(n_rpm=rep["model"]["n_rpm"]))
+    assert rep["node"] == "hotter race" and rep["race_nodes"] == ["inner_race", "outer_race"]
+    mod = rep["model"]
+    assert mod["T_node"] == "outer_race" and st.T_C["outer_race"] == pytest.approx(70.0, abs=0.05)
+    assert st.T_C["outer_ring"] < 69.0                        # the ring body is not what is limited
+    out = app_speed.summary(rep)
+    assert "hottest ring" not in out and "limit 70 °C on the hotter of inner_race and outer_race" in out
+    assert f"{mod['n_rpm']:9.0f} rpm   outer_race 70.00 °C" in out
+    for part in ("iso15312", "din732"):
+        assert f"{rep[part]['T_node']} {rep[part]['T_C']:.2f} °C" in out

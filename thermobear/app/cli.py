@@ -162,11 +162,15 @@ def build_parser() -> argparse.ArgumentParser:
     lo.set_defaults(func=cmd_loads)
 
     spd = sub.add_parser("speed", help="thermal reference speed (ISO 15312, model), thermally safe speed of the "
-                         "scene's cooling (model) and DIN 732's, with the hottest ring at each")
+                         "scene's cooling (model) and DIN 732's, each with the temperature of the limited node there "
+                         "(the hotter race, or --node)")
     spd.add_argument("scene")
     spd.add_argument("--limit-C", dest="limit_C", type=float, default=70.0, metavar="T",
-                     help="limit temperature of the hottest ring or --node [°C] (default 70)")
-    spd.add_argument("--node", default=None, help="a network node instead of the hottest ring")
+                     help="limit temperature [°C] (default 70) of the hotter race — the hotter of the inner and outer "
+                     "contact nodes, inner_race / outer_race in a network built from [shaft] / [housing] (the "
+                     "raceway layers, not the ring bodies inner_ring / outer_ring) — or of --node")
+    spd.add_argument("--node", default=None, help="limit this free network node instead of the hotter race (e.g. "
+                     "outer_ring: the stationary outer ring, where ISO 15312 / DIN 732 take the bearing's temperature)")
     _common(spd, plot=False)
     spd.set_defaults(func=cmd_speed)
     it = sub.add_parser("init", help="write a commented scene for a catalogue bearing in a shaft and housing "

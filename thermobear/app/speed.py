@@ -1,7 +1,8 @@
 """``thermobear speed``: ISO 15312's thermal reference speed (the model's losses at the standard's
 reference conditions), the thermally safe speed of the scene's own cooling (the coupled model) and
-DIN 732's thermally safe speed (the standard's method), each with the scene's hottest-ring
-temperature at that speed."""
+DIN 732's thermally safe speed (the standard's method), each with the temperature of the node the limit is
+on at that speed: the hotter race (``inner_race`` or ``outer_race``, the rings' raceway layers — not the ring
+bodies ``inner_ring`` / ``outer_ring``; :func:`thermobear.coupled.speeds.hottest_race`), or ``--node``."""
 from __future__ import annotations
 
 import sys
@@ -10,7 +11,8 @@ import warnings
 from thermobear.app.output import print_json
 from thermobear.app.verbs import load_scene_with
 from thermobear.coupled.limits import emit
-from thermobear.coupled.speeds import (check_node, din732_safe_speed, hottest_ring_C, thermal_reference_speed,
+from thermobear.coupled.sources import prepare
+from thermobear.coupled.speeds import (HOTTER_RACE, check_node, din732_safe_speed, hottest_race, thermal_reference_speed,
                                       thermally_safe_speed)
 from thermobear.coupled.steady import steady_state, steady_states
 from thermobear.errors import InputError, NoSpeedRoot, OutsideValidity, SolverError
@@ -25,8 +27,8 @@ JUMP_K = 0.1
 
 
 def _at_speeds(scene: Scene, speeds: dict, node) -> dict:
-    """Hottest ring (or ``node``) of the scene's steady state at each named speed [°C], or the exception that
-    says why there is none (each speed on its own: one past the lubricant's limit does not take the others)."""
+    """(node, temperature [°C]) of the hotter race (or ``node``) in the scene's steady state at each named speed,
+    or the exception that says why there is none (each speed on its own: one past the lubricant's limit does not take the others)."""
     names = [k for k, v in speeds.items() if v is not None]
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OutsideValidity)
@@ -34,7 +36,7 @@ def _at_speeds(scene: Scene, speeds: dict, node) -> dict:
             res = steady_states([scene.with_(n_rpm=speeds[k]) for k in names])
         except InputError:                  # a speed the models refuse, or a point past the lubricant's limit,
             res = [_one(scene, speeds[k]) for k in names]        # stops the batch: one by one
-    return {k: r if isinstance(r, Exception) else hottest_ring_C(r, node) for k, r in zip(names, res)}
+    return {k: r if isinstance(r, Exception) else hottest_race(r, node) for k, r in zip(names, res)}
 
 
 def _one(scene: Scene, n_rpm: float):
@@ -60,7 +62,8 @@ def _across(scene: Scene, n_rpm: float, node, residual_K: float) -> str:
             st = steady_state(scene.with_(n_rpm=n_rpm + (2.0 if residual_K < 0 else -2.0)))
     except (SolverError, InputError) as exc:
         return f"no equilibrium {where} ({type(exc).__name__}: the losses outgrow the cooling)"
-    return f"{hottest_ring_C(st, node):.2f} °C {where} (a step of the model)"
+    at, T = hottest_race(st, node)
+    return f"{at} {T:.2f} °C {where} (a step of the model)"
 
 
 def speed_report(scene: Scene, *, limit_C: float = 70.0, node: str | None = None) -> dict:
@@ -81,7 +84,10 @@ def _report(scene: Scene, limit_C: float, node, node_field: str = "node") -> tup
         check_node(scene, node, field=node_field)
     ws: list = []
     rep = {"scene": scene.name, "bearing": scene.bearing.name, "limit_C": limit_C,
-           "node": node or "hottest ring", "T_ambient_C": scene.T_ambient_C}
+           "node": node or HOTTER_RACE, "T_ambient_C": scene.T_ambient_C}
+    if node is None and scene.network is not None:      # the nodes the hotter race is the hotter of
+        roles = prepare(scene).coupling.roles
+        rep["race_nodes"] = [roles["inner"], roles["outer"]]
     try:
         r = thermal_reference_speed(scene.bearing)
         ws += r.warnings
@@ -94,7 +100,7 @@ def _report(scene: Scene, limit_C: float, node, node_field: str = "node") -> tup
     try:
         s = thermally_safe_speed(scene, limit_C=limit_C, node=node)
         ws += s.warnings
-        rep["model"] = {"n_rpm": s.n_rpm, "T_C": s.T_C, "residual_K": s.residual_K, "iterations": s.iterations,
+        rep["model"] = {"n_rpm": s.n_rpm, "T_C": s.T_C, "T_node": s.T_node, "residual_K": s.residual_K, "iterations": s.iterations,
                         "bracket_rpm": list(s.bracket_rpm), "monotonic": s.monotonic, "P_W": s.steady.P_W,
                         "warnings": [w.as_dict() for w in s.warnings]}
         if abs(s.residual_K) > JUMP_K:
@@ -114,29 +120,34 @@ def _report(scene: Scene, limit_C: float, node, node_field: str = "node") -> tup
     temps = _at_speeds(scene, {"iso15312": rep["iso15312"].get("n_rpm"), "din732": rep["din732"].get("n_rpm")}, node)
     for k, T in temps.items():
         if isinstance(T, Exception):        # a number field holds a number or null; the reason beside it
-            rep[k].update(T_C=None, T_C_error=_why_not(T))
+            rep[k].update(T_C=None, T_node=None, T_C_error=_why_not(T))
         else:
-            rep[k]["T_C"] = T
+            rep[k]["T_node"], rep[k]["T_C"] = T
     return rep, ws
 
 
-def _line(label: str, part: dict, what: str) -> str:
+def _line(label: str, part: dict, note: str = "") -> str:
+    """A speed and the temperature of the node the limit is on there (which node: the hotter race is either)."""
     if "error" in part:
         return f"  {label:58s} —  {part['error']}"
     T = part.get("T_C")
-    T = f"{T:7.2f} °C" if T is not None else f"—  {part.get('T_C_error', 'not evaluated')}"
-    return f"  {label:58s} {part['n_rpm']:9.0f} rpm   {what} {T}"
+    T = f"{part['T_node']} {T:.2f} °C{note}" if T is not None else f"—  {part.get('T_C_error', 'not evaluated')}"
+    return f"  {label:58s} {part['n_rpm']:9.0f} rpm   {T}"
 
 
 def summary(rep: dict) -> str:
     """The text table of :func:`speed_report`."""
-    node = rep["node"]
+    races = rep.get("race_nodes")
+    on = rep["node"]
+    if races:
+        on = (f"the hotter of {races[0]} and {races[1]}" if races[0] != races[1] else races[0]) + \
+            " (the inner and outer contact nodes; --node NAME limits another node)"
     lines = [f"thermobear speed — {rep['scene']}: {rep['bearing']}, ambient {rep['T_ambient_C']:g} °C, "
-             f"limit {rep['limit_C']:g} °C on {node}", ""]
+             f"limit {rep['limit_C']:g} °C on {on}", ""]
     iso, mod, din = rep["iso15312"], rep["model"], rep["din732"]
-    lines.append(_line("ISO 15312 thermal reference speed (model, reference cond.)", iso, f"{node} in this scene"))
-    lines.append(_line("thermally safe speed, this scene's cooling (model)", mod, node))
-    lines.append(_line("DIN 732 thermally safe speed (standard's method)", din, f"{node} (model)"))
+    lines.append(_line("ISO 15312 thermal reference speed (model, reference cond.)", iso, " in this scene"))
+    lines.append(_line("thermally safe speed, this scene's cooling (model)", mod))
+    lines.append(_line("DIN 732 thermally safe speed (standard's method)", din, " (model)"))
     if "error" not in iso:
         lines.append(f"    ISO 15312: q_r A_r = {iso['Phi_r_W']:.2f} W (A_r {iso['A_r_mm2']:.0f} mm²), load "
                      f"{iso['load_N']:.0f} N, {iso['lubricant']}; residual {iso['residual_W']:.1e} W, "
@@ -147,7 +158,7 @@ def summary(rep: dict) -> str:
                                                 "below the bracket (first crossing taken)"))
         if "jump" in mod:
             lines.append(f"    model: the limit is {'not reached' if mod['residual_K'] < 0 else 'passed by a step'} at "
-                         f"this speed — {node} {mod['T_C']:.2f} °C here, {mod['jump']}: the speed bounds the "
+                         f"this speed — {mod['T_node']} {mod['T_C']:.2f} °C here, {mod['jump']}: the speed bounds the "
                          "equilibria, not the limit temperature")
     if "error" not in din:
         lines.append(f"    DIN 732: f_n = {din['f_n']:.3f} × n_θr {din['n_theta_r_rpm']:.0f} rpm (ISO 15312's "

@@ -5,8 +5,9 @@ thermally safe speed of a scene's own cooling (root finding on the coupled stead
 * :func:`thermal_reference_speed` — the speed at which the local loss model, at ISO 15312's
   reference conditions (bearing at 70 °C, reference load and oil, oil bath up to the middle of the
   lowest ball), dissipates the reference heat flow q_r A_r (:mod:`thermobear.rating.speeds`).
-* :func:`thermally_safe_speed` — the speed at which the hottest ring (the race nodes of the inner
-  and outer roles) or a chosen node of the scene's coupled steady state reaches a limit
+* :func:`thermally_safe_speed` — the speed at which the hotter race (the node of the inner or outer
+  contact role: ``inner_race`` / ``outer_race``, the rings' raceway layers, where the network has them;
+  :func:`hottest_race`) or a chosen node of the scene's coupled steady state reaches a limit
   temperature: DIN 732's question answered with the full model.
 * :func:`din732_safe_speed` — DIN 732's answer: n_θ = f_n n_θr with n_θr by ISO 15312's own
   (Palmgren-form) equations and the heat the seating surfaces and the circulating oil carry away.
@@ -48,13 +49,17 @@ from thermobear.validity import LIMITS, collect
 optimize = lazy_module("scipy.optimize")    # brentq: loaded by its first use
 
 __all__ = ["ReferenceSpeed", "SafeSpeed", "Din732Speed", "reference_lubricant", "reference_loads", "thermal_reference_speed",
-           "thermally_safe_speed", "din732_safe_speed", "hottest_ring_C", "check_node"]
+           "thermally_safe_speed", "din732_safe_speed", "hottest_ring_C", "hottest_race", "check_node",
+           "HOTTER_RACE"]
 
 _N_DM_REFUSE = LIMITS["n_dm"].refuse[1]          #: mm/min
 #: Fa / (Fr tan α) of a single angular contact bearing loaded over half its balls (load zone ε = 0.5,
 #: Sjövall's integrals J_a/J_r for ball bearings; Harris & Kotzalas 2007, "Distribution of internal
 #: loading"): the axial reaction ISO 15312's radial reference load needs on such a bearing.
 AXIAL_REACTION = 1.25
+#: What a speed search limits when no node is named: the hotter of the inner and outer race nodes
+#: (:func:`hottest_race`)
+HOTTER_RACE = "hotter race"
 
 
 def _ceiling_rpm(brg: BallBearing, n_max_rpm=None) -> float:
@@ -192,18 +197,27 @@ def thermal_reference_speed(brg: BallBearing, *, lubricant: Lubricant | None = N
                           monotonic=bool(np.all(np.diff(P) > 0.0)), warnings=list(ws))
 
 
-def hottest_ring_C(st: SteadyState, node: str | None = None) -> float:
-    """Temperature [°C] of ``node`` in a steady state, or the hottest ring (the nodes of the inner and
-    outer roles, the races) when ``node`` is None."""
+def hottest_race(st: SteadyState, node: str | None = None) -> tuple[str, float]:
+    """(node, temperature [°C]) of ``node`` in a steady state, or of the hotter race when ``node`` is None: the
+    node of the inner or the outer contact role (:data:`thermobear.thermal.network.ROLES`: ``inner_race`` /
+    ``outer_race`` where the network has them — the rings' raceway layers, not the ring bodies ``inner_ring``
+    / ``outer_ring`` — else the washers, the rings or the one bearing node)."""
     if node is not None:
         if node not in st.T_C:
             raise InputError("node", node, f"a node of the scene's network: {', '.join(st.T_C)}")
-        return float(st.T_C[node])
-    return float(max(st.T_C[st.roles["inner"]], st.T_C[st.roles["outer"]]))
+        return node, float(st.T_C[node])
+    inner, outer = st.roles["inner"], st.roles["outer"]
+    return (inner, float(st.T_C[inner])) if st.T_C[inner] > st.T_C[outer] else (outer, float(st.T_C[outer]))
+
+
+def hottest_ring_C(st: SteadyState, node: str | None = None) -> float:
+    """Temperature [°C] of ``node`` in a steady state, or of the hotter race (:func:`hottest_race`) when ``node``
+    is None."""
+    return hottest_race(st, node)[1]
 
 
 def check_node(scene: Scene, node: str | None, *, field: str = "node", prepared=None) -> None:
-    """InputError naming ``field`` unless ``node`` (None: the hottest ring) is a free node of the scene's network,
+    """InputError naming ``field`` unless ``node`` (None: the hotter race) is a free node of the scene's network,
     one whose temperature is solved: a fixed-temperature node (a boundary, or imposed by ``thermal.fixed_C``)
     does not follow the speed, and a speed search on it would answer nothing."""
     if node is None:
@@ -224,8 +238,9 @@ class SafeSpeed:
     scene : str
     n_rpm : float         speed at which the node reaches the limit [rpm]
     limit_C : float       limit temperature [°C]
-    node : str            the node (the hottest ring: ``"hottest ring"``)
+    node : str            the node limited (:data:`HOTTER_RACE` when none was named)
     T_C : float           its temperature at n_rpm [°C]
+    T_node : str          the node whose temperature T_C is (the hotter race: ``inner_race`` or ``outer_race``)
     residual_K : float    T_C − limit_C [K]
     iterations : int      Brent iterations
     bracket_rpm : tuple   the ladder speeds around the root [rpm]
@@ -247,6 +262,7 @@ class SafeSpeed:
     monotonic: bool
     steady: SteadyState = field(repr=False, default=None)
     warnings: list = field(default_factory=list)
+    T_node: str = ""
 
 
 def _beyond(exc) -> bool:
@@ -327,13 +343,14 @@ def _contact_no_root(scene, limit_C, what, n_c, T_c, exc) -> NoSpeedRoot:
 
 def thermally_safe_speed(scene: Scene, *, limit_C: float = 70.0, node: str | None = None, n_min_rpm=None,
                          n_max_rpm=None, points: int = 9, xtol_rpm: float = 1.0) -> SafeSpeed:
-    """Speed at which the scene's hottest ring (or ``node``) reaches ``limit_C`` in the coupled steady state.
+    """Speed at which the scene's hotter race (:func:`hottest_race`; or ``node``) reaches ``limit_C`` in the coupled
+    steady state.
 
     Parameters
     ----------
     scene : Scene          the machine (its load, lubrication and cooling); its own speed is replaced
     limit_C : float        limit temperature [°C]
-    node : str             a network node instead of the hottest ring
+    node : str             a network node instead of the hotter race
     n_min_rpm, n_max_rpm   search range [rpm] (default: 1 % of the scene's speed, at least 1 rpm, up to the
                            n·d_m limit of thermobear.validity)
     points : int           ladder points (one batched steady-state call)
@@ -360,7 +377,7 @@ def thermally_safe_speed(scene: Scene, *, limit_C: float = 70.0, node: str | Non
         raise InputError("n_min_rpm", n_min_rpm, f"a speed in (0, {top:.6g}) rpm below n_max_rpm")
     prep = prepare(scene)
     check_node(scene, node, prepared=prep)
-    what = "the hottest ring" if node is None else f"node {node}"
+    what = "the hotter race (inner or outer race node)" if node is None else f"node {node}"
     ladder = np.geomspace(bottom, top, points)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OutsideValidity)         # the answer's own warnings are kept
@@ -404,11 +421,11 @@ def thermally_safe_speed(scene: Scene, *, limit_C: float = 70.0, node: str | Non
     if not r.converged:
         raise NoConvergence(f"{scene.name}: Brent did not converge ({r.flag})", iterations=r.iterations)
     st = seen[n] if n in seen else steady_state(scene.with_(n_rpm=float(n)), prepared=prep)
-    Tn = hottest_ring_C(st, node)
+    at, Tn = hottest_race(st, node)
     rise = T[int(np.argmin(T[:i + 1])):i + 1]       # from the coolest ladder point up to the crossing
-    return SafeSpeed(scene=scene.name, n_rpm=float(n), limit_C=float(limit_C), node=node or "hottest ring", T_C=Tn,
+    return SafeSpeed(scene=scene.name, n_rpm=float(n), limit_C=float(limit_C), node=node or HOTTER_RACE, T_C=Tn,
                      residual_K=Tn - limit_C, iterations=int(r.iterations), bracket_rpm=(lo, hi),
-                     monotonic=bool(np.all(np.diff(rise) > 0.0)), steady=st, warnings=list(st.warnings))
+                     monotonic=bool(np.all(np.diff(rise) > 0.0)), steady=st, warnings=list(st.warnings), T_node=at)
 
 
 @dataclass
