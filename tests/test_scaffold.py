@@ -191,3 +191,22 @@ def test_init_takes_iso_76_c0_from_the_geometry_where_the_catalogue_has_none(cap
     line = next(ln for ln in text.splitlines() if ln.startswith("Fa_N"))
     assert float(line.split("=")[1].split("#")[0]) == pytest.approx(0.02 * C0, rel=5e-3)
     assert f"C0 = {C0 / 1e3:.2f} kN (ISO 76 from the geometry)" in line
+
+
+@pytest.mark.parametrize("name, skf", [("7014C", False), ("71905E", False), ("7005E", False), ("6208", True),
+                                       ("7205 B", True), ("51107", True)])
+def test_init_suggests_the_skf_model_only_where_it_runs(name, skf, tmp_path, capsys):
+    """The header suggested `--set models.losses=skf` for every bearing; for the 70 C/E and 719 C/E series (no SKF
+    constants) that run exits 2.  It is suggested where the run takes it, and elsewhere the header says why not."""
+    scene = tmp_path / "s.toml"
+    assert main(["init", name, "--lubrication", "grease", "--out", str(scene)]) == 0
+    header = "\n".join(ln for ln in scene.read_text(encoding="utf-8").splitlines()[:4])
+    assert ("--set models.losses=skf" in header) == skf
+    capsys.readouterr()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", OutsideValidity)
+        code = main(["run", str(scene), "--set", "models.losses=skf"])
+    assert code == (0 if skf else 2)
+    if not skf:
+        assert "No SKF 2004 model" in header and "no SKF constants" in header
+        assert "no SKF constants" in capsys.readouterr().err

@@ -32,8 +32,10 @@ import re
 
 from thermobear import __version__
 from thermobear.contact.geometry import BallBearing, bearing
+from thermobear.coupled.ratings import check_static_safety
+from thermobear.coupled.sources import scene_losses
 from thermobear.coupled.speeds import ReferenceSpeed, reference_loads, thermal_reference_speed
-from thermobear.errors import InputError, NoSpeedRoot
+from thermobear.errors import InputError, NoSpeedRoot, SolverError
 from thermobear.lubrication.lubricant import lubricant, lubricant_names
 from thermobear.rating.life import load_ratings, stated_ratings
 from thermobear.scene import scene_from_dict
@@ -275,6 +277,16 @@ def _bearing_rows(brg: BallBearing) -> list:
              "(thermobear list bearings --series ...); any geometry key overrides, e.g. D_mm = ...")]
 
 
+def _skf_hint(scene) -> str:
+    """The header's word on the SKF 2004 model: ``--set models.losses=skf`` where the model evaluates this scene
+    (its series has SKF's constants: not the 70 C/E, 719 C/E series), else why it does not."""
+    try:
+        scene_losses(scene, T_C=70.0, models={"losses": "skf"})
+    except (InputError, SolverError) as exc:
+        return f"--json). No SKF 2004 model (models.losses = \"skf\") for it: {' '.join(str(exc).split())}"
+    return "--json; --set models.losses=skf for the SKF 2004 model)."
+
+
 def scaffold(name: str, lubrication: str, *, oil: str | None = None, housing: str = "block", n_rpm=None, Fr_N=None,
              Fa_N=None, command: str | None = None) -> str:
     """The commented scene TOML of a catalogue bearing in a parametric machine (see the module docstring).
@@ -330,11 +342,11 @@ def scaffold(name: str, lubrication: str, *, oil: str | None = None, housing: st
     lay = layout(sc.network)
     rows["shaft"], rows["housing"] = _shaft_rows(sc.network, lay), _housing_rows(sc.network, lay, housing)
     d = {k: {key: v for key, v, _ in r} for k, r in rows.items()}
-    scene_from_dict(d)                                       # the scene as written is a valid scene
+    sc = scene_from_dict(d)                                  # the scene as written is a valid scene
     lines = [f"# A {brg.name}{_suffix(closure)} in a {housing} housing, {lubrication}: written by "
              f"`{command or 'thermobear init ' + brg.name + ' --lubrication ' + lubrication}`.",
              "# Every key is used; units are in the key names; each comment says where the value comes from.",
-             "# Solve it: thermobear run THIS_FILE  (--json; --set models.losses=skf for the SKF 2004 model).",
+             f"# Solve it: thermobear run THIS_FILE  ({_skf_hint(sc)}",
              "# The network is built from [shaft] and [housing] (examples/README.md, \"Machine keys\")."]
     notes = {"bearing": ("" if closure else "seals = \"RS1\" (none | shield | RSL | RSH | RS1) and ")
              + "cage = \"outer_ring\" add" + ("" if closure else " seal and") + " cage losses",

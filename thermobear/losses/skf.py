@@ -77,8 +77,8 @@ def skf_constants(kind: str, series: str) -> dict:
     series_tab = sub["series"]
     if series is None or str(series) not in series_tab:
         raise InputError("bearing.series", series,
-                         f"no SKF constants for this {kind} series; known: {', '.join(series_tab)} "
-                         "(or pass calibrated R1, S1)")
+                         f"no SKF constants for this {kind} series; known: {', '.join(series_tab)}"
+                         + (" (or pass calibrated R1, S1)" if kind == "thrust" else ""))   # _brg_args: thrust only
     out = {"K_z": sub["K_z"]}
     out.update(series_tab[str(series)])
     return out
