@@ -210,3 +210,20 @@ def test_init_suggests_the_skf_model_only_where_it_runs(name, skf, tmp_path, cap
     if not skf:
         assert "No SKF 2004 model" in header and "no SKF constants" in header
         assert "no SKF constants" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("argv, field", [
+    (["6208", "--lubrication", "oil-bath", "--Fr-N", "1e9"], "--Fr-N = 1000000000.0"),
+    (["51107", "--lubrication", "grease", "--Fa-N", "1e7"], "--Fa-N = 10000000.0"),
+    (["7205B", "--lubrication", "oil-bath", "--Fr-N", "30000", "--Fa-N", "20000"], "--Fa-N, --Fr-N = 'Fa 20000 N, Fr 30000 N'"),
+])
+def test_init_refuses_loads_the_bearing_cannot_carry(argv, field, tmp_path, capsys):
+    """`init 6208 --Fr-N 1e9` wrote a scene `run` then refused: the static safety `run` checks (s0 = C0/P0 >= 0.5,
+    ISO 76) refuses it here, naming the option, and nothing is written."""
+    out = tmp_path / "s.toml"
+    assert main(["init", *argv, "--out", str(out)]) == 2
+    o, err = capsys.readouterr()
+    assert err.startswith(f"error: {field} — static safety s0 ") and len(err.splitlines()) == 1
+    assert not out.exists() and "wrote" not in o
+    assert main(["init", "6208", "--lubrication", "oil-bath", "--Fr-N", "9000", "--out", str(out)]) == 0   # s0 2.2
+    assert out.exists()

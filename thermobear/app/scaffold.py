@@ -38,7 +38,7 @@ from thermobear.coupled.speeds import ReferenceSpeed, reference_loads, thermal_r
 from thermobear.errors import InputError, NoSpeedRoot, SolverError
 from thermobear.lubrication.lubricant import lubricant, lubricant_names
 from thermobear.rating.life import load_ratings, stated_ratings
-from thermobear.scene import scene_from_dict
+from thermobear.scene import Scene, scene_from_dict
 from thermobear.thermal.builders.layout import H_MOUNT_W_M2K, layout
 
 __all__ = ["METHODS", "HOUSINGS", "scaffold"]
@@ -258,6 +258,21 @@ def _check_number(field: str, v, positive: bool):
         raise InputError(field, v, "must be a finite number " + ("> 0" if positive else ">= 0"))
 
 
+def _check_loads(brg: BallBearing, oil: str, supply: str, Fa_N, Fr_N):
+    """Given loads the bearing cannot carry refused naming the options, before anything is computed: the static
+    safety ``run`` checks (:func:`thermobear.coupled.ratings.check_static_safety`, ISO 76)."""
+    if Fa_N is None and Fr_N is None:
+        return                                          # ISO 15312's reference loads: 0.05 C0 / 0.02 C0
+    sc = Scene(name=brg.name, bearing=brg, lubricant=lubricant(oil), supply=supply, n_rpm=1.0, Fa=float(Fa_N or 0.0),
+               Fr=float(Fr_N or 0.0))
+    try:
+        check_static_safety(sc)
+    except InputError as exc:
+        given = [(f, v) for f, v in (("--Fa-N", Fa_N), ("--Fr-N", Fr_N)) if v]
+        field, value = given[0] if len(given) == 1 else (", ".join(f for f, _ in given), exc.value)
+        raise InputError(field, value, exc.expected) from None
+
+
 def _suffix(closure: list) -> str:
     """The closure suffix of a designation from its rows ("-2RS1", "-Z"; "" without seals)."""
     if not closure:
@@ -326,6 +341,7 @@ def scaffold(name: str, lubrication: str, *, oil: str | None = None, housing: st
                          "d x D x B (thermobear list bearings)")
     supply = METHODS[lubrication]
     oil, oil_src = _lubricant(oil, supply, brg)
+    _check_loads(brg, oil, supply, Fa_N, Fr_N)
     ref = _reference_speed(brg) if (n_rpm is None or supply == "oil_jet") else None
     rows = {"bearing": _bearing_rows(brg) + closure, "lubricant": _lubrication(brg, supply, oil, oil_src, ref),
             "operation": _operation(brg, ref, n_rpm, Fr_N, Fa_N),
