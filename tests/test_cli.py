@@ -398,3 +398,24 @@ def test_one_warning_line_per_fact(capsys):
     err = capsys.readouterr().err.strip().splitlines()
     temp = [ln for ln in err if "lubricant temperature 200 °C" in ln]
     assert len(temp) == 1 and temp[0].startswith("warning: ExtrapolationWarning: ")
+
+
+def test_negative_ranges_and_values_follow_their_option_as_they_are(capsys, tmp_path):
+    """`sweep --T-C -10:100:12` failed in argparse ("expected one argument": a value starting with '-' taken for an
+    option); only --T-C=-10:100:12 worked.  A number, list or range after an option that takes a value is its value,
+    in every verb (--T0-C -1e3 reaches its own check); the sweep's help says so."""
+    scene = tmp_path / "s.toml"
+    assert main(["init", "6208", "--lubrication", "oil-bath", "--out", str(scene)]) == 0
+    capsys.readouterr()
+    for T in (["--T-C", "-10:100:3"], ["--T-C=-10:100:3"], ["--T-C", "-10,45,1e2"]):
+        code, out, err = run(capsys, "sweep", scene, *T, "--n-rpm", "1000", "--quiet")
+        assert code == 0, err
+        rows = [ln.split(",") for ln in out.splitlines() if not ln.startswith("#")]
+        assert [float(r[rows[0].index("T_C")]) for r in rows[1:]] == [-10.0, 45.0, 100.0]
+    code, _, err = run(capsys, "sweep", scene, "--Fa", "-5:10:2", "--quiet")
+    assert_bad_input(code, err, "Fa")                                # the sweep's own check, not argparse's
+    code, _, err = run(capsys, "transient", scene, "--t-end", "10", "--T0-C", "-1e3")
+    assert_bad_input(code, err, "--T0-C = -1000.0 — start temperature")
+    with pytest.raises(SystemExit):
+        main(["sweep", "--help"])
+    assert "--T-C -10:100:12" in " ".join(capsys.readouterr().out.split())

@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
 import signal
 import sys
 import warnings
@@ -43,9 +44,46 @@ __all__ = ["main", "build_parser", "EXIT_BAD_INPUT", "EXIT_SOLVER", "EXIT_INTERR
 EXIT_BAD_INPUT = 2
 EXIT_SOLVER = 3
 
+#: options that take one value, filled as the parser is built (:func:`attach_negative_values`)
+_VALUED: set = set()
+_NUM = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+#: a negative number, list (-10,0,10) or range (-10:100:12): argparse took it for an option
+_NEGATIVE = re.compile(rf"-(?:\d|\.\d)[^\s]*")
+_NUMBERS = re.compile(rf"{_NUM}(?:\s*[,:]\s*{_NUM})*")
+
+
+def attach_negative_values(argv: list) -> list:
+    """``--T-C -10:100:12`` as ``--T-C=-10:100:12``: a value after an option that takes one, starting with '-' and
+    reading as a number, a list a,b,c or a range start:stop:count, attached to its option (argparse took it for
+    an option and refused "expected one argument"); everything after ``--`` is left as it is.
+
+    >>> _ = build_parser()                      # (it records the options that take a value)
+    >>> attach_negative_values(["sweep", "s.toml", "--T-C", "-10:100:12", "--Fa", "-x", "--quiet"])
+    ['sweep', 's.toml', '--T-C=-10:100:12', '--Fa', '-x', '--quiet']
+    """
+    out, args, i = [], list(argv), 0
+    while i < len(args):
+        tok = args[i]
+        if tok == "--":
+            return out + args[i:]
+        if (tok in _VALUED and i + 1 < len(args) and _NEGATIVE.match(args[i + 1])
+                and _NUMBERS.fullmatch(args[i + 1].strip())):
+            out.append(f"{tok}={args[i + 1]}")
+            i += 2
+            continue
+        out.append(tok)
+        i += 1
+    return out
+
 
 class _Parser(argparse.ArgumentParser):
-    """argparse with one-line errors (exit 2)."""
+    """argparse with one-line errors (exit 2); records the options that take one value (``_VALUED``)."""
+
+    def add_argument(self, *args, **kwargs):
+        action = super().add_argument(*args, **kwargs)
+        if action.option_strings and action.nargs is None:
+            _VALUED.update(action.option_strings)
+        return action
 
     def error(self, message):
         print(f"error: {self.prog}: {' '.join(message.split())} (see {self.prog} --help)", file=sys.stderr)
@@ -113,12 +151,14 @@ def build_parser() -> argparse.ArgumentParser:
     _uncertainty_args(tr)
     tr.set_defaults(func=cmd_transient)
 
-    sw = sub.add_parser("sweep", help="grid over speed, load, temperature and lubricant (rows written as they finish)")
+    sw = sub.add_parser("sweep", help="grid over speed, load, temperature and lubricant (rows written as they finish)",
+                        epilog="A:B:N is N values from A to B (inclusive), a,b a list. A range or list may start "
+                        "with a negative number as it is: --T-C -10:100:12, --T-C -20,0,20 (--T-C=-10:100:12 too).")
     sw.add_argument("scene")
     sw.add_argument("--n-rpm", dest="n_rpm", metavar="A:B:N|a,b", help="speeds [rpm]")
     sw.add_argument("--Fa", metavar="A:B:N|a,b", help="axial loads [N]")
     sw.add_argument("--Fr", metavar="A:B:N|a,b", help="radial loads [N]")
-    sw.add_argument("--T-C", dest="T_C", metavar="A:B:N|a,b", help="prescribed temperatures [°C]")
+    sw.add_argument("--T-C", dest="T_C", metavar="A:B:N|a,b", help="prescribed temperatures [°C], e.g. -10:100:12")
     sw.add_argument("--lubricant", metavar="NAME,...", help="lubricant names")
     sw.add_argument("--csv", metavar="OUT", help="write the rows as CSV (index column first), each row as it finishes")
     sw.add_argument("--jsonl", metavar="OUT", help="write the rows as JSON lines, each row as it finishes")
@@ -226,7 +266,7 @@ def _terminate(signum, frame):
 
 def main(argv=None) -> int:
     parser = build_parser()
-    args = parser.parse_args(argv)
+    args = parser.parse_args(attach_negative_values(sys.argv[1:] if argv is None else argv))
     debug = getattr(args, "debug", False)
     signal.signal(signal.SIGTERM, _terminate)          # SIGTERM ends a run as Ctrl-C does
     try:
