@@ -36,3 +36,29 @@ def test_set_unknown_designation_is_bad_input(capsys):
     code = main(["run", BATH, "--set", "bearing=9999", "--set", "T_C=60"])
     err = capsys.readouterr().err
     assert code == 2 and err.startswith("error: bearing = '9999' — unknown catalog name")
+
+
+def test_set_clearance_group_rebuilds_the_scenes_bearing(tmp_path, capsys):
+    """`--set clearance_group=C3` was refused citing the Python API (`scene.with_(clearance_group)`): it is the
+    scene's [bearing] key, set as `bearing.clearance_group` (or alone) — the bearing rebuilt from the file's
+    [bearing] table with it (6208: P_d 13 µm CN → 24 µm C3) — and an unknown key names `--set <key>`."""
+    scene = tmp_path / "s.toml"
+    assert main(["init", "6208", "--lubrication", "oil-bath", "--out", str(scene)]) == 0
+    capsys.readouterr()
+    from thermobear.app.verbs import load_scene_with
+    cn = load_scene_with(scene).bearing
+    for item in ("clearance_group=C3", "bearing.clearance_group=C3", 'bearing.clearance_group="C3"'):
+        b = load_scene_with(scene, [item]).bearing
+        assert b.clearance_group == "C3" and b.Pd == pytest.approx(24e-6) and b.name == cn.name and cn.Pd == 13e-6
+    assert load_scene_with(scene, ["bearing=6308", "clearance_group=C4"]).bearing.name == "6308"
+    code = main(["run", str(scene), "--json", "--set", "clearance_group=C3", "--set", "T_C=60"])
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    assert "P_d 24 µm (C3)" in json.loads(out)["models_used"]["clearance"]["reason"]
+    code = main(["run", str(scene), "--set", "clearance_grp=C3"])
+    err = capsys.readouterr().err
+    assert code == 2 and err.startswith("error: --set clearance_grp = 'C3' — unknown key; accepted: n_rpm")
+    assert "scene.with_" not in err and "bearing.<key>" in err and len(err.splitlines()) == 1
+    code = main(["run", str(scene), "--set", "bearing.clearance_group=C9"])
+    err = capsys.readouterr().err
+    assert code == 2 and err.startswith("error: bearing.clearance_group = 'C9' — must be one of CN, C3, C4")

@@ -97,7 +97,8 @@ def _common(sp, plot=True, sets=True):
     if sets:
         sp.add_argument("--set", action="append", metavar="KEY=VALUE",
                         help="override n_rpm, Fa, Fr, T_C, T_ambient_C, lubricant, ...; models.<key>=<value> "
-                             "forces a model; fixed_C.<node>=T imposes a measured node temperature [°C]")
+                             "forces a model; fixed_C.<node>=T imposes a measured node temperature [°C]; "
+                             "bearing.<key>=<value> sets a key of the [bearing] table (clearance_group=C3 too)")
     sp.add_argument("--debug", action="store_true", default=argparse.SUPPRESS, help="show tracebacks")
 
 

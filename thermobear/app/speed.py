@@ -9,7 +9,7 @@ import sys
 import warnings
 
 from thermobear.app.output import print_json
-from thermobear.app.verbs import load_scene_with
+from thermobear.app.overrides import load_scene_with
 from thermobear.coupled.limits import emit
 from thermobear.coupled.sources import prepare
 from thermobear.coupled.speeds import (HOTTER_RACE, check_node, din732_safe_speed, hottest_race, thermal_reference_speed,

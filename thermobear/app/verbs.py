@@ -10,7 +10,6 @@ from __future__ import annotations
 import math
 import signal
 import sys
-import tomllib
 import warnings
 from pathlib import Path
 
@@ -20,6 +19,7 @@ from thermobear.app.output import (Progress, RowWriter, check_out_dir, check_out
                                    print_json, write_text, wrote)
 from thermobear.app.bands import compare_bands
 from thermobear.app.calibration import calibrate
+from thermobear.app.overrides import load_scene_with, overrides  # noqa: F401  (overrides: its former home)
 from thermobear.app.scaffold import scaffold
 from thermobear.app.rig import channel_map, compare, parse_map, read_log
 from thermobear.app.spindown import spin_down_runs
@@ -37,7 +37,6 @@ from thermobear.lubrication.lubricant import lubricant_names
 from thermobear.coupled.ratings import check_static_safety
 from thermobear.models import moments, plan
 from thermobear.rating.life import stated_ratings
-from thermobear.scene import load_scene
 from thermobear.scene.network import network_nodes
 from thermobear.validity import T_LUBRICANT_REFUSE_C
 
@@ -66,49 +65,6 @@ def _plots():
 
 
 # --------------------------------------------------------------------------- inputs
-def _value(text: str):
-    """A ``--set`` value read as TOML (``6500``, ``true``, ``"skf"``); a bare word stays text."""
-    try:
-        return tomllib.loads(f"v = {text}")["v"]
-    except tomllib.TOMLDecodeError:
-        return text.strip()
-
-
-#: ``--set`` keys whose value is a name (a catalogue designation, a lubricant), never a number
-_NAMED = ("bearing", "lubricant")
-
-
-def overrides(items) -> dict:
-    """``--set key=value`` items → :meth:`Scene.with_` keyword arguments (``models.<key>``,
-    ``fixed_C.<node>``, ``parameters.<name>`` go into their tables)."""
-    out: dict = {}
-    for it in items or []:
-        if "=" not in it:
-            raise InputError("--set", it, "expected key=value, e.g. --set n_rpm=6500 or --set models.losses=skf")
-        k, v = (s.strip() for s in it.split("=", 1))
-        val = _value(v)
-        if k in _NAMED and isinstance(val, (int, float)) and not isinstance(val, bool):
-            val = v                    # a catalogue designation that reads as a number: 6308, 51110
-        for prefix, table in (("fixed_C.", "T_fixed_C"), ("models.", "models"), ("parameters.", "network_parameters")):
-            if k.startswith(prefix):
-                out.setdefault(table, {})[k[len(prefix):]] = val
-                break
-        else:
-            out[k] = val
-    return out
-
-
-def load_scene_with(path, sets=None):
-    """The scene of a file with the ``--set`` overrides applied (each checked as in a scene file)."""
-    scene = load_scene(path)
-    if sets:
-        ov = overrides(sets)
-        if "T_fixed_C" in ov:
-            ov["T_fixed_C"] = {**scene.T_fixed_C, **ov["T_fixed_C"]}
-        scene = scene.with_(**ov)
-    return scene
-
-
 def _T0(value, field="--T0-C"):
     """A start temperature [°C]: finite and in the lubricant's accepted range."""
     if value is None:

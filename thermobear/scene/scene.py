@@ -54,7 +54,7 @@ from thermobear.scene.network import (PARAMETRIC, check_lubrication_keys, lubric
 from thermobear.thermal.builders import Machine
 
 __all__ = ["Scene", "load_scene", "scene_from_dict", "SUPPLIES", "SECTIONS", "MODEL_FIELDS", "RIG_TARGETS",
-           "SHAFT_FIELDS", "HOUSING_FIELDS"]
+           "SHAFT_FIELDS", "HOUSING_FIELDS", "WITH_KEYS"]
 
 SUPPLIES = ("oil_jet", "grease", "oil_bath", "oil_air", "dry_film")
 _T_LO, _T_HI = validity.T_LUBRICANT_REFUSE_C
@@ -433,6 +433,8 @@ _WITH = {
     "T_fixed_C": _with_table("T_fixed_C"),
     "models": _with_table("models"),
 }
+#: the keys :meth:`Scene.with_` accepts, with their aliases in the scene file's units (Fa_N, ...)
+WITH_KEYS = tuple(_WITH) + tuple(_ALIASES)
 
 
 def _lubricant_of(sec: dict, where: str):
