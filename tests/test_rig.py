@@ -351,3 +351,24 @@ def test_transient_log_change_on_the_last_row_is_ignored(tmp_path, synthetic_sce
     with pytest.raises(InputError, match="static safety") as e:       # not run, yet no bearing carries it
         compare(synthetic_scene, huge, m)
     assert e.value.field.startswith("huge.csv: last row (t = 1800 s): operation")
+
+
+def test_compare_refuses_a_one_row_transient_log_naming_it_and_states_the_units(tmp_path, capsys):
+    """A one-row transient log ran a heat-up from t_s to itself: `error: t_end_s = 0.0 — must be > 0`, naming no
+    file.  It is refused naming the CSV (a transient log needs two rows at increasing times), by compare and
+    calibrate alike, nothing written; and the compare table's "SS err" column carries its unit as the others do."""
+    from thermobear.app.cli import main
+    scene, out = tmp_path / "s.toml", tmp_path / "cmp.csv"
+    assert main(["init", "6208", "--lubrication", "oil-bath", "--out", str(scene)]) == 0
+    one = _write(tmp_path, "t_s,T_outer_ring_C\n0,20\n", "one_row.csv")
+    for verb in (["compare", "--csv", str(out)], ["calibrate", "--param", "T_ambient_C"]):
+        capsys.readouterr()
+        assert main([verb[0], str(scene), str(one), "--map", "T_outer_ring_C=outer_ring", *verb[1:]]) == 2
+        err = capsys.readouterr().err
+        assert err.startswith("error: one_row.csv = '1 row (t_s = 0 s)' — a transient log needs at least two rows")
+        assert len(err.splitlines()) == 1 and not out.exists()
+    three = _write(tmp_path, "t_s,T_outer_ring_C\n0,20\n600,30\n1200,35\n", "three.csv")
+    assert main(["compare", str(scene), str(three), "--map", "T_outer_ring_C=outer_ring"]) == 0
+    text = capsys.readouterr().out
+    row = next(ln for ln in text.splitlines() if ln.startswith("T_outer_ring_C"))
+    assert [t for t in row.split() if t in ("K",)] == ["K"] * 4                  # RMSE, max err, bias, SS err

@@ -198,6 +198,9 @@ def read_log(path) -> RigLog:
     for h in out:
         if _T_RE.match(h) and np.any(~np.isnan(out[h]) & ((out[h] < -60) | (out[h] > 250))):
             raise InputError(f"{p.name}: column {h}", None, "temperatures must lie in [-60, 250] °C")
+    if kind == "transient" and len(out["t_s"]) < 2:     # a run from t_s to itself: nothing to compare
+        raise InputError(f"{p.name}", f"1 row (t_s = {out['t_s'][0]:g} s)", "a transient log needs at least two rows "
+                         "at increasing times t_s [s]; a steady operating point is a row of a log with n_rpm and no t_s")
     return RigLog(path=str(p), comments=comments, columns=out, kind=kind)
 
 
@@ -548,10 +551,11 @@ class Comparison:
                    f"{m['max_abs_error']:8.3g} {u:1s} {m['bias']:+8.3g} {u:1s}")
             if self.kind == "transient":
                 f = (lambda v: f"{v:9.0f}" if v is not None else f"{'-':>9s}")
-                row += f" {m['steady_state_error']:+9.3g} {f(m['t90_measured_s'])} {f(m['t90_simulated_s'])}"
+                row += f" {m['steady_state_error']:+7.3g} {u:1s} {f(m['t90_measured_s'])} {f(m['t90_simulated_s'])}"
             lines.append(row)
         if self.kind == "transient":
-            lines.append("\nSS err: mean error over the last 10 % of the log; t90: time to 90 % of the rise [s].")
+            lines.append("\nSS err: mean error (model − measured) over the last 10 % of the log; t90: time to 90 % "
+                         "of the rise [s].")
         if self.bands:
             u = self.uncertainty
             lines += ["", f"Model band over the estimated inputs ({u['n']} samples, seed {u['seed']}, {u['failed']} "
