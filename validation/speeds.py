@@ -67,7 +67,7 @@ def init_scene():
 
 
 def scene_rows(s) -> list:
-    out = ["| limit [°C] | model safe speed [rpm] | hottest ring [°C] | residual [K] | model power [W] | "
+    out = ["| limit [°C] | model safe speed [rpm] | hotter race node [°C] | residual [K] | model power [W] | "
            "DIN 732 n_θ [rpm] | f_n | K_L | K_P | f_n of the exact balance | DIN 732 heat flow [W] | "
            "n_θr (ISO 15312 eqs) [rpm] |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for limit in (60.0, 70.0, 80.0):
@@ -97,7 +97,7 @@ def main():
              "SKF's (its own friction model under the same conditions): a comparison, not a fit.", ""]
     lines += reference_rows()
     lines += ["", "## Thermally safe speed of `examples/block_6208_oil_bath.toml`: model against DIN 732", "",
-              "Model: the speed at which the hottest ring (race nodes) of the coupled steady state reaches the "
+              "Model: the speed at which the hotter race node (inner_race or outer_race) of the coupled steady state reaches the "
               "limit.  DIN 732: n_θ = f_n n_θr, n_θr by ISO 15312's own equations with Palmgren's oil-bath "
               "coefficients, heat dissipated k_q A_s (limit − 25 °C ambient) with k_q = q_r / 50 K (no "
               "circulating oil), friction at the scene's load and at the viscosity at the limit; f_n by DIN 732's "
