@@ -97,8 +97,8 @@ def main():
              "SKF's (its own friction model under the same conditions): a comparison, not a fit.", ""]
     lines += reference_rows()
     lines += ["", "## Thermally safe speed of `examples/block_6208_oil_bath.toml`: model against DIN 732", "",
-              "Model: the speed at which the hotter race node (inner_race or outer_race) of the coupled steady state reaches the "
-              "limit.  DIN 732: n_θ = f_n n_θr, n_θr by ISO 15312's own equations with Palmgren's oil-bath "
+              "Model: the speed at which the hotter race node (inner_race or outer_race) of the coupled steady "
+              "state reaches the limit.  DIN 732: n_θ = f_n n_θr, n_θr by ISO 15312's own equations with Palmgren's oil-bath "
               "coefficients, heat dissipated k_q A_s (limit − 25 °C ambient) with k_q = q_r / 50 K (no "
               "circulating oil), friction at the scene's load and at the viscosity at the limit; f_n by DIN 732's "
               "approximation, beside the exact root of the balance it approximates.", ""]
