@@ -313,3 +313,40 @@ def test_cli_compare_shows_the_measured_points_against_the_band(capsys):
     assert len(b["p5"]) == len(d["x"]) and all(lo <= hi for lo, hi in zip(b["p5"], b["p95"]))
     k, m = d["inside_band"]["T_bearing_C"]
     assert 0 <= k <= m == len(d["x"]) and d["uncertainty"]["n"] == 8
+
+
+def test_cli_withholds_a_ranking_the_family_draws_do_not_determine(tmp_path, capsys):
+    """The engineer's 7014C spindle (``thermobear init``): 16 family-level inputs (bearing geometry, the
+    built network's estimates) on 18 families.  The regression on them is withheld — no SRC beyond 1 or
+    of a sign against the rank correlation — with the caveat UnreliableRegression in the JSON, naming the
+    counts, and one warning line on stderr."""
+    scene = tmp_path / "spindle.toml"
+    assert main(["init", "7014C", "--lubrication", "oil-air", "--housing", "block", "--speed-rpm", "12000",
+                 "--Fa-N", "600", "--out", str(scene)]) == 0
+    capsys.readouterr()
+    assert main(["run", str(scene), "--uncertainty", "20", "--seed", "1", "--json"]) == 0
+    out, err = capsys.readouterr()
+    u = json.loads(out)["uncertainty"]
+    assert u["design"]["groups"] == 18
+    for key in ("P_W", "T_C.balls"):
+        r = u["sensitivity"][key]
+        c = r["caveat"]
+        assert c["name"] == "UnreliableRegression" and "too_few_draws" in c["reasons"]
+        assert c["levels"]["family"]["inputs"] == 16 and c["levels"]["family"]["needed"] == 34
+        assert c["levels"]["family"]["draws"] <= 18
+        assert r["ranked_by"] == "spearman" and r["r2"] is None
+        assert all(e["src"] is None and e["slope"] is None for e in r["inputs"])
+    assert sum(line.startswith("warning: UnreliableRegression: ") for line in err.splitlines()) == 1
+
+
+def test_cli_table_names_the_caveat_once(capsys):
+    """Seed 004 with 8 samples for its 46 inputs: too few for the regression; the table says so in one
+    named line and ranks by rank correlation."""
+    assert main(["run", SEED004, "--uncertainty", "8", "--seed", "2"]) == 0
+    out, err = capsys.readouterr()
+    lines = out.splitlines()
+    cav = [line for line in lines if line.startswith("caveat: UnreliableRegression: ")]
+    assert len(cav) == 1 and "47 coefficients" in cav[0] and "on 8 samples" in cav[0]
+    assert "Inputs ranked for P_W (by rank correlation; regression withheld: caveat above)" in lines
+    assert "SRC " not in out.split(cav[0])[1]
+    assert "warning: UnreliableRegression: " in err

@@ -117,11 +117,16 @@ def _uncertainty_kw(args) -> dict:
     return dict(seed=args.seed, method=args.design, groups=args.groups, sensitivity=args.sensitivity)
 
 
-def _failed_line(unc):
+def _sample_warnings(unc):
+    """On stderr: the samples that failed, and the caveat of the inputs' ranking (the draws do not determine
+    its regression: :func:`~thermobear.coupled.sensitivity.regression_check`), once."""
     if unc.failed:
         print(f"warning: {len(unc.failed)} of {unc.n} samples failed (" + ", ".join(
             f"{k} {v}" for k, v in sorted(unc.failed_count.items())) + "): the bands are those of the others",
             file=sys.stderr)
+    caveat = next((r["caveat"] for r in unc.sensitivity.values() if r.get("caveat")), None)
+    if caveat:
+        print(f"warning: {caveat['name']}: {caveat['message']}", file=sys.stderr)
 
 
 # --------------------------------------------------------------------------- run / loads / list
@@ -141,7 +146,7 @@ def cmd_run(args):
         if unc:
             print("\n" + unc.summary())
     if unc:
-        _failed_line(unc)
+        _sample_warnings(unc)
     if out is not None:
         plots = _plots()
         wrote(plots.plot_result(res, out))
@@ -409,7 +414,7 @@ def _transient_bands(args, scene, schedule, T0, out_csv, out_dir):
                                                      "P_W": unc.nominal.P_W}, "uncertainty": unc.as_dict()})
     else:
         print(f"thermobear transient — {scene.name}: {args.t_end:g} s\n\n{unc.summary()}")
-    _failed_line(unc)
+    _sample_warnings(unc)
     if out_dir is not None:
         wrote(_plots().plot_bands(unc, out_dir, title=f"Heat-up bands over the estimated inputs — {scene.name}"))
     return 0

@@ -41,10 +41,13 @@ from them, spreads them over every cell of a face, and its discretisation rule r
 is a machine of its own, its network built again (a built network's one-element estimates — the
 seal's rubber, the cage's pocket film — are element values and vary per point).  These inputs
 are drawn at ``groups`` levels (a Latin hypercube of their own; default 8 groups, or two more than the
-family-level inputs when they are more than 6, so that a regression on them is determined), and every sample is
-assigned to one group by a further balanced column of the design: the samples form ``groups``
-families of about n / groups points each.  Their sensitivities rest on those ``groups`` distinct
-geometries (more groups resolve them better, at one load solve and one network template per group).
+family-level inputs when they are more than 6), and every sample is assigned to one group by a further
+balanced column of the design: the samples form ``groups`` families of about n / groups points each.
+Their sensitivities rest on those ``groups`` distinct geometries (more groups resolve them better, at one
+load solve and one network template per group): d family-level inputs on d + 2 groups leave their
+regression one residual degree of freedom, and the ranking then withholds its coefficients with the
+caveat ``UnreliableRegression`` (:func:`~thermobear.coupled.sensitivity.regression_check`: 2 (d + 1)
+groups or more determine it).
 
 A sample whose solve fails (no equilibrium, thermal runaway, an input the models refuse) is counted
 with its error's name (:attr:`UncertaintyResult.failed`), never dropped silently; the bands are those
