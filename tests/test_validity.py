@@ -102,3 +102,48 @@ def test_a_bearing_at_speed_without_load_is_warned():
     assert not [w for w in tb.steady_state(s).warnings if w.quantity == "unloaded"]
     from thermobear.coupled.limits import point_warnings
     assert not [w for w in point_warnings(s.with_(Fa=0.0, Fr=0.0, n_rpm=0.0), None, [20.0]) if w.quantity == "unloaded"]
+
+
+def test_a_friction_input_the_models_do_not_read_is_named():
+    """lubricant.mu_full_film under the default Eyring traction was accepted and changed nothing, silently
+    (0.01 and 0.1: the same seed-004 answer).  The answer now names it (UnreadInput: the field, the value, why);
+    under models.traction = "constant" it is read — it moves the answer and nothing is said; the nominal scene
+    says nothing."""
+    from thermobear.errors import UnreadInput
+    with pytest.warns(UnreadInput, match=r"^lubricant\.mu_full_film = 0\.01 is not read by the chosen models: "
+                                         r'models\.traction = "eyring"'):
+        lo = tb.steady_state(S004.with_(mu_full_film=0.01))
+    with pytest.warns(UnreadInput, match=r"^lubricant\.mu_full_film = 0\.1 "):
+        hi = tb.steady_state(S004.with_(mu_full_film=0.1))
+    assert lo.P_W == pytest.approx(hi.P_W, rel=1e-12)                      # what the warning is about
+    w = [w for w in lo.warnings if isinstance(w, UnreadInput)]
+    assert len(w) == 1 and w[0].field == "lubricant.mu_full_film" and w[0].value == 0.01
+    assert not [w for w in tb.steady_state(S004).warnings if isinstance(w, UnreadInput)]
+    const = {"traction": "constant"}
+    c_lo = tb.steady_state(S004.with_(mu_full_film=0.01, models=const))
+    c_hi = tb.steady_state(S004.with_(mu_full_film=0.1, models=const))
+    assert c_hi.P_W > c_lo.P_W * 1.05
+    assert not [w for w in c_lo.warnings + c_hi.warnings if isinstance(w, UnreadInput)]
+
+
+@pytest.mark.parametrize("kw,field", [
+    (dict(mu_boundary=0.3, models={"losses": "skf"}), "lubricant.mu_boundary"),
+    (dict(Rq_ball_um=0.5, models={"losses": "skf"}), "lubricant.Rq_ball_um"),
+    (dict(models={"skf_R1": 2e-7}), "models.skf_R1"),
+    (dict(Rq_ball_um=0.0, Rq_ring_um=0.0, mu_boundary=0.2), "lubricant.mu_boundary"),
+])
+def test_the_siblings_the_models_do_not_read_are_named(kw, field):
+    """The same for the friction law's other inputs: μ_a and the roughnesses on the SKF model, an SKF constant on
+    the local model, μ_a on smooth surfaces (Λ = ∞)."""
+    from thermobear.errors import UnreadInput
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", OutsideValidity)
+        r = tb.solve(S004.with_(T_C=60.0, **kw))
+    assert [w.field for w in r.warnings if isinstance(w, UnreadInput)] == [field]
+
+
+def test_a_ring_guided_cage_reads_mu_full_film():
+    """A ring-guided cage's pocket friction is mu_full_film's: read under the Eyring traction too."""
+    from thermobear.models import unread_inputs
+    assert "lubricant.mu_full_film" in unread_inputs(S004)
+    assert "lubricant.mu_full_film" not in unread_inputs(S004.with_(cage="outer_ring"))

@@ -12,7 +12,7 @@ import numpy as np
 __all__ = [
     "ThermobearError", "InputError", "ContactLimit", "SolverError", "NoEquilibrium",
     "NoConvergence", "ThermalRunaway", "ThermalPreloadRunaway", "NoSpeedRoot", "OutsideValidity",
-    "ExtrapolationWarning",
+    "ExtrapolationWarning", "UnreadInput",
 ]
 
 
@@ -129,6 +129,12 @@ class OutsideValidity(UserWarning):
 
 class ExtrapolationWarning(OutsideValidity):
     """An input lies beyond the data a correlation was fitted to (result still computed)."""
+
+
+class UnreadInput(OutsideValidity):
+    """A scene input set that the chosen models do not read: its value changes nothing
+    (:func:`thermobear.models.unread_inputs`).  ``field`` names it, ``value`` is the value set and ``limit``
+    says which models would read it."""
 
 
 def _short(value) -> str:

@@ -10,9 +10,10 @@ import warnings
 
 import numpy as np
 
-from thermobear.errors import ContactLimit, ExtrapolationWarning, InputError, OutsideValidity, ThermalRunaway
+from thermobear.errors import ContactLimit, ExtrapolationWarning, InputError, OutsideValidity, ThermalRunaway, UnreadInput
 from thermobear.arrays import take
 from thermobear.loads.api import check_contacts, groove_angle, loads_text
+from thermobear.models import unread_settings
 from thermobear.rating.life import stated_ratings
 from thermobear.validity import LIMITS, P_MAX_REFUSE_PA, T_LUBRICANT_REFUSE_C, check, collect
 
@@ -190,12 +191,22 @@ def _film_preload_warning(scene, ratio: float, dry) -> list:
         field="models.load_model")]
 
 
+def _unread_warnings(scene) -> list:
+    """An :class:`~thermobear.errors.UnreadInput` warning for each input the scene sets that its models do not
+    read (:func:`thermobear.models.unread_settings`): the value would change nothing, never silently."""
+    return [UnreadInput(f"{fld} = {v:g} is not read by the chosen models: {why} — it changes nothing here",
+                        quantity=fld, value=v, limit=why, source="thermobear.models.unread_inputs",
+                        field=fld) for fld, v, why in unread_settings(scene)]
+
+
 def point_warnings(scene, losses, x_C, dry=None) -> list:
     """The OutsideValidity warnings of one solved operating point: speed, contact pressure, contact
     and oil temperatures (the lubricant's validated range; a grease's upper operating temperature; an oil's data
-    under a grease supply), the SKF model's Φ_bl, a bearing at speed without load; with ``dry`` (the point's dry load
-    distribution, where the film load model gave ``losses``' loads) a preload by the films."""
-    grease = _grease_warning(scene, x_C) + _oil_as_grease_warning(scene) + _unloaded_warning(scene)
+    under a grease supply), the SKF model's Φ_bl, a bearing at speed without load, a scene input the models do
+    not read (:class:`~thermobear.errors.UnreadInput`); with ``dry`` (the point's dry load distribution, where the
+    film load model gave ``losses``' loads) a preload by the films."""
+    grease = (_grease_warning(scene, x_C) + _oil_as_grease_warning(scene) + _unloaded_warning(scene)
+              + _unread_warnings(scene))
     if dry is not None:
         grease += _film_preload_warning(scene, float(_film_ratio([scene], losses, [dry])[0]), dry)
     with collect(replay=False) as got:
@@ -231,7 +242,7 @@ def family_warnings(scenes, losses, x_C, answered=None, dry=None) -> list:
     flag = _outside_warn("n_dm", n_dm[:, None]) | _outside_warn("lubricant_T", x_C)
     T_max = np.array([np.inf if grease_limit(s) is None else grease_limit(s) for s in scenes])
     flag |= np.asarray(x_C, float).reshape(B, -1).max(axis=1) > T_max
-    flag |= np.array([_unloaded(s) or _oil_as_grease(s) for s in scenes])
+    flag |= np.array([_unloaded(s) or _oil_as_grease(s) or bool(unread_settings(s)) for s in scenes])
     flag |= _film_ratio(scenes, losses, dry) > FILM_PRELOAD_RATIO
     c = getattr(losses, "contacts", None)
     if c:
