@@ -36,3 +36,22 @@ def test_a_torque_column_of_zeros_is_refused_by_name(tmp_path):
     log = read_log(p)
     with pytest.raises(InputError, match="^torque_Nm = 0.0 — a torque to fit must not be zero"):
         calibrate(scene, log, ["skf_R1"], channel_map(scene, log))
+
+
+def test_a_parameter_the_models_do_not_read_is_refused_up_front(monkeypatch):
+    """``--param mu_full_film`` under the Eyring traction ran 113 s to a 'singular Jacobian' (the models never read
+    it): it is refused by name before any model evaluation, and not offered; under models.traction = "constant"
+    it is offered.  mu_boundary on the SKF model likewise."""
+    import thermobear.app.calibration as calmod
+    from thermobear.app.calibration import parameter_names
+    monkeypatch.setattr(calmod, "simulate_log", lambda *a, **k: pytest.fail("a model evaluation"))
+    scene = load_scene(LOGS / "synthetic_heatup_scene.toml")
+    log = read_log(LOGS / "synthetic_heatup_7210.csv")
+    with pytest.raises(InputError, match=r"^--param = 'mu_full_film' — the scene's models do not read it.*"
+                                         r'models\.traction = "eyring"'):
+        calibrate(scene, log, ["mu_full_film"], channel_map(scene, log))
+    assert "mu_full_film" not in parameter_names(scene) and "mu_boundary" in parameter_names(scene)
+    assert "mu_full_film" in parameter_names(scene.with_(models={"traction": "constant"}))
+    skf = load_scene(LOGS / "seed002_skf_scene.toml")
+    with pytest.raises(InputError, match=r"^--param = 'mu_boundary' — the scene's models do not read it"):
+        calibrate(skf, read_log(LOGS / "seed002_greases.csv"), ["mu_boundary"], {})

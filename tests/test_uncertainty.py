@@ -179,6 +179,13 @@ def test_each_samples_breakdown_adds_up_to_its_power(s004):
     assert sum(r.nominal.breakdown_W.values()) == pytest.approx(r.nominal.P_W, rel=1e-9)
 
 
+def test_a_range_the_models_do_not_read_is_not_sampled(s004):
+    """Seed 004 ranges the balls' roughness; on the SKF model (which reads no roughness) it is not sampled: its
+    draws would change nothing and take a coefficient of the ranking."""
+    assert "lubricant.Rq_ball_um" in [i.address for i in uncertain_inputs(s004)]
+    assert "lubricant.Rq_ball_um" not in [i.address for i in uncertain_inputs(s004.with_(models={"losses": "skf"}))]
+
+
 def test_lubricant_draws_per_point_equal_one_lubricant_each():
     """A family of points with drawn lubricant densities (seed 002, MG1) gives each point the answer of
     a lubricant built with that density."""

@@ -26,6 +26,7 @@ from thermobear.app.rig import Comparison, RigLog, compare, simulate_log, specia
 from thermobear.errors import InputError, NoConvergence, OutsideValidity
 from thermobear.lazy import lazy_module
 from thermobear.losses.skf import skf_constants
+from thermobear.models import unread_inputs
 from thermobear.scene import Scene
 from thermobear.scene.network import network_spec
 from thermobear.thermal.builders import Machine, build_network, estimates
@@ -69,12 +70,15 @@ def parameter_names(scene: Scene) -> list:
     (``builder.R_mount_m2K_W``, ``builder.emissivity``, ``builder.k_air_still_W_mK``, …: the machine's own
     unknowns, ``materials/network_builders.toml``, the network built again with the value); then network
     parameters (``[thermal.parameters]`` keys and every numeric ``<element or node>.<parameter>`` of the
-    network), the scene scalars T_ambient_C, T_oil_in_C, oil_flow_L_h, mu_boundary, mu_full_film, and —
-    for scenes on the SKF global model (``[models] losses = "skf"``) — skf_R1, skf_S1, skf_mu_EHL.
+    network), the scene scalars T_ambient_C, T_oil_in_C, oil_flow_L_h, and mu_boundary, mu_full_film where the
+    scene's models read them (:func:`~thermobear.models.unread_inputs`: not mu_full_film under the Eyring traction,
+    neither on the SKF model), and — for scenes on the SKF global model (``[models] losses = "skf"``) — skf_R1,
+    skf_S1, skf_mu_EHL.
     """
     names = _builder_keys(scene) + list(scene.network_parameters)
     names += [k for k in _network_numeric_parameters(scene) if k not in names]
-    names += list(_SCENE_SCALARS)
+    unread = unread_inputs(scene)
+    names += [k for k in _SCENE_SCALARS if f"lubricant.{k}" not in unread]
     if scene.models.get("losses") == "skf":
         names += list(_SKF)
     return names
@@ -85,6 +89,9 @@ def _parse_param(scene: Scene, spec: str):
     name = name.strip()
     if name in _SKF and scene.models.get("losses") != "skf":
         raise InputError("--param", name, 'SKF constants need a scene on the SKF model: [models] losses = "skf"')
+    why = unread_inputs(scene).get(f"lubricant.{name}") if name in _SCENE_SCALARS else None
+    if why:
+        raise InputError("--param", name, f"the scene's models do not read it, so the log cannot fit it: {why}")
     known = parameter_names(scene)
     if name not in known:
         raise InputError("--param", name, f"unknown parameter; this scene offers: {', '.join(known)}")
