@@ -49,12 +49,29 @@ PAPER_004 = {3200.0: 55.0, 8070.0: 90.0}                        # seed 004 Fig. 
 T_HEATUP_S = 1000.0
 
 
+def _num(v, fmt) -> str:
+    return "—" if v is None else format(v, fmt)
+
+
+def _ranking(rk, title: str, top: int = 8) -> list:
+    """The table of a ranking (``UncertaintyResult.sensitivity[key]``), its title with how it ranks, and the
+    caveat where the draws do not determine the regression (its SRCs and slopes withheld)."""
+    r2 = "" if rk["r2"] is None else f", R² {rk['r2']:.2f}"
+    out = ["", f"Inputs ranked for {title} ({rk['ranked_by']}{r2}):", ""]
+    if rk.get("caveat"):
+        c = rk["caveat"]
+        out += [f"Caveat: {c['message'] if isinstance(c, dict) and 'message' in c else c}", ""]
+    out += ["| input | SRC | slope per draw unit | rank correlation |", "|---|---|---|---|"]
+    return out + [f"| `{e['address']}` | {_num(e['src'], '+.3f')} | {_num(e['slope'], '+.4g')} | "
+                  f"{e['spearman']:+.3f} |" for e in rk["inputs"][:top]]
+
+
 def _needed(res, key, measured, top=3) -> list:
     """For the ``top`` inputs of output ``key``: the draw that alone would bring the median to
     ``measured`` (linear in the regression slope), and whether it is inside the input's range."""
     rk = res.sensitivity.get(key)
     if rk is None or rk["r2"] is None:
-        return ["(too few samples for the regression)"]
+        return ["(no regression slope: the draws do not determine it, see the ranking's caveat)"]
     p50 = float(np.ravel(res.bands[key]["p50"])[-1])
     by = {i.address: i for i in res.inputs}
     out = []
@@ -72,10 +89,12 @@ def _needed(res, key, measured, top=3) -> list:
 
 
 def seed002(lines):
+    ins = tb.coupled.uncertainty.uncertain_inputs(SEED002)
+    d = sum(i.level == "family" for i in ins)
     lines += ["## Seed 002 — 51107 grease thrust bearing, thermocouple III (housing-washer node)", "",
-              f"{N_STEADY} samples per point (all {len(tb.coupled.uncertainty.uncertain_inputs(SEED002))} estimated "
+              f"{N_STEADY} samples per point (all {len(ins)} estimated "
               "inputs of the scene, the grease, the bearing catalogue entry, the network and its steel; "
-              "bearing geometry in 8 families). The network's prior estimates (nothing calibrated).", "",
+              f"bearing geometry in {max(8, 2 * (d + 1))} families). The network's prior estimates (nothing calibrated).", "",
               "| grease | n [rpm] | measured [°C] | nominal [°C] | p5 | p50 | p95 [°C] | inside | failed | "
               "would have to move (alone, for the median) |", "|---|---|---|---|---|---|---|---|---|---|"]
     inside = 0
@@ -91,11 +110,8 @@ def seed002(lines):
         if (g, n) == ("MG1", 1000.0):
             first = r
     rk = first.sensitivity["T_C.housing_washer"]
-    lines += ["", f"{inside} of {len(CASES_002)} measurements inside their 5–95 % band.", "",
-              f"Inputs ranked for T_III (MG1, 1000 rpm; standardised regression coefficients, R² {rk['r2']:.2f}):", "",
-              "| input | SRC | slope per draw unit | rank correlation |", "|---|---|---|---|"]
-    lines += [f"| `{e['address']}` | {e['src']:+.3f} | {e['slope']:+.4g} | {e['spearman']:+.3f} |"
-              for e in rk["inputs"][:8]]
+    lines += ["", f"{inside} of {len(CASES_002)} measurements inside their 5–95 % band."]
+    lines += _ranking(rk, "T_III (MG1, 1000 rpm)")
     return lines
 
 
@@ -121,11 +137,7 @@ def seed004(lines):
         lines.append(f"| {n:g} | ≈ {Tm:g} | {nom:.1f} | {b['p5']:.1f} | {b['p50']:.1f} | {b['p95']:.1f} | "
                      f"{'yes' if ok else 'no'} | {len(tr.failed)} | {sb['p5']:.1f} … {sb['p95']:.1f} | {move} |")
     rk = runs[3200.0].sensitivity["T_C.inner_ring"]
-    r2 = "" if rk["r2"] is None else f", R² {rk['r2']:.2f}"
-    lines += ["", f"Inputs ranked for the inner ring at 1000 s (3200 rpm; {rk['ranked_by']}{r2}):", "",
-              "| input | SRC | slope per draw unit | rank correlation |", "|---|---|---|---|"]
-    lines += [f"| `{e['address']}` | {e['src']:+.3f} | {e['slope']:+.4g} | {e['spearman']:+.3f} |"
-              for e in rk["inputs"][:8]]
+    lines += _ranking(rk, "the inner ring at 1000 s (3200 rpm)")
     _plot(runs)
     lines += ["", "![inner-ring heat-up bands](uncertainty_seed004_heatup.png)"]
     return lines
@@ -168,11 +180,7 @@ def built(lines):
             lines.append(f"| {what} | {key} | {nom:.2f} | {b0['p5']:.2f} … {b0['p95']:.2f} | "
                          f"{b1['p5']:.2f} … {b1['p95']:.2f} | {len(r1.failed)} | {r0.groups}, {r1.groups} |")
     rk = ranked.sensitivity["T_C.housing"]
-    r2 = "" if rk["r2"] is None else f", R² {rk['r2']:.2f}"
-    lines += ["", f"Inputs ranked for the housing of the oil-jet scene ({rk['ranked_by']}{r2}):", "",
-              "| input | SRC | slope per draw unit | rank correlation |", "|---|---|---|---|"]
-    lines += [f"| `{e['address']}` | {e['src']:+.3f} | {e['slope']:+.4g} | {e['spearman']:+.3f} |"
-              for e in rk["inputs"][:8]]
+    lines += _ranking(rk, "the housing of the oil-jet scene")
     return lines
 
 
@@ -212,8 +220,8 @@ def main() -> int:
     L += ["", "Moves are linear extrapolations of the regression slope (per draw unit: × for a factor, K for an "
           "offset, the key's unit for a range). Far outside an input's range (an osculation below 0.5, a ball "
           "that no longer fits) they only say that this input alone cannot close the gap. Family-level "
-          "inputs (the bearing's geometry; a built network's builder estimates) are drawn at 8 levels, or two more "
-          "than their number (16 for the built scenes), one family each: their slopes rest on that many draws, and "
+          "inputs (the bearing's geometry; a built network's builder estimates) are drawn at 8 levels, or 2 (d + 1) "
+          "for d of them (34 for the built scenes), one family each: their slopes rest on that many draws, and "
           "a small effect among them (the emissivity beside the mounting joint) is not resolved in the ranking. The support "
           "block's offset is held from t = 0 in the heat-up (an upper bound on its effect, as in "
           "seed004_support_heat.md)."]

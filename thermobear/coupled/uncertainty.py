@@ -42,14 +42,15 @@ emissivity, the mounting joint, the rings' and cavity's fills): the builder comp
 from them, spreads them over every cell of a face, and its discretisation rule reads them, so a draw
 is a machine of its own, its network built again (a built network's one-element estimates — the
 seal's rubber, the cage's pocket film — are element values and vary per point).  These inputs
-are drawn at ``groups`` levels (a Latin hypercube of their own; default 8 groups, or two more than the
-family-level inputs when they are more than 6), and every sample is assigned to one group by a further
+are drawn at ``groups`` levels (a Latin hypercube of their own; default 8 groups, or 2 (d + 1) for d
+family-level inputs when they are more than 3), and every sample is assigned to one group by a further
 balanced column of the design: the samples form ``groups`` families of about n / groups points each.
 Their sensitivities rest on those ``groups`` distinct geometries (more groups resolve them better, at one
-load solve and one network template per group): d family-level inputs on d + 2 groups leave their
-regression one residual degree of freedom, and the ranking then withholds its coefficients with the
-caveat ``UnreliableRegression`` (:func:`~thermobear.coupled.sensitivity.regression_check`: 2 (d + 1)
-groups or more determine it).
+load solve and one network template per group): the default 2 (d + 1) groups give each coefficient of the
+ranking's regression two distinct draws, the least that determines it
+(:func:`~thermobear.coupled.sensitivity.regression_check`); fewer given ``groups`` leave it undetermined, and
+the ranking then withholds its coefficients with the caveat ``UnreliableRegression``.  (The default was d + 2,
+one residual degree of freedom: a built network's 16 estimates ranked by noise.)
 
 A sample whose solve fails (no equilibrium, thermal runaway, an input the models refuse) is counted
 with its error's name (:attr:`UncertaintyResult.failed`), never dropped silently; the bands are those
@@ -250,14 +251,14 @@ def sample_scenes(scene: Scene, n: int, *, seed=None, method: str = "lhs", group
 
     ``inputs``: the inputs to sample (default :func:`uncertain_inputs`; given ones may narrow, widen
     or reshape the data's ranges, each at an address the data ranges, with its kind of draw);
-    ``groups``: the number of bearing-geometry (and builder-estimate) families (default min(n, max(8, d + 2))
+    ``groups``: the number of bearing-geometry (and builder-estimate) families (default min(n, max(8, 2 (d + 1)))
     for d family-level inputs; 1 with none)."""
     n = _count(n, "uncertainty.n")
     data = uncertain_inputs(scene, prepared)
     ins = list(data if inputs is None else _checked(inputs, data))
     pts = [k for k, i in enumerate(ins) if i.level == "point"]
     fams = [k for k, i in enumerate(ins) if i.level == "family"]
-    G = 1 if not fams else min(n, max(_GROUPS, len(fams) + 2) if groups is None
+    G = 1 if not fams else min(n, max(_GROUPS, 2 * (len(fams) + 1)) if groups is None
                                else _count(groups, "uncertainty.groups"))
     U = design(n, len(pts) + (1 if G > 1 else 0), seed, method)
     X = np.zeros((n, len(ins)))
@@ -455,8 +456,8 @@ def steady_uncertainty(scene: Scene, n: int, *, seed=None, method: str = "lhs", 
     n : int                 number of samples
     seed : int              seed of the design (the same seed gives the same samples)
     method : str            ``"lhs"`` (Latin hypercube) or ``"sobol"`` (scrambled Sobol')
-    groups : int            bearing-geometry families (module docstring; default min(n, max(8, d + 2)), d
-                            family-level inputs)
+    groups : int            bearing-geometry families (module docstring; default min(n, max(8, 2 (d + 1))),
+                            d family-level inputs)
     sensitivity : str       ``"src"`` (standardised regression coefficients and rank correlations,
                             numpy / scipy) or ``"sobol"`` (first-order Sobol' indices by RBD-FAST on the
                             same samples; needs the optional SALib: ``pip install thermobear[sensitivity]``)
