@@ -151,8 +151,9 @@ def _dry_sum(dry) -> float:
     """Σ Q of the inner contacts [N] of a point's dry load distribution (a DryRow, a LoadDistribution; None: NaN)."""
     if dry is None:
         return np.nan
-    ld = dry.load() if hasattr(dry, "load") else dry
-    return float(np.sum(ld.Q_i))
+    if hasattr(dry, "batch"):                  # a row of a batched solution: its Q_i alone, not the whole row
+        return float(np.sum(np.reshape(np.asarray(dry.batch.Q_i, float), (dry.B, -1))[dry.row]))
+    return float(np.sum(dry.Q_i))
 
 
 def _film_ratio(scenes, losses, dry) -> np.ndarray:
