@@ -58,3 +58,20 @@ def test_bad_seal_names_the_field(args, field):
     with pytest.raises(InputError) as e:
         seal_friction(*args, 52.6, 1000.0)
     assert e.value.field == field
+
+
+def test_contact_seals_past_their_lip_materials_limit_are_warned():
+    """A 6208-2RS1 (NBR lips: −40 … +100 °C, SKF 2018) with its contacts at 110 °C: named (quantity seal_T; it
+    passed without a word while the grease's own limit, 120 °C, held); at 90 °C, or without seals, nothing."""
+    import warnings
+
+    import thermobear as tb
+    from thermobear.losses.seals import seal_material
+    assert seal_material()["name"] == "NBR" and seal_material()["T_max_C"] == 100.0
+    s = tb.load_scene(tb.example_path("block_6208_grease.toml")).with_(T_C=110.0)       # a 6208-2RS1
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        hot, cool, open_ = (tb.solve(x) for x in (s, s.with_(T_C=90.0), s.with_(seals="none", seal_sides=0)))
+    hot_w = [w for w in hot.warnings if w.quantity == "seal_T"]
+    assert len(hot_w) == 1 and hot_w[0].value == pytest.approx(110.0) and hot_w[0].field == "bearing.seals"
+    assert not [w for r in (cool, open_) for w in r.warnings if w.quantity == "seal_T"]

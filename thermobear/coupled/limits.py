@@ -13,6 +13,7 @@ import numpy as np
 from thermobear.errors import ContactLimit, ExtrapolationWarning, InputError, OutsideValidity, ThermalRunaway, UnreadInput
 from thermobear.arrays import take
 from thermobear.loads.api import check_contacts, groove_angle, loads_text
+from thermobear.losses.seals import CONTACT_SEALS, seal_material
 from thermobear.models import unread_settings
 from thermobear.rating.life import stated_ratings
 from thermobear.validity import LIMITS, P_MAX_REFUSE_PA, T_LUBRICANT_REFUSE_C, check, collect
@@ -100,6 +101,25 @@ def _grease_warning(scene, x_C) -> list:
         "its friction, is at stake",
         quantity="grease_T", value=T, limit=f"<= {T_max:g} °C", source=f"materials/lubricants/{lub.name}.toml",
         field="lubricant.name")]
+
+
+def _seal_hot(scene, x_C) -> bool:
+    """Contact seals at contact / cavity temperatures above their material's upper operating temperature."""
+    return scene.seals in CONTACT_SEALS and float(np.max(x_C)) > seal_material()["T_max_C"]
+
+
+def _seal_warning(scene, x_C) -> list:
+    """An OutsideValidity warning where a bearing with contact seals runs its contacts or cavity above the seal
+    material's upper operating temperature (:func:`thermobear.losses.seals.seal_material`: NBR 100 °C, 120 °C
+    briefly): the lips harden and wear, and SKF's seal friction model is that of a lip within its range."""
+    if not _seal_hot(scene, x_C):
+        return []
+    m, T = seal_material(), float(np.max(x_C))
+    return [OutsideValidity(
+        f"bearing.seals = {scene.seals}: contact / cavity temperature {T:.1f} °C above the {m['name']} seal lips' upper "
+        f"operating temperature {m['T_max_C']:g} °C ({m['T_brief_C']:g} °C for brief periods) — the lips harden and "
+        "wear; the seal friction is that of a lip within its range", quantity="seal_T", value=T,
+        limit=f"<= {m['T_max_C']:g} °C", source=m["source"], field="bearing.seals")]
 
 
 def _unloaded(scene) -> bool:
@@ -202,12 +222,12 @@ def _unread_warnings(scene) -> list:
 
 def point_warnings(scene, losses, x_C, dry=None) -> list:
     """The OutsideValidity warnings of one solved operating point: speed, contact pressure, contact
-    and oil temperatures (the lubricant's validated range; a grease's upper operating temperature; an oil's data
-    under a grease supply), the SKF model's Φ_bl, a bearing at speed without load, a scene input the models do
-    not read (:class:`~thermobear.errors.UnreadInput`); with ``dry`` (the point's dry load distribution, where the
-    film load model gave ``losses``' loads) a preload by the films."""
-    grease = (_grease_warning(scene, x_C) + _oil_as_grease_warning(scene) + _unloaded_warning(scene)
-              + _unread_warnings(scene))
+    and oil temperatures (the lubricant's validated range; a grease's upper operating temperature; contact seals'
+    lip material; an oil's data under a grease supply), the SKF model's Φ_bl, a bearing at speed without load, a
+    scene input the models do not read (:class:`~thermobear.errors.UnreadInput`); with ``dry`` (the point's dry
+    load distribution, where the film load model gave ``losses``' loads) a preload by the films."""
+    grease = (_grease_warning(scene, x_C) + _seal_warning(scene, x_C) + _oil_as_grease_warning(scene)
+              + _unloaded_warning(scene) + _unread_warnings(scene))
     if dry is not None:
         grease += _film_preload_warning(scene, float(_film_ratio([scene], losses, [dry])[0]), dry)
     with collect(replay=False) as got:
@@ -243,6 +263,7 @@ def family_warnings(scenes, losses, x_C, answered=None, dry=None) -> list:
     flag = _outside_warn("n_dm", n_dm[:, None]) | _outside_warn("lubricant_T", x_C)
     T_max = np.array([np.inf if grease_limit(s) is None else grease_limit(s) for s in scenes])
     flag |= np.asarray(x_C, float).reshape(B, -1).max(axis=1) > T_max
+    flag |= np.array([_seal_hot(s, x) for s, x in zip(scenes, np.asarray(x_C, float).reshape(B, -1))])
     flag |= np.array([_unloaded(s) or _oil_as_grease(s) or bool(unread_settings(s)) for s in scenes])
     flag |= _film_ratio(scenes, losses, dry) > FILM_PRELOAD_RATIO
     c = getattr(losses, "contacts", None)

@@ -31,7 +31,7 @@ from thermobear.errors import InputError
 from thermobear.files import data_dir, read_toml
 from thermobear.units import NMM
 
-__all__ = ["SEAL_TYPES", "CONTACT_SEALS", "SealFriction", "seal_moment_Nmm", "seal_constants", "seal_friction",
+__all__ = ["SEAL_TYPES", "CONTACT_SEALS", "seal_material", "SealFriction", "seal_moment_Nmm", "seal_constants", "seal_friction",
            "seal_counterface_estimate_mm"]
 
 #: Seal designations a scene may name: ``"none"``, ``"shield"`` (Z, RZ: non-contact, no friction) and
@@ -61,6 +61,17 @@ def seal_moment_Nmm(ds_mm, K_S1, K_S2, beta):
     50.45
     """
     return K_S1 * np.asarray(ds_mm, dtype=float) ** beta + K_S2
+
+
+def seal_material() -> dict:
+    """The lip material of the contact seals (``materials/skf_constants.toml`` ``[seals.material]``): its name, upper
+    operating temperature ``T_max_C`` and brief limit ``T_brief_C`` [°C], and their source.
+
+    >>> m = seal_material()
+    >>> m["name"], m["T_max_C"], m["T_brief_C"]
+    ('NBR', 100.0, 120.0)
+    """
+    return dict(read_toml(str(data_dir("materials") / "skf_constants.toml"))["seals"]["material"])
 
 
 def _rows():
