@@ -75,3 +75,17 @@ def test_contact_seals_past_their_lip_materials_limit_are_warned():
     hot_w = [w for w in hot.warnings if w.quantity == "seal_T"]
     assert len(hot_w) == 1 and hot_w[0].value == pytest.approx(110.0) and hot_w[0].field == "bearing.seals"
     assert not [w for r in (cool, open_) for w in r.warnings if w.quantity == "seal_T"]
+
+
+def test_a_built_networks_seal_node_is_the_temperature_the_seal_check_reads():
+    """The 6208-2RS1 in its block at 9000 rpm: the seal node (heated by the lips' own friction) runs at ≈ 120 °C,
+    15 K above the contacts and cavity; the warning reads the node, and names it."""
+    import warnings
+
+    import thermobear as tb
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        st = tb.steady_state(tb.load_scene(tb.example_path("block_6208_grease.toml")).with_(n_rpm=9000.0))
+    w = [w for w in st.warnings if w.quantity == "seal_T"]
+    assert len(w) == 1 and w[0].value == pytest.approx(st.T_C["seal"], abs=1e-9) and "seal node" in str(w[0])
+    assert st.T_C["seal"] > max(st.T_C["inner_race"], st.T_C["outer_race"]) > 100.0

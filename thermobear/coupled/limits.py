@@ -103,20 +103,29 @@ def _grease_warning(scene, x_C) -> list:
         field="lubricant.name")]
 
 
-def _seal_hot(scene, x_C) -> bool:
-    """Contact seals at contact / cavity temperatures above their material's upper operating temperature."""
-    return scene.seals in CONTACT_SEALS and float(np.max(x_C)) > seal_material()["T_max_C"]
+def _seal_T(x_C, T_seal_C=None) -> tuple:
+    """(temperature [°C], what it is) the seal check reads: the network's seal node where it has one, else the
+    hottest contact / cavity temperature."""
+    if T_seal_C is not None and np.isfinite(T_seal_C):
+        return float(T_seal_C), "seal node"
+    return float(np.max(x_C)), "contact / cavity temperature"
 
 
-def _seal_warning(scene, x_C) -> list:
-    """An OutsideValidity warning where a bearing with contact seals runs its contacts or cavity above the seal
-    material's upper operating temperature (:func:`thermobear.losses.seals.seal_material`: NBR 100 °C, 120 °C
-    briefly): the lips harden and wear, and SKF's seal friction model is that of a lip within its range."""
-    if not _seal_hot(scene, x_C):
+def _seal_hot(scene, x_C, T_seal_C=None) -> bool:
+    """Contact seals above their material's upper operating temperature (:func:`_seal_T`)."""
+    return scene.seals in CONTACT_SEALS and _seal_T(x_C, T_seal_C)[0] > seal_material()["T_max_C"]
+
+
+def _seal_warning(scene, x_C, T_seal_C=None) -> list:
+    """An OutsideValidity warning where a bearing with contact seals runs its seal lips (the network's seal node;
+    without one, the contacts or cavity) above the seal material's upper operating temperature
+    (:func:`thermobear.losses.seals.seal_material`: NBR 100 °C, 120 °C briefly): the lips harden and wear, and
+    SKF's seal friction model is that of a lip within its range."""
+    if not _seal_hot(scene, x_C, T_seal_C):
         return []
-    m, T = seal_material(), float(np.max(x_C))
+    m, (T, what) = seal_material(), _seal_T(x_C, T_seal_C)
     return [OutsideValidity(
-        f"bearing.seals = {scene.seals}: contact / cavity temperature {T:.1f} °C above the {m['name']} seal lips' upper "
+        f"bearing.seals = {scene.seals}: {what} {T:.1f} °C above the {m['name']} seal lips' upper "
         f"operating temperature {m['T_max_C']:g} °C ({m['T_brief_C']:g} °C for brief periods) — the lips harden and "
         "wear; the seal friction is that of a lip within its range", quantity="seal_T", value=T,
         limit=f"<= {m['T_max_C']:g} °C", source=m["source"], field="bearing.seals")]
@@ -220,13 +229,14 @@ def _unread_warnings(scene) -> list:
                         field=fld) for fld, v, why in unread_settings(scene)]
 
 
-def point_warnings(scene, losses, x_C, dry=None) -> list:
+def point_warnings(scene, losses, x_C, dry=None, T_seal_C=None) -> list:
     """The OutsideValidity warnings of one solved operating point: speed, contact pressure, contact
     and oil temperatures (the lubricant's validated range; a grease's upper operating temperature; contact seals'
     lip material; an oil's data under a grease supply), the SKF model's Φ_bl, a bearing at speed without load, a
     scene input the models do not read (:class:`~thermobear.errors.UnreadInput`); with ``dry`` (the point's dry
-    load distribution, where the film load model gave ``losses``' loads) a preload by the films."""
-    grease = (_grease_warning(scene, x_C) + _seal_warning(scene, x_C) + _oil_as_grease_warning(scene)
+    load distribution, where the film load model gave ``losses``' loads) a preload by the films; ``T_seal_C``: the
+    network's seal node [°C], where it has one."""
+    grease = (_grease_warning(scene, x_C) + _seal_warning(scene, x_C, T_seal_C) + _oil_as_grease_warning(scene)
               + _unloaded_warning(scene) + _unread_warnings(scene))
     if dry is not None:
         grease += _film_preload_warning(scene, float(_film_ratio([scene], losses, [dry])[0]), dry)
@@ -253,17 +263,19 @@ def _outside_warn(name, v) -> np.ndarray:
     return out
 
 
-def family_warnings(scenes, losses, x_C, answered=None, dry=None) -> list:
+def family_warnings(scenes, losses, x_C, answered=None, dry=None, T_seal_C=None) -> list:
     """:func:`point_warnings` of the B points of a family (batched ``losses``, ``x_C`` (B, 3)): the
     ranges checked for all points at once, the messages made only for the points outside (and
     ``answered``: a mask of the points that have an answer); ``dry``: per point its dry load distribution, where the
-    film load model gave the loads (a preload by the films is named)."""
+    film load model gave the loads (a preload by the films is named); ``T_seal_C``: (B,) the network's seal node [°C]
+    where it has one."""
     B = len(scenes)
     n_dm = np.array([s.n_rpm * s.bearing.dm * 1e3 for s in scenes])
     flag = _outside_warn("n_dm", n_dm[:, None]) | _outside_warn("lubricant_T", x_C)
     T_max = np.array([np.inf if grease_limit(s) is None else grease_limit(s) for s in scenes])
     flag |= np.asarray(x_C, float).reshape(B, -1).max(axis=1) > T_max
-    flag |= np.array([_seal_hot(s, x) for s, x in zip(scenes, np.asarray(x_C, float).reshape(B, -1))])
+    T_seal = np.full(B, np.nan) if T_seal_C is None else np.broadcast_to(np.asarray(T_seal_C, float), (B,))
+    flag |= np.array([_seal_hot(s, x, t) for s, x, t in zip(scenes, np.asarray(x_C, float).reshape(B, -1), T_seal)])
     flag |= np.array([_unloaded(s) or _oil_as_grease(s) or bool(unread_settings(s)) for s in scenes])
     flag |= _film_ratio(scenes, losses, dry) > FILM_PRELOAD_RATIO
     c = getattr(losses, "contacts", None)
@@ -276,7 +288,7 @@ def family_warnings(scenes, losses, x_C, answered=None, dry=None) -> list:
     if answered is not None:
         flag &= np.asarray(answered, bool)
     for b in np.flatnonzero(flag):
-        out[b] = point_warnings(scenes[b], take(losses, b, B), x_C[b], None if dry is None else dry[b])
+        out[b] = point_warnings(scenes[b], take(losses, b, B), x_C[b], None if dry is None else dry[b], T_seal[b])
     return out
 
 

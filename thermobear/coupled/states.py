@@ -167,8 +167,10 @@ class Solved:
         flows = {k: np.atleast_1d(v) for k, v in st.flows_W.items()}
         self.paths = heat_paths(net, np.column_stack([np.broadcast_to(flows[e.name], (B,)) for e in net.elements]))
         dry = [d if f.models["load_model"][0] == "film" else None for f in (fams or [fam]) for d in f.dry]
+        seal = list(net.nodes).index("seal") if "seal" in net.nodes else None
         self.warned = family_warnings(fam.scenes, r, x_C, nw.done & (nw.x.max(axis=1) <= T_LIMIT_K),
-                                      dry=dry if any(d is not None for d in dry) else None)
+                                      dry=dry if any(d is not None for d in dry) else None,
+                                      T_seal_C=None if seal is None else st.T_K[:, seal] - _C0)
         self.used = [u for f in (fams or [fam]) for u in [_models_used(f, r, template, cp)] * f.B]
         contacts = getattr(r, "contacts", None)
         T_cont = (0.5 * (np.asarray(contacts["inner"]["T_C"], float).mean(axis=-1)
