@@ -436,3 +436,16 @@ def test_a_scene_input_the_models_do_not_read_is_named(capsys):
     assert code == 0 and "UnreadInput" not in err
     code, _, err = run(capsys, "calibrate", SYNTH, LOGS / "synthetic_heatup_7210.csv", "--param", "mu_full_film")
     assert_bad_input(code, err, "--param = 'mu_full_film' — the scene's models do not read it")
+
+
+def test_loads_says_when_run_solves_the_scene_with_the_film_load_model(capsys):
+    """`loads` prints the dry distribution; where `run` puts the films in the contact laws (a 6208 oil bath, 3 of
+    9 balls loaded dry) its loads differ (×4 and more when cold): one note line and the JSON's `note` say so."""
+    bath = str(EX / "oil_bath_6208.toml")
+    code, out, _ = run(capsys, "loads", bath, "--set", "Fr_N=2000")
+    assert code == 0 and out.splitlines()[-1].startswith("note: run solves this scene with the film load model")
+    code, out, _ = run(capsys, "loads", bath, "--set", "Fr_N=2000", "--json")
+    d = json.loads(out)
+    assert d["load_model"] == "film" and d["note"].startswith("note: run solves")
+    code, out, _ = run(capsys, "loads", bath, "--set", "Fr_N=2000", "--set", "models.load_model=jones_harris", "--json")
+    assert json.loads(out)["note"] is None

@@ -162,7 +162,8 @@ def cmd_loads(args):
     scene = load_scene_with(args.scene, args.set)
     out = _plot_dir(getattr(args, "plot", None))
     check_static_safety(scene)                              # before any solve
-    hs = plan(scene)[0]["high_speed"][0] == "yes"
+    models = plan(scene)[0]
+    hs = models["high_speed"][0] == "yes"
     brg, stiff = scene.bearing, scene.models.get("stiffness", "nominal")
     M, My = moments(scene)
     ld = load_distribution(brg, Fa=scene.Fa, Fr=scene.Fr, M=M, Fz=scene.Fz, My=My, n_rpm=scene.n_rpm if hs else 0.0,
@@ -185,7 +186,13 @@ def cmd_loads(args):
          "delta_r_um": ld.delta_r * 1e6, "delta_z_um": ld.delta_z * 1e6, "theta_mrad": ld.theta * 1e3,
          "theta_y_mrad": ld.theta_y * 1e3, "Q_inner_N": ld.Q_i, "Q_outer_N": ld.Q_o,
          "alpha_inner_deg": np.rad2deg(ld.alpha_i), "alpha_outer_deg": np.rad2deg(ld.alpha_o),
-         "psi_deg": np.rad2deg(ld.psi), "residual": ld.residual, "iterations": ld.iterations}
+         "psi_deg": np.rad2deg(ld.psi), "residual": ld.residual, "iterations": ld.iterations,
+         "load_model": models["load_model"][0]}
+    # the loads shown are dry; where `run` solves the scene with the films in the contact laws, say so
+    note = (f"note: run solves this scene with the film load model ({models['load_model'][1]}): its ball loads "
+            "depend on the films and their temperature; these are the dry loads (as models.load_model = jones_harris)"
+            if models["load_model"][0] == "film" else None)
+    d["note"] = note
     if args.json:
         print_json(d)
     else:
@@ -204,6 +211,8 @@ def cmd_loads(args):
         for j in range(brg.Z):
             print(f"{j:4d} {d['psi_deg'][j]:10.1f} {ld.Q_i[j]:10.2f} {ld.Q_o[j]:10.2f} {d['alpha_inner_deg'][j]:14.2f} "
                   f"{d['alpha_outer_deg'][j]:14.2f}")
+        if note:
+            print(note)
     if out is not None:
         wrote([_plots().plot_load_distribution(ld, out / "load_distribution.png",
                                                f"{brg.name}: {'high-speed' if hs else 'static'} solution")])
