@@ -375,3 +375,12 @@ def test_films_thicker_than_the_clearance_are_named_as_a_preload():
     assert not [w for r in (warm, light) for w in r.warnings if w.quantity == "film preload"]
     assert light.models_used["load_model"][0] == "film"
     assert [any("film-induced preload" in w for w in r["warnings"]) for r in rows] == [True, False]
+    # in a model-switch band (Fa 1 kN: 0.43 film + 0.57 Jones–Harris) the film alternative preloads as much
+    # (74.5 kN for 4.0 kN dry) but the blend keeps the dominant alternative's contacts: each alternative is checked
+    band = s.with_(T_C=-10.0, Fa=1000.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = tb.solve(band)
+        rows = run_sweep(band, {"Fa": [900.0, 1000.0]})
+    assert "blend" in r.models_used and [w.quantity for w in r.warnings].count("film preload") == 1
+    assert all(any("film-induced preload" in w for w in row["warnings"]) for row in rows)

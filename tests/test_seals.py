@@ -89,3 +89,16 @@ def test_a_built_networks_seal_node_is_the_temperature_the_seal_check_reads():
     w = [w for w in st.warnings if w.quantity == "seal_T"]
     assert len(w) == 1 and w[0].value == pytest.approx(st.T_C["seal"], abs=1e-9) and "seal node" in str(w[0])
     assert st.T_C["seal"] > max(st.T_C["inner_race"], st.T_C["outer_race"]) > 100.0
+
+
+def test_a_heat_up_reads_the_seal_node_too():
+    """The same block at 7000 rpm heats its seal node to 103 °C while the races stay below 100 °C: the heat-up
+    named nothing (it read the contacts), the steady state did."""
+    import warnings
+
+    import thermobear as tb
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        tr = tb.transient(tb.load_scene(tb.example_path("block_6208_grease.toml")).with_(n_rpm=7000.0), 2e5)
+    assert tr.T_C["seal"].max() > 100.0 > max(tr.T_C["inner_race"].max(), tr.T_C["outer_race"].max())
+    assert [w.quantity for w in tr.warnings].count("seal_T") == 1

@@ -206,6 +206,7 @@ def _blend_rows(parts) -> dict:
     total = sum(w for w, _ in ok)
     ok = [(w / total, r) for w, r in ok]
     row = dict(max(ok, key=lambda p: p[0])[1])
+    row["warnings"] = list(dict.fromkeys(w for _, r in ok for w in r["warnings"]))   # every alternative's, as steady
     keys = list(dict.fromkeys(k for _, r in ok for k in r["breakdown_W"]))
     row.update(P_W=sum(w * r["P_W"] for w, r in ok), torque_Nm=sum(w * r["torque_Nm"] for w, r in ok),
                breakdown_W={k: sum(w * r["breakdown_W"].get(k, 0.0) for w, r in ok) for k in keys},

@@ -19,7 +19,7 @@ from thermobear.rating.life import stated_ratings
 from thermobear.validity import LIMITS, P_MAX_REFUSE_PA, T_LUBRICANT_REFUSE_C, check, collect
 
 __all__ = ["p_max_Pa", "contact_pressure", "overloads", "point_warnings", "family_warnings", "grease_limit", "emit",
-           "runaway_at", "runaway_in", "FILM_PRELOAD_RATIO", "FILM_PRELOAD_C0"]
+           "runaway_at", "runaway_in", "film_preload_warnings", "FILM_PRELOAD_RATIO", "FILM_PRELOAD_C0"]
 
 
 def p_max_Pa(Q, a, b):
@@ -111,9 +111,12 @@ def _seal_T(x_C, T_seal_C=None) -> tuple:
     return float(np.max(x_C)), "contact / cavity temperature"
 
 
-def _seal_hot(scene, x_C, T_seal_C=None) -> bool:
-    """Contact seals above their material's upper operating temperature (:func:`_seal_T`)."""
-    return scene.seals in CONTACT_SEALS and _seal_T(x_C, T_seal_C)[0] > seal_material()["T_max_C"]
+def _seal_hot(scene, x_C, T_seal_C=None, T_max_C=None) -> bool:
+    """Contact seals above their material's upper operating temperature (:func:`_seal_T`; ``T_max_C`` the
+    material's, read once by a caller checking many points)."""
+    if scene.seals not in CONTACT_SEALS:
+        return False
+    return _seal_T(x_C, T_seal_C)[0] > (seal_material()["T_max_C"] if T_max_C is None else T_max_C)
 
 
 def _seal_warning(scene, x_C, T_seal_C=None) -> list:
@@ -186,8 +189,9 @@ def _dry_sum(dry) -> float:
 
 
 def _film_ratio(scenes, losses, dry) -> np.ndarray:
-    """Per point (B,): Σ Q of the inner contacts of ``losses`` (mean ball load × Z, over model alternatives too)
-    over that of the point's dry load distribution (``dry``: one per point, None: no check → NaN); NaN too where the
+    """Per point (B,): Σ Q of the inner contacts of ``losses`` (mean ball load × Z: one model alternative's — a
+    blend's are its dominant one's, :func:`film_preload_warnings` checks each) over that of the point's dry load
+    distribution (``dry``: one per point, None: no check → NaN); NaN too where the
     films add less than :data:`FILM_PRELOAD_C0` C0."""
     B = len(scenes)
     c = getattr(losses, "contacts", None)
@@ -219,6 +223,18 @@ def _film_preload_warning(scene, ratio: float, dry) -> list:
         "bound (models.load_model = jones_harris gives the dry loads)", quantity="film preload", value=float(ratio),
         limit=f"<= {FILM_PRELOAD_RATIO:g} × the dry loads", source="thermobear.coupled.limits",
         field="models.load_model")]
+
+
+def film_preload_warnings(scene, alternatives) -> list:
+    """The film-preload warnings (:data:`FILM_PRELOAD_RATIO`) of a point's model alternatives ``[(losses, dry)]``,
+    each checked with its own dry load distribution (a blend keeps one alternative's contacts: the film
+    alternative's preload is named even where it does not dominate the weights)."""
+    out = []
+    for losses, dry in alternatives:
+        if dry is not None:
+            out += [w for w in _film_preload_warning(scene, float(_film_ratio([scene], losses, [dry])[0]), dry)
+                    if str(w) not in map(str, out)]
+    return out
 
 
 def _unread_warnings(scene) -> list:
@@ -275,7 +291,10 @@ def family_warnings(scenes, losses, x_C, answered=None, dry=None, T_seal_C=None)
     T_max = np.array([np.inf if grease_limit(s) is None else grease_limit(s) for s in scenes])
     flag |= np.asarray(x_C, float).reshape(B, -1).max(axis=1) > T_max
     T_seal = np.full(B, np.nan) if T_seal_C is None else np.broadcast_to(np.asarray(T_seal_C, float), (B,))
-    flag |= np.array([_seal_hot(s, x, t) for s, x, t in zip(scenes, np.asarray(x_C, float).reshape(B, -1), T_seal)])
+    if any(s.seals in CONTACT_SEALS for s in scenes):
+        T_max = seal_material()["T_max_C"]
+        flag |= np.array([_seal_hot(s, x, t, T_max) for s, x, t in zip(scenes, np.asarray(x_C, float).reshape(B, -1),
+                                                                         T_seal)])
     flag |= np.array([_unloaded(s) or _oil_as_grease(s) or bool(unread_settings(s)) for s in scenes])
     flag |= _film_ratio(scenes, losses, dry) > FILM_PRELOAD_RATIO
     c = getattr(losses, "contacts", None)

@@ -9,7 +9,7 @@ import numpy as np
 
 from thermobear.arrays import instance_of
 from thermobear.coupled.blend import blend_losses
-from thermobear.coupled.limits import emit, point_warnings
+from thermobear.coupled.limits import emit, film_preload_warnings, point_warnings
 from thermobear.coupled.ratings import Ratings, check_static_safety, scene_ratings
 from thermobear.coupled.sources import scene_losses
 from thermobear.coupled.steady import SCENE_LOADS, SteadyState, steady_state
@@ -172,11 +172,14 @@ def solve(scene: Scene) -> RunResult:
         with warnings.catch_warnings():        # the answer's validity: point_warnings below
             warnings.simplefilter("ignore", OutsideValidity)
             # the model choice's dry loads are the loads (solved once); across a switch, the blend
-            r = blend_losses([(a.weight, scene_losses(scene, models=a.models, dry=None if a.dry is None else a.dry.load()))
-                              for a in alts])
+            each = [scene_losses(scene, models=a.models, dry=None if a.dry is None else a.dry.load()) for a in alts]
+            r = blend_losses([(a.weight, e) for a, e in zip(alts, each)])
         T = float(scene.T_C)
-        ws = point_warnings(scene, r, [T, T, T], dry=next((a.dry for a in alts if a.dry is not None
-                                                          and a.models["load_model"][0] == "film"), None))
+        ws = point_warnings(scene, r, [T, T, T])
+        # a preload by the films, each film alternative with its own dry loads (a blend keeps one's contacts)
+        ws += [w for w in film_preload_warnings(scene, [(e, a.dry) for a, e in zip(alts, each)
+                                                        if a.models["load_model"][0] == "film"])
+               if str(w) not in map(str, ws)]
         emit(ws)
         return RunResult(scene=scene, P_W=float(r.P_W), torque_Nm=float(r.torque_Nm),
                          breakdown_W={k: float(v) for k, v in r.breakdown_W.items()},

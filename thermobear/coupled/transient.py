@@ -322,8 +322,9 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
         Tb = cat(out_T[ro["ball"]])
         x = [0.5 * (Tb + cat(out_T[ro["inner"]])), 0.5 * (Tb + cat(out_T[ro["outer"]])), cat(out_T[ro["oil"]])]
         runaway_in(x, cat(out_t))
+        seal = cat(out_T["seal"]).max() if "seal" in out_T else None      # a built network's seal node
         for _, _, sc, _ in pieces[:i + 1]:
-            got += [w for w in point_warnings(sc, None, np.concatenate(x)) if str(w) not in map(str, got)]
+            got += [w for w in point_warnings(sc, None, np.concatenate(x), T_seal_C=seal) if str(w) not in map(str, got)]
     got += [settling.warning] if settling.warning is not None else []
     emit(got)
     return _assemble(out_t, out_T, out_rep, first, seg_changes, got, completed)
