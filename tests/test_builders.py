@@ -11,7 +11,6 @@ import pytest
 from ht.conv_free_immersed import Nu_horizontal_plate_VDI, Nu_vertical_plate_Churchill
 
 import thermobear as tb
-from thermobear.contact.fits import fit_interference
 from thermobear.contact.materials import material
 from thermobear.errors import InputError
 from thermobear.lubrication.air import air_properties
@@ -114,14 +113,19 @@ def test_probable_fits_from_the_tolerance_tables():
         probable_interference(0.040, "k9")
 
 
-@pytest.mark.parametrize("seat, ring", [("k5", "inner"), ("m5", "inner"), ("g6", "inner"), ("H7", "outer"),
-                                        ("N7", "outer")])
-def test_the_networks_seats_and_the_operating_clearance_read_one_fit_table(seat, ring):
-    """One ISO 286 / ISO 492 table: the probable interference of a built network's seat is the middle of the fit
-    the operating clearance uses, at every size step from 3 to 400 mm (a 10 mm bore lies in ISO 286's 6–10 mm step)."""
-    for d_mm in (4.0, 6.0, 10.0, 12.0, 18.0, 40.0, 80.0, 100.0, 150.0, 250.0, 400.0):
-        assert probable_interference(d_mm * 1e-3, seat) == fit_interference(d_mm * 1e-3, seat, ring)[1]
-    assert probable_interference(0.010, "k5") == pytest.approx(8e-6, abs=1e-12)      # k5 +1/+7, bore 0/−8
+@pytest.mark.parametrize("d_mm, seat, um", [
+    (10.0, "k5", 8.0),      # ISO 286 6–10 mm: k5 +1/+7 (the old table's 10–18 step gave +1/+9: 9.0); bore 0/−8
+    (5.0, "g6", -4.0),      # 3–6 mm: g6 −12/−4; bore 0/−8
+    (40.0, "g6", -11.0),    # 30–50 mm: g6 −25/−9; bore 0/−12
+    (150.0, "m5", 36.5),    # 120–180 mm: m5 +15/+33; bore 0/−25
+    (10.0, "H7", -11.5),    # 6–10 mm: H7 0/+15; outside diameter 0/−8 (ISO 492 2.5–18 mm)
+    (30.0, "N7", 13.0),     # 18–30 mm: N7 −28/−7; outside diameter 0/−9
+    (170.0, "H7", -32.5),   # 120–180 mm: H7 0/+40; ISO 492's own 150–180 mm step 0/−25 (the old table: −18)
+])
+def test_the_networks_probable_seats_by_hand(d_mm, seat, um):
+    """A built network's seats are the middle of the ISO 286 / ISO 492 fit (the table the operating clearance reads,
+    contact.fits): hand values from the standards' limits at the steps the old builder table had wrong or lacked."""
+    assert probable_interference(d_mm * 1e-3, seat) == pytest.approx(um * 1e-6, abs=1e-12)
     s = material("aisi-52100")
     tight, _ = seat_conductance(20e-6, 0.04, 0.0, 0.047, material("steel-c45"), s, 1.1e-6)
     loose, _ = seat_conductance(5e-6, 0.04, 0.0, 0.047, material("steel-c45"), s, 1.1e-6)
