@@ -358,3 +358,13 @@ def test_cli_table_names_the_caveat_once(capsys):
     assert "Inputs ranked for P_W (by rank correlation; regression withheld: caveat above)" in lines
     assert "SRC " not in out.split(cav[0])[1]
     assert "warning: UnreliableRegression: " in err
+
+
+def test_a_negative_seed_is_refused_by_name(capsys):
+    """`--seed -1` ended in an internal ValueError of numpy (exit 1)."""
+    from thermobear.coupled.uncertainty import design
+    with pytest.raises(tb.InputError) as e:
+        design(8, 2, seed=-1)
+    assert e.value.field == "uncertainty.seed"
+    assert main(["run", SEED004, "--uncertainty", "8", "--seed", "-1"]) == 2
+    assert "error: uncertainty.seed = -1" in capsys.readouterr().err

@@ -111,7 +111,8 @@ def _uncertainty_args(sp):
     g.add_argument("--design", choices=("lhs", "sobol"), default="lhs",
                    help="Latin hypercube (default) or scrambled Sobol' sequence")
     g.add_argument("--groups", type=int, default=None, metavar="G",
-                   help="bearing-geometry families (default min(N, 8)): the geometry is drawn at G levels")
+                   help="bearing-geometry (and built-network estimate) families (default min(N, max(8, 2 (d + 1)))"
+                        " for d family-level inputs): they are drawn at G levels")
     g.add_argument("--sensitivity", choices=("src", "sobol"), default="src",
                    help="ranking: standardised regression coefficients (default) or first-order Sobol indices "
                         "(RBD-FAST, needs the 'sensitivity' extra: SALib)")

@@ -216,6 +216,8 @@ def design(n: int, d: int, seed=None, method: str = "lhs") -> np.ndarray:
     if method not in METHODS:
         raise InputError("uncertainty.method", method, f"one of {', '.join(METHODS)}")
     n, d = _count(n, "uncertainty.n"), int(d)
+    if seed is not None and (isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0):
+        raise InputError("uncertainty.seed", seed, "a whole number >= 0 (or None: a fresh design)")
     if d == 0:
         return np.zeros((n, 0))
     rng = np.random.default_rng(seed)
