@@ -24,7 +24,7 @@ from thermobear.scene.scene import WITH_KEYS
 __all__ = ["overrides", "load_scene_with", "SET_FORMS"]
 
 #: ``--set`` keys whose value is a name (a catalogue designation, a lubricant), never a number
-_NAMED = ("bearing", "lubricant")
+_NAMED = ("bearing", "lubricant", "bearing.catalog", "bearing.series", "bearing.name")   # text that may read as a number
 _TABLES = (("fixed_C.", "T_fixed_C"), ("models.", "models"), ("parameters.", "network_parameters"))
 #: the prefixed forms ``--set`` takes besides the Scene.with_ keys
 SET_FORMS = ("models.<key>, fixed_C.<node>, parameters.<name>, bearing.<key> (a [bearing] key: clearance_group, "

@@ -472,6 +472,13 @@ def _bearing_of(sec: dict) -> BallBearing:
         if not over:
             return base
         table = bearing_table(name)
+        if ("clearance_group" in over and not {"Pd_mm", "alpha0_deg"} & set(over)
+                and table.get("kind", "deep_groove") == "deep_groove"):
+            # the scene's clearance group replaces a clearance the catalogue states (a seed bearing's Pd_mm): an
+            # explicit Pd_mm would win over it inside one table, and the group would be dropped silently
+            gone = ("Pd_mm", "alpha0_deg")
+            table = {k: ({u: r for u, r in v.items() if u not in gone} if k == "uncertainty" else v)
+                     for k, v in table.items() if k not in gone}
         unc = table.get("uncertainty", {})       # a value the scene gives replaces the estimate and its range
         unc = {**{k: v for k, v in unc.items() if k not in over}, **over.get("uncertainty", {})}
         merged = {**table, **over, "uncertainty": unc} if unc else {k: v for k, v in {**table, **over}.items()
