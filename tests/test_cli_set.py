@@ -54,9 +54,11 @@ def test_set_clearance_group_rebuilds_the_scenes_bearing(tmp_path, capsys):
     assert c4.name == "6308" and c4.clearance_group == "C4"
     # a bearing whose data state its clearance (seed 004's 6210: Pd_mm 14.5 µm) takes the group given instead (it
     # kept 14.5 µm and dropped the group silently): bore 50 mm, C3 18–36 µm
-    b = load_scene_with(scene, ["bearing=6210", "clearance_group=C3"]).bearing
+    import thermobear as tb
+    bath = tb.example_path("oil_bath_6208.toml")                  # a hand-written network: any bore fits
+    b = load_scene_with(bath, ["bearing=6210", "clearance_group=C3"]).bearing
     assert b.clearance_group == "C3" and b.Pd == pytest.approx(27e-6)
-    assert load_scene_with(scene, ["bearing.catalog=6210"]).bearing.name == "6210"   # a number-like name: text
+    assert load_scene_with(bath, ["bearing.catalog=6210"]).bearing.name == "6210"    # a number-like name: text
     code = main(["run", str(scene), "--json", "--set", "clearance_group=C3", "--set", "T_C=60"])
     out, err = capsys.readouterr()
     assert code == 0, err
