@@ -174,8 +174,8 @@ def _caveat(check, method):
     if check is None:
         return None
     fam = check["levels"].get("family")
-    hint = (f"; groups >= {fam['needed']} would determine the family level" if fam and fam["draws"] < fam["needed"]
-            else "")
+    hint = (f"; {fam['needed']} groups (and at least as many samples) would determine the family level"
+            if fam and fam["draws"] < fam["needed"] else "")
     rank = "ranked by rank correlation" if method == "src" else "ranked by S1"
     band = (f"; a {check['rho_level']}-level |rho| < {check['rho_zero']:.2f} is not distinguishable from 0 at 95 % "
             f"({check['rho_draws']} draws)" if check["rho_zero"] is not None else "")
