@@ -419,6 +419,9 @@ def test_negative_ranges_and_values_follow_their_option_as_they_are(capsys, tmp_
     with pytest.raises(SystemExit):
         main(["sweep", "--help"])
     assert "--T-C -10:100:12" in " ".join(capsys.readouterr().out.split())
+    from thermobear.app.cli import build_parser, valued_options
+    v = valued_options(build_parser())           # read off the parser, argument groups' options too
+    assert {"--T-C", "--T0-C", "--seed", "--groups", "--set", "--uncertainty"} <= v and "--json" not in v
 
 
 def test_a_scene_input_the_models_do_not_read_is_named(capsys):

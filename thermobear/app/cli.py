@@ -44,21 +44,32 @@ __all__ = ["main", "build_parser", "EXIT_BAD_INPUT", "EXIT_SOLVER", "EXIT_INTERR
 EXIT_BAD_INPUT = 2
 EXIT_SOLVER = 3
 
-#: options that take one value, filled as the parser is built (:func:`attach_negative_values`)
-_VALUED: set = set()
 _NUM = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 #: a negative number, list (-10,0,10) or range (-10:100:12): argparse took it for an option
 _NEGATIVE = re.compile(rf"-(?:\d|\.\d)[^\s]*")
 _NUMBERS = re.compile(rf"{_NUM}(?:\s*[,:]\s*{_NUM})*")
 
 
-def attach_negative_values(argv: list) -> list:
-    """``--T-C -10:100:12`` as ``--T-C=-10:100:12``: a value after an option that takes one, starting with '-' and
-    reading as a number, a list a,b,c or a range start:stop:count, attached to its option (argparse took it for
-    an option and refused "expected one argument"); everything after ``--`` is left as it is.
+def valued_options(parser: argparse.ArgumentParser) -> frozenset:
+    """The option strings of ``parser`` and its sub-commands (their argument groups too) that take one value."""
+    out = set()
+    for a in parser._actions:                       # (argparse's list of a parser's actions, groups' included)
+        if a.option_strings and a.nargs is None:
+            out.update(a.option_strings)
+        if isinstance(getattr(a, "choices", None), dict):                       # the sub-commands
+            for sub in a.choices.values():
+                if isinstance(sub, argparse.ArgumentParser):
+                    out |= valued_options(sub)
+    return frozenset(out)
 
-    >>> _ = build_parser()                      # (it records the options that take a value)
-    >>> attach_negative_values(["sweep", "s.toml", "--T-C", "-10:100:12", "--Fa", "-x", "--quiet"])
+
+def attach_negative_values(argv: list, valued) -> list:
+    """``--T-C -10:100:12`` as ``--T-C=-10:100:12``: a value after an option that takes one (``valued``,
+    :func:`valued_options`), starting with '-' and reading as a number, a list a,b,c or a range start:stop:count,
+    attached to its option (argparse took it for an option and refused "expected one argument"); everything after
+    ``--`` is left as it is.
+
+    >>> attach_negative_values(["sweep", "s.toml", "--T-C", "-10:100:12", "--Fa", "-x", "--quiet"], {"--T-C", "--Fa"})
     ['sweep', 's.toml', '--T-C=-10:100:12', '--Fa', '-x', '--quiet']
     """
     out, args, i = [], list(argv), 0
@@ -66,7 +77,7 @@ def attach_negative_values(argv: list) -> list:
         tok = args[i]
         if tok == "--":
             return out + args[i:]
-        if (tok in _VALUED and i + 1 < len(args) and _NEGATIVE.match(args[i + 1])
+        if (tok in valued and i + 1 < len(args) and _NEGATIVE.match(args[i + 1])
                 and _NUMBERS.fullmatch(args[i + 1].strip())):
             out.append(f"{tok}={args[i + 1]}")
             i += 2
@@ -77,13 +88,7 @@ def attach_negative_values(argv: list) -> list:
 
 
 class _Parser(argparse.ArgumentParser):
-    """argparse with one-line errors (exit 2); records the options that take one value (``_VALUED``)."""
-
-    def add_argument(self, *args, **kwargs):
-        action = super().add_argument(*args, **kwargs)
-        if action.option_strings and action.nargs is None:
-            _VALUED.update(action.option_strings)
-        return action
+    """argparse with one-line errors (exit 2)."""
 
     def error(self, message):
         print(f"error: {self.prog}: {' '.join(message.split())} (see {self.prog} --help)", file=sys.stderr)
@@ -268,7 +273,7 @@ def _terminate(signum, frame):
 
 def main(argv=None) -> int:
     parser = build_parser()
-    args = parser.parse_args(attach_negative_values(sys.argv[1:] if argv is None else argv))
+    args = parser.parse_args(attach_negative_values(sys.argv[1:] if argv is None else argv, valued_options(parser)))
     debug = getattr(args, "debug", False)
     signal.signal(signal.SIGTERM, _terminate)          # SIGTERM ends a run as Ctrl-C does
     try:
