@@ -319,3 +319,20 @@ def test_cli_speed_names_the_node_it_limits(tmp_path, capsys):
     assert f"{mod['n_rpm']:9.0f} rpm   outer_race 70.00 °C" in out
     for part in ("iso15312", "din732"):
         assert f"{rep[part]['T_node']} {rep[part]['T_C']:.2f} °C" in out
+
+
+def test_din732_balance_root_meets_its_balance_and_its_limits():
+    """The root of f K_L + f^(5/3) K_P = 1 (what DIN 732's f_n approximates): the balance holds to 1e-12 on a grid,
+    one term alone gives 1/K_L or K_P^(−3/5), K_L = K_P = 1/2 gives 1, none gives ∞; the speed verb's DIN 732 row
+    states it beside the approximation (0.702 against 0.607 on the bundled 6208 block)."""
+    from thermobear.coupled.speeds import din732_safe_speed
+    from thermobear.rating.speeds import din732_balance_ratio
+    KL, KP = np.meshgrid([0.0, 0.01, 0.3, 1.0, 5.0], [0.0, 0.02, 0.5, 1.4, 8.0])
+    f = np.asarray(din732_balance_ratio(KL, KP))
+    ok = (KL > 0) | (KP > 0)
+    np.testing.assert_allclose((f * KL + f ** (5 / 3) * KP)[ok], 1.0, rtol=1e-12)
+    assert np.isinf(f[~ok]).all()
+    assert din732_balance_ratio(0.25, 0.0) == pytest.approx(4.0) and din732_balance_ratio(0.0, 32.0) == pytest.approx(0.125)
+    assert din732_balance_ratio(0.5, 0.5) == pytest.approx(1.0, rel=1e-12)
+    d = din732_safe_speed(tb.load_scene(tb.example_path("block_6208_oil_bath.toml")))
+    assert d.f_n_balance == pytest.approx(float(din732_balance_ratio(d.K_L, d.K_P))) and d.f_n / d.f_n_balance < 0.9

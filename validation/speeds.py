@@ -15,7 +15,6 @@ import tempfile
 import warnings
 from pathlib import Path
 
-from scipy.optimize import brentq
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import thermobear as tb  # noqa: E402
@@ -79,7 +78,7 @@ def scene_rows(s) -> list:
             except NoSpeedRoot as e:
                 model = f"{e} | – | – | –"
         d = din732_safe_speed(s, limit_C=limit)
-        exact = brentq(lambda f: f * d.K_L + f ** (5 / 3) * d.K_P - 1.0, 1e-6, 1e3)
+        exact = d.f_n_balance
         out.append(f"| {limit:g} | {model} | {d.n_rpm:.0f} | {d.f_n:.3f} | {d.K_L:.3f} | {d.K_P:.3f} | {exact:.3f} | "
                    f"{d.Phi_W:.1f} | {d.n_theta_r_rpm:.0f} |")
     return out

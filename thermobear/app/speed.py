@@ -114,7 +114,7 @@ def _report(scene: Scene, limit_C: float, node, node_field: str = "node") -> tup
         d = din732_safe_speed(scene, limit_C=limit_C)
         rep["din732"] = {"n_rpm": d.n_rpm, "f_n": d.f_n, "K_L": d.K_L, "K_P": d.K_P,
                          "n_theta_r_rpm": d.n_theta_r_rpm, "Phi_W": d.Phi_W, "nu_cSt": d.nu_cSt, "P1_N": d.P1_N,
-                         "f0": d.f0, "f1": d.f1}
+                         "f0": d.f0, "f1": d.f1, "f_n_balance": d.f_n_balance}
     except (SolverError, InputError) as exc:
         rep["din732"] = {"error": " ".join(str(exc).split())}
     temps = _at_speeds(scene, {"iso15312": rep["iso15312"].get("n_rpm"), "din732": rep["din732"].get("n_rpm")}, node)
@@ -163,6 +163,9 @@ def summary(rep: dict) -> str:
     if "error" not in din:
         lines.append(f"    DIN 732: f_n = {din['f_n']:.3f} × n_θr {din['n_theta_r_rpm']:.0f} rpm (ISO 15312's "
                      f"equations); K_L {din['K_L']:.3f}, K_P {din['K_P']:.3f}; heat dissipated {din['Phi_W']:.2f} W")
+        lines.append(f"    DIN 732: the root of the balance f_n K_L + f_n^(5/3) K_P = 1 that f_n approximates is "
+                     f"{din['f_n_balance']:.3f} ({din['f_n_balance'] * din['n_theta_r_rpm']:.0f} rpm); the "
+                     "approximation's constants are unconfirmed (thermobear.rating.speeds)")
     return "\n".join(lines)
 
 

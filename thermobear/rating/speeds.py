@@ -59,7 +59,7 @@ optimize = lazy_module("scipy.optimize")    # brentq: loaded by its first use
 
 __all__ = ["ReferenceConditions", "reference_conditions", "reference_surface", "reference_heat_flow_density",
            "palmgren_coefficients", "palmgren_load", "palmgren_moments", "din732_heat_flow",
-           "din732_parameters", "din732_speed_ratio", "standard_reference_speed", "seating_heat_transfer_coefficient", "Q_R_W_M2",
+           "din732_parameters", "din732_speed_ratio", "din732_balance_ratio", "standard_reference_speed", "seating_heat_transfer_coefficient", "Q_R_W_M2",
            "A_R_KNEE_M2", "DT_REFERENCE_K"]
 
 Q_R_W_M2 = 16.0e3              #: reference heat flow density up to the knee [W/m²] (ISO 15312, unconfirmed)
@@ -336,6 +336,35 @@ def din732_speed_ratio(K_L, K_P):
     KP = checked("K_P", K_P, lo=0.0, strict=False, what=" [-]")
     den = 1.0 + 498.78 * KL ** 0.599 + 852.88 * KP ** 0.963 - 504.5 * KL ** 0.055 * KP ** 0.832
     return out(490.77 / den)
+
+
+def din732_balance_ratio(K_L, K_P, *, tol: float = 1e-13):
+    r"""The root f of the operating heat balance that DIN 732's f_n approximates [-] (:func:`din732_speed_ratio`).
+
+    Notes
+    -----
+    .. math:: f\,K_L + f^{5/3} K_P = 1
+
+    (:func:`din732_parameters`; M0 ∝ n^(2/3)).  The left side increases with f from 0, so the root is unique; Newton
+    from the smaller of the two single-term roots 1/K_L and K_P^(−3/5) — both above it, and the left side convex —
+    approaches it from above without overshoot.  Infinite where K_L = K_P = 0 (no heat to balance).
+
+    >>> round(float(din732_balance_ratio(0.5, 0.5)), 12), round(float(din732_balance_ratio(0.303, 1.421)), 3)
+    (1.0, 0.702)
+    """
+    KL = checked("K_L", K_L, lo=0.0, strict=False, what=" [-]")
+    KP = checked("K_P", K_P, lo=0.0, strict=False, what=" [-]")
+    KL, KP = np.broadcast_arrays(np.asarray(KL, float), np.asarray(KP, float))
+    with np.errstate(divide="ignore"):
+        f = np.minimum(np.where(KL > 0, 1.0 / KL, np.inf), np.where(KP > 0, KP ** -0.6, np.inf))
+    live = np.isfinite(f)
+    for _ in range(100):
+        x = np.where(live, f, 1.0)                      # (no arithmetic on the infinite ones)
+        step = np.where(live, (x * KL + x ** (5.0 / 3.0) * KP - 1.0) / (KL + (5.0 / 3.0) * x ** (2.0 / 3.0) * KP), 0.0)
+        f = np.where(live, f - step, f)
+        if np.all(np.abs(step) <= tol * np.maximum(f, 1.0)):
+            return out(f)
+    raise NoConvergence("DIN 732 balance: Newton did not converge", iterations=100)
 
 
 def standard_reference_speed(A_r, dm, P1r, f0r, f1r, nu_r_cSt=12.0, *, n_max_rpm=1e6):
