@@ -209,9 +209,9 @@ def _film_ratio(scenes, losses, dry) -> np.ndarray:
 
 def _film_preload_warning(scene, ratio: float, dry) -> list:
     """An OutsideValidity warning where the film load model's ball loads exceed the dry solution's by more than
-    :data:`FILM_PRELOAD_RATIO` (and by more than :data:`FILM_PRELOAD_C0` C0): the fully flooded films on both races of each ball (Hamrock–Dowson thicknesses,
-    which a starved inlet would thin) take up more than the clearance and preload every ball; the hysteresis and
-    sliding losses follow those loads."""
+    :data:`FILM_PRELOAD_RATIO` (and by more than :data:`FILM_PRELOAD_C0` C0): the fully flooded films on both races
+    of each ball (Hamrock–Dowson thicknesses, which a starved inlet would thin) take up more than the clearance and
+    preload every ball; the hysteresis and sliding losses follow those loads."""
     if not ratio > FILM_PRELOAD_RATIO:
         return []
     Q_dry = _dry_sum(dry)
@@ -254,8 +254,7 @@ def point_warnings(scene, losses, x_C, dry=None, T_seal_C=None) -> list:
     network's seal node [°C], where it has one."""
     grease = (_grease_warning(scene, x_C) + _seal_warning(scene, x_C, T_seal_C) + _oil_as_grease_warning(scene)
               + _unloaded_warning(scene) + _unread_warnings(scene))
-    if dry is not None:
-        grease += _film_preload_warning(scene, float(_film_ratio([scene], losses, [dry])[0]), dry)
+    grease += film_preload_warnings(scene, [(losses, dry)])
     with collect(replay=False) as got:
         check("n_dm", scene.n_rpm * scene.bearing.dm * 1e3, "operation.n_rpm", warn=True)
         check("lubricant_T", np.asarray(x_C, float), "contact / oil temperature", category=ExtrapolationWarning)
@@ -292,8 +291,8 @@ def family_warnings(scenes, losses, x_C, answered=None, dry=None, T_seal_C=None)
     flag |= np.asarray(x_C, float).reshape(B, -1).max(axis=1) > T_max
     T_seal = np.full(B, np.nan) if T_seal_C is None else np.broadcast_to(np.asarray(T_seal_C, float), (B,))
     if any(s.seals in CONTACT_SEALS for s in scenes):
-        T_max = seal_material()["T_max_C"]
-        flag |= np.array([_seal_hot(s, x, t, T_max) for s, x, t in zip(scenes, np.asarray(x_C, float).reshape(B, -1),
+        T_lip = seal_material()["T_max_C"]
+        flag |= np.array([_seal_hot(s, x, t, T_lip) for s, x, t in zip(scenes, np.asarray(x_C, float).reshape(B, -1),
                                                                          T_seal)])
     flag |= np.array([_unloaded(s) or _oil_as_grease(s) or bool(unread_settings(s)) for s in scenes])
     flag |= _film_ratio(scenes, losses, dry) > FILM_PRELOAD_RATIO

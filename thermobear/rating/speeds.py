@@ -339,7 +339,8 @@ def din732_speed_ratio(K_L, K_P):
 
 
 def din732_balance_ratio(K_L, K_P, *, tol: float = 1e-13):
-    r"""The root f of the operating heat balance that DIN 732's f_n approximates [-] (:func:`din732_speed_ratio`).
+    r"""The root f of the operating heat balance that DIN 732's f_n approximates [-] (DIN 732 [4]_,
+    :func:`din732_speed_ratio`).
 
     Notes
     -----
