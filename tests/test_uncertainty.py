@@ -348,13 +348,13 @@ def test_cli_withholds_a_ranking_the_family_draws_do_not_determine(tmp_path, cap
 
 
 def test_cli_table_names_the_caveat_once(capsys):
-    """Seed 004 with 8 samples for its 46 inputs: too few for the regression; the table says so in one
+    """Seed 004 with 8 samples for its 47 inputs: too few for the regression; the table says so in one
     named line and ranks by rank correlation."""
     assert main(["run", SEED004, "--uncertainty", "8", "--seed", "2"]) == 0
     out, err = capsys.readouterr()
     lines = out.splitlines()
     cav = [line for line in lines if line.startswith("caveat: UnreliableRegression: ")]
-    assert len(cav) == 1 and "47 coefficients" in cav[0] and "on 8 samples" in cav[0]
+    assert len(cav) == 1 and "48 coefficients" in cav[0] and "on 8 samples" in cav[0]
     assert "Inputs ranked for P_W (by rank correlation; regression withheld: caveat above)" in lines
     assert "SRC " not in out.split(cav[0])[1]
     assert "warning: UnreliableRegression: " in err

@@ -144,6 +144,6 @@ def test_the_siblings_the_models_do_not_read_are_named(kw, field):
 
 def test_a_ring_guided_cage_reads_mu_full_film():
     """A ring-guided cage's pocket friction is mu_full_film's: read under the Eyring traction too."""
-    from thermobear.models import unread_inputs
+    from thermobear.model_inputs import unread_inputs
     assert "lubricant.mu_full_film" in unread_inputs(S004)
     assert "lubricant.mu_full_film" not in unread_inputs(S004.with_(cage="outer_ring"))

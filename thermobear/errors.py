@@ -133,7 +133,7 @@ class ExtrapolationWarning(OutsideValidity):
 
 class UnreadInput(OutsideValidity):
     """A scene input set that the chosen models do not read: its value changes nothing
-    (:func:`thermobear.models.unread_inputs`).  ``field`` names it, ``value`` is the value set and ``limit``
+    (:func:`thermobear.model_inputs.unread_inputs`).  ``field`` names it, ``value`` is the value set and ``limit``
     says which models would read it."""
 
 

@@ -62,8 +62,6 @@ the load step does not solve it again: no hidden cache.
 """
 from __future__ import annotations
 
-import dataclasses
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -92,8 +90,7 @@ MIN_WEIGHT = 1e-3
 
 __all__ = ["choose_models", "plan", "plan_many", "open_contacts", "dry_load", "is_symmetric", "moments", "FLOODED",
            "BLEND_BANDS", "Alternative", "DryRow", "smooth_weight", "film_options", "added_losses", "oil_level",
-           "seal_diameter_mm", "cage_land", "traction_choice", "unread_inputs", "unread_settings", "FRICTION_INPUTS",
-           "SKF_CONSTANTS"]
+           "seal_diameter_mm", "cage_land", "traction_choice", "replenishment_constant"]
 
 FLOODED = ("oil_jet", "oil_bath")
 
@@ -293,6 +290,19 @@ def traction_choice(scene: Scene) -> tuple:
                       f"τ_L/p {oil.limiting_shear:g}) on each contact's slip")
 
 
+def replenishment_constant(scene: Scene):
+    """The replenishment constant K_rs [-] of a scene's starvation factor Φ_rs (:func:`~thermobear.losses.skf.phi_rs`):
+    the scene's ``[lubricant] K_rs``, else SKF's for its supply (SKF 2004: 3e-8 oil jet and low-level oil bath,
+    6e-8 grease and oil–air; :data:`~thermobear.losses.skf.K_RS`); None for a supply SKF gives none (dry film).
+
+    >>> import thermobear as tb
+    >>> s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
+    >>> replenishment_constant(s), replenishment_constant(s.with_(K_rs=4.5e-8))
+    (3e-08, 4.5e-08)
+    """
+    return scene.K_rs if scene.K_rs is not None else K_RS.get(scene.supply)
+
+
 def _film_choices(scene: Scene, out: dict, K_z: dict | None = None) -> None:
     """``traction``, ``inlet_heating`` and ``starvation``, each with its reason (see the module docstring);
     evaluated at the scene's temperature (prescribed, else the oil inlet or the ambient).  ``K_z``: bearing
@@ -322,10 +332,11 @@ def _film_choices(scene: Scene, out: dict, K_z: dict | None = None) -> None:
         K_z = {} if K_z is None else K_z
         if b.kind not in K_z:
             K_z[b.kind] = skf_K_z(b.kind)
-        phi = float(phi_rs(scene.n_rpm, oil.nu(float(T)), b.bore * 1e3, b.outer_diameter * 1e3, K_z[b.kind],
-                           K_RS[scene.supply]))
+        K = replenishment_constant(scene)
+        phi = float(phi_rs(scene.n_rpm, oil.nu(float(T)), b.bore * 1e3, b.outer_diameter * 1e3, K_z[b.kind], K))
+        given = "the scene's" if scene.K_rs is not None else "SKF's"
         out["starvation"] = (True, f"{scene.supply}: SKF Φ_rs = {phi:.3f} at {T:g} °C on the rolling force "
-                                   "(kinematic replenishment; → 1 when the track refills)")
+                                   f"(kinematic replenishment, K_rs {K:.3g} {given}; → 1 when the track refills)")
 
 
 def _choose(scene: Scene, hs: tuple, lm: tuple | None, film: dict | None = None, K_z: dict | None = None) -> dict:
@@ -526,69 +537,6 @@ def added_losses(scene: Scene) -> dict:
         out["cage"] = ("petroff_land+pocket", f"{scene.cage}-centred cage: Petroff land friction (land Ø "
                        f"{land['d_land'] * 1e3:.3g} mm, width {land['b_land'] * 1e3:.3g} mm, clearance "
                        f"{land['c_land'] * 1e3:.3g} mm; estimated: {', '.join(est)}) + ball–pocket sliding")
-    return out
-
-
-#: scene inputs of the local model's mixed friction (seed 000 eq 18): Scene attribute → (the scene file's field,
-#: scale from the attribute's unit to the field's)
-FRICTION_INPUTS = {"mu_full_film": ("lubricant.mu_full_film", 1.0), "mu_boundary": ("lubricant.mu_boundary", 1.0),
-                   "Rq_ball": ("lubricant.Rq_ball_um", 1e6), "Rq_ring": ("lubricant.Rq_ring_um", 1e6)}
-#: the SKF model's calibrated constants (``[models]``), read by ``losses = "skf"`` only
-SKF_CONSTANTS = ("skf_R1", "skf_S1", "skf_mu_EHL")
-_DEFAULTS = {f.name: f.default for f in dataclasses.fields(Scene) if f.name in FRICTION_INPUTS}
-
-
-def unread_inputs(scene: Scene) -> dict:
-    """The scene inputs its chosen models do not read, whatever their value: field → why (one phrase).
-
-    * ``lubricant.mu_full_film`` (μ_e of seed 000 eq 18): read by the constant full-film traction
-      (``models.traction = "constant"``, the default of a dry film) and by a ring-guided cage's ball–pocket
-      friction; not by the Eyring traction (the default wherever an oil film carries the contacts: its
-      full-film μ is the oil's own traction law) nor by the SKF model.
-    * ``lubricant.mu_boundary`` (μ_a): read by the local model's mixed friction where the surfaces are
-      rough; not on smooth surfaces (``Rq_ball_um = Rq_ring_um = 0``: Λ = ∞, full film) nor by the SKF
-      model.  (Read, it still acts only where Λ < 2.03: beyond, the film carries the whole load.)
-    * ``lubricant.Rq_ball_um``, ``Rq_ring_um``: not read by the SKF model.
-    * ``models.skf_R1``, ``skf_S1``, ``skf_mu_EHL``: read by the SKF model only (``models.losses = "skf"``).
-
-    >>> import thermobear as tb
-    >>> s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
-    >>> sorted(unread_inputs(s)), "lubricant.mu_full_film" in unread_inputs(s.with_(models={"traction": "constant"}))
-    (['lubricant.mu_full_film', 'models.skf_R1', 'models.skf_S1', 'models.skf_mu_EHL'], False)
-    """
-    if scene.models.get("losses") == "skf":
-        why = ('models.losses = "skf": the SKF 2004 model has its own friction coefficients (μ_bl 0.15, μ_EHL: '
-               'models.skf_mu_EHL) and no roughness')
-        return {field: why for field, _ in FRICTION_INPUTS.values()}
-    why = 'read by the SKF model only (models.losses = "skf"); this scene runs the local model'
-    out = {f"models.{k}": why for k in SKF_CONSTANTS}
-    traction, reason = traction_choice(scene)
-    if traction != "constant" and not added_losses(scene)["cage"][0]:
-        out["lubricant.mu_full_film"] = (f'models.traction = "{traction}" ({reason.partition(":")[0]}) takes the '
-                                         "full-film friction from the oil's traction law; mu_full_film is read with "
-                                         "models.traction = \"constant\" or by a ring-guided cage's pocket friction")
-    if not scene.Rq_ball and not scene.Rq_ring:
-        out["lubricant.mu_boundary"] = ("smooth surfaces (Rq_ball_um = Rq_ring_um = 0): Λ = ∞, the full-film "
-                                        "friction alone")
-    return out
-
-
-def unread_settings(scene: Scene) -> list:
-    """``[(field, value, why)]``: the inputs of :func:`unread_inputs` the scene sets — a friction input away from
-    its default, an SKF constant given at all — each in its file's unit (no model choice for a scene that sets
-    none of them)."""
-    if not (any(not math.isclose(getattr(scene, a), d, rel_tol=1e-9) for a, d in _DEFAULTS.items())
-            or any(k in scene.models for k in SKF_CONSTANTS)):
-        return []
-    unread = unread_inputs(scene)
-    out = []
-    for attr, (fld, scale) in FRICTION_INPUTS.items():
-        v = getattr(scene, attr)
-        if fld in unread and not math.isclose(v, _DEFAULTS[attr], rel_tol=1e-9):
-            out.append((fld, v * scale, unread[fld]))
-    for k in SKF_CONSTANTS:
-        if f"models.{k}" in unread and scene.models.get(k) is not None:
-            out.append((f"models.{k}", scene.models[k], unread[f"models.{k}"]))
     return out
 
 

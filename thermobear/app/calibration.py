@@ -26,7 +26,8 @@ from thermobear.app.rig import Comparison, RigLog, compare, simulate_log, specia
 from thermobear.errors import InputError, NoConvergence, OutsideValidity
 from thermobear.lazy import lazy_module
 from thermobear.losses.skf import skf_constants
-from thermobear.models import unread_inputs
+from thermobear.model_inputs import unread_inputs
+from thermobear.models import replenishment_constant
 from thermobear.scene import Scene
 from thermobear.scene.network import network_spec
 from thermobear.thermal.builders import Machine, build_network, estimates
@@ -35,7 +36,7 @@ optimize = lazy_module("scipy.optimize")    # least_squares: loaded by its first
 
 __all__ = ["calibrate", "Calibration", "parameter_names"]
 
-_SCENE_SCALARS = ("T_ambient_C", "T_oil_in_C", "oil_flow_L_h", "mu_boundary", "mu_full_film")
+_SCENE_SCALARS = ("T_ambient_C", "T_oil_in_C", "oil_flow_L_h", "mu_boundary", "mu_full_film", "K_rs")
 _SKF = ("skf_R1", "skf_S1", "skf_mu_EHL")
 _BUILDER = "builder."
 
@@ -70,9 +71,10 @@ def parameter_names(scene: Scene) -> list:
     (``builder.R_mount_m2K_W``, ``builder.emissivity``, ``builder.k_air_still_W_mK``, …: the machine's own
     unknowns, ``materials/network_builders.toml``, the network built again with the value); then network
     parameters (``[thermal.parameters]`` keys and every numeric ``<element or node>.<parameter>`` of the
-    network), the scene scalars T_ambient_C, T_oil_in_C, oil_flow_L_h, and mu_boundary, mu_full_film where the
-    scene's models read them (:func:`~thermobear.models.unread_inputs`: not mu_full_film under the Eyring traction,
-    neither on the SKF model), and — for scenes on the SKF global model (``[models] losses = "skf"``) — skf_R1,
+    network), the scene scalars T_ambient_C, T_oil_in_C, oil_flow_L_h, and mu_boundary, mu_full_film, K_rs (the
+    starvation factor's replenishment constant, started at SKF's) where the scene's models read them
+    (:func:`~thermobear.model_inputs.unread_inputs`: not mu_full_film under the Eyring traction, neither on the SKF model;
+    not K_rs without starvation), and — for scenes on the SKF global model (``[models] losses = "skf"``) — skf_R1,
     skf_S1, skf_mu_EHL.
     """
     names = _builder_keys(scene) + list(scene.network_parameters)
@@ -112,6 +114,8 @@ def _parse_param(scene: Scene, spec: str):
             x0 = 0.05 if name == "skf_mu_EHL" else _skf_table(scene)[name.split("_")[1]]
     elif name == "oil_flow_L_h":
         x0 = scene.oil_flow * 3.6e6
+    elif name == "K_rs":
+        x0 = replenishment_constant(scene)
     else:
         x0 = getattr(scene, name)
     if x0 is None or isinstance(x0, bool) or not isinstance(x0, (int, float)) or not math.isfinite(x0):
@@ -143,6 +147,8 @@ def _apply(scene: Scene, values: dict, cells: dict | None = None) -> Scene:
             raise InputError(k, v, "friction coefficient must lie in [0, 1]")
     if rep:
         sc = dataclasses.replace(sc, **rep)
+    if "K_rs" in values:
+        sc = sc.with_(K_rs=values["K_rs"])                   # checked as the scene file's key (>= 0)
     return sc
 
 

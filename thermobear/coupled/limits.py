@@ -14,7 +14,7 @@ from thermobear.errors import ContactLimit, ExtrapolationWarning, InputError, Ou
 from thermobear.arrays import take
 from thermobear.loads.api import check_contacts, groove_angle, loads_text
 from thermobear.losses.seals import CONTACT_SEALS, seal_material
-from thermobear.models import unread_settings
+from thermobear.model_inputs import unread_settings
 from thermobear.rating.life import stated_ratings
 from thermobear.validity import LIMITS, P_MAX_REFUSE_PA, T_LUBRICANT_REFUSE_C, check, collect
 
@@ -239,9 +239,9 @@ def film_preload_warnings(scene, alternatives) -> list:
 
 def _unread_warnings(scene) -> list:
     """An :class:`~thermobear.errors.UnreadInput` warning for each input the scene sets that its models do not
-    read (:func:`thermobear.models.unread_settings`): the value would change nothing, never silently."""
+    read (:func:`thermobear.model_inputs.unread_settings`): the value would change nothing, never silently."""
     return [UnreadInput(f"{fld} = {v:g} is not read by the chosen models: {why} — it changes nothing here",
-                        quantity=fld, value=v, limit=why, source="thermobear.models.unread_inputs",
+                        quantity=fld, value=v, limit=why, source="thermobear.model_inputs.unread_inputs",
                         field=fld) for fld, v, why in unread_settings(scene)]
 
 

@@ -32,7 +32,7 @@ from thermobear.losses.drag import cavity_oil_fraction
 from thermobear.losses.seals import seal_friction
 from thermobear.losses.skf import SKF_BREAKDOWN_KEYS, skf_friction
 from thermobear.models import (added_losses, cage_land, film_options, oil_level, plan, refuse_unloaded_thrust,
-                               seal_diameter_mm)
+                               replenishment_constant, seal_diameter_mm)
 from thermobear.coupled.limits import overloads
 from thermobear.coupled.pipeline import Family, scene_contacts
 from thermobear.scene import Scene
@@ -65,6 +65,12 @@ def _through_flow(fam: Family) -> np.ndarray:
 def _one(values: np.ndarray):
     """One float when every point shares the value, else the (B,) array."""
     return float(values[0]) if np.all(values == values[0]) else values
+
+
+def _K_rs(fam: Family):
+    """The family's replenishment constants [-] (:func:`~thermobear.models.replenishment_constant`: one float, or
+    (B,) where the points differ; NaN for a supply without one, whose models do not read it)."""
+    return _one(np.array([np.nan if k is None else k for k in map(replenishment_constant, fam.scenes)], float))
 
 
 def _chosen(models: dict, key: str) -> bool:
@@ -101,6 +107,7 @@ class LocalSources:
         self.fam, self.contacts, self.lubricant = fam, contacts, fam.lubricant
         sc = fam.scene
         per = {k: _one(fam.values(k)) for k in ("Rq_ball", "Rq_ring", "mu_boundary", "mu_full_film")}
+        per["K_rs"] = _K_rs(fam)
         per = {k: v if np.ndim(v) == 0 else v[:, None, None] for k, v in per.items()}   # per point: (B, 1, 1)
         self.kw = dict(supply=sc.supply, oil_flow_m3_s=_one(_through_flow(fam)), **per,
                        rolling_model=fam.models["rolling"][0], drag=bool(fam.models["drag"][0]),
@@ -173,7 +180,7 @@ class SKFSources:
         return skf_losses(self.fam.scene, 0.5 * (x[..., 0] + x[..., 1]), self.fam.models,
                           n_rpm=self.fam.values("n_rpm"), Fa=self.fam.values("Fa"),
                           Fr=np.hypot(self.fam.values("Fr"), self.fam.values("Fz")),
-                          lubricant=self.lubricant, **self.added)
+                          lubricant=self.lubricant, K_rs=_K_rs(self.fam), **self.added)
 
     def parts(self, x_C) -> np.ndarray:
         x = np.asarray(x_C, float)
@@ -191,11 +198,12 @@ class SKFSources:
 
 
 def skf_losses(scene: Scene, T_C, models: dict, *, n_rpm=None, Fa=None, Fr=None, H_mm=None, M_seal_Nmm=None,
-               lubricant=None) -> SKFLosses:
+               lubricant=None, K_rs=None) -> SKFLosses:
     """SKF 2004 global model for a scene at bearing temperature ``T_C`` [°C] (viscosity of the (base)
     oil there); ``n_rpm``, ``Fa``, ``Fr`` may override the scene's with arrays, ``H_mm`` [mm] and
     ``M_seal_Nmm`` [N mm] the oil level and seal moment (default: the scene's, as the models chose),
-    ``lubricant`` its lubricant (values per point: :attr:`~thermobear.coupled.pipeline.Family.lubricant`).
+    ``lubricant`` its lubricant (values per point: :attr:`~thermobear.coupled.pipeline.Family.lubricant`), ``K_rs``
+    the replenishment constant [-] (default the scene's, :func:`~thermobear.models.replenishment_constant`).
     Calibrated constants from ``[models] skf_R1, skf_S1, skf_mu_EHL``.  Breakdown: rolling, sliding,
     drag (0: no oil–air term in the model), churning (its oil-bath drag, SKF 2018 form with V_M at
     H/dm), seal.  Heat split for the network: ½ of rolling + sliding to the balls, ¼ to each ring;
@@ -213,7 +221,8 @@ def skf_losses(scene: Scene, T_C, models: dict, *, n_rpm=None, Fa=None, Fr=None,
     oil = scene.lubricant if lubricant is None else lubricant
     r = skf_friction(scene.bearing, oil.nu(T_C), n, Fa, Fr, lubrication=lub, R1=m.get("skf_R1"),
                      S1=m.get("skf_S1"), mu_EHL=m.get("skf_mu_EHL"), base_oil=base, H_mm=H_mm,
-                     M_seal_Nmm=0.0 if M_seal_Nmm is None else M_seal_Nmm)
+                     M_seal_Nmm=0.0 if M_seal_Nmm is None else M_seal_Nmm,
+                     K_rs=replenishment_constant(scene) if K_rs is None else K_rs)
     w = np.asarray(n, float) * np.pi / 30.0
     bd = {"rolling": r.M_rr * w, "sliding": r.M_sl * w, "drag": 0.0 * r.M_drag * w, "churning": r.M_drag * w,
           "seal": r.M_seal * w}
@@ -440,7 +449,7 @@ def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oi
     r = evaluate_losses(cs, scene.lubricant, T_C, T_inner_C=T_inner_C, T_outer_C=T_outer_C, T_oil_C=T_oil_C,
                         supply=scene.supply, oil_flow_m3_s=scene.oil_flow * scene.jet_penetration, Rq_ball=scene.Rq_ball,
                         Rq_ring=scene.Rq_ring, mu_boundary=scene.mu_boundary, mu_full_film=scene.mu_full_film,
-                        rolling_model=models["rolling"][0], drag=bool(models["drag"][0]), **film_options(models),
+                        K_rs=replenishment_constant(scene), rolling_model=models["rolling"][0], drag=bool(models["drag"][0]), **film_options(models),
                         **_added_local([scene], models))
     used = dict(r.models_used)
     used.update(models)

@@ -107,10 +107,19 @@ def _models_used(fam: Family, r, template, cp: Coupling) -> dict:
     return used
 
 
-def _point_models_used(used: dict, nw: _Newton, b: int) -> dict:
+def _point_models_used(used: dict, nw: _Newton, b: int, r=None) -> dict:
+    """A point's models used: its fixed point's iterations, and the film factors the model choice stated at the
+    inlet temperature also at the solution (the contacts of ``r``'s row ``b``)."""
     out = dict(used)
     out["thermal"] = (used["thermal"][0], f"fixed point on {nw.x.shape[1]} coupled temperatures: {nw.method[b]}, "
                                           f"{int(nw.its[b])} iterations, loop gain {nw.gain[b]:.2f}")
+    contacts = getattr(r, "contacts", None)
+    for key, arr, sym in (("starvation", "phi_rs", "Φ_rs"), ("inlet_heating", "phi_T", "φ_T")):
+        if not contacts or not out.get(key, (False,))[0] or arr not in contacts["inner"]:
+            continue
+        v = np.concatenate([np.asarray(contacts[k][arr], float).reshape(-1, contacts[k][arr].shape[-1])[b]
+                            for k in ("inner", "outer")])
+        out[key] = (out[key][0], f"{out[key][1]}; at the solution {sym} {v.min():.3f}–{v.max():.3f} over the contacts")
     return out
 
 
@@ -194,7 +203,8 @@ class Solved:
         return SteadyState(
             T_C=T_C, T_ball_C=T_C[cp.roles["ball"]], P_W=self.P[b], iterations=int(nw.its[b]),
             residual_K=max(float(nw.step[b]), float(self.gap[b])), energy_balance_W=self.bal[b],
-            heat_flows_W=row(self.flows), models_used=_point_models_used(self.used[b], nw, b), history=nw.history[b],
+            heat_flows_W=row(self.flows), models_used=_point_models_used(self.used[b], nw, b, self.r),
+            history=nw.history[b],
             roles=dict(cp.roles), warnings=self.warned[b], torque_Nm=self.M[b], breakdown_W=row(self.bd),
             T_contacts_C=self.T_cont[b], batch_losses=self.r, row=b, heat_sources_W=_part_sources(cp, self.parts[b],
                                                                                                   self.free_nodes),

@@ -20,7 +20,7 @@ address                   where the range lives                        how it va
 
 Ranges the thermal solution does not read are not sampled: a rig's inertia (``rig.J_kg_m2``, the
 spin-down's), a bearing's load ratings (``C0_kN``, ``C_kN``: life and static safety), a friction input the
-scene's models do not read (:func:`thermobear.models.unread_inputs`: ``mu_full_film`` under the Eyring
+scene's models do not read (:func:`thermobear.model_inputs.unread_inputs`: ``mu_full_film`` under the Eyring
 traction; the friction inputs and roughnesses on the SKF model).  The design answers of
 a steady state vary with each sample's temperatures (and its bearing geometry, where C comes from it): their
 bands (``ratings.*``: operating temperature, κ, a_ISO, L10m, operating clearance) come from
@@ -76,7 +76,8 @@ from thermobear.coupled.steady import SteadyState, steady_states
 from thermobear.coupled.transient import PointModel, heat_sources
 from thermobear.errors import InputError, OutsideValidity, SolverError
 from thermobear.lazy import lazy_module
-from thermobear.models import FRICTION_INPUTS, plan_many, unread_inputs
+from thermobear.model_inputs import FRICTION_INPUTS, unread_inputs
+from thermobear.models import plan_many
 from thermobear.scene import Scene
 from thermobear.scene.scene import SECTIONS
 from thermobear.schema import Uncertainty, check_value
@@ -100,10 +101,11 @@ _SCENE_KEYS = {
     "lubricant.Rq_ball_um": ("Rq_ball_um", 1e6, "Rq_ball"), "lubricant.Rq_ring_um": ("Rq_ring_um", 1e6, "Rq_ring"),
     "lubricant.mu_boundary": ("mu_boundary", 1.0, "mu_boundary"),
     "lubricant.mu_full_film": ("mu_full_film", 1.0, "mu_full_film"),
+    "lubricant.K_rs": ("K_rs", 1.0, "K_rs"),
     "lubricant.jet_penetration": ("jet_penetration", 1.0, "jet_penetration"),
     "thermal.T_ambient_C": ("T_ambient_C", 1.0, "T_ambient_C"),
 }
-_FRICTION = [f for f, _ in FRICTION_INPUTS.values()]        # sampled only where the models read them
+_FRICTION = [f for f, _ in FRICTION_INPUTS.values()] + ["lubricant.K_rs"]   # sampled only where the models read them
 _RATINGS = ("C0_kN", "C_kN")
 #: bearing table key → (BallBearing attribute, scale to the key's unit)
 _BEARING_KEYS = {"D_mm": ("D", 1e3), "dm_mm": ("dm", 1e3), "Pd_mm": ("Pd", 1e3), "Z": ("Z", 1.0), "fi": ("fi", 1.0),

@@ -94,7 +94,9 @@ class LossResult:
     breakdown_W : dict                  sliding, rolling, pivoting, hysteresis, drag, churning, seal, cage [W]
     contacts : ContactArrays            per contact arrays (a mapping), ``"inner"``/``"outer"`` → dict of
                                         Q [N], alpha [rad], a, b [m], u [m/s], T_C, eta [Pa s],
-                                        h_min, h_c [m], Lambda, regime (str), mu, F_R [N],
+                                        h_min, h_c [m], Lambda, regime (str), mu, F_R [N] (with Φ_rs),
+                                        phi_rs, phi_T [-] (the starvation factor Φ_rs and the thermal film
+                                        reduction φ_T: 1 where the models leave them out),
                                         P_rolling, P_sliding, P_pivoting, P_hysteresis [W], spin [rad/s],
                                         M, L (Moes parameters) [-]
     heat_W : dict                       heat sources: ``inner_ring``, ``outer_ring``, ``balls``, ``oil``
@@ -354,7 +356,7 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
                     Rq_ring: float = 0.1e-6, mu_boundary: float = 0.11, mu_full_film: float = 0.05,
                     rolling_model: str = "auto", drag: bool = True, traction: str = "constant",
                     inlet_heating: bool = False, starvation: bool = False, oil_level_m=None, T_bath_C=None,
-                    seal_torque_Nm=0.0, cage: CageLand | None = None, T_cage_C=None) -> LossResult:
+                    seal_torque_Nm=0.0, cage: CageLand | None = None, T_cage_C=None, K_rs=None) -> LossResult:
     r"""Temperature-dependent part of the local model on prepared contacts [W].
 
     Parameters
@@ -378,8 +380,9 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
                                   the oil's ``eyring_stress`` and ``limiting_shear``)
     inlet_heating : bool          thermal reduction of film and rolling force by inlet shear heating
                                   (Gupta et al. 1992, :mod:`thermobear.lubrication.thermal_film`)
-    starvation : bool             kinematic replenishment: the rolling force times SKF's Φ_rs of the supply
-                                  (:func:`~thermobear.losses.skf.phi_rs`; needs the bearing's bore and OD)
+    starvation, K_rs : bool, array_like   kinematic replenishment: the rolling force times SKF's Φ_rs
+                                  (:func:`~thermobear.losses.skf.phi_rs`; needs the bearing's bore and OD) of constant
+                                  K_rs [-] (one, or ``cs.batch + (1, 1)``; None: SKF's of the supply)
     oil_level_m : array_like, optional  oil-bath level above the lowest point of the outer-ring raceway
                                   [m] (``cs.batch``): churning of the balls through the bath; None: none
     T_bath_C : array_like, optional  bath temperature [°C] (default T_oil_C, else T_C)
@@ -432,12 +435,11 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     oil_c = oil.aligned(2) if pp else oil
     eta_all = property_at(oil_c.eta, Tall, pp)      # contacts and (drag) the oil–air mixture in one call
     eta2, alpha2 = eta_all[..., :2, :], property_at(oil_c.alpha_p_at, T2, pp)
-    eta_in = inlet_viscosity(cs, oil_c, T2, eta2, pp) if inlet_heating else eta2
+    eta_in, phi_T = inlet_viscosity(cs, oil_c, T2, eta2, pp) if inlet_heating else (eta2, np.ones(eta2.shape))
     h_min, h_c = cs.ehl.film_thickness(eta_in, alpha2, kind=("min", "central"), check=False)  # η, α_p: the lubricant's
     reg = cs.ehl.regime(eta_in, alpha2, check=False)
-    F_R = cs.rolling.force(eta_in, _ROLLING_FORCE_MODEL.get(rolling_model, rolling_model), alpha2, reg, check=False)
-    if starvation:
-        F_R = F_R * replenishment(cs, oil_c, T2, supply, pp)
+    phi_rs = replenishment(cs, oil_c, T2, supply, pp, K_rs) if starvation else np.ones(h_min.shape)
+    F_R = cs.rolling.force(eta_in, _ROLLING_FORCE_MODEL.get(rolling_model, rolling_model), alpha2, reg, check=False) * phi_rs
     if np.any(Rq_ball) or np.any(Rq_ring):
         Lam = specific_film_thickness(h_min, Rq_ball, Rq_ring)
     else:                                           # smooth surfaces: Λ = ∞, full-film friction
@@ -456,18 +458,17 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     np.multiply(mu, cs.P_sliding_mu, out=P[1])
     np.multiply(mu_piv, cs.P_pivoting_mu, out=P[2])
     P[3] = cs.P_hysteresis
-    if dragged:
-        P_drag = drag_power(cs, oil, Tall[..., 2, 0], eta_all[..., 2, 0], supply, oil_flow_m3_s)
-    else:
-        P_drag = np.zeros(lead + cs.batch)
+    P_drag = (drag_power(cs, oil, Tall[..., 2, 0], eta_all[..., 2, 0], supply, oil_flow_m3_s) if dragged
+              else np.zeros(lead + cs.batch))
     T_aux = T_C if T_oil_C is None else T_oil_C
     added = added_powers(cs, oil, lead, T_aux if T_bath_C is None else T_bath_C, T_aux if T_cage_C is None else T_cage_C,
                          oil_level_m, seal_torque_Nm, cage, pp)
-    per_contact = dict(T_C=T2, eta=eta2, h_min=h_min, h_c=h_c, Lambda=Lam, regime=reg.code, mu=mu,
-                       mu_pivoting=np.broadcast_to(mu_piv, h_min.shape), F_R=F_R,
+    per_contact = dict(T_C=T2, eta=eta2, h_min=h_min, h_c=h_c, Lambda=Lam, regime=reg.code, mu=mu, F_R=F_R,
+                       **{k: np.broadcast_to(v, h_min.shape) for k, v in (("mu_pivoting", mu_piv), ("phi_rs", phi_rs),
+                                                                         ("phi_T", phi_T))},
                        P_rolling=P[0], P_sliding=P[1], P_pivoting=P[2], P_hysteresis=P[3], M=reg.M, L=reg.L)
     models = _reasons(cs.models_used, reg, oil, rolling_model, traction, mu_full_film, mu_boundary, inlet_heating,
-                      starvation, supply, drag, oil_level_m, cage)
+                      starvation, supply, drag, oil_level_m, cage, K_rs)
     return _result(cs, P, P_drag, per_contact, models, added)
 
 
@@ -482,7 +483,7 @@ def _check_choices(rolling_model, supply, traction):
 
 
 def _reasons(used, reg, oil, rolling_model, traction, mu_full_film, mu_boundary, inlet_heating, starvation, supply,
-             drag, oil_level_m, cage) -> dict:
+             drag, oil_level_m, cage, K_rs=None) -> dict:
     """The models an :func:`evaluate_losses` answer used, with their reasons (``used``: the contact set's)."""
     models = dict(used)
     seen = ", ".join(REGIMES[i] for i in np.flatnonzero(np.bincount(reg.index.ravel(), minlength=4)))
@@ -495,7 +496,8 @@ def _reasons(used, reg, oil, rolling_model, traction, mu_full_film, mu_boundary,
                      f"{_shown(oil.limiting_shear)}; Johnson & Tevaarwerk 1977, Bair & Winer 1979), "
                      f"μ_a {_shown(mu_boundary)}"),
         "inlet_heating": ("Gupta et al. 1992 φ_T on the inlet viscosity" if inlet_heating else "isothermal inlet", ""),
-        "starvation": (f"SKF Φ_rs (K_rs {K_RS.get(supply, 0):g}) on the rolling force" if starvation
+        "starvation": (f"SKF Φ_rs (K_rs {_shown(K_RS.get(supply, 0) if K_rs is None else K_rs)}) on the rolling force"
+                       if starvation
                        else "fully flooded", ""),
         "drag": ("Pouly 2010 sphere drag" if drag and supply not in ("oil_bath", "dry_film") else "none",
                  {"oil_jet": "Parker oil fraction", "oil_air": "Parker oil fraction of the oil–air feed", "grease": "air only"}.get(
@@ -590,7 +592,7 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
                    rolling_model: str = "auto", hertz_method: str = "exact", control: str | None = None,
                    centrifugal: bool = True, drag: bool = True, load: LoadDistribution | None = None,
                    traction: str = "constant", inlet_heating: bool = False, starvation: bool = False,
-                   oil_level_m=None, seal_torque_Nm=0.0, cage: CageLand | None = None) -> LossResult:
+                   oil_level_m=None, seal_torque_Nm=0.0, cage: CageLand | None = None, K_rs=None) -> LossResult:
     r"""Power loss of a ball bearing by the local contact model.
 
     Parameters
@@ -624,6 +626,8 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
     traction, inlet_heating, starvation
                                     full-film traction law, inlet shear heating, kinematic replenishment
                                     (see :func:`evaluate_losses`)
+    K_rs : array_like, optional     replenishment constant of the starvation factor [-] (one, or one per
+                                    operating point); None: SKF's of the supply
     oil_level_m, seal_torque_Nm, cage  churning, seal and cage terms, as :func:`evaluate_losses`
 
     Returns
@@ -655,7 +659,7 @@ def bearing_losses(brg: BallBearing, oil, Fa=0.0, Fr=0.0, n_rpm=0.0, T_C=40.0, *
                          "must broadcast together (numpy rules)") from None
     batch, pp = _per_point(batch, dict(oil_flow_m3_s=oil_flow_m3_s, Rq_ball=Rq_ball, Rq_ring=Rq_ring,
                                        mu_boundary=mu_boundary, mu_full_film=mu_full_film,
-                                       seal_torque_Nm=seal_torque_Nm, oil_level_m=oil_level_m))
+                                       seal_torque_Nm=seal_torque_Nm, oil_level_m=oil_level_m, K_rs=K_rs))
     check_loads(brg, Fa, Fr, M, n_rpm)                    # before any solve: what no answer exists for
     check_limit("n_dm", np.asarray(n_rpm, float) * brg.dm * 1e3, "n_rpm")    # warns beyond the validated speed
     cs = prepare_contacts(brg, Fa, Fr, np.broadcast_to(np.asarray(n_rpm, float), batch), M=M, rotating=rotating,
@@ -691,5 +695,5 @@ def _per_point(batch: tuple, params: dict):
                    if k in _PER_CONTACT and np.ndim(v) else v for k, v in params.items()}
 
 
-_PER_CONTACT = ("Rq_ball", "Rq_ring", "mu_boundary", "mu_full_film")   # against the contacts (…, 2, Z)
+_PER_CONTACT = ("Rq_ball", "Rq_ring", "mu_boundary", "mu_full_film", "K_rs")   # against the contacts (…, 2, Z)
 _UNITS = {"oil_flow_m3_s": "m³/s", "Rq_ball": "m", "Rq_ring": "m", "seal_torque_Nm": "N m", "oil_level_m": "m"}

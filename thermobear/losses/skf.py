@@ -50,7 +50,9 @@ KINDS = ("deep_groove", "angular_contact", "thrust")
 SKF_BREAKDOWN_KEYS = ("rolling", "sliding", "drag", "churning", "seal")
 
 #: Replenishment/starvation constant K_rs of Φ_rs [-] by lubrication method
-#: (SKF 2004, General Catalogue 6000 EN; seed 002 eq A.5 gives 6e-8 for grease).
+#: (SKF 2004, General Catalogue 6000 EN; seed 002 eq A.5 gives 6e-8 for grease): SKF's defaults, which a
+#: scene may replace (``[lubricant] K_rs``, e.g. calibrated on a rig:
+#: :func:`thermobear.models.replenishment_constant`).
 K_RS = {"grease": 6e-8, "oil_air": 6e-8, "oil_jet": 3e-8, "oil_bath": 3e-8}
 
 #: SKF's full-film friction coefficient μ_EHL by base-oil family [-]
@@ -417,7 +419,7 @@ def _check_positive(name, x, allow_zero=False):
 
 def skf_moment(d_mm, D_mm, kind, nu_cSt, n_rpm, Fa, Fr, *, R1, S1, R2=None, R3=None, S2=None, S3=None,
                K_z, lubrication="grease", mu_bl=0.15, mu_EHL=0.05, C0=None, V_M=None, i_rw=1,
-               M_seal_Nmm=0.0, H_mm=None):
+               M_seal_Nmm=0.0, H_mm=None, K_rs=None):
     r"""SKF 2004 frictional moment of a ball bearing from plain numbers, vectorised.
 
     Parameters
@@ -431,6 +433,8 @@ def skf_moment(d_mm, D_mm, kind, nu_cSt, n_rpm, Fa, Fr, *, R1, S1, R2=None, R3=N
     K_z : float            bearing-type geometry constant [-]
     lubrication : str      "grease", "oil_air" (K_rs 6e-8), "oil_jet", "oil_bath" (K_rs 3e-8)
     mu_bl, mu_EHL : float  boundary and full-film friction coefficients [-]
+    K_rs : array_like      replenishment constant of Φ_rs [-] (:func:`phi_rs`); None: SKF's for
+                           ``lubrication`` (:data:`K_RS`)
     C0 : float             static load rating [N] (deep groove with Fa > 0)
     V_M : float            SKF drag factor (oil bath, read from SKF's diagram); alone: the 2004 drag
                            term V_M K_ball dm^5 n^2 (:func:`drag_moment_skf_Nmm`)
@@ -486,6 +490,8 @@ def skf_moment(d_mm, D_mm, kind, nu_cSt, n_rpm, Fa, Fr, *, R1, S1, R2=None, R3=N
             if val is None:
                 raise InputError(name, None, f"SKF constant required for a {kind} bearing")
     _check_positive("M_seal_Nmm", M_seal_Nmm, allow_zero=True)
+    K_rs = K_RS[lubrication] if K_rs is None else K_rs
+    _check_positive("K_rs", K_rs, allow_zero=True)
     for name, val in (("V_M", V_M), ("H_mm", H_mm)):
         if val is not None:
             _check_positive(name, val, allow_zero=True)
@@ -497,7 +503,7 @@ def skf_moment(d_mm, D_mm, kind, nu_cSt, n_rpm, Fa, Fr, *, R1, S1, R2=None, R3=N
     dm = 0.5 * (d_mm + D_mm)
     G_rr, G_sl = G_rr_G_sl(kind, dm, Fa_, Fr_, n, R1=R1, S1=S1, R2=R2, R3=R3, S2=S2, S3=S3, C0=C0)
     p_ish = phi_ish(n, dm, nu)
-    p_rs = phi_rs(n, nu, d_mm, D_mm, K_z, K_RS[lubrication])
+    p_rs = phi_rs(n, nu, d_mm, D_mm, K_z, K_rs)
     p_bl = phi_bl(n, nu, dm)
     m_sl = mu_sl(p_bl, mu_bl, mu_EHL)
     M_rr = p_ish * p_rs * G_rr * (nu * n) ** 0.6
@@ -552,7 +558,8 @@ def skf_K_z(kind: str) -> float:
 
 
 def skf_friction(brg, nu_cSt, n_rpm, Fa, Fr, lubrication="grease", R1=None, S1=None, mu_bl=0.15,
-                 mu_EHL=None, *, base_oil="mineral", V_M=None, M_seal_Nmm=0.0, constants=None, H_mm=None):
+                 mu_EHL=None, *, base_oil="mineral", V_M=None, M_seal_Nmm=0.0, constants=None, H_mm=None,
+                 K_rs=None):
     r"""SKF 2004 frictional moment and power of a ball bearing (public entry point).
 
     Parameters
@@ -572,6 +579,7 @@ def skf_friction(brg, nu_cSt, n_rpm, Fa, Fr, lubrication="grease", R1=None, S1=N
     M_seal_Nmm : array_like  seal moment [N mm]
     H_mm : array_like      oil level [mm] (oil bath: the 2018 drag term, V_M from SKF's diagram)
     constants : dict       full set of series constants (R1.., S1.., K_z) instead of the table
+    K_rs : array_like      replenishment constant [-]; None: SKF's for ``lubrication`` (:data:`K_RS`)
 
     Returns
     -------
@@ -596,7 +604,7 @@ def skf_friction(brg, nu_cSt, n_rpm, Fa, Fr, lubrication="grease", R1=None, S1=N
         mu_EHL = MU_EHL[base_oil]
     d_mm, D_mm, c = _brg_args(brg, R1, S1, constants)
     return skf_moment(d_mm, D_mm, brg.kind, nu_cSt, n_rpm, Fa, Fr, lubrication=lubrication, mu_bl=mu_bl,
-                      mu_EHL=mu_EHL, C0=brg.C0, V_M=V_M, M_seal_Nmm=M_seal_Nmm, H_mm=H_mm, **c)
+                      mu_EHL=mu_EHL, C0=brg.C0, V_M=V_M, M_seal_Nmm=M_seal_Nmm, H_mm=H_mm, K_rs=K_rs, **c)
 
 
 def mu_EHL_from_torque(M_exp_Nm, d_mm, D_mm, kind, nu_cSt, n_rpm, Fa, Fr, *, mu_bl, **constants):

@@ -93,23 +93,26 @@ def drag_power(cs, oil, T_oil, eta_oil, supply, oil_flow_m3_s):
 
 
 def inlet_viscosity(cs, oil, T2, eta2, per_point=False):
-    """Inlet viscosity lowered by inlet shear heating [Pa s]: Gupta et al. (1992) φ_T at the contacts'
+    """(Inlet viscosity lowered by inlet shear heating [Pa s], φ_T [-]): Gupta et al. (1992) φ_T at the contacts'
     thermal loading (pure rolling at the centre, u_s = 2u), read as the viscosity of the thermal film
     (:mod:`thermobear.lubrication.thermal_film`)."""
     L = thermal_loading_parameter(property_at(oil.beta_at, T2, per_point), eta2, 2.0 * cs.u,
                                   property_at(oil.k_th, T2, per_point), check=False)       # the lubricant's values
-    return thermal_inlet_viscosity(eta2, thermal_reduction_gupta(L, check=False), check=False)
+    phi = thermal_reduction_gupta(L, check=False)
+    return thermal_inlet_viscosity(eta2, phi, check=False), phi
 
 
-def replenishment(cs, oil, T2, supply, per_point=False):
+def replenishment(cs, oil, T2, supply, per_point=False, K_rs=None):
     """SKF's kinematic replenishment factor Φ_rs (:func:`~thermobear.losses.skf.phi_rs`) of the
-    bearing at each contact's viscosity [-] (bore, OD in mm; K_z of the bearing kind, K_rs of the supply)."""
+    bearing at each contact's viscosity [-] (bore, OD in mm; K_z of the bearing kind; ``K_rs`` [-] scalar or
+    per point (``cs.batch + (1, 1)``), None: SKF's of the supply)."""
     brg = cs.brg
     if cs.K_z is None or supply not in K_RS:
         raise InputError("models.starvation", True, "the replenishment factor needs the bearing's bore and outside "
                          "diameter, an SKF bearing kind and an oil or grease supply (" + ", ".join(K_RS) + ")")
     n = np.asarray(cs.n_rpm, float)[(...,) + (None,) * 2]
-    return phi_rs(n, property_at(oil.nu, T2, per_point), brg.bore * 1e3, brg.outer_diameter * 1e3, cs.K_z, K_RS[supply])
+    K = K_RS[supply] if K_rs is None else K_rs
+    return phi_rs(n, property_at(oil.nu, T2, per_point), brg.bore * 1e3, brg.outer_diameter * 1e3, cs.K_z, K)
 
 
 def added_powers(cs, oil, lead, T_bath_C, T_cage_C, oil_level_m, seal_torque_Nm, cage, per_point=False):

@@ -10,7 +10,7 @@ every boolean a TOML boolean, every choice one of its listed values.  Sections (
     [bearing]    catalog = "7210" and/or inline geometry (thermobear.contact.geometry keys); seals,
                  seal_sides, seal_diameter_mm; cage, cage_land_width_mm, cage_land_clearance_mm
     [lubricant]  name = "seed004-mineral" or inline properties (thermobear.lubrication.lubricant keys);
-                 supply, flow_L_h, T_in_C, Rq_ball_um, Rq_ring_um, mu_boundary, mu_full_film, oil_level_mm
+                 supply, flow_L_h, T_in_C, Rq_ball_um, Rq_ring_um, mu_boundary, mu_full_film, K_rs, oil_level_mm
     [operation]  n_rpm, Fa_N, Fr_N, M_Nm (tilt free), Fz_N, My_Nm (out of plane; tilt free), rotating,
                  T_C (prescribed temperature), contamination (ISO 281 e_C level)
     [thermal]    network, T_ambient_C, [thermal.parameters], fixed_C = { node = °C }
@@ -102,6 +102,8 @@ _SUPPLY_FIELDS = {
     "Rq_ring_um": Field.number("µm", 0.0, 10.0, doc="RMS roughness of the races"),
     "mu_boundary": Field.number("-", 0.0, 1.0, doc="boundary friction coefficient (seed 000 eq 18)"),
     "mu_full_film": Field.number("-", 0.0, 1.0, doc="full-film friction coefficient (seed 000 eq 18)"),
+    "K_rs": Field.number("-", 0.0, 1e-6, doc="replenishment constant of SKF's starvation factor phi_rs (default SKF "
+                         "2004: 3e-8 oil jet and oil bath, 6e-8 grease and oil-air; a rig's own: calibrate --param K_rs)"),
     "oil_level_mm": Field.number("mm", 0.0, 1e4, doc="oil-bath level above the lowest point of the outer-ring "
                                  "raceway (SKF's H), horizontal shaft; not given: no churning (a parametric housing "
                                  "with an oil bath needs it)"),
@@ -248,6 +250,8 @@ class Scene:
     T_ambient_C : float           ambient temperature [°C]
     Rq_ball, Rq_ring : float      RMS roughness [m]
     mu_boundary, mu_full_film : float   friction coefficients of seed 000 eq 18 [-]
+    K_rs : float | None           replenishment constant of SKF's Φ_rs [-] (None: SKF's of the supply,
+                                  :func:`thermobear.models.replenishment_constant`)
     network : str | Machine | None  thermal network name or path, or the machine a network is built
                                   from (``[shaft]``, ``[housing]``; ``str(network) == "parametric"``)
     network_parameters : dict     overrides of the network's parameters
@@ -298,6 +302,7 @@ class Scene:
     Rq_ring: float = 0.1e-6
     mu_boundary: float = 0.11
     mu_full_film: float = 0.05
+    K_rs: float | None = None
     network: str | Machine | None = None
     network_parameters: dict = field(default_factory=dict)
     T_fixed_C: dict = field(default_factory=dict)
@@ -337,7 +342,7 @@ class Scene:
 
         Accepted keys: n_rpm, Fa (or Fa_N), Fr (Fr_N), M (M_Nm; None holds the tilt), T_C (None: solve
         the network), T_oil_in_C, T_ambient_C, oil_flow_L_h, jet_penetration, oil_level_mm (None: not
-        given), Rq_ball_um, Rq_ring_um, mu_boundary, mu_full_film, rotating, supply, lubricant (name, table
+        given), Rq_ball_um, Rq_ring_um, mu_boundary, mu_full_film, K_rs (None: SKF's), rotating, supply, lubricant (name, table
         or Lubricant), bearing (catalogue name, table or BallBearing), seals, seal_sides, cage, network,
         network_parameters (merged), T_fixed_C (node → °C, replaces; ``{}`` clears), models (merged) and
         samples (address → number, replaces).
@@ -417,6 +422,7 @@ _WITH = {
     "Rq_ring_um": _with_number("lubricant", "Rq_ring_um", "Rq_ring", scale=1e-6),
     "mu_boundary": _with_number("lubricant", "mu_boundary", "mu_boundary"),
     "mu_full_film": _with_number("lubricant", "mu_full_film", "mu_full_film"),
+    "K_rs": _with_number("lubricant", "K_rs", "K_rs", nullable=True),
     "samples": lambda s, v, name: {"samples": check_table(v, {}, name, extra=lambda k: Field.number(doc="drawn value"))},
     "oil_level_mm": _with_number("lubricant", "oil_level_mm", "oil_level", scale=1e-3, nullable=True),
     "jet_penetration": _with_number("lubricant", "jet_penetration", "jet_penetration"),
@@ -648,7 +654,7 @@ def scene_from_dict(d: dict, path: str | None = None) -> Scene:
         T_oil_in_C=lsec.get("T_in_C"),
         T_ambient_C=th.get("T_ambient_C", 20.0), Rq_ball=lsec.get("Rq_ball_um", 0.05) * 1e-6,
         Rq_ring=lsec.get("Rq_ring_um", 0.1) * 1e-6, mu_boundary=lsec.get("mu_boundary", 0.11),
-        mu_full_film=lsec.get("mu_full_film", 0.05), network=_network_of(d, th),
+        mu_full_film=lsec.get("mu_full_film", 0.05), K_rs=lsec.get("K_rs"), network=_network_of(d, th),
         network_parameters=_parameters(th.get("parameters", {})), T_fixed_C=_fixed(th.get("fixed_C")),
         models=models, oil_level=mm(lsec.get("oil_level_mm")), seals=bx.get("seals", "none"),
         seal_sides=bx.get("seal_sides", _default_sides(bx.get("seals", "none"))),

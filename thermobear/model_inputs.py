@@ -1,0 +1,87 @@
+"""Which scene inputs the chosen models read: a value set for a model that does not read it is named, not
+silently ignored (the warning ``UnreadInput`` of :mod:`thermobear.coupled.limits`); uncertainty sampling and
+calibration leave such inputs out (:mod:`thermobear.coupled.uncertainty`, :mod:`thermobear.app.calibration`).
+The model choice itself: :mod:`thermobear.models`.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+
+from thermobear.losses.skf import K_RS
+from thermobear.models import added_losses, traction_choice
+from thermobear.scene import Scene
+
+__all__ = ["unread_inputs", "unread_settings", "FRICTION_INPUTS", "SKF_CONSTANTS"]
+
+#: scene inputs of the local model's mixed friction (seed 000 eq 18): Scene attribute → (the scene file's field,
+#: scale from the attribute's unit to the field's)
+FRICTION_INPUTS = {"mu_full_film": ("lubricant.mu_full_film", 1.0), "mu_boundary": ("lubricant.mu_boundary", 1.0),
+                   "Rq_ball": ("lubricant.Rq_ball_um", 1e6), "Rq_ring": ("lubricant.Rq_ring_um", 1e6)}
+#: the SKF model's calibrated constants (``[models]``), read by ``losses = "skf"`` only
+SKF_CONSTANTS = ("skf_R1", "skf_S1", "skf_mu_EHL")
+_DEFAULTS = {f.name: f.default for f in dataclasses.fields(Scene) if f.name in FRICTION_INPUTS}
+
+
+def unread_inputs(scene: Scene) -> dict:
+    """The scene inputs its chosen models do not read, whatever their value: field → why (one phrase).
+
+    * ``lubricant.mu_full_film`` (μ_e of seed 000 eq 18): read by the constant full-film traction
+      (``models.traction = "constant"``, the default of a dry film) and by a ring-guided cage's ball–pocket
+      friction; not by the Eyring traction (the default wherever an oil film carries the contacts: its
+      full-film μ is the oil's own traction law) nor by the SKF model.
+    * ``lubricant.mu_boundary`` (μ_a): read by the local model's mixed friction where the surfaces are
+      rough; not on smooth surfaces (``Rq_ball_um = Rq_ring_um = 0``: Λ = ∞, full film) nor by the SKF
+      model.  (Read, it still acts only where Λ < 2.03: beyond, the film carries the whole load.)
+    * ``lubricant.Rq_ball_um``, ``Rq_ring_um``: not read by the SKF model.
+    * ``models.skf_R1``, ``skf_S1``, ``skf_mu_EHL``: read by the SKF model only (``models.losses = "skf"``).
+    * ``lubricant.K_rs``: read by the starvation factor Φ_rs (:func:`replenishment_constant`) of both loss models;
+      not with ``models.starvation = false``, a dry film, or a bearing without bore and outside diameter.
+
+    >>> import thermobear as tb
+    >>> s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
+    >>> sorted(unread_inputs(s)), "lubricant.mu_full_film" in unread_inputs(s.with_(models={"traction": "constant"}))
+    (['lubricant.mu_full_film', 'models.skf_R1', 'models.skf_S1', 'models.skf_mu_EHL'], False)
+    """
+    if scene.models.get("losses") == "skf":
+        why = ('models.losses = "skf": the SKF 2004 model has its own friction coefficients (μ_bl 0.15, μ_EHL: '
+               'models.skf_mu_EHL) and no roughness')
+        return {field: why for field, _ in FRICTION_INPUTS.values()}
+    why = 'read by the SKF model only (models.losses = "skf"); this scene runs the local model'
+    out = {f"models.{k}": why for k in SKF_CONSTANTS}
+    traction, reason = traction_choice(scene)
+    if traction != "constant" and not added_losses(scene)["cage"][0]:
+        out["lubricant.mu_full_film"] = (f'models.traction = "{traction}" ({reason.partition(":")[0]}) takes the '
+                                         "full-film friction from the oil's traction law; mu_full_film is read with "
+                                         "models.traction = \"constant\" or by a ring-guided cage's pocket friction")
+    if not scene.Rq_ball and not scene.Rq_ring:
+        out["lubricant.mu_boundary"] = ("smooth surfaces (Rq_ball_um = Rq_ring_um = 0): Λ = ∞, the full-film "
+                                        "friction alone")
+    b = scene.bearing
+    if not scene.models.get("starvation", True):
+        out["lubricant.K_rs"] = "models.starvation = false: no replenishment factor on the rolling force"
+    elif scene.supply not in K_RS or b.bore is None or b.outer_diameter is None:
+        out["lubricant.K_rs"] = (f"no replenishment factor (supply {scene.supply!r}, or the bearing's bore and outside "
+                                 "diameter unknown)")
+    return out
+
+
+def unread_settings(scene: Scene) -> list:
+    """``[(field, value, why)]``: the inputs of :func:`unread_inputs` the scene sets — a friction input away from
+    its default, an SKF constant given at all — each in its file's unit (no model choice for a scene that sets
+    none of them)."""
+    if not (any(not math.isclose(getattr(scene, a), d, rel_tol=1e-9) for a, d in _DEFAULTS.items())
+            or any(k in scene.models for k in SKF_CONSTANTS) or scene.K_rs is not None):
+        return []
+    unread = unread_inputs(scene)
+    out = []
+    for attr, (fld, scale) in FRICTION_INPUTS.items():
+        v = getattr(scene, attr)
+        if fld in unread and not math.isclose(v, _DEFAULTS[attr], rel_tol=1e-9):
+            out.append((fld, v * scale, unread[fld]))
+    for k in SKF_CONSTANTS:
+        if f"models.{k}" in unread and scene.models.get(k) is not None:
+            out.append((f"models.{k}", scene.models[k], unread[f"models.{k}"]))
+    if "lubricant.K_rs" in unread and scene.K_rs is not None:
+        out.append(("lubricant.K_rs", scene.K_rs, unread["lubricant.K_rs"]))
+    return out
