@@ -384,3 +384,18 @@ def test_films_thicker_than_the_clearance_are_named_as_a_preload():
         rows = run_sweep(band, {"Fa": [900.0, 1000.0]})
     assert "blend" in r.models_used and [w.quantity for w in r.warnings].count("film preload") == 1
     assert all(any("film-induced preload" in w for w in row["warnings"]) for row in rows)
+
+
+def test_a_cold_heat_up_names_the_film_preload_it_passes():
+    """The same 6208 heated up from a −10 °C bath: the heat-up's film loads at its start carry Σ Q ≈ 74 kN, 32 × the
+    dry 2.3 kN — named once, at the film temperature of the largest preload (before, a heat-up checked its validity
+    without its loads and said nothing); a warm heat-up of light films is not."""
+    s = tb.load_scene(tb.example_path("oil_bath_6208.toml")).with_(n_rpm=1500.0, Fr=2000.0, Fa=0.0,
+                                                                   lubricant="iso-vg-220-mineral", T_ambient_C=-10.0)
+    warm = s.with_(T_ambient_C=40.0, lubricant="iso-vg-32-mineral", n_rpm=8000.0, Fr=50.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        cold, hot = tb.transient(s, 3600.0), tb.transient(warm, 600.0)
+    pre = [w for w in cold.warnings if w.quantity == "film preload"]
+    assert len(pre) == 1 and pre[0].value > 20 and "at -10 °C film temperature in the heat-up" in str(pre[0])
+    assert not [w for w in hot.warnings if w.quantity == "film preload"]

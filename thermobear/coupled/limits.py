@@ -19,7 +19,7 @@ from thermobear.rating.life import stated_ratings
 from thermobear.validity import LIMITS, P_MAX_REFUSE_PA, T_LUBRICANT_REFUSE_C, check, collect
 
 __all__ = ["p_max_Pa", "contact_pressure", "overloads", "point_warnings", "family_warnings", "grease_limit", "emit",
-           "runaway_at", "runaway_in", "film_preload_warnings", "FILM_PRELOAD_RATIO", "FILM_PRELOAD_C0"]
+           "runaway_at", "runaway_in", "film_preload_warnings", "film_load_preload_warnings", "FILM_PRELOAD_RATIO", "FILM_PRELOAD_C0"]
 
 
 def p_max_Pa(Q, a, b):
@@ -207,7 +207,22 @@ def _film_ratio(scenes, losses, dry) -> np.ndarray:
     return ratio
 
 
-def _film_preload_warning(scene, ratio: float, dry) -> list:
+def film_load_preload_warnings(scene, rows) -> list:
+    """The film-preload warning (:data:`FILM_PRELOAD_RATIO`) of film load distributions ``[(T_film [°C],
+    LoadDistribution, dry)]`` of one scene (a heat-up's loads at the film temperatures it passed): named once, at
+    the film temperature of the largest preload."""
+    worst = (np.nan, None, None)
+    for T, ld, dry in rows:
+        Q_dry = _dry_sum(dry)
+        r = float(np.sum(ld.Q_i)) / Q_dry if Q_dry > 0 else np.nan
+        if r > FILM_PRELOAD_RATIO and np.sum(ld.Q_i) - Q_dry > FILM_PRELOAD_C0 * stated_ratings(scene.bearing)[1] and \
+                not r <= worst[0]:
+            worst = (r, T, dry)
+    return _film_preload_warning(scene, worst[0], worst[2], f" at {worst[1]:.3g} °C film temperature in the heat-up"
+                                 if worst[1] is not None else "")
+
+
+def _film_preload_warning(scene, ratio: float, dry, where: str = "") -> list:
     """An OutsideValidity warning where the film load model's ball loads exceed the dry solution's by more than
     :data:`FILM_PRELOAD_RATIO` (and by more than :data:`FILM_PRELOAD_C0` C0): the fully flooded films on both races
     of each ball (Hamrock–Dowson thicknesses, which a starved inlet would thin) take up more than the clearance and
@@ -216,7 +231,7 @@ def _film_preload_warning(scene, ratio: float, dry) -> list:
         return []
     Q_dry = _dry_sum(dry)
     return [OutsideValidity(
-        f"film-induced preload: with the films in the contact laws the balls carry Σ Q = {ratio * Q_dry / 1e3:.3g} kN "
+        f"film-induced preload{where}: with the films in the contact laws the balls carry Σ Q = {ratio * Q_dry / 1e3:.3g} kN "
         f"on the inner race, {ratio:.3g} × the {Q_dry / 1e3:.3g} kN of the dry solution — the fully flooded films "
         "(Hamrock–Dowson, no starvation) are thicker than the clearance leaves them, and the hysteresis and sliding "
         "losses follow these loads; a starved inlet (cold, viscous oil) makes thinner films, so this is an upper "

@@ -49,7 +49,7 @@ from dataclasses import dataclass, field, fields
 
 import numpy as np
 
-from thermobear.coupled.limits import emit, point_warnings, runaway_at, runaway_in
+from thermobear.coupled.limits import emit, film_load_preload_warnings, point_warnings, runaway_at, runaway_in
 from thermobear.coupled.clearance import scene_at_clearance, preload_runaway
 from thermobear.coupled.ratings import check_static_safety, scene_clearance
 from thermobear.coupled.pipeline import Family, family_film_loads, family_loads, film_temperature_C, stack_loads
@@ -325,6 +325,8 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
         seal = cat(out_T["seal"]).max() if "seal" in out_T else None      # a built network's seal node
         for _, _, sc, _ in pieces[:i + 1]:
             got += [w for w in point_warnings(sc, None, np.concatenate(x), T_seal_C=seal) if str(w) not in map(str, got)]
+        for fc in cells.values():             # the film loads it passed: a preload by the films (cold, viscous oil)
+            got += [w for w in fc.preload_warnings() if str(w) not in map(str, got)]
     got += [settling.warning] if settling.warning is not None else []
     emit(got)
     return _assemble(out_t, out_T, out_rep, first, seg_changes, got, completed)
@@ -520,6 +522,12 @@ class _FilmCells:
 
     def __init__(self, scene: Scene, T0: float, step: float | None = None):
         self.scene, self.T0, self.step, self.solved = scene, float(T0), _FILM_CELL_K if step is None else step, {}
+        self.used: dict = {}          # (k, T) asked for by a piece → the alternative's dry solution (the checks)
+
+    def preload_warnings(self) -> list:
+        """The film-preload warning of the film loads the heat-up used (:func:`film_load_preload_warnings`)."""
+        return film_load_preload_warnings(self.scene, [(T, self.solved[(k, T)][0], dry) for (k, T), dry in
+                                                       self.used.items() if T is not None and dry is not None])
 
     def cell(self, T_film, fine: bool = False) -> tuple:
         """The grid's film temperatures (T_lo, T_hi) [°C] around ``T_film`` (``fine``: of the grid ``_FILM_FINE``
@@ -539,6 +547,7 @@ class _FilmCells:
         film load model).  A grid node met in a heat-up (or cool-down) is solved in one batched call with the next
         ``_FILM_AHEAD`` − 1 nodes it is moving towards, each from the same start (a batch of eight costs two to
         three times one solve; a heat-up crosses 7–20 nodes of 3 K); should that batch fail, the node alone."""
+        self.used[(k, T)] = alt.dry
         if (k, T) not in self.solved:
             if T is None:
                 fam = Family(scenes=(self.scene,), index=(0,), models=alt.models, dry=(alt.dry,))
