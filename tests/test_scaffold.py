@@ -227,3 +227,16 @@ def test_init_refuses_loads_the_bearing_cannot_carry(argv, field, tmp_path, caps
     assert not out.exists() and "wrote" not in o
     assert main(["init", "6208", "--lubrication", "oil-bath", "--Fr-N", "9000", "--out", str(out)]) == 0   # s0 2.2
     assert out.exists()
+
+
+@pytest.mark.parametrize("name", ["6206", "6206-2RS1"])
+def test_init_hints_are_valid_keys_of_their_table_once_uncommented(name):
+    """Each commented hint sits inside the table it belongs to: uncommented, the scene loads with its value (it sat
+    above the table's header, so that `cage` landed in [scene] and `T_C` in [lubricant]: unknown keys)."""
+    from thermobear.app.scaffold import scaffold
+    text = scaffold(name, "grease", n_rpm=3000.0, Fr_N=1500.0)
+    hints = [ln for ln in text.splitlines() if ln.startswith("# ") and "# uncomment:" in ln]
+    assert len(hints) == (2 if name == "6206" else 1) + 1
+    uncommented = "\n".join(ln.split("# uncomment:")[0][2:] if ln in hints else ln for ln in text.splitlines())
+    s = scene_from_dict(tomllib.loads(uncommented))
+    assert (s.seals, s.cage, s.T_C) == ("RS1", "outer_ring", 70.0)

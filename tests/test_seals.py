@@ -102,3 +102,14 @@ def test_a_heat_up_reads_the_seal_node_too():
         tr = tb.transient(tb.load_scene(tb.example_path("block_6208_grease.toml")).with_(n_rpm=7000.0), 2e5)
     assert tr.T_C["seal"].max() > 100.0 > max(tr.T_C["inner_race"].max(), tr.T_C["outer_race"].max())
     assert [w.quantity for w in tr.warnings].count("seal_T") == 1
+
+
+def test_a_scene_offers_only_the_seals_of_ball_bearings():
+    """LS and CS are SKF's roller-bearing seals: the scene's choice no longer lists them (it listed them and the
+    seal model then refused them for a ball bearing)."""
+    import thermobear as tb
+    from thermobear.errors import InputError
+    s = tb.load_scene(tb.example_path("block_6208_grease.toml"))
+    with pytest.raises(InputError, match="none, shield, RSL, RSH, RS1$"):
+        s.with_(seals="LS")
+    assert s.with_(seals="RS1").seals == "RS1"

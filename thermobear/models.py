@@ -71,7 +71,7 @@ from thermobear.errors import InputError, NoEquilibrium, SolverError
 from thermobear.loads import LoadDistribution, load_distribution, needs_high_speed
 from thermobear.loads.highspeed import load_distribution_high_speed_full
 from thermobear.losses.cage import cage_land_estimate
-from thermobear.losses.seals import CONTACT_SEALS, seal_counterface_estimate_mm
+from thermobear.losses.seals import BALL_SEALS, CONTACT_SEALS, seal_counterface_estimate_mm
 from thermobear.losses.skf import K_RS, drag_loss_factor_VM, phi_rs, skf_K_z
 from thermobear.lubrication.thermal_film import thermal_loading_parameter, thermal_reduction_gupta
 from thermobear.scene import Scene
@@ -372,8 +372,8 @@ def _choose(scene: Scene, hs: tuple, lm: tuple | None, film: dict | None = None,
     elif scene.supply in ("oil_jet", "oil_air"):
         out["drag"] = (True, f"{scene.supply}: balls run through an oil–air mixture")
     elif scene.supply == "grease":
-        out["drag"] = (True, f"grease: the balls' drag in the cavity air (∝ ω², negligible at n dm = {ndm:.3g} mm "
-                             "rpm below 1e5; kept everywhere so that no switch steps the answer)")
+        out["drag"] = (True, f"grease: the balls' drag in the cavity air (∝ ω²; n dm = {ndm:.3g} mm rpm here, "
+                             "negligible below about 1e5; kept everywhere so that no switch steps the answer)")
     elif scene.supply == "oil_bath":
         out["drag"] = (False, "oil bath: no oil–air mixture term (the bath's drag on the balls is the churning "
                               "term, from lubricant.oil_level_mm)")
@@ -510,7 +510,7 @@ def added_losses(scene: Scene) -> dict:
                            ("pouly_immersed", f"{lvl}: the balls cross the bath; Pouly's sphere drag in oil × the "
                             "immersed share of the ball path"))
     contact = scene.seals in CONTACT_SEALS
-    _forced(m, "seals", contact, f"seal friction needs a contact seal (bearing.seals one of {', '.join(CONTACT_SEALS)})")
+    _forced(m, "seals", contact, f"seal friction needs a contact seal (bearing.seals one of {', '.join(BALL_SEALS[2:])})")
     if m.get("seals") is False:
         out["seals"] = (False, "chosen in the scene")
     elif not contact:

@@ -232,14 +232,16 @@ def _fmt(v) -> str:
     return repr(float(v))
 
 
-def _section(name: str, rows, lines: list, note: str | None = None):
+def _section(name: str, rows, lines: list, notes=()):
+    """A table of the scene file: its rows ``(key, value, source)``, then ``notes`` ``(key = value, what it does)``
+    as commented lines inside the table (uncommented, each is a valid key of it)."""
     lines.append("")
-    if note:
-        lines.append(f"# {note}")
     lines.append(f"[{name}]")
     for key, value, src in rows:
         kv = f"{key} = {_fmt(value)}"
         lines.append(f"{kv:32s} # {src}" if src else kv)
+    for kv, what in notes:
+        lines.append(f"{'# ' + kv:32s} # uncomment: {what}")
 
 
 def _reference_speed(brg: BallBearing) -> ReferenceSpeed:
@@ -364,9 +366,9 @@ def scaffold(name: str, lubrication: str, *, oil: str | None = None, housing: st
              "# Every key is used; units are in the key names; each comment says where the value comes from.",
              f"# Solve it: thermobear run THIS_FILE  ({_skf_hint(sc)}",
              "# The network is built from [shaft] and [housing] (examples/README.md, \"Machine keys\")."]
-    notes = {"bearing": ("" if closure else "seals = \"RS1\" (none | shield | RSL | RSH | RS1) and ")
-             + "cage = \"outer_ring\" add" + ("" if closure else " seal and") + " cage losses",
-             "operation": "T_C = 70.0 would prescribe the contacts' temperature (no thermal network)"}
+    notes = {"bearing": ([] if closure else [('seals = "RS1"', "contact seals and their losses (none | shield | RSL | "
+                                             "RSH | RS1)")]) + [('cage = "outer_ring"', "a ring-guided cage and its losses")],
+             "operation": [("T_C = 70.0", "prescribe the contacts' temperature (no thermal network)")]}
     for sec in ("scene", "bearing", "lubricant", "operation", "thermal", "shaft", "housing"):
-        _section(sec, rows[sec], lines, notes.get(sec))
+        _section(sec, rows[sec], lines, notes.get(sec, ()))
     return "\n".join(lines) + "\n"

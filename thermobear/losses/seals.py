@@ -31,7 +31,7 @@ from thermobear.errors import InputError
 from thermobear.files import data_dir, read_toml
 from thermobear.units import NMM
 
-__all__ = ["SEAL_TYPES", "CONTACT_SEALS", "seal_material", "SealFriction", "seal_moment_Nmm", "seal_constants", "seal_friction",
+__all__ = ["SEAL_TYPES", "CONTACT_SEALS", "BALL_SEALS", "seal_material", "SealFriction", "seal_moment_Nmm", "seal_constants", "seal_friction",
            "seal_counterface_estimate_mm"]
 
 #: Seal designations a scene may name: ``"none"``, ``"shield"`` (Z, RZ: non-contact, no friction) and
@@ -39,6 +39,8 @@ __all__ = ["SEAL_TYPES", "CONTACT_SEALS", "seal_material", "SealFriction", "seal
 SEAL_TYPES = ("none", "shield", "RSL", "RSH", "RS1", "LS", "CS", "CS2", "CS5")
 #: The contact seals (those with a friction moment).
 CONTACT_SEALS = SEAL_TYPES[2:]
+#: The seals a ball bearing's scene may name: none, shields and SKF's ball-bearing contact seals.
+BALL_SEALS = SEAL_TYPES[:5]
 _SAME_ROW = {"CS2": "CS", "CS5": "CS"}      # SKF table 4 gives one row for CS, CS2 and CS5
 
 

@@ -45,7 +45,7 @@ from thermobear.files import read_toml
 from thermobear.losses.cage import GUIDANCE
 from thermobear.rating.iso281 import CONTAMINATION_LEVELS
 from thermobear.losses.local import ROLLING_MODELS, TRACTION_MODELS
-from thermobear.losses.seals import CONTACT_SEALS, SEAL_TYPES, seal_constants
+from thermobear.losses.seals import BALL_SEALS, CONTACT_SEALS, seal_constants
 from thermobear.lubrication.lubricant import FIELDS as LUBRICANT_FIELDS
 from thermobear.lubrication.lubricant import Lubricant, lubricant
 from thermobear.schema import Field, check_table, check_uncertainty, check_value
@@ -165,7 +165,7 @@ HOUSING_FIELDS = {
 
 #: ``[bearing]`` keys besides the geometry: seals and cage (defaults: no seal; a ball-centred cage).
 _BEARING_FIELDS = {
-    "seals": Field.choice(*SEAL_TYPES, doc="seal type: none, shield (non-contact) or an SKF contact seal"),
+    "seals": Field.choice(*BALL_SEALS, doc="seal type: none, shield (non-contact) or an SKF ball-bearing contact seal"),
     "seal_sides": Field.integer("-", 0, 2, doc="number of seals (default 2 with seals, 0 without)"),
     "seal_diameter_mm": Field.number("mm", 0.0, None, lo_open=True, doc="seal counterface diameter d_s (SKF "
                                      "product table d1/d2); default estimated d + 0.25 (D - d)"),
