@@ -55,7 +55,7 @@ from thermobear.coupled.ratings import check_static_safety, scene_clearance
 from thermobear.coupled.pipeline import Family, family_film_loads, family_loads, film_temperature_C, stack_loads
 from thermobear.coupled.pointmodel import PointModel, heat_sources, point_model
 from thermobear.coupled.sources import loss_sources, prepared_for
-from thermobear.errors import InputError, OutsideValidity, SolverError
+from thermobear.errors import InputError, OutsideValidity, SolverError, ThermalRunaway
 from thermobear.losses import prepare_contacts
 from thermobear.arrays import instance_of, take
 from thermobear.coupled.blend import StackedBlend
@@ -248,11 +248,7 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
             sc_p = sc
             if clear:                         # the clearance at the piece's start temperatures
                 c = _piece_clearance(sc, T_state, first[1] if first else pre.coupling.roles, clear_hist, ts)
-                if c["operating"] <= 0:
-                    err = preload_runaway(sc, c, clear_hist, f"during the heat-up at t = {ts:g} s")
-                    err.last = _assemble(out_t, out_T, out_rep, first, seg_changes, [], False) if out_t else None
-                    raise err          # what was integrated: err.last (a TransientRun, completed False)
-                sc_p = scene_at_clearance(sc, c["operating"] * 1e-6)
+                sc_p = scene_at_clearance(sc, c["operating"] * 1e-6)       # negative: a radial preload
                 alts = _alternatives(sc_p, load)
             models = max(alts, key=lambda a: a.weight).models
             film = load is None and any(a.models["load_model"][0] == "film" for a in alts)
@@ -311,7 +307,14 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
                     c1 = scene_clearance(sc, _T_nodes(T_state, cp.roles, sc), cp.roles)["operating"]
                     f.append(_CLEAR_DRIFT_M / max(abs(c1 - c["operating"]) * 1e-6, 1e-15))
                 film_dt = (te - ts) * float(np.clip(min(f), 0.5, 4.0))
-            runaway_at(T_state, te)
+            try:
+                runaway_at(T_state, te)
+            except ThermalRunaway as e:      # at a radial preload: the preload's runaway (what was integrated: .last)
+                if not (clear and c["operating"] < 0):
+                    raise
+                err = preload_runaway(sc, c, clear_hist, f"during the heat-up at t = {te:g} s ({e})")
+                err.last = _assemble(out_t, out_T, out_rep, first, seg_changes, [], False)
+                raise err from e
         if completed and film and len(nodes) == 2 and settling.warning is None and id(sc) not in settling.at:
             # ends settled inside a grid cell: the loads there?
             settling.warning = _settled_jump(kept, alts, load, pre, fc, T_state, cp.roles, last_film,
