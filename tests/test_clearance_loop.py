@@ -137,6 +137,7 @@ def test_heat_up_follows_the_clearance_into_the_preload(jet):
     st = tb.steady_state(sc)
     assert st.clearance_um["used"] < 0
     assert tr.completed and tr.P_W[-1] == pytest.approx(st.P_W, rel=2e-3)
+    assert any(w.quantity == "operating_clearance" and "heat-up" in str(w) for w in tr.warnings)
 
 
 def test_cli_preload_one_warning_and_runaway_exit_code_3_one_line(tmp_path, capsys, jet):

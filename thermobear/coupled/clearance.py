@@ -62,7 +62,14 @@ def scene_at_clearance(scene, Pd):
 def preload_runaway(scene, c: dict, history: list, what: str) -> ThermalPreloadRunaway:
     """The named error of a radial preload that runs away: ``c`` the clearance dict at the last state
     (:func:`~thermobear.coupled.ratings.scene_clearance`), ``history`` the loop's or heat-up's steps (its last
-    residual, operating − used clearance, is the error's ``residual`` [m]), ``what`` how it ran away."""
+    residual, operating − used clearance, is the error's ``residual`` [m]), ``what`` how it ran away.
+
+    >>> T = {"inner ring": 220.4, "outer ring": 20.0, "balls": 198.1}
+    >>> c = dict(unmounted=13.0, mounted=1.69, operating=-171.0, shaft_fit="k5", housing_fit="H7", temperatures_C=T)
+    >>> e = preload_runaway(None, c, [dict(used_um=-146.4, operating_um=-171.0)], "no fixed point")
+    >>> round(e.residual * 1e6, 1), e.clearance_history_m, round(e.dT_inner_outer_K, 1)
+    (24.6, [-0.000171], 200.4)
+    """
     T = c["temperatures_C"]
     dT = T["inner ring"] - T["outer ring"]
     last = history[-1] if history else {}
@@ -160,7 +167,22 @@ def clearance_loop(scenes, first: list, solve, *, tol_m: float = CLEARANCE_TOL_M
     -------
     list   per point: the state of the points whose clearance is ``given`` unchanged; of the others the
            state at the fixed point (``clearance_um`` with ``used``, ``iterations``, ``residual_um`` and the
-           ``history``), or the error that stopped it (:class:`~thermobear.errors.ThermalPreloadRunaway`)
+           ``history``; a negative one, a radial preload, with its warning), or the error that stopped it
+           (:class:`~thermobear.errors.ThermalPreloadRunaway` where the preload runs away)
+
+    Examples
+    --------
+    The oil-jet 6208 (CN, 13 µm) on k5 / H7, through :func:`thermobear.steady_state` (which runs this loop): the
+    fits and the warm inner ring consume the clearance, the answer is preloaded.
+
+    >>> import dataclasses, warnings
+    >>> import thermobear as tb
+    >>> s = tb.load_scene(tb.example_path("block_6208_oil_jet.toml"))
+    >>> with warnings.catch_warnings():
+    ...     warnings.simplefilter("ignore")
+    ...     st = tb.steady_state(dataclasses.replace(s, shaft_fit="k5", housing_fit="H7"))
+    >>> round(st.clearance_um["used"], 2), st.clearance_um["iterations"], round(st.P_W, 1)
+    (-5.55, 3, 33.0)
     """
     out = list(first)
     used = {i: sc.bearing.Pd for i, (sc, r) in enumerate(zip(scenes, first))

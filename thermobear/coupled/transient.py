@@ -51,7 +51,7 @@ import numpy as np
 
 from thermobear.coupled.limits import emit, point_warnings, runaway_at, runaway_in
 from thermobear.coupled.clearance import scene_at_clearance, preload_runaway
-from thermobear.coupled.ratings import check_static_safety, scene_clearance
+from thermobear.coupled.ratings import check_static_safety, preload_warnings, scene_clearance
 from thermobear.coupled.pipeline import Family, family_film_loads, family_loads, film_temperature_C, stack_loads
 from thermobear.coupled.pointmodel import PointModel, heat_sources, point_model
 from thermobear.coupled.sources import loss_sources, prepared_for
@@ -234,6 +234,7 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
     cells: dict = {}        # scene (id) → its _FilmCells: the loads solved for it during the run
     last_film = None        # (film temperature's rate at its end [K/s], scene) of the last piece
     settling = _Settling()  # per scene: where its heat-up settled (fine cells there), past a jump of the loads
+    c = None                # the operating clearance at the last piece's start (models.clearance = operating)
     with warnings.catch_warnings():
         # property calls at the integrator's trial states may lie beyond a correlation's data; the
         # validity of the states reported is checked once, on the series (limits.point_warnings)
@@ -329,6 +330,8 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
         for _, _, sc, _ in pieces[:i + 1]:
             got += [w for w in point_warnings(sc, None, np.concatenate(x), T_seal_C=seal) if str(w) not in map(str, got)]
     got += [settling.warning] if settling.warning is not None else []
+    if c is not None and c["operating"] < 0:      # the last piece at a radial preload
+        got += preload_warnings(pieces[i][2].bearing, c["operating"] * 1e-6, c, f"during the heat-up, t = {te:g} s")
     emit(got)
     return _assemble(out_t, out_T, out_rep, first, seg_changes, got, completed)
 
