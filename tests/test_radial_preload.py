@@ -80,9 +80,15 @@ def test_ball_loads_are_continuous_across_zero_clearance(form, n, film):
 
 
 def test_film_law_carries_the_load_on_a_preload():
+    """With the films in the contact law the preload is solved too; without load the balls stay equal and carry
+    more than the dry Q_0 (the films take up part of the clearance as well)."""
     ld = load_distribution(preloaded(-8 * UM), 0.0, 2000.0, n_rpm=3000.0, form="static", film=FILM)
     assert ld.residual < 1e-9 and np.all(ld.Q_i > 0)
     assert np.sum(ld.Q_i * np.cos(ld.alpha_i) * np.cos(ld.psi)) == pytest.approx(2000.0, rel=1e-9)
+    free = load_distribution(preloaded(-8 * UM), 0.0, 0.0, n_rpm=3000.0, form="static", film=FILM)
+    assert np.ptp(free.Q_i) <= 1e-9 * free.Q_i.max() and free.Q_i.min() > float(clearance_preload(B, -8 * UM))
+    with pytest.raises(tb.InputError, match="needs a load or a radial preload"):
+        load_distribution(B, 0.0, 0.0, n_rpm=3000.0, form="static", film=FILM)
 
 
 @pytest.mark.parametrize("form, n", [("static", 0.0), ("high_speed", 6000.0)])

@@ -12,8 +12,8 @@ written by ``validation/catalogue.py``.  Radial internal clearance groups
 
 Conventions (Harris 2001 ch. 2; seed 004 eqs 1–5): x is the
 rolling direction, y the transverse one; osculations f = r/D; diametral
-clearance Pd = d_o − d_i − 2D; A = (fi + fo − 1) D; cos α0 = 1 − Pd/(2A);
-γ = D cos α / dm.
+clearance Pd = d_o − d_i − 2D; A = (fi + fo − 1) D; cos α0 = 1 − Pd/(2A) (Pd < 0, a radial preload of a deep groove
+bearing: α0 = 0, the groove centres A_r0 = A − Pd/2 apart with the rings centred); γ = D cos α / dm.
 """
 from __future__ import annotations
 

@@ -310,6 +310,19 @@ def preload_warnings(brg: BallBearing, Pd, c: dict, why: str) -> list:
     :class:`~thermobear.errors.OutsideValidity` of :data:`thermobear.validity.LIMITS` ``operating_clearance``, or
     none with a clearance.
 
+    Parameters
+    ----------
+    brg : BallBearing   the (radial) bearing
+    Pd : float          operating diametral clearance [m]
+    c : dict            ``mounted`` [µm], ``shaft_fit``, ``housing_fit`` (:func:`scene_clearance`)
+    why : str           where the preload arises (in the warning's text)
+
+    Returns
+    -------
+    list                the warning, or empty
+
+    Examples
+    --------
     >>> import thermobear as tb
     >>> c = {"mounted": 1.69, "shaft_fit": "k5", "housing_fit": "H7"}
     >>> w = preload_warnings(tb.bearing("6208"), -4e-6, c, "warm")

@@ -338,9 +338,10 @@ def film_load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, *, u_i, u_o
     Z, A, R = brg.Z, brg.A, arm_length(brg, tilt_arm)
     F_app = loads.applied(R)
     zero = np.max(np.abs(F_app), axis=1) == 0.0
-    if np.any(zero):
+    if np.any(zero) and brg.Pd >= 0:        # (a radial preload loads every ball without a load)
         raise InputError("Fa, Fr, M", loads.case(int(np.argmax(zero))),
-                         "the film load distribution needs a load (every ball carries a film force)")
+                         "the film load distribution needs a load or a radial preload (every ball carries a film "
+                         "force)")
     scale = force_scale(brg, F_app)
     law = _Film(brg, _per_ball("u_i", u_i, _pos, shape, Z), _per_ball("u_o", u_o, _pos, shape, Z),
                 _per_case("eta", eta, _pos, shape), _per_case("alpha_p", alpha_p, _nonneg, shape), stiffness)

@@ -280,6 +280,16 @@ def groove_offsets(brg: BallBearing):
     compressed by −P_d/2).  A ball's approach at offsets A0 + d is then s = A_j − A = (c + Σ d (2 A0 + d)) / (A_j + A)
     (Harris & Kotzalas 2007 [4] ch. 7).
 
+    Parameters
+    ----------
+    brg : BallBearing
+
+    Returns
+    -------
+    (A_a0, A_r0, c) : float   axial and radial offsets [m], the approach's constant [m²]
+
+    Examples
+    --------
     >>> from thermobear.contact.geometry import bearing
     >>> b = bearing("6208").with_(Pd=-8e-6)
     >>> a0, r0, c = groove_offsets(b)
@@ -299,6 +309,17 @@ def force_scale(brg: BallBearing, F_app):
     (:func:`~thermobear.contact.fits.clearance_preload`; Q_0 = 0 with a clearance), so that a light load on a
     preloaded bearing is solved to the precision its ball forces allow.
 
+    Parameters
+    ----------
+    brg : BallBearing
+    F_app : ndarray    applied loads (nb, ndof) [N] (moments over their arm ℜ)
+
+    Returns
+    -------
+    ndarray            (nb,) force scale [N]
+
+    Examples
+    --------
     >>> from thermobear.contact.geometry import bearing
     >>> b = bearing("6208")
     >>> F = np.array([[0.0, 10.0, 0.0]])
