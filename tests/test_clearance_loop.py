@@ -6,6 +6,7 @@ import pytest
 
 import thermobear as tb
 from thermobear.app.cli import main
+from thermobear.contact.fits import clearance_preload
 from thermobear.coupled.ratings import scene_clearance
 
 
@@ -47,14 +48,58 @@ def test_hotter_inner_ring_smaller_operating_clearance(jet):
     assert c[0] > c[1] > c[2]
 
 
-def test_normal_clearance_on_k5_runs_into_preload_per_point(jet):
+def test_normal_clearance_on_k5_is_solved_preloaded_per_point(jet):
+    """CN (13 µm) on k5 / H7: the fits and the warm inner ring consume the clearance; the loop follows it into
+    the preload (before: ThermalPreloadRunaway) to its fixed point, with the named warning of the preload."""
     cn, c3 = fitted(jet, 13.0), fitted(jet, 24.0)
     out = tb.steady_states([cn, c3])
-    assert isinstance(out[0], tb.ThermalPreloadRunaway) and isinstance(out[0], tb.SolverError)
-    e = out[0]
-    assert e.clearance_history_m[-1] <= 0 and len(e.history) >= 2
-    assert e.dT_inner_outer_K > 0 and e.mounted_m == pytest.approx(1.694e-6, abs=1e-8)
+    st = out[0]
+    assert isinstance(st, tb.SteadyState) and st.clearance_um["used"] < 0 < st.clearance_um["mounted"]
+    again = scene_clearance(cn, st.T_C, st.roles)["operating"]
+    assert abs(st.clearance_um["used"] - again) <= 1e-2 and st.clearance_um["residual_um"] <= 1e-2
+    assert st.clearance_um["history"][0]["operating_um"] < 0 and st.models_used["clearance"][0] == "operating"
+    Q0 = float(clearance_preload(cn.bearing, st.clearance_um["used"] * 1e-6))
+    w = [w for w in st.warnings if w.quantity == "operating_clearance"]
+    assert len(w) == 1 and f"Q0 = {Q0:.3g} N" in str(w[0]) and "compressed by" in str(w[0])
+    Q = np.asarray(st.losses.contacts["inner"]["Q"], float).ravel()
+    assert np.all(Q > 0)                                       # the preload keeps every ball loaded
     assert isinstance(out[1], tb.SteadyState) and out[1].clearance_um["used"] > 0
+    assert st.P_W > out[1].P_W and not any(w.quantity == "operating_clearance" for w in out[1].warnings)
+
+
+def runaway_scene(shaft="k5", n_rpm=9000.0):
+    """The grease 6208 on a tight fit at high speed, its outer ring held at 20 °C (a cooled housing): the inner
+    ring's heat consumes more clearance than the preload took."""
+    s = tb.load_scene(tb.example_path("block_6208_grease.toml"))
+    s = dataclasses.replace(s, shaft_fit=shaft, housing_fit="H7")
+    return s.with_(models={"clearance": "operating"}, n_rpm=n_rpm, T_fixed_C={"outer_ring": 20.0})
+
+
+def test_a_preload_whose_heat_consumes_more_clearance_runs_away():
+    """Runaway criterion (thermobear.coupled.clearance): at a negative clearance the loop's step
+    |g(P_k) − P_k| stops shrinking — no fixed point ahead; the error carries the history and residual."""
+    e = tb.steady_states([runaway_scene()])[0]
+    assert isinstance(e, tb.ThermalPreloadRunaway) and "no fixed point" in str(e)
+    h = e.history
+    r = [x["operating_um"] - x["used_um"] for x in h]
+    assert len(h) >= 3 and all(np.diff(e.clearance_history_m) < 0) and r[-1] < 0 and abs(r[-1]) >= abs(r[-2])
+    assert e.residual == pytest.approx(abs(r[-1]) * 1e-6, rel=1e-9) and e.dT_inner_outer_K > 100.0
+    assert [x["P_W"] for x in h] == sorted(x["P_W"] for x in h)           # more preload, more heat
+
+
+def test_a_preload_without_a_steady_state_runs_away_with_its_cause():
+    e = tb.steady_states([runaway_scene("p6")])[0]
+    assert isinstance(e, tb.ThermalPreloadRunaway) and isinstance(e.__cause__, tb.ThermalRunaway)
+    assert e.clearance_history_m[-1] < 0 and "no solution" in str(e)
+
+
+def test_fits_that_consume_the_clearance_at_mounting_are_a_preload(jet):
+    """models.clearance = mounted with a p6 shaft: −20.5 µm at 20 °C, solved preloaded with its warning
+    (before: InputError)."""
+    st = tb.steady_state(fitted(jet, 13.0, shaft="p6").with_(models={"clearance": "mounted"}))
+    c = st.clearance_um
+    assert c["mounted"] < 0 and c["used"] == pytest.approx(c["mounted"], abs=1e-9)
+    assert any(w.quantity == "operating_clearance" and "at mounting" in str(w) for w in st.warnings)
 
 
 def test_given_clearance_is_the_old_answer(jet):
@@ -86,16 +131,25 @@ def test_heat_up_follows_the_clearance_to_the_fixed_point(jet):
     assert tr.completed and tr.P_W[-1] == pytest.approx(st.P_W, rel=2e-3)
 
 
-def test_heat_up_stops_when_the_clearance_is_consumed(jet):
-    with pytest.raises(tb.ThermalPreloadRunaway) as got:
-        tb.transient(fitted(jet, 13.0), 3600.0)
-    run = got.value.last
-    assert run is not None and not run.completed and run.t_s[-1] < 3600.0
-    assert got.value.clearance_history_m[-1] <= 0 < got.value.clearance_history_m[0]
+def test_heat_up_follows_the_clearance_into_the_preload(jet):
+    sc = fitted(jet, 13.0)
+    tr = tb.transient(sc, 3600.0)
+    st = tb.steady_state(sc)
+    assert st.clearance_um["used"] < 0
+    assert tr.completed and tr.P_W[-1] == pytest.approx(st.P_W, rel=2e-3)
+    assert any(w.quantity == "operating_clearance" and "heat-up" in str(w) for w in tr.warnings)
 
 
-def test_cli_exit_code_3_one_line(tmp_path, jet):
+def test_cli_preload_one_warning_and_runaway_exit_code_3_one_line(tmp_path, capsys, jet):
     src = open(tb.example_path("block_6208_oil_jet.toml")).read()
     f = tmp_path / "cn.toml"
     f.write_text(src.replace('catalog = "6208"', 'catalog = "6208"\nshaft_fit = "k5"\nhousing_fit = "H7"', 1))
-    assert main(["run", str(f)]) == 3
+    assert main(["run", str(f)]) == 0
+    err = capsys.readouterr().err
+    assert len([ln for ln in err.splitlines() if "operating radial clearance" in ln]) == 1
+    src = open(tb.example_path("block_6208_grease.toml")).read()
+    g = tmp_path / "hot.toml"
+    g.write_text(src.replace('catalog = "6208"', 'catalog = "6208"\nshaft_fit = "k5"\nhousing_fit = "H7"', 1))
+    assert main(["run", str(g), "--set", "n_rpm=9000", "--set", "fixed_C.outer_ring=20"]) == 3
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1 and "preload runaway" in err and "no fixed point" in err

@@ -123,8 +123,10 @@ def test_uniform_warming_scales_the_bearing():
     assert w.D == pytest.approx(b.D * (1 + eps), rel=1e-12) and w.dm == pytest.approx(b.dm * (1 + eps), rel=1e-12)
     assert w.Pd == pytest.approx(b.Pd * (1 + eps), rel=1e-9)
     assert expanded_bearing(b, 30.0, 0.0).alpha0 < b.alpha0 < expanded_bearing(b, 0.0, 30.0).alpha0
-    with pytest.raises(InputError, match="no clearance left"):
-        expanded_bearing(tb.bearing("6208"), 60.0, 0.0)
+    warm = expanded_bearing(tb.bearing("6208"), 60.0, 0.0)      # the clearance closes: a radial preload
+    free = tb.operating_clearance("6208", T_inner_C=80.0, T_outer_C=20.0).Pd
+    assert warm.Pd < 0 and warm.alpha0 == 0.0 and warm.Pd == pytest.approx(float(free), rel=1e-3)
+    assert expanded_bearing(warm, 0.0, 0.0).Pd == pytest.approx(warm.Pd, rel=1e-12)
 
 
 def test_seat_materials_by_catalogue_name_equal_the_materials():

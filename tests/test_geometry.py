@@ -4,7 +4,7 @@ import pytest
 
 import thermobear as tb
 from thermobear.errors import InputError
-from thermobear.contact.geometry import BallBearing, bearing, bearing_names
+from thermobear.contact.geometry import BallBearing, bearing, bearing_from_dict, bearing_names, bearing_table
 
 STEEL = tb.Material(E=2.1e11, nu=0.3, rho=7850.0)
 
@@ -69,7 +69,7 @@ def test_catalog_lists_seed_bearings_with_estimates_marked():
     (dict(Z=2), "Z"),                     # Z < 3
     (dict(Z=7.5), "Z"),
     (dict(Z=40), "Z"),                    # balls do not fit
-    (dict(Pd=-1e-6), "Pd"),               # negative clearance
+    (dict(Pd=-2e-3), "Pd"),               # a radial preload of a ball compressed by more than A
     (dict(Pd=5e-3), "Pd"),                # clearance beyond 2A
     (dict(kind="tapered"), "kind"),
     (dict(kind="angular_contact", Pd=None), "alpha0"),
@@ -137,3 +137,21 @@ def test_materials_by_catalogue_name_in_with_and_the_constructor():
         bearing("6208").with_(ball_material=7)
     with pytest.raises(InputError, match=r"^bearing\[6208\]\.ring_material = 'x' — unknown name"):
         bearing("6208").with_(ring_material="x")
+
+
+def test_a_negative_clearance_is_a_radial_preload_with_the_rings_centred():
+    """P_d < 0 (the operating clearance the fits and temperatures leave): contact angle 0, the groove centres
+    A − P_d/2 apart radially (each ball compressed by −P_d/2); with a clearance A_r0 is A cos α0 exactly."""
+    b = make(Pd=-6e-6)
+    assert b.alpha0 == 0.0 and b.A_a0 == 0.0 and b.free_end_play == 0.0
+    assert b.A_r0 - b.A == pytest.approx(3e-6, rel=1e-9)
+    for Pd in (0.0, 1e-6, 20e-6):
+        c = make(Pd=Pd)
+        assert c.A_r0 == c.A * np.cos(c.alpha0) and c.A_a0 == c.A * np.sin(c.alpha0)
+        assert c.A_r0 == pytest.approx(c.A - Pd / 2, rel=1e-12)
+    assert make(Pd=-6e-6, alpha0=0.0).Pd == -6e-6
+    with pytest.raises(InputError, match="alpha0"):
+        make(Pd=-6e-6, alpha0=0.1)
+    with pytest.raises(InputError, match="Pd_mm"):          # a bearing table states the unmounted clearance
+        bearing_from_dict({**{k: v for k, v in bearing_table("6208").items() if k != "name"},
+                              "Pd_mm": -0.006})

@@ -102,6 +102,9 @@ def test_a_bearing_at_speed_without_load_is_warned():
     assert not [w for w in tb.steady_state(s).warnings if w.quantity == "unloaded"]
     from thermobear.coupled.limits import point_warnings
     assert not [w for w in point_warnings(s.with_(Fa=0.0, Fr=0.0, n_rpm=0.0), None, [20.0]) if w.quantity == "unloaded"]
+    bath = tb.load_scene(tb.example_path("oil_bath_6208.toml")).with_(Fr=0.0)      # a radial preload centres
+    pre = tb.steady_state(bath.with_(bearing=bath.bearing.with_(Pd=-5e-6)))      # the rings: a state of its own
+    assert not [w for w in pre.warnings if w.quantity == "unloaded"]
 
 
 def test_a_friction_input_the_models_do_not_read_is_named():

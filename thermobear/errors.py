@@ -83,12 +83,15 @@ class ThermalRunaway(SolverError):
 
 
 class ThermalPreloadRunaway(SolverError):
-    """The ring temperatures consumed the bearing's operating clearance: a radial preload the rigid-ring
-    load distribution cannot represent (and whose rising friction may run away).
+    """A radial preload that runs away: the clearance the fits and ring temperatures leave is negative, its heat
+    warms the inner ring and consumes more clearance than it took, so the clearance loop (or the heat-up) finds no
+    fixed point (:mod:`thermobear.coupled.clearance`: the loop's steps not shrinking at a negative clearance, or
+    no steady state at the preload reached).  A preload with a fixed point is solved, not refused.
 
     Attributes (besides :class:`SolverError`'s): ``clearance_history_m`` the clearances of the loop or the
     heat-up [m] (used → operating), ``dT_inner_outer_K`` the inner- minus outer-ring temperature difference
-    that consumed it [K], ``mounted_m`` the mounted clearance at 20 °C [m].
+    at the last state [K], ``mounted_m`` the mounted clearance at 20 °C [m]; ``residual`` the last step's
+    operating − used clearance [m].
     """
 
     def __init__(self, reason: str, *, clearance_history_m=(), dT_inner_outer_K: float = float("nan"),

@@ -45,7 +45,8 @@ sub-models serve it, each with the reason, overridable from the scene's ``[model
   bearing whose scene gives its fits (``bearing.shaft_fit`` / ``housing_fit``: the mounting is known); ``given``
   (the bearing's clearance as stated) otherwise, the operating clearance at the solution still reported with the
   ratings (with the catalogue-typical k5 / H7 fits and the mid CN clearance every shipped 6208 scene consumes its
-  clearance, so a default loop would refuse them all on guessed fits); ``mounted`` the fits at 20 °C.  Angular
+  clearance, so a default loop would preload them all on guessed fits); ``mounted`` the fits at 20 °C.  A
+  negative clearance is a radial preload, solved with a named warning (its runaway refused).  Angular
   contact and thrust bearings: ``given`` (their contact angle is set by the design, not by a radial play).
 * **hertz** — exact (one ellipticity solve per contact; the approximations' errors, 1–5 %, would
   show in p_max and the film).

@@ -150,8 +150,10 @@ LIMITS = {
                "separates the surfaces and a_ISO does not apply (evaluated at 0.1)"),
     "operating_clearance": Limit(
         "operating radial clearance", "µm", (None, None), (0.0, None), scale=1e6,
-        source="clearance consumed by the fits, the temperatures and the speed: a radial preload (Harris & "
-               "Kotzalas 2007 ch. 3), whose load and heat grow as the inner ring warms"),
+        source="clearance consumed by the fits, the temperatures and the speed: a radial preload, each ball "
+               "compressed by −P_d/2 between the centred rings (Q0 = K_n (−P_d/2)^1.5; Harris & Kotzalas 2007 ch. 3, "
+               "7), whose load and heat grow as the inner ring warms (the models' data are of bearings with a "
+               "clearance)"),
     "load": Limit(
         "load (Fa, Fr or M/ℜ_i), when not 0", "N", (1e-6, None), (None, None),
         source="below 1 µN the Hertz approach of a ball, (Q/K)^(2/3) with K ≈ 1e10 N/m^1.5, is below a tenth of "

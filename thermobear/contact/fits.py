@@ -505,10 +505,15 @@ def expanded_bearing(brg: BallBearing, dT_inner=0.0, dT_outer=0.0, dT_ball=None,
     -----
     Each part scales by ε = α ΔT: the ball D(1 + ε_b), the inner groove radius r_i = f_i D and the radius of
     the inner groove-curvature centres c_i = d_m/2 + (r_i − D/2) cos α0 by (1 + ε_i), the outer r_o and
-    c_o = d_m/2 − (r_o − D/2) cos α0 by (1 + ε_o).  Then A' = r_i' + r_o' − D', the radial distance of the
-    groove centres c_i' − c_o' = A' cos α0', and d_m' = d_m + ε_i (d_m − D)/2 + ε_o (d_m + D)/2 (the raceway
-    bottoms).  A deep groove bearing whose clearance closes (c_i' − c_o' > A') is refused: its operating
-    clearance is negative, see :func:`clearance_preload`.
+    c_o = d_m/2 − (r_o − D/2) cos α0 by (1 + ε_o) (cos α0 = A_r0/A, :attr:`BallBearing.A_r0`, > 1 for a bearing
+    already preloaded).  Then A' = r_i' + r_o' − D', the radial distance of the groove centres
+
+    .. math:: c_i' − c_o' = A_{r0}' = A' − P_d'/2
+
+    (A' cos α0' with a clearance), and d_m' = d_m + ε_i (d_m − D)/2 + ε_o (d_m + D)/2 (the raceway bottoms).  A
+    deep groove bearing whose clearance closes (c_i' − c_o' > A') comes back with the negative clearance
+    P_d' = 2 (A' − c_i' + c_o'), a radial preload (:func:`clearance_preload`); an angular contact bearing's is
+    refused (its contact angle would pass 0).
 
     Examples
     --------
@@ -518,22 +523,28 @@ def expanded_bearing(brg: BallBearing, dT_inner=0.0, dT_outer=0.0, dT_ball=None,
     >>> warm = expanded_bearing(bearing("7205B"), 30.0, 0.0, 15.0)
     >>> round(float(np.degrees(warm.alpha0)), 1)
     37.9
+
+    A 6208 (13 µm) with its inner ring 40 K warmer than the outer (balls 20 K): −17.2 µm, a radial preload.
+
+    >>> round(expanded_bearing(bearing("6208"), 40.0, 0.0).Pd * 1e6, 2)
+    -17.23
     """
     a_r = steel_expansion() if alpha_ring is None else float(alpha_ring)
     a_b = steel_expansion() if alpha_ball is None else float(alpha_ball)
     dTb = 0.5 * (dT_inner + dT_outer) if dT_ball is None else dT_ball
     ei, eo, eb = a_r * float(dT_inner), a_r * float(dT_outer), a_b * float(dTb)
-    D, ca = brg.D, np.cos(brg.alpha0)
+    D, ca = brg.D, (np.cos(brg.alpha0) if brg.Pd >= 0 else brg.A_r0 / brg.A)
     ri, ro = brg.fi * D, brg.fo * D
     ci = (0.5 * brg.dm + (ri - 0.5 * D) * ca) * (1.0 + ei)
     co = (0.5 * brg.dm - (ro - 0.5 * D) * ca) * (1.0 + eo)
     D2 = D * (1.0 + eb)
     A2 = ri * (1.0 + ei) + ro * (1.0 + eo) - D2
     radial = ci - co
-    if radial >= A2:
-        raise InputError("dT_inner", dT_inner, f"the warm bearing has no clearance left (radial distance of the groove "
-                         f"centres {radial * 1e6:.4g} µm >= A = {A2 * 1e6:.4g} µm): a radial preload, see "
-                         "operating_clearance and clearance_preload")
     dm2 = brg.dm + ei * 0.5 * (brg.dm - D) + eo * 0.5 * (brg.dm + D)
-    alpha2 = float(np.arccos(radial / A2))
-    return brg.with_(D=D2, dm=dm2, fi=ri * (1.0 + ei) / D2, fo=ro * (1.0 + eo) / D2, alpha0=alpha2)
+    warm = dict(D=D2, dm=dm2, fi=ri * (1.0 + ei) / D2, fo=ro * (1.0 + eo) / D2)
+    if radial >= A2:
+        if brg.kind == "deep_groove":      # the clearance closed: a radial preload
+            return brg.with_(Pd=2.0 * (A2 - radial), **warm)
+        raise InputError("dT_inner", dT_inner, f"the warm bearing has no clearance left (radial distance of the groove "
+                         f"centres {radial * 1e6:.4g} µm >= A = {A2 * 1e6:.4g} µm): its contact angle would pass 0")
+    return brg.with_(alpha0=float(np.arccos(radial / A2)), **warm)

@@ -12,8 +12,8 @@ written by ``validation/catalogue.py``.  Radial internal clearance groups
 
 Conventions (Harris 2001 ch. 2; seed 004 eqs 1–5): x is the
 rolling direction, y the transverse one; osculations f = r/D; diametral
-clearance Pd = d_o − d_i − 2D; A = (fi + fo − 1) D; cos α0 = 1 − Pd/(2A);
-γ = D cos α / dm.
+clearance Pd = d_o − d_i − 2D; A = (fi + fo − 1) D; cos α0 = 1 − Pd/(2A) (Pd < 0, a radial preload of a deep groove
+bearing: α0 = 0, the groove centres A_r0 = A − Pd/2 apart with the rings centred); γ = D cos α / dm.
 """
 from __future__ import annotations
 
@@ -56,7 +56,11 @@ class BallBearing:
     dm : float            pitch diameter (ball-centre circle) [m]
     Z : int               number of balls [-]
     fi, fo : float        inner / outer osculation r/D [-], > 0.5
-    Pd : float            diametral clearance [m], ≥ 0 (deep groove; derived for the others)
+    Pd : float            diametral clearance [m] (deep groove; derived for the others); negative: a radial
+                          preload, every ball compressed by −Pd/2 between the centred rings (contact angle 0,
+                          :attr:`A_r0`), as the fits and temperatures of a mounted bearing make it
+                          (:func:`~thermobear.contact.fits.operating_clearance`); > −2A.  A bearing table
+                          (``Pd_mm``: catalogue, scene) states the unmounted clearance, ≥ 0
     alpha0 : float        free contact angle [rad]; required for angular contact,
                           π/2 for thrust; derived from Pd for deep groove if not given
     kind : str            ``"deep_groove"``, ``"angular_contact"`` or ``"thrust"``
@@ -168,11 +172,13 @@ class BallBearing:
         else:  # deep groove
             if Pd is None:
                 Pd = 0.0 if a0 is None else 2.0 * A * (1.0 - np.cos(a0))
-            if not (np.isfinite(Pd) and Pd >= 0):
-                raise InputError(f"{p}.Pd", Pd, "diametral clearance must be >= 0 [m]")
+            if not np.isfinite(Pd):
+                raise InputError(f"{p}.Pd", Pd, "diametral clearance must be finite [m]")
             if Pd >= 2.0 * A:
                 raise InputError(f"{p}.Pd", Pd, f"clearance must be < 2A = {2 * A:.4g} m (else the free contact angle exceeds 90°)")
-            a_from_pd = float(np.arccos(1.0 - Pd / (2.0 * A)))
+            if Pd <= -2.0 * A:     # a radial preload: every ball compressed by −Pd/2 (< A)
+                raise InputError(f"{p}.Pd", Pd, f"a negative clearance (radial preload) must be > −2A = {-2 * A:.4g} m")
+            a_from_pd = float(np.arccos(1.0 - Pd / (2.0 * A))) if Pd >= 0 else 0.0
             if a0 is not None and abs(a0 - a_from_pd) > 1e-6:
                 raise InputError(f"{p}.alpha0", a0, f"inconsistent with Pd: arccos(1 - Pd/2A) = {a_from_pd:.6g} rad; give one of them")
             a0 = a_from_pd
@@ -205,6 +211,49 @@ class BallBearing:
     def A(self) -> float:
         """Distance between the groove curvature centres, unloaded: A = (fi + fo − 1) D [m] (seed 004 eq 2)."""
         return self.total_curvature * self.D
+
+    @property
+    def A_r0(self) -> float:
+        r"""Radial distance between the groove curvature centres with the rings centred [m].
+
+        .. math:: A_{r0} = A − P_d/2
+
+        the inner raceway's groove centre at d_i/2 + r_i, the outer's at d_o/2 − r_o, so that their distance is
+        r_i + r_o − (d_o − d_i)/2 = A − P_d/2 (P_d = d_o − d_i − 2D; Harris & Kotzalas 2007 [1] ch. 2, ball bearings).
+        With a clearance (P_d ≥ 0) it is A cos α0 (the free contact angle cos α0 = 1 − P_d/(2A) of [1] ch. 2), evaluated so; with a
+        negative clearance (a radial preload) it exceeds A: every ball is compressed by A_r0 − A = −P_d/2
+        between the centred rings (:func:`thermobear.contact.fits.clearance_preload`).
+
+        References
+        ----------
+        .. [1] Harris, T. A., Kotzalas, M. N. (2007), *Essential Concepts of Bearing Technology* (Rolling Bearing
+           Analysis, 5th ed., vol. 1), CRC Press, ch. 2 (ball bearings: diametral clearance, free contact angle).
+
+        Examples
+        --------
+        >>> b = bearing("6208")
+        >>> round(b.with_(Pd=-8e-6).A_r0 - b.A, 12), bool(abs(b.A_r0 - b.A * np.cos(b.alpha0)) < 1e-18)
+        (4e-06, True)
+        """
+        if self.Pd < 0:
+            return self.A - 0.5 * self.Pd
+        return float(self.A * np.cos(self.alpha0))
+
+    @property
+    def A_a0(self) -> float:
+        r"""Axial distance between the groove curvature centres where the balls first touch both races
+        (no load) [m]
+
+        .. math:: A_{a0} = A \sin α_0
+
+        0 with a radial preload (P_d < 0, α0 = 0: the
+        rings are centred and already compress the balls, :attr:`A_r0`).  Harris & Kotzalas 2007 ch. 2 (free end play
+        P_e = 2 A sin α0).
+
+        >>> round(bearing("7210").A_a0 * 1e6, 3), bearing("6208").with_(Pd=-8e-6).A_a0
+        (326.536, 0.0)
+        """
+        return float(self.A * np.sin(self.alpha0))
 
     @property
     def alpha_nominal(self) -> float:
@@ -327,8 +376,8 @@ FIELDS = {
     "Z": Field.integer("-", *Z_RANGE, doc="number of balls", required=True),
     "fi": Field.number("-", doc="inner osculation r/D", required=True),
     "fo": Field.number("-", doc="outer osculation r/D", required=True),
-    "Pd_mm": Field.number("mm", 0.0, 10.0, doc="diametral clearance (>= 0; a preload arises from the fits and "
-                          "temperatures: shaft_fit, housing_fit)"),
+    "Pd_mm": Field.number("mm", 0.0, 10.0, doc="unmounted diametral clearance (>= 0; a radial preload arises from "
+                          "the fits and temperatures: shaft_fit, housing_fit, models.clearance)"),
     "alpha0_deg": Field.number("deg", 0.0, 90.0, doc="free contact angle"),
     "kind": Field.choice(*KINDS, doc="bearing type"),
     "bore_mm": Field.number("mm", 0.0, 5000.0, lo_open=True, doc="bore diameter"),

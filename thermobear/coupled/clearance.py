@@ -1,20 +1,31 @@
 r"""Temperature → clearance → loads → losses → temperatures: the clearance of the coupled steady state.
 
 The free contact angle of a deep groove bearing follows its diametral clearance (cos α0 = 1 − P_d/(2A),
-Harris & Kotzalas 2007 [1] §2.2), so the load distribution, the contacts and the losses depend on the clearance
+Harris & Kotzalas 2007 [1] ch. 2), so the load distribution, the contacts and the losses depend on the clearance
 the bearing runs with; that clearance depends on the fits and on the temperatures of rings, balls, shaft and
-housing (:func:`thermobear.contact.fits.operating_clearance`: Lamé fits, free thermal and centrifugal growth).
+housing (:func:`thermobear.contact.fits.operating_clearance`: Lamé fits, free thermal and centrifugal growth,
+[1] ch. 3).  A negative clearance is a radial preload: the load distribution places the groove centres
+A − P_d/2 apart with the rings centred ([1] ch. 2 and 7; :attr:`~thermobear.contact.geometry.BallBearing.A_r0`),
+every ball carrying Q_0 = K_n (−P_d/2)^1.5 without load (:func:`~thermobear.contact.fits.clearance_preload`).
 With ``models.clearance = "operating"`` (:func:`thermobear.models.clearance_choice`) the steady state is the
 fixed point
 
 .. math:: P_{d} = g(P_d) = P_{d,op}\bigl(T(P_d)\bigr)
 
 solved by direct iteration (each step a full coupled steady state with the bearing at P_d, started from the
-bearing's own clearance); the slope of g — how much a change of the clearance moves the ring temperature
-difference — is small for a radially loaded bearing, so 2–5 steps reach ``tol_m``.  When g(P_d) ≤ 0 the next
-step solves at P_d = 0 (the least clearance the rigid-ring model represents); if that state too consumes its
-clearance, no fixed point with a clearance exists: :class:`~thermobear.errors.ThermalPreloadRunaway`, with the
-clearance history and the inner–outer ring temperature difference.  ``"mounted"``: one step, the fits at 20 °C.
+bearing's own clearance), into negative clearances as into positive ones.  The slope of g — how much a change of
+the clearance moves the ring temperature difference — is small for a radially loaded bearing, so 2–5 steps reach
+``tol_m``.  A preloaded answer carries a named warning (:func:`~thermobear.coupled.ratings.preload_warnings`:
+the compression and Q_0).
+
+Runaway (:class:`~thermobear.errors.ThermalPreloadRunaway`, with the clearance history and the last residual).
+More preload makes more heat, a hotter inner ring and more preload: the iteration diverges when that gain
+reaches 1, g′ ≥ 1.  Its sign, from two steps k − 1, k: with the clearance negative and falling
+(r_k = g(P_k) − P_k < 0), the step does not shrink, |r_k| ≥ |r_{k−1}| — equivalently the secant slope
+(g_k − g_{k−1})/(P_k − P_{k−1}) ≥ 1, so that g(P) − P only falls further as the preload grows: no fixed point
+ahead.  Also a runaway: a step at a negative clearance whose coupled steady state has no solution (its thermal
+fixed point runs away, :class:`~thermobear.errors.ThermalRunaway`, or its contacts are overloaded), and
+``_MAXITER`` steps still moving to more preload.  ``"mounted"``: the fits at 20 °C, one step.
 
 Batching: a point's bearing changes with its clearance, and a load solve batches points of one bearing, so the
 steps after the first solve each point of the loop as a family of its own (the points of one step in one call);
@@ -23,14 +34,15 @@ cost ≈ (iterations + 1) single-point steady states per point, each with its ow
 References
 ----------
 .. [1] Harris, T. A., Kotzalas, M. N. (2007), *Essential Concepts of Bearing Technology*, 5th ed., CRC Press
-   (§2.2 clearance and free contact angle; ch. 3 interference fits and thermal expansion).
+   (ch. 2 clearance and free contact angle; ch. 3 interference fits and thermal expansion; ch. 7 load
+   distribution under radial load with a clearance or preload).
 """
 from __future__ import annotations
 
 import dataclasses
 
-from thermobear.coupled.ratings import scene_clearance
-from thermobear.errors import InputError, NoConvergence, ThermalPreloadRunaway
+from thermobear.coupled.ratings import preload_warnings, scene_clearance
+from thermobear.errors import InputError, NoConvergence, ThermalPreloadRunaway, ThermalRunaway
 
 __all__ = ["clearance_loop", "preload_runaway", "scene_at_clearance", "CLEARANCE_TOL_M"]
 
@@ -48,19 +60,38 @@ def scene_at_clearance(scene, Pd):
 
 
 def preload_runaway(scene, c: dict, history: list, what: str) -> ThermalPreloadRunaway:
-    """The named error of a consumed clearance: ``c`` the clearance dict at the state that consumed it
-    (:func:`~thermobear.coupled.ratings.scene_clearance`), ``history`` the loop's or heat-up's steps."""
+    """The named error of a radial preload that runs away: ``c`` the clearance dict at the last state
+    (:func:`~thermobear.coupled.ratings.scene_clearance`), ``history`` the loop's or heat-up's steps (its last
+    residual, operating − used clearance, is the error's ``residual`` [m]), ``what`` how it ran away.
+
+    >>> T = {"inner ring": 220.4, "outer ring": 20.0, "balls": 198.1}
+    >>> c = dict(unmounted=13.0, mounted=1.69, operating=-171.0, shaft_fit="k5", housing_fit="H7", temperatures_C=T)
+    >>> e = preload_runaway(None, c, [dict(used_um=-146.4, operating_um=-171.0)], "no fixed point")
+    >>> round(e.residual * 1e6, 1), e.clearance_history_m, round(e.dT_inner_outer_K, 1)
+    (24.6, [-0.000171], 200.4)
+    """
     T = c["temperatures_C"]
     dT = T["inner ring"] - T["outer ring"]
+    last = history[-1] if history else {}
+    res = abs(last.get("operating_um", c["operating"]) - last.get("used_um", 0.0)) * 1e-6
     return ThermalPreloadRunaway(
-        f"thermal preload: the operating clearance is consumed {what} — {c['unmounted']:.3g} µm unmounted, "
-        f"{c['mounted']:.3g} µm mounted ({c['shaft_fit']} / {c['housing_fit']}), {c['operating']:.3g} µm with the "
-        f"inner ring at {T['inner ring']:.1f} °C, outer ring {T['outer ring']:.1f} °C (ΔT {dT:.1f} K), balls "
-        f"{T['balls']:.1f} °C; the rigid-ring load distribution cannot carry a radial preload: a larger clearance "
-        "group, a looser fit or a cooler shaft is needed", iterations=len(history),
-        residual=float(c["operating"]) * 1e-6, last=c, history=history,
+        f"thermal preload runaway: {what} — {c['unmounted']:.3g} µm unmounted, {c['mounted']:.3g} µm mounted "
+        f"({c['shaft_fit']} / {c['housing_fit']}), {c['operating']:.3g} µm with the inner ring at "
+        f"{T['inner ring']:.1f} °C, outer ring {T['outer ring']:.1f} °C (ΔT {dT:.1f} K), balls {T['balls']:.1f} °C: "
+        "a larger clearance group, a looser fit or a cooler shaft is needed", iterations=len(history),
+        residual=res, last=c, history=history,
         clearance_history_m=[h["operating_um"] * 1e-6 for h in history], dT_inner_outer_K=float(dT),
         mounted_m=float(c["mounted"]) * 1e-6)
+
+
+def _running_away(hist: list, tol_m: float) -> bool:
+    """The loop's steps move to more preload without shrinking (module docstring): at a negative clearance,
+    r_k = g_k − P_k < 0 and |r_k| ≥ |r_{k−1}| (the secant slope of g ≥ 1), beyond the tolerance."""
+    if len(hist) < 2:
+        return False
+    (a, b) = ((h["operating_um"] * 1e-6, h["used_um"] * 1e-6) for h in hist[-2:])
+    r0, r1 = a[0] - a[1], b[0] - b[1]
+    return b[1] < 0 and r1 < -tol_m and r0 < 0 and abs(r1) >= abs(r0)
 
 
 def _step(scene, r, used, hist, tol_m):
@@ -68,32 +99,31 @@ def _step(scene, r, used, hist, tol_m):
     c = scene_clearance(scene, r.T_C, r.roles)
     if _choice(r) == "mounted":
         target = c["mounted"] * 1e-6
-        if target <= 0:
-            return InputError("bearing.shaft_fit", c["shaft_fit"], f"the fits consume the clearance at mounting "
-                              f"({c['unmounted']:.3g} → {c['mounted']:.3g} µm): a looser fit or a larger clearance "
-                              "group (the rigid-ring model carries no radial preload)"), None
         if abs(target - used) <= tol_m:
-            return _answer(r, c, used, hist, "mounted", "the fits at 20 °C"), None
+            return _answer(scene, r, c, used, hist, "mounted", "the fits at 20 °C"), None
         return None, target
     g = c["operating"] * 1e-6
     T = c["temperatures_C"]
     hist.append(dict(iteration=len(hist) + 1, used_um=used * 1e6, operating_um=c["operating"],
                      T_inner_ring_C=T["inner ring"], T_outer_ring_C=T["outer ring"], T_balls_C=T["balls"],
                      dT_inner_outer_K=T["inner ring"] - T["outer ring"], P_W=r.P_W))
-    if abs(g - used) <= tol_m and g > 0:
-        return _answer(r, c, used, hist, "operating", "fixed point"), None
-    if g <= 0:
-        if used <= 0:
-            return preload_runaway(scene, c, hist, "even with the clearance closed to 0 in the loads"), None
-        return None, 0.0
+    if abs(g - used) <= tol_m:
+        return _answer(scene, r, c, used, hist, "operating", "fixed point"), None
+    if _running_away(hist, tol_m):
+        return preload_runaway(scene, c, hist, "each step of the clearance loop adds at least as much preload as "
+                               "the last (the heat of the preload consumes more clearance than it took: no fixed "
+                               "point)"), None
     if len(hist) >= _MAXITER:
+        if g < used < 0:
+            return preload_runaway(scene, c, hist, f"the clearance loop still moves to more preload after "
+                                   f"{_MAXITER} steps"), None
         return NoConvergence(f"operating clearance: no fixed point within {_MAXITER} steps (last "
                              f"{used * 1e6:.4g} → {c['operating']:.4g} µm)", iterations=len(hist),
                              residual=abs(g - used), history=hist), None
     return None, g
 
 
-def _answer(r, c, used, hist, choice, how):
+def _answer(scene, r, c, used, hist, choice, how):
     dT = c["temperatures_C"]["inner ring"] - c["temperatures_C"]["outer ring"]
     res = abs(c["operating"] * 1e-6 - used) if choice == "operating" else 0.0
     clear = {**c, "used": used * 1e6, "iterations": max(len(hist), 1), "residual_um": res * 1e6,
@@ -102,7 +132,25 @@ def _answer(r, c, used, hist, choice, how):
               f"{c['housing_fit']}) → {used * 1e6:.3g} µm in the loads" +
               (f", inner ring {dT:.1f} K above the outer ({len(hist)} steps, residual {res * 1e6:.1e} µm)"
                if choice == "operating" else ""))
-    return dataclasses.replace(r, clearance_um=clear, models_used={**r.models_used, "clearance": (choice, reason)})
+    warned = r.warnings
+    if used < 0:
+        why = ("the fits consume the clearance at mounting" if choice == "mounted" else
+               "the fits and the ring temperatures consume the clearance")
+        warned = warned + preload_warnings(scene.bearing, used, c, f"{why}, in the loads")
+    return dataclasses.replace(r, clearance_um=clear, models_used={**r.models_used, "clearance": (choice, reason)},
+                               warnings=warned)
+
+
+def _stopped(scene, r, Pd, hist, c):
+    """A step's error at a negative clearance ``Pd`` [m] — the steady state at that preload runs away or its
+    contacts are overloaded — as the preload's runaway (the error as its cause); other errors as they are."""
+    overload = isinstance(r, InputError) and r.field == "Fa, Fr, M"
+    if Pd >= 0 or c is None or not (isinstance(r, ThermalRunaway) or overload):
+        return r
+    e = preload_runaway(scene, c, hist, f"the coupled steady state at {Pd * 1e6:.3g} µm has no solution "
+                        f"({type(r).__name__}: {' '.join(str(r).split())[:200]})")
+    e.__cause__ = r
+    return e
 
 
 def clearance_loop(scenes, first: list, solve, *, tol_m: float = CLEARANCE_TOL_M) -> list:
@@ -119,7 +167,22 @@ def clearance_loop(scenes, first: list, solve, *, tol_m: float = CLEARANCE_TOL_M
     -------
     list   per point: the state of the points whose clearance is ``given`` unchanged; of the others the
            state at the fixed point (``clearance_um`` with ``used``, ``iterations``, ``residual_um`` and the
-           ``history``), or the error that stopped it (:class:`~thermobear.errors.ThermalPreloadRunaway`)
+           ``history``; a negative one, a radial preload, with its warning), or the error that stopped it
+           (:class:`~thermobear.errors.ThermalPreloadRunaway` where the preload runs away)
+
+    Examples
+    --------
+    The oil-jet 6208 (CN, 13 µm) on k5 / H7, through :func:`thermobear.steady_state` (which runs this loop): the
+    fits and the warm inner ring consume the clearance, the answer is preloaded.
+
+    >>> import dataclasses, warnings
+    >>> import thermobear as tb
+    >>> s = tb.load_scene(tb.example_path("block_6208_oil_jet.toml"))
+    >>> with warnings.catch_warnings():
+    ...     warnings.simplefilter("ignore")
+    ...     st = tb.steady_state(dataclasses.replace(s, shaft_fit="k5", housing_fit="H7"))
+    >>> round(st.clearance_um["used"], 2), st.clearance_um["iterations"], round(st.P_W, 1)
+    (-5.55, 3, 33.0)
     """
     out = list(first)
     used = {i: sc.bearing.Pd for i, (sc, r) in enumerate(zip(scenes, first))
@@ -137,7 +200,8 @@ def clearance_loop(scenes, first: list, solve, *, tol_m: float = CLEARANCE_TOL_M
         if not nxt:
             break
         idx = list(nxt)
+        last = {i: scene_clearance(scenes[i], out[i].T_C, out[i].roles) for i in idx}
         for i, r in zip(idx, solve([scene_at_clearance(scenes[i], nxt[i]) for i in idx])):
-            used[i], out[i] = nxt[i], r
+            used[i], out[i] = nxt[i], _stopped(scenes[i], r, nxt[i], hist[i], last[i])
         live = {i: None for i in idx if not isinstance(out[i], Exception)}
     return out

@@ -135,8 +135,10 @@ def _seal_warning(scene, x_C, T_seal_C=None) -> list:
 
 
 def _unloaded(scene) -> bool:
-    """At speed without any load (Fa, Fr, Fz, M, My all 0)."""
-    return scene.n_rpm > 0 and not any(getattr(scene, k) for k in ("Fa", "Fr", "Fz", "M", "My"))
+    """At speed without any load (Fa, Fr, Fz, M, My all 0) and without a radial preload (a negative clearance
+    holds the rings centred, every ball loaded: :func:`~thermobear.contact.fits.clearance_preload`)."""
+    return (scene.n_rpm > 0 and not any(getattr(scene, k) for k in ("Fa", "Fr", "Fz", "M", "My"))
+            and scene.bearing.Pd >= 0)
 
 
 def _unloaded_warning(scene) -> list:

@@ -19,7 +19,7 @@ answers at the steady state's temperatures (:class:`Ratings`):
   (:func:`typical_fits`), stated.
 
 Outside the standards' domain the answer says so as named OutsideValidity warnings: s0 < 1, κ outside
-0.1 … 4, the clearance consumed (a radial preload).
+0.1 … 4, the clearance consumed (a radial preload: :func:`preload_warnings`, its compression and ball load).
 
 References
 ----------
@@ -35,7 +35,7 @@ from dataclasses import asdict, dataclass, field
 
 import numpy as np
 
-from thermobear.contact.fits import operating_clearance
+from thermobear.contact.fits import clearance_preload, operating_clearance
 from thermobear.contact.geometry import BallBearing
 from thermobear.contact.materials import material
 from thermobear.coupled.pipeline import sampled_lubricant
@@ -50,7 +50,7 @@ from thermobear.thermal.builders import Machine, seat_interferences
 from thermobear.validity import LIMITS, check, collect
 
 __all__ = ["RATING_OUTPUTS", "Ratings", "check_static_safety", "operating_lives", "operating_temperature_C",
-           "rating_samples", "scene_clearance", "scene_ratings", "typical_fits"]
+           "preload_warnings", "rating_samples", "scene_clearance", "scene_ratings", "typical_fits"]
 
 _LOAD_FIELDS = "operation (Fa_N, Fr_N, Fz_N)"
 
@@ -290,13 +290,54 @@ def scene_ratings(scene, steady, losses=None) -> Ratings:
             check("s0", s0, _LOAD_FIELDS, what=f"P0 = {P0:.4g} N, C0 = {C0:.4g} N")
         check("kappa", kappa, "lubricant viscosity at the operating temperature",
               what=f"nu {nu * 1e6:.3g} cSt at {T_op:.1f} °C, nu1 {nu1 * 1e6:.3g} cSt")
-        if "operating" in clear:
-            check("operating_clearance", clear["operating"] * 1e-6, "bearing clearance",
-                  what=f"mounted {clear['mounted']:.2f} µm, fits {clear['shaft_fit']} / {clear['housing_fit']}")
+    if "operating" in clear and "iterations" not in clear:     # (a clearance loop's answer warns of its own preload)
+        got += preload_warnings(b, clear["operating"] * 1e-6, clear, f"at the answer's temperatures; the loads used "
+                                f"{b.Pd * 1e6:.3g} µm (models.clearance = 'operating' solves the preload)")
     return Ratings(C_N=C, C0_N=C0, P_N=P, P0_N=P0, s0=s0, p_max_Pa=p or {"inner": 0.0, "outer": 0.0},
                    T_operating_C=T_op, nu_m2_s=nu, nu1_m2_s=nu1, kappa=kappa, contamination=str(scene.contamination),
                    e_C=e_C, a_ISO=a_iso, L10_h=float(lv["L10_h"]), L10m_h=float(lv["L10m_h"]), L10r_h=L10r,
                    clearance_um=clear, warnings=list(got))
+
+
+def preload_warnings(brg: BallBearing, Pd, c: dict, why: str) -> list:
+    r"""The named warning of a radial preload: the operating clearance ``Pd`` [m] negative (``c`` the clearance
+    dict of :func:`scene_clearance`, ``why`` where it arises), with the compression and ball load of the rings
+    centred
+
+    .. math:: δ_0 = −P_d/2, \qquad Q_0 = K_n δ_0^{1.5}
+
+    (:func:`~thermobear.contact.fits.clearance_preload`; Harris & Kotzalas 2007 ch. 3 and 7): an
+    :class:`~thermobear.errors.OutsideValidity` of :data:`thermobear.validity.LIMITS` ``operating_clearance``, or
+    none with a clearance.
+
+    Parameters
+    ----------
+    brg : BallBearing   the (radial) bearing
+    Pd : float          operating diametral clearance [m]
+    c : dict            ``mounted`` [µm], ``shaft_fit``, ``housing_fit`` (:func:`scene_clearance`)
+    why : str           where the preload arises (in the warning's text)
+
+    Returns
+    -------
+    list                the warning, or empty
+
+    Examples
+    --------
+    >>> import thermobear as tb
+    >>> c = {"mounted": 1.69, "shaft_fit": "k5", "housing_fit": "H7"}
+    >>> w = preload_warnings(tb.bearing("6208"), -4e-6, c, "warm")
+    >>> w[0].quantity, "compressed by 2 µm, Q0 = 34 N" in str(w[0])
+    ('operating_clearance', True)
+    """
+    if not Pd < 0:
+        return []
+    Q0 = float(clearance_preload(brg, Pd))
+    with collect(replay=False) as got:
+        check("operating_clearance", Pd, "bearing clearance",
+              what=f"{why}: mounted {c['mounted']:.2f} µm, fits {c['shaft_fit']} / {c['housing_fit']}; a radial "
+                   f"preload, each ball compressed by {-0.5 * Pd * 1e6:.3g} µm, Q0 = {Q0:.3g} N between the centred "
+                   "rings")
+    return list(got)
 
 
 def operating_temperature_C(T_C: dict, roles: dict):

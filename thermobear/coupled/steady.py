@@ -438,7 +438,7 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> l
     list   per scene, its :class:`SteadyState`, or the InputError / SolverError that stopped it
            (a failing point never stops the others); points with ``models.clearance`` mounted or
            operating at their clearance's fixed point (:func:`~thermobear.coupled.clearance.clearance_loop`;
-           a consumed clearance: :class:`~thermobear.errors.ThermalPreloadRunaway`)
+           a negative one is a radial preload; one that runs away: :class:`~thermobear.errors.ThermalPreloadRunaway`)
     """
     if isinstance(scenes, Scene) or not hasattr(scenes, "__iter__"):
         raise InputError("scenes", type(scenes).__name__, "a list of Scene (steady_state solves one scene)")

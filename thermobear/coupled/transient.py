@@ -51,11 +51,11 @@ import numpy as np
 
 from thermobear.coupled.limits import emit, film_load_preload_warnings, point_warnings, runaway_at, runaway_in
 from thermobear.coupled.clearance import scene_at_clearance, preload_runaway
-from thermobear.coupled.ratings import check_static_safety, scene_clearance
+from thermobear.coupled.ratings import check_static_safety, preload_warnings, scene_clearance
 from thermobear.coupled.pipeline import Family, family_film_loads, family_loads, film_temperature_C, stack_loads
 from thermobear.coupled.pointmodel import PointModel, heat_sources, point_model
 from thermobear.coupled.sources import loss_sources, prepared_for
-from thermobear.errors import InputError, OutsideValidity, SolverError
+from thermobear.errors import InputError, OutsideValidity, SolverError, ThermalRunaway
 from thermobear.losses import prepare_contacts
 from thermobear.arrays import instance_of, take
 from thermobear.coupled.blend import StackedBlend
@@ -234,6 +234,7 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
     cells: dict = {}        # scene (id) → its _FilmCells: the loads solved for it during the run
     last_film = None        # (film temperature's rate at its end [K/s], scene) of the last piece
     settling = _Settling()  # per scene: where its heat-up settled (fine cells there), past a jump of the loads
+    c = None                # the operating clearance at the last piece's start (models.clearance = operating)
     with warnings.catch_warnings():
         # property calls at the integrator's trial states may lie beyond a correlation's data; the
         # validity of the states reported is checked once, on the series (limits.point_warnings)
@@ -248,11 +249,7 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
             sc_p = sc
             if clear:                         # the clearance at the piece's start temperatures
                 c = _piece_clearance(sc, T_state, first[1] if first else pre.coupling.roles, clear_hist, ts)
-                if c["operating"] <= 0:
-                    err = preload_runaway(sc, c, clear_hist, f"during the heat-up at t = {ts:g} s")
-                    err.last = _assemble(out_t, out_T, out_rep, first, seg_changes, [], False) if out_t else None
-                    raise err          # what was integrated: err.last (a TransientRun, completed False)
-                sc_p = scene_at_clearance(sc, c["operating"] * 1e-6)
+                sc_p = scene_at_clearance(sc, c["operating"] * 1e-6)       # negative: a radial preload
                 alts = _alternatives(sc_p, load)
             models = max(alts, key=lambda a: a.weight).models
             film = load is None and any(a.models["load_model"][0] == "film" for a in alts)
@@ -311,7 +308,14 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
                     c1 = scene_clearance(sc, _T_nodes(T_state, cp.roles, sc), cp.roles)["operating"]
                     f.append(_CLEAR_DRIFT_M / max(abs(c1 - c["operating"]) * 1e-6, 1e-15))
                 film_dt = (te - ts) * float(np.clip(min(f), 0.5, 4.0))
-            runaway_at(T_state, te)
+            try:
+                runaway_at(T_state, te)
+            except ThermalRunaway as e:      # at a radial preload: the preload's runaway (what was integrated: .last)
+                if not (clear and c["operating"] < 0):
+                    raise
+                err = preload_runaway(sc, c, clear_hist, f"during the heat-up at t = {te:g} s ({e})")
+                err.last = _assemble(out_t, out_T, out_rep, first, seg_changes, [], False)
+                raise err from e
         if completed and film and len(nodes) == 2 and settling.warning is None and id(sc) not in settling.at:
             # ends settled inside a grid cell: the loads there?
             settling.warning = _settled_jump(kept, alts, load, pre, fc, T_state, cp.roles, last_film,
@@ -328,6 +332,8 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
         for fc in cells.values():             # the film loads it passed: a preload by the films (cold, viscous oil)
             got += [w for w in fc.preload_warnings() if str(w) not in map(str, got)]
     got += [settling.warning] if settling.warning is not None else []
+    if c is not None and c["operating"] < 0:      # the last piece at a radial preload
+        got += preload_warnings(pieces[i][2].bearing, c["operating"] * 1e-6, c, f"during the heat-up, t = {te:g} s")
     emit(got)
     return _assemble(out_t, out_T, out_rep, first, seg_changes, got, completed)
 

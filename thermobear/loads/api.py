@@ -18,6 +18,7 @@ from dataclasses import fields
 import numpy as np
 
 from thermobear.arrays import instance_of
+from thermobear.contact.fits import clearance_preload
 from thermobear.contact.geometry import BallBearing, bearing
 from thermobear.contact.kinematics import entrainment_speed
 from thermobear.errors import InputError
@@ -38,9 +39,10 @@ def high_speed_cases(brg: BallBearing, Fa, Fr, n_rpm, rotating: str = "inner", t
     """Which load cases the ``"auto"`` form solves in the high-speed form (boolean, broadcast shape).
 
     High speed where :func:`thermobear.loads.needs_high_speed` says so — the ball centrifugal force above
-    ``threshold`` of the typical ball load Q = max(F_a / (Z sin α0), 5 F_r / Z) (the axial share, or
-    Stribeck's most loaded ball; F_r the radial load √(F_r² + F_z²)) — and the form applies: a radial or
-    angular contact bearing with its inner ring rotating.  A thrust bearing's centrifugal force acts across its grooves (not modelled).
+    ``threshold`` of the typical ball load Q = max(F_a / (Z sin α0), 5 F_r / Z, Q_0) (the axial share,
+    Stribeck's most loaded ball, or a radial preload's ball load Q_0 = K_n (−P_d/2)^1.5,
+    :func:`~thermobear.contact.fits.clearance_preload`; F_r the radial load √(F_r² + F_z²)) — and the form
+    applies: a radial or angular contact bearing with its inner ring rotating.  A thrust bearing's centrifugal force acts across its grooves (not modelled).
 
     >>> from thermobear.contact.geometry import bearing
     >>> high_speed_cases(bearing("7210"), 450.0, 325.0, [0.0, 1000.0, 3200.0]).tolist()
@@ -51,6 +53,8 @@ def high_speed_cases(brg: BallBearing, Fa, Fr, n_rpm, rotating: str = "inner", t
         return np.zeros(Fa.shape, bool)
     Fr = np.hypot(Fr, Fz)
     Qtyp = np.maximum(np.maximum(Fa / (brg.Z * max(np.sin(brg.alpha0), 1e-3)), Fr * 5.0 / brg.Z), 1e-9)
+    if brg.Pd < 0:                          # a radial preload loads every ball by Q_0 at least
+        Qtyp = np.maximum(Qtyp, float(clearance_preload(brg, brg.Pd)))
     return needs_high_speed(brg, n, Qtyp, threshold=threshold, rotating=rotating)[0] & (n > 0)
 
 

@@ -79,8 +79,8 @@ from thermobear.contact.geometry import BallBearing
 from thermobear.errors import InputError, NoConvergence, NoEquilibrium
 from thermobear.loads.filmlaw import _FilmAt, _NVMFixed, _carry, _invert, invert_error
 from thermobear.loads.newton import NewtonOptions, RowState, newton
-from thermobear.loads.rings import (LoadDistribution, arm_length, azimuths, check_stiffness, levers, ring_direction,
-                                    ring_loads, unbatch)
+from thermobear.loads.rings import (LoadDistribution, arm_length, azimuths, check_stiffness, force_scale, levers,
+                                    ring_direction, ring_loads, unbatch)
 from thermobear.loads.static import _StaticProblem, load_distribution_static
 from thermobear.lubrication.film import film_thickness_nvm
 
@@ -338,10 +338,11 @@ def film_load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, *, u_i, u_o
     Z, A, R = brg.Z, brg.A, arm_length(brg, tilt_arm)
     F_app = loads.applied(R)
     zero = np.max(np.abs(F_app), axis=1) == 0.0
-    if np.any(zero):
+    if np.any(zero) and brg.Pd >= 0:        # (a radial preload loads every ball without a load)
         raise InputError("Fa, Fr, M", loads.case(int(np.argmax(zero))),
-                         "the film load distribution needs a load (every ball carries a film force)")
-    scale = np.max(np.abs(F_app), axis=1)
+                         "the film load distribution needs a load or a radial preload (every ball carries a film "
+                         "force)")
+    scale = force_scale(brg, F_app)
     law = _Film(brg, _per_ball("u_i", u_i, _pos, shape, Z), _per_ball("u_o", u_o, _pos, shape, Z),
                 _per_case("eta", eta, _pos, shape), _per_case("alpha_p", alpha_p, _nonneg, shape), stiffness)
     # start: the dry solution (ring displacements scaled by A, as in thermobear.loads.static)
@@ -352,7 +353,7 @@ def film_load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, *, u_i, u_o
         dry = load_distribution_static(brg, Fa=F[:, 0], Fr=F[:, 1], M=F[:, 2] if loads.tilt_free else None,
                                        Fz=F[:, 3], My=F[:, 4] if loads.tilt_free else None, stiffness=stiffness,
                                        tilt_arm=tilt_arm)
-    y = np.stack([(np.reshape(dry.delta_a, nb) - A * np.sin(brg.alpha0)) / A, np.reshape(dry.delta_r, nb) / A,
+    y = np.stack([(np.reshape(dry.delta_a, nb) - brg.A_a0) / A, np.reshape(dry.delta_r, nb) / A,
                   np.reshape(dry.theta, nb) * R / A, np.reshape(dry.delta_z, nb) / A,
                   np.reshape(dry.theta_y, nb) * R / A][:nd], axis=1)
     Qw = np.maximum(np.asarray(dry.Q_i).reshape(nb, Z), 1e-6 * (scale[:, None] / Z))   # warm start
@@ -376,7 +377,7 @@ def film_load_distribution(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, *, u_i, u_o
     if not (np.all(np.isfinite(Q)) and np.all(Q > 0)):
         raise NoConvergence("film load distribution: a ball load is not finite and positive",
                             iterations=int(its.max()), residual=float(norm.max()))
-    da = y[:, 0] * A + A * np.sin(brg.alpha0)
+    da = y[:, 0] * A + brg.A_a0
     dz, thy = (y[:, 3] * A, y[:, 4] * A / R) if nd == 5 else (np.zeros(nb), np.zeros(nb))
     return FilmLoadDistribution(
         delta_a=unbatch(shape, da), delta_r=unbatch(shape, y[:, 1] * A), theta=unbatch(shape, y[:, 2] * A / R),

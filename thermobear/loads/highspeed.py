@@ -10,7 +10,7 @@ Geometry of ball j (Jones 1960 [1]; Harris 2001 [2] §8.2).  x axial (the direct
 pushes the inner ring), r radial outward through the ball centre; O_o and O_i
 the outer and inner groove curvature centres, C the ball centre:
 
-    O_i − O_o = (A1_j, A2_j) = (δa + ℜ (θ cos ψ_j + θ_y sin ψ_j),  A cos α0 + δr cos ψ_j + δz sin ψ_j)
+    O_i − O_o = (A1_j, A2_j) = (δa + ℜ (θ cos ψ_j + θ_y sin ψ_j),  A_r0 + δr cos ψ_j + δz sin ψ_j)
     C − O_o   = (X1_j, X2_j) = ((f_o − ½)D + δo_j)(sin αo_j, cos αo_j)
     O_i − C   = (A1_j − X1_j, A2_j − X2_j) = ((f_i − ½)D + δi_j)(sin αi_j, cos αi_j)
 
@@ -20,7 +20,9 @@ The two distance equations of Jones (1960) are explicit in δi, δo,
 
 so they are satisfied identically and the unknowns left per ball are X1, X2;
 α_i, α_o are the directions of those two vectors.  Q_i = K_i δi^1.5,
-Q_o = K_o δo^1.5.
+Q_o = K_o δo^1.5.  A_r0 = A − P_d/2 is the radial distance of the groove centres with the rings centred (A cos α0
+with a clearance; with a negative one, a radial preload, every ball is compressed between centred rings:
+:attr:`~thermobear.contact.geometry.BallBearing.A_r0`, :mod:`thermobear.loads.rings`).
 
 Free-body diagram of the ball (re-derived here; unit normal n = (sin α, cos α)
 pointing from the inner towards the outer contact, tangent e = (cos α, −sin α),
@@ -159,7 +161,8 @@ from thermobear.loads.highspeed_model import _HSProblem
 from thermobear.loads.highspeed_start import start as _start
 from thermobear.loads.highspeed_start import static_start
 from thermobear.loads.newton import NewtonOptions, continuation, newton
-from thermobear.loads.rings import LoadDistribution, arm_length, azimuths, check_stiffness, ring_loads, unbatch
+from thermobear.loads.rings import (LoadDistribution, arm_length, azimuths, check_stiffness, force_scale, ring_loads,
+                                    unbatch)
 from thermobear.loads.static import load_distribution_static
 
 __all__ = ["HighSpeedExtras", "FilmInputs", "load_distribution_high_speed", "load_distribution_high_speed_full",
@@ -437,7 +440,7 @@ def _hs_problem(brg, loads, n_b, stiffness, control, R):
     Fc0 = 0.5 * brg.ball_mass * brg.dm * w_c0**2
     load_max = np.max(np.abs(F_app), axis=1)
     zero = load_max == 0.0
-    scale = np.maximum(np.maximum(load_max, Fc0), 1e-300)
+    scale = np.maximum(np.maximum(force_scale(brg, F_app), Fc0), 1e-300)
     free_g = np.tile(loads.free(), (nb, 1))
     if brg.kind == "thrust":
         # the shaft washer is located radially by the shaft (Fr = 0 is enforced): hold δr = 0.

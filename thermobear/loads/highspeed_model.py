@@ -80,7 +80,7 @@ def _fixed(brg, lam_i, lam_o, kin_control, ndof, arm):
     hdm, hD = 0.5 * brg.dm, 0.5 * brg.D
     # rows (1, Z) of one value and (1, 2Z) of an inner and an outer value, each value repeated Z times
     ones = dict(RB0=1.0 + gp * gp, RB1=2.0 * sg * gp, CB0=sg * gp, SGP=sg * gp, ONE=1.0, HD=hD)
-    pairs = dict(off=(0.0, A * np.cos(brg.alpha0)), c0=((brg.fi - 0.5) * brg.D, (brg.fo - 0.5) * brg.D),
+    pairs = dict(off=(0.0, brg.A_r0), c0=((brg.fi - 0.5) * brg.D, (brg.fo - 0.5) * brg.D),
                  K0=(Ki, Ko), K15=(1.5 * Ki, 1.5 * Ko), ONE2=(1.0, 1.0), HDM=(hdm, hdm),
                  RSG=(-hdm * gp, hdm * gp), NRSG=(hdm * gp, -hdm * gp), HD2=(hD, hD), NHD2=(-hD, -hD),
                  LAMD=(lam_i / brg.D, lam_o / brg.D), LP=(lam_i / brg.D, -lam_o / brg.D), PM=(1.0, -1.0))

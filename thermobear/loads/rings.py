@@ -11,10 +11,13 @@ outer one by (Jones 1960 [1]; Harris 2001 [2] ch. 7; ISO/TS 16281 [3], rigid rin
 .. math::
 
     A_{1j} = δ_a + ℜ (θ \cos ψ_j + θ_y \sin ψ_j), \qquad
-    A_{2j} = A \cos α_0 + δ_r \cos ψ_j + δ_z \sin ψ_j
+    A_{2j} = A_{r0} + δ_r \cos ψ_j + δ_z \sin ψ_j, \qquad A_{r0} = A − P_d/2
 
 (axial, radial in the ball's own radial plane), A = (f_i + f_o − 1) D the unloaded distance of the
-groove centres, α0 the free contact angle and ℜ the tilt arm (:data:`TILT_ARMS`): by default the radius
+groove centres, A_r0 their radial distance with the rings centred (A cos α0 with a clearance P_d ≥ 0, α0 the
+free contact angle; A − P_d/2 > A with a negative clearance, a radial preload that compresses every ball by
+−P_d/2: :attr:`~thermobear.contact.geometry.BallBearing.A_r0`, Harris & Kotzalas 2007 [4] ch. 2) and ℜ the
+tilt arm (:data:`TILT_ARMS`): by default the radius
 ℜ_i = d_m/2 + (f_i − ½) D cos α0 of the locus of inner groove centres (exact for a rigid ring turning
 about its centre, Harris 2001 §7.4), or the pitch radius d_m/2 (the convention the ISO/TS 16281
 reference examples are computed with, :mod:`thermobear.rating.iso16281`).  The ring displacement across
@@ -38,6 +41,9 @@ References
 .. [2] Harris, T. A. (2001). *Rolling Bearing Analysis*, 4th ed., Wiley, ch. 7.
 .. [3] ISO/TS 16281:2008. Rolling bearings — Methods for calculating the modified reference
    rating life for universally loaded bearings.
+.. [4] Harris, T. A., Kotzalas, M. N. (2007), *Essential Concepts of Bearing Technology* (Rolling Bearing
+   Analysis, 5th ed., vol. 1), CRC Press, ch. 2 (diametral clearance, free contact angle) and ch. 7
+   (load distribution under radial load, δ_ψ = δ_r cos ψ − P_d/2).
 """
 from __future__ import annotations
 
@@ -45,11 +51,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from thermobear.contact.fits import clearance_preload
 from thermobear.contact.geometry import BallBearing
 from thermobear.errors import InputError, NoEquilibrium
 
 __all__ = ["LoadDistribution", "STIFFNESS_MODES", "TILT_ARMS", "RingLoads", "check_stiffness", "ring_loads",
-           "arm_length", "levers", "COMPONENT", "lever_matrix", "ring_sums", "azimuths", "unbatch", "ring_direction"]
+           "arm_length", "levers", "COMPONENT", "lever_matrix", "ring_sums", "azimuths", "unbatch", "ring_direction",
+           "force_scale", "groove_offsets"]
 
 STIFFNESS_MODES = ("nominal", "per_ball")
 #: tilt arm ℜ of the groove-centre map: "groove" the inner groove-centre radius ℜ_i (Harris 2001 §7.4, default),
@@ -257,6 +265,71 @@ def ring_loads(brg: BallBearing, Fa, Fr, M, Fz=0.0, My=None, extra=()) -> RingLo
     ndof = 5 if F.size and np.any(F[:, 3:] != 0.0) else 3
     return RingLoads(shape, F, M is not None or My is not None, ndof,
                      tuple(np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for v in extra))
+
+
+def groove_offsets(brg: BallBearing):
+    r"""Offsets of the inner groove curvature centres from the outer ones where the balls first touch, rings
+    unloaded, and the constant of the cancellation-free approach [m, m, m²].
+
+    .. math::
+
+        (A_{a0}, A_{r0}), \qquad c = A_{a0}^2 + A_{r0}^2 − A^2 = \tfrac{−P_d}{2}\left(2A − \tfrac{P_d}{2}\right)
+
+    (:attr:`~thermobear.contact.geometry.BallBearing.A_a0`, :attr:`~thermobear.contact.geometry.BallBearing.A_r0`;
+    c = 0 with a clearance, the balls just touching; with a negative clearance P_d the rings centred, each ball
+    compressed by −P_d/2).  A ball's approach at offsets A0 + d is then s = A_j − A = (c + Σ d (2 A0 + d)) / (A_j + A)
+    (Harris & Kotzalas 2007 [4] ch. 7).
+
+    Parameters
+    ----------
+    brg : BallBearing
+
+    Returns
+    -------
+    (A_a0, A_r0, c) : float   axial and radial offsets [m], the approach's constant [m²]
+
+    Examples
+    --------
+    >>> from thermobear.contact.geometry import bearing
+    >>> b = bearing("6208").with_(Pd=-8e-6)
+    >>> a0, r0, c = groove_offsets(b)
+    >>> a0, bool(abs(c / (r0 + b.A) - 4e-6) < 1e-18)
+    (0.0, True)
+    """
+    c = 0.0 if brg.Pd >= 0 else -0.5 * brg.Pd * (2.0 * brg.A - 0.5 * brg.Pd)
+    return brg.A_a0, brg.A_r0, c
+
+
+def force_scale(brg: BallBearing, F_app):
+    r"""The force scale of each load case's equilibrium residuals [N]: its largest applied load (forces, moments
+    over their arm), at least the balls' radial preload
+
+    .. math:: F_s = \max\left(\max_k |F_k|,\; Z Q_0\right), \qquad Q_0 = K_n (−P_d/2)^{1.5}
+
+    (:func:`~thermobear.contact.fits.clearance_preload`; Q_0 = 0 with a clearance), so that a light load on a
+    preloaded bearing is solved to the precision its ball forces allow.
+
+    Parameters
+    ----------
+    brg : BallBearing
+    F_app : ndarray    applied loads (nb, ndof) [N] (moments over their arm ℜ)
+
+    Returns
+    -------
+    ndarray            (nb,) force scale [N]
+
+    Examples
+    --------
+    >>> from thermobear.contact.geometry import bearing
+    >>> b = bearing("6208")
+    >>> F = np.array([[0.0, 10.0, 0.0]])
+    >>> float(force_scale(b, F)[0]), round(float(force_scale(b.with_(Pd=-4e-6), F)[0]), 1)
+    (10.0, 306.2)
+    """
+    s = np.max(np.abs(F_app), axis=1)
+    if brg.Pd < 0:
+        s = np.maximum(s, brg.Z * float(clearance_preload(brg, brg.Pd)))
+    return s
 
 
 def azimuths(Z: int):

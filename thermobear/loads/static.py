@@ -52,7 +52,8 @@ from thermobear.contact.geometry import BallBearing
 from thermobear.errors import InputError, NoConvergence, NoEquilibrium
 from thermobear.loads.newton import NewtonOptions, RowState, continuation, newton
 from thermobear.loads.rings import (STIFFNESS_MODES, LoadDistribution, RingLoads, arm_length, azimuths,
-                                    check_stiffness, lever_matrix, ring_direction, ring_loads, ring_sums, unbatch)
+                                    check_stiffness, force_scale, groove_offsets, lever_matrix, ring_direction,
+                                    ring_loads, ring_sums, unbatch)
 
 __all__ = ["load_distribution_static", "ring_reaction", "reaction_problem", "reaction_of", "axial_contact_angle", "needs_high_speed", "LoadDistribution",
            "STIFFNESS_MODES"]
@@ -151,15 +152,17 @@ def needs_high_speed(brg: BallBearing, n_rpm, Q_typical, threshold: float = 0.05
 
 def _constants(brg, ndof):
     """Fixed arrays of a bearing (formed with each problem, ≈ 20 µs): the lever matrix L (ndof, 2Z) [m], the
-    groove-centre offsets at first touch (A sin α0 | A cos α0) (2Z,) and twice them, the sum matrix
+    groove-centre offsets at first touch (A_a0 | A_r0) (2Z,) and twice them, the sum matrix
     (5 Z, ndof² + ndof) turning per-ball rows (g_aa, g_ar, g_rr, Q sin α, Q cos α) into the Jacobian and the
-    ring forces (:func:`thermobear.loads.rings.ring_sums`), and K_n at the nominal angle [N/m^1.5]
-    (:attr:`~thermobear.contact.geometry.BallBearing.K_nominal`)."""
-    Z, A = brg.Z, brg.A
+    ring forces (:func:`thermobear.loads.rings.ring_sums`), K_n at the nominal angle [N/m^1.5]
+    (:attr:`~thermobear.contact.geometry.BallBearing.K_nominal`) and the constant c of the approach [m²] (0, or
+    the radial preload's: :func:`thermobear.loads.rings.groove_offsets`)."""
+    Z = brg.Z
     L = lever_matrix(brg, ndof)
     sums = ring_sums(Z, ndof)
-    A0 = np.concatenate([np.full(Z, A * np.sin(brg.alpha0)), np.full(Z, A * np.cos(brg.alpha0))])
-    return L, A0, 2.0 * A0, sums, float(brg.Kn())
+    a0, r0, c = groove_offsets(brg)
+    A0 = np.concatenate([np.full(Z, a0), np.full(Z, r0)])
+    return L, A0, 2.0 * A0, sums, float(brg.Kn()), c
 
 
 class _StaticState(RowState):
@@ -186,7 +189,7 @@ class _StaticProblem:
         self.all_free = fi.size == free.size
         self.free_idx = slice(0, fi.size) if fi.size and fi[-1] == fi.size - 1 else fi    # a prefix: a view
         self.Z, self.A = brg.Z, brg.A
-        self.L, self.A0, self.A0x2, self.sums, self.Kn0 = _constants(brg, self.ndof)
+        self.L, self.A0, self.A0x2, self.sums, self.Kn0, self.c0 = _constants(brg, self.ndof)
 
     def rows(self, idx):
         new = _StaticProblem.__new__(_StaticProblem)
@@ -198,14 +201,18 @@ class _StaticProblem:
 
     def geometry(self, y):
         """Groove-centre offsets (A1 | A2) (nb, 2Z), their distance A_j and the signed approach s = A_j − A
-        (nb, Z) [m] (negative: a gap), formed without cancellation."""
+        (nb, Z) [m] (negative: a gap), formed without cancellation (a radial preload's constant c included,
+        :func:`thermobear.loads.rings.groove_offsets`)."""
         Z = self.Z
         d = y @ self.L
         AA = d + self.A0
         sq = AA * AA
         Aj = np.sqrt(sq[:, :Z] + sq[:, Z:])
         t = d * (self.A0x2 + d)
-        s = (t[:, :Z] + t[:, Z:]) / (Aj + self.A)
+        t = t[:, :Z] + t[:, Z:]
+        if self.c0:
+            t += self.c0
+        s = t / (Aj + self.A)
         return AA, Aj, s
 
     def evaluate(self, y):
@@ -268,6 +275,8 @@ def _start(brg, F, ndof, tilt_free, arm, Kn0):
         Qmax = 5.0 * Fr / (Z * np.maximum(ca0, 0.2))
         # the clearance is taken up radially only when no axial load has taken it up already
         dr0 = (Qmax / Kn0) ** (2.0 / 3.0) / np.maximum(ca0, 0.2) + np.where(Fa_eff > 0, 0.0, brg.Pd / 2.0)
+        if brg.Pd < 0:       # a radial preload: at most the ring's travel under its preloaded stiffness
+            dr0 = np.minimum(np.maximum(dr0, 0.0), Fr / (0.75 * Z * Kn0 * np.sqrt(-0.5 * brg.Pd)))
         nr = np.where(Fr > 0, Fr, 1.0)
         y[:, 1] = np.where(Fr > 0, dr0 / A * (Fy / nr), 0.0)
         if ndof == 5:
@@ -299,7 +308,7 @@ def _solve(brg, loads, stiffness, tol, maxiter, arm, y0=None, factor=1.0):
     """Newton from the closed-form start (or ``y0``) on a batch of load cases (:class:`RingLoads`, scaled by
     ``factor``): NewtonResult and the problem."""
     F_app = loads.applied(arm, factor)                                   # moments as forces at the arm ℜ
-    scale = np.maximum(np.max(np.abs(F_app), axis=1), 1e-300)
+    scale = np.maximum(force_scale(brg, F_app), 1e-300)
     pb = _StaticProblem(brg, F_app, scale, loads.free(), stiffness)
     if y0 is None:
         y0 = _start(brg, loads.F if factor == 1.0 else factor * loads.F, loads.ndof, loads.tilt_free, arm, pb.Kn0)
@@ -454,7 +463,7 @@ def _start_unknowns(brg, start, nb, ndof, arm):
     v = np.broadcast_to(v.reshape(-1, n), (nb, n))
     if n < ndof:
         v = np.concatenate([v, np.zeros((nb, ndof - n))], axis=1)
-    y = np.stack([(v[:, 0] - A * np.sin(brg.alpha0)) / A, v[:, 1] / A, v[:, 2] * arm / A], axis=1)
+    y = np.stack([(v[:, 0] - brg.A_a0) / A, v[:, 1] / A, v[:, 2] * arm / A], axis=1)
     if ndof == 5:
         y = np.concatenate([y, np.stack([v[:, 3] / A, v[:, 4] * arm / A], axis=1)], axis=1)
     return y
@@ -470,7 +479,7 @@ def _result(brg, pb, y, norm, its, loads, arm, Fa, Fr):
     al = np.arctan2(A1, A2)
     Kn = brg.Kn(al) if pb.per_ball else pb.Kn0
     Q = Kn * sp ** 1.5
-    if zero.any():
+    if zero.any() and brg.Pd >= 0:     # unloaded (a radial preload loads every ball: Q_0, rings centred)
         Q = np.where(zero[:, None], 0.0, Q)
         sp = np.where(zero[:, None], 0.0, sp)
     alpha = al if brg.kind == "deep_groove" else np.where(Q > 0, al, brg.alpha0)
@@ -480,7 +489,7 @@ def _result(brg, pb, y, norm, its, loads, arm, Fa, Fr):
     if brg.kind == "deep_groove" and zero.any():
         alpha = np.where(zero[:, None], 0.0, alpha)
     out5 = np.zeros((y.shape[0], 5))
-    out5[:, 0] = np.where(zero, 0.0, y[:, 0] * A + A * np.sin(brg.alpha0))     # from the centred position
+    out5[:, 0] = np.where(zero, 0.0, y[:, 0] * A + brg.A_a0)     # from the centred position
     for k in range(1, y.shape[1]):
         out5[:, k] = np.where(zero, 0.0, y[:, k] * A if k % 2 else y[:, k] * A / arm)
     return LoadDistribution(
@@ -563,7 +572,7 @@ def reaction_of(pb, q, arm):
     at the ring displacements q (nb, 5) [m, rad], and the scaled unknowns y (:func:`ring_reaction`)."""
     A, brg = pb.A, pb.brg
     to_y = np.array([1.0 / A, 1.0 / A, arm / A, 1.0 / A, arm / A])
-    y = (q - np.array([A * np.sin(brg.alpha0), 0.0, 0.0, 0.0, 0.0])) * to_y
+    y = (q - np.array([brg.A_a0, 0.0, 0.0, 0.0, 0.0])) * to_y
     st = pb.evaluate(y)
     to_P = np.array([1.0, 1.0, arm, 1.0, arm])
     return st.res * to_P, st.J * to_P[:, None] * to_y[None, :], y
