@@ -153,3 +153,24 @@ def test_cli_preload_one_warning_and_runaway_exit_code_3_one_line(tmp_path, caps
     assert main(["run", str(g), "--set", "n_rpm=9000", "--set", "fixed_C.outer_ring=20"]) == 3
     err = capsys.readouterr().err
     assert len(err.strip().splitlines()) == 1 and "preload runaway" in err and "no fixed point" in err
+
+
+def test_a_machine_that_states_its_seats_says_how_they_enter_the_loads():
+    """`thermobear init` writes the seats' interference into [shaft] / [housing]: the clearance stays as given by
+    default (the usual fits' probable interference without surface smoothing errs tight) and the reason says so —
+    it said "fits not stated" beside ratings that named those seats; with models.clearance = 'operating' a seat
+    changed in the file changes the loads and the answer."""
+    import tomllib
+    from thermobear.app.scaffold import scaffold
+    from thermobear.models import clearance_choice
+    from thermobear.scene import scene_from_dict
+    d = tomllib.loads(scaffold("6206", "grease", n_rpm=3000.0, Fr_N=1500.0))
+    d["models"] = {"clearance": "operating"}
+    s = scene_from_dict(d)
+    plain = scene_from_dict({k: v for k, v in d.items() if k != "models"})
+    choice, why = clearance_choice(plain)
+    assert choice == "given" and "[shaft] interference_um 11.5 µm" in why and "not stated" not in why
+    d["shaft"]["interference_um"] = 21.0
+    tight = scene_from_dict(d)
+    r, rt = tb.steady_state(s), tb.steady_state(tight)
+    assert "fixed point" in r.models_used["clearance"][1] and rt.P_W > r.P_W

@@ -418,6 +418,12 @@ def clearance_choice(scene: Scene) -> tuple:
     if scene.T_C is None and (scene.shaft_fit is not None or scene.housing_fit is not None):
         return "operating", (f"deep groove bearing with fits given ({scene.shaft_fit or '-'} / {scene.housing_fit or '-'}):"
                              f" {pd} unmounted, mounted and warmed to the solution's ring temperatures (fixed point)")
+    seats = [f"[{k}] interference_um {getattr(scene.network, k).interference * 1e6:.3g} µm" for k in ("shaft", "housing")
+             if getattr(getattr(scene.network, k, None), "interference", None) is not None]
+    if seats:      # a machine's seats (init writes the usual fits' probable interference): reported, not in the loads
+        return "given", (f"{pd} as given; the machine's seats ({', '.join(seats)}) give the operating clearance at "
+                         "the solution, reported with the ratings — models.clearance = 'operating' uses it in the loads "
+                         "(a fixed point; it neglects the seats' surface smoothing, so it errs tight)")
     return "given", (f"{pd} as given (fits not stated: the operating clearance at the solution is reported with the "
                      "ratings; bearing.shaft_fit / housing_fit or models.clearance = 'operating' close the loop)")
 
@@ -447,6 +453,8 @@ class Alternative:
     models: dict
     dry: DryRow | None
     weight: float
+
+
 def oil_level(scene: Scene) -> tuple:
     """``(H [m] or None, how)``: the oil level above the lowest point of the outer-ring raceway,
     ``lubricant.oil_level_mm`` (None where the scene does not give it: no default — the level of a bath
