@@ -55,3 +55,20 @@ def test_a_parameter_the_models_do_not_read_is_refused_up_front(monkeypatch):
     skf = load_scene(LOGS / "seed002_skf_scene.toml")
     with pytest.raises(InputError, match=r"^--param = 'mu_boundary' — the scene's models do not read it"):
         calibrate(skf, read_log(LOGS / "seed002_greases.csv"), ["mu_boundary"], {})
+
+
+def test_a_fit_through_u_0_keeps_its_step_and_finds_the_minimum():
+    """K_rs on the synthetic heat-up: the RMS residual falls steadily from SKF's grease 6e-8 (3.00 K) towards 0 (1.45 K
+    at 1e-8, 1.33 K at 1e-9).  The fit's ln K_rs passed u = 0 on its first step, where scipy's relative step fell to
+    ~1e-9 and the heat-up's tolerance noise made a false minimum at 2.2e-8 (1.72 K) with σ 3e-14.  Now the step is
+    absolute in u: the fit goes down to the small values and its σ is of the size of the answer (K_rs undetermined
+    near 0: the log does not need starvation); the noisy residuals are named."""
+    import numpy as np
+    scene = load_scene(LOGS / "synthetic_heatup_scene.toml")
+    log = read_log(LOGS / "synthetic_heatup_7210.csv")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        cal = calibrate(scene, log, ["K_rs"], channel_map(scene, log))
+    assert cal.rms_residual < 1.40 and cal.values["K_rs"] < 5e-9
+    assert cal.std["K_rs"] > 0.1 * cal.values["K_rs"] and np.isfinite(cal.std["K_rs"])
+    assert "not smooth" in cal.message

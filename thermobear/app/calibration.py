@@ -201,6 +201,58 @@ class Calibration:
         return "\n".join(lines)
 
 
+#: The Jacobian at the fit is checked by central differences this many times the fit's step wider
+_WIDE = 10.0
+
+
+def _central(resid, x, h):
+    """Central-difference Jacobian of ``resid`` at ``x`` with the step ``h`` (absolute: u is scaled to 1)."""
+    cols = []
+    for i in range(x.size):
+        e = np.zeros_like(x)
+        e[i] = h
+        cols.append((resid(x + e) - resid(x - e)) / (2.0 * h))
+    return np.column_stack(cols)
+
+
+def _forward(resid, h):
+    """The forward-difference Jacobian of ``resid`` with the absolute step ``h`` in u, for least_squares (scipy's
+    relative step shrinks with |u| and degenerates where an iterate passes u = 0: a step of 1e-9 under the heat-up's
+    tolerance noise); the residual at x is the last one ``resid`` returned there (``resid.last``)."""
+    def jac(x):
+        lx, f0 = resid.last
+        f0 = f0 if np.array_equal(lx, x) else resid(x)
+        cols = []
+        for i in range(x.size):
+            e = np.zeros_like(x)
+            e[i] = h
+            cols.append((resid(x + e) - f0) / h)
+        return np.column_stack(cols)
+    return jac
+
+
+def _fit(resid, xs0, diff_step, max_nfev):
+    """(least-squares result, its Jacobian, note): the fit from ``xs0`` with forward differences of step ``diff_step``,
+    then its Jacobian checked by central differences :data:`_WIDE` times wider.  A residual that is not smooth at
+    ``diff_step`` (a heat-up's integrator tolerance and film cells) turns a forward difference into noise: a false
+    minimum and an uncertainty orders of magnitude too small.  Where the two Jacobians differ by more than a quarter
+    of the wider one's norm, the fit goes on from there with the wider step, and its uncertainty comes from the wider
+    central Jacobian (the note says so)."""
+    fit = (lambda x0, h: optimize.least_squares(resid, x0, jac=_forward(resid, h), method="trf", max_nfev=max_nfev,
+                                                x_scale=1.0))
+    res = fit(xs0, diff_step)
+    if res.status <= 0:
+        return res, res.jac, ""
+    wide = _WIDE * diff_step
+    J = _central(resid, res.x, wide)
+    if np.linalg.norm(res.jac - J) <= 0.25 * np.linalg.norm(J):
+        return res, res.jac, ""
+    res = fit(res.x, wide)
+    return res, _central(resid, res.x, wide), (
+        f"the residuals are not smooth at the step {diff_step:g} (the simulation's tolerance): fitted on with "
+        f"{wide:g}, the uncertainty from central differences at that step")
+
+
 def calibrate(scene: Scene, log: RigLog, params: list, mapping: dict, *, T0_C=None, max_nfev: int = 60,
               diff_step: float = 1e-3) -> Calibration:
     r"""Fit named parameters of a scene to a rig log (nonlinear least squares).
@@ -217,7 +269,7 @@ def calibrate(scene: Scene, log: RigLog, params: list, mapping: dict, *, T0_C=No
     mapping : dict         channel → node (:func:`channel_map`)
     T0_C : float           start temperature of transient logs [°C] (default ambient)
     max_nfev : int         budget of model evaluations
-    diff_step : float      finite-difference step of the Jacobian, relative to the start value
+    diff_step : float      finite-difference step of the Jacobian, relative to the start value (absolute in u)
                            (a step in ln p for positive parameters, diff_step·|p0| — or diff_step
                            when p0 = 0 — for the others)
 
@@ -231,9 +283,11 @@ def calibrate(scene: Scene, log: RigLog, params: list, mapping: dict, *, T0_C=No
     uncertainty is σ_p = p σ_ln p).  Covariance = s² (JᵀJ)⁻¹, s² = Σ r²/(m − p);
     with m = p (no degrees of freedom) the uncertainty is not determined (None).
     The optimiser sees every parameter as u = 1 at its start value (ln p = ln p0 + u − 1,
-    or p = p0 + (u − 1)·|p0|), so that its finite-difference step is ``diff_step`` of the
-    start value whatever that value (a start at p0 = 1 would put ln p at 0, where a relative
-    step degenerates to the rounding level and the integrator's tolerance noise swamps it).
+    or p = p0 + (u − 1)·|p0|), and its forward differences take the absolute step ``diff_step`` in u:
+    a relative step of ``diff_step`` in p (or of |p0|) whatever the value (scipy's own step is relative to
+    |u| and degenerates where an iterate passes u = 0, to a step the integrator's tolerance noise swamps).
+    The Jacobian at the answer is checked by central differences ten times wider; where the residuals are not
+    smooth at ``diff_step``, the fit goes on with the wider step and says so (``message``).
     """
     if not params:
         raise InputError("--param", None, "name at least one parameter to fit")
@@ -273,7 +327,9 @@ def calibrate(scene: Scene, log: RigLog, params: list, mapping: dict, *, T0_C=No
             y = log[c]
             ok = ~np.isnan(y)
             r.append((sim[c][ok] - y[ok]) * weights.get(c, 1.0))
-        return np.concatenate(r) if r else np.zeros(0)
+        resid.last = (np.array(x, float), np.concatenate(r) if r else np.zeros(0))
+        return resid.last[1]
+    resid.last = (None, None)
 
     xs0 = np.ones(len(names))
     with warnings.catch_warnings():
@@ -284,22 +340,22 @@ def calibrate(scene: Scene, log: RigLog, params: list, mapping: dict, *, T0_C=No
         m, p = r0.size, len(names)
         if m < p:
             raise InputError("--param", ", ".join(names), f"{p} parameters but only {m} measured values")
-        res = optimize.least_squares(resid, xs0, method="trf", diff_step=diff_step, max_nfev=max_nfev, x_scale=1.0)
+        res, J, msg = _fit(resid, xs0, diff_step, max_nfev)
     rms = float(np.sqrt(np.mean(res.fun**2))) if m else 0.0
     if res.status <= 0:
         raise NoConvergence(f"calibration did not converge: {res.message}", iterations=int(res.nfev),
                             residual=rms, last=values_of(res.x))
-    J = res.jac
     dof = m - p
     JTJ = J.T @ J
     vals = values_of(res.x)
     std = {n: None for n in names}
     cov = np.full((p, p), np.nan)
-    msg = ""
     if np.linalg.cond(JTJ) > 1e14:
-        msg = "the data do not determine these parameters independently (singular Jacobian): no uncertainty"
+        msg = "; ".join(filter(None, [msg, "the data do not determine these parameters independently (singular "
+                                           "Jacobian): no uncertainty"]))
     elif dof == 0:
-        msg = "as many parameters as measured values: exact fit, uncertainty not determined"
+        msg = "; ".join(filter(None, [msg, "as many parameters as measured values: exact fit, uncertainty not "
+                                           "determined"]))
     else:
         s2 = float(res.fun @ res.fun) / dof
         cov_x = s2 * np.linalg.inv(JTJ)
