@@ -125,11 +125,12 @@ def _rows_by_key(rows: list, source: str, catalogue: dict, notes: list) -> dict:
         key = _split(r["designation"])
         if key is None or key[0] not in catalogue:
             continue
+        key = (catalogue[key[0]][1], key[1])                   # an alias (7210B) -> its entry (7210)
         where = f"{source} {r.get('file', 'deep_groove_ball.csv')} line {r['source_line']}"
         dims = tuple(float(r[k]) for k in ("d_mm", "D_mm", "B_mm"))
-        if dims != catalogue[key[0]]:
+        if dims != catalogue[key[0]][0]:
             notes.append(f"{r['designation']} ({where}): d x D x B {dims} differs from the catalogue's "
-                         f"{catalogue[key[0]]}; not used")
+                         f"{catalogue[key[0]][0]}; not used")
             continue
         row = {"designation": r["designation"], "reference_rpm": _number(r["n_ref_rpm"]),
                "limiting_rpm": _number(r["n_limit_rpm"]), "source": where}
@@ -222,7 +223,7 @@ def main(argv) -> int:
     for name in bearing_names():
         t = bearing_table(name)
         if "bore_mm" in t and "outer_diameter_mm" in t and "width_mm" in t:
-            catalogue[name] = (t["bore_mm"], t["outer_diameter_mm"], t["width_mm"])
+            catalogue[name] = ((t["bore_mm"], t["outer_diameter_mm"], t["width_mm"]), name)
             for alias in t.get("aliases", ()):
                 catalogue[alias] = catalogue[name]
     entries, notes = merge(catalogue)
