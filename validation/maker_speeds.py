@@ -215,10 +215,8 @@ def write(entries: dict, notes: list) -> str:
     return "\n".join(head + body) + "\n"
 
 
-def main(argv) -> int:
-    if argv[:1] == ["--extract"]:
-        extract(Path(argv[1]), Path(argv[2]))
-        return 0
+def build() -> tuple[str, dict, list]:
+    """(the data file's text, its entries, the cross-check notes) from validation/data/ and the catalogue."""
     catalogue = {}
     for name in bearing_names():
         t = bearing_table(name)
@@ -227,7 +225,15 @@ def main(argv) -> int:
             for alias in t.get("aliases", ()):
                 catalogue[alias] = catalogue[name]
     entries, notes = merge(catalogue)
-    OUT.write_text(write(entries, notes), encoding="utf-8")
+    return write(entries, notes), entries, notes
+
+
+def main(argv) -> int:
+    if argv[:1] == ["--extract"]:
+        extract(Path(argv[1]), Path(argv[2]))
+        return 0
+    text, entries, notes = build()
+    OUT.write_text(text, encoding="utf-8")
     names = {n for n, _ in entries}
     print(f"{OUT.relative_to(ROOT)}: {len(entries)} entries, {len(names)} catalogue designations of "
           f"{len(bearing_names())}")

@@ -142,7 +142,8 @@ def _choose(entries: dict, seals: str) -> tuple[str, str] | None:
     if seals != "none" and have:
         v = min(have, key=lambda k: entries[k]["limiting_rpm"])
         if seals == "shield":
-            return v, "" if len(have) == 1 else f"the lower of the shielded variants on file ({', '.join(have)})"
+            alike = len({entries[k]["limiting_rpm"] for k in have}) == 1
+            return v, "" if alike else f"the lower of the shielded variants on file ({', '.join(have)})"
         return v, (f"no {want if isinstance(want, str) else seals} row on file: the lowest limiting speed of the "
                    f"contact-sealed variants listed ({', '.join(have)})")
     if seals != "none" and "open" in entries:
