@@ -182,3 +182,9 @@ def test_data_file_is_what_the_generator_writes_now():
     names = {n for n, _ in entries}
     assert len(names) == 131 and {"6208", "6305", "6210", "7200B", "7305B"} <= names
     assert not {n for n in names if n.startswith("51")}          # no thrust bearing in either source
+
+
+def test_readme_counts_the_bearings_with_makers_speeds():
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    row = next(line for line in readme.splitlines() if line.startswith("| makers' speeds |"))
+    assert f"of {len(ms.maker_speeds_table())} catalogue bearings" in row
