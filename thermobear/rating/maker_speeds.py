@@ -67,7 +67,6 @@ _ENTRY = {
     "note": Field.text("duplicates, the cage of the row"),
 }
 _FILE = "maker_speeds.toml"
-_CHECKED: dict = {}          # id of the parsed file -> (the parsed file, its checked entries)
 
 
 @dataclass(frozen=True)
@@ -104,32 +103,35 @@ class MakerSpeeds:
         return round(float(rad_s_to_rpm(self.limiting)), 6)
 
 
+def _raw() -> dict:
+    return read_toml(str(data_dir("materials") / _FILE))
+
+
+def _checked(name: str, variants) -> dict:
+    """One designation's entries, checked: variant -> typed entry; InputError naming the entry and key for an
+    unknown variant or key, or a value of the wrong kind."""
+    if not isinstance(variants, dict):
+        raise InputError(f"{_FILE}: {name}", variants, "must be a table of variants, e.g. [\"6208\".open]")
+    out = {}
+    for variant, entry in variants.items():
+        where = f"{_FILE}: {name}.{variant}"
+        if variant not in VARIANTS:
+            raise InputError(where, variant, f"unknown variant; accepted: {', '.join(VARIANTS)}")
+        out[variant] = check_table(entry, _ENTRY, where)
+    return out
+
+
 def maker_speeds_table() -> dict:
     """Every entry of ``materials/maker_speeds.toml``, checked: designation -> variant -> typed entry.
 
     Raises InputError naming the entry and key for an unknown key, variant or a value of the wrong kind
-    (checked once per content of the file).
+    (:func:`maker_speeds` checks the entries of the bearing it looks up, this function all of them).
 
     >>> t = maker_speeds_table()
     >>> sorted(t["6208"]), t["6208"]["2Z"]["limiting_rpm"]
     (['2RSH', '2RZ', '2Z', 'open'], 9000.0)
     """
-    raw = read_toml(str(data_dir("materials") / _FILE))
-    hit = _CHECKED.get(id(raw))
-    if hit is not None and hit[0] is raw:
-        return hit[1]
-    out = {}
-    for name, variants in raw.items():
-        if not isinstance(variants, dict):
-            raise InputError(f"{_FILE}: {name}", variants, "must be a table of variants, e.g. [\"6208\".open]")
-        for variant, entry in variants.items():
-            where = f"{_FILE}: {name}.{variant}"
-            if variant not in VARIANTS:
-                raise InputError(where, variant, f"unknown variant; accepted: {', '.join(VARIANTS)}")
-            out.setdefault(name, {})[variant] = check_table(entry, _ENTRY, where)
-    _CHECKED.clear()
-    _CHECKED[id(raw)] = (raw, out)
-    return out
+    return {name: _checked(name, variants) for name, variants in _raw().items()}
 
 
 def _choose(entries: dict, seals: str) -> tuple[str, str] | None:
@@ -184,15 +186,16 @@ def maker_speeds(bearing, seals: str = "none") -> MakerSpeeds | None:
     True
     """
     name = str(getattr(bearing, "name", bearing))
-    table = maker_speeds_table()
-    key = _catalogue_key(name, table)
+    raw = _raw()
+    key = _catalogue_key(name, raw)
     if key is None:
         return None
-    picked = _choose(table[key], seals)
+    entries = _checked(key, raw[key])
+    picked = _choose(entries, seals)
     if picked is None:
         return None
     variant, note = picked
-    e = table[key][variant]
+    e = entries[variant]
     ref = e.get("reference_rpm")
     return MakerSpeeds(bearing=key, variant=variant, designation=e["designation"],
                        reference=None if ref is None else float(rpm_to_rad_s(ref)),
