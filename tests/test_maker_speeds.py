@@ -150,6 +150,9 @@ def test_cli_speed_of_a_sealed_bearing_below_the_limit_and_of_one_without_a_valu
     assert main(["speed", tb.example_path("seed004_oil_jet_7210.toml")]) == 0
     text = capsys.readouterr().out
     assert "no maker's limiting speed on file for 7210" in text and "governs" not in text
+    assert main(["speed", tb.example_path("seed004_oil_jet_7210.toml"), "--json"]) == 0
+    m = json.loads(capsys.readouterr().out)["maker"]
+    assert m["limiting_rpm"] is None and m["governed_by"].endswith("no maker's limiting speed on file")
 
 
 @pytest.mark.parametrize("text, field", [

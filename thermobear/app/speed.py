@@ -151,7 +151,8 @@ def _maker(scene: Scene, rep: dict) -> dict:
     if n is not None:
         past = lim is not None and n > lim.limiting_rpm
         out["governing_rpm"] = lim.limiting_rpm if past else n
-        out["governed_by"] = "maker's limiting speed" if past else "thermally safe speed (model)"
+        out["governed_by"] = ("maker's limiting speed" if past else "thermally safe speed (model)" if lim is not None
+                              else "thermally safe speed (model); no maker's limiting speed on file")
     return out
 
 

@@ -291,10 +291,10 @@ def _unread_warnings(scene) -> list:
 def point_warnings(scene, losses, x_C, dry=None, T_seal_C=None) -> list:
     """The OutsideValidity warnings of one solved operating point: speed (n·d_m; the maker's limiting speed),
     contact pressure, contact and oil temperatures (the lubricant's validated range; a grease's upper operating
-    temperature; contact seals' lip material; an oil's data under a grease supply), the SKF model's Φ_bl, a bearing at speed without load, a
-    scene input the models do not read (:class:`~thermobear.errors.UnreadInput`); with ``dry`` (the point's dry
-    load distribution, where the film load model gave ``losses``' loads) a preload by the films; ``T_seal_C``: the
-    network's seal node [°C], where it has one."""
+    temperature; contact seals' lip material; an oil's data under a grease supply), the SKF model's Φ_bl, a bearing
+    at speed without load, a scene input the models do not read (:class:`~thermobear.errors.UnreadInput`); with
+    ``dry`` (the point's dry load distribution, where the film load model gave ``losses``' loads) a preload by the
+    films; ``T_seal_C``: the network's seal node [°C], where it has one."""
     grease = (_grease_warning(scene, x_C) + _seal_warning(scene, x_C, T_seal_C) + _oil_as_grease_warning(scene)
               + _unloaded_warning(scene) + _unread_warnings(scene) + _maker_speed_warning(scene))
     grease += film_preload_warnings(scene, [(losses, dry)])
