@@ -24,6 +24,7 @@ from thermobear.losses.drag import drag_loss  # noqa: F401
 from thermobear.thermal import load_network, prepare_network, solve_steady, solve_transient  # noqa: F401
 from thermobear.scene import Scene, load_scene  # noqa: F401
 from thermobear.rating import rating_life, RatingLife, iso16281_life  # noqa: F401
+from thermobear.rating.maker_speeds import maker_speeds, MakerSpeeds  # noqa: F401
 from thermobear.models import choose_models, open_contacts  # noqa: F401
 from thermobear.coupled import (solve, steady_state, steady_states, transient, scene_losses, prepare,  # noqa: F401
                                 Prepared, RunResult, SteadyState, TransientRun, UncertaintyResult)

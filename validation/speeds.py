@@ -3,10 +3,9 @@ thermally safe speed of examples/block_6208_oil_bath.toml (coupled model) agains
 
 Writes validation/report/speeds.md.  The makers' speeds are SKF's numbers (SKF computes them with its
 own friction model under ISO 15312's conditions); they are shown for comparison, never used to fit.
-Sources: the SKF values of gumyr/bd_warehouse's bearing tables (src/bd_warehouse/data/
-single_row_deep_groove_ball_bearing_parameters.csv and single_row_angular_contact_ball_bearing_parameters.csv,
-columns "Speed-reference" / "speed-reference"); values not found in a stored public source are marked
-unconfirmed (recalled from SKF's catalogue) or "not found".
+Source: materials/maker_speeds.toml (thermobear.rating.maker_speeds; SKF's product tables as transcribed in
+JRaposo-m/SKF-Bearing-Selection-Tool and gumyr/bd_warehouse, the row of each value named there,
+validation/maker_speeds.py); a bearing no source lists is marked "not found".
 """
 from __future__ import annotations
 
@@ -22,23 +21,27 @@ from _common import write_report  # noqa: E402
 from thermobear.coupled.speeds import din732_safe_speed, thermal_reference_speed, thermally_safe_speed  # noqa: E402
 from thermobear.app.scaffold import scaffold  # noqa: E402
 from thermobear.errors import NoSpeedRoot  # noqa: E402
+from thermobear.rating.maker_speeds import maker_speeds  # noqa: E402
 
-BD = "SKF, via gumyr/bd_warehouse data CSV"
-#: bearing → (maker's reference speed [rpm] or None, source)
-MAKER = {
-    "6208": (15000.0, "SKF catalogue, unconfirmed (recalled; not found in a stored public source)"),
-    "6305": (20000.0, "SKF catalogue, unconfirmed (recalled; not found in a stored public source)"),
-    "7205B": (None, "not found (SKF 7205 BE...: no stored source)"),
-    "7014C": (None, "none: SKF lists attainable speeds, not ISO 15312 reference speeds, for super-precision bearings"),
-    "61806": (None, "not found"),
-    "51107": (None, "none applicable: ISO 15312 excludes thrust ball bearings"),
-    "6200": (56000.0, BD + " (6200)"),
-    "6300": (50000.0, BD + " (6300)"),
-    "6000": (67000.0, BD + " (6000)"),
-    "61800": (80000.0, BD + " (61800)"),
-    "7200B": (30000.0, BD + " (7200 BECBP)"),
-    "7305B": (15000.0, BD + " (7305 BECBPH)"),
+#: bearings compared, and why those without a sourced reference speed have none
+BEARINGS = ("6208", "6305", "7205B", "7014C", "61806", "51107", "6200", "6300", "6000", "61800", "7200B", "7305B")
+WHY_NONE = {
+    "7014C": "none: SKF lists attainable speeds, not ISO 15312 reference speeds, for super-precision bearings",
+    "51107": "none applicable: ISO 15312 excludes thrust ball bearings (and no source lists thrust bearings)",
 }
+
+
+def maker_reference(name: str) -> tuple:
+    """(the maker's reference speed [rpm] or None, its source) from materials/maker_speeds.toml (the open
+    bearing's row)."""
+    m = maker_speeds(name)
+    if m is None or m.reference_rpm is None:
+        return None, WHY_NONE.get(name, "not found (no source of materials/maker_speeds.toml lists it)")
+    return m.reference_rpm, f"SKF {m.designation}: materials/maker_speeds.toml ({m.source})"
+
+
+#: bearing → (maker's reference speed [rpm] or None, source)
+MAKER = {name: maker_reference(name) for name in BEARINGS}
 
 
 def reference_rows() -> list:

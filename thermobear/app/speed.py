@@ -2,7 +2,11 @@
 reference conditions), the thermally safe speed of the scene's own cooling (the coupled model) and
 DIN 732's thermally safe speed (the standard's method), each with the temperature of the node the limit is
 on at that speed: the hotter race (``inner_race`` or ``outer_race``, the rings' raceway layers — not the ring
-bodies ``inner_ring`` / ``outer_ring``; :func:`thermobear.coupled.speeds.hottest_race`), or ``--node``."""
+bodies ``inner_ring`` / ``outer_ring``; :func:`thermobear.coupled.speeds.hottest_race`), or ``--node``.
+
+Beside them the maker's reference speed (of the open bearing, ISO 15312's) and limiting speed (of the scene's
+variant: its seals; :func:`thermobear.rating.maker_speeds.maker_speeds`), where the data file has them: a
+thermally safe speed above the limiting speed keeps its number, flagged, and the limiting speed governs."""
 from __future__ import annotations
 
 import sys
@@ -16,6 +20,7 @@ from thermobear.coupled.speeds import (HOTTER_RACE, check_node, din732_safe_spee
                                       thermally_safe_speed)
 from thermobear.coupled.steady import steady_state, steady_states
 from thermobear.errors import InputError, NoSpeedRoot, OutsideValidity, SolverError
+from thermobear.rating.maker_speeds import limiting_speed_text, maker_speeds
 from thermobear.scene import Scene
 
 __all__ = ["speed_report", "cmd_speed", "EXIT_SOLVER", "JUMP_K"]
@@ -24,6 +29,7 @@ EXIT_SOLVER = 3
 #: |limit − temperature| at the model's root beyond which the root is a jump across the limit [K] (the search
 #: stops within 1 rpm: a continuous rise misses the limit by hundredths of a kelvin there)
 JUMP_K = 0.1
+LIMITING = "maker's limiting speed"
 
 
 def _at_speeds(scene: Scene, speeds: dict, node) -> dict:
@@ -117,6 +123,7 @@ def _report(scene: Scene, limit_C: float, node, node_field: str = "node") -> tup
                          "f0": d.f0, "f1": d.f1, "f_n_balance": d.f_n_balance}
     except (SolverError, InputError) as exc:
         rep["din732"] = {"error": " ".join(str(exc).split())}
+    rep["maker"] = _maker(scene, rep)
     temps = _at_speeds(scene, {"iso15312": rep["iso15312"].get("n_rpm"), "din732": rep["din732"].get("n_rpm")}, node)
     for k, T in temps.items():
         if isinstance(T, Exception):        # a number field holds a number or null; the reason beside it
@@ -124,6 +131,50 @@ def _report(scene: Scene, limit_C: float, node, node_field: str = "node") -> tup
         else:
             rep[k]["T_node"], rep[k]["T_C"] = T
     return rep, ws
+
+
+def _maker(scene: Scene, rep: dict) -> dict:
+    """The maker's speeds beside the thermal ones (rpm, null where none is on file), and the speed that governs:
+    the lower of the model's thermally safe speed and the limiting speed; each thermally safe speed above the
+    limiting speed is flagged (``above_limiting_speed``) in its own part."""
+    lim, ref = maker_speeds(scene.bearing, scene.seals), maker_speeds(scene.bearing, "none")
+    out = {"limiting_rpm": None if lim is None else lim.limiting_rpm,
+           "reference_rpm": None if ref is None else ref.reference_rpm,
+           "designation": None if lim is None else lim.designation,
+           "reference_designation": None if ref is None else ref.designation,
+           "source": None if lim is None else lim.source, "note": None if lim is None else lim.note or None,
+           "text": limiting_speed_text(scene.bearing, scene.seals)}
+    for k in ("model", "din732"):
+        if rep[k].get("n_rpm") is not None and lim is not None:
+            rep[k]["above_limiting_speed"] = rep[k]["n_rpm"] > lim.limiting_rpm
+    n = rep["model"].get("n_rpm")
+    if n is not None:
+        past = lim is not None and n > lim.limiting_rpm
+        out["governing_rpm"] = lim.limiting_rpm if past else n
+        out["governed_by"] = ("maker's limiting speed" if past else "thermally safe speed (model)" if lim is not None
+                              else "thermally safe speed (model); no maker's limiting speed on file")
+    return out
+
+
+def _maker_lines(rep: dict) -> list:
+    """The maker's rows of the table, and what governs where a thermally safe speed passes the limiting speed."""
+    m = rep["maker"]
+    if m["limiting_rpm"] is None:
+        lines = [f"  {LIMITING:58s} —  {m['text']}"]
+    else:
+        note = f"; {m['note']}" if m["note"] else ""
+        label = f"{LIMITING} ({m['designation']}, kinematic)"
+        lines = [f"  {label:58s} {m['limiting_rpm']:9.0f} rpm   SKF: {m['source']}{note}"]
+    if m["reference_rpm"] is not None:
+        label = f"maker's reference speed ({m['reference_designation']}, ISO 15312)"
+        lines.insert(0, f"  {label:58s} {m['reference_rpm']:9.0f} rpm")
+    for k, what in (("model", "thermally safe speed of this scene's cooling"),
+                    ("din732", "DIN 732 thermally safe speed")):
+        if rep[k].get("above_limiting_speed"):
+            lines.append(f"    {what} {rep[k]['n_rpm']:.0f} rpm exceeds the maker's limiting speed "
+                         f"{m['limiting_rpm']:.0f} rpm: the limiting speed governs (the kinematic limit of the bearing, "
+                         "its cage or its seals, whatever the cooling)")
+    return lines
 
 
 def _line(label: str, part: dict, note: str = "") -> str:
@@ -146,8 +197,11 @@ def summary(rep: dict) -> str:
              f"limit {rep['limit_C']:g} °C on {on}", ""]
     iso, mod, din = rep["iso15312"], rep["model"], rep["din732"]
     lines.append(_line("ISO 15312 thermal reference speed (model, reference cond.)", iso, " in this scene"))
-    lines.append(_line("thermally safe speed, this scene's cooling (model)", mod))
-    lines.append(_line("DIN 732 thermally safe speed (standard's method)", din, " (model)"))
+    past = {k: "; above the maker's limiting speed" if p.get("above_limiting_speed") else "" for k, p in
+            (("model", mod), ("din732", din))}
+    lines.append(_line("thermally safe speed, this scene's cooling (model)", mod, past["model"]))
+    lines.append(_line("DIN 732 thermally safe speed (standard's method)", din, " (model)" + past["din732"]))
+    lines += _maker_lines(rep)
     if "error" not in iso:
         lines.append(f"    ISO 15312: q_r A_r = {iso['Phi_r_W']:.2f} W (A_r {iso['A_r_mm2']:.0f} mm²), load "
                      f"{iso['load_N']:.0f} N, {iso['lubricant']}; residual {iso['residual_W']:.1e} W, "

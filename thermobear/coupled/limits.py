@@ -16,10 +16,13 @@ from thermobear.loads.api import check_contacts, groove_angle, loads_text
 from thermobear.losses.seals import CONTACT_SEALS, seal_material
 from thermobear.model_inputs import unread_settings
 from thermobear.rating.life import stated_ratings
+from thermobear.rating.maker_speeds import maker_speeds
+from thermobear.units import rpm_to_rad_s
 from thermobear.validity import LIMITS, P_MAX_REFUSE_PA, T_LUBRICANT_REFUSE_C, check, collect
 
 __all__ = ["p_max_Pa", "contact_pressure", "overloads", "point_warnings", "family_warnings", "grease_limit", "emit",
-           "runaway_at", "runaway_in", "film_preload_warnings", "film_load_preload_warnings", "FILM_PRELOAD_RATIO", "FILM_PRELOAD_C0"]
+           "past_maker_limit", "runaway_at", "runaway_in", "film_preload_warnings", "film_load_preload_warnings",
+           "FILM_PRELOAD_RATIO", "FILM_PRELOAD_C0"]
 
 
 def p_max_Pa(Q, a, b):
@@ -132,6 +135,46 @@ def _seal_warning(scene, x_C, T_seal_C=None) -> list:
         f"operating temperature {m['T_max_C']:g} °C ({m['T_brief_C']:g} °C for brief periods) — the lips harden and "
         "wear; the seal friction is that of a lip within its range", quantity="seal_T", value=T,
         limit=f"<= {m['T_max_C']:g} °C", source=m["source"], field="bearing.seals")]
+
+
+def past_maker_limit(scene):
+    """The scene's maker's speeds (:func:`thermobear.rating.maker_speeds.maker_speeds`, by its bearing and seals)
+    where its speed lies above their limiting speed, else None (at or below it, or no value on file)."""
+    if not scene.n_rpm > 0:
+        return None
+    m = maker_speeds(scene.bearing, scene.seals)
+    return m if m is not None and rpm_to_rad_s(scene.n_rpm) > m.limiting else None
+
+
+def _past_maker_limits(scenes) -> np.ndarray:
+    """Per point (B,): above the maker's limiting speed (:func:`past_maker_limit`), the data read once per bearing
+    and seals of the family."""
+    limit: dict = {}
+    out = np.zeros(len(scenes), bool)
+    for b, s in enumerate(scenes):
+        key = (s.bearing.name, s.seals)
+        if key not in limit:
+            m = maker_speeds(s.bearing, s.seals)
+            limit[key] = np.inf if m is None else m.limiting
+        out[b] = s.n_rpm > 0 and rpm_to_rad_s(s.n_rpm) > limit[key]
+    return out
+
+
+def _maker_speed_warning(scene) -> list:
+    """An OutsideValidity warning where the scene runs above its bearing's maker's limiting speed (SKF's kinematic
+    limit of the bearing, its cage or its seals' lips, for grease and oil alike): whatever the cooling, the maker
+    does not rate the bearing for that speed, and the models here know nothing of the cage's or the lips' limit."""
+    m = past_maker_limit(scene)
+    if m is None:
+        return []
+    what = m.designation + (f" for seals = {scene.seals}" if scene.seals != "none" else "")
+    return [OutsideValidity(
+        f"operation.n_rpm = {scene.n_rpm:g} rpm above the maker's limiting speed {m.limiting_rpm:g} rpm of the "
+        f"{what} (SKF's kinematic limit of the bearing, its cage or its seals, for grease and oil; {m.source}"
+        + (f"; {m.note}" if m.note else "") + ") — the maker does not rate the bearing for this speed, whatever "
+        "the cooling; the models' losses and temperatures know no cage or seal-lip speed limit",
+        quantity="maker_limiting_speed", value=float(scene.n_rpm), limit=f"<= {m.limiting_rpm:g} rpm",
+        source=f"materials/maker_speeds.toml [{m.bearing}.{m.variant}]: {m.source}", field="operation.n_rpm")]
 
 
 def _unloaded(scene) -> bool:
@@ -263,14 +306,14 @@ def _unread_warnings(scene) -> list:
 
 
 def point_warnings(scene, losses, x_C, dry=None, T_seal_C=None) -> list:
-    """The OutsideValidity warnings of one solved operating point: speed, contact pressure, contact
-    and oil temperatures (the lubricant's validated range; a grease's upper operating temperature; contact seals'
-    lip material; an oil's data under a grease supply), the SKF model's Φ_bl, a bearing at speed without load, a
-    scene input the models do not read (:class:`~thermobear.errors.UnreadInput`); with ``dry`` (the point's dry
-    load distribution, where the film load model gave ``losses``' loads) a preload by the films; ``T_seal_C``: the
-    network's seal node [°C], where it has one."""
+    """The OutsideValidity warnings of one solved operating point: speed (n·d_m; the maker's limiting speed),
+    contact pressure, contact and oil temperatures (the lubricant's validated range; a grease's upper operating
+    temperature; contact seals' lip material; an oil's data under a grease supply), the SKF model's Φ_bl, a bearing
+    at speed without load, a scene input the models do not read (:class:`~thermobear.errors.UnreadInput`); with
+    ``dry`` (the point's dry load distribution, where the film load model gave ``losses``' loads) a preload by the
+    films; ``T_seal_C``: the network's seal node [°C], where it has one."""
     grease = (_grease_warning(scene, x_C) + _seal_warning(scene, x_C, T_seal_C) + _oil_as_grease_warning(scene)
-              + _unloaded_warning(scene) + _unread_warnings(scene))
+              + _unloaded_warning(scene) + _unread_warnings(scene) + _maker_speed_warning(scene))
     grease += film_preload_warnings(scene, [(losses, dry)])
     with collect(replay=False) as got:
         check("n_dm", scene.n_rpm * scene.bearing.dm * 1e3, "operation.n_rpm", warn=True)
@@ -312,6 +355,7 @@ def family_warnings(scenes, losses, x_C, answered=None, dry=None, T_seal_C=None)
         flag |= np.array([_seal_hot(s, x, t, T_lip) for s, x, t in zip(scenes, np.asarray(x_C, float).reshape(B, -1),
                                                                          T_seal)])
     flag |= np.array([_unloaded(s) or _oil_as_grease(s) or bool(unread_settings(s)) for s in scenes])
+    flag |= _past_maker_limits(scenes)
     flag |= _film_ratio(scenes, losses, dry) > FILM_PRELOAD_RATIO
     c = getattr(losses, "contacts", None)
     if c:
