@@ -70,3 +70,12 @@ def test_set_clearance_group_rebuilds_the_scenes_bearing(tmp_path, capsys):
     code = main(["run", str(scene), "--set", "bearing.clearance_group=C9"])
     err = capsys.readouterr().err
     assert code == 2 and err.startswith("error: bearing.clearance_group = 'C9' — must be one of CN, C3, C4")
+
+
+def test_set_takes_a_scene_files_number_as_written():
+    """`--set flow_L_h=5` was unknown (the with_ key is oil_flow_L_h): a scene file's number is taken as written, with
+    or without its section, and lands on the same scene value."""
+    from thermobear.app.overrides import overrides
+    assert overrides(["flow_L_h=5", "lubricant.T_in_C=40", "operation.n_rpm=100", "lubricant.K_rs=4e-8"]) == \
+        {"oil_flow_L_h": 5, "T_oil_in_C": 40, "n_rpm": 100, "K_rs": 4e-8}
+    assert overrides(["flow_L_h=5"]) == overrides(["oil_flow_L_h=5"])

@@ -6,6 +6,8 @@ A key is a :meth:`~thermobear.scene.Scene.with_` override (``n_rpm``, ``Fa_N``, 
 * ``models.<key>`` forces a model (the scene's ``[models]`` table);
 * ``fixed_C.<node>`` imposes a measured node temperature [°C] (``[thermal] fixed_C``);
 * ``parameters.<name>`` sets a network parameter (``[thermal.parameters]``);
+* a scene file's number as it is written there, with or without its section (``lubricant.flow_L_h``,
+  ``flow_L_h``, ``operation.n_rpm``, ``T_in_C``): the with_ key that sets it;
 * ``bearing.<key>`` sets a key of the scene's ``[bearing]`` table (``clearance_group``, ``Pd_mm``, ``D_mm``, ...:
   :data:`thermobear.contact.geometry.FIELDS`; ``clearance_group`` alone means ``bearing.clearance_group``): the
   bearing is rebuilt from the file's table (or the ``bearing`` given) with the keys set.
@@ -19,7 +21,7 @@ import tomllib
 from thermobear.contact.geometry import FIELDS as BEARING_KEYS
 from thermobear.errors import InputError
 from thermobear.scene import load_scene
-from thermobear.scene.scene import WITH_KEYS
+from thermobear.scene.scene import FILE_KEYS, WITH_KEYS
 
 __all__ = ["overrides", "load_scene_with", "SET_FORMS"]
 
@@ -30,6 +32,10 @@ _TABLES = (("fixed_C.", "T_fixed_C"), ("models.", "models"), ("parameters.", "ne
 SET_FORMS = ("models.<key>, fixed_C.<node>, parameters.<name>, bearing.<key> (a [bearing] key: clearance_group, "
              "Pd_mm, D_mm, ...; clearance_group alone is bearing.clearance_group)")
 _BARE_BEARING = ("clearance_group",)             # [bearing] keys --set takes without the prefix
+#: a scene file's key as written, with or without its section (``lubricant.flow_L_h``, ``flow_L_h``, ``T_in_C``) →
+#: its with_ key; a bare key only where one section has it
+_AS_WRITTEN = {**{a.split(".", 1)[1]: k for a, k in FILE_KEYS.items()
+                  if sum(b.split(".", 1)[1] == a.split(".", 1)[1] for b in FILE_KEYS) == 1}, **FILE_KEYS}
 
 
 def _value(text: str):
@@ -76,8 +82,11 @@ def overrides(items, bearing_table: dict | None = None) -> dict:
             _bearing_key(k.removeprefix("bearing."), val, out, table)
         elif k in WITH_KEYS:
             out[k] = val
+        elif k in _AS_WRITTEN:
+            out[_AS_WRITTEN[k]] = val
         else:
-            raise InputError(f"--set {k}", val, f"unknown key; accepted: {', '.join(WITH_KEYS)}, {SET_FORMS}")
+            raise InputError(f"--set {k}", val, f"unknown key; accepted: {', '.join(WITH_KEYS)}, a scene file's "
+                             f"number as written (e.g. lubricant.flow_L_h, T_in_C), {SET_FORMS}")
     if table:
         base = out.get("bearing", bearing_table or {})
         base = {"catalog": base} if isinstance(base, str) else dict(base)

@@ -54,7 +54,7 @@ from thermobear.scene.network import (PARAMETRIC, check_lubrication_keys, lubric
 from thermobear.thermal.builders import Machine
 
 __all__ = ["Scene", "load_scene", "scene_from_dict", "SUPPLIES", "SECTIONS", "MODEL_FIELDS", "RIG_TARGETS",
-           "SHAFT_FIELDS", "HOUSING_FIELDS", "WITH_KEYS"]
+           "SHAFT_FIELDS", "HOUSING_FIELDS", "WITH_KEYS", "FILE_KEYS"]
 
 SUPPLIES = ("oil_jet", "grease", "oil_bath", "oil_air", "dry_film")
 _T_LO, _T_HI = validity.T_LUBRICANT_REFUSE_C
@@ -375,6 +375,7 @@ def _with_number(section, key, attr, scale=1.0, nullable=False):
         if v is None and nullable:
             return {attr: None}
         return {attr: check_value(v, SECTIONS[section][key], name) * scale}
+    f.address = f"{section}.{key}"
     return f
 
 
@@ -441,6 +442,8 @@ _WITH = {
 }
 #: the keys :meth:`Scene.with_` accepts, with their aliases in the scene file's units (Fa_N, ...)
 WITH_KEYS = tuple(_WITH) + tuple(_ALIASES)
+#: a scene file's number as ``"<section>.<key>"`` (``"lubricant.flow_L_h"``) → the :meth:`Scene.with_` key that sets it
+FILE_KEYS = {f.address: k for k, f in _WITH.items() if hasattr(f, "address")}
 
 
 def _lubricant_of(sec: dict, where: str):
