@@ -251,17 +251,33 @@ def test_cli_speed_reports_a_solver_failure_of_the_model_and_keeps_the_standards
     assert "n_rpm" in rep["din732"]
 
 
-def test_cli_speed_limit_at_the_ambient_exits_3_with_one_error_line(block, capsys):
-    """A limit at the ambient: the model has no answer (exit 3) — that exit comes with one `error:` line on
-    stderr (it sat only in the stdout table), and DIN 732's reason reads the right way round (it said
-    'limit_C = 25.0 — above the ambient', the value it refused)."""
-    assert main(["speed", tb.example_path("block_6208_oil_bath.toml"), "--limit-C", "25"]) == 3
+@pytest.mark.parametrize("limit", ["25", "10"])
+def test_cli_speed_limit_not_above_the_ambient_is_bad_input(block, capsys, limit):
+    """A limit at or below the ambient (25 °C here) is an input no speed can meet: exit 2 with one line naming
+    --limit-C, its value and the accepted range, nothing on stdout (it ran the searches, wrote a partial table and
+    exited 3 as if the model had failed)."""
+    assert main(["speed", tb.example_path("block_6208_oil_bath.toml"), "--limit-C", limit]) == 2
     out, err = capsys.readouterr()
-    errors = [ln for ln in err.splitlines() if ln.startswith("error:")]
-    assert len(errors) == 1 and errors[0].startswith("error: thermally safe speed (model): ") and "exceeded" in errors[0]
-    assert "thermally safe speed, this scene's cooling (model)" in out                    # the table is kept
-    assert "limit_C = 25.0 — must be above the ambient 25 °C" in out
-    assert "Traceback" not in err
+    assert out == "" and err.strip().splitlines() == [
+        f"error: --limit-C = {float(limit)} — must be above the ambient 25 °C (no speed heats the bearing to a "
+        "temperature below its surroundings)"]
+
+
+def test_speed_rows_say_which_speeds_pass_the_limit_and_carry_the_states_ratings(capsys, tmp_path):
+    """The 6206-2RS1 motor bearing as `init` writes it: DIN 732's and ISO 15312's speeds heat the race past the 70 °C
+    limit in this scene (now flagged), ISO 15312's is the open bearing's (none for contact seals), and the model's
+    speed carries its state's ratings warnings (a consumed clearance, which `run` at that speed names)."""
+    path = tmp_path / "m.toml"
+    assert main(["init", "6206-2RS1", "--lubrication", "grease", "--speed-rpm", "3000", "--Fr-N", "1500",
+                 "--out", str(path)]) == 0
+    capsys.readouterr()
+    assert main(["speed", str(path), "--json"]) == 0
+    rep = json.loads(capsys.readouterr().out)
+    assert rep["din732"]["T_C"] > 70.0 and rep["contact_seals"] is True
+    assert any(w["quantity"] == "operating_clearance" for w in rep["model"]["warnings"])
+    text = app_speed.summary(rep)
+    assert "DIN 732 thermally safe speed" in text and "; above the 70 °C limit" in text
+    assert "ISO 15312 has none for contact seals" in text
 
 
 def test_speed_refuses_a_node_that_is_not_free(block, capsys):

@@ -15,11 +15,13 @@ import warnings
 from thermobear.app.output import print_json
 from thermobear.app.overrides import load_scene_with
 from thermobear.coupled.limits import emit
+from thermobear.coupled.ratings import scene_ratings
 from thermobear.coupled.sources import prepare
 from thermobear.coupled.speeds import (HOTTER_RACE, check_node, din732_safe_speed, hottest_race, thermal_reference_speed,
                                       thermally_safe_speed)
 from thermobear.coupled.steady import steady_state, steady_states
 from thermobear.errors import InputError, NoSpeedRoot, OutsideValidity, SolverError
+from thermobear.losses.seals import CONTACT_SEALS
 from thermobear.rating.maker_speeds import limiting_speed_text, maker_speeds
 from thermobear.scene import Scene
 
@@ -88,9 +90,12 @@ def _report(scene: Scene, limit_C: float, node, node_field: str = "node") -> tup
     ``node_field`` for a node that is not a free node of the scene's network."""
     if node is not None and scene.network is not None:
         check_node(scene, node, field=node_field)
+    if not limit_C > scene.T_ambient_C:
+        raise InputError("--limit-C", limit_C, f"must be above the ambient {scene.T_ambient_C:g} °C (no speed heats "
+                         "the bearing to a temperature below its surroundings)")
     ws: list = []
     rep = {"scene": scene.name, "bearing": scene.bearing.name, "limit_C": limit_C,
-           "node": node or HOTTER_RACE, "T_ambient_C": scene.T_ambient_C}
+           "node": node or HOTTER_RACE, "T_ambient_C": scene.T_ambient_C, "contact_seals": scene.seals in CONTACT_SEALS}
     if node is None and scene.network is not None:      # the nodes the hotter race is the hotter of
         roles = prepare(scene).coupling.roles
         rep["race_nodes"] = [roles["inner"], roles["outer"]]
@@ -105,10 +110,14 @@ def _report(scene: Scene, limit_C: float, node, node_field: str = "node") -> tup
         rep["iso15312"] = {"error": " ".join(str(exc).split())}
     try:
         s = thermally_safe_speed(scene, limit_C=limit_C, node=node)
-        ws += s.warnings
+        with warnings.catch_warnings():      # the state's ratings at that speed: a consumed clearance, a preload
+            warnings.simplefilter("ignore", OutsideValidity)
+            rated = scene_ratings(scene.with_(n_rpm=s.n_rpm), s.steady).warnings
+        sw = s.warnings + [w for w in rated if str(w) not in map(str, s.warnings)]
+        ws += sw
         rep["model"] = {"n_rpm": s.n_rpm, "T_C": s.T_C, "T_node": s.T_node, "residual_K": s.residual_K, "iterations": s.iterations,
                         "bracket_rpm": list(s.bracket_rpm), "monotonic": s.monotonic, "P_W": s.steady.P_W,
-                        "warnings": [w.as_dict() for w in s.warnings]}
+                        "warnings": [w.as_dict() for w in sw]}
         if abs(s.residual_K) > JUMP_K:
             rep["model"]["jump"] = _across(scene, s.n_rpm, node, s.residual_K)
     except SolverError as exc:                          # (a probe speed's failure: the other answers stand)
@@ -196,11 +205,15 @@ def summary(rep: dict) -> str:
     lines = [f"thermobear speed — {rep['scene']}: {rep['bearing']}, ambient {rep['T_ambient_C']:g} °C, "
              f"limit {rep['limit_C']:g} °C on {on}", ""]
     iso, mod, din = rep["iso15312"], rep["model"], rep["din732"]
-    lines.append(_line("ISO 15312 thermal reference speed (model, reference cond.)", iso, " in this scene"))
+    hot = {k: f"; above the {rep['limit_C']:g} °C limit" if (p.get("T_C") or -1e9) > rep["limit_C"] + JUMP_K else ""
+           for k, p in (("iso15312", iso), ("din732", din))}
+    open_ = " (of the open bearing: ISO 15312 has none for contact seals)" if rep.get("contact_seals") else ""
+    lines.append(_line("ISO 15312 thermal reference speed (model, reference cond.)", iso,
+                       " in this scene" + hot["iso15312"] + open_))
     past = {k: "; above the maker's limiting speed" if p.get("above_limiting_speed") else "" for k, p in
             (("model", mod), ("din732", din))}
     lines.append(_line("thermally safe speed, this scene's cooling (model)", mod, past["model"]))
-    lines.append(_line("DIN 732 thermally safe speed (standard's method)", din, " (model)" + past["din732"]))
+    lines.append(_line("DIN 732 thermally safe speed (standard's method)", din, " (model)" + hot["din732"] + past["din732"]))
     lines += _maker_lines(rep)
     if "error" not in iso:
         lines.append(f"    ISO 15312: q_r A_r = {iso['Phi_r_W']:.2f} W (A_r {iso['A_r_mm2']:.0f} mm²), load "
