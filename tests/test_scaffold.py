@@ -83,7 +83,12 @@ def test_defaults_follow_iso_15312_reference_conditions(capsys):
     assert d["operation"]["n_rpm"] == pytest.approx(0.5 * ref.n_rpm, rel=0.05)
     # every key line says where its value comes from
     keys = [ln for ln in text.splitlines() if "=" in ln and not ln.startswith(("#", "["))]
-    assert keys and all("#" in ln for ln in keys if not ln.startswith(("name =", "description =", "source =")))
+    assert keys and all("#" in ln for ln in keys if not ln.startswith(("name =", "description =", "source =",
+                                                                       "uncertainty.")))
+    # the estimates carry their ranges (sampled by --uncertainty), each with its reasoning
+    unc = [ln for ln in keys if ln.startswith("uncertainty.")]
+    assert unc and all('source = "reasoning: ' in ln for ln in unc)
+    assert set(d["lubricant"]["uncertainty"]) == {"K_rs"} and set(d["thermal"]["uncertainty"]) == {"T_ambient_C"}
     # the catalogue's C0 of a 6208 is ISO 76 of its estimated geometry, not a maker's number: said so (it read
     # "catalogue, ISO 76"); the 7210's is the one seed 004 states
     assert "C0 = 19.89 kN (catalogue: ISO 76 from its internal geometry)" in text
@@ -240,3 +245,16 @@ def test_init_hints_are_valid_keys_of_their_table_once_uncommented(name):
     uncommented = "\n".join(ln.split("# uncomment:")[0][2:] if ln in hints else ln for ln in text.splitlines())
     s = scene_from_dict(tomllib.loads(uncommented))
     assert (s.seals, s.cage, s.T_C) == ("RS1", "outer_ring", 70.0)
+
+
+@pytest.mark.parametrize("method, ranged", [("oil-jet", {"flow_L_h", "T_in_C", "K_rs"}),
+                                            ("oil-air", {"flow_L_h", "T_in_C", "K_rs"}), ("grease", {"K_rs"})])
+def test_init_writes_the_ranges_of_its_estimates_and_run_samples_them(method, ranged):
+    """The supply values init estimates (a jet's flow from a 5-15 K rise, an oil-air feed, the inlet temperature,
+    SKF's K_rs, the room) carry their ranges: `run --uncertainty` samples them (it sampled only the geometry and the
+    network builder's estimates, and K_rs alone moved a spindle's power outside that band)."""
+    from thermobear.app.scaffold import scaffold
+    from thermobear.coupled.uncertainty import uncertain_inputs
+    s = scene_from_dict(tomllib.loads(scaffold("7014C", method)))
+    sampled = {i.address for i in uncertain_inputs(s)}
+    assert {f"lubricant.{k}" for k in ranged} | {"thermal.T_ambient_C"} <= sampled

@@ -36,6 +36,7 @@ from thermobear.coupled.ratings import check_static_safety
 from thermobear.coupled.sources import scene_losses
 from thermobear.coupled.speeds import ReferenceSpeed, reference_loads, thermal_reference_speed
 from thermobear.errors import InputError, NoSpeedRoot, SolverError
+from thermobear.losses.skf import K_RS
 from thermobear.lubrication.lubricant import lubricant, lubricant_names
 from thermobear.rating.life import load_ratings, stated_ratings
 from thermobear.scene import Scene, scene_from_dict
@@ -161,18 +162,51 @@ def _lubrication(brg, supply, oil, oil_src, ref: ReferenceSpeed | None) -> list:
         lub = lubricant(oil)
         rho_cp = float(lub.rho(T_JET_IN_C) * lub.cp(T_JET_IN_C))
         Q = ref.Phi_r_W / (rho_cp * JET_RISE_K) * 3.6e6
-        rows += [("flow_L_h", _sig(Q, 2), f"L/h: carries the reference heat flow {ref.Phi_r_W:.1f} W (ISO 15312 q_r A_r) "
+        q = _sig(Q, 2)
+        rows += [("flow_L_h", q, f"L/h: carries the reference heat flow {ref.Phi_r_W:.1f} W (ISO 15312 q_r A_r) "
                   f"with a {JET_RISE_K:g} K rise, Q = N / (rho c_p dT), rho c_p = {rho_cp / 1e6:.2f} MJ/(m3 K) at "
                   f"{T_JET_IN_C:g} °C (rise estimated: 5-15 K is usual for circulating oil)"),
+                 _range("flow_L_h", [_sig(q * JET_RISE_K / 15.0, 2), _sig(q * JET_RISE_K / 5.0, 2)], "the flow that "
+                        "carries the reference heat with the usual 5-15 K rise"),
                  ("T_in_C", T_JET_IN_C, "°C: estimated (a tempered supply above a 20 °C room)"),
+                 _T_in_range(),
                  ("oil_feed", "jet", "a jet: 0.4 of the flow passes the bearing (Brossier et al. 2021; builders' "
                   "default); \"circulating\": all of it")]
     elif supply == "oil_air":
         rows += [("flow_L_h", OIL_AIR_FLOW_L_H, "L/h: estimated (minimal-quantity feed, a few mL/h; no rule cited: "
                   "take the supplier's value)"),
-                 ("T_in_C", T_JET_IN_C, "°C: estimated"),
+                 _range("flow_L_h", [OIL_AIR_FLOW_L_H / 2.0, OIL_AIR_FLOW_L_H * 2.0], "a minimal-quantity feed of a "
+                        "few mL/h, a factor 2 either way of the estimate", lognormal=True),
+                 ("T_in_C", T_JET_IN_C, "°C: estimated"), _T_in_range(),
                  ("air_flow_L_min", OIL_AIR_AIR_L_MIN, "L/min at 20 °C, 1 atm: estimated (take the supplier's value)")]
-    return rows
+    K = K_RS[supply]
+    return rows + [("K_rs", K, f"SKF 2004 replenishment constant of {supply.replace('_', ' ')} (starvation factor "
+                    "Phi_rs); a rig's own: thermobear calibrate --param K_rs"),
+                   _range("K_rs", [K / 2.0, K * 2.0], "SKF 2004 gives K_rs for two supply classes only, 3e-8 and "
+                          "6e-8, with no tolerance; their factor 2 taken either way of the class value", lognormal=True)]
+
+
+def _table(rows) -> dict:
+    """A table's rows as the scene file reads them (``uncertainty.<key>`` rows nested under ``uncertainty``)."""
+    out: dict = {}
+    for key, v, _ in rows:
+        head, _, rest = key.partition(".")
+        if rest:
+            out.setdefault(head, {})[rest] = v
+        else:
+            out[key] = v
+    return out
+
+
+def _range(key: str, rng: list, why: str, lognormal: bool = False) -> tuple:
+    """An ``uncertainty.<key>`` row of the scene file: the estimate's range (5-95 %) and its reasoning."""
+    u = {"range": rng} | ({"distribution": "lognormal"} if lognormal else {}) | {"source": f"reasoning: {why}"}
+    return f"uncertainty.{key}", u, None
+
+
+def _T_in_range() -> tuple:
+    return "uncertainty.T_in_C", {"offset": [-10.0, 10.0], "source": "reasoning: a tempered oil supply is held at "
+                                  "30-50 °C, the estimate the middle"}, None
 
 
 _MACHINE_SRC = "builders' default (thermobear/thermal/builders/machine.py)"
@@ -223,6 +257,10 @@ def _housing_rows(m, lay, housing: str) -> list:
 
 
 def _fmt(v) -> str:
+    if isinstance(v, dict):                   # an inline table: an uncertainty entry
+        return "{ " + ", ".join(f"{k} = {_fmt(x)}" for k, x in v.items()) + " }"
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(_fmt(x) for x in v) + "]"
     if isinstance(v, bool):
         return "true" if v else "false"
     if isinstance(v, str):
@@ -348,18 +386,20 @@ def scaffold(name: str, lubrication: str, *, oil: str | None = None, housing: st
     rows = {"bearing": _bearing_rows(brg) + closure, "lubricant": _lubrication(brg, supply, oil, oil_src, ref),
             "operation": _operation(brg, ref, n_rpm, Fr_N, Fa_N),
             "thermal": [("T_ambient_C", T_AMBIENT_REF_C, "°C: ISO 15312 reference ambient; network = \"parametric\" "
-                         "is implied by [shaft] / [housing]")]}
+                         "is implied by [shaft] / [housing]"),
+                        ("uncertainty.T_ambient_C", {"offset": [-5.0, 5.0], "source": "reasoning: the machine's room is "
+                         "not known; 15-25 °C about the reference"}, None)]}
     title = f"{brg.name}{_suffix(closure)}-{lubrication}-{housing}"
     rows["scene"] = [("name", title, None),
                      ("description", f"{brg.name} on a steel shaft in a {housing} housing, {lubrication}", None),
                      ("source", f"thermobear init (thermobear {__version__}): catalogue, ISO 15312 reference "
                       "conditions, builders' defaults; no measurement", None)]
-    d = {k: {key: v for key, v, _ in r} for k, r in rows.items()}
+    d = {k: _table(r) for k, r in rows.items()}
     d["housing"] = {"type": housing}
     sc = scene_from_dict(d)
     lay = layout(sc.network)
     rows["shaft"], rows["housing"] = _shaft_rows(sc.network, lay), _housing_rows(sc.network, lay, housing)
-    d = {k: {key: v for key, v, _ in r} for k, r in rows.items()}
+    d = {k: _table(r) for k, r in rows.items()}
     sc = scene_from_dict(d)                                  # the scene as written is a valid scene
     lines = [f"# A {brg.name}{_suffix(closure)} in a {housing} housing, {lubrication}: written by "
              f"`{command or 'thermobear init ' + brg.name + ' --lubrication ' + lubrication}`.",
