@@ -35,6 +35,7 @@ def unread_inputs(scene: Scene) -> dict:
       model.  (Read, it still acts only where Λ < 2.03: beyond, the film carries the whole load.)
     * ``lubricant.Rq_ball_um``, ``Rq_ring_um``: not read by the SKF model.
     * ``models.skf_R1``, ``skf_S1``, ``skf_mu_EHL``: read by the SKF model only (``models.losses = "skf"``).
+    * ``lubricant.flow_L_h``, ``T_in_C``: not under grease or a dry film; ``T_in_C`` not without a flow.
     * ``lubricant.K_rs``: read by the starvation factor Φ_rs (:func:`replenishment_constant`) of both loss models;
       not with ``models.starvation = false``, a dry film, or a bearing without bore and outside diameter.
 
@@ -46,9 +47,9 @@ def unread_inputs(scene: Scene) -> dict:
     if scene.models.get("losses") == "skf":
         why = ('models.losses = "skf": the SKF 2004 model has its own friction coefficients (μ_bl 0.15, μ_EHL: '
                'models.skf_mu_EHL) and no roughness')
-        return {field: why for field, _ in FRICTION_INPUTS.values()}
+        return {**{field: why for field, _ in FRICTION_INPUTS.values()}, **_supply_unread(scene)}
     why = 'read by the SKF model only (models.losses = "skf"); this scene runs the local model'
-    out = {f"models.{k}": why for k in SKF_CONSTANTS}
+    out = {**{f"models.{k}": why for k in SKF_CONSTANTS}, **_supply_unread(scene)}
     traction, reason = traction_choice(scene)
     if traction != "constant" and not added_losses(scene)["cage"][0]:
         out["lubricant.mu_full_film"] = (f'models.traction = "{traction}" ({reason.partition(":")[0]}) takes the '
@@ -66,12 +67,24 @@ def unread_inputs(scene: Scene) -> dict:
     return out
 
 
+def _supply_unread(scene: Scene) -> dict:
+    """The oil supply's inputs a supply without an oil flow does not read: ``lubricant.flow_L_h`` and ``T_in_C``
+    under grease or a dry film; ``T_in_C`` where no oil flows (``flow_L_h`` = 0: a bath that does not circulate)."""
+    if scene.supply in ("grease", "dry_film"):
+        why = f"supply {scene.supply!r}: no oil flows through the bearing"
+        return {"lubricant.flow_L_h": why, "lubricant.T_in_C": why}
+    if not scene.oil_flow > 0:
+        return {"lubricant.T_in_C": "no oil flows in (lubricant.flow_L_h = 0): the inlet temperature has nothing to carry"}
+    return {}
+
+
 def unread_settings(scene: Scene) -> list:
     """``[(field, value, why)]``: the inputs of :func:`unread_inputs` the scene sets — a friction input away from
     its default, an SKF constant given at all — each in its file's unit (no model choice for a scene that sets
     none of them)."""
     if not (any(not math.isclose(getattr(scene, a), d, rel_tol=1e-9) for a, d in _DEFAULTS.items())
-            or any(k in scene.models for k in SKF_CONSTANTS) or scene.K_rs is not None):
+            or any(k in scene.models for k in SKF_CONSTANTS) or scene.K_rs is not None
+            or scene.T_oil_in_C is not None or scene.oil_flow > 0):
         return []
     unread = unread_inputs(scene)
     out = []
@@ -82,6 +95,8 @@ def unread_settings(scene: Scene) -> list:
     for k in SKF_CONSTANTS:
         if f"models.{k}" in unread and scene.models.get(k) is not None:
             out.append((f"models.{k}", scene.models[k], unread[f"models.{k}"]))
-    if "lubricant.K_rs" in unread and scene.K_rs is not None:
-        out.append(("lubricant.K_rs", scene.K_rs, unread["lubricant.K_rs"]))
+    for fld, v in (("lubricant.K_rs", scene.K_rs), ("lubricant.T_in_C", scene.T_oil_in_C),
+                   ("lubricant.flow_L_h", round(scene.oil_flow * 3.6e6, 9) or None)):
+        if fld in unread and v is not None:
+            out.append((fld, v, unread[fld]))
     return out

@@ -29,6 +29,7 @@ from thermobear.losses.skf import skf_constants
 from thermobear.model_inputs import unread_inputs
 from thermobear.models import replenishment_constant
 from thermobear.scene import Scene
+from thermobear.scene.scene import FILE_KEYS
 from thermobear.scene.network import network_spec
 from thermobear.thermal.builders import Machine, build_network, estimates
 
@@ -38,6 +39,8 @@ __all__ = ["calibrate", "Calibration", "parameter_names"]
 
 _SCENE_SCALARS = ("T_ambient_C", "T_oil_in_C", "oil_flow_L_h", "mu_boundary", "mu_full_film", "K_rs")
 _SKF = ("skf_R1", "skf_S1", "skf_mu_EHL")
+#: a scene scalar's address in the scene file (``unread_inputs`` names them so)
+_ADDRESS = {k: a for a, k in FILE_KEYS.items() if k in _SCENE_SCALARS}
 _BUILDER = "builder."
 
 
@@ -80,7 +83,7 @@ def parameter_names(scene: Scene) -> list:
     names = _builder_keys(scene) + list(scene.network_parameters)
     names += [k for k in _network_numeric_parameters(scene) if k not in names]
     unread = unread_inputs(scene)
-    names += [k for k in _SCENE_SCALARS if f"lubricant.{k}" not in unread]
+    names += [k for k in _SCENE_SCALARS if _ADDRESS[k] not in unread]
     if scene.models.get("losses") == "skf":
         names += list(_SKF)
     return names
@@ -91,7 +94,7 @@ def _parse_param(scene: Scene, spec: str):
     name = name.strip()
     if name in _SKF and scene.models.get("losses") != "skf":
         raise InputError("--param", name, 'SKF constants need a scene on the SKF model: [models] losses = "skf"')
-    why = unread_inputs(scene).get(f"lubricant.{name}") if name in _SCENE_SCALARS else None
+    why = unread_inputs(scene).get(_ADDRESS[name]) if name in _SCENE_SCALARS else None
     if why:
         raise InputError("--param", name, f"the scene's models do not read it, so the log cannot fit it: {why}")
     known = parameter_names(scene)

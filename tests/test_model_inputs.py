@@ -1,0 +1,34 @@
+"""Which scene inputs the chosen models read (thermobear.model_inputs): the oil supply's flow and inlet temperature."""
+import warnings
+
+import thermobear as tb
+from thermobear.app.calibration import parameter_names
+from thermobear.errors import UnreadInput
+from thermobear.model_inputs import unread_inputs, unread_settings
+
+
+def test_a_grease_scene_names_an_oil_flow_and_inlet_temperature_it_does_not_read():
+    """A grease 6208 gave the same 69.92 W with an 80 °C inlet and 50 L/h as without, without a word, and calibrate
+    offered T_oil_in_C and oil_flow_L_h for it; now both are unread inputs, named when set, not offered."""
+    s = tb.load_scene(tb.example_path("block_6208_grease.toml"))
+    set_ = s.with_(T_oil_in_C=80.0, oil_flow_L_h=50.0)
+    assert [f for f, _, _ in unread_settings(set_)] == ["lubricant.T_in_C", "lubricant.flow_L_h"]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r0, r1 = tb.steady_state(s), tb.steady_state(set_)
+    assert r1.P_W == r0.P_W
+    assert sorted(w.field for w in r1.warnings if isinstance(w, UnreadInput)) == ["lubricant.T_in_C",
+                                                                               "lubricant.flow_L_h"]
+    assert not {"T_oil_in_C", "oil_flow_L_h"} & set(parameter_names(s))
+
+
+def test_an_inlet_temperature_without_a_flow_is_not_read_and_a_bath_flow_is():
+    """An oil bath that does not circulate (flow 0): its inlet temperature carries nothing; a flow circulates
+    through the bath and moves the answer, so it stays a read input (and a calibratable one)."""
+    s = tb.load_scene(tb.example_path("block_6208_oil_bath.toml"))
+    assert "lubricant.T_in_C" in unread_inputs(s) and "lubricant.flow_L_h" not in unread_inputs(s)
+    assert "lubricant.T_in_C" not in unread_inputs(s.with_(oil_flow_L_h=50.0))
+    assert tb.steady_state(s.with_(oil_flow_L_h=50.0)).P_W != tb.steady_state(s).P_W
+    assert "oil_flow_L_h" in parameter_names(s) and "T_oil_in_C" not in parameter_names(s)
+    jet = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
+    assert not {"lubricant.T_in_C", "lubricant.flow_L_h"} & set(unread_inputs(jet))
