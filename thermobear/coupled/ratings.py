@@ -163,8 +163,8 @@ class Ratings:
                 f"nu1 {self.nu1_m2_s * 1e6:.3g} cSt{'; a_ISO at kappa = 4, ISO 281' if self.kappa > 4.0 else ''})   "
                 f"e_C {self.e_C:g} ({self.contamination})   a_ISO {self.a_ISO:.3g}",
                 ("  L10, L10m: unloaded (P = 0), no fatigue life" if not self.P_N > 0 else
-                 f"  L10 {self.L10_h:.4g} h   L10m {self.L10m_h:.4g} h" +
-                 ("" if self.L10r_h is None else f"   L10r {self.L10r_h:.4g} h")),
+                 f"  L10 {self.L10_h:.4g} h   L10m {self.L10m_h:.4g} h (ISO 281 × a_ISO)" +
+                 ("" if self.L10r_h is None else f"   L10r {self.L10r_h:.4g} h (ISO/TS 16281, the solved ball loads)")),
                 *self._clearance_lines()]
 
     def _clearance_lines(self) -> list:
