@@ -274,3 +274,20 @@ def test_a_machine_with_one_fit_stated_keeps_the_other_rings_seat():
     c = scene_ratings(s, _steady(50.0, 50.0)).clearance_um
     assert c["shaft_fit"] == "m5" and c["housing_fit"] == "H7 (-21.5 µm)"
     assert "housing H7 (probable)" in c["fits_from"] and "other ring's fit from the scene" in c["fits_from"]
+
+
+def test_ratings_at_a_prescribed_temperature():
+    """`run` with operation.T_C gave no ratings (an engineer's usual question: the life at a specified 70 °C):
+    now κ and the lives are ISO 281's at that temperature, the clearance with every part at it (a uniform
+    temperature: the fits alone and the speed), and a hotter specification gives a shorter L10m."""
+    from thermobear.coupled import solve
+    from thermobear.coupled.ratings import operating_lives
+    s = tb.load_scene(tb.example_path("block_6208_oil_bath.toml"))
+    r70, r90 = solve(s.with_(T_C=70.0)), solve(s.with_(T_C=90.0))
+    lv = operating_lives(s, 70.0)
+    assert r70.ratings.T_operating_C == 70.0 and r70.ratings.kappa == pytest.approx(float(lv["kappa"]), rel=1e-12)
+    assert r70.ratings.L10m_h == pytest.approx(float(lv["L10m_h"]), rel=1e-12)
+    assert r90.ratings.L10m_h < r70.ratings.L10m_h and r90.ratings.L10_h == r70.ratings.L10_h
+    c = r70.ratings.clearance_um
+    assert abs(c["operating"] - c["mounted"]) < 0.1          # no ring temperature difference: the speed's growth only
+    assert "ratings" in r70.as_dict() and r70.ratings.L10r_h > 0

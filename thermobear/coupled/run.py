@@ -71,6 +71,22 @@ def heat_flow_table(st: SteadyState, P_W: float) -> list:
     return lines
 
 
+@dataclass(frozen=True)
+class Prescribed:
+    """A prescribed temperature [°C] as the ratings read a solved state (:func:`~thermobear.coupled.ratings.
+    scene_ratings`): the contacts, rings, balls, shaft and housing all at ``T``."""
+
+    T: float
+
+    @property
+    def T_C(self) -> dict:
+        return {"contacts (prescribed)": self.T}
+
+    @property
+    def roles(self) -> dict:
+        return dict.fromkeys(("inner", "outer", "ball"), "contacts (prescribed)")
+
+
 @dataclass
 class RunResult:
     """What ``thermobear run`` reports.
@@ -86,9 +102,9 @@ class RunResult:
     losses : LossResult        the loss result (per contact)
     steady : SteadyState       the coupled solution (None when the temperature is prescribed)
     warnings : list            OutsideValidity warnings of the answer (the ratings' included)
-    ratings : Ratings          C0, C, s0, p_max, κ, a_ISO, lives, clearance at the steady state
-                               (:func:`~thermobear.coupled.ratings.scene_ratings`; None at a prescribed
-                               temperature or at rest)
+    ratings : Ratings          C0, C, s0, p_max, κ, a_ISO, lives, clearance at the steady state or at the
+                               prescribed temperature (every part at it: :class:`Prescribed`;
+                               :func:`~thermobear.coupled.ratings.scene_ratings`); None at rest
     """
 
     scene: Scene
@@ -176,6 +192,10 @@ def solve(scene: Scene) -> RunResult:
             r = blend_losses([(a.weight, e) for a, e in zip(alts, each)])
         T = float(scene.T_C)
         ws = point_warnings(scene, r, [T, T, T])
+        rt = None
+        if scene.n_rpm > 0:        # the ratings at the prescribed temperature: life, κ, clearance of every part at T
+            rt = scene_ratings(scene, Prescribed(T), losses=r)
+            ws += [w for w in rt.warnings if str(w) not in map(str, ws)]
         # a preload by the films, each film alternative with its own dry loads (a blend keeps one's contacts)
         ws += [w for w in film_preload_warnings(scene, [(e, a.dry) for a, e in zip(alts, each)
                                                         if a.models["load_model"][0] == "film"])
@@ -183,8 +203,8 @@ def solve(scene: Scene) -> RunResult:
         emit(ws)
         return RunResult(scene=scene, P_W=float(r.P_W), torque_Nm=float(r.torque_Nm),
                          breakdown_W={k: float(v) for k, v in r.breakdown_W.items()},
-                         T_C={"contacts (prescribed)": T}, models_used=r.models_used, losses=r,
-                         warnings=ws)
+                         T_C=Prescribed(T).T_C, models_used=r.models_used, losses=r,
+                         warnings=ws, ratings=rt)
     st = steady_state(scene)
     rt = None
     if scene.n_rpm > 0:
