@@ -271,13 +271,19 @@ def summary_lines(res, top: int = 8) -> list:
              f"seed {res.seed}; {len(res.inputs)} estimated inputs; {grouped} in {res.groups} "
              f"famil{'y' if res.groups == 1 else 'ies'}){t}", "",
              f"  {'':26s} {'nominal':>9s} {'p5':>9s} {'p50':>9s} {'p95':>9s}"]
+    outside = 0
     for key, b in res.bands.items():
         kind, _, name = key.partition(".")
         unit = RATING_OUTPUTS.get(key) or ("°C" if kind == "T_C" else "W")
         v = res.nominal_values.get(key, _nominal_value(nom, key) if kind != "ratings" else None)
         f = ".4g" if key in RATING_OUTPUTS else ".2f"
+        out = v is not None and not last(b["p5"]) <= v <= last(b["p95"])
+        outside += out
         lines.append(f"  {(name or key) + ' [' + unit + ']':26s} {'' if v is None else f'{v:9{f}}':>9s} "
-                     f"{last(b['p5']):9{f}} {last(b['p50']):9{f}} {last(b['p95']):9{f}}")
+                     f"{last(b['p5']):9{f}} {last(b['p50']):9{f}} {last(b['p95']):9{f}}" + ("  *" if out else ""))
+    if outside:
+        lines += ["", "  * nominal outside its 5-95 % band: the nominal inputs are not the middle of their ranges "
+                  "(a one-sided range, e.g. an estimate at its range's end), or the output is not monotonic in them"]
     fc = res.failed_count
     lines += ["", f"Failed samples: {len(res.failed)} of {res.n}" + (
         " (" + ", ".join(f"{k} {v}" for k, v in sorted(fc.items())) + ")" if fc else "")]
