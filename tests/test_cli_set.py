@@ -79,3 +79,14 @@ def test_set_takes_a_scene_files_number_as_written():
     assert overrides(["flow_L_h=5", "lubricant.T_in_C=40", "operation.n_rpm=100", "lubricant.K_rs=4e-8"]) == \
         {"oil_flow_L_h": 5, "T_oil_in_C": 40, "n_rpm": 100, "K_rs": 4e-8}
     assert overrides(["flow_L_h=5"]) == overrides(["oil_flow_L_h=5"])
+
+
+def test_set_takes_the_seat_fits(capsys):
+    """`--set bearing.shaft_fit=k5` was refused (the fits could only be given in the file): stated fits close the
+    clearance loop of a deep groove bearing; an unknown class is refused by name."""
+    scene = str(Path(__file__).resolve().parents[1] / "examples" / "block_6208_oil_jet.toml")
+    assert main(["run", scene, "--json", "--set", "bearing.shaft_fit=k5", "--set", "bearing.housing_fit=H7"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["models_used"]["clearance"]["choice"] == "operating"
+    assert main(["run", scene, "--set", "bearing.shaft_fit=k9"]) == 2
+    assert "shaft_fit = 'k9' — must be one of" in capsys.readouterr().err

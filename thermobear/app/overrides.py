@@ -54,8 +54,8 @@ def _bearing_key(key: str, val, out: dict, table: dict):
         out[key] = val
     else:
         raise InputError(f"--set bearing.{key}", val, "not a key --set takes: bearing.<key> takes the bearing's "
-                         f"table keys ({', '.join(BEARING_KEYS)}), seals, seal_sides, cage; set other [bearing] "
-                         "keys in the scene file")
+                         f"table keys ({', '.join(BEARING_KEYS)}), seals, seal_sides, cage, shaft_fit, housing_fit; "
+                         "set other [bearing] keys in the scene file")
 
 
 def overrides(items, bearing_table: dict | None = None) -> dict:

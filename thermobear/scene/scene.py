@@ -343,7 +343,8 @@ class Scene:
         Accepted keys: n_rpm, Fa (or Fa_N), Fr (Fr_N), M (M_Nm; None holds the tilt), T_C (None: solve
         the network), T_oil_in_C, T_ambient_C, oil_flow_L_h, jet_penetration, oil_level_mm (None: not
         given), Rq_ball_um, Rq_ring_um, mu_boundary, mu_full_film, K_rs (None: SKF's), rotating, supply, lubricant (name, table
-        or Lubricant), bearing (catalogue name, table or BallBearing), seals, seal_sides, cage, network,
+        or Lubricant), bearing (catalogue name, table or BallBearing), seals, seal_sides, cage, shaft_fit, housing_fit
+        (ISO 286 classes; None: not stated), network,
         network_parameters (merged), T_fixed_C (node → °C, replaces; ``{}`` clears), models (merged) and
         samples (address → number, replaces).
 
@@ -431,6 +432,10 @@ _WITH = {
                                  "seal_sides": _default_sides(check_value(v, SECTIONS["bearing"]["seals"], name))},
     "seal_sides": lambda s, v, name: {"seal_sides": check_value(v, SECTIONS["bearing"]["seal_sides"], name)},
     "cage": lambda s, v, name: {"cage": check_value(v, SECTIONS["bearing"]["cage"], name)},
+    "shaft_fit": lambda s, v, name: {"shaft_fit": None if v is None else check_value(v, SECTIONS["bearing"]["shaft_fit"],
+                                                                                        name)},
+    "housing_fit": lambda s, v, name: {"housing_fit": None if v is None else
+                                       check_value(v, SECTIONS["bearing"]["housing_fit"], name)},
     "rotating": lambda s, v, name: {"rotating": check_value(v, SECTIONS["operation"]["rotating"], name)},
     "supply": lambda s, v, name: {"supply": check_value(v, SECTIONS["lubricant"]["supply"], name)},
     "network": lambda s, v, name: {"network": check_value(v, SECTIONS["thermal"]["network"], name)},
