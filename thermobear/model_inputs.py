@@ -84,7 +84,8 @@ def unread_settings(scene: Scene) -> list:
     none of them)."""
     if not (any(not math.isclose(getattr(scene, a), d, rel_tol=1e-9) for a, d in _DEFAULTS.items())
             or any(k in scene.models for k in SKF_CONSTANTS) or scene.K_rs is not None
-            or scene.T_oil_in_C is not None or scene.oil_flow > 0):
+            or (scene.T_oil_in_C is not None or scene.oil_flow > 0) and scene.supply in ("grease", "dry_film")
+            or scene.T_oil_in_C is not None and not scene.oil_flow > 0):
         return []
     unread = unread_inputs(scene)
     out = []

@@ -107,19 +107,34 @@ def _models_used(fam: Family, r, template, cp: Coupling) -> dict:
     return used
 
 
-def _point_models_used(used: dict, nw: _Newton, b: int, r=None) -> dict:
+#: the film factors the model choice states at the inlet temperature, stated at the solution too
+_FACTORS = (("starvation", "phi_rs", "Φ_rs"), ("inlet_heating", "phi_T", "φ_T"))
+
+
+def _factor_ranges(r, B: int) -> dict:
+    """Per factor of :data:`_FACTORS` the (B,) least and greatest value over a point's contacts in the loss result
+    ``r`` (none for a result without contacts: the SKF model)."""
+    contacts = getattr(r, "contacts", None)
+    if not contacts or "phi_rs" not in contacts["inner"]:
+        return {}
+    out = {}
+    for _, arr, _ in _FACTORS:
+        v = np.concatenate([np.reshape(np.asarray(contacts[k][arr], float), (B, -1)) for k in ("inner", "outer")],
+                           axis=1)
+        out[arr] = (v.min(axis=1).tolist(), v.max(axis=1).tolist())
+    return out
+
+
+def _point_models_used(used: dict, nw: _Newton, b: int, factors: dict | None = None) -> dict:
     """A point's models used: its fixed point's iterations, and the film factors the model choice stated at the
-    inlet temperature also at the solution (the contacts of ``r``'s row ``b``)."""
+    inlet temperature also at the solution (``factors``: :func:`_factor_ranges` of the point's batch)."""
     out = dict(used)
     out["thermal"] = (used["thermal"][0], f"fixed point on {nw.x.shape[1]} coupled temperatures: {nw.method[b]}, "
                                           f"{int(nw.its[b])} iterations, loop gain {nw.gain[b]:.2f}")
-    contacts = getattr(r, "contacts", None)
-    for key, arr, sym in (("starvation", "phi_rs", "Φ_rs"), ("inlet_heating", "phi_T", "φ_T")):
-        if not contacts or not out.get(key, (False,))[0] or arr not in contacts["inner"]:
-            continue
-        v = np.concatenate([np.asarray(contacts[k][arr], float).reshape(-1, contacts[k][arr].shape[-1])[b]
-                            for k in ("inner", "outer")])
-        out[key] = (out[key][0], f"{out[key][1]}; at the solution {sym} {v.min():.3f}–{v.max():.3f} over the contacts")
+    for key, arr, sym in _FACTORS:
+        if arr in (factors or {}) and out.get(key, (False,))[0]:
+            lo, hi = factors[arr][0][b], factors[arr][1][b]
+            out[key] = (out[key][0], f"{out[key][1]}; at the solution {sym} {lo:.3f}–{hi:.3f} over the contacts")
     return out
 
 
@@ -181,6 +196,7 @@ class Solved:
                                       dry=dry if any(d is not None for d in dry) else None,
                                       T_seal_C=None if seal is None else st.T_K[:, seal] - _C0)
         self.used = [u for f in (fams or [fam]) for u in [_models_used(f, r, template, cp)] * f.B]
+        self.factors = _factor_ranges(r, B)
         contacts = getattr(r, "contacts", None)
         T_cont = (0.5 * (np.asarray(contacts["inner"]["T_C"], float).mean(axis=-1)
                          + np.asarray(contacts["outer"]["T_C"], float).mean(axis=-1)) if contacts else
@@ -203,7 +219,7 @@ class Solved:
         return SteadyState(
             T_C=T_C, T_ball_C=T_C[cp.roles["ball"]], P_W=self.P[b], iterations=int(nw.its[b]),
             residual_K=max(float(nw.step[b]), float(self.gap[b])), energy_balance_W=self.bal[b],
-            heat_flows_W=row(self.flows), models_used=_point_models_used(self.used[b], nw, b, self.r),
+            heat_flows_W=row(self.flows), models_used=_point_models_used(self.used[b], nw, b, self.factors),
             history=nw.history[b],
             roles=dict(cp.roles), warnings=self.warned[b], torque_Nm=self.M[b], breakdown_W=row(self.bd),
             T_contacts_C=self.T_cont[b], batch_losses=self.r, row=b, heat_sources_W=_part_sources(cp, self.parts[b],
