@@ -291,3 +291,13 @@ def test_ratings_at_a_prescribed_temperature():
     c = r70.ratings.clearance_um
     assert abs(c["operating"] - c["mounted"]) < 0.1          # no ring temperature difference: the speed's growth only
     assert "ratings" in r70.as_dict() and r70.ratings.L10r_h > 0
+
+
+def test_an_angular_contact_bearings_clearance_says_what_it_is():
+    """A single 7210 B's 'clearance mounted 229.85 µm' meant nothing to an engineer: the ratings say it is the play
+    the contact angle implies, which a pair's axial adjustment overrides; a deep groove bearing's carries no note."""
+    from thermobear.coupled import solve
+    r = solve(tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml")))
+    assert "2A(1 − cos α0)" in r.ratings.clearance_um["note"] and r.ratings.lines()[-1].startswith("  (angular contact")
+    dg = solve(tb.load_scene(tb.example_path("block_6208_oil_bath.toml")))
+    assert "note" not in dg.ratings.clearance_um

@@ -174,7 +174,8 @@ class Ratings:
         return [f"  clearance mounted {c['mounted']:.2f} µm, operating {c['operating']:.2f} µm, in the loads "
                 f"{c['used']:.2f} µm" + (f" (fixed point, {c['iterations']} iterations, residual "
                                          f"{c['residual_um']:.1e} µm)" if "iterations" in c else " (as given)"),
-                f"  fits {c['shaft_fit']} / {c['housing_fit']}: {c['fits_from']}"]
+                f"  fits {c['shaft_fit']} / {c['housing_fit']}: {c['fits_from']}"] + (
+                    [f"  ({c['note']})"] if c.get("note") else [])
 
 
 def _num(v):
@@ -284,6 +285,9 @@ def scene_ratings(scene, steady, losses=None) -> Ratings:
                                           "by the mounting)"}
     else:
         clear = getattr(steady, "clearance_um", None) or scene_clearance(scene, steady.T_C, steady.roles)
+        if b.kind == "angular_contact":
+            clear = {**clear, "note": "angular contact bearing: the diametral play its contact angle implies, "
+                                      "P_d = 2A(1 − cos α0); in a pair the axial adjustment sets the contacts, not this play"}
     s0 = C0 / P0 if P0 > 0 else np.inf
     with collect(replay=False) as got:
         if P0 > 0:
