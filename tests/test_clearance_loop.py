@@ -174,3 +174,28 @@ def test_a_machine_that_states_its_seats_says_how_they_enter_the_loads():
     tight = scene_from_dict(d)
     r, rt = tb.steady_state(s), tb.steady_state(tight)
     assert "fixed point" in r.models_used["clearance"][1] and rt.P_W > r.P_W
+
+
+def test_mounted_fits_warn_of_the_warm_preload_they_leave(jet):
+    """models.clearance = 'mounted' with k5 / H7: the loads use the 1.69 µm of the fits at 20 °C while the warm rings
+    leave −5.5 µm — the ratings name that preload (the loop's own warning covers only the clearance it used)."""
+    s = dataclasses.replace(jet, shaft_fit="k5", housing_fit="H7").with_(models={"clearance": "mounted"})
+    with pytest.warns(tb.OutsideValidity):
+        r = tb.solve(s)
+    c = r.ratings.clearance_um
+    assert c["used"] == pytest.approx(c["mounted"]) and c["operating"] < 0
+    w = [x for x in r.warnings if x.quantity == "operating_clearance"]
+    assert len(w) == 1 and f"the loads used {c['used']:.3g} µm" in str(w[0])
+
+
+def test_a_preload_that_overloads_the_contacts_is_a_preload_runaway():
+    """A loop step whose preloaded steady state overloads the contacts (ContactLimit) is the preload's runaway, the
+    overload its cause — not an input error blaming the scene's loads."""
+    from thermobear.coupled.clearance import _stopped
+    from thermobear.errors import ContactLimit, ThermalPreloadRunaway
+    s = tb.load_scene(tb.example_path("block_6208_oil_jet.toml"))
+    c = scene_clearance(s, {"ir": 60.0, "or": 30.0, "b": 60.0}, {"inner": "ir", "outer": "or", "ball": "b"})
+    err = ContactLimit("operation (Fa_N, Fr_N, M_Nm)", "Fa 0 N", "maximum contact pressure 6528 MPa")
+    out = _stopped(s, err, -5e-4, [dict(operating_um=-500.0)], c)
+    assert isinstance(out, ThermalPreloadRunaway) and out.__cause__ is err
+    assert _stopped(s, err, 1e-6, [], c) is err                  # at a clearance: the error as it is

@@ -123,3 +123,23 @@ def test_scene_tables_state_the_unmounted_clearance():
     """A negative clearance is what the mounting makes: a bearing table (catalogue, scene) keeps Pd_mm >= 0."""
     with pytest.raises(tb.InputError, match="Pd_mm"):
         tb.load_scene(tb.example_path("oil_bath_6208.toml")).with_(bearing={"Pd_mm": -0.005})
+
+
+def test_a_pure_axial_load_on_a_preload_is_not_the_closed_form():
+    """Fr = 0 on a radially preloaded 6208: the closed form (all balls at the axial contact angle) knew no preload and
+    gave the answer of P_d = 0 (64.50 W, Q 305 N); the balls are compressed radially as well, so the model choice
+    takes Jones–Harris (all balls still equal, each carrying more than without the preload), and a forced closed
+    form is refused by name."""
+    import warnings
+    from thermobear.errors import InputError
+    bath = tb.load_scene(tb.example_path("oil_bath_6208.toml"))
+    s = bath.with_(Fr=0.0, Fa=500.0, models={"clearance": "given"})
+    pre = s.with_(bearing=s.bearing.with_(Pd=-8e-6))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r0, r1 = tb.steady_state(s), tb.steady_state(pre)
+    Q0, Q1 = (np.asarray(r.losses.contacts["inner"]["Q"], float).ravel() for r in (r0, r1))
+    assert r0.models_used["load_model"][0] == "closed_form" and r1.models_used["load_model"][0] == "jones_harris"
+    assert np.ptp(Q1) < 1e-9 * Q1.max() and Q1.min() > Q0.max() and r1.P_W > r0.P_W
+    with pytest.raises(InputError, match="clearance >= 0"):
+        tb.steady_state(pre.with_(models={"load_model": "closed_form"}))

@@ -36,8 +36,9 @@ def unread_inputs(scene: Scene) -> dict:
     * ``lubricant.Rq_ball_um``, ``Rq_ring_um``: not read by the SKF model.
     * ``models.skf_R1``, ``skf_S1``, ``skf_mu_EHL``: read by the SKF model only (``models.losses = "skf"``).
     * ``lubricant.flow_L_h``, ``T_in_C``: not under grease or a dry film; ``T_in_C`` not without a flow.
-    * ``lubricant.K_rs``: read by the starvation factor Φ_rs (:func:`replenishment_constant`) of both loss models;
-      not with ``models.starvation = false``, a dry film, or a bearing without bore and outside diameter.
+    * ``lubricant.K_rs``: read by the starvation factor Φ_rs (:func:`~thermobear.models.replenishment_constant`):
+      always by the SKF model; by the local model unless ``models.starvation = false``, a dry film, or a bearing
+      without bore and outside diameter.
 
     >>> import thermobear as tb
     >>> s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))

@@ -97,8 +97,9 @@ FLOODED = ("oil_jet", "oil_bath")
 
 
 def is_symmetric(scene: Scene) -> bool:
-    """Pure axial load, tilt held, nominal stiffness: every ball carries the same load."""
-    return (scene.Fr == 0.0 and scene.Fz == 0.0 and scene.M is None and scene.My is None
+    """Pure axial load, tilt held, nominal stiffness, a clearance (≥ 0): every ball carries the same load at the
+    closed form's contact angle (a radial preload, P_d < 0, compresses the balls radially as well: Jones–Harris)."""
+    return (scene.Fr == 0.0 and scene.Fz == 0.0 and scene.M is None and scene.My is None and scene.bearing.Pd >= 0.0
             and scene.models.get("stiffness", "nominal") == "nominal")
 
 
@@ -355,8 +356,8 @@ def _choose(scene: Scene, hs: tuple, lm: tuple | None, film: dict | None = None,
         raise InputError("thermal.network", None, "give a thermal network or prescribe operation.T_C")
     if "load_model" in m:
         if m["load_model"] == "closed_form" and not is_symmetric(scene):
-            raise InputError("models.load_model", "closed_form", "the closed form needs Fr = 0, no moment and "
-                             "the nominal stiffness")
+            raise InputError("models.load_model", "closed_form", "the closed form needs Fr = 0, no moment, "
+                             "the nominal stiffness and a clearance >= 0 (a radial preload: jones_harris)")
         out["load_model"] = (m["load_model"], "chosen in the scene" if m["load_model"] != "film" else
                              "chosen in the scene: Jones–Harris with the NVM films in each contact law "
                              "(thermobear.loads.film, or thermobear.loads.highspeed with film=...)")
@@ -418,6 +419,9 @@ def clearance_choice(scene: Scene) -> tuple:
     if scene.T_C is None and (scene.shaft_fit is not None or scene.housing_fit is not None):
         return "operating", (f"deep groove bearing with fits given ({scene.shaft_fit or '-'} / {scene.housing_fit or '-'}):"
                              f" {pd} unmounted, mounted and warmed to the solution's ring temperatures (fixed point)")
+    if scene.T_C is not None:
+        return "given", (f"{pd} as given (a prescribed temperature: the operating clearance with every part at it is "
+                         "reported with the ratings; the loop needs the solved temperatures)")
     seats = [f"[{k}] interference_um {getattr(scene.network, k).interference * 1e6:.3g} µm" for k in ("shaft", "housing")
              if getattr(getattr(scene.network, k, None), "interference", None) is not None]
     if seats:      # a machine's seats (init writes the usual fits' probable interference): reported, not in the loads

@@ -271,7 +271,9 @@ def calibrate(scene: Scene, log: RigLog, params: list, mapping: dict, *, T0_C=No
                            (seed 002 re-calibrates R1, S1 for the 51107 this way)
     mapping : dict         channel → node (:func:`channel_map`)
     T0_C : float           start temperature of transient logs [°C] (default ambient)
-    max_nfev : int         budget of model evaluations
+    max_nfev : int         iterations of each least-squares pass (its function evaluations; the forward Jacobian's
+                           p evaluations per iteration, the central check's 2p and a second pass where the
+                           residuals are not smooth come on top)
     diff_step : float      finite-difference step of the Jacobian, relative to the start value (absolute in u)
                            (a step in ln p for positive parameters, diff_step·|p0| — or diff_step
                            when p0 = 0 — for the others)

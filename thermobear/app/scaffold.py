@@ -167,7 +167,7 @@ def _lubrication(brg, supply, oil, oil_src, ref: ReferenceSpeed | None) -> list:
                   f"with a {JET_RISE_K:g} K rise, Q = N / (rho c_p dT), rho c_p = {rho_cp / 1e6:.2f} MJ/(m3 K) at "
                   f"{T_JET_IN_C:g} °C (rise estimated: 5-15 K is usual for circulating oil)"),
                  _range("flow_L_h", [_sig(q * JET_RISE_K / 15.0, 2), _sig(q * JET_RISE_K / 5.0, 2)], "the flow that "
-                        "carries the reference heat with the usual 5-15 K rise"),
+                        "carries the reference heat with the usual 5-15 K rise (Q ∝ 1/dT)", lognormal=True),
                  ("T_in_C", T_JET_IN_C, "°C: estimated (a tempered supply above a 20 °C room)"),
                  _T_in_range(),
                  ("oil_feed", "jet", "a jet: 0.4 of the flow passes the bearing (Brossier et al. 2021; builders' "
@@ -199,7 +199,8 @@ def _table(rows) -> dict:
 
 
 def _range(key: str, rng: list, why: str, lognormal: bool = False) -> tuple:
-    """An ``uncertainty.<key>`` row of the scene file: the estimate's range (5-95 %) and its reasoning."""
+    """An ``uncertainty.<key>`` row of the scene file: the estimate's range (the support of a uniform draw, or the
+    5-95 % quantiles of a lognormal one) and its reasoning."""
     u = {"range": rng} | ({"distribution": "lognormal"} if lognormal else {}) | {"source": f"reasoning: {why}"}
     return f"uncertainty.{key}", u, None
 

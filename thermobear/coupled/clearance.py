@@ -42,7 +42,7 @@ from __future__ import annotations
 import dataclasses
 
 from thermobear.coupled.ratings import preload_warnings, scene_clearance
-from thermobear.errors import InputError, NoConvergence, ThermalPreloadRunaway, ThermalRunaway
+from thermobear.errors import ContactLimit, InputError, NoConvergence, ThermalPreloadRunaway, ThermalRunaway
 
 __all__ = ["clearance_loop", "preload_runaway", "scene_at_clearance", "CLEARANCE_TOL_M"]
 
@@ -127,7 +127,7 @@ def _answer(scene, r, c, used, hist, choice, how):
     dT = c["temperatures_C"]["inner ring"] - c["temperatures_C"]["outer ring"]
     res = abs(c["operating"] * 1e-6 - used) if choice == "operating" else 0.0
     clear = {**c, "used": used * 1e6, "iterations": max(len(hist), 1), "residual_um": res * 1e6,
-             "history": list(hist)}
+             "history": list(hist), "choice": choice}
     reason = (f"{how}: {c['unmounted']:.3g} µm unmounted → {c['mounted']:.3g} µm mounted ({c['shaft_fit']} / "
               f"{c['housing_fit']}) → {used * 1e6:.3g} µm in the loads" +
               (f", inner ring {dT:.1f} K above the outer ({len(hist)} steps, residual {res * 1e6:.1e} µm)"
@@ -144,7 +144,7 @@ def _answer(scene, r, c, used, hist, choice, how):
 def _stopped(scene, r, Pd, hist, c):
     """A step's error at a negative clearance ``Pd`` [m] — the steady state at that preload runs away or its
     contacts are overloaded — as the preload's runaway (the error as its cause); other errors as they are."""
-    overload = isinstance(r, InputError) and r.field == "Fa, Fr, M"
+    overload = isinstance(r, ContactLimit) or isinstance(r, InputError) and r.field == "Fa, Fr, M"
     if Pd >= 0 or c is None or not (isinstance(r, ThermalRunaway) or overload):
         return r
     e = preload_runaway(scene, c, hist, f"the coupled steady state at {Pd * 1e6:.3g} µm has no solution "

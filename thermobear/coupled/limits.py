@@ -143,20 +143,24 @@ def past_maker_limit(scene):
     if not scene.n_rpm > 0:
         return None
     m = maker_speeds(scene.bearing, scene.seals)
-    return m if m is not None and rpm_to_rad_s(scene.n_rpm) > m.limiting else None
+    return m if _above(scene.n_rpm, m) else None
+
+
+def _above(n_rpm, m) -> bool:
+    """A speed [rpm] above the limiting speed of maker's speeds ``m`` (None: no value on file)."""
+    return m is not None and n_rpm > 0 and rpm_to_rad_s(n_rpm) > m.limiting
 
 
 def _past_maker_limits(scenes) -> np.ndarray:
     """Per point (B,): above the maker's limiting speed (:func:`past_maker_limit`), the data read once per bearing
     and seals of the family."""
-    limit: dict = {}
+    found: dict = {}
     out = np.zeros(len(scenes), bool)
     for b, s in enumerate(scenes):
         key = (s.bearing.name, s.seals)
-        if key not in limit:
-            m = maker_speeds(s.bearing, s.seals)
-            limit[key] = np.inf if m is None else m.limiting
-        out[b] = s.n_rpm > 0 and rpm_to_rad_s(s.n_rpm) > limit[key]
+        if key not in found:
+            found[key] = maker_speeds(s.bearing, s.seals)
+        out[b] = _above(s.n_rpm, found[key])
     return out
 
 

@@ -294,9 +294,13 @@ def scene_ratings(scene, steady, losses=None) -> Ratings:
             check("s0", s0, _LOAD_FIELDS, what=f"P0 = {P0:.4g} N, C0 = {C0:.4g} N")
         check("kappa", kappa, "lubricant viscosity at the operating temperature",
               what=f"nu {nu * 1e6:.3g} cSt at {T_op:.1f} °C, nu1 {nu1 * 1e6:.3g} cSt")
-    if "operating" in clear and "iterations" not in clear:     # (a clearance loop's answer warns of its own preload)
+    looped = clear.get("choice") == "operating"           # the loads at the operating clearance: its own warning
+    if "operating" in clear and not looped:
+        advice = ("" if b.kind != "deep_groove" else
+                  "; models.clearance = 'operating' without operation.T_C solves the preload" if scene.T_C is not None
+                  else "; models.clearance = 'operating' solves the preload")
         got += preload_warnings(b, clear["operating"] * 1e-6, clear, f"at the answer's temperatures; the loads used "
-                                f"{b.Pd * 1e6:.3g} µm (models.clearance = 'operating' solves the preload)")
+                                f"{clear.get('used', b.Pd * 1e6):.3g} µm{advice}")
     return Ratings(C_N=C, C0_N=C0, P_N=P, P0_N=P0, s0=s0, p_max_Pa=p or {"inner": 0.0, "outer": 0.0},
                    T_operating_C=T_op, nu_m2_s=nu, nu1_m2_s=nu1, kappa=kappa, contamination=str(scene.contamination),
                    e_C=e_C, a_ISO=a_iso, L10_h=float(lv["L10_h"]), L10m_h=float(lv["L10m_h"]), L10r_h=L10r,

@@ -277,7 +277,8 @@ def summary_lines(res, top: int = 8) -> list:
         unit = RATING_OUTPUTS.get(key) or ("°C" if kind == "T_C" else "W")
         v = res.nominal_values.get(key, _nominal_value(nom, key) if kind != "ratings" else None)
         f = ".4g" if key in RATING_OUTPUTS else ".2f"
-        out = v is not None and not last(b["p5"]) <= v <= last(b["p95"])
+        lo, hi = last(b["p5"]), last(b["p95"])
+        out = v is not None and bool(np.isfinite(lo) and np.isfinite(hi)) and not lo <= v <= hi
         outside += out
         lines.append(f"  {(name or key) + ' [' + unit + ']':26s} {'' if v is None else f'{v:9{f}}':>9s} "
                      f"{last(b['p5']):9{f}} {last(b['p50']):9{f}} {last(b['p95']):9{f}}" + ("  *" if out else ""))

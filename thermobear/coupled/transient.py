@@ -333,7 +333,8 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
             got += [w for w in fc.preload_warnings() if str(w) not in map(str, got)]
     got += [settling.warning] if settling.warning is not None else []
     if c is not None and c["operating"] < 0:      # the last piece at a radial preload
-        got += preload_warnings(pieces[i][2].bearing, c["operating"] * 1e-6, c, f"during the heat-up, t = {te:g} s")
+        got += preload_warnings(pieces[i][2].bearing, c["operating"] * 1e-6, c,
+                                f"during the heat-up, at t = {clear_hist[-1]['t_s']:g} s (its last piece's start)")
     emit(got)
     return _assemble(out_t, out_T, out_rep, first, seg_changes, got, completed)
 

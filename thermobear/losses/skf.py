@@ -615,7 +615,8 @@ def mu_EHL_from_torque(M_exp_Nm, d_mm, D_mm, kind, nu_cSt, n_rpm, Fa, Fr, *, mu_
     M_exp_Nm : array_like  measured total frictional moment [N m]
     d_mm, D_mm, kind, nu_cSt, n_rpm, Fa, Fr : as :func:`skf_moment`
     mu_bl : float          boundary friction coefficient assumed [-]
-    **constants            R1, S1, (R2, R3, S2, S3), K_z, lubrication, C0, V_M, M_seal_Nmm
+    **constants            R1, S1, (R2, R3, S2, S3), K_z, lubrication, C0, V_M, M_seal_Nmm, K_rs (None: SKF's
+                           of the lubrication)
 
     Returns
     -------
