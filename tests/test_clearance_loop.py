@@ -199,3 +199,18 @@ def test_a_preload_that_overloads_the_contacts_is_a_preload_runaway():
     out = _stopped(s, err, -5e-4, [dict(operating_um=-500.0)], c)
     assert isinstance(out, ThermalPreloadRunaway) and out.__cause__ is err
     assert _stopped(s, err, 1e-6, [], c) is err                  # at a clearance: the error as it is
+
+
+def test_a_heat_up_takes_the_mounted_clearance_and_names_the_warm_preload(jet):
+    """models.clearance = 'mounted' on p6 / N7: the heat-up ran at the clearance as given (29.86 W, `run` 66.22 W) and
+    said nothing; now its loads use the fits' clearance and it settles on `run`'s answer, naming the preload the warm
+    rings leave at its end — as the clearance as given does (it was silent too)."""
+    s = dataclasses.replace(jet, shaft_fit="p6", housing_fit="N7")
+    with pytest.warns(tb.OutsideValidity):
+        steady = tb.solve(s.with_(models={"clearance": "mounted"}))
+        tr = tb.transient(s.with_(models={"clearance": "mounted"}), 7200.0)
+        given = tb.transient(s.with_(models={"clearance": "given"}), 7200.0)
+    assert tr.P_W[-1] == pytest.approx(steady.P_W, rel=1e-3) and given.P_W[-1] < 0.5 * tr.P_W[-1]
+    for r in (tr, given):
+        w = [x for x in r.warnings if x.quantity == "operating_clearance"]
+        assert len(w) == 1 and "at t = 7200 s" in str(w[0]) and w[0].value < 0

@@ -87,3 +87,14 @@ def test_models_used_state_the_factors_at_the_solution(s004):
         assert 0.0 < lo <= hi <= 1.0
         if key == "starvation":
             assert lo > inlet
+
+
+def test_the_skf_model_honours_starvation_off():
+    """models.starvation = false on the SKF model kept its Φ_rs (25.56 W, and K_rs still moved it); now Φ_rs = 1
+    there too (more rolling loss), and a K_rs set beside it is named as unread."""
+    from thermobear.model_inputs import unread_settings
+    s = tb.load_scene(tb.example_path("block_6208_oil_jet.toml")).with_(models={"losses": "skf"})
+    off = s.with_(models={"starvation": False})
+    P_on, P_off = tb.steady_state(s).P_W, tb.steady_state(off).P_W
+    assert P_off > P_on and tb.steady_state(off.with_(K_rs=5e-7)).P_W == pytest.approx(P_off, rel=1e-12)
+    assert [f for f, _, _ in unread_settings(off.with_(K_rs=5e-7))] == ["lubricant.K_rs"]

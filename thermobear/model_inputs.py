@@ -37,8 +37,8 @@ def unread_inputs(scene: Scene) -> dict:
     * ``models.skf_R1``, ``skf_S1``, ``skf_mu_EHL``: read by the SKF model only (``models.losses = "skf"``).
     * ``lubricant.flow_L_h``, ``T_in_C``: not under grease or a dry film; ``T_in_C`` not without a flow.
     * ``lubricant.K_rs``: read by the starvation factor Φ_rs (:func:`~thermobear.models.replenishment_constant`):
-      always by the SKF model; by the local model unless ``models.starvation = false``, a dry film, or a bearing
-      without bore and outside diameter.
+      by both loss models unless ``models.starvation = false`` (then Φ_rs = 1 in the SKF model too), a dry film, or
+      (local model) a bearing without bore and outside diameter.
 
     >>> import thermobear as tb
     >>> s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
@@ -48,7 +48,10 @@ def unread_inputs(scene: Scene) -> dict:
     if scene.models.get("losses") == "skf":
         why = ('models.losses = "skf": the SKF 2004 model has its own friction coefficients (μ_bl 0.15, μ_EHL: '
                'models.skf_mu_EHL) and no roughness')
-        return {**{field: why for field, _ in FRICTION_INPUTS.values()}, **_supply_unread(scene)}
+        out = {**{field: why for field, _ in FRICTION_INPUTS.values()}, **_supply_unread(scene)}
+        if not scene.models.get("starvation", True):
+            out["lubricant.K_rs"] = "models.starvation = false: Φ_rs = 1 in the SKF model too"
+        return out
     why = 'read by the SKF model only (models.losses = "skf"); this scene runs the local model'
     out = {**{f"models.{k}": why for k in SKF_CONSTANTS}, **_supply_unread(scene)}
     traction, reason = traction_choice(scene)

@@ -44,7 +44,7 @@ import dataclasses
 from thermobear.coupled.ratings import preload_warnings, scene_clearance
 from thermobear.errors import ContactLimit, InputError, NoConvergence, ThermalPreloadRunaway, ThermalRunaway
 
-__all__ = ["clearance_loop", "preload_runaway", "scene_at_clearance", "CLEARANCE_TOL_M"]
+__all__ = ["clearance_loop", "preload_runaway", "scene_at_clearance", "heat_up_preload_warnings", "CLEARANCE_TOL_M"]
 
 CLEARANCE_TOL_M = 1e-8          #: fixed-point tolerance on the clearance [m]
 _MAXITER = 25
@@ -92,6 +92,23 @@ def _running_away(hist: list, tol_m: float) -> bool:
     (a, b) = ((h["operating_um"] * 1e-6, h["used_um"] * 1e-6) for h in hist[-2:])
     r0, r1 = a[0] - a[1], b[0] - b[1]
     return b[1] < 0 and r1 < -tol_m and r0 < 0 and abs(r1) >= abs(r0)
+
+
+def heat_up_preload_warnings(scene, c, T_end_C, roles, hist: list, t_end_s: float) -> list:
+    """The named radial-preload warning of a heat-up (:func:`~thermobear.coupled.ratings.preload_warnings`): ``c`` the
+    operating clearance of its last piece where its loads followed it (``models.clearance = "operating"``), else
+    None — then the operating clearance at its end state ``T_end_C`` (node → °C; ``roles`` of the network; None: not
+    checked), as the ratings check a steady state (thrust bearings and bearings without bore / OD: none).  ``hist``,
+    the heat-up's clearance history, gets the end's entry."""
+    b = scene.bearing
+    if c is None and T_end_C is not None and b.kind != "thrust" and None not in (b.bore, b.outer_diameter):
+        c = scene_clearance(scene, T_end_C, roles)
+        hist.append(dict(t_s=t_end_s, operating_um=c["operating"]))
+    if c is None or not c["operating"] < 0:
+        return []
+    t = hist[-1]["t_s"]
+    return preload_warnings(b, c["operating"] * 1e-6, c, f"during the heat-up, at t = {t:g} s"
+                            + ("" if t == t_end_s else " (its last piece's start)"))
 
 
 def _step(scene, r, used, hist, tol_m):

@@ -70,6 +70,8 @@ def _one(values: np.ndarray):
 def _K_rs(fam: Family):
     """The family's replenishment constants [-] (:func:`~thermobear.models.replenishment_constant`: one float, or
     (B,) where the points differ; NaN for a supply without one, whose models do not read it)."""
+    if not fam.models.get("starvation", (True,))[0]:
+        return 0.0                  # no replenishment factor: Φ_rs = 1 (the SKF model's too, where the scene says so)
     return _one(np.array([np.nan if k is None else k for k in map(replenishment_constant, fam.scenes)], float))
 
 
@@ -222,7 +224,8 @@ def skf_losses(scene: Scene, T_C, models: dict, *, n_rpm=None, Fa=None, Fr=None,
     r = skf_friction(scene.bearing, oil.nu(T_C), n, Fa, Fr, lubrication=lub, R1=m.get("skf_R1"),
                      S1=m.get("skf_S1"), mu_EHL=m.get("skf_mu_EHL"), base_oil=base, H_mm=H_mm,
                      M_seal_Nmm=0.0 if M_seal_Nmm is None else M_seal_Nmm,
-                     K_rs=replenishment_constant(scene) if K_rs is None else K_rs)
+                     K_rs=K_rs if K_rs is not None else 0.0 if not models.get("starvation", (True,))[0]
+                     else replenishment_constant(scene))
     w = np.asarray(n, float) * np.pi / 30.0
     bd = {"rolling": r.M_rr * w, "sliding": r.M_sl * w, "drag": 0.0 * r.M_drag * w, "churning": r.M_drag * w,
           "seal": r.M_seal * w}

@@ -50,8 +50,8 @@ from dataclasses import dataclass, field, fields
 import numpy as np
 
 from thermobear.coupled.limits import emit, film_load_preload_warnings, point_warnings, runaway_at, runaway_in
-from thermobear.coupled.clearance import scene_at_clearance, preload_runaway
-from thermobear.coupled.ratings import check_static_safety, preload_warnings, scene_clearance
+from thermobear.coupled.clearance import heat_up_preload_warnings, preload_runaway, scene_at_clearance
+from thermobear.coupled.ratings import check_static_safety, scene_clearance
 from thermobear.coupled.pipeline import Family, family_film_loads, family_loads, film_temperature_C, stack_loads
 from thermobear.coupled.pointmodel import PointModel, heat_sources, point_model
 from thermobear.coupled.sources import loss_sources, prepared_for
@@ -234,7 +234,7 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
     cells: dict = {}        # scene (id) → its _FilmCells: the loads solved for it during the run
     last_film = None        # (film temperature's rate at its end [K/s], scene) of the last piece
     settling = _Settling()  # per scene: where its heat-up settled (fine cells there), past a jump of the loads
-    c = None                # the operating clearance at the last piece's start (models.clearance = operating)
+    c, mounted = None, {}   # the last piece's operating clearance; scene (id) → (it at its mounted clearance, alts)
     with warnings.catch_warnings():
         # property calls at the integrator's trial states may lie beyond a correlation's data; the
         # validity of the states reported is checked once, on the series (limits.point_warnings)
@@ -245,12 +245,18 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
             if id(sc) not in plans:           # film pieces of one step share its scene: planned once
                 plans[id(sc)] = _alternatives(sc, load)
             alts = plans[id(sc)]
-            clear = load is None and alts[0].models["clearance"][0] == "operating"
-            sc_p = sc
-            if clear:                         # the clearance at the piece's start temperatures
+            choice = alts[0].models["clearance"][0] if load is None else "given"
+            clear, sc_p = choice == "operating", sc
+            if choice != "given":             # the clearance at the piece's start temperatures
                 c = _piece_clearance(sc, T_state, first[1] if first else pre.coupling.roles, clear_hist, ts)
-                sc_p = scene_at_clearance(sc, c["operating"] * 1e-6)       # negative: a radial preload
+            if clear:                         # the loads at it (negative: a radial preload)
+                sc_p = scene_at_clearance(sc, c["operating"] * 1e-6)
                 alts = _alternatives(sc_p, load)
+            elif choice == "mounted":         # the loads at the fits' clearance at 20 °C, one bearing for the run
+                if id(sc) not in mounted:
+                    sc_m = scene_at_clearance(sc, c["mounted"] * 1e-6)
+                    mounted[id(sc)] = (sc_m, _alternatives(sc_m, load))
+                sc_p, alts = mounted[id(sc)]
             models = max(alts, key=lambda a: a.weight).models
             film = load is None and any(a.models["load_model"][0] == "film" for a in alts)
             T_film, split, nodes = (_film_of(T_state, first[1] if first else pre.coupling.roles, sc) if film else None), \
@@ -332,9 +338,9 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
         for fc in cells.values():             # the film loads it passed: a preload by the films (cold, viscous oil)
             got += [w for w in fc.preload_warnings() if str(w) not in map(str, got)]
     got += [settling.warning] if settling.warning is not None else []
-    if c is not None and c["operating"] < 0:      # the last piece at a radial preload
-        got += preload_warnings(pieces[i][2].bearing, c["operating"] * 1e-6, c,
-                                f"during the heat-up, at t = {clear_hist[-1]['t_s']:g} s (its last piece's start)")
+    end = first and load is None and _T_nodes(T_state, first[1], pieces[i][2])
+    got += heat_up_preload_warnings(pieces[i][2], c if choice == "operating" else None, end or None,
+                                    first[1] if first else None, clear_hist, te)
     emit(got)
     return _assemble(out_t, out_T, out_rep, first, seg_changes, got, completed)
 
