@@ -59,3 +59,18 @@ def test_plot_of_the_ball_loads(capsys, tmp_path):
     from thermobear.app.plots import plot_load_distribution
     ld = tb.load_distribution(tb.bearing("6208"), Fa=300.0, Fr=1500.0, Fz=-900.0)
     assert Path(plot_load_distribution(ld, tmp_path / "q" / "ld.png")).is_file()
+
+
+def test_loads_take_the_mounted_clearance_of_stated_fits(capsys):
+    """`loads` with p6 / N7 fits and models.clearance = mounted showed the unmounted bearing (3 of 9 balls loaded)
+    while `run` preloaded every ball: the loads are now at the fits' clearance at 20 °C, and the output says so."""
+    import json
+    from thermobear.app.cli import main
+    import thermobear as tb
+    path = tb.example_path("block_6208_oil_jet.toml")
+    fits = ["--set", "bearing.shaft_fit=p6", "--set", "bearing.housing_fit=N7"]
+    assert main(["loads", path, "--json", *fits, "--set", "models.clearance=mounted"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    assert min(d["Q_inner_N"]) > 0 and "the loads at the mounted clearance -36.5 µm" in d["note"]
+    assert main(["loads", path, "--json"]) == 0
+    assert min(json.loads(capsys.readouterr().out)["Q_inner_N"]) == 0

@@ -32,3 +32,16 @@ def test_an_inlet_temperature_without_a_flow_is_not_read_and_a_bath_flow_is():
     assert "oil_flow_L_h" in parameter_names(s) and "T_oil_in_C" not in parameter_names(s)
     jet = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
     assert not {"lubricant.T_in_C", "lubricant.flow_L_h"} & set(unread_inputs(jet))
+
+
+def test_a_prescribed_temperature_names_the_network_inputs_it_does_not_read():
+    """At operation.T_C no network runs: the oil-bath 6208 gave 21.179 W with an 80 °C inlet, 5 L/h and any room
+    temperature, without a word; now the inlet, the bath's flow and a room away from 20 °C are named.  A jet's flow
+    still sets the drag's oil fraction there, so it stays read."""
+    bath = tb.load_scene(tb.example_path("block_6208_oil_bath.toml")).with_(T_C=70.0)
+    set_ = bath.with_(T_oil_in_C=80.0, oil_flow_L_h=5.0)
+    assert [f for f, _, _ in unread_settings(set_)] == ["lubricant.T_in_C", "lubricant.flow_L_h", "thermal.T_ambient_C"]
+    jet = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml")).with_(T_C=50.0)
+    assert "lubricant.flow_L_h" not in unread_inputs(jet) and "lubricant.T_in_C" in unread_inputs(jet)
+    assert tb.solve(jet.with_(oil_flow_L_h=30.0)).P_W != tb.solve(jet).P_W
+    assert "thermal.T_ambient_C" not in unread_inputs(jet.with_(T_C=None))

@@ -251,7 +251,7 @@ def test_cli_speed_reports_a_solver_failure_of_the_model_and_keeps_the_standards
     assert "n_rpm" in rep["din732"]
 
 
-@pytest.mark.parametrize("limit", ["25", "10"])
+@pytest.mark.parametrize("limit", ["25", "10", "250", "nan"])
 def test_cli_speed_limit_not_above_the_ambient_is_bad_input(block, capsys, limit):
     """A limit at or below the ambient (25 °C here) is an input no speed can meet: exit 2 with one line naming
     --limit-C, its value and the accepted range, nothing on stdout (it ran the searches, wrote a partial table and
@@ -260,7 +260,7 @@ def test_cli_speed_limit_not_above_the_ambient_is_bad_input(block, capsys, limit
     out, err = capsys.readouterr()
     assert out == "" and err.strip().splitlines() == [
         f"error: --limit-C = {float(limit)} — must be above the ambient 25 °C (no speed heats the bearing to a "
-        "temperature below its surroundings)"]
+        "temperature below its surroundings) and below 250 °C (the lubricant data's limit)"]
 
 
 def test_speed_rows_say_which_speeds_pass_the_limit_and_carry_the_states_ratings(capsys, tmp_path):

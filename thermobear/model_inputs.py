@@ -21,6 +21,7 @@ FRICTION_INPUTS = {"mu_full_film": ("lubricant.mu_full_film", 1.0), "mu_boundary
 #: the SKF model's calibrated constants (``[models]``), read by ``losses = "skf"`` only
 SKF_CONSTANTS = ("skf_R1", "skf_S1", "skf_mu_EHL")
 _DEFAULTS = {f.name: f.default for f in dataclasses.fields(Scene) if f.name in FRICTION_INPUTS}
+_T_AMBIENT = next(f.default for f in dataclasses.fields(Scene) if f.name == "T_ambient_C")
 
 
 def unread_inputs(scene: Scene) -> dict:
@@ -35,7 +36,9 @@ def unread_inputs(scene: Scene) -> dict:
       model.  (Read, it still acts only where Λ < 2.03: beyond, the film carries the whole load.)
     * ``lubricant.Rq_ball_um``, ``Rq_ring_um``: not read by the SKF model.
     * ``models.skf_R1``, ``skf_S1``, ``skf_mu_EHL``: read by the SKF model only (``models.losses = "skf"``).
-    * ``lubricant.flow_L_h``, ``T_in_C``: not under grease or a dry film; ``T_in_C`` not without a flow.
+    * ``lubricant.flow_L_h``, ``T_in_C``: not under grease or a dry film; ``T_in_C`` not without a flow; at a
+      prescribed temperature (``operation.T_C``: no network) neither ``T_in_C`` nor ``thermal.T_ambient_C`` (named
+      when away from its default 20 °C), nor a bath's flow (a jet's still sets the drag's oil fraction).
     * ``lubricant.K_rs``: read by the starvation factor Φ_rs (:func:`~thermobear.models.replenishment_constant`):
       by both loss models unless ``models.starvation = false`` (then Φ_rs = 1 in the SKF model too), a dry film, or
       (local model) a bearing without bore and outside diameter.
@@ -77,6 +80,10 @@ def _supply_unread(scene: Scene) -> dict:
     if scene.supply in ("grease", "dry_film"):
         why = f"supply {scene.supply!r}: no oil flows through the bearing"
         return {"lubricant.flow_L_h": why, "lubricant.T_in_C": why}
+    if scene.T_C is not None:          # no network: the inlet and the room have nothing to heat; a bath's flow neither
+        why = f"operation.T_C = {scene.T_C:g} °C prescribes the temperatures (no thermal network)"
+        return {"lubricant.T_in_C": why, "thermal.T_ambient_C": why} | (
+            {"lubricant.flow_L_h": why} if scene.supply == "oil_bath" else {})
     if not scene.oil_flow > 0:
         return {"lubricant.T_in_C": "no oil flows in (lubricant.flow_L_h = 0): the inlet temperature has nothing to carry"}
     return {}
@@ -89,7 +96,9 @@ def unread_settings(scene: Scene) -> list:
     if not (any(not math.isclose(getattr(scene, a), d, rel_tol=1e-9) for a, d in _DEFAULTS.items())
             or any(k in scene.models for k in SKF_CONSTANTS) or scene.K_rs is not None
             or (scene.T_oil_in_C is not None or scene.oil_flow > 0) and scene.supply in ("grease", "dry_film")
-            or scene.T_oil_in_C is not None and not scene.oil_flow > 0):
+            or scene.T_oil_in_C is not None and not scene.oil_flow > 0
+            or scene.T_C is not None and (scene.T_oil_in_C is not None or scene.T_ambient_C != _T_AMBIENT
+                                          or scene.oil_flow > 0)):
         return []
     unread = unread_inputs(scene)
     out = []
@@ -101,7 +110,8 @@ def unread_settings(scene: Scene) -> list:
         if f"models.{k}" in unread and scene.models.get(k) is not None:
             out.append((f"models.{k}", scene.models[k], unread[f"models.{k}"]))
     for fld, v in (("lubricant.K_rs", scene.K_rs), ("lubricant.T_in_C", scene.T_oil_in_C),
-                   ("lubricant.flow_L_h", round(scene.oil_flow * 3.6e6, 9) or None)):
+                   ("lubricant.flow_L_h", round(scene.oil_flow * 3.6e6, 9) or None),
+                   ("thermal.T_ambient_C", None if scene.T_ambient_C == _T_AMBIENT else scene.T_ambient_C)):
         if fld in unread and v is not None:
             out.append((fld, v, unread[fld]))
     return out

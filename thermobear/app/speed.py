@@ -24,6 +24,7 @@ from thermobear.errors import InputError, NoSpeedRoot, OutsideValidity, SolverEr
 from thermobear.losses.seals import CONTACT_SEALS
 from thermobear.rating.maker_speeds import limiting_speed_text, maker_speeds
 from thermobear.scene import Scene
+from thermobear.validity import T_LUBRICANT_REFUSE_C
 
 __all__ = ["speed_report", "cmd_speed", "EXIT_SOLVER", "JUMP_K"]
 
@@ -90,9 +91,11 @@ def _report(scene: Scene, limit_C: float, node, node_field: str = "node") -> tup
     ``node_field`` for a node that is not a free node of the scene's network."""
     if node is not None and scene.network is not None:
         check_node(scene, node, field=node_field)
-    if not limit_C > scene.T_ambient_C:
+    hi = T_LUBRICANT_REFUSE_C[1]
+    if not scene.T_ambient_C < limit_C < hi:          # (NaN fails)
         raise InputError("--limit-C", limit_C, f"must be above the ambient {scene.T_ambient_C:g} °C (no speed heats "
-                         "the bearing to a temperature below its surroundings)")
+                         f"the bearing to a temperature below its surroundings) and below {hi:g} °C (the lubricant "
+                         "data's limit)")
     ws: list = []
     rep = {"scene": scene.name, "bearing": scene.bearing.name, "limit_C": limit_C,
            "node": node or HOTTER_RACE, "T_ambient_C": scene.T_ambient_C, "contact_seals": scene.seals in CONTACT_SEALS}

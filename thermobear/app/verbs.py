@@ -34,7 +34,7 @@ from thermobear.loads import load_distribution
 from thermobear.losses import BREAKDOWN_KEYS
 from thermobear.losses.skf import SKF_BREAKDOWN_KEYS
 from thermobear.lubrication.lubricant import lubricant_names
-from thermobear.coupled.ratings import check_static_safety
+from thermobear.coupled.ratings import check_static_safety, scene_clearance
 from thermobear.models import moments, plan
 from thermobear.rating.life import stated_ratings
 from thermobear.scene.network import network_nodes
@@ -165,6 +165,10 @@ def cmd_loads(args):
     models = plan(scene)[0]
     hs = models["high_speed"][0] == "yes"
     brg, stiff = scene.bearing, scene.models.get("stiffness", "nominal")
+    fitted = models["clearance"][0] in ("mounted", "operating")
+    if fitted:                     # the fits' clearance at 20 °C (the operating one needs the solved temperatures)
+        brg = brg.with_(Pd=scene_clearance(scene, {"x": 20.0}, dict.fromkeys(("inner", "outer", "ball"), "x"))[
+            "mounted"] * 1e-6)
     M, My = moments(scene)
     ld = load_distribution(brg, Fa=scene.Fa, Fr=scene.Fr, M=M, Fz=scene.Fz, My=My, n_rpm=scene.n_rpm if hs else 0.0,
                            form="high_speed" if hs else "static", stiffness=stiff)
@@ -192,6 +196,11 @@ def cmd_loads(args):
     note = (f"note: run solves this scene with the film load model ({models['load_model'][1]}): its ball loads "
             "depend on the films and their temperature; these are the dry loads (as models.load_model = jones_harris)"
             if models["load_model"][0] == "film" else None)
+    if fitted:
+        note = "; ".join(filter(None, [note, f"note: the loads at the mounted clearance {brg.Pd * 1e6:.3g} µm (the fits "
+                                       f"at 20 °C; models.clearance = {models['clearance'][0]}"
+                                       + ("; `run` solves the operating one" if models["clearance"][0] == "operating"
+                                          else "") + ")"]))
     d["note"] = note
     if args.json:
         print_json(d)

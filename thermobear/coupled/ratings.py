@@ -156,13 +156,16 @@ class Ratings:
         """A short table for the text answer."""
         p = self.p_max_Pa
         return ["Ratings (ISO 76, ISO 281, ISO/TS 16281)",
-                f"  C0 {self.C0_N:9.0f} N   P0 {self.P0_N:9.0f} N   s0 {self.s0:7.3g}",
+                f"  C0 {self.C0_N:9.0f} N   P0 {self.P0_N:9.0f} N   "
+                + (f"s0 {self.s0:7.3g}" if np.isfinite(self.s0) else "s0 — (no static load)"),
                 f"  C  {self.C_N:9.0f} N   P  {self.P_N:9.0f} N   p_max inner {p['inner'] / 1e6:6.0f} MPa, "
                 f"outer {p['outer'] / 1e6:6.0f} MPa",
                 f"  kappa {self.kappa:.3g} (nu {self.nu_m2_s * 1e6:.3g} cSt at {self.T_operating_C:.1f} °C, "
                 f"nu1 {self.nu1_m2_s * 1e6:.3g} cSt{'; a_ISO at kappa = 4, ISO 281' if self.kappa > 4.0 else ''})   "
                 f"e_C {self.e_C:g} ({self.contamination})   a_ISO {self.a_ISO:.3g}",
-                ("  L10, L10m: unloaded (P = 0), no fatigue life" if not self.P_N > 0 else
+                ("  L10, L10m: unloaded (P = 0), no fatigue life" + ("" if self.L10r_h is None else
+                 f"   L10r {self.L10r_h:.4g} h (ISO/TS 16281, the solved ball loads: a preload)")
+                 if not self.P_N > 0 else
                  f"  L10 {self.L10_h:.4g} h   L10m {self.L10m_h:.4g} h (ISO 281 × a_ISO)" +
                  ("" if self.L10r_h is None else f"   L10r {self.L10r_h:.4g} h (ISO/TS 16281, the solved ball loads)")),
                 *self._clearance_lines()]
@@ -277,7 +280,7 @@ def scene_ratings(scene, steady, losses=None) -> Ratings:
     nu, nu1, kappa, e_C, a_iso = (float(lv[k]) for k in ("nu_m2_s", "nu1_m2_s", "kappa", "e_C", "a_ISO"))
     hours = 1e6 / (60.0 * float(scene.n_rpm))
     L10r = None
-    if c and P > 0:
+    if c and np.max(np.asarray(c["inner"]["Q"], float), initial=0.0) > 0:      # external loads or a preload
         ld = type("Balls", (), {"Q_i": np.ravel(c["inner"]["Q"]), "Q_o": np.ravel(c["outer"]["Q"])})
         L10r = float(reference_life(b, ld, C, rotating=scene.rotating).L10r) * hours
     if b.kind == "thrust":

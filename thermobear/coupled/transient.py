@@ -341,6 +341,8 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
     end = first and load is None and _T_nodes(T_state, first[1], pieces[i][2])
     got += heat_up_preload_warnings(pieces[i][2], c if choice == "operating" else None, end or None,
                                     first[1] if first else None, clear_hist, te)
+    if choice != "given" and c is not None and c["operating" if choice == "operating" else "mounted"] < 0:
+        got = [w for w in got if w.quantity != "unloaded"]    # the loads at a radial preload: every ball loaded
     emit(got)
     return _assemble(out_t, out_T, out_rep, first, seg_changes, got, completed)
 

@@ -105,7 +105,8 @@ _SCENE_KEYS = {
     "lubricant.jet_penetration": ("jet_penetration", 1.0, "jet_penetration"),
     "thermal.T_ambient_C": ("T_ambient_C", 1.0, "T_ambient_C"),
 }
-_FRICTION = ([f for f, _ in FRICTION_INPUTS.values()] + ["lubricant.K_rs", "lubricant.flow_L_h", "lubricant.T_in_C"])
+_FRICTION = ([f for f, _ in FRICTION_INPUTS.values()] + ["lubricant.K_rs", "lubricant.flow_L_h", "lubricant.T_in_C",
+                                                          "thermal.T_ambient_C"])
 #: (the inputs above are sampled only where the models read them)
 _RATINGS = ("C0_kN", "C_kN")
 #: bearing table key → (BallBearing attribute, scale to the key's unit)
