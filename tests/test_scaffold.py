@@ -258,3 +258,20 @@ def test_init_writes_the_ranges_of_its_estimates_and_run_samples_them(method, ra
     s = scene_from_dict(tomllib.loads(scaffold("7014C", method)))
     sampled = {i.address for i in uncertain_inputs(s)}
     assert {f"lubricant.{k}" for k in ranged} | {"thermal.T_ambient_C"} <= sampled
+
+
+@pytest.mark.parametrize("name", ["51107", "6208"])
+def test_init_hints_run_once_uncommented(name):
+    """The seal hint offered RS1 to a thrust bearing and RSL to a 6208 (SKF's RSL rows stop at D = 52 mm): both were
+    refused when uncommented.  The hint now lists the seals whose constants cover the bearing (none for a thrust
+    bearing), and the scene with every hint uncommented solves."""
+    from thermobear.app.scaffold import scaffold
+    text = scaffold(name, "grease")
+    hints = [ln for ln in text.splitlines() if ln.startswith("# ") and "# uncomment:" in ln]
+    assert any(ln.startswith("# seals") for ln in hints) == (name != "51107")
+    assert "RSL" not in text.split("[bearing]")[1].split("[lubricant]")[0] or name != "6208"
+    uncommented = "\n".join(ln.split("# uncomment:")[0][2:] if ln in hints else ln for ln in text.splitlines())
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = solve(scene_from_dict(tomllib.loads(uncommented)))
+    assert r.P_W > 0

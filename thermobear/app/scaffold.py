@@ -36,6 +36,7 @@ from thermobear.coupled.ratings import check_static_safety
 from thermobear.coupled.sources import scene_losses
 from thermobear.coupled.speeds import ReferenceSpeed, reference_loads, thermal_reference_speed
 from thermobear.errors import InputError, NoSpeedRoot, SolverError
+from thermobear.losses.seals import BALL_SEALS, seal_constants
 from thermobear.losses.skf import K_RS
 from thermobear.lubrication.lubricant import lubricant, lubricant_names
 from thermobear.rating.life import load_ratings, stated_ratings
@@ -184,6 +185,18 @@ def _lubrication(brg, supply, oil, oil_src, ref: ReferenceSpeed | None) -> list:
                     "Phi_rs); a rig's own: thermobear calibrate --param K_rs"),
                    _range("K_rs", [K / 2.0, K * 2.0], "SKF 2004 gives K_rs for two supply classes only, 3e-8 and "
                           "6e-8, with no tolerance; their factor 2 taken either way of the class value", lognormal=True)]
+
+
+def _contact_seals(brg: BallBearing) -> list:
+    """SKF's contact seals whose constants cover this bearing (kind and outside diameter; none for a thrust bearing)."""
+    out = []
+    for t in BALL_SEALS[2:]:
+        try:
+            seal_constants(t, brg.kind, brg.outer_diameter * 1e3)
+        except InputError:
+            continue
+        out.append(t)
+    return out
 
 
 def _table(rows) -> dict:
@@ -407,8 +420,10 @@ def scaffold(name: str, lubrication: str, *, oil: str | None = None, housing: st
              "# Every key is used; units are in the key names; each comment says where the value comes from.",
              f"# Solve it: thermobear run THIS_FILE  ({_skf_hint(sc)}",
              "# The network is built from [shaft] and [housing] (examples/README.md, \"Machine keys\")."]
-    notes = {"bearing": ([] if closure else [('seals = "RS1"', "contact seals and their losses (none | shield | RSL | "
-                                             "RSH | RS1)")]) + [('cage = "outer_ring"', "a ring-guided cage and its losses")],
+    seals = _contact_seals(brg)
+    notes = {"bearing": ([] if closure or not seals else [(f'seals = "{seals[-1]}"', "contact seals and their losses "
+                                                           f"(none | shield | {' | '.join(seals)})")])
+             + [('cage = "outer_ring"', "a ring-guided cage and its losses")],
              "operation": [("T_C = 70.0", "prescribe the contacts' temperature (no thermal network)")]}
     for sec in ("scene", "bearing", "lubricant", "operation", "thermal", "shaft", "housing"):
         _section(sec, rows[sec], lines, notes.get(sec, ()))
