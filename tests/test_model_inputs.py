@@ -45,3 +45,15 @@ def test_a_prescribed_temperature_names_the_network_inputs_it_does_not_read():
     assert "lubricant.flow_L_h" not in unread_inputs(jet) and "lubricant.T_in_C" in unread_inputs(jet)
     assert tb.solve(jet.with_(oil_flow_L_h=30.0)).P_W != tb.solve(jet).P_W
     assert "thermal.T_ambient_C" not in unread_inputs(jet.with_(T_C=None))
+
+
+def test_a_thrust_bearings_fits_are_named_unread():
+    """p6 / N7 on the 51107 gave the plain answer without a word: a thrust bearing has no radial clearance for them."""
+    s = tb.load_scene(tb.example_path("seed002_grease_thrust_51107.toml"))
+    fitted = s.with_(shaft_fit="p6", housing_fit="N7")
+    assert [f for f, _, _ in unread_settings(fitted)] == ["bearing.shaft_fit", "bearing.housing_fit"]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = tb.steady_state(fitted)
+    assert r.P_W == tb.steady_state(s).P_W
+    assert ["bearing.shaft_fit = p6" in str(w) for w in r.warnings if isinstance(w, UnreadInput)] == [True, False]

@@ -51,12 +51,12 @@ def unread_inputs(scene: Scene) -> dict:
     if scene.models.get("losses") == "skf":
         why = ('models.losses = "skf": the SKF 2004 model has its own friction coefficients (μ_bl 0.15, μ_EHL: '
                'models.skf_mu_EHL) and no roughness')
-        out = {**{field: why for field, _ in FRICTION_INPUTS.values()}, **_supply_unread(scene)}
+        out = {**{field: why for field, _ in FRICTION_INPUTS.values()}, **_supply_unread(scene), **_fits_unread(scene)}
         if not scene.models.get("starvation", True):
             out["lubricant.K_rs"] = "models.starvation = false: Φ_rs = 1 in the SKF model too"
         return out
     why = 'read by the SKF model only (models.losses = "skf"); this scene runs the local model'
-    out = {**{f"models.{k}": why for k in SKF_CONSTANTS}, **_supply_unread(scene)}
+    out = {**{f"models.{k}": why for k in SKF_CONSTANTS}, **_supply_unread(scene), **_fits_unread(scene)}
     traction, reason = traction_choice(scene)
     if traction != "constant" and not added_losses(scene)["cage"][0]:
         out["lubricant.mu_full_film"] = (f'models.traction = "{traction}" ({reason.partition(":")[0]}) takes the '
@@ -72,6 +72,14 @@ def unread_inputs(scene: Scene) -> dict:
         out["lubricant.K_rs"] = (f"no replenishment factor (supply {scene.supply!r}, or the bearing's bore and outside "
                                  "diameter unknown)")
     return out
+
+
+def _fits_unread(scene: Scene) -> dict:
+    """A thrust bearing's seat fits: no radial clearance for them to change (its axial play is the mounting's)."""
+    if scene.bearing.kind != "thrust":
+        return {}
+    why = "a thrust bearing has no radial clearance for the fits to change (its axial play is set by the mounting)"
+    return {"bearing.shaft_fit": why, "bearing.housing_fit": why}
 
 
 def _supply_unread(scene: Scene) -> dict:
@@ -98,7 +106,8 @@ def unread_settings(scene: Scene) -> list:
             or (scene.T_oil_in_C is not None or scene.oil_flow > 0) and scene.supply in ("grease", "dry_film")
             or scene.T_oil_in_C is not None and not scene.oil_flow > 0
             or scene.T_C is not None and (scene.T_oil_in_C is not None or scene.T_ambient_C != _T_AMBIENT
-                                          or scene.oil_flow > 0)):
+                                          or scene.oil_flow > 0)
+            or scene.bearing.kind == "thrust" and (scene.shaft_fit or scene.housing_fit)):
         return []
     unread = unread_inputs(scene)
     out = []
@@ -111,7 +120,8 @@ def unread_settings(scene: Scene) -> list:
             out.append((f"models.{k}", scene.models[k], unread[f"models.{k}"]))
     for fld, v in (("lubricant.K_rs", scene.K_rs), ("lubricant.T_in_C", scene.T_oil_in_C),
                    ("lubricant.flow_L_h", round(scene.oil_flow * 3.6e6, 9) or None),
-                   ("thermal.T_ambient_C", None if scene.T_ambient_C == _T_AMBIENT else scene.T_ambient_C)):
+                   ("thermal.T_ambient_C", None if scene.T_ambient_C == _T_AMBIENT else scene.T_ambient_C),
+                   ("bearing.shaft_fit", scene.shaft_fit), ("bearing.housing_fit", scene.housing_fit)):
         if fld in unread and v is not None:
             out.append((fld, v, unread[fld]))
     return out

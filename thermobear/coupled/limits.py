@@ -304,7 +304,8 @@ def film_preload_warnings(scene, alternatives) -> list:
 def _unread_warnings(scene) -> list:
     """An :class:`~thermobear.errors.UnreadInput` warning for each input the scene sets that its models do not
     read (:func:`thermobear.model_inputs.unread_settings`): the value would change nothing, never silently."""
-    return [UnreadInput(f"{fld} = {v:g} is not read by the chosen models: {why} — it changes nothing here",
+    return [UnreadInput(f"{fld} = {v if isinstance(v, str) else format(v, 'g')} is not read by the chosen models: "
+                        f"{why} — it changes nothing here",
                         quantity=fld, value=v, limit=why, source="thermobear.model_inputs.unread_inputs",
                         field=fld) for fld, v, why in unread_settings(scene)]
 
