@@ -71,4 +71,14 @@ def test_a_fit_through_u_0_keeps_its_step_and_finds_the_minimum():
         cal = calibrate(scene, log, ["K_rs"], channel_map(scene, log))
     assert cal.rms_residual < 1.40 and cal.values["K_rs"] < 5e-9
     assert cal.std["K_rs"] > 0.1 * cal.values["K_rs"] and np.isfinite(cal.std["K_rs"])
-    assert "not smooth" in cal.message
+    assert "not smooth" in cal.message and "K_rs runs towards 0" in cal.message
+
+
+@pytest.mark.parametrize("start", ["0", "1e-6", "-1e-8"])
+def test_a_k_rs_start_outside_its_open_range_is_refused_by_name(start):
+    """K_rs=0 gave `K_rs = 0.000999…` (a trial value the user never gave: a linear step of 1 on a 3e-8 quantity)
+    and 1e-6 stepped past the scene's bound: the start must lie in (0, 1e-6), named before any solve."""
+    scene = load_scene(LOGS / "synthetic_heatup_scene.toml")
+    log = read_log(LOGS / "synthetic_heatup_7210.csv")
+    with pytest.raises(InputError, match=r"--param K_rs = .* start must lie in \(0, 1e-6\)"):
+        calibrate(scene, log, [f"K_rs={start}"], channel_map(scene, log))

@@ -123,6 +123,9 @@ def _parse_param(scene: Scene, spec: str):
         x0 = getattr(scene, name)
     if x0 is None or isinstance(x0, bool) or not isinstance(x0, (int, float)) or not math.isfinite(x0):
         raise InputError(f"--param {name}", x0, "needs a finite numeric start value (give NAME=START)")
+    if name == "K_rs" and not 0.0 < x0 < 1e-6:
+        raise InputError(f"--param {name}", x0, "start must lie in (0, 1e-6): K_rs is fitted in logarithms (0 is no "
+                         "starvation: start at e.g. 1e-9), and the fit's steps need room below the scene's bound 1e-6")
     return name, float(x0)
 
 
@@ -367,6 +370,10 @@ def calibrate(scene: Scene, log: RigLog, params: list, mapping: dict, *, T0_C=No
         scale = np.array([vals[n] if lg else sc for n, lg, sc in zip(names, logsp, lin)])
         cov = cov_x * np.outer(scale, scale)
         std = {n: float(np.sqrt(cov[i, i])) for i, n in enumerate(names)}
+    to_zero = [f"{n} runs towards 0 ({vals[n]:.3g} ± {std[n]:.2g} from the start {x0[i]:.3g}): the log does not "
+               "determine it and needs none of it" for i, n in enumerate(names)
+               if logsp[i] and std[n] is not None and vals[n] < 0.1 * x0[i] and std[n] > vals[n]]
+    msg = "; ".join(filter(None, [msg, *to_zero]))
     cal_scene = _apply(scene, vals, cells)
     comp = compare(cal_scene, log, mapping, T0_C=T0_C)
     return Calibration(values=vals, std=std, start=dict(zip(names, x0.tolist())), cov=cov, rms_residual=rms,
