@@ -179,3 +179,16 @@ def test_prescribed_sweep_records_a_point_without_equilibrium_on_its_row(seed002
         rows = run_sweep(sc, {"Fa": [0.0, 1000.0, 7000.0]})
         assert [r["status"] for r in rows] == ["NoEquilibrium", "ok", "ok"]
         assert rows[0]["P_W"] is None and rows[1]["P_W"] > 0
+
+
+def test_a_forced_model_no_row_can_take_is_bad_input_before_any_row(tmp_path, capsys):
+    """A fitted clearance forced at prescribed temperatures failed every row (exit 3, a CSV of errors): the model
+    choice each axis value forces is checked with the values, before computing — exit 2, one line, no file."""
+    from thermobear.app.cli import main
+    out = tmp_path / "sw.csv"
+    rc = main(["sweep", tb.example_path("block_6208_oil_jet.toml"), "--set", "bearing.shaft_fit=p6",
+               "--set", "models.clearance=mounted", "--T-C", "40,100", "--csv", str(out)])
+    err = capsys.readouterr().err
+    assert rc == 2 and not out.exists() and err.strip().splitlines() == [
+        "error: models.clearance = 'mounted' — the fitted clearance is applied by the coupled steady state: remove "
+        "operation.T_C, or choose 'given'"]

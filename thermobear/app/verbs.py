@@ -35,7 +35,7 @@ from thermobear.losses import BREAKDOWN_KEYS
 from thermobear.losses.skf import SKF_BREAKDOWN_KEYS
 from thermobear.lubrication.lubricant import lubricant_names
 from thermobear.coupled.ratings import check_static_safety, scene_clearance
-from thermobear.models import moments, plan
+from thermobear.models import clearance_choice, moments, plan
 from thermobear.rating.life import stated_ratings
 from thermobear.scene.network import network_nodes
 from thermobear.validity import T_LUBRICANT_REFUSE_C
@@ -482,9 +482,9 @@ def cmd_sweep(args):
         raise InputError("--processes", args.processes, "must be >= 1")
     scene = load_scene_with(args.scene, args.set)
     grid = _grid(args)
-    for k, vals in grid.items():                 # every value of every axis checked before computing
-        for v in vals:
-            scene.with_(**{k: v})
+    for k, vals in grid.items():                 # every value of every axis checked before computing (and the
+        for v in vals:                           # model choice it forces: a fitted clearance at a prescribed T)
+            clearance_choice(scene.with_(**{k: v}))
     total = len(sweep_points(grid))
     writer = RowWriter(_sweep_header(scene, grid), out_csv, out_jsonl,
                        f"thermobear sweep of {scene.name} ({args.scene}): " + ", ".join(f"{k} x{len(v)}" for k, v in grid.items()))
