@@ -430,13 +430,13 @@ def test_a_scene_input_the_models_do_not_read_is_named(capsys):
     s004 = str(EX / "seed004_oil_jet_7210.toml")
     code, _, err = run(capsys, "run", s004, "--set", "mu_full_film=0.01", "--set", "T_C=60")
     assert code == 0
-    assert [line for line in err.splitlines() if "UnreadInput" in line] == [
+    assert [line for line in err.splitlines() if "UnreadInput: lubricant.mu_full_film" in line] == [
         'warning: UnreadInput: lubricant.mu_full_film = 0.01 is not read by the chosen models: models.traction = '
         '"eyring" (oil film) takes the full-film friction from the oil\'s traction law; mu_full_film is read with '
         'models.traction = "constant" or by a ring-guided cage\'s pocket friction — it changes nothing here']
     code, _, err = run(capsys, "run", s004, "--set", "mu_full_film=0.01", "--set", "T_C=60",
                        "--set", "models.traction=constant")
-    assert code == 0 and "UnreadInput" not in err
+    assert code == 0 and "UnreadInput: lubricant.mu_full_film" not in err
     code, _, err = run(capsys, "calibrate", SYNTH, LOGS / "synthetic_heatup_7210.csv", "--param", "mu_full_film")
     assert_bad_input(code, err, "--param = 'mu_full_film' — the scene's models do not read it")
 

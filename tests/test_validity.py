@@ -142,7 +142,9 @@ def test_the_siblings_the_models_do_not_read_are_named(kw, field):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OutsideValidity)
         r = tb.solve(S004.with_(T_C=60.0, **kw))
-    assert [w.field for w in r.warnings if isinstance(w, UnreadInput)] == [field]
+    names = [w.field for w in r.warnings if isinstance(w, UnreadInput)]
+    # (at a prescribed temperature seed 004's inlet and room temperatures are named too: no network reads them)
+    assert field in names and set(names) - {field} == {"lubricant.T_in_C", "thermal.T_ambient_C"}
 
 
 def test_a_ring_guided_cage_reads_mu_full_film():
