@@ -90,3 +90,13 @@ def test_set_takes_the_seat_fits(capsys):
     assert out["models_used"]["clearance"]["choice"] == "operating"
     assert main(["run", scene, "--set", "bearing.shaft_fit=k9"]) == 2
     assert "shaft_fit = 'k9' — must be one of" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("item, line", [
+    ("flow_L_h=-1", "error: flow_L_h = -1 — must be in [0, 100000] [L/h]"),
+    ("lubricant.T_in_C=900", "error: lubricant.T_in_C = 900 — must be in [-40, 250] [°C]")])
+def test_a_file_keys_error_names_the_key_as_given(capsys, item, line):
+    """`--set flow_L_h=-1` was refused as `oil_flow_L_h = -1`, a name the user never wrote."""
+    scene = str(Path(__file__).resolve().parents[1] / "examples" / "block_6208_oil_jet.toml")
+    assert main(["run", scene, "--set", item]) == 2
+    assert capsys.readouterr().err.strip() == line

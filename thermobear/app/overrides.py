@@ -101,5 +101,13 @@ def load_scene_with(path, sets=None):
         ov = overrides(sets, scene.raw.get("bearing"))
         if "T_fixed_C" in ov:
             ov["T_fixed_C"] = {**scene.T_fixed_C, **ov["T_fixed_C"]}
-        scene = scene.with_(**ov)
+        # an error of a key given as the file writes it (flow_L_h) names that key, not the with_ key it set
+        given = {_AS_WRITTEN[k]: k for k in (it.split("=", 1)[0].strip() for it in sets)
+                 if k in _AS_WRITTEN and k not in WITH_KEYS}
+        try:
+            scene = scene.with_(**ov)
+        except InputError as e:
+            if e.field not in given:
+                raise
+            raise type(e)(given[e.field], e.value, e.expected) from None
     return scene
