@@ -275,3 +275,12 @@ def test_init_hints_run_once_uncommented(name):
         warnings.simplefilter("ignore")
         r = solve(scene_from_dict(tomllib.loads(uncommented)))
     assert r.P_W > 0
+
+
+def test_init_does_not_overwrite_a_scene(tmp_path, capsys):
+    """`init --out` replaced an existing (perhaps edited) scene without a word: refused, the file kept."""
+    path = tmp_path / "mine.toml"
+    path.write_text("# edited by hand\n")
+    assert main(["init", "6208", "--lubrication", "grease", "--out", str(path)]) == 2
+    assert "exists: init does not overwrite a scene" in capsys.readouterr().err
+    assert path.read_text() == "# edited by hand\n"

@@ -230,6 +230,8 @@ def cmd_loads(args):
 
 def cmd_init(args):
     out = check_out_file(args.out, "--out")
+    if out is not None and out.exists():              # a scene the user may have edited: never overwritten
+        raise InputError("--out", str(out), "exists: init does not overwrite a scene (remove it or name another file)")
     cmd = " ".join(["thermobear init", args.bearing, "--lubrication", args.lubrication]
                    + [f"{flag} {v:g}" if isinstance(v, float) else f"{flag} {v}" for flag, v in
                       (("--oil", args.oil), ("--housing", args.housing), ("--speed-rpm", args.speed_rpm),
