@@ -72,5 +72,6 @@ def test_loads_take_the_mounted_clearance_of_stated_fits(capsys):
     assert main(["loads", path, "--json", *fits, "--set", "models.clearance=mounted"]) == 0
     d = json.loads(capsys.readouterr().out)
     assert min(d["Q_inner_N"]) > 0 and "the loads at the mounted clearance -36.5 µm" in d["note"]
+    assert "film load model" not in d["note"]     # its model choice at that clearance: no ball lifts off
     assert main(["loads", path, "--json"]) == 0
     assert min(json.loads(capsys.readouterr().out)["Q_inner_N"]) == 0

@@ -34,6 +34,7 @@ from thermobear.loads import load_distribution
 from thermobear.losses import BREAKDOWN_KEYS
 from thermobear.losses.skf import SKF_BREAKDOWN_KEYS
 from thermobear.lubrication.lubricant import lubricant_names
+from thermobear.coupled.clearance import scene_at_clearance
 from thermobear.coupled.ratings import check_static_safety, scene_clearance
 from thermobear.models import clearance_choice, moments, plan
 from thermobear.rating.life import stated_ratings
@@ -163,12 +164,13 @@ def cmd_loads(args):
     out = _plot_dir(getattr(args, "plot", None))
     check_static_safety(scene)                              # before any solve
     models = plan(scene)[0]
-    hs = models["high_speed"][0] == "yes"
-    brg, stiff = scene.bearing, scene.models.get("stiffness", "nominal")
     fitted = models["clearance"][0] in ("mounted", "operating")
     if fitted:                     # the fits' clearance at 20 °C (the operating one needs the solved temperatures)
-        brg = brg.with_(Pd=scene_clearance(scene, {"x": 20.0}, dict.fromkeys(("inner", "outer", "ball"), "x"))[
-            "mounted"] * 1e-6)
+        scene = scene_at_clearance(scene, scene_clearance(scene, {"x": 20.0}, dict.fromkeys(("inner", "outer", "ball"),
+                                                                                          "x"))["mounted"] * 1e-6)
+        models = {**plan(scene)[0], "clearance": models["clearance"]}   # its model choice (film, high speed) there
+    hs = models["high_speed"][0] == "yes"
+    brg, stiff = scene.bearing, scene.models.get("stiffness", "nominal")
     M, My = moments(scene)
     ld = load_distribution(brg, Fa=scene.Fa, Fr=scene.Fr, M=M, Fz=scene.Fz, My=My, n_rpm=scene.n_rpm if hs else 0.0,
                            form="high_speed" if hs else "static", stiffness=stiff)
