@@ -51,10 +51,8 @@ def unread_inputs(scene: Scene) -> dict:
     if scene.models.get("losses") == "skf":
         why = ('models.losses = "skf": the SKF 2004 model has its own friction coefficients (μ_bl 0.15, μ_EHL: '
                'models.skf_mu_EHL) and no roughness')
-        out = {**{field: why for field, _ in FRICTION_INPUTS.values()}, **_supply_unread(scene), **_fits_unread(scene)}
-        if not scene.models.get("starvation", True):
-            out["lubricant.K_rs"] = "models.starvation = false: Φ_rs = 1 in the SKF model too"
-        return out
+        return {**{field: why for field, _ in FRICTION_INPUTS.values()}, **_supply_unread(scene), **_fits_unread(scene),
+                **_K_rs_unread(scene, skf=True)}
     why = 'read by the SKF model only (models.losses = "skf"); this scene runs the local model'
     out = {**{f"models.{k}": why for k in SKF_CONSTANTS}, **_supply_unread(scene), **_fits_unread(scene)}
     traction, reason = traction_choice(scene)
@@ -65,13 +63,20 @@ def unread_inputs(scene: Scene) -> dict:
     if not scene.Rq_ball and not scene.Rq_ring:
         out["lubricant.mu_boundary"] = ("smooth surfaces (Rq_ball_um = Rq_ring_um = 0): Λ = ∞, the full-film "
                                         "friction alone")
+    return {**out, **_K_rs_unread(scene, skf=False)}
+
+
+def _K_rs_unread(scene: Scene, skf: bool) -> dict:
+    """``lubricant.K_rs`` where no replenishment factor is applied: starvation off (both models), or — the local
+    model's — a supply without one or a bearing without bore and outside diameter."""
     b = scene.bearing
     if not scene.models.get("starvation", True):
-        out["lubricant.K_rs"] = "models.starvation = false: no replenishment factor on the rolling force"
-    elif scene.supply not in K_RS or b.bore is None or b.outer_diameter is None:
-        out["lubricant.K_rs"] = (f"no replenishment factor (supply {scene.supply!r}, or the bearing's bore and outside "
-                                 "diameter unknown)")
-    return out
+        return {"lubricant.K_rs": "models.starvation = false: no replenishment factor on the rolling force"
+                                  + (" (Φ_rs = 1 in the SKF model too)" if skf else "")}
+    if not skf and (scene.supply not in K_RS or b.bore is None or b.outer_diameter is None):
+        return {"lubricant.K_rs": f"no replenishment factor (supply {scene.supply!r}, or the bearing's bore and outside "
+                                  "diameter unknown)"}
+    return {}
 
 
 def _fits_unread(scene: Scene) -> dict:

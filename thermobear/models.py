@@ -292,16 +292,21 @@ def traction_choice(scene: Scene) -> tuple:
                       f"τ_L/p {oil.limiting_shear:g}) on each contact's slip")
 
 
-def replenishment_constant(scene: Scene):
+def replenishment_constant(scene: Scene, models: dict | None = None):
     """The replenishment constant K_rs [-] of a scene's starvation factor Φ_rs (:func:`~thermobear.losses.skf.phi_rs`):
     the scene's ``[lubricant] K_rs``, else SKF's for its supply (SKF 2004: 3e-8 oil jet and low-level oil bath,
     6e-8 grease and oil–air; :data:`~thermobear.losses.skf.K_RS`); None for a supply SKF gives none (dry film).
+    With the chosen ``models`` whose starvation is off: 0 (Φ_rs = 1, the SKF model's too).
 
     >>> import thermobear as tb
     >>> s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
     >>> replenishment_constant(s), replenishment_constant(s.with_(K_rs=4.5e-8))
     (3e-08, 4.5e-08)
+    >>> replenishment_constant(s, {"starvation": (False, "chosen in the scene")})
+    0.0
     """
+    if models is not None and not models.get("starvation", (True,))[0]:
+        return 0.0
     return scene.K_rs if scene.K_rs is not None else K_RS.get(scene.supply)
 
 

@@ -29,7 +29,7 @@ from thermobear.losses.skf import skf_constants
 from thermobear.model_inputs import unread_inputs
 from thermobear.models import replenishment_constant
 from thermobear.scene import Scene
-from thermobear.scene.scene import FILE_KEYS
+from thermobear.scene.scene import FILE_KEYS, SECTIONS
 from thermobear.scene.network import network_spec
 from thermobear.thermal.builders import Machine, build_network, estimates
 
@@ -123,9 +123,10 @@ def _parse_param(scene: Scene, spec: str):
         x0 = getattr(scene, name)
     if x0 is None or isinstance(x0, bool) or not isinstance(x0, (int, float)) or not math.isfinite(x0):
         raise InputError(f"--param {name}", x0, "needs a finite numeric start value (give NAME=START)")
-    if name == "K_rs" and not 0.0 < x0 < 1e-6:
-        raise InputError(f"--param {name}", x0, "start must lie in (0, 1e-6): K_rs is fitted in logarithms (0 is no "
-                         "starvation: start at e.g. 1e-9), and the fit's steps need room below the scene's bound 1e-6")
+    hi = SECTIONS["lubricant"]["K_rs"].hi               # the scene file's bound, one place
+    if name == "K_rs" and not 0.0 < x0 < hi:
+        raise InputError(f"--param {name}", x0, f"start must lie in (0, {hi:g}): K_rs is fitted in logarithms (0 is no "
+                         f"starvation: start at e.g. 1e-9), and the fit's steps need room below the scene's bound {hi:g}")
     return name, float(x0)
 
 

@@ -70,9 +70,8 @@ def _one(values: np.ndarray):
 def _K_rs(fam: Family):
     """The family's replenishment constants [-] (:func:`~thermobear.models.replenishment_constant`: one float, or
     (B,) where the points differ; NaN for a supply without one, whose models do not read it)."""
-    if not fam.models.get("starvation", (True,))[0]:
-        return 0.0                  # no replenishment factor: Φ_rs = 1 (the SKF model's too, where the scene says so)
-    return _one(np.array([np.nan if k is None else k for k in map(replenishment_constant, fam.scenes)], float))
+    return _one(np.array([np.nan if k is None else k for k in (replenishment_constant(sc, fam.models)
+                                                               for sc in fam.scenes)], float))
 
 
 def _chosen(models: dict, key: str) -> bool:
@@ -224,8 +223,7 @@ def skf_losses(scene: Scene, T_C, models: dict, *, n_rpm=None, Fa=None, Fr=None,
     r = skf_friction(scene.bearing, oil.nu(T_C), n, Fa, Fr, lubrication=lub, R1=m.get("skf_R1"),
                      S1=m.get("skf_S1"), mu_EHL=m.get("skf_mu_EHL"), base_oil=base, H_mm=H_mm,
                      M_seal_Nmm=0.0 if M_seal_Nmm is None else M_seal_Nmm,
-                     K_rs=K_rs if K_rs is not None else 0.0 if not models.get("starvation", (True,))[0]
-                     else replenishment_constant(scene))
+                     K_rs=replenishment_constant(scene, models) if K_rs is None else K_rs)
     w = np.asarray(n, float) * np.pi / 30.0
     bd = {"rolling": r.M_rr * w, "sliding": r.M_sl * w, "drag": 0.0 * r.M_drag * w, "churning": r.M_drag * w,
           "seal": r.M_seal * w}
@@ -452,8 +450,8 @@ def scene_losses(scene: Scene, T_C=None, *, T_inner_C=None, T_outer_C=None, T_oi
     r = evaluate_losses(cs, scene.lubricant, T_C, T_inner_C=T_inner_C, T_outer_C=T_outer_C, T_oil_C=T_oil_C,
                         supply=scene.supply, oil_flow_m3_s=scene.oil_flow * scene.jet_penetration, Rq_ball=scene.Rq_ball,
                         Rq_ring=scene.Rq_ring, mu_boundary=scene.mu_boundary, mu_full_film=scene.mu_full_film,
-                        K_rs=replenishment_constant(scene), rolling_model=models["rolling"][0], drag=bool(models["drag"][0]), **film_options(models),
-                        **_added_local([scene], models))
+                        K_rs=replenishment_constant(scene, models), rolling_model=models["rolling"][0],
+                        drag=bool(models["drag"][0]), **film_options(models), **_added_local([scene], models))
     used = dict(r.models_used)
     used.update(models)
     lm, hs = models["load_model"][0], models["high_speed"][0]

@@ -435,11 +435,12 @@ def evaluate_losses(cs: ContactSet, oil, T_C=40.0, *, T_inner_C=None, T_outer_C=
     oil_c = oil.aligned(2) if pp else oil
     eta_all = property_at(oil_c.eta, Tall, pp)      # contacts and (drag) the oil–air mixture in one call
     eta2, alpha2 = eta_all[..., :2, :], property_at(oil_c.alpha_p_at, T2, pp)
-    eta_in, phi_T = inlet_viscosity(cs, oil_c, T2, eta2, pp) if inlet_heating else (eta2, np.ones(eta2.shape))
+    eta_in, phi_T = inlet_viscosity(cs, oil_c, T2, eta2, pp) if inlet_heating else (eta2, 1.0)
     h_min, h_c = cs.ehl.film_thickness(eta_in, alpha2, kind=("min", "central"), check=False)  # η, α_p: the lubricant's
     reg = cs.ehl.regime(eta_in, alpha2, check=False)
-    phi_rs = replenishment(cs, oil_c, T2, supply, pp, K_rs) if starvation else np.ones(h_min.shape)
-    F_R = cs.rolling.force(eta_in, _ROLLING_FORCE_MODEL.get(rolling_model, rolling_model), alpha2, reg, check=False) * phi_rs
+    phi_rs = replenishment(cs, oil_c, T2, supply, pp, K_rs) if starvation else 1.0     # (1: shown as such per contact)
+    F_R = cs.rolling.force(eta_in, _ROLLING_FORCE_MODEL.get(rolling_model, rolling_model), alpha2, reg,
+                           check=False) * phi_rs
     if np.any(Rq_ball) or np.any(Rq_ring):
         Lam = specific_film_thickness(h_min, Rq_ball, Rq_ring)
     else:                                           # smooth surfaces: Λ = ∞, full-film friction
