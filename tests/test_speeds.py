@@ -147,6 +147,8 @@ def test_cli_speed_says_when_the_limit_is_jumped_and_prints_the_answers_warnings
     assert main(["speed", str(scene)]) == 0
     out, err = capsys.readouterr()
     assert "the limit is passed by a step at this speed" in out and "°C just below it (a step of the model)" in out
+    row = next(ln for ln in out.splitlines() if "this scene's cooling (model)" in ln)
+    assert "a step of the model passes the limit here (+" in row              # the table's row says it too
     assert "warning: OutsideValidity: operation.n_rpm: speed n·dm" in err
     assert main(["speed", str(scene), "--json"]) == 0
     rep = json.loads(capsys.readouterr().out)["model"]
@@ -154,6 +156,19 @@ def test_cli_speed_says_when_the_limit_is_jumped_and_prints_the_answers_warnings
     below = float(below)
     assert node in ("inner_race", "outer_race")
     assert rep["residual_K"] > 1.0 and below < 70.0 < rep["T_C"]                 # the step across the limit
+
+
+def test_cli_speed_row_says_when_the_equilibria_end_below_the_limit(capsys):
+    """The greased 6208 block, limit 240 °C: the steady states end (runaway just above) with the inner race
+    some kelvin below the limit.  The speed is the answer (it bounds the equilibria), and the table's row says
+    so beside the number, not only the note under the table (it read as a root of the limit)."""
+    assert main(["speed", str(tb.example_path("block_6208_grease.toml")), "--limit-C", "240"]) == 0
+    out = capsys.readouterr().out
+    row = next(ln for ln in out.splitlines() if "this scene's cooling (model)" in ln)
+    T = float(row.split("inner_race ")[1].split(" °C")[0])
+    below = float(row.split("the equilibria end here, ")[1].split(" K below")[0])
+    assert T < 240.0 and below == pytest.approx(240.0 - T, abs=0.051)
+    assert "the limit is not reached at this speed" in out
 
 
 def test_safe_speed_ends_where_the_contacts_cannot_carry_the_loads(tmp_path, capsys):

@@ -215,7 +215,10 @@ def summary(rep: dict) -> str:
                        " in this scene" + hot["iso15312"] + open_))
     past = {k: "; above the maker's limiting speed" if p.get("above_limiting_speed") else "" for k, p in
             (("model", mod), ("din732", din))}
-    lines.append(_line("thermally safe speed, this scene's cooling (model)", mod, past["model"]))
+    bound = "" if "jump" not in mod or "error" in mod else (
+        f"; the equilibria end here, {-mod['residual_K']:.1f} K below the limit" if mod["residual_K"] < 0
+        else f"; a step of the model passes the limit here (+{mod['residual_K']:.1f} K)")
+    lines.append(_line("thermally safe speed, this scene's cooling (model)", mod, bound + past["model"]))
     lines.append(_line("DIN 732 thermally safe speed (standard's method)", din, " (model)" + hot["din732"] + past["din732"]))
     lines += _maker_lines(rep)
     if "error" not in iso:
