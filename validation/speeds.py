@@ -70,7 +70,7 @@ def init_scene():
 
 def scene_rows(s) -> list:
     out = ["| limit [°C] | model safe speed [rpm] | hotter race node [°C] | residual [K] | model power [W] | "
-           "DIN 732 n_θ [rpm] | f_n | K_L | K_P | f_n of the exact balance | DIN 732 heat flow [W] | "
+           "DIN 732 n_θ [rpm] | f_n | K_L (lubricant) | K_P (load) | f_n of the exact balance | DIN 732 heat flow [W] | "
            "n_θr (ISO 15312 eqs) [rpm] |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for limit in (60.0, 70.0, 80.0):
         with warnings.catch_warnings():
@@ -117,9 +117,10 @@ def main():
               "* Friction: DIN 732's Palmgren moments at ISO VG 68 (20 mm²/s at 70 °C) against the model's "
               "local losses; the standard's n_θr by its own equations and the model's n_θr differ as the first "
               "table shows.",
-              "* The approximation of f_n (constants unconfirmed) departs from the heat balance it approximates "
-              "by about −13 % at this scene's K_L, K_P (compare the two f_n columns); on ISO 15312's reference "
-              "balance it holds to 1.5 %.", ""]
+              "* The approximation of f_n (Schaeffler HR 1's quotation of DIN 732-2) holds to 5.7 % of the heat "
+              "balance it approximates, K_L f_n^(5/3) + K_P f_n = 1, over its range 0.01–10 of the lubricant "
+              "parameter K_L and the load parameter K_P (compare the two f_n columns).  Until stop 26 the two "
+              "parameters were exchanged here, and f_n erred by −13 % on this scene (validation/CHANGES.md).", ""]
     write_report("speeds.md", lines)
 
 

@@ -235,10 +235,12 @@ def summary(rep: dict) -> str:
                          "equilibria, not the limit temperature")
     if "error" not in din:
         lines.append(f"    DIN 732: f_n = {din['f_n']:.3f} × n_θr {din['n_theta_r_rpm']:.0f} rpm (ISO 15312's "
-                     f"equations); K_L {din['K_L']:.3f}, K_P {din['K_P']:.3f}; heat dissipated {din['Phi_W']:.2f} W")
-        lines.append(f"    DIN 732: the root of the balance f_n K_L + f_n^(5/3) K_P = 1 that f_n approximates is "
+                     f"equations); lubricant parameter K_L {din['K_L']:.3f}, load parameter K_P {din['K_P']:.3f}; "
+                     f"heat dissipated {din['Phi_W']:.2f} W")
+        inside = all(0.01 <= din[k] <= 10.0 for k in ("K_L", "K_P"))
+        lines.append(f"    DIN 732: the root of the balance K_L f_n^(5/3) + K_P f_n = 1 that f_n approximates is "
                      f"{din['f_n_balance']:.3f} ({din['f_n_balance'] * din['n_theta_r_rpm']:.0f} rpm); the "
-                     "approximation's constants are unconfirmed (thermobear.rating.speeds)")
+                     "approximation's range 0.01 ≤ K_L, K_P ≤ 10" + ("" if inside else " does not hold here"))
     return "\n".join(lines)
 
 

@@ -19,14 +19,19 @@ What was verified and what was not (``unconfirmed``):
   rolling element, open bearing with Normal clearance: as quoted from ISO 15312:2003 by SKF [2]_.
   Thrust ball bearings lie outside ISO 15312 (kinematic effects) [3]_ and outside DIN 732 [4]_.
 * Reference heat flow density q_r = 16 kW/m² up to A_r = 50 000 mm² and
-  q_r = 16 (A_r / 50 000 mm²)^-0.34 kW/m² beyond; reference surfaces A_r = π B (D + d) (radial) and
-  π/4 (D² − d²) (thrust): unconfirmed — recalled from ISO 15312 [1]_, the standard's text was not
-  available; SKF [5]_ shows the curve (16 kW/m² flat, falling beyond) without the equation.
-* DIN 732 [4]_: heat flows Φ = k_q A_s ΔT_A + 0.0286 kW/(l/min K) V_L ΔT_L + Φ_E, the parameters
-  K_L, K_P and the approximation of f_n below: unconfirmed — recalled from the standard as quoted in
-  Schaeffler's catalogue HR 1; their self-consistency is checked (f_n ≈ 1 where the operating heat
-  balance is the reference one, tests/test_speeds.py).  k_q read as the reference heat flow density
-  per 50 K (ISO 15312's reference temperature difference): unconfirmed.
+  q_r = 16 (A_r / 50 000 mm²)^-0.34 kW/m² beyond (radial bearings), 20 kW/m² and the exponent −0.16
+  (thrust bearings); reference surfaces A_r = π B (D + d) (radial) and π/2 (D² − d²) (thrust, both
+  washers' faces): ISO 15312 [1]_ as quoted by Schaeffler [7]_ (the standard's text was not available);
+  SKF [5]_ shows the radial curve (16 kW/m² flat, falling beyond).
+* DIN 732 [4]_: heat flows Φ = k_q A_s ΔT_A + 0.0286 kW/(l/min K) V_L ΔT_L + Φ_E, the lubricant
+  parameter K_L (the share of the heat that M0 would produce at n_θr), the load parameter K_P (M1's share),
+  the balance K_L f_n^(5/3) + K_P f_n = 1 and its approximation below: as quoted from the standard's draft
+  (DIN 732-2) in Schaeffler's catalogue HR 1 [7]_ (the standard's own text was not available).  The
+  approximation's constants are checked against the balance it approximates: within 5.7 % (median 0.7 %)
+  over its stated range 0.01 ≤ K_L, K_P ≤ 10 (tests/test_speeds.py) — read with the parameters exchanged
+  it errs by up to 150 %, as this module did before (validation/CHANGES.md).  k_q read as the reference
+  heat flow density per 50 K (ISO 15312's reference temperature difference), 320 W/(m² K): inside the
+  0.2–1.0·10⁻⁶ kW/(mm² K) Schaeffler gives for seating surfaces up to 25 000 mm² [7]_.
 * Friction moments of the Palmgren form the standards use, M0 = 10⁻⁷ f0 (ν n)^(2/3) d_m³,
   M1 = f1 P1 d_m, with Palmgren's coefficients as tabulated by Harris & Kotzalas [6]_ (ISO 15312
   Annex A's f0r, f1r were not available): unconfirmed as the standards' values.
@@ -43,6 +48,9 @@ References
 .. [5] SKF, "Reference speed" (diagram 1: reference heat flow density vs reference surface), skf.com.
 .. [6] Harris, T. A., Kotzalas, M. N. (2007). Essential Concepts of Bearing Technology, 5th ed.,
        ch. "Friction in rolling bearings" (Palmgren's f0, f1 and P1).
+.. [7] Schaeffler (2006). *Rolling Bearings*, catalogue HR 1, "Speeds": thermal reference speed (p. 62:
+       q_r, A_r) and thermally safe operating speed after DIN 732-2 (draft) (p. 63: k_q, the oil's heat
+       flow, K_L, K_P, the balance and the approximation of f_n for 0.01 ≤ K_L, K_P ≤ 10).
 """
 from __future__ import annotations
 
@@ -62,11 +70,13 @@ __all__ = ["ReferenceConditions", "reference_conditions", "reference_surface", "
            "din732_parameters", "din732_speed_ratio", "din732_balance_ratio", "standard_reference_speed", "seating_heat_transfer_coefficient", "Q_R_W_M2",
            "A_R_KNEE_M2", "DT_REFERENCE_K"]
 
-Q_R_W_M2 = 16.0e3              #: reference heat flow density up to the knee [W/m²] (ISO 15312, unconfirmed)
-A_R_KNEE_M2 = 50_000e-6        #: reference surface where q_r starts to fall [m²] (ISO 15312, unconfirmed)
-Q_R_EXPONENT = -0.34           #: exponent of q_r beyond the knee [-] (ISO 15312, unconfirmed)
+Q_R_W_M2 = 16.0e3              #: radial bearings' reference heat flow density up to the knee [W/m²] (ISO 15312 via [7])
+A_R_KNEE_M2 = 50_000e-6        #: reference surface where q_r starts to fall [m²] (ISO 15312 via [7])
+Q_R_EXPONENT = -0.34           #: exponent of the radial q_r beyond the knee [-] (ISO 15312 via [7])
+Q_R_THRUST_W_M2 = 20.0e3       #: thrust bearings' reference heat flow density up to the knee [W/m²] (ISO 15312 via [7])
+Q_R_THRUST_EXPONENT = -0.16    #: exponent of the thrust q_r beyond the knee [-] (ISO 15312 via [7])
 DT_REFERENCE_K = 50.0          #: 70 °C bearing − 20 °C ambient (ISO 15312 via SKF)
-DIN732_OIL_W_PER_L_MIN_K = 28.6   #: lubricant heat flow 0.0286 kW/(l/min K) (DIN 732, unconfirmed)
+DIN732_OIL_W_PER_L_MIN_K = 28.6   #: lubricant heat flow 0.0286 kW/(l/min K) (DIN 732 via [7])
 _KINDS = ("deep_groove", "angular_contact", "thrust")
 
 
@@ -125,10 +135,10 @@ def reference_surface(bore, outer_diameter, width, kind):
 
     Notes
     -----
-    .. math:: A_r = \pi B (D + d) \ \text{(radial)}, \qquad A_r = \tfrac{\pi}{4} (D^2 - d^2) \ \text{(thrust)}
+    .. math:: A_r = \pi B (D + d) \ \text{(radial)}, \qquad A_r = \tfrac{\pi}{2} (D^2 - d^2) \ \text{(thrust)}
 
-    the bore and outside cylinders of the rings, or the two faces of a thrust bearing's washers
-    (ISO 15312 [1]_; unconfirmed, see the module docstring).
+    the bore and outside cylinders of the rings, or the outer faces of a thrust bearing's two washers
+    (ISO 15312 [1]_ as quoted in [7]_, p. 64).
 
     Examples
     --------
@@ -142,28 +152,37 @@ def reference_surface(bore, outer_diameter, width, kind):
     if np.any(np.asarray(D) <= np.asarray(d)):
         raise InputError("outer_diameter", outer_diameter, "must exceed the bore")
     if _kind(kind) == "thrust":
-        return out(np.pi / 4.0 * (D ** 2 - d ** 2))
+        return out(np.pi / 2.0 * (D ** 2 - d ** 2))
     return out(np.pi * checked("width", width, lo=0.0, what=" [m]") * (D + d))
 
 
-def reference_heat_flow_density(A_r):
+def reference_heat_flow_density(A_r, kind: str = "deep_groove"):
     r"""Reference heat flow density q_r of ISO 15312 [W/m²] as a function of A_r [m²].
+
+    Parameters
+    ----------
+    A_r : array_like   reference surface (:func:`reference_surface`) [m²]
+    kind : str         ``deep_groove``, ``angular_contact`` (radial) or ``thrust``
 
     Notes
     -----
-    .. math:: q_r = 16\ \mathrm{kW/m^2} \quad (A_r \le 50\,000\ \mathrm{mm^2}), \qquad
-              q_r = 16\ \mathrm{kW/m^2}\, \left(\frac{A_r}{50\,000\ \mathrm{mm^2}}\right)^{-0.34}
+    .. math:: q_r = q_0 \quad (A_r \le 50\,000\ \mathrm{mm^2}), \qquad
+              q_r = q_0 \left(\frac{A_r}{50\,000\ \mathrm{mm^2}}\right)^{m}
 
-    (ISO 15312 [1]_; the exponent is unconfirmed, see the module docstring).  The reference heat flow
-    is Φ_r = q_r A_r; it grows as A_r^0.66 beyond the knee.
+    radial bearings q_0 = 16 kW/m², m = −0.34; thrust bearings q_0 = 20 kW/m², m = −0.16 (ISO 15312 [1]_
+    as quoted in [7]_, p. 62).  The reference heat flow is Φ_r = q_r A_r; it grows as A_r^(1+m) beyond
+    the knee.
 
     Examples
     --------
     >>> float(reference_heat_flow_density(6785.8e-6)), round(float(reference_heat_flow_density(0.1)), 1)
     (16000.0, 12640.7)
+    >>> round(float(reference_heat_flow_density(0.1, "thrust")), 1)
+    17900.5
     """
     A = checked("A_r", A_r, lo=0.0, what=" [m²]")
-    return out(Q_R_W_M2 * np.minimum(1.0, (A / A_R_KNEE_M2) ** Q_R_EXPONENT))
+    q0, m = (Q_R_THRUST_W_M2, Q_R_THRUST_EXPONENT) if _kind(kind) == "thrust" else (Q_R_W_M2, Q_R_EXPONENT)
+    return out(q0 * np.minimum(1.0, (A / A_R_KNEE_M2) ** m))
 
 
 def seating_heat_transfer_coefficient(A_s):
@@ -292,7 +311,7 @@ def din732_heat_flow(A_s, dT_A, *, k_q=None, oil_flow_L_min=0.0, dT_oil=0.0, Phi
 
 
 def din732_parameters(n_theta_r_rpm, M0, M1, Phi):
-    r"""DIN 732's load parameter K_L and lubricant parameter K_P [-] (unconfirmed, module docstring).
+    r"""DIN 732's lubricant parameter K_L and load parameter K_P [-] (DIN 732 [4]_ as quoted in [7]_).
 
     Parameters
     ----------
@@ -301,20 +320,25 @@ def din732_parameters(n_theta_r_rpm, M0, M1, Phi):
     M1 : array_like             load-dependent friction moment at the operating load [N m]
     Phi : array_like            heat flow dissipated at the limit temperature [W]
 
+    Returns
+    -------
+    K_L, K_P : array   the lubricant parameter (M0's share) and the load parameter (M1's share) [-]
+
     Notes
     -----
-    .. math:: K_L = \frac{\pi n_{\theta r} M_1}{30\, \Phi}, \qquad K_P = \frac{\pi n_{\theta r} M_0}{30\, \Phi}
+    .. math:: K_L = \frac{\pi n_{\theta r} M_0}{30\, \Phi}, \qquad K_P = \frac{\pi n_{\theta r} M_1}{30\, \Phi}
 
     the shares of the dissipated heat that the two moments would produce at n_θr.  The operating
-    heat balance at n = f_n n_θr (M0 ∝ n^(2/3)) is then f_n K_L + f_n^(5/3) K_P = 1.
+    heat balance at n = f_n n_θr (M0 ∝ n^(2/3)) is then K_L f_n^(5/3) + K_P f_n = 1.
 
     >>> K_L, K_P = din732_parameters(10000.0, 0.1, 0.01, 115.2)
     >>> round(float(K_L), 4), round(float(K_P), 4)
-    (0.0909, 0.9091)
+    (0.9091, 0.0909)
     """
     w = np.pi / 30.0 * checked("n_theta_r_rpm", n_theta_r_rpm, lo=0.0, what=" [rpm]")
     P = checked("Phi", Phi, lo=0.0, what=" [W] (no heat dissipated: no safe speed)")
-    return out(w * checked("M1", M1, lo=0.0, strict=False, what=" [N m]") / P), out(w * checked("M0", M0, lo=0.0, strict=False, what=" [N m]") / P)
+    return (out(w * checked("M0", M0, lo=0.0, strict=False, what=" [N m]") / P),
+            out(w * checked("M1", M1, lo=0.0, strict=False, what=" [N m]") / P))
 
 
 def din732_speed_ratio(K_L, K_P):
@@ -325,9 +349,9 @@ def din732_speed_ratio(K_L, K_P):
     .. math:: f_n = \frac{490.77}{1 + 498.78\,K_L^{0.599} + 852.88\,K_P^{0.963}
               - 504.5\,K_L^{0.055} K_P^{0.832}}
 
-    an approximation of the root of f_n K_L + f_n^(5/3) K_P = 1 (DIN 732 [4]_ as quoted by
-    Schaeffler; the constants are unconfirmed).  Its error against that root is a few per cent where
-    both moments matter and grows where K_L → 0 (tests/test_speeds.py).
+    with the lubricant parameter K_L and the load parameter K_P (:func:`din732_parameters`): an
+    approximation of the root of K_L f_n^(5/3) + K_P f_n = 1 (DIN 732 [4]_ as quoted in [7]_, for
+    0.01 ≤ K_L, K_P ≤ 10), within 5.7 % of that root (:func:`din732_balance_ratio`) over the range.
 
     >>> round(float(din732_speed_ratio(0.5, 0.5)), 3)
     0.991
@@ -344,31 +368,33 @@ def din732_balance_ratio(K_L, K_P, *, tol: float = 1e-13):
 
     Notes
     -----
-    .. math:: f\,K_L + f^{5/3} K_P = 1
+    .. math:: K_L f^{5/3} + K_P f = 1
 
-    (:func:`din732_parameters`; M0 ∝ n^(2/3)).  The left side increases with f from 0, so the root is unique; Newton
-    from the smaller of the two single-term roots 1/K_L and K_P^(−3/5) — both above it, and the left side convex —
-    approaches it from above without overshoot.  Infinite where K_L = K_P = 0 (no heat to balance).
+    (:func:`din732_parameters`: K_L the lubricant parameter, M0 ∝ n^(2/3); K_P the load parameter).  The left
+    side increases with f from 0, so the root is unique; Newton from the smaller of the two single-term roots
+    K_L^(−3/5) and 1/K_P — both above it, and the left side convex — approaches it from above without overshoot.
+    Infinite where K_L = K_P = 0 (no heat to balance).
 
-    >>> round(float(din732_balance_ratio(0.5, 0.5)), 12), round(float(din732_balance_ratio(0.303, 1.421)), 3)
+    >>> round(float(din732_balance_ratio(0.5, 0.5)), 12), round(float(din732_balance_ratio(1.421, 0.303)), 3)
     (1.0, 0.702)
     """
     KL = checked("K_L", K_L, lo=0.0, strict=False, what=" [-]")
     KP = checked("K_P", K_P, lo=0.0, strict=False, what=" [-]")
     KL, KP = np.broadcast_arrays(np.asarray(KL, float), np.asarray(KP, float))
     with np.errstate(divide="ignore"):
-        f = np.minimum(np.where(KL > 0, 1.0 / KL, np.inf), np.where(KP > 0, KP ** -0.6, np.inf))
+        f = np.minimum(np.where(KL > 0, KL ** -0.6, np.inf), np.where(KP > 0, 1.0 / KP, np.inf))
     live = np.isfinite(f)
     for _ in range(100):
         x = np.where(live, f, 1.0)                      # (no arithmetic on the infinite ones)
-        step = np.where(live, (x * KL + x ** (5.0 / 3.0) * KP - 1.0) / (KL + (5.0 / 3.0) * x ** (2.0 / 3.0) * KP), 0.0)
+        slope = np.where(live, (5.0 / 3.0) * x ** (2.0 / 3.0) * KL + KP, 1.0)
+        step = np.where(live, (x ** (5.0 / 3.0) * KL + x * KP - 1.0) / slope, 0.0)
         f = np.where(live, f - step, f)
         if np.all(np.abs(step) <= tol * np.maximum(f, 1.0)):
             return out(f)
     raise NoConvergence("DIN 732 balance: Newton did not converge", iterations=100)
 
 
-def standard_reference_speed(A_r, dm, P1r, f0r, f1r, nu_r_cSt=12.0, *, n_max_rpm=1e6):
+def standard_reference_speed(A_r, dm, P1r, f0r, f1r, nu_r_cSt=12.0, *, n_max_rpm=1e6, kind: str = "deep_groove"):
     r"""Thermal speed rating n_θr by ISO 15312's own equations (Palmgren-form friction) [rpm].
 
     Parameters
@@ -379,6 +405,7 @@ def standard_reference_speed(A_r, dm, P1r, f0r, f1r, nu_r_cSt=12.0, *, n_max_rpm
     f0r, f1r : float   the standard's friction coefficients at reference conditions [-]
     nu_r_cSt : float   reference viscosity [mm²/s]
     n_max_rpm : float  upper end of the search [rpm]
+    kind : str         the bearing kind of q_r (:func:`reference_heat_flow_density`)
 
     Returns
     -------
@@ -397,7 +424,7 @@ def standard_reference_speed(A_r, dm, P1r, f0r, f1r, nu_r_cSt=12.0, *, n_max_rpm
     >>> round(n, -1), abs(res) < 1e-6
     (9360.0, True)
     """
-    Phi = float(reference_heat_flow_density(A_r) * A_r)
+    Phi = float(reference_heat_flow_density(A_r, kind) * A_r)
 
     def balance(n):
         M0, M1 = palmgren_moments(n, nu_r_cSt, P1r, dm, f0r, f1r)
