@@ -1,6 +1,9 @@
 """run_sweep: the same numbers as single solves, whatever path (vectorised, processes, Dask) computes them."""
 from __future__ import annotations
 
+import csv
+import warnings
+
 import numpy as np
 import pytest
 
@@ -192,3 +195,30 @@ def test_a_forced_model_no_row_can_take_is_bad_input_before_any_row(tmp_path, ca
     assert rc == 2 and not out.exists() and err.strip().splitlines() == [
         "error: models.clearance = 'mounted' — the fitted clearance is applied by the coupled steady state: remove "
         "operation.T_C, or choose 'given'"]
+
+
+def test_coupled_rows_carry_the_ratings_and_their_warnings_as_run_gives_them(capsys):
+    """The 6208 oil bath example on its k5 / H7 seats: `run` names the operating clearance consumed into a radial
+    preload (−11 µm at the answer's temperatures, a ratings warning).  A sweep row of the same point said nothing
+    (`warnings` held the steady state's only); it now carries the ratings `run` gives — L10m, κ, s0, the operating
+    clearance — and their warnings, equal to run's, on every coupled row."""
+    from thermobear.app.cli import main
+    from thermobear.coupled.ratings import scene_ratings
+    s = tb.load_scene(tb.example_path("oil_bath_6208.toml"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        st = tb.steady_state(s)
+        rt = scene_ratings(s, st)
+        rows = run_sweep(s, {"n_rpm": [s.n_rpm, 2.0 * s.n_rpm]}, processes=1)
+    row = rows[0]
+    assert rt.clearance_um["operating"] < 0 and any("operating radial clearance" in str(w) for w in rt.warnings)
+    assert row["clearance_operating_um"] == pytest.approx(rt.clearance_um["operating"], rel=1e-9)
+    assert row["L10m_h"] == pytest.approx(rt.L10m_h, rel=1e-9) and row["kappa"] == pytest.approx(rt.kappa, rel=1e-9)
+    assert row["s0"] == pytest.approx(rt.s0)
+    assert all(str(w) in row["warnings"] for w in rt.warnings)
+    assert rows[1]["clearance_operating_um"] < row["clearance_operating_um"]      # faster: warmer inner ring, tighter
+    assert rows[1]["L10m_h"] < row["L10m_h"]                                       # fewer hours to the same revolutions
+    assert main(["sweep", str(tb.example_path("oil_bath_6208.toml")), "--n-rpm", str(s.n_rpm)]) == 0
+    header, first = csv.reader(capsys.readouterr().out.strip().splitlines()[-2:])
+    cols = dict(zip(header, first))
+    assert float(cols["clearance_operating_um"]) == pytest.approx(rt.clearance_um["operating"], rel=1e-6)

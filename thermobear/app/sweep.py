@@ -25,7 +25,9 @@ raise :class:`~thermobear.errors.InputError` before anything runs.
 Each row holds the grid values and ``P_W`` [W], ``torque_Nm`` [N m], ``breakdown_W`` (loss family
 → W), ``temperatures_C`` (node → °C; prescribed points: ``{"contacts (prescribed)": T}``),
 ``T_ball_C`` (coupled points), ``models`` (sub-model → choice), ``status`` ("ok" or the error
-class), ``reason``, ``iterations``, ``residual_K`` and ``warnings`` (the OutsideValidity messages).
+class), ``reason``, ``iterations``, ``residual_K`` and ``warnings`` (the OutsideValidity messages);
+coupled points also the ratings `run` gives at their temperatures, ``L10m_h`` [h], ``kappa`` [-], ``s0`` [-] and
+``clearance_operating_um`` [µm], with the ratings' warnings (a clearance consumed into a preload, a low κ).
 """
 from __future__ import annotations
 
@@ -42,6 +44,7 @@ from thermobear.loads.highspeed import load_distribution_high_speed
 from thermobear.arrays import take
 from thermobear.coupled.limits import family_warnings
 from thermobear.coupled.pipeline import film_scene_load
+from thermobear.coupled.ratings import scene_ratings
 from thermobear.models import moments, plan, plan_many
 from thermobear.scene import Scene
 
@@ -95,7 +98,22 @@ def _row(point: dict, sc: Scene, st=None, exc=None) -> dict:
                models=_choices(st.models_used), status="ok", reason=str(st.models_used["thermal"][1]),
                iterations=int(st.iterations), residual_K=float(st.residual_K),
                warnings=[str(w) for w in st.warnings])
+    row.update(_ratings_columns(sc, st, row["warnings"]))
     return row
+
+
+def _ratings_columns(sc: Scene, st, warned: list) -> dict:
+    """The ratings of a coupled point as `run` gives them (:func:`~thermobear.coupled.ratings.scene_ratings`):
+    L10m [h], κ [-], s0 [-] and the operating clearance [µm] (None where they do not apply), and ``warnings`` with
+    the ratings' own (viscosity ratio, static safety, a clearance consumed into a radial preload) added."""
+    try:
+        rt = scene_ratings(sc, st)
+    except InputError:                       # (no ratings at rest: the row's answer stands without them)
+        return {"L10m_h": None, "kappa": None, "s0": None, "clearance_operating_um": None}
+    c = rt.clearance_um
+    return {"L10m_h": _finite_or_none(rt.L10m_h), "kappa": _finite_or_none(rt.kappa), "s0": _finite_or_none(rt.s0),
+            "clearance_operating_um": _finite_or_none(c.get("operating")) if c.get("applies", True) else None,
+            "warnings": list(dict.fromkeys(warned + [str(w) for w in rt.warnings]))}
 
 
 def _finite_or_none(v):

@@ -35,7 +35,7 @@ from dataclasses import asdict, dataclass, field
 
 import numpy as np
 
-from thermobear.contact.fits import clearance_preload, operating_clearance
+from thermobear.contact.fits import T_REF_C, clearance_preload, operating_clearance
 from thermobear.contact.geometry import BallBearing
 from thermobear.contact.materials import material
 from thermobear.coupled.pipeline import sampled_lubricant
@@ -196,7 +196,7 @@ def _node_T(T, roles, names, role):
     return _num(T[node]), node
 
 
-def scene_clearance(scene, T_C: dict, roles: dict) -> dict:
+def scene_clearance(scene, T_C: dict, roles: dict, *, static=None) -> dict:
     """Unmounted, mounted (fits at 20 °C) and operating diametral clearance [µm] of a scene's bearing at the node
     temperatures ``T_C`` (node → °C, or → an array of one per operating point: then the operating clearance and the
     temperatures are arrays too; ``roles``: role → node), with the scene's fits (``shaft_fit``, ``housing_fit``), else —
@@ -214,7 +214,7 @@ def scene_clearance(scene, T_C: dict, roles: dict) -> dict:
     (1.69, 'k5 (13.5 µm)')
     """
     b = scene.bearing
-    C, _, P, _ = _static(scene)
+    C, _, P, _ = _static(scene) if static is None else static        # (static: the caller's _static(scene))
     typ = typical_fits(b, P, C, scene.rotating)
     shaft, housing = scene.shaft_fit or typ[0], scene.housing_fit or typ[1]
     given = scene.shaft_fit is not None and scene.housing_fit is not None
@@ -246,10 +246,16 @@ def scene_clearance(scene, T_C: dict, roles: dict) -> dict:
     Tb, nb = _node_T(T_C, roles, (), "ball")
     (Ts, ns), (Th, nh) = _node_T(T_C, roles, ("shaft",), "inner"), _node_T(T_C, roles, ("housing",), "outer")
     n_in = scene.n_rpm if scene.rotating == "inner" else 0.0
-    mounted = operating_clearance(b, shaft=shaft, housing=housing, **seats)
-    op = operating_clearance(b, shaft=shaft, housing=housing, T_inner_C=Ti, T_outer_C=To, T_ball_C=Tb,
-                             T_shaft_C=Ts, T_housing_C=Th, n_rpm=n_in, **seats)
-    out.update(unmounted=b.Pd * 1e6, mounted=float(mounted.Pd) * 1e6, operating=_num(op.Pd) * 1e6, used=b.Pd * 1e6,
+    if all(np.ndim(v) == 0 for v in (Ti, To, Tb, Ts, Th)):      # mounted (20 °C, at rest) and operating: one call
+        both = operating_clearance(b, shaft=shaft, housing=housing, T_inner_C=[T_REF_C, Ti], T_outer_C=[T_REF_C, To],
+                                   T_ball_C=[T_REF_C, Tb], T_shaft_C=[T_REF_C, Ts], T_housing_C=[T_REF_C, Th],
+                                   n_rpm=[0.0, n_in], **seats).Pd
+        mounted, op = float(both[0]), float(both[1])
+    else:
+        mounted = float(operating_clearance(b, shaft=shaft, housing=housing, **seats).Pd)
+        op = operating_clearance(b, shaft=shaft, housing=housing, T_inner_C=Ti, T_outer_C=To, T_ball_C=Tb,
+                                 T_shaft_C=Ts, T_housing_C=Th, n_rpm=n_in, **seats).Pd
+    out.update(unmounted=b.Pd * 1e6, mounted=mounted * 1e6, operating=_num(op) * 1e6, used=b.Pd * 1e6,
                temperatures_C={"inner ring": Ti, "outer ring": To, "balls": Tb, "shaft": Ts, "housing": Th},
                nodes={"inner ring": ni, "outer ring": no, "balls": nb, "shaft": ns, "housing": nh})
     return out
@@ -276,7 +282,7 @@ def scene_ratings(scene, steady, losses=None) -> Ratings:
             with np.errstate(divide="ignore", invalid="ignore"):
                 p[side] = float(np.max(np.where(Q > 0, 1.5 * Q / (np.pi * a * bb), 0.0)))
     T_op = operating_temperature_C(steady.T_C, steady.roles)
-    lv = operating_lives(scene, T_op)
+    lv = operating_lives(scene, T_op, static=(C, C0, P, P0))
     nu, nu1, kappa, e_C, a_iso = (float(lv[k]) for k in ("nu_m2_s", "nu1_m2_s", "kappa", "e_C", "a_ISO"))
     hours = 1e6 / (60.0 * float(scene.n_rpm))
     L10r = None
@@ -287,7 +293,8 @@ def scene_ratings(scene, steady, losses=None) -> Ratings:
         clear = {"applies": False, "why": "thrust bearing: no radial clearance or radial fits (its axial play is set "
                                           "by the mounting)"}
     else:
-        clear = getattr(steady, "clearance_um", None) or scene_clearance(scene, steady.T_C, steady.roles)
+        clear = getattr(steady, "clearance_um", None) or scene_clearance(scene, steady.T_C, steady.roles,
+                                                                         static=(C, C0, P, P0))
         if b.kind == "angular_contact":
             clear = {**clear, "note": "angular contact bearing: the diametral play its contact angle implies, "
                                       "P_d = 2A(1 − cos α0); in a pair the axial adjustment sets the contacts, not this play"}
@@ -357,7 +364,7 @@ def operating_temperature_C(T_C: dict, roles: dict):
     return 0.5 * (_node_T(T_C, roles, (), "inner")[0] + _node_T(T_C, roles, (), "outer")[0])
 
 
-def operating_lives(scene, T_op_C, nu_m2_s=None) -> dict:
+def operating_lives(scene, T_op_C, nu_m2_s=None, *, static=None) -> dict:
     r"""ISO 281 [2] viscosity ratio, life modification factor and lives of a scene's bearing and loads at operating
     temperatures ``T_op_C`` [°C] (a float, or an array of one per operating point, e.g. the samples of an
     uncertainty band; :func:`operating_temperature_C`); ``nu_m2_s``: the lubricant's kinematic viscosity there
@@ -374,7 +381,7 @@ def operating_lives(scene, T_op_C, nu_m2_s=None) -> dict:
     ([6.44, 1.4], True)
     """
     b = scene.bearing
-    C, C0, P, _ = _static(scene)
+    C, C0, P, _ = _static(scene) if static is None else static      # (static: the caller's _static(scene))
     n = float(scene.n_rpm)
     if not n > 0:
         raise InputError("operation.n_rpm", n, "ratings in hours need a speed > 0 [rpm]")
