@@ -54,3 +54,28 @@ def test_calibrate_help_spells_the_parameters_as_calibrate_accepts_them(capsys):
         main(["calibrate", "--help"])
     helptext = " ".join(capsys.readouterr().out.split())
     assert "skf_R1" in helptext and "skf.R1" not in helptext and "builder.R_mount_m2K_W" in helptext
+
+
+def test_a_fit_outside_the_range_the_scene_states_is_named(tmp_path):
+    """Ring temperatures made with the mounting joint at 10× the builders' estimate, whose stated range is a factor
+    3 either way (5–95 %): the fit finds 10× back, and its message says the value lies outside the stated range
+    (a fit that lands far outside what the scene holds likely was reported as plainly as one inside it)."""
+    s = tb.load_scene(BATH)
+    R0 = estimates.machine_value(s.network, "R_mount_m2K_W")
+    cells = {k: g.n for k, g in build_network(s.network).segments.items()}
+    truth = dataclasses.replace(s, network=estimates.drawn(s.network, {"R_mount_m2K_W": 10.0 * R0}, cells))
+    rows = []
+    for n in (1500.0, 4500.0):
+        st = tb.steady_state(truth.with_(n_rpm=n))
+        rows.append(f"{n:g},{st.T_C['outer_ring']:.4f},{st.T_C['shaft']:.4f}")
+    log_path = tmp_path / "rig.csv"
+    log_path.write_text("n_rpm,T_outer_C,T_shaft_C\n" + "\n".join(rows) + "\n", encoding="utf-8")
+    log = read_log(log_path)
+    cal = calibrate(s, log, ["builder.R_mount_m2K_W"], channel_map(s, log, {"T_outer_C": "outer_ring",
+                                                                            "T_shaft_C": "shaft"}))
+    assert cal.values["builder.R_mount_m2K_W"] == pytest.approx(10.0 * R0, rel=1e-3)
+    u = estimates.uncertainty()["R_mount_m2K_W"]
+    assert u.kind == "factor" and u.hi < 10.0
+    assert (f"builder.R_mount_m2K_W = {10.0 * R0:.3g} lies outside the range the scene states for it, "
+            f"{u.lo * R0:.3g} … {u.hi * R0:.3g}") in cal.message
+    assert "not determined" not in cal.message                 # determined: model-made, noiseless temperatures

@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from thermobear.app.rig import Comparison, RigLog, compare, simulate_log, special_target
+from thermobear.coupled.uncertainty import uncertain_inputs
 from thermobear.errors import InputError, NoConvergence, OutsideValidity
 from thermobear.lazy import lazy_module
 from thermobear.losses.skf import skf_constants
@@ -371,11 +372,33 @@ def calibrate(scene: Scene, log: RigLog, params: list, mapping: dict, *, T0_C=No
         scale = np.array([vals[n] if lg else sc for n, lg, sc in zip(names, logsp, lin)])
         cov = cov_x * np.outer(scale, scale)
         std = {n: float(np.sqrt(cov[i, i])) for i, n in enumerate(names)}
-    to_zero = [f"{n} runs towards 0 ({vals[n]:.3g} ± {std[n]:.2g} from the start {x0[i]:.3g}): the log does not "
-               "determine it and needs none of it" for i, n in enumerate(names)
-               if logsp[i] and std[n] is not None and vals[n] < 0.1 * x0[i] and std[n] > vals[n]]
-    msg = "; ".join(filter(None, [msg, *to_zero]))
+    msg = "; ".join(filter(None, [msg, *_fit_notes(scene, names, vals, std, x0, logsp)]))
     cal_scene = _apply(scene, vals, cells)
     comp = compare(cal_scene, log, mapping, T0_C=T0_C)
     return Calibration(values=vals, std=std, start=dict(zip(names, x0.tolist())), cov=cov, rms_residual=rms,
                        dof=dof, nfev=nfev[0], comparison=comp, scene=cal_scene, message=msg)
+
+
+def _fit_notes(scene: Scene, names, vals: dict, std: dict, x0, logsp) -> list:
+    """What the fitted values say beyond their numbers: a parameter that runs towards 0 (the log needs none of it),
+    one the log does not determine (its standard uncertainty as large as its value), one fitted outside the range
+    the scene states for it (its uncertainty's 5–95 % or support: :func:`~thermobear.coupled.uncertainty.uncertain_inputs`)."""
+    stated = {i.address: i.uncertainty for i in uncertain_inputs(scene)}
+    notes = []
+    for i, n in enumerate(names):
+        v, s = vals[n], std[n]
+        if logsp[i] and s is not None and v < 0.1 * x0[i] and s > v:
+            notes.append(f"{n} runs towards 0 ({v:.3g} ± {s:.2g} from the start {x0[i]:.3g}): the log does not "
+                         "determine it and needs none of it")
+        elif s is not None and s >= abs(v):
+            notes.append(f"{n} is not determined by the log ({v:.3g} ± {s:.2g}: the uncertainty as large as the value)")
+        u = stated.get(n if n.startswith(_BUILDER) else _ADDRESS.get(n))
+        if u is not None:
+            nominal = _parse_param(scene, n)[1]                 # the scene's own value (a given start aside)
+            lo, hi = sorted(float(u.apply(nominal, d)) for d in (u.lo, u.hi))
+            if not lo <= v <= hi:
+                span = "support" if u.distribution == "uniform" else "5–95 %"
+                notes.append(f"{n} = {v:.3g} lies outside the range the scene states for it, {lo:.3g} … {hi:.3g} "
+                             f"({span}; {u.source or 'no source given'}): the log pulls it where the scene holds it "
+                             "unlikely — check the log's channel map, and what else the model may miss")
+    return notes
