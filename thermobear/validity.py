@@ -26,9 +26,10 @@ The limits (the README's table is :func:`limits_table`, with the reasoning and s
 | operating radial clearance | µm | – | < 0 |
 | load (Fa, Fr or M/ℜ_i), when not 0 | N | < 1e-06 | – |
 | speed, when not 0 | rpm | < 1e-06 | – |
+| load / SKF's minimum load (deep groove) | – | – | < 1 |
 | SKF weighting factor Φ_bl | – | – | > 0.5 |
 
-Reasoning per limit is in :data:`LIMITS`; the sources are [1]_–[8]_.
+Reasoning per limit is in :data:`LIMITS`; the sources are [1]_–[9]_.
 
 References
 ----------
@@ -52,6 +53,8 @@ References
 .. [8] SKF, 2004, *The SKF model for calculating the frictional moment of bearings*: Φ_bl is the
    weight of the boundary (mixed) friction term; above 0.5 the contacts are mostly in boundary
    lubrication, where μ_bl is a single estimated constant.
+.. [9] SKF, 2018, *Rolling bearings*, PUB BU/P1 17000/1 EN, pp. 106 and 254: the requisite minimum
+   load of deep groove ball bearings (:mod:`thermobear.rating.minimum_load`).
 
 Examples
 --------
@@ -162,6 +165,12 @@ LIMITS = {
         "speed, when not 0", "rpm", (1e-6, None), (None, None),
         source="below 1e-6 rpm (one turn in 1.9 years) the bearing is at rest for every model here, and their "
                "powers of the speed underflow the floating-point range (0: at rest)"),
+    "minimum_load": Limit(
+        "load / SKF's minimum load (deep groove)", "-", (None, None), (1.0, None),
+        source="SKF 2018 (Rolling bearings, pp. 106, 254): below F_rm = k_r (ν n/1000)^(2/3) (d_m/100)^2 kN the balls "
+               "may skid and smear; the load and loss models assume rolling balls (raceway control, no gross slip); "
+               "the larger of the radial and axial load against F_rm, at the operating viscosity (a radial preload "
+               "meets it)"),
     "skf_phi_bl": Limit(
         "SKF weighting factor Φ_bl", "-", (None, None), (None, 0.5),
         source="SKF 2004: mostly boundary lubrication, μ_bl an estimated constant"),

@@ -46,6 +46,7 @@ from thermobear.rating.iso76 import static_equivalent_load
 from thermobear.rating.iso281 import (A_ISO_MAX, basic_rating_life, contamination_factor, fatigue_load_limit,
                                       life_modification_factor, reference_viscosity, viscosity_ratio)
 from thermobear.rating.life import equivalent_loads, stated_ratings
+from thermobear.rating.minimum_load import minimum_load_factor, minimum_radial_load
 from thermobear.thermal.builders import Machine, seat_interferences
 from thermobear.validity import LIMITS, check, collect
 
@@ -304,6 +305,7 @@ def scene_ratings(scene, steady, losses=None) -> Ratings:
             check("s0", s0, _LOAD_FIELDS, what=f"P0 = {P0:.4g} N, C0 = {C0:.4g} N")
         check("kappa", kappa, "lubricant viscosity at the operating temperature",
               what=f"nu {nu * 1e6:.3g} cSt at {T_op:.1f} °C, nu1 {nu1 * 1e6:.3g} cSt")
+        _minimum_load_check(scene, nu, clear)
     looped = clear.get("choice") == "operating"           # the loads at the operating clearance: its own warning
     if "operating" in clear and not looped:
         advice = ("" if b.kind != "deep_groove" else
@@ -356,6 +358,23 @@ def preload_warnings(brg: BallBearing, Pd, c: dict, why: str) -> list:
                    f"preload, each ball compressed by {-0.5 * Pd * 1e6:.3g} µm, Q0 = {Q0:.3g} N between the centred "
                    "rings")
     return list(got)
+
+
+def _minimum_load_check(scene, nu_m2_s: float, clear: dict) -> None:
+    """Warn (:data:`thermobear.validity.LIMITS` ``minimum_load``) where the larger of a deep groove bearing's radial
+    and axial load lies below SKF's requisite minimum load at the operating viscosity ``nu_m2_s``
+    (:func:`~thermobear.rating.minimum_load.minimum_radial_load`; none for a radial preload, ``clear``'s operating
+    clearance < 0, nor where no k_r is on file)."""
+    b = scene.bearing
+    k_r = minimum_load_factor(b.kind, b.series)
+    if k_r is None or not scene.n_rpm > 0 or clear.get("operating", 0.0) < 0.0:
+        return
+    F_rm = float(minimum_radial_load(k_r, nu_m2_s * 1e6, scene.n_rpm, b.dm))
+    F = max(float(np.hypot(scene.Fr, scene.Fz)), abs(float(scene.Fa)))
+    check("minimum_load", F / F_rm, _LOAD_FIELDS,
+          what=f"Fr {np.hypot(scene.Fr, scene.Fz):.4g} N, Fa {scene.Fa:.4g} N against F_rm {F_rm:.4g} N = k_r {k_r:g} "
+               f"(ν n/1000)^(2/3) (d_m/100 mm)^2 kN at ν {nu_m2_s * 1e6:.3g} mm²/s, {scene.n_rpm:.6g} rpm (SKF 2018): the "
+               "balls may skid — raise the load, preload the bearing, or check the load's unit")
 
 
 def operating_temperature_C(T_C: dict, roles: dict):
