@@ -372,6 +372,10 @@ def test_films_thicker_than_the_clearance_are_named_as_a_preload():
         rows = run_sweep(s, {"T_C": [-10.0, 20.0]})
     pre = [w for w in cold.warnings if w.quantity == "film preload"]
     assert cold.models_used["load_model"][0] == "film" and len(pre) == 1 and pre[0].value > 20
+    # the rolling force of the same contacts takes the track as starved (SKF's Φ_rs ≈ 0): the warning says the two
+    # disagree and that the answer lies between this one and the dry loads'
+    phi = min(float(np.min(cold.losses.contacts[k]["phi_rs"])) for k in ("inner", "outer"))
+    assert phi < 1e-2 and f"SKF's Φ_rs down to {phi:.3g}" in str(pre[0]) and "between this one and the dry" in str(pre[0])
     assert not [w for r in (warm, light) for w in r.warnings if w.quantity == "film preload"]
     assert light.models_used["load_model"][0] == "film"
     assert [any("film-induced preload" in w for w in r["warnings"]) for r in rows] == [True, False]

@@ -271,7 +271,7 @@ def film_load_preload_warnings(scene, rows) -> list:
                                  if worst[1] is not None else "")
 
 
-def _film_preload_warning(scene, ratio: float, dry, where: str = "") -> list:
+def _film_preload_warning(scene, ratio: float, dry, where: str = "", phi_rs=None) -> list:
     """An OutsideValidity warning where the film load model's ball loads exceed the dry solution's by more than
     :data:`FILM_PRELOAD_RATIO` (and by more than :data:`FILM_PRELOAD_C0` C0): the fully flooded films on both races
     of each ball (Hamrock–Dowson thicknesses, which a starved inlet would thin) take up more than the clearance and
@@ -279,14 +279,25 @@ def _film_preload_warning(scene, ratio: float, dry, where: str = "") -> list:
     if not ratio > FILM_PRELOAD_RATIO:
         return []
     Q_dry = _dry_sum(dry)
+    starved = ("" if phi_rs is None or not phi_rs < 0.5 else
+               f"; the same contacts' rolling force takes the track as starved (SKF's Φ_rs down to {phi_rs:.3g}) while "
+               "the film load law takes it as flooded: no source links the two, so the answer lies between this one and "
+               "the dry loads'")
     return [OutsideValidity(
         f"film-induced preload{where}: with the films in the contact laws the balls carry Σ Q = {ratio * Q_dry / 1e3:.3g} kN "
         f"on the inner race, {ratio:.3g} × the {Q_dry / 1e3:.3g} kN of the dry solution — the fully flooded films "
         "(Hamrock–Dowson, no starvation) are thicker than the clearance leaves them, and the hysteresis and sliding "
         "losses follow these loads; a starved inlet (cold, viscous oil) makes thinner films, so this is an upper "
-        "bound (models.load_model = jones_harris gives the dry loads)", quantity="film preload", value=float(ratio),
+        f"bound (models.load_model = jones_harris gives the dry loads){starved}", quantity="film preload", value=float(ratio),
         limit=f"<= {FILM_PRELOAD_RATIO:g} × the dry loads", source="thermobear.coupled.limits",
         field="models.load_model")]
+
+
+def _least_phi_rs(losses):
+    """The smallest replenishment factor Φ_rs of a loss result's contacts (None: no per-contact factor)."""
+    c = getattr(losses, "contacts", None)
+    vals = [np.asarray(c[k]["phi_rs"], float) for k in ("inner", "outer") if c and k in c and "phi_rs" in c[k]]
+    return float(min(v.min() for v in vals)) if vals and all(v.size for v in vals) else None
 
 
 def film_preload_warnings(scene, alternatives) -> list:
@@ -296,7 +307,8 @@ def film_preload_warnings(scene, alternatives) -> list:
     out = []
     for losses, dry in alternatives:
         if dry is not None:
-            out += [w for w in _film_preload_warning(scene, float(_film_ratio([scene], losses, [dry])[0]), dry)
+            out += [w for w in _film_preload_warning(scene, float(_film_ratio([scene], losses, [dry])[0]), dry,
+                                                     phi_rs=_least_phi_rs(losses))
                     if str(w) not in map(str, out)]
     return out
 
