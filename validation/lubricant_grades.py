@@ -24,7 +24,7 @@ kinematic viscosity at 40 °C in mm²/s, ±10 %):
   does not apply and the constants of seed002-pg1 are used (k 0.145 W/(m K), cp 2150 J/(kg K), estimated).
 
 Uncertainty of the estimated values (``uncertainty.<key>`` in each file, thermobear.schema.check_uncertainty):
-nu100 between the viscosity indices the sources above give for the family (mineral: VI 80-120, API 1509
+an oil's nu40 within ISO 3448's ±10 % of the grade (any oil sold as the grade); nu100 between the viscosity indices the sources above give for the family (mineral: VI 80-120, API 1509
 Annex E Groups I/II; PAO: VI 125-150, Rudnick & Shubkin 1999), each end by D2270 inverted as for the nominal;
 rho15 of mineral grades +-25 kg/m³ about the anchor fit (paraffinic to naphthenic base oils of one grade),
 of PAO 820-855 kg/m³ (the span of PAO 4-100 above); k and cp of PAO the typical ranges quoted per value;
@@ -123,6 +123,9 @@ def oil_lines(grade, family, name=None, kind="oil", extra=()):
     lines.append(f"# nu100_cSt: viscosity index {VI[family]:g} assumed for {fam} oils (API 1509 Annex E groups; "
                  "module docstring of validation/lubricant_grades.py).")
     lo_vi, hi_vi = VI_RANGE[family]
+    if kind == "oil":                   # (a grease's base oil: the class range of its note, grease_lines)
+        lines.append('uncertainty.nu40_cSt = { factor = [0.9, 1.1], source = "ISO 3448: an oil of the grade has a kinematic '
+                     'viscosity at 40 °C within ±10 % of the grade\'s mid-point (any value in the class: uniform)" }')
     lines.append(f"uncertainty.nu100_cSt = {{ range = [{round(nu100_from_vi(float(grade), lo_vi), 3)!r}, "
                  f"{round(nu100_from_vi(float(grade), hi_vi), 3)!r}], source = \"ASTM D2270 inverted for VI {lo_vi:g}-"
                  f"{hi_vi:g}, the {fam} base-oil range (validation/lubricant_grades.py)\" }}")
