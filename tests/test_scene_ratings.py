@@ -301,3 +301,19 @@ def test_an_angular_contact_bearings_clearance_says_what_it_is():
     assert "2A(1 − cos α0)" in r.ratings.clearance_um["note"] and r.ratings.lines()[-1].startswith("  (angular contact")
     dg = solve(tb.load_scene(tb.example_path("block_6208_oil_bath.toml")))
     assert "note" not in dg.ratings.clearance_um
+
+
+def test_a_radial_preload_warning_says_whether_the_next_clearance_group_would_keep_a_clearance():
+    """The preload warning names the next ISO 5753-1 group and whether its larger mid clearance would leave a clearance
+    at the same temperatures and fits (a designer's first question; `init` scenes on k5 seats ran preloaded in CN)."""
+    from thermobear.contact.geometry import radial_clearance
+    from thermobear.coupled.ratings import preload_warnings
+    b = tb.bearing("6208")
+    assert b.clearance_group == "CN"
+    gain = sum(radial_clearance(b.bore, "C3")) / 2 - sum(radial_clearance(b.bore, "CN")) / 2
+    c = {"mounted": 1.69, "shaft_fit": "k5", "housing_fit": "H7"}
+    small = str(preload_warnings(b, -0.5 * gain, c, "warm")[0])
+    large = str(preload_warnings(b, -2.0 * gain, c, "warm")[0])
+    assert f"a C3 bearing (+{gain * 1e6:.3g} µm mid clearance) would keep a clearance here" in small
+    assert "would not keep a clearance here (looser fits, or a larger group)" in large
+    assert "C3 bearing" not in str(preload_warnings(b.with_(clearance_group="C4"), -4e-6, c, "warm")[0])

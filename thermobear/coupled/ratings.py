@@ -36,7 +36,7 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 
 from thermobear.contact.fits import T_REF_C, clearance_preload, operating_clearance
-from thermobear.contact.geometry import BallBearing
+from thermobear.contact.geometry import BallBearing, radial_clearance
 from thermobear.contact.materials import material
 from thermobear.coupled.pipeline import sampled_lubricant
 from thermobear.errors import InputError
@@ -356,8 +356,24 @@ def preload_warnings(brg: BallBearing, Pd, c: dict, why: str) -> list:
         check("operating_clearance", Pd, "bearing clearance",
               what=f"{why}: mounted {c['mounted']:.2f} µm, fits {c['shaft_fit']} / {c['housing_fit']}; a radial "
                    f"preload, each ball compressed by {-0.5 * Pd * 1e6:.3g} µm, Q0 = {Q0:.3g} N between the centred "
-                   "rings")
+                   f"rings{_looser_group(brg, Pd)}")
     return list(got)
+
+
+def _looser_group(brg: BallBearing, Pd: float) -> str:
+    """Advice where a preload arises: the next ISO 5753-1 clearance group's larger mid clearance, and whether it would
+    leave a clearance at the same temperatures and fits (the groups' mid values: :func:`~thermobear.contact.geometry.
+    radial_clearance`); '' where the bearing has no group or no larger one."""
+    nxt = {"CN": "C3", "C3": "C4"}.get(brg.clearance_group or "")
+    if brg.kind != "deep_groove" or nxt is None or brg.bore is None:
+        return ""
+    try:
+        gain = sum(radial_clearance(brg.bore, nxt)) / 2.0 - sum(radial_clearance(brg.bore, brg.clearance_group)) / 2.0
+    except InputError:                                  # (a bore outside ISO 5753-1's table)
+        return ""
+    keeps = Pd + gain > 0.0
+    return (f"; a {nxt} bearing (+{gain * 1e6:.3g} µm mid clearance) would {'keep' if keeps else 'not keep'} a clearance "
+            "here" + ("" if keeps else " (looser fits, or a larger group)"))
 
 
 def _minimum_load_check(scene, nu_m2_s: float, clear: dict) -> None:
