@@ -282,6 +282,24 @@ def test_cli_run_names_it_for_an_init_made_thrust_scene(tmp_path, capsys):
     assert "maker's limiting speed 5300 rpm of the 51208" in out.err
 
 
+def test_cli_speed_of_a_thrust_bearing_says_iso_15312_excludes_it(capsys):
+    """Seed 002's 51107: the ISO 15312 row and SKF's reference speed say that ISO 15312 excludes thrust ball
+    bearings; the limiting speed 7500 rpm is above the model's thermally safe speed, which governs."""
+    path = tb.example_path("seed002_grease_thrust_51107.toml")
+    assert main(["speed", path, "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    m = d["maker"]
+    assert (m["limiting_rpm"], m["reference_rpm"], m["designation"]) == (7500.0, 5600.0, "51107")
+    assert "ISO 15312 excludes thrust ball bearings" in m["reference_basis"]
+    assert d["model"]["above_limiting_speed"] is False and m["governed_by"] == "thermally safe speed (model)"
+    assert main(["speed", path]) == 0
+    text = capsys.readouterr().out
+    iso = next(line for line in text.splitlines() if "ISO 15312 thermal reference speed" in line)
+    assert iso.endswith("ISO 15312 excludes thrust ball bearings: a model comparison")
+    ref = next(line for line in text.splitlines() if "maker's reference speed" in line)
+    assert "(51107, SKF)" in ref and "5600 rpm" in ref and "ISO 15312 excludes thrust ball bearings" in ref
+
+
 def test_readme_counts_the_bearings_with_makers_speeds():
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     row = next(line for line in readme.splitlines() if line.startswith("| makers' speeds |"))
