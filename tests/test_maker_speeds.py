@@ -14,6 +14,7 @@ import pytest
 
 import thermobear as tb
 from thermobear.app.cli import main
+from thermobear.contact.geometry import bearing_names
 from thermobear.coupled.limits import past_maker_limit, point_warnings
 from thermobear.errors import InputError
 from thermobear.rating import maker_speeds as ms
@@ -74,7 +75,7 @@ def test_seals_select_the_contact_seal_limit():
     assert capped.variant == "open" and "upper bound" in capped.note
 
 
-@pytest.mark.parametrize("name", ["51208", "51107", "7210", "7205B", "7014C", "iso-dgbb", "16001"])
+@pytest.mark.parametrize("name", ["51205-3ball", "7210", "7205B", "7014C", "iso-dgbb", "16001"])
 def test_a_bearing_without_a_sourced_value_has_none(name):
     assert ms.maker_speeds(name) is None and ms.maker_speeds(name, "RS1") is None
     assert ms.limiting_speed_text(name).startswith(f"no maker's limiting speed on file for {name}")
@@ -170,21 +171,133 @@ def test_malformed_entries_are_refused_by_name(tmp_path, monkeypatch, text, fiel
     assert e.value.field == field
 
 
-def test_data_file_is_what_the_generator_writes_now():
-    """materials/maker_speeds.toml is the output of validation/maker_speeds.py on the extracted source rows."""
+def _generator():
+    """validation/maker_speeds.py as a module."""
     path = ROOT / "validation" / "maker_speeds.py"
     sys.path.insert(0, str(path.parent))
     try:
         spec = importlib.util.spec_from_file_location("maker_speeds_script", path)
         mod = importlib.util.module_from_spec(spec)
         spec.loader.exec_module(mod)
-        text, entries, _notes = mod.build()
     finally:
         sys.path.remove(str(path.parent))
+    return mod
+
+
+def test_data_file_is_what_the_generator_writes_now():
+    """materials/maker_speeds.toml is the output of validation/maker_speeds.py on the extracted source rows."""
+    text, entries, notes = _generator().build()
     assert (ROOT / "materials" / "maker_speeds.toml").read_text(encoding="utf-8") == text
     names = {n for n, _ in entries}
-    assert len(names) == 131 and {"6208", "6305", "6210", "7200B", "7305B"} <= names
-    assert not {n for n in names if n.startswith("51")}          # no thrust bearing in either source
+    assert len(names) == 186 and {"6208", "6305", "6210", "7200B", "7305B"} <= names
+    thrust = {n for n in bearing_names() if tb.bearing(n).kind == "thrust"}
+    assert {n for n in names if n.startswith("51")} == thrust - {"51205-3ball"}    # every SKF thrust designation
+    assert len(thrust) == 56 and {(n, "open") for n in thrust - {"51205-3ball"}} <= set(entries)
+    assert [n for n in notes if n.startswith("('51307'")] == [
+        "('51307', 'open'): skf2018 (3400.0, 4800.0) against skf2006 (3200.0, 4500.0)"]
+
+
+# -- thrust ball bearings: SKF's 2018 and 2006 catalogue editions (validation/data/maker_speeds_skf_thrust.csv)
+
+def _thrust_rows() -> dict:
+    """(edition, designation) -> the row of validation/data/maker_speeds_skf_thrust.csv."""
+    with open(DATA / "maker_speeds_skf_thrust.csv", encoding="utf-8") as f:
+        return {(r["edition"], r["designation"]): r
+                for r in csv.DictReader(line for line in f if not line.startswith("#"))}
+
+
+@pytest.mark.parametrize("name, dims, ref, lim, lines_2018, line_2006", [
+    # SKF Rolling bearings 17000/1 EN (2018) table 5.1 and SKF General Catalogue (RU, 2006 data): both the same
+    ("51208", ("40", "68", "19"), 3800.0, 5300.0, "94953-94962", "44053"),
+    ("51107", ("35", "52", "12"), 5600.0, 7500.0, "94592-94602", "44047"),
+    ("51205", ("25", "47", "15"), 5300.0, 7500.0, "94514-94523", "43958"),
+    ("51200", ("10", "26", "11"), 8000.0, 11000.0, "94399-94408", "43943"),
+    ("51210", ("50", "78", "22"), 3400.0, 4500.0, "95043-95052", "44063"),
+])
+def test_thrust_rows_are_skfs_published_values(name, dims, ref, lim, lines_2018, line_2006):
+    """The published d x D x H and reference / limiting speeds, the transcriptions' lines of each edition, and the
+    data file's entry (the 2018 edition's, the 2006 one equal in cross_check) as looked up."""
+    rows = _thrust_rows()
+    for edition, lines in (("skf2018", lines_2018), ("skf2006", line_2006)):
+        r = rows[(edition, name)]
+        assert (r["d_mm"], r["D_mm"], r["H_mm"], float(r["n_ref_rpm"]), float(r["n_limit_rpm"])) == dims + (ref, lim)
+        assert r["source_line"] == lines
+    assert rows[("skf2018", name)]["commit"] == "68b9707fc46f43fa4d0c070323c23237becbce8b"
+    assert rows[("skf2006", name)]["commit"] == "b623d8e17ca13788f4f01e3469621a974a5a9bd8"
+    m = ms.maker_speeds(name)
+    assert (m.designation, m.variant, m.reference_rpm, m.limiting_rpm) == (name, "open", ref, lim)
+    assert m.source == f"skf2018 Rolling_bearings_1.md lines {lines_2018}"
+    entry = ms.maker_speeds_table()[name]["open"]
+    assert entry["cross_check"] == f"equal in skf2006 Общий_каталог_подшипников_SKF.md line {line_2006} ({name})"
+
+
+def test_the_editions_disagree_on_the_51307_only_and_the_newer_is_taken():
+    """51307: 3400 / 4800 rpm in 2018, 3200 / 4500 rpm in 2006 — the 2018 row taken, the 2006 one named."""
+    rows = _thrust_rows()
+    both = {d for e, d in rows if e == "skf2018"} & {d for e, d in rows if e == "skf2006"}
+    keys = ("d_mm", "D_mm", "H_mm", "n_ref_rpm", "n_limit_rpm")
+    differ = {d for d in both if any(rows[("skf2018", d)][k] != rows[("skf2006", d)][k] for k in keys)}
+    assert len(both) == 55 and differ == {"51307"}
+    m = ms.maker_speeds("51307")
+    assert (m.reference_rpm, m.limiting_rpm) == (3400.0, 4800.0)
+    cc = ms.maker_speeds_table()["51307"]["open"]["cross_check"]
+    assert "gives reference 3200.0, limiting 4500.0 rpm" in cc and "2018 edition's row taken" in cc
+
+
+def test_the_thrust_extraction_reads_both_layouts():
+    """The transcriptions' layouts, as they print the 51107 / 51207 rows: 2018 one value a line (d left out where it
+    repeats, "7 500" with a space), 2006 a row a line ("." for a repeated d, "7.500" with a dot)."""
+    gen = _generator()
+    lines_2018 = ["", "35", "52", "12", "19,9", "51", "1,86", "0,013", "5 600", "7 500", "0,08", "▶51107", "",
+                  "62", "18", "35,1", "73,5", "2,7", "0,028", "4 000", "5 600", "0,22", "▶51207"]
+    assert gen._thrust_2018(lines_2018) == [(2, 12, "51107", 35.0, 52.0, 12.0, 5600.0, 7500.0),
+                                            (14, 23, "51207", 35.0, 62.0, 18.0, 4000.0, 5600.0)]
+    lines_2006 = ["35. \t52. \t12. \t19,9. \t51. \t1,86. \t0,013. \t5.600. \t7.500. \t0,080. \t51107",
+                  ". \t62. \t18. \t35,1. \t73,5. \t2,7. \t0,028. \t4.000. \t5.600. \t0,22. \t51207"]
+    assert gen._thrust_2006(lines_2006) == [(1, 1, "51107", 35.0, 52.0, 12.0, 5600.0, 7500.0),
+                                            (2, 2, "51207", 35.0, 62.0, 18.0, 4000.0, 5600.0)]
+
+
+def test_a_thrust_scene_past_its_limiting_speed_is_named():
+    """Seed 002's 51107 (SKF: 7500 rpm): 7500 rpm says nothing, 7500.1 rpm is named on the steady state."""
+    s = tb.load_scene(tb.example_path("seed002_grease_thrust_51107.toml"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        st = tb.steady_states([s.with_(n_rpm=n) for n in (7500.0, 7500.1)])
+    assert [len(_maker_warnings(x.warnings)) for x in st] == [0, 1]
+    w = _maker_warnings(st[1].warnings)[0]
+    assert (w.field, w.value, w.limit) == ("operation.n_rpm", 7500.1, "<= 7500 rpm")
+    assert "51107" in str(w) and "skf2018" in w.source
+
+
+def test_cli_run_names_it_for_an_init_made_thrust_scene(tmp_path, capsys):
+    """`thermobear init 51208 --lubrication grease`, run at 6000 rpm: above SKF's 5300 rpm, named."""
+    path = tmp_path / "x.toml"
+    assert main(["init", "51208", "--lubrication", "grease", "--out", str(path)]) == 0
+    capsys.readouterr()
+    assert main(["run", str(path), "--set", "n_rpm=6000", "--json"]) == 0
+    out = capsys.readouterr()
+    w = [w for w in json.loads(out.out)["warnings"] if w["quantity"] == "maker_limiting_speed"]
+    assert len(w) == 1 and (w[0]["value"], w[0]["limit"]) == (6000.0, "<= 5300 rpm")
+    assert "maker's limiting speed 5300 rpm of the 51208" in out.err
+
+
+def test_cli_speed_of_a_thrust_bearing_says_iso_15312_excludes_it(capsys):
+    """Seed 002's 51107: the ISO 15312 row and SKF's reference speed say that ISO 15312 excludes thrust ball
+    bearings; the limiting speed 7500 rpm is above the model's thermally safe speed, which governs."""
+    path = tb.example_path("seed002_grease_thrust_51107.toml")
+    assert main(["speed", path, "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    m = d["maker"]
+    assert (m["limiting_rpm"], m["reference_rpm"], m["designation"]) == (7500.0, 5600.0, "51107")
+    assert "ISO 15312 excludes thrust ball bearings" in m["reference_basis"]
+    assert d["model"]["above_limiting_speed"] is False and m["governed_by"] == "thermally safe speed (model)"
+    assert main(["speed", path]) == 0
+    text = capsys.readouterr().out
+    iso = next(line for line in text.splitlines() if "ISO 15312 thermal reference speed" in line)
+    assert iso.endswith("ISO 15312 excludes thrust ball bearings: a model comparison")
+    ref = next(line for line in text.splitlines() if "maker's reference speed" in line)
+    assert "(51107, SKF)" in ref and "5600 rpm" in ref and "ISO 15312 excludes thrust ball bearings" in ref
 
 
 def test_readme_counts_the_bearings_with_makers_speeds():

@@ -4,8 +4,10 @@ thermally safe speed of examples/block_6208_oil_bath.toml (coupled model) agains
 Writes validation/report/speeds.md.  The makers' speeds are SKF's numbers (SKF computes them with its
 own friction model under ISO 15312's conditions); they are shown for comparison, never used to fit.
 Source: materials/maker_speeds.toml (thermobear.rating.maker_speeds; SKF's product tables as transcribed in
-JRaposo-m/SKF-Bearing-Selection-Tool and gumyr/bd_warehouse, the row of each value named there,
-validation/maker_speeds.py); a bearing no source lists is marked "not found".
+JRaposo-m/SKF-Bearing-Selection-Tool and gumyr/bd_warehouse, thrust ball bearings from SKF's 2018 and 2006
+catalogues as transcribed in ArtemFilin1990/Mar, the row of each value named there, validation/maker_speeds.py);
+a bearing no source lists is marked "not found".  A thrust ball bearing's reference speed is SKF's own: ISO 15312
+excludes thrust ball bearings.
 """
 from __future__ import annotations
 
@@ -27,7 +29,6 @@ from thermobear.rating.maker_speeds import maker_speeds  # noqa: E402
 BEARINGS = ("6208", "6305", "7205B", "7014C", "61806", "51107", "6200", "6300", "6000", "61800", "7200B", "7305B")
 WHY_NONE = {
     "7014C": "none: SKF lists attainable speeds, not ISO 15312 reference speeds, for super-precision bearings",
-    "51107": "none applicable: ISO 15312 excludes thrust ball bearings (and no source lists thrust bearings)",
 }
 
 
@@ -37,7 +38,8 @@ def maker_reference(name: str) -> tuple:
     m = maker_speeds(name)
     if m is None or m.reference_rpm is None:
         return None, WHY_NONE.get(name, "not found (no source of materials/maker_speeds.toml lists it)")
-    return m.reference_rpm, f"SKF {m.designation}: materials/maker_speeds.toml ({m.source})"
+    own = "; SKF's own rating, ISO 15312 excludes thrust ball bearings" if tb.bearing(name).kind == "thrust" else ""
+    return m.reference_rpm, f"SKF {m.designation}: materials/maker_speeds.toml ({m.source}){own}"
 
 
 #: bearing → (maker's reference speed [rpm] or None, source)

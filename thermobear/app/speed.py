@@ -4,9 +4,10 @@ DIN 732's thermally safe speed (the standard's method), each with the temperatur
 on at that speed: the hotter race (``inner_race`` or ``outer_race``, the rings' raceway layers — not the ring
 bodies ``inner_ring`` / ``outer_ring``; :func:`thermobear.coupled.speeds.hottest_race`), or ``--node``.
 
-Beside them the maker's reference speed (of the open bearing, ISO 15312's) and limiting speed (of the scene's
-variant: its seals; :func:`thermobear.rating.maker_speeds.maker_speeds`), where the data file has them: a
-thermally safe speed above the limiting speed keeps its number, flagged, and the limiting speed governs."""
+Beside them the maker's reference speed (of the open bearing, ISO 15312's; of a thrust ball bearing, which ISO
+15312 excludes, SKF's own) and limiting speed (of the scene's variant: its seals;
+:func:`thermobear.rating.maker_speeds.maker_speeds`), where the data file has them: a thermally safe speed above
+the limiting speed keeps its number, flagged, and the limiting speed governs."""
 from __future__ import annotations
 
 import sys
@@ -33,6 +34,8 @@ EXIT_SOLVER = 3
 #: stops within 1 rpm: a continuous rise misses the limit by hundredths of a kelvin there)
 JUMP_K = 0.1
 LIMITING = "maker's limiting speed"
+#: what a thrust ball bearing's ISO 15312 row and maker's reference speed say (ISO 15312:2018 scope)
+THRUST_EXCLUDED = "ISO 15312 excludes thrust ball bearings"
 
 
 def _at_speeds(scene: Scene, speeds: dict, node) -> dict:
@@ -155,7 +158,9 @@ def _maker(scene: Scene, rep: dict) -> dict:
            "designation": None if lim is None else lim.designation,
            "reference_designation": None if ref is None else ref.designation,
            "source": None if lim is None else lim.source, "note": None if lim is None else lim.note or None,
-           "text": limiting_speed_text(scene.bearing, scene.seals)}
+           "text": limiting_speed_text(scene.bearing, scene.seals),
+           "reference_basis": None if ref is None else "ISO 15312" if scene.bearing.kind != "thrust" else
+           f"SKF's own friction model under ISO-like conditions ({THRUST_EXCLUDED})"}
     for k in ("model", "din732"):
         if rep[k].get("n_rpm") is not None and lim is not None:
             rep[k]["above_limiting_speed"] = rep[k]["n_rpm"] > lim.limiting_rpm
@@ -178,8 +183,9 @@ def _maker_lines(rep: dict) -> list:
         label = f"{LIMITING} ({m['designation']}, kinematic)"
         lines = [f"  {label:58s} {m['limiting_rpm']:9.0f} rpm   SKF: {m['source']}{note}"]
     if m["reference_rpm"] is not None:
-        label = f"maker's reference speed ({m['reference_designation']}, ISO 15312)"
-        lines.insert(0, f"  {label:58s} {m['reference_rpm']:9.0f} rpm")
+        iso = m.get("reference_basis") == "ISO 15312"
+        label = f"maker's reference speed ({m['reference_designation']}, {'ISO 15312' if iso else 'SKF'})"
+        lines.insert(0, f"  {label:58s} {m['reference_rpm']:9.0f} rpm" + ("" if iso else f"   {m['reference_basis']}"))
     for k, what in (("model", "thermally safe speed of this scene's cooling"),
                     ("din732", "DIN 732 thermally safe speed")):
         if rep[k].get("above_limiting_speed"):
@@ -211,6 +217,8 @@ def summary(rep: dict) -> str:
     hot = {k: f"; above the {rep['limit_C']:g} °C limit" if (p.get("T_C") or -1e9) > rep["limit_C"] + JUMP_K else ""
            for k, p in (("iso15312", iso), ("din732", din))}
     open_ = " (of the open bearing: ISO 15312 has none for contact seals)" if rep.get("contact_seals") else ""
+    if any(w.get("quantity") == "iso15312_scope" for w in iso.get("warnings", ())):
+        open_ += f"; {THRUST_EXCLUDED}: a model comparison"
     lines.append(_line("ISO 15312 thermal reference speed (model, reference cond.)", iso,
                        " in this scene" + hot["iso15312"] + open_))
     past = {k: "; above the maker's limiting speed" if p.get("above_limiting_speed") else "" for k, p in

@@ -3,16 +3,20 @@ r"""The makers' reference and limiting speeds of the catalogue bearings (``mater
 A maker's product table gives two speeds per bearing [1]_:
 
 * the **reference speed**, SKF's thermal speed rating under ISO 15312's reference conditions (what
-  :func:`thermobear.coupled.speeds.thermal_reference_speed` computes with thermobear's own losses);
+  :func:`thermobear.coupled.speeds.thermal_reference_speed` computes with thermobear's own losses) — for a
+  thrust ball bearing, which ISO 15312 excludes [2]_ ("as kinematic effects do not allow the thermal speed rating
+  to be applied"), SKF's own friction model under ISO-like conditions (axial load 0.02 C0, ISO VG 68), not
+  the standard's rating;
 * the **limiting speed**, the kinematic limit of the bearing — its cage, the stability of its balls, and for a
   capped bearing its seals' lip speed — which SKF advises not to exceed whatever the cooling
   (its value is for grease as well as oil: one value per bearing in the sources, which do not distinguish
   the lubrication).  Contact-sealed bearings have a limiting speed only: their friction is the seals'.
 
-The data file holds SKF's values as transcribed in two public repositories (a source row per entry; how
-they were read, cross-checked and which rows were not used: ``validation/maker_speeds.py``).  A bearing or
-variant the sources do not list has no value: thrust ball bearings (511, 512, 513), the spindle series 70 C/E,
-719 C/E, most of 72 B / 73 B.
+The data file holds SKF's values as transcribed in public repositories (a source row per entry; how they
+were read, cross-checked and which rows were not used: ``validation/maker_speeds.py``): deep groove and
+angular contact ball bearings from two transcriptions of SKF's product tables, thrust ball bearings (511, 512,
+513, open) from two SKF catalogue editions (2018, 2006).  A bearing or variant the sources do not list has no
+value: the spindle series 70 C/E, 719 C/E, most of 72 B / 73 B, 51205-3ball (no SKF designation).
 
 A scene's ``[bearing] seals`` selects the variant: ``none`` the open bearing, ``shield`` the lower of the
 shielded variants on file (2Z, 2RZ), a contact seal (RSL, RSH, RS1) its own variant (2RSL, 2RSH, 2RS1) — or,
@@ -26,7 +30,11 @@ References
 ----------
 .. [1] SKF Group, *Rolling bearings* (SKF General Catalogue 10000 EN / 17000 EN), "Speeds" (reference
    and limiting speed) and the product tables of deep groove and angular contact ball bearings, as transcribed
-   in github.com/JRaposo-m/SKF-Bearing-Selection-Tool and github.com/gumyr/bd_warehouse.
+   in github.com/JRaposo-m/SKF-Bearing-Selection-Tool and github.com/gumyr/bd_warehouse; SKF *Rolling
+   bearings* PUB BU/P1 17000/1 EN (2018) table 5.1 and the SKF General Catalogue (Russian edition, 2006 data),
+   single direction thrust ball bearings, as transcribed in github.com/ArtemFilin1990/Mar.
+.. [2] ISO 15312:2018, Rolling bearings — Thermal speed rating — Calculation, scope: thrust ball bearings
+   excluded.
 
 Examples
 --------
@@ -35,10 +43,11 @@ Examples
 ('6208', 18000.0, 11000.0)
 >>> maker_speeds("6208", seals="RS1").designation, maker_speeds("6208", seals="RS1").limiting_rpm
 ('6208-2RSH', 5600.0)
->>> print(maker_speeds("51208"))
-None
->>> limiting_speed_text("51208")
-"no maker's limiting speed on file for 51208"
+>>> m = maker_speeds("51208")                 # a thrust ball bearing: SKF's 2018 table 5.1
+>>> m.designation, m.reference_rpm, m.limiting_rpm
+('51208', 3800.0, 5300.0)
+>>> limiting_speed_text("7210")
+"no maker's limiting speed on file for 7210"
 """
 from __future__ import annotations
 
@@ -78,7 +87,8 @@ class MakerSpeeds:
     bearing : str          catalogue designation (e.g. ``"6208"``)
     variant : str          the data file's variant the values are of (``open``, ``2Z``, ``2RSH``, …)
     designation : str      the maker's designation of that row (``"6208-2RSH"``, ``"7200 BECBP"``)
-    reference : float | None  reference speed [rad/s] (None: the maker gives none, e.g. contact seals)
+    reference : float | None  reference speed [rad/s] (None: the maker gives none, e.g. contact seals; of a
+                           thrust ball bearing SKF's own rating, ISO 15312 excluding them)
     limiting : float       limiting speed [rad/s]
     source : str           the source row
     note : str             how the variant was chosen where it is not the scene's own ("" where it is)
@@ -168,8 +178,8 @@ def maker_speeds(bearing, seals: str = "none") -> MakerSpeeds | None:
     -------
     MakerSpeeds or None
         the speeds in rad/s (``reference_rpm``, ``limiting_rpm`` in rpm) and their source row; None where the
-        data file has no value for the bearing (no source lists it: thrust bearings, most angular contact ones,
-        bearings not in the catalogue) — never an estimate.
+        data file has no value for the bearing (no source lists it: most angular contact bearings, the spindle
+        series, bearings not in the catalogue) — never an estimate.
 
     The limiting speed is SKF's for grease and oil alike: the sources give one value (see the module).
 
