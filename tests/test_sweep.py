@@ -222,3 +222,21 @@ def test_coupled_rows_carry_the_ratings_and_their_warnings_as_run_gives_them(cap
     header, first = csv.reader(capsys.readouterr().out.strip().splitlines()[-2:])
     cols = dict(zip(header, first))
     assert float(cols["clearance_operating_um"]) == pytest.approx(rt.clearance_um["operating"], rel=1e-6)
+
+
+def test_prescribed_rows_carry_the_ratings_run_gives_at_that_temperature():
+    """A 6310 at a prescribed 20 °C with 8 N (8 kN typed in kN as N): `run` names the load below SKF's minimum load
+    (a ratings warning); the prescribed-temperature rows of a sweep carry the same ratings and warnings (they held
+    the loss model's warnings only)."""
+    s = tb.load_scene(tb.example_path("oil_bath_6208.toml")).with_(bearing="6310", lubricant="iso-vg-150-mineral",
+                                                                    n_rpm=1500.0, Fr=8.0, T_C=20.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ref = solve(s)
+        rows = run_sweep(s, {"Fr": [8.0, 8000.0]}, processes=1)
+    mine = [str(w) for w in ref.ratings.warnings if "minimum load" in str(w)]
+    assert mine and mine[0] in rows[0]["warnings"]
+    assert not any("minimum load" in w for w in rows[1]["warnings"])
+    assert rows[0]["kappa"] == pytest.approx(ref.ratings.kappa, rel=1e-12)
+    assert rows[0]["L10m_h"] == pytest.approx(ref.ratings.L10m_h, rel=1e-12)
+    assert rows[0]["clearance_operating_um"] == pytest.approx(ref.ratings.clearance_um["operating"], rel=1e-12)

@@ -26,8 +26,9 @@ Each row holds the grid values and ``P_W`` [W], ``torque_Nm`` [N m], ``breakdown
 → W), ``temperatures_C`` (node → °C; prescribed points: ``{"contacts (prescribed)": T}``),
 ``T_ball_C`` (coupled points), ``models`` (sub-model → choice), ``status`` ("ok" or the error
 class), ``reason``, ``iterations``, ``residual_K`` and ``warnings`` (the OutsideValidity messages);
-coupled points also the ratings `run` gives at their temperatures, ``L10m_h`` [h], ``kappa`` [-], ``s0`` [-] and
-``clearance_operating_um`` [µm], with the ratings' warnings (a clearance consumed into a preload, a low κ).
+and the ratings `run` gives at their temperatures, ``L10m_h`` [h], ``kappa`` [-], ``s0`` [-] and
+``clearance_operating_um`` [µm], with the ratings' warnings (a clearance consumed into a preload, a low κ, a load
+below the minimum).
 """
 from __future__ import annotations
 
@@ -45,6 +46,7 @@ from thermobear.arrays import take
 from thermobear.coupled.limits import family_warnings
 from thermobear.coupled.pipeline import film_scene_load
 from thermobear.coupled.ratings import scene_ratings
+from thermobear.coupled.run import Prescribed
 from thermobear.models import moments, plan, plan_many
 from thermobear.scene import Scene
 
@@ -102,12 +104,13 @@ def _row(point: dict, sc: Scene, st=None, exc=None) -> dict:
     return row
 
 
-def _ratings_columns(sc: Scene, st, warned: list) -> dict:
-    """The ratings of a coupled point as `run` gives them (:func:`~thermobear.coupled.ratings.scene_ratings`):
-    L10m [h], κ [-], s0 [-] and the operating clearance [µm] (None where they do not apply), and ``warnings`` with
-    the ratings' own (viscosity ratio, static safety, a clearance consumed into a radial preload) added."""
+def _ratings_columns(sc: Scene, st, warned: list, losses=None) -> dict:
+    """The ratings of a point as `run` gives them (:func:`~thermobear.coupled.ratings.scene_ratings`; ``st`` a
+    SteadyState, or a :class:`~thermobear.coupled.run.Prescribed` temperature with its ``losses``): L10m [h], κ [-],
+    s0 [-] and the operating clearance [µm] (None where they do not apply), and ``warnings`` with the ratings' own
+    (viscosity ratio, static safety, minimum load, a clearance consumed into a radial preload) added."""
     try:
-        rt = scene_ratings(sc, st)
+        rt = scene_ratings(sc, st, losses=losses)
     except InputError:                       # (no ratings at rest: the row's answer stands without them)
         return {"L10m_h": None, "kappa": None, "s0": None, "clearance_operating_um": None}
     c = rt.clearance_um
@@ -177,6 +180,8 @@ def _prescribed_group(scenes, points, models, members, dry=None):
         row.update(P_W=float(P[j]), torque_Nm=float(M[j]), breakdown_W={k: float(v[j]) for k, v in bd.items()},
                    temperatures_C={"contacts (prescribed)": float(T[j])}, models=_choices(models), status="ok",
                    reason="", iterations=0, residual_K=0.0, warnings=[str(w) for w in warned[j]])
+        row.update(_ratings_columns(scenes[i], Prescribed(float(T[j])), row["warnings"],
+                                    losses=take(r, j, len(members)) if P.size == len(members) else r))
         rows[i] = row
     return rows
 

@@ -18,7 +18,7 @@ from thermobear.errors import OutsideValidity
 from thermobear.models import plan_many
 from thermobear.scene import Scene
 
-__all__ = ["RunResult", "solve", "heat_flows", "heat_flow_table"]
+__all__ = ["RunResult", "Prescribed", "solve", "heat_flows", "heat_flow_table"]
 
 #: the sign convention of the heat-flow table
 HEAT_FLOW_SIGN = ("W leaving the machine through each path into a fixed-temperature boundary (ambient air, frame, "
