@@ -1,4 +1,4 @@
-r"""SKF's requisite minimum load of a deep groove ball bearing.
+r"""SKF's requisite minimum load of ball bearings: radial (deep groove), axial (angular contact, thrust).
 
 Below a minimum load the balls may skid: the inertia of balls and cage and the lubricant's drag
 ask more traction than the lightly loaded contacts carry, and the sliding smears balls and
@@ -12,18 +12,38 @@ cannot be reached, consider preloading" [1]_: an axial preload meets it too.  th
 models assume the balls roll (Jones's raceway control, no gross slip), so a load below F_rm is outside
 what they describe (:data:`thermobear.validity.LIMITS` ``minimum_load``).
 
+A single row angular contact ball bearing (single, or a pair in tandem) and a single direction thrust ball
+bearing need a minimum axial load [1]_
+
+.. math:: F_{am} = A \left(\frac{n}{1000}\right)^2 \quad [\mathrm{kN}]
+
+with A the minimum (axial) load factor of the product tables, one value per bearing (it differs by cage and
+variant: ``materials/minimum_load.toml`` holds SKF's BECBP / BEP row of each catalogue 72B / 73B designation
+and the row of each 511 / 512 / 513 one, written by ``validation/minimum_load.py``).  Angular contact pairs
+back-to-back or face-to-face take a minimum radial load with a k_r instead [1]_: not on file.
+
 References
 ----------
 .. [1] SKF (2018). *Rolling bearings*, PUB BU/P1 17000/1 EN: "Requisite minimum load" (p. 106), deep groove
-   ball bearings "Loads" (p. 254) and product tables 1.1 (k_r).
+   ball bearings "Loads" (p. 254) and product tables 1.1 (k_r); angular contact ball bearings "Loads"
+   (p. 398) and product tables 3.1 (A); thrust ball bearings "Loads" (p. 469) and product tables 5.1 (A).
 """
 from __future__ import annotations
 
 from thermobear.arrays import checked, out
+from thermobear.contact.geometry import bearing_table, canonical_designation
 from thermobear.errors import InputError
 from thermobear.files import data_dir, read_toml
 
-__all__ = ["minimum_load_factor", "minimum_radial_load"]
+__all__ = ["AXIAL_KINDS", "minimum_axial_load", "minimum_axial_load_factor", "minimum_load_factor",
+           "minimum_radial_load"]
+
+#: The bearing kinds with a minimum axial load factor A (the data file's sections).
+AXIAL_KINDS = ("angular_contact", "thrust")
+
+
+def _table() -> dict:
+    return read_toml(str(data_dir("materials") / "minimum_load.toml"))
 
 
 def minimum_load_factor(kind: str, series: str | None):
@@ -35,8 +55,78 @@ def minimum_load_factor(kind: str, series: str | None):
     """
     if kind != "deep_groove" or series is None:
         return None
-    row = read_toml(str(data_dir("materials") / "minimum_load.toml"))["deep_groove"]["k_r"].get(str(series))
+    row = _table()["deep_groove"]["k_r"].get(str(series))
     return None if row is None else float(row["value"])
+
+
+def minimum_axial_load_factor(bearing):
+    """SKF's minimum axial load factor A [-] of a catalogue angular contact or thrust bearing, with the SKF row it is
+    of: ``(A, designation, source)``, or None where none is on file.
+
+    Parameters
+    ----------
+    bearing : str or BallBearing   catalogue designation (``"7210"``, ``"7205 B"``, ``"51208"``; aliases resolved)
+                                   or a bearing whose ``name`` is one (a scene's ``scene.bearing``)
+
+    Returns
+    -------
+    tuple or None
+        A [-] (F_am in kN, :func:`minimum_axial_load`), SKF's designation of the row (``"7210 BECBP"``) and its
+        source line; None for a deep groove bearing, a series or size SKF's tables do not list (70 C/E, 719 C/E,
+        7300 B, 51205-3ball) or a name outside the catalogue.
+
+    Examples
+    --------
+    >>> minimum_axial_load_factor("7210B")[:2], minimum_axial_load_factor("51208")[0]
+    ((0.014, '7210 BECBP'), 0.058)
+    >>> minimum_axial_load_factor("6208") is None
+    True
+    """
+    name = str(getattr(bearing, "name", bearing))
+    rows = {}
+    for kind in AXIAL_KINDS:
+        rows.update(_table().get(kind, {}).get("A", {}))
+    key = name if name in rows else canonical_designation(name)
+    if key not in rows:
+        try:
+            key = bearing_table(name)["name"]               # an alias ("7210B" -> "7210")
+        except InputError:                                  # not a catalogue designation
+            return None
+    r = rows.get(key)
+    return None if r is None else (float(r["value"]), str(r["designation"]), str(r["source"]))
+
+
+def minimum_axial_load(A, n_rpm):
+    r"""SKF's requisite minimum axial load F_am of a single row angular contact ball bearing (single, or a pair in
+    tandem) or a thrust ball bearing [N].
+
+    Parameters
+    ----------
+    A : array_like       minimum (axial) load factor [-] of the product tables (:func:`minimum_axial_load_factor`;
+                         F_am in kN with n in r/min)
+    n_rpm : array_like   speed [rpm]
+
+    Returns
+    -------
+    float or ndarray   F_am [N]
+
+    Notes
+    -----
+    .. math:: F_{am} = 10^3\, A \left(\frac{n}{1000}\right)^2
+
+    (SKF 2018 [1]_, pp. 398 and 469; kN there): the balls' and cage's inertia grow as n², and so does the load
+    that keeps the balls rolling.
+
+    Examples
+    --------
+    A 7210 BECBP (A = 0.014, SKF 2018 table 3.1) at 3 200 and 8 070 rpm:
+
+    >>> [round(float(F)) for F in minimum_axial_load(0.014, [3200.0, 8070.0])]
+    [143, 912]
+    """
+    a = checked("A", A, lo=0.0, what=" [-]")
+    n = checked("n_rpm", n_rpm, lo=0.0, strict=False, what=" [rpm]")
+    return out(1e3 * a * (n / 1000.0) ** 2)
 
 
 def minimum_radial_load(k_r, nu_cSt, n_rpm, dm):
