@@ -26,7 +26,7 @@ The limits (the README's table is :func:`limits_table`, with the reasoning and s
 | operating radial clearance | µm | – | < 0 |
 | load (Fa, Fr or M/ℜ_i), when not 0 | N | < 1e-06 | – |
 | speed, when not 0 | rpm | < 1e-06 | – |
-| load / SKF's minimum load (deep groove) | – | – | < 1 |
+| load / SKF's minimum load, radial (deep groove) or axial (angular contact, thrust) | – | – | < 1 |
 | SKF weighting factor Φ_bl | – | – | > 0.5 |
 
 Reasoning per limit is in :data:`LIMITS`; the sources are [1]_–[9]_.
@@ -53,8 +53,9 @@ References
 .. [8] SKF, 2004, *The SKF model for calculating the frictional moment of bearings*: Φ_bl is the
    weight of the boundary (mixed) friction term; above 0.5 the contacts are mostly in boundary
    lubrication, where μ_bl is a single estimated constant.
-.. [9] SKF, 2018, *Rolling bearings*, PUB BU/P1 17000/1 EN, pp. 106 and 254: the requisite minimum
-   load of deep groove ball bearings (:mod:`thermobear.rating.minimum_load`).
+.. [9] SKF, 2018, *Rolling bearings*, PUB BU/P1 17000/1 EN, pp. 106, 254, 398 and 469: the requisite
+   minimum load of deep groove ball bearings (radial), of single row angular contact and of thrust ball
+   bearings (axial) (:mod:`thermobear.rating.minimum_load`).
 
 Examples
 --------
@@ -166,11 +167,13 @@ LIMITS = {
         source="below 1e-6 rpm (one turn in 1.9 years) the bearing is at rest for every model here, and their "
                "powers of the speed underflow the floating-point range (0: at rest)"),
     "minimum_load": Limit(
-        "load / SKF's minimum load (deep groove)", "-", (None, None), (1.0, None),
-        source="SKF 2018 (Rolling bearings, pp. 106, 254): below F_rm = k_r (ν n/1000)^(2/3) (d_m/100)^2 kN the balls "
-               "may skid and smear; the load and loss models assume rolling balls (raceway control, no gross slip); "
-               "the larger of the radial and axial load against F_rm, at the operating viscosity (a radial preload "
-               "meets it)"),
+        "load / SKF's minimum load, radial (deep groove) or axial (angular contact, thrust)", "-", (None, None),
+        (1.0, None),
+        source="SKF 2018 (Rolling bearings, pp. 106, 254, 398, 469): below the requisite minimum load the balls may "
+               "skid and smear; the load and loss models assume rolling balls (raceway control, no gross slip). Deep "
+               "groove: the larger of the radial and axial load against F_rm = k_r (ν n/1000)^(2/3) (d_m/100)^2 kN at "
+               "the operating viscosity (a radial preload meets it); single row angular contact (single or in tandem) "
+               "and thrust: the axial load against F_am = A (n/1000)^2 kN, A of the bearing's product table row"),
     "skf_phi_bl": Limit(
         "SKF weighting factor Φ_bl", "-", (None, None), (None, 0.5),
         source="SKF 2004: mostly boundary lubrication, μ_bl an estimated constant"),

@@ -19,7 +19,9 @@ answers at the steady state's temperatures (:class:`Ratings`):
   (:func:`typical_fits`), stated.
 
 Outside the standards' domain the answer says so as named OutsideValidity warnings: s0 < 1, κ outside
-0.1 … 4, the clearance consumed (a radial preload: :func:`preload_warnings`, its compression and ball load).
+0.1 … 4, the clearance consumed (a radial preload: :func:`preload_warnings`, its compression and ball load), a
+load below SKF's requisite minimum load (:mod:`thermobear.rating.minimum_load`: radial of a deep groove bearing,
+axial of an angular contact or thrust one).
 
 References
 ----------
@@ -46,7 +48,8 @@ from thermobear.rating.iso76 import static_equivalent_load
 from thermobear.rating.iso281 import (A_ISO_MAX, basic_rating_life, contamination_factor, fatigue_load_limit,
                                       life_modification_factor, reference_viscosity, viscosity_ratio)
 from thermobear.rating.life import equivalent_loads, stated_ratings
-from thermobear.rating.minimum_load import minimum_load_factor, minimum_radial_load
+from thermobear.rating.minimum_load import (AXIAL_KINDS, minimum_axial_load, minimum_axial_load_factor,
+                                            minimum_load_factor, minimum_radial_load)
 from thermobear.thermal.builders import Machine, seat_interferences
 from thermobear.validity import LIMITS, check, collect
 
@@ -380,8 +383,12 @@ def _minimum_load_check(scene, nu_m2_s: float, clear: dict) -> None:
     """Warn (:data:`thermobear.validity.LIMITS` ``minimum_load``) where the larger of a deep groove bearing's radial
     and axial load lies below SKF's requisite minimum load at the operating viscosity ``nu_m2_s``
     (:func:`~thermobear.rating.minimum_load.minimum_radial_load`; none for a radial preload, ``clear``'s operating
-    clearance < 0, nor where no k_r is on file)."""
+    clearance < 0, nor where no k_r is on file), or an angular contact or thrust bearing's axial load below its
+    minimum axial load (:func:`_minimum_axial_load_check`)."""
     b = scene.bearing
+    if b.kind in AXIAL_KINDS:
+        _minimum_axial_load_check(scene)
+        return
     k_r = minimum_load_factor(b.kind, b.series)
     if k_r is None or not scene.n_rpm > 0 or clear.get("operating", 0.0) < 0.0:
         return
@@ -391,6 +398,25 @@ def _minimum_load_check(scene, nu_m2_s: float, clear: dict) -> None:
           what=f"Fr {np.hypot(scene.Fr, scene.Fz):.4g} N, Fa {scene.Fa:.4g} N against F_rm {F_rm:.4g} N = k_r {k_r:g} "
                f"(ν n/1000)^(2/3) (d_m/100 mm)^2 kN at ν {nu_m2_s * 1e6:.3g} mm²/s, {scene.n_rpm:.6g} rpm (SKF 2018): the "
                "balls may skid — raise the load, preload the bearing, or check the load's unit")
+
+
+def _minimum_axial_load_check(scene) -> None:
+    """Warn (:data:`thermobear.validity.LIMITS` ``minimum_load``) where an angular contact bearing's (taken single) or a
+    thrust bearing's axial load |Fa| lies below SKF's minimum axial load F_am = A (n/1000)² kN
+    (:func:`~thermobear.rating.minimum_load.minimum_axial_load`; none where no A is on file)."""
+    got = minimum_axial_load_factor(scene.bearing)
+    if got is None or not scene.n_rpm > 0:
+        return
+    A, _, source = got                                   # (source names SKF's designation of the row)
+    F_am = float(minimum_axial_load(A, scene.n_rpm))
+    Fa = abs(float(scene.Fa))
+    angular = scene.bearing.kind == "angular_contact"
+    single = ("; for a single bearing or a tandem pair: back-to-back and face-to-face pairs take a minimum radial "
+              "load instead" if angular else "")
+    check("minimum_load", Fa / F_am, _LOAD_FIELDS,
+          what=f"Fa {Fa:.4g} N against F_am {F_am:.4g} N = A {A:g} (n/1000)^2 kN at {scene.n_rpm:.6g} rpm (SKF 2018 "
+               f"p. {398 if angular else 469}{single}; A: {source}): the balls may skid — raise the "
+               "axial load or preload, or check the load's unit")
 
 
 def operating_temperature_C(T_C: dict, roles: dict):
