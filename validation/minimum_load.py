@@ -38,6 +38,14 @@ Rules (what the generator does, and why):
 * a row whose d x D x B (thrust: d x D x H) differs from the catalogue's is not used (named in the output);
 * the deep groove factors are kept as committed (``DEEP_GROOVE``).
 
+Checked once by hand (not by the script): the A of the 63 rows of table 5.1 extracted here equal, row for row, those
+of the SKF General Catalogue's Russian edition (2006 data; github.com/ArtemFilin1990/Mar 07_Бренды_и_каталоги/
+Бренды/каталоги/Общий_каталог_подшипников_SKF.md, commit b623d8e, the rows validation/maker_speeds.py reads) — so
+A is not monotonic in size where SKF prints it so in both editions (51112 0.077 > 51113 0.06; 51205 0.015 > 51206
+0.013; 51208 0.058 > 51209 0.038).  The 2006 edition has no A for angular contact bearings (no cross-check);
+the 72B / 73B values taken grow with size in each series.  One row not used looks odd: 7205 ACCBM (25°) prints
+A 0.00656, four times the 7205 BE's 0.00159, where every other AC row is below its BE row.
+
 Run:  python validation/minimum_load.py                       (writes materials/minimum_load.toml)
       python validation/minimum_load.py --extract SKF2018_MD   (rewrites validation/data/minimum_load_skf2018.csv
       from the transcription, read at the commit above)
