@@ -5,7 +5,7 @@ kinematic viscosity at 40 °C in mm²/s, ±10 %):
 
 * nu40 = the grade (mid-point of the ISO 3448 class);
 * nu100 from nu40 and a viscosity index, by ASTM D2270 (Procedure A for VI <= 100, B above), inverted
-  for nu100 with the standard's L/H table (validation/data/astm_d2270_LH.csv) — the same route the
+  for nu100 with the standard's L/H table (thermobear.lubrication.viscosity_index, materials/astm_d2270_LH.toml) — the same route the
   project took for mol-liton-00 (VI 100 -> 6.185 mm²/s at 40 mm²/s, reproduced in the tests);
 * VI: mineral 100 — API 1509 Annex E puts API Group I/II base oils at 80 <= VI < 120, and 100 is the value
   the project already uses for its mineral estimates (mol-liton-00, seed001-oil-a/b); PAO 140 — API Group IV;
@@ -42,11 +42,11 @@ import sys
 from pathlib import Path
 
 import numpy as np
-from scipy.optimize import brentq
+
+from thermobear.lubrication.viscosity_index import nu100_from_vi as _nu100_from_vi, viscosity_index
 
 ROOT = Path(__file__).resolve().parents[1]
 OUT = ROOT / "materials" / "lubricants"
-LH_TABLE = Path(__file__).resolve().parent / "data" / "astm_d2270_LH.csv"
 GRADES = (10, 15, 22, 32, 46, 68, 100, 150, 220, 320, 460)
 VI = {"mineral": 100.0, "pao": 140.0}
 VI_RANGE = {"mineral": (80.0, 120.0), "pao": (125.0, 150.0)}     # API 1509 Annex E Groups I/II; Rudnick & Shubkin 1999
@@ -55,35 +55,10 @@ RHO_ANCHORS = ((36.6, 864.6), (230.0, 900.0))      # seed 004 Table 3; seed 002 
 RHO_PAO = 830.0                                    # seed 002 Table 1 (PG1 base oil)
 
 
-def _lh_table():
-    data = np.loadtxt(LH_TABLE, delimiter=",", comments="#", skiprows=5)
-    return data[:, 0], data[:, 1], data[:, 2]
-
-
-def astm_d2270_LH(Y):
-    """L and H of ASTM D2270 [mm²/s] for the kinematic viscosity at 100 °C, Y [mm²/s]: the standard's table
-    (linear interpolation) for 2 <= Y <= 70, its formulas above 70."""
-    Y = float(Y)
-    if Y > 70.0:
-        return 0.8353 * Y**2 + 14.67 * Y - 216.0, 0.1684 * Y**2 + 11.85 * Y - 97.0
-    y, L, H = _lh_table()
-    if Y < y[0]:
-        raise ValueError(f"ASTM D2270 is not defined below {y[0]} mm²/s at 100 °C")
-    return float(np.interp(Y, y, L)), float(np.interp(Y, y, H))
-
-
-def viscosity_index(nu40, nu100):
-    """ASTM D2270 viscosity index from the kinematic viscosities at 40 and 100 °C [mm²/s]."""
-    L, H = astm_d2270_LH(nu100)
-    if nu40 >= H:                                                     # Procedure A (VI <= 100)
-        return (L - nu40) / (L - H) * 100.0
-    N = (np.log10(H) - np.log10(nu40)) / np.log10(nu100)              # Procedure B (VI > 100)
-    return (10.0**N - 1.0) / 0.00715 + 100.0
-
-
 def nu100_from_vi(nu40, vi):
-    """Kinematic viscosity at 100 °C [mm²/s] of an oil with nu40 [mm²/s] and viscosity index vi (D2270 inverted)."""
-    return float(brentq(lambda y: viscosity_index(nu40, y) - vi, 2.0, min(0.9 * nu40, 500.0), xtol=1e-10))
+    """Kinematic viscosity at 100 °C [mm²/s] of an oil with nu40 [mm²/s] and viscosity index vi
+    (thermobear.lubrication.viscosity_index: ASTM D2270 inverted), as a float."""
+    return float(_nu100_from_vi(nu40, vi))
 
 
 def rho15(family, nu40):

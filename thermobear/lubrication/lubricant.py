@@ -45,6 +45,7 @@ from thermobear.errors import ExtrapolationWarning, InputError
 from thermobear.schema import Field, check_table, check_uncertainty
 from thermobear.validity import T_LUBRICANT_REFUSE_C, T_LUBRICANT_WARN_C, check as check_limit
 from thermobear.units import ZERO_C_K
+from thermobear.lubrication.viscosity_index import nu100_from_vi, viscosity_index
 from thermobear.lubrication.walther import (_num, _scalar, _xp, walther_fit, walther_nu, walther_nu_from_Z,  # noqa: F401
                                             walther_temperature_coefficient, walther_Z, NU_MIN_CST)
 
@@ -388,13 +389,27 @@ class Lubricant:
     def sampled(self, draws: dict) -> "Lubricant":
         """This lubricant with drawn values per operating point: data-file key → draws (B,), each moved
         by the key's :class:`~thermobear.schema.Uncertainty` (factor × value, value + offset, or the
-        drawn value) — :meth:`per_point` of the moved values."""
+        drawn value) — :meth:`per_point` of the moved values.
+
+        A drawn ν40 moves the whole viscosity curve at the viscosity index the nominal ν40 and ν100 (its own
+        draw, or the nominal) give (ASTM D2270, :mod:`thermobear.lubrication.viscosity_index`): an oil at the upper
+        end of its grade (ISO 3448: ±10 %) is more viscous at every temperature, and ν100's range keeps setting the
+        viscosity index it was derived for (drawn apart, the two gave indices outside their sources' range).
+
+        >>> oil = lubricant("iso-vg-46-mineral")
+        >>> s = oil.sampled({"nu40_cSt": np.array([0.9, 1.1])})
+        >>> np.round(viscosity_index(s.table["nu40_cSt"], s.table["nu100_cSt"]), 6).tolist()
+        [100.0, 100.0]
+        """
         for key in draws:
             if key not in self.uncertainty:
                 raise InputError(f"sample.lubricant.{key}", None, f"lubricant {self.name} gives no uncertainty for "
                                  f"it; it has: {', '.join(self.uncertainty) or 'none'}")
-        return self.per_point({k: self.uncertainty[k].apply(self.table[k], np.asarray(v, float))
-                               for k, v in draws.items()})
+        moved = {k: self.uncertainty[k].apply(self.table[k], np.asarray(v, float)) for k, v in draws.items()}
+        if "nu40_cSt" in moved and "nu100_cSt" in self.table:
+            vi = viscosity_index(self.table["nu40_cSt"], moved.get("nu100_cSt", self.table["nu100_cSt"]))
+            moved["nu100_cSt"] = nu100_from_vi(moved["nu40_cSt"], vi)
+        return self.per_point(moved)
 
     def aligned(self, trailing: int) -> "Lubricant":
         """The same lubricant with its per-point values shaped (B, 1, …) with ``trailing`` unit axes,
