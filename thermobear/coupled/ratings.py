@@ -382,22 +382,27 @@ def _looser_group(brg: BallBearing, Pd: float) -> str:
 def _minimum_load_check(scene, nu_m2_s: float, clear: dict) -> None:
     """Warn (:data:`thermobear.validity.LIMITS` ``minimum_load``) where the larger of a deep groove bearing's radial
     and axial load lies below SKF's requisite minimum load at the operating viscosity ``nu_m2_s``
-    (:func:`~thermobear.rating.minimum_load.minimum_radial_load`; none for a radial preload, ``clear``'s operating
-    clearance < 0, nor where no k_r is on file), or an angular contact or thrust bearing's axial load below its
+    (:func:`~thermobear.rating.minimum_load.minimum_radial_load`, d_m = (d + D)/2 as SKF's; none where the loads were
+    solved with a radial preload — ``clear``'s choice ``operating`` at a negative clearance —, nor where no k_r is on
+    file; an estimated negative clearance is named beside), or an angular contact or thrust bearing's axial load below its
     minimum axial load (:func:`_minimum_axial_load_check`)."""
     b = scene.bearing
     if b.kind in AXIAL_KINDS:
         _minimum_axial_load_check(scene)
         return
     k_r = minimum_load_factor(b.kind, b.series)
-    if k_r is None or not scene.n_rpm > 0 or clear.get("operating", 0.0) < 0.0:
-        return
-    F_rm = float(minimum_radial_load(k_r, nu_m2_s * 1e6, scene.n_rpm, b.dm))
+    if k_r is None or not scene.n_rpm > 0 or (clear.get("choice") == "operating" and clear.get("used", 0.0) < 0.0):
+        return                         # (the loads solved with a radial preload: SKF's "consider preloading")
+    dm = 0.5 * (b.bore + b.outer_diameter) if b.bore is not None and b.outer_diameter is not None else b.dm
+    F_rm = float(minimum_radial_load(k_r, nu_m2_s * 1e6, scene.n_rpm, dm))
     F = max(float(np.hypot(scene.Fr, scene.Fz)), abs(float(scene.Fa)))
+    pre = ("; the operating clearance estimated at the answer's temperatures is negative: the radial preload it "
+           "implies may meet F_rm (models.clearance = 'operating' solves the loads with it)"
+           if clear.get("operating", 0.0) < 0.0 else "")
     check("minimum_load", F / F_rm, _LOAD_FIELDS,
           what=f"Fr {np.hypot(scene.Fr, scene.Fz):.4g} N, Fa {scene.Fa:.4g} N against F_rm {F_rm:.4g} N = k_r {k_r:g} "
-               f"(ν n/1000)^(2/3) (d_m/100 mm)^2 kN at ν {nu_m2_s * 1e6:.3g} mm²/s, {scene.n_rpm:.6g} rpm (SKF 2018): the "
-               "balls may skid — raise the load, preload the bearing, or check the load's unit")
+               f"(ν n/1000)^(2/3) (d_m/100 mm)^2 kN at ν {nu_m2_s * 1e6:.3g} mm²/s, {scene.n_rpm:.6g} rpm, d_m = (d + D)/2 "
+               f"(SKF 2018): the balls may skid — raise the load, preload the bearing, or check the load's unit{pre}")
 
 
 def _minimum_axial_load_check(scene) -> None:
