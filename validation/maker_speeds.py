@@ -23,8 +23,8 @@ line each came from, so that the data file can be written again without them):
   exclude thrust ball bearings (ISO 15312's scope: "Thrust ball bearings are excluded ... as kinematic effects
   do not allow the thermal speed rating to be applied"; the 2006 catalogue's reference speeds follow ISO
   15312:2003 "за исключением упорных шарикоподшипников", except thrust ball bearings, its lines 6186-6188):
-  SKF's reference speed of a thrust ball bearing is SKF's own friction model under ISO-like conditions (axial
-  load 0.02 C0, ISO VG 68), not the standard's rating.  The editions' load ratings differ for some sizes
+  SKF's reference speed of a thrust ball bearing is SKF's own rating (SKF 2018, 'Operating temperature and speed', p. 130: its reference speeds
+  come from the SKF friction model at ISO 15312's reference conditions), not the standard's.  The editions' load ratings differ for some sizes
   (51208 C 44.2 kN in 2018, 46.8 kN in 2006); they are not read.
 
 No source distinguishes grease from oil: SKF's limiting speed is one value per bearing (the kinematic limit of
@@ -329,7 +329,7 @@ def write(entries: dict, notes: list) -> str:
             "# Thrust ball bearings (511, 512, 513; open): SKF's 2018 and 2006 catalogue editions.  ISO 15312 and DIN 732",
             "# exclude thrust ball bearings (ISO 15312 scope: \"Thrust ball bearings are excluded ... as kinematic effects",
             "# do not allow the thermal speed rating to be applied\"): SKF's reference speed of a thrust ball bearing is",
-            "# SKF's own friction model under ISO-like conditions (axial load 0.02 C0, ISO VG 68), not the standard's rating.",
+            "# SKF's own rating (SKF 2018, 'Operating temperature and speed', p. 130: the SKF friction model at ISO 15312's reference conditions), not the standard's.",
             "# A bearing or variant not listed has no maker's speed on file (no source lists it).",
             "# Sources:"] + [f"#   {k}: {v}" for k, v in SOURCES.items()]
     head += ["# Cross-check notes:"] + [f"#   {n}" for n in notes] if notes else ["# Cross-check notes: none"]

@@ -381,7 +381,8 @@ def calibrate(scene: Scene, log: RigLog, params: list, mapping: dict, *, T0_C=No
 
 def _fit_notes(scene: Scene, names, vals: dict, std: dict, x0, logsp) -> list:
     """What the fitted values say beyond their numbers: a parameter that runs towards 0 (the log needs none of it),
-    one the log does not determine (its standard uncertainty as large as its value), one fitted outside the range
+    a positive one the log does not determine (its standard uncertainty as large as its value; not said of a
+    temperature, whose zero is arbitrary: its stated range speaks for it), one fitted outside the range
     the scene states for it (its uncertainty's 5–95 % or support: :func:`~thermobear.coupled.uncertainty.uncertain_inputs`)."""
     stated = {i.address: i.uncertainty for i in uncertain_inputs(scene)}
     notes = []
@@ -390,7 +391,7 @@ def _fit_notes(scene: Scene, names, vals: dict, std: dict, x0, logsp) -> list:
         if logsp[i] and s is not None and v < 0.1 * x0[i] and s > v:
             notes.append(f"{n} runs towards 0 ({v:.3g} ± {s:.2g} from the start {x0[i]:.3g}): the log does not "
                          "determine it and needs none of it")
-        elif s is not None and s >= abs(v):
+        elif logsp[i] and s is not None and s >= v:        # (ratio-scale parameters: a temperature's 0 is arbitrary)
             notes.append(f"{n} is not determined by the log ({v:.3g} ± {s:.2g}: the uncertainty as large as the value)")
         u = stated.get(n if n.startswith(_BUILDER) else _ADDRESS.get(n))
         if u is not None:

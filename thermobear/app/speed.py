@@ -160,7 +160,7 @@ def _maker(scene: Scene, rep: dict) -> dict:
            "source": None if lim is None else lim.source, "note": None if lim is None else lim.note or None,
            "text": limiting_speed_text(scene.bearing, scene.seals),
            "reference_basis": None if ref is None else "ISO 15312" if scene.bearing.kind != "thrust" else
-           f"SKF's own friction model under ISO-like conditions ({THRUST_EXCLUDED})"}
+           f"SKF's own rating: its friction model at ISO 15312's conditions ({THRUST_EXCLUDED})"}
     for k in ("model", "din732"):
         if rep[k].get("n_rpm") is not None and lim is not None:
             rep[k]["above_limiting_speed"] = rep[k]["n_rpm"] > lim.limiting_rpm
@@ -247,8 +247,8 @@ def summary(rep: dict) -> str:
                      f"heat dissipated {din['Phi_W']:.2f} W")
         inside = all(0.01 <= din[k] <= 10.0 for k in ("K_L", "K_P"))
         lines.append(f"    DIN 732: the root of the balance K_L f_n^(5/3) + K_P f_n = 1 that f_n approximates is "
-                     f"{din['f_n_balance']:.3f} ({din['f_n_balance'] * din['n_theta_r_rpm']:.0f} rpm); the "
-                     "approximation's range 0.01 ≤ K_L, K_P ≤ 10" + ("" if inside else " does not hold here"))
+                     f"{din['f_n_balance']:.3f} ({din['f_n_balance'] * din['n_theta_r_rpm']:.0f} rpm); K_L, K_P "
+                     + ("inside" if inside else "outside") + " the approximation's range 0.01 … 10")
     return "\n".join(lines)
 
 

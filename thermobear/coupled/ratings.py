@@ -396,6 +396,8 @@ def _minimum_load_check(scene, nu_m2_s: float, clear: dict) -> None:
     dm = 0.5 * (b.bore + b.outer_diameter) if b.bore is not None and b.outer_diameter is not None else b.dm
     F_rm = float(minimum_radial_load(k_r, nu_m2_s * 1e6, scene.n_rpm, dm))
     F = max(float(np.hypot(scene.Fr, scene.Fz)), abs(float(scene.Fa)))
+    if F == 0.0:                       # (unloaded at speed: named as such, limits.point_warnings)
+        return
     pre = ("; the operating clearance estimated at the answer's temperatures is negative: the radial preload it "
            "implies may meet F_rm (models.clearance = 'operating' solves the loads with it)"
            if clear.get("operating", 0.0) < 0.0 else "")
@@ -415,6 +417,8 @@ def _minimum_axial_load_check(scene) -> None:
     A, _, source = got                                   # (source names SKF's designation of the row)
     F_am = float(minimum_axial_load(A, scene.n_rpm))
     Fa = abs(float(scene.Fa))
+    if Fa == 0.0 and scene.Fr == 0.0 and scene.Fz == 0.0:  # (unloaded at speed: named as such, limits.point_warnings)
+        return
     angular = scene.bearing.kind == "angular_contact"
     single = ("; for a single bearing or a tandem pair: back-to-back and face-to-face pairs take a minimum radial "
               "load instead" if angular else "")

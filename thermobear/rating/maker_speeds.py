@@ -5,8 +5,8 @@ A maker's product table gives two speeds per bearing [1]_:
 * the **reference speed**, SKF's thermal speed rating under ISO 15312's reference conditions (what
   :func:`thermobear.coupled.speeds.thermal_reference_speed` computes with thermobear's own losses) — for a
   thrust ball bearing, which ISO 15312 excludes [2]_ ("as kinematic effects do not allow the thermal speed rating
-  to be applied"), SKF's own friction model under ISO-like conditions (axial load 0.02 C0, ISO VG 68), not
-  the standard's rating;
+  to be applied"), SKF's own rating (SKF 2018, 'Operating temperature and speed', p. 130: the SKF friction model at ISO 15312's
+  reference conditions), not the standard's;
 * the **limiting speed**, the kinematic limit of the bearing — its cage, the stability of its balls, and for a
   capped bearing its seals' lip speed — which SKF advises not to exceed whatever the cooling
   (its value is for grease as well as oil: one value per bearing in the sources, which do not distinguish
