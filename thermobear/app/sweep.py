@@ -115,7 +115,9 @@ def _ratings_columns(sc: Scene, st, warned: list, losses=None) -> dict:
         return {"L10m_h": None, "kappa": None, "s0": None, "clearance_operating_um": None}
     c = rt.clearance_um
     return {"L10m_h": _finite_or_none(rt.L10m_h), "kappa": _finite_or_none(rt.kappa), "s0": _finite_or_none(rt.s0),
-            "clearance_operating_um": _finite_or_none(c.get("operating")) if c.get("applies", True) else None,
+            "clearance_operating_um": (_finite_or_none(c.get("operating")) if c.get("applies", True)
+                                       and sc.bearing.kind == "deep_groove" else None),   # (an angular contact
+            # bearing's "clearance" is the play its contact angle implies: run's note says so, a column would not)
             "warnings": list(dict.fromkeys(warned + [str(w) for w in rt.warnings]))}
 
 
