@@ -558,6 +558,17 @@ def added_losses(scene: Scene) -> dict:
     return out
 
 
+def refuse_pair(scene: Scene) -> None:
+    """InputError for one bearing of a preloaded pair (``[bearing] arrangement``): its loads come from the pair's
+    preload at the solved temperatures (:mod:`thermobear.coupled.preload`, in the coupled steady state: ``run``,
+    ``sweep``, ``speed``'s thermally safe speed, ``--uncertainty``), which a model choice for given loads does not
+    close (a heat-up, a prescribed temperature, a spin-down, injected loads)."""
+    if scene.arrangement is not None:
+        raise InputError("bearing.arrangement", scene.arrangement, "one bearing of a preloaded pair is solved by the "
+                         "coupled steady state (its loads follow the pair's preload at the solved temperatures: run, "
+                         "sweep, steady_state); here give the bearing's own loads without arrangement / preload_N")
+
+
 def plan(scene: Scene) -> tuple:
     """(models, dry load distribution or None) of the scene's dominant alternative (the largest weight,
     :func:`plan_many`): :func:`choose_models` and the dry solution it solved."""
@@ -592,6 +603,7 @@ def plan_many(scenes) -> list:
     hs_alts: list = []
     for sc in scenes:
         try:
+            refuse_pair(sc)
             hs_alts.append(_high_speed_alternatives(sc))
         except (InputError, SolverError) as exc:
             hs_alts.append(exc)
