@@ -50,6 +50,11 @@ sub-models serve it, each with the reason, overridable from the scene's ``[model
   contact and thrust bearings: ``given`` (their contact angle is set by the design, not by a radial play).
 * **hertz** — exact (one ellipticity solve per contact; the approximations' errors, 1–5 %, would
   show in p_max and the film).
+* **preload** — one bearing of a preloaded pair of angular contact bearings (``[bearing] arrangement``,
+  ``preload_N``, ``preload``): its loads are the pair's loaded bearing's, at the cold preload with a spring, at
+  the fixed point of the warm preload with a position preload (:mod:`thermobear.coupled.preload`, in the coupled
+  steady state; the entry states the cold and warm preloads).  A model choice for given loads refuses such a
+  scene (:func:`refuse_pair`).
 
 **No step where the model switches.**  Two choices switch on a number: the high-speed form (F_c/Q)
 and the film load model (a ball lifting off a race).  Across a band of each criterion
