@@ -83,21 +83,27 @@ class ThermalRunaway(SolverError):
 
 
 class ThermalPreloadRunaway(SolverError):
-    """A radial preload that runs away: the clearance the fits and ring temperatures leave is negative, its heat
-    warms the inner ring and consumes more clearance than it took, so the clearance loop (or the heat-up) finds no
-    fixed point (:mod:`thermobear.coupled.clearance`: the loop's steps not shrinking at a negative clearance, or
-    no steady state at the preload reached).  A preload with a fixed point is solved, not refused.
+    """A preload that runs away: its heat warms the inner ring (and the balls) more than the outer ring, which
+    adds more preload than it took, so the loop around the steady state (or the heat-up) finds no fixed point.
+    Either a radial preload — the clearance the fits and ring temperatures leave is negative
+    (:mod:`thermobear.coupled.clearance`: the loop's steps not shrinking at a negative clearance, or no steady
+    state at the preload reached) — or the position preload of an angular contact pair
+    (:mod:`thermobear.coupled.preload`: the pair's preload rising without shrinking steps, or no steady state at
+    it).  A preload with a fixed point is solved, not refused.
 
     Attributes (besides :class:`SolverError`'s): ``clearance_history_m`` the clearances of the loop or the
     heat-up [m] (used → operating), ``dT_inner_outer_K`` the inner- minus outer-ring temperature difference
     at the last state [K], ``mounted_m`` the mounted clearance at 20 °C [m]; ``residual`` the last step's
-    operating − used clearance [m].
+    operating − used clearance [m] — or, of a pair, ``preload_history_N`` the pair's warm preloads of the loop's
+    steps [N] (each bearing's axial load without external load) and ``residual`` the last step's change of the
+    loaded bearing's axial load [N].
     """
 
     def __init__(self, reason: str, *, clearance_history_m=(), dT_inner_outer_K: float = float("nan"),
-                 mounted_m: float = float("nan"), **kw):
+                 mounted_m: float = float("nan"), preload_history_N=(), **kw):
         super().__init__(reason, **kw)
         self.clearance_history_m = list(clearance_history_m)
+        self.preload_history_N = list(preload_history_N)
         self.dT_inner_outer_K, self.mounted_m = dT_inner_outer_K, mounted_m
 
 

@@ -50,6 +50,11 @@ sub-models serve it, each with the reason, overridable from the scene's ``[model
   contact and thrust bearings: ``given`` (their contact angle is set by the design, not by a radial play).
 * **hertz** — exact (one ellipticity solve per contact; the approximations' errors, 1–5 %, would
   show in p_max and the film).
+* **preload** — one bearing of a preloaded pair of angular contact bearings (``[bearing] arrangement``,
+  ``preload_N``, ``preload``): its loads are the pair's loaded bearing's, at the cold preload with a spring, at
+  the fixed point of the warm preload with a position preload (:mod:`thermobear.coupled.preload`, in the coupled
+  steady state; the entry states the cold and warm preloads).  A model choice for given loads refuses such a
+  scene (:func:`refuse_pair`).
 
 **No step where the model switches.**  Two choices switch on a number: the high-speed form (F_c/Q)
 and the film load model (a ball lifting off a race).  Across a band of each criterion
@@ -558,6 +563,17 @@ def added_losses(scene: Scene) -> dict:
     return out
 
 
+def refuse_pair(scene: Scene) -> None:
+    """InputError for one bearing of a preloaded pair (``[bearing] arrangement``): its loads come from the pair's
+    preload at the solved temperatures (:mod:`thermobear.coupled.preload`, in the coupled steady state: ``run``,
+    ``sweep``, ``speed``'s thermally safe speed, ``--uncertainty``), which a model choice for given loads does not
+    close (a heat-up, a prescribed temperature, a spin-down, injected loads)."""
+    if scene.arrangement is not None:
+        raise InputError("bearing.arrangement", scene.arrangement, "one bearing of a preloaded pair is solved by the "
+                         "coupled steady state (its loads follow the pair's preload at the solved temperatures: run, "
+                         "sweep, steady_state); here give the bearing's own loads without arrangement / preload_N")
+
+
 def plan(scene: Scene) -> tuple:
     """(models, dry load distribution or None) of the scene's dominant alternative (the largest weight,
     :func:`plan_many`): :func:`choose_models` and the dry solution it solved."""
@@ -592,6 +608,7 @@ def plan_many(scenes) -> list:
     hs_alts: list = []
     for sc in scenes:
         try:
+            refuse_pair(sc)
             hs_alts.append(_high_speed_alternatives(sc))
         except (InputError, SolverError) as exc:
             hs_alts.append(exc)

@@ -45,6 +45,7 @@ from thermobear.loads.highspeed import load_distribution_high_speed
 from thermobear.arrays import take
 from thermobear.coupled.limits import family_warnings
 from thermobear.coupled.pipeline import film_scene_load
+from thermobear.coupled.preload import loaded_scene
 from thermobear.coupled.ratings import scene_ratings
 from thermobear.coupled.run import Prescribed
 from thermobear.models import moments, plan, plan_many
@@ -110,7 +111,7 @@ def _ratings_columns(sc: Scene, st, warned: list, losses=None) -> dict:
     s0 [-] and the operating clearance [µm] (None where they do not apply), and ``warnings`` with the ratings' own
     (viscosity ratio, static safety, minimum load, a clearance consumed into a radial preload) added."""
     try:
-        rt = scene_ratings(sc, st, losses=losses)
+        rt = scene_ratings(loaded_scene(sc, st), st, losses=losses)     # a pair's loaded bearing under its loads
     except InputError:                       # (no ratings at rest: the row's answer stands without them)
         return {"L10m_h": None, "kappa": None, "s0": None, "clearance_operating_um": None}
     c = rt.clearance_um

@@ -10,6 +10,7 @@ import numpy as np
 from thermobear.arrays import instance_of
 from thermobear.coupled.blend import blend_losses
 from thermobear.coupled.limits import emit, film_preload_warnings, point_warnings
+from thermobear.coupled.preload import loaded_scene, preload_lines
 from thermobear.coupled.ratings import Ratings, check_static_safety, scene_ratings
 from thermobear.coupled.sources import scene_losses
 from thermobear.coupled.steady import SCENE_LOADS, SteadyState, steady_state
@@ -135,6 +136,8 @@ class RunResult:
             d["T_contacts_C"] = self.steady.T_contacts_C
             d["heat_flows_W"] = self.steady.heat_flows_W
             d["heat_flows"] = heat_flows(self.steady)
+            if self.steady.preload:
+                d["preload"] = self.steady.preload
         if self.ratings is not None:
             r = self.ratings.as_dict()
             del r["warnings"]                   # in the answer's warnings
@@ -146,7 +149,8 @@ class RunResult:
 
     def summary(self) -> str:
         s = self.scene
-        lines = [f"thermobear — {s.name}: {s.bearing.name}, {s.n_rpm:g} rpm, Fa {s.Fa:g} N, Fr {s.Fr:g} N, "
+        pair = "" if s.arrangement is None else f" on the {s.arrangement.replace('_', '-')} pair"
+        lines = [f"thermobear — {s.name}: {s.bearing.name}, {s.n_rpm:g} rpm, Fa {s.Fa:g} N, Fr {s.Fr:g} N{pair}, "
                  f"{s.lubricant.name} ({s.supply})", "", "Temperatures [°C]"]
         for k, v in self.T_C.items():
             lines.append(f"  {k:18s} {v:8.2f}" + ("   imposed (thermal.fixed_C)" if k in s.T_fixed_C else ""))
@@ -159,6 +163,8 @@ class RunResult:
             if k == "node_roles":
                 continue
             lines.append(f"  {k:18s} {str(v[0]):40s} {v[1]}")
+        if self.steady is not None and self.steady.preload:
+            lines += ["", "Preload of the pair", *preload_lines(self.steady.preload)]
         if self.steady is not None:
             lines += ["", *heat_flow_table(self.steady, self.P_W)]
             lines += ["", f"Fixed point: {self.steady.iterations} iterations, residual {self.steady.residual_K:.1e} K, "
@@ -208,7 +214,7 @@ def solve(scene: Scene) -> RunResult:
     st = steady_state(scene)
     rt = None
     if scene.n_rpm > 0:
-        rt = scene_ratings(scene, st)
+        rt = scene_ratings(loaded_scene(scene, st), st)          # a pair's loaded bearing under its loads
         emit(rt.warnings)
     return RunResult(scene=scene, P_W=st.P_W, torque_Nm=st.torque_Nm, breakdown_W=dict(st.breakdown_W), T_C=st.T_C,
                      models_used=st.models_used, losses=st.losses, steady=st,

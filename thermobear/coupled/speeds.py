@@ -34,7 +34,8 @@ import numpy as np
 from thermobear.contact.geometry import BallBearing
 from thermobear.coupled.sources import prepare, prepared_for
 from thermobear.coupled.steady import SteadyState, steady_state, steady_states
-from thermobear.errors import ContactLimit, InputError, NoConvergence, NoSpeedRoot, OutsideValidity, ThermalRunaway
+from thermobear.errors import (ContactLimit, InputError, NoConvergence, NoSpeedRoot, OutsideValidity,
+                               ThermalPreloadRunaway, ThermalRunaway)
 from thermobear.lazy import lazy_module
 from thermobear.losses import bearing_losses
 from thermobear.lubrication.lubricant import Lubricant, lubricant
@@ -265,15 +266,19 @@ class SafeSpeed:
     T_node: str = ""
 
 
+#: the errors of a point without an equilibrium: a thermal runaway, or a preload's (a radial one, a pair's)
+_RUNAWAYS = (ThermalRunaway, ThermalPreloadRunaway)
+
+
 def _beyond(exc) -> bool:
     """An error that means no equilibrium below the lubricant's temperature limit (above any limit)."""
-    return isinstance(exc, ThermalRunaway) or (isinstance(exc, InputError) and "lubricant temperature" in str(exc))
+    return isinstance(exc, _RUNAWAYS) or (isinstance(exc, InputError) and "lubricant temperature" in str(exc))
 
 
 def _one(scene, prepared):
     try:
         return steady_state(scene, prepared=prepared)
-    except (ThermalRunaway, InputError, NoConvergence) as exc:
+    except (*_RUNAWAYS, InputError, NoConvergence) as exc:
         return exc
 
 
@@ -317,7 +322,7 @@ def _contact_limit(scene, prepared, lo, hi, node, rtol=2e-3) -> tuple:
             T_lo, lo = hottest_ring_C(steady_state(scene.with_(n_rpm=mid), prepared=prepared), node), mid
         except ContactLimit as e:
             hi, exc = mid, e
-        except (ThermalRunaway, InputError) as e:
+        except (*_RUNAWAYS, InputError) as e:
             if not _beyond(e):
                 raise
             T_lo, lo = np.inf, mid                    # beyond the lubricant's limit, but the contacts carry it
@@ -403,7 +408,7 @@ def thermally_safe_speed(scene: Scene, *, limit_C: float = 70.0, node: str | Non
             try:
                 seen[n] = steady_state(scene.with_(n_rpm=float(n)), prepared=prep)
                 return hottest_ring_C(seen[n], node) - limit_C
-            except (ThermalRunaway, InputError, NoConvergence) as e:
+            except (*_RUNAWAYS, InputError, NoConvergence) as e:
                 refused.append(float(n))
                 # below a runaway rung the search closes on the fold where the equilibria end: there the heating
                 # path's loop gain nears 1 and it may not settle — as undecided as a runaway for the root

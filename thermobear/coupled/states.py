@@ -53,6 +53,9 @@ class SteadyState:
                               mounted, operating at these temperatures, ``used`` by the loads), the fits, the
                               fixed point's iterations, residual and history (:mod:`thermobear.coupled.clearance`);
                               None: the bearing's own clearance (the ratings report its operating value)
+    preload : dict            of a preloaded pair's bearing (``[bearing] arrangement``): the kind, the cold and warm
+                              preload [N], the loaded bearing's loads, the fixed point's iterations, residual [N],
+                              temperatures and history (:mod:`thermobear.coupled.preload`); None: no pair
     roles : dict              role → node (ball, inner, outer, oil)
     warnings : list           OutsideValidity warnings of this point's answer
     """
@@ -77,6 +80,7 @@ class SteadyState:
     batch_losses: object = field(default=None, repr=False)
     row: int | None = None
     clearance_um: dict | None = None
+    preload: dict | None = None
 
     @property
     def losses(self):

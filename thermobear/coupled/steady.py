@@ -48,6 +48,7 @@ import numpy as np
 from thermobear.arrays import instance_of, take
 from thermobear.coupled.blend import blend_states
 from thermobear.coupled.clearance import clearance_loop
+from thermobear.coupled.preload import preload_loop
 from thermobear.coupled.newton import _C0, T_LIMIT_K, _newton, _physical_path, _slopes  # noqa: F401
 from thermobear.coupled.pipeline import (Family, concat_loads, families, family_contacts, family_film_loads,
                                         family_loads, film_temperature_C, split_failures, stack_families, stack_key)
@@ -428,8 +429,8 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> l
                                solved in batched calls)
     tol_K : float              Newton tolerance on the node temperatures [K]
     load : LoadDistribution    optional loads to use instead of the model's (one scene, or a batch
-                               matching a single family; the clearance loop does not apply: the loads
-                               are given)
+                               matching a single family; the clearance and preload loops do not apply: the
+                               loads are given)
     prepared : Prepared        :func:`~thermobear.coupled.sources.prepare` of a family, reused for the
                                points it serves (the others are prepared here)
 
@@ -438,14 +439,19 @@ def steady_states(scenes, *, tol_K: float = 1e-6, load=None, prepared=None) -> l
     list   per scene, its :class:`SteadyState`, or the InputError / SolverError that stopped it
            (a failing point never stops the others); points with ``models.clearance`` mounted or
            operating at their clearance's fixed point (:func:`~thermobear.coupled.clearance.clearance_loop`;
-           a negative one is a radial preload; one that runs away: :class:`~thermobear.errors.ThermalPreloadRunaway`)
+           a negative one is a radial preload; one that runs away: :class:`~thermobear.errors.ThermalPreloadRunaway`);
+           one bearing of a preloaded pair (``[bearing] arrangement``) at its preload's fixed point
+           (:func:`~thermobear.coupled.preload.preload_loop`; a runaway: ThermalPreloadRunaway)
     """
     if isinstance(scenes, Scene) or not hasattr(scenes, "__iter__"):
         raise InputError("scenes", type(scenes).__name__, "a list of Scene (steady_state solves one scene)")
     scenes, tol_K = list(scenes), check_value(tol_K, _TOL_K, "tol_K")
-    out = _steady_states(scenes, tol_K=tol_K, load=load, prepared=prepared)
-    if load is None:
-        out = clearance_loop(scenes, out, lambda scs: _steady_states(scs, tol_K=tol_K, prepared=prepared))
+
+    def solve(scs):                      # at the clearance's fixed point (the points whose clearance is fitted)
+        return clearance_loop(scs, _steady_states(scs, tol_K=tol_K, prepared=prepared),
+                              lambda again: _steady_states(again, tol_K=tol_K, prepared=prepared))
+    out = (_steady_states(scenes, tol_K=tol_K, load=load, prepared=prepared) if load is not None else
+           preload_loop(scenes, solve))
     seen: set = set()
     emit([w for r in out if isinstance(r, SteadyState) for w in r.warnings if not (str(w) in seen or seen.add(str(w)))])
     return out

@@ -67,6 +67,7 @@ import numpy as np
 from thermobear.contact.geometry import bearing_values
 from thermobear.contact.materials import PROPERTIES, material
 from thermobear.coupled.pipeline import Family, families, family_contacts, family_loads
+from thermobear.coupled.preload import loaded_scene
 from thermobear.coupled.ratings import rating_samples
 from thermobear.coupled.sensitivity import SENSITIVITY, bands, ranking, summary_lines
 from thermobear.coupled.sources import family_network, loss_sources, prepared_for
@@ -447,7 +448,8 @@ def steady_outputs(results, scenes=None) -> dict:
         for k, v in loss[i].items():
             out[f"breakdown_W.{k}"][i] = float(v)
     if scenes is not None:
-        out.update(rating_samples(scenes, [r if isinstance(r, SteadyState) else None for r in results]))
+        states = [r if isinstance(r, SteadyState) else None for r in results]
+        out.update(rating_samples([loaded_scene(sc, r) for sc, r in zip(scenes, states)], states))
     return out
 
 
@@ -495,7 +497,8 @@ def steady_uncertainty(scene: Scene, n: int, *, seed=None, method: str = "lhs", 
                              sensitivity=ranking(sm.inputs, sm.X, outputs, sensitivity), failed=failed, n=sm.X.shape[0],
                              seed=seed, method=method, groups=sm.groups, sensitivity_method=sensitivity, group=sm.group,
                              focus=_focus(scene, nominal.T_C),
-                             nominal_values={k: float(v[0]) for k, v in rating_samples([scene], [nominal]).items()})
+                             nominal_values={k: float(v[0]) for k, v in rating_samples([loaded_scene(scene, nominal)],
+                                                                                       [nominal]).items()})
 
 
 def _solve_split(scenes, tol_K, prepared) -> list:

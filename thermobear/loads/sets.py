@@ -245,6 +245,15 @@ class _ShaftState(RowState):
     FIELDS = ("z", "res", "J", "norm")
 
 
+def _position_preload(sup: Support, stiffness, tilt_arm) -> float:
+    """The axial force [N] a position-preloaded bearing carries with the shaft at rest (q = 0): the force scale of
+    a preloaded set's equilibrium, whatever the external loads (0 without a position preload)."""
+    if sup.offset is None or not sup.offset > 0:
+        return 0.0
+    P = ring_reaction(sup.bearing, [sup.mounted, 0.0, 0.0, 0.0, 0.0], stiffness=stiffness, tilt_arm=tilt_arm)[0]
+    return abs(float(P[0]))
+
+
 def _external(Fa, Fr, M, Fz, My, x_load):
     """The external loads as one flat batch: shape and P_ext (nb, 5) at x = 0 [N, N m]."""
     vals = [np.asarray(v, dtype=float) for v in (Fa, Fr, M, Fz, My, x_load)]
@@ -352,7 +361,7 @@ def shaft_loads(supports, Fa=0.0, Fr=0.0, M=0.0, Fz=0.0, My=0.0, *, x_load=0.0, 
                                     f"angular contact bearing faces {-sgn:+d}): Fa = {P[np.argmax(sgn * P[:, 0]), 0]:g} N",
                                     field="Fa (shaft loads)")
     dofs = [0, 1, 2, 3, 4] if np.any(P[:, 3:] != 0.0) else [0, 1, 2]
-    preload = [s.spring or 0.0 for s in sups]
+    preload = [s.spring or 0.0 for s in sups] + [_position_preload(s, stiffness, tilt_arm) for s in sups]
     scale = np.maximum.reduce([np.abs(P[:, :2]).max(axis=1), np.abs(P[:, 3]),
                                np.abs(P[:, [2, 4]]).max(axis=1) / max(max(abs(s.x) for s in sups),
                                                                      max(s.bearing.dm for s in sups) / 2),
@@ -455,8 +464,8 @@ def warm_supports(supports, dT_inner=0.0, dT_outer=0.0, dT_ball=None, *, alpha_r
 
 def bearing_set(brg: BallBearing, arrangement: str = "back_to_back", Fa=0.0, Fr=0.0, M=0.0, Fz=0.0, My=0.0, *,
                 preload_offset: float | None = None, preload_force: float | None = None, spacer: float = 0.0,
-                dT_inner: float = 0.0, dT_outer: float = 0.0, stiffness: str = "nominal",
-                tilt_arm: str = "groove") -> ShaftLoads:
+                dT_inner: float = 0.0, dT_outer: float = 0.0, dT_ball: float | None = None,
+                stiffness: str = "nominal", tilt_arm: str = "groove") -> ShaftLoads:
     r"""A duplex set of two equal angular contact bearings on a rigid shaft, preloaded, under external loads.
 
     Parameters
@@ -473,6 +482,7 @@ def bearing_set(brg: BallBearing, arrangement: str = "back_to_back", Fa=0.0, Fr=
     spacer : float      length of equal inner and outer spacers between the bearings [m]
     dT_inner, dT_outer : float  the inner rings (with the shaft and inner spacer) and the outer rings (with the
                         housing and outer spacer) run this much warmer than at mounting [K] (:func:`warm_supports`)
+    dT_ball : float     the balls run this much warmer than at mounting [K] (default: the mean of the rings')
     stiffness, tilt_arm : as :func:`thermobear.loads.load_distribution`
 
     Returns
@@ -506,8 +516,8 @@ def bearing_set(brg: BallBearing, arrangement: str = "back_to_back", Fa=0.0, Fr=
         off = None if preload_offset is None else 0.5 * preload_offset
         sups = (Support(brg, -half, s1, offset=off if preload_force is None else None),
                 Support(brg, half, s2, offset=off if preload_force is None else None, spring=preload_force))
-    if dT_inner or dT_outer:
-        sups = warm_supports(sups, dT_inner, dT_outer)
+    if dT_inner or dT_outer or dT_ball:
+        sups = warm_supports(sups, dT_inner, dT_outer, dT_ball)
     return shaft_loads(sups, Fa, Fr, M, Fz, My, stiffness=stiffness, tilt_arm=tilt_arm)
 
 

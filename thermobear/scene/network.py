@@ -15,18 +15,71 @@ import copy
 import re
 from pathlib import Path
 
+from thermobear import validity
 from thermobear.contact.materials import material_names
 from thermobear.errors import InputError
 from thermobear.files import data_dir, names_in, read_toml
+from thermobear.schema import Field
 from thermobear.thermal.builders import Housing, Lubrication, Machine, Shaft, build_network
 from thermobear.thermal.network import ROLES
 
 __all__ = ["network_path", "network_spec", "network_nodes", "network_table", "heat_receiving_nodes",
-           "machine_from_sections", "lubrication_of", "check_lubrication_keys", "PARAMETRIC"]
+           "machine_from_sections", "lubrication_of", "check_lubrication_keys", "PARAMETRIC", "SHAFT_FIELDS",
+           "HOUSING_FIELDS"]
 
 PARAMETRIC = "parametric"     #: the network name of a network built from the scene's dimensions
 
 _KEEP_ON_IMPOSE = ("description", "measured_by", "source")
+
+
+def _temperature(doc):
+    return Field.number("°C", *validity.T_LUBRICANT_REFUSE_C, doc=doc)
+
+
+_LENGTH = dict(unit="mm", lo=0.0, hi=1e4, lo_open=True)
+#: ``[shaft]``: the shaft of a parametric network (thermobear.thermal.builders; defaults there).
+SHAFT_FIELDS = {
+    "diameter_mm": Field.number(**_LENGTH, doc="shaft diameter (the bearing bore; a stepped shaft is not modelled)"),
+    "bore_mm": Field.number("mm", 0.0, 1e4, doc="bore of a hollow shaft (default 0: solid)"),
+    "length_left_mm": Field.number("mm", 0.0, 1e4, doc="from the bearing's side face to the shaft end (default 2.5 d)"),
+    "length_right_mm": Field.number("mm", 0.0, 1e4, doc="the same on the right"),
+    "material": Field.text("material name (default steel-c45)"),
+    "end_left": Field.choice("free", "fixed", "adiabatic", doc="free: convection; fixed: held at T_end_left_C; "
+                             "adiabatic: a symmetry plane"),
+    "end_right": Field.choice("free", "fixed", "adiabatic", doc="the same on the right"),
+    "T_end_left_C": _temperature("temperature of a fixed left end (default ambient)"),
+    "T_end_right_C": _temperature("temperature of a fixed right end (default ambient)"),
+    "surface": Field.choice("air", "enclosed", doc="the shaft outside the housing in the room's air, or enclosed"),
+    "interference_um": Field.number("µm", -1e3, 1e3, doc="diametral interference of the inner ring's seat, negative: "
+                                    "clearance (default: probable k5/m5 fit, g6 for a rotating outer ring)"),
+    "fit_h_W_m2K": Field.number("W/(m² K)", 0.0, 1e8, lo_open=True, doc="the seat's joint conductance, given"),
+}
+#: ``[housing]``: the housing of a parametric network.
+HOUSING_FIELDS = {
+    "type": Field.choice("block", "pillow", "flange", doc="rectangular block, pillow block, flanged housing"),
+    "material": Field.text("material name (default cast-iron-gjl-250)"),
+    "axial_length_mm": Field.number(**_LENGTH, doc="length along the shaft (default 2 × bearing width)"),
+    "height_mm": Field.number(**_LENGTH, doc="block: outer height (default 2 × bearing OD)"),
+    "depth_mm": Field.number(**_LENGTH, doc="block: outer depth across the shaft (default 2 × bearing OD)"),
+    "outer_diameter_mm": Field.number(**_LENGTH, doc="pillow / flange: body diameter (default 2 × bearing OD)"),
+    "centre_height_mm": Field.number(**_LENGTH, doc="shaft axis above the mounting face (block: half the height; "
+                                     "pillow: 0.7 × body diameter)"),
+    "base_length_mm": Field.number(**_LENGTH, doc="pillow: length of the foot across the shaft (default 2.5 × body "
+                                   "diameter)"),
+    "offset_mm": Field.number("mm", -1e4, 1e4, doc="axial position of the housing's centre from the bearing's (default 0)"),
+    "end_left": Field.choice("air", "mounted", "adiabatic", doc="left end face (flange: mounted by default)"),
+    "end_right": Field.choice("air", "mounted", "adiabatic", doc="right end face (default air)"),
+    "mounting": Field.choice("frame", "none", doc="bolted to a frame at ambient (default) or not"),
+    "mounting_h_W_m2K": Field.number("W/(m² K)", 0.0, 1e7, lo_open=True, doc="mounting joint (default 3600, "
+                                     "Bergman Table 3.2)"),
+    "frame_material": Field.text("material of the frame (default steel-c45)"),
+    "air": Field.choice("still", "forced", doc="air around the housing"),
+    "air_speed_m_s": Field.number("m/s", 0.0, 100.0, lo_open=True, doc="forced air speed"),
+    "emissivity": Field.number("-", 0.0, 1.0, lo_open=True, doc="of the housing's outside (default 0.8)"),
+    "interference_um": Field.number("µm", -1e3, 1e3, doc="diametral interference of the outer ring's seat, negative: "
+                                    "clearance (default: probable H7 fit, N7 for a rotating outer ring)"),
+    "fit_h_W_m2K": Field.number("W/(m² K)", 0.0, 1e8, lo_open=True, doc="the seat's joint conductance, given"),
+}
 
 
 def network_path(name: str, scene_path: str | None = None) -> Path:

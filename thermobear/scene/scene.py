@@ -8,7 +8,8 @@ every boolean a TOML boolean, every choice one of its listed values.  Sections (
 
     [scene]      name, description, source
     [bearing]    catalog = "7210" and/or inline geometry (thermobear.contact.geometry keys); seals,
-                 seal_sides, seal_diameter_mm; cage, cage_land_width_mm, cage_land_clearance_mm
+                 seal_sides, seal_diameter_mm; cage, cage_land_width_mm, cage_land_clearance_mm; shaft_fit,
+                 housing_fit; arrangement, preload_N, preload (one bearing of a preloaded pair: scene/pair.py)
     [lubricant]  name = "seed004-mineral" or inline properties (thermobear.lubrication.lubricant keys);
                  supply, flow_L_h, T_in_C, Rq_ball_um, Rq_ring_um, mu_boundary, mu_full_film, K_rs, oil_level_mm
     [operation]  n_rpm, Fa_N, Fr_N, M_Nm (tilt free), Fz_N, My_Nm (out of plane; tilt free), rotating,
@@ -49,8 +50,9 @@ from thermobear.losses.seals import BALL_SEALS, CONTACT_SEALS, seal_constants
 from thermobear.lubrication.lubricant import FIELDS as LUBRICANT_FIELDS
 from thermobear.lubrication.lubricant import Lubricant, lubricant
 from thermobear.schema import Field, check_table, check_uncertainty, check_value
-from thermobear.scene.network import (PARAMETRIC, check_lubrication_keys, lubrication_of, machine_from_sections,
-                                     network_nodes, network_spec)
+from thermobear.scene.network import (HOUSING_FIELDS, PARAMETRIC, SHAFT_FIELDS, check_lubrication_keys,
+                                     lubrication_of, machine_from_sections, network_nodes, network_spec)
+from thermobear.scene.pair import PAIR_FIELDS, PAIR_WITH, check_pair
 from thermobear.thermal.builders import Machine
 
 __all__ = ["Scene", "load_scene", "scene_from_dict", "SUPPLIES", "SECTIONS", "MODEL_FIELDS", "RIG_TARGETS",
@@ -118,51 +120,6 @@ _SUPPLY_FIELDS = {
                              "the bearing (all of it)"),
 }
 
-_LENGTH = dict(unit="mm", lo=0.0, hi=1e4, lo_open=True)
-#: ``[shaft]``: the shaft of a parametric network (thermobear.thermal.builders; defaults there).
-SHAFT_FIELDS = {
-    "diameter_mm": Field.number(**_LENGTH, doc="shaft diameter (the bearing bore; a stepped shaft is not modelled)"),
-    "bore_mm": Field.number("mm", 0.0, 1e4, doc="bore of a hollow shaft (default 0: solid)"),
-    "length_left_mm": Field.number("mm", 0.0, 1e4, doc="from the bearing's side face to the shaft end (default 2.5 d)"),
-    "length_right_mm": Field.number("mm", 0.0, 1e4, doc="the same on the right"),
-    "material": Field.text("material name (default steel-c45)"),
-    "end_left": Field.choice("free", "fixed", "adiabatic", doc="free: convection; fixed: held at T_end_left_C; "
-                             "adiabatic: a symmetry plane"),
-    "end_right": Field.choice("free", "fixed", "adiabatic", doc="the same on the right"),
-    "T_end_left_C": _temperature("temperature of a fixed left end (default ambient)"),
-    "T_end_right_C": _temperature("temperature of a fixed right end (default ambient)"),
-    "surface": Field.choice("air", "enclosed", doc="the shaft outside the housing in the room's air, or enclosed"),
-    "interference_um": Field.number("µm", -1e3, 1e3, doc="diametral interference of the inner ring's seat, negative: "
-                                    "clearance (default: probable k5/m5 fit, g6 for a rotating outer ring)"),
-    "fit_h_W_m2K": Field.number("W/(m² K)", 0.0, 1e8, lo_open=True, doc="the seat's joint conductance, given"),
-}
-#: ``[housing]``: the housing of a parametric network.
-HOUSING_FIELDS = {
-    "type": Field.choice("block", "pillow", "flange", doc="rectangular block, pillow block, flanged housing"),
-    "material": Field.text("material name (default cast-iron-gjl-250)"),
-    "axial_length_mm": Field.number(**_LENGTH, doc="length along the shaft (default 2 × bearing width)"),
-    "height_mm": Field.number(**_LENGTH, doc="block: outer height (default 2 × bearing OD)"),
-    "depth_mm": Field.number(**_LENGTH, doc="block: outer depth across the shaft (default 2 × bearing OD)"),
-    "outer_diameter_mm": Field.number(**_LENGTH, doc="pillow / flange: body diameter (default 2 × bearing OD)"),
-    "centre_height_mm": Field.number(**_LENGTH, doc="shaft axis above the mounting face (block: half the height; "
-                                     "pillow: 0.7 × body diameter)"),
-    "base_length_mm": Field.number(**_LENGTH, doc="pillow: length of the foot across the shaft (default 2.5 × body "
-                                   "diameter)"),
-    "offset_mm": Field.number("mm", -1e4, 1e4, doc="axial position of the housing's centre from the bearing's (default 0)"),
-    "end_left": Field.choice("air", "mounted", "adiabatic", doc="left end face (flange: mounted by default)"),
-    "end_right": Field.choice("air", "mounted", "adiabatic", doc="right end face (default air)"),
-    "mounting": Field.choice("frame", "none", doc="bolted to a frame at ambient (default) or not"),
-    "mounting_h_W_m2K": Field.number("W/(m² K)", 0.0, 1e7, lo_open=True, doc="mounting joint (default 3600, "
-                                     "Bergman Table 3.2)"),
-    "frame_material": Field.text("material of the frame (default steel-c45)"),
-    "air": Field.choice("still", "forced", doc="air around the housing"),
-    "air_speed_m_s": Field.number("m/s", 0.0, 100.0, lo_open=True, doc="forced air speed"),
-    "emissivity": Field.number("-", 0.0, 1.0, lo_open=True, doc="of the housing's outside (default 0.8)"),
-    "interference_um": Field.number("µm", -1e3, 1e3, doc="diametral interference of the outer ring's seat, negative: "
-                                    "clearance (default: probable H7 fit, N7 for a rotating outer ring)"),
-    "fit_h_W_m2K": Field.number("W/(m² K)", 0.0, 1e8, lo_open=True, doc="the seat's joint conductance, given"),
-}
-
 #: ``[bearing]`` keys besides the geometry: seals and cage (defaults: no seal; a ball-centred cage).
 _BEARING_FIELDS = {
     "seals": Field.choice(*BALL_SEALS, doc="seal type: none, shield (non-contact) or an SKF ball-bearing contact seal"),
@@ -178,6 +135,7 @@ _BEARING_FIELDS = {
                                        "summed; default estimated B/4"),
     "cage_land_clearance_mm": Field.number("mm", 0.0, None, lo_open=True, doc="radial cage-land clearance; "
                                            "default estimated 0.5 % of the land diameter"),
+    **PAIR_FIELDS,
 }
 
 #: Every section's keys (``bearing``: ``catalog`` plus the geometry keys of
@@ -240,6 +198,9 @@ class Scene:
     contamination : str           ISO 281 cleanliness level (e_C of a_ISO)
     shaft_fit, housing_fit : str | None   ISO 286 tolerance classes of the seats (None: a machine's seats, else the
                                   catalogue-typical fit for the load, :func:`thermobear.coupled.ratings.scene_clearance`)
+    arrangement : str | None      the bearing is one of a preloaded pair (``back_to_back``, ``face_to_face``;
+                                  :mod:`thermobear.scene.pair`): Fa, Fr act on the pair; None: a single bearing
+    preload_force : float | None  the pair's cold mounted preload [N]; preload_kind: ``position`` (None) or ``spring``
     T_C : float | None            prescribed contact temperature [°C] (None: solve the thermal network)
     oil_flow : float              supplied oil flow [m^3/s] (oil jet)
     jet_penetration : float       share of it that passes through the bearing [-] (seed 004 §4.5 β;
@@ -294,6 +255,9 @@ class Scene:
     contamination: str = "normal_cleanliness"
     shaft_fit: str | None = None
     housing_fit: str | None = None
+    arrangement: str | None = None
+    preload_force: float | None = None
+    preload_kind: str | None = None
     oil_flow: float = 0.0
     jet_penetration: float = 1.0
     T_oil_in_C: float | None = None
@@ -344,7 +308,7 @@ class Scene:
         the network), T_oil_in_C, T_ambient_C, oil_flow_L_h, jet_penetration, oil_level_mm (None: not
         given), Rq_ball_um, Rq_ring_um, mu_boundary, mu_full_film, K_rs (None: SKF's), rotating, supply, lubricant (name, table
         or Lubricant), bearing (catalogue name, table or BallBearing), seals, seal_sides, cage, shaft_fit, housing_fit
-        (ISO 286 classes; None: not stated), network,
+        (ISO 286 classes; None: not stated), arrangement, preload_N, preload (a pair; None clears), network,
         network_parameters (merged), T_fixed_C (node → °C, replaces; ``{}`` clears), models (merged) and
         samples (address → number, replaces).
 
@@ -444,6 +408,7 @@ _WITH = {
     "network_parameters": _with_table("network_parameters"),
     "T_fixed_C": _with_table("T_fixed_C"),
     "models": _with_table("models"),
+    **PAIR_WITH,
 }
 #: the keys :meth:`Scene.with_` accepts, with their aliases in the scene file's units (Fa_N, ...)
 WITH_KEYS = tuple(_WITH) + tuple(_ALIASES)
@@ -597,6 +562,7 @@ def _check_scene(s: Scene, network_changed: bool = True):
     if s.bearing.dm is not None:
         validity.check("n_dm", s.n_rpm * s.bearing.dm * 1e3, "operation.n_rpm", warn=False, given=s.n_rpm)
     _check_added(s)
+    check_pair(s)
     if s.network is None:
         if s.T_fixed_C:
             raise InputError("thermal.fixed_C", s.T_fixed_C, "imposed node temperatures need a thermal network")
@@ -657,7 +623,8 @@ def scene_from_dict(d: dict, path: str | None = None) -> Scene:
         supply=lsec.get("supply", "oil_jet"), n_rpm=op["n_rpm"], rotating=op.get("rotating", "inner"),
         Fa=op.get("Fa_N", 0.0), Fr=op.get("Fr_N", 0.0), M=op.get("M_Nm"), T_C=op.get("T_C"),
         Fz=op.get("Fz_N", 0.0), My=op.get("My_Nm"), contamination=op.get("contamination", "normal_cleanliness"),
-        shaft_fit=bx.get("shaft_fit"), housing_fit=bx.get("housing_fit"),
+        shaft_fit=bx.get("shaft_fit"), housing_fit=bx.get("housing_fit"), arrangement=bx.get("arrangement"),
+        preload_force=bx.get("preload_N"), preload_kind=bx.get("preload"),
         oil_flow=lsec.get("flow_L_h", 0.0) * 1e-3 / 3600.0, jet_penetration=lsec.get("jet_penetration", _default_penetration(lsec.get("supply", "oil_jet"), lsec)),
         T_oil_in_C=lsec.get("T_in_C"),
         T_ambient_C=th.get("T_ambient_C", 20.0), Rq_ball=lsec.get("Rq_ball_um", 0.05) * 1e-6,

@@ -1,0 +1,264 @@
+"""The thermal preload of a position-preloaded pair of angular contact bearings (thermobear.scene.pair,
+thermobear.loads.pair, thermobear.coupled.preload): the cold offset, the warm pair's loads, the fixed point of the
+coupled steady state, its runaway, bad input and the command line."""
+import json
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import thermobear as tb
+from thermobear.app.cli import main
+from thermobear.contact.fits import T_REF_C
+from thermobear.coupled.preload import PRELOAD_TOL_N, pair_scene, preload_step_runs_away
+from thermobear.errors import InputError, ThermalPreloadRunaway
+from thermobear.loads.pair import pair_loads, pair_preload_offset
+from thermobear.loads.sets import bearing_set
+from thermobear.scene.scene import scene_from_dict
+
+SEED004 = tb.example_path("seed004_oil_jet_7210.toml")
+PAIRS = ("back_to_back", "face_to_face")
+
+
+def hand_preload(brg, d):
+    """Harris & Kotzalas 2007 ch. 7: a ball bearing whose inner ring is pushed axially by d beyond first touch, all
+    balls alike: tan α = tan α0 + d/(A cos α0), F_a = Z K_n [A (cos α0/cos α − 1)]^1.5 sin α [N]."""
+    A, a0 = brg.A, brg.alpha0
+    al = np.arctan(np.tan(a0) + d / (A * np.cos(a0)))
+    return brg.Z * brg.Kn() * (A * (np.cos(a0) / np.cos(al) - 1.0)) ** 1.5 * np.sin(al)
+
+
+def seed004_pair(**kw):
+    """Seed 004's 7210 on its oil jet as one bearing of a back-to-back pair preloaded to 450 N (seed 004's axial
+    load), the block's 650 N radial load on the pair."""
+    return tb.load_scene(SEED004).with_(arrangement="back_to_back", preload_N=450.0, Fa=0.0, Fr=650.0, **kw)
+
+
+@pytest.fixture(scope="module")
+def spindle(tmp_path_factory):
+    """`thermobear init 7014C --lubrication oil-air --speed-rpm 12000`, made one bearing of a back-to-back pair
+    preloaded to 300 N (a light spindle preload), the init scene's 2020 N radial load on the pair, no axial load."""
+    path = tmp_path_factory.mktemp("pair") / "spindle_7014C.toml"
+    assert main(["init", "7014C", "--lubrication", "oil-air", "--speed-rpm", "12000", "--out", str(path)]) == 0
+    return tb.load_scene(path).with_(arrangement="back_to_back", preload_N=300.0, Fa=0.0)
+
+
+@pytest.fixture(scope="module")
+def spindle_state(spindle):
+    with pytest.warns(tb.OutsideValidity):
+        return tb.steady_state(spindle)
+
+
+# --------------------------------------------------------------------------- (a) the cold offset
+@pytest.mark.parametrize("name", ["7014C", "7205B", "7210"])
+@pytest.mark.parametrize("F0", [50.0, 300.0, 1500.0])
+def test_cold_offset_gives_the_preload_back(name, F0):
+    """The offset of a cold preload F0, set back into bearing_set, gives F0 in both bearings (1e-6), and F0 is the
+    hand formula's axial load at half the offset beyond first touch."""
+    b = tb.bearing(name)
+    off = pair_preload_offset(b, F0)
+    for arrangement in PAIRS:
+        assert np.allclose(bearing_set(b, arrangement, preload_offset=off).preload, F0, rtol=1e-6, atol=0)
+    assert hand_preload(b, off / 2) == pytest.approx(F0, rel=1e-6)
+
+
+# --------------------------------------------------------------------------- (b) symmetry
+@pytest.mark.parametrize("arrangement", PAIRS)
+@pytest.mark.parametrize("dT", [0.0, 15.0, 40.0])
+def test_equal_temperatures_load_both_bearings_alike(arrangement, dT):
+    """Without external load and with rings and balls at one temperature both bearings carry the same warm preload;
+    at the mounting temperature it is the cold one."""
+    b = tb.bearing("7014C")
+    off = pair_preload_offset(b, 300.0)
+    s = bearing_set(b, arrangement, preload_offset=off, dT_inner=dT, dT_outer=dT, dT_ball=dT)
+    assert s.preload[0] == pytest.approx(s.preload[1], rel=1e-9)
+    p = pair_loads(b, arrangement, 300.0, dT_inner=dT, dT_outer=dT, dT_ball=dT)
+    assert p.Fa == pytest.approx(p.Fa_other, rel=1e-9) and p.preload == pytest.approx(s.preload[0], rel=1e-9)
+    if dT == 0.0:
+        assert p.preload == pytest.approx(300.0, rel=1e-9) and p.Fa == pytest.approx(300.0, rel=1e-9)
+
+
+# --------------------------------------------------------------------------- (c) monotonic
+@pytest.mark.parametrize("name", ["7014C", "7210"])
+def test_warm_preload_rises_with_the_inner_ring_above_the_outer(name):
+    """The outer ring 10 K above the mounting temperature, the balls at the rings' mean: the warm preload rises
+    strictly with ΔT_i − ΔT_o, face to face faster than back to back (the shaft's axial growth adds to the
+    face-to-face pair's preload and takes from the back-to-back pair's)."""
+    b = tb.bearing(name)
+    diffs = [-4.0, 0.0, 4.0, 8.0, 16.0]
+    warm = {a: [pair_loads(b, a, 300.0, dT_inner=10.0 + d, dT_outer=10.0).preload for d in diffs] for a in PAIRS}
+    for a in PAIRS:
+        assert np.all(np.diff(warm[a]) > 0), warm[a]
+    assert all(f > d for f, d in zip(warm["face_to_face"][2:], warm["back_to_back"][2:]))
+
+
+def test_spring_preload_keeps_its_force_warm():
+    b = tb.bearing("7014C")
+    p = pair_loads(b, "back_to_back", 300.0, "spring", Fr=2020.0, dT_inner=30.0, dT_outer=10.0)
+    assert p.preload == pytest.approx(300.0, rel=1e-9) and p.offset is None
+
+
+def test_the_external_axial_load_goes_to_the_loaded_bearing():
+    """With the shaft's axial load the scene's bearing is the one that carries more, the two axial loads apart by
+    the external one (the shaft's axial equilibrium); a spring-held bearing keeps its force, the other takes the
+    external load on top of it."""
+    b = tb.bearing("7014C")
+    for a in PAIRS:
+        p = pair_loads(b, a, 300.0, "position", 1000.0, 2020.0)
+        assert p.Fa > p.Fa_other and p.Fa - p.Fa_other == pytest.approx(1000.0, rel=1e-9)
+        s = pair_loads(b, a, 300.0, "spring", 200.0, 0.0)
+        assert s.Fa == pytest.approx(500.0, rel=1e-9) and s.Fa_other == pytest.approx(300.0, rel=1e-9)
+
+
+# --------------------------------------------------------------------------- (d) the fixed point of a scene
+def test_spindle_pair_solves_to_a_warm_preload_above_the_cold_one(spindle, spindle_state):
+    """A 7014C pair at 12000 rpm on oil-air: the warm rings and balls raise the 300 N preload; the answer's loads
+    are the warm pair's at its own temperatures (the fixed point, to tolerance), the power above the power at the
+    cold preload, the warning named (warm > 2 × cold)."""
+    st = spindle_state
+    p = st.preload
+    assert p["kind"] == "position" and p["cold_N"] == 300.0 and p["warm_N"] > 2 * 300.0
+    assert p["residual_N"] <= PRELOAD_TOL_N and p["iterations"] == len(p["history"]) >= 3
+    assert st.models_used["preload"][0] == "position" and "300 N cold" in st.models_used["preload"][1]
+    T = p["temperatures_C"]
+    assert T["inner ring"] == pytest.approx(st.T_C["inner_ring"]) and T["balls"] == pytest.approx(st.T_ball_C)
+    again = pair_loads(spindle.bearing, "back_to_back", 300.0, "position", 0.0, spindle.Fr,
+                       dT_inner=T["inner ring"] - T_REF_C, dT_outer=T["outer ring"] - T_REF_C,
+                       dT_ball=T["balls"] - T_REF_C)
+    assert abs(again.Fa - p["Fa_N"]) <= PRELOAD_TOL_N and again.preload == pytest.approx(p["warm_N"], rel=1e-9)
+    pre = [h["preload_N"] for h in p["history"]]
+    assert pre == sorted(pre)                                    # the heat-up's way: rising to the answer
+    cold = tb.steady_state(pair_scene(spindle, pair_loads(spindle.bearing, "back_to_back", 300.0, Fr=spindle.Fr)))
+    assert st.P_W > cold.P_W and st.T_C["inner_ring"] > cold.T_C["inner_ring"]
+    assert any(w.quantity == "thermal_preload" for w in st.warnings)
+
+
+def test_spring_preload_is_one_solve_at_the_cold_force(spindle, spindle_state):
+    st = tb.steady_state(spindle.with_(preload="spring"))
+    p = st.preload
+    assert p["kind"] == "spring" and p["warm_N"] == 300.0 and p["iterations"] == 1 and p["history"] == []
+    assert p["Fa_N"] == pytest.approx(300.0, rel=1e-9)
+    assert st.P_W < spindle_state.P_W
+    assert not any(w.quantity == "thermal_preload" for w in st.warnings)
+
+
+def test_a_scene_without_a_pair_is_solved_as_before():
+    """Seed 004 (one bearing, no arrangement): the answer of the code before the pair loop, to the last bit."""
+    st = tb.steady_state(tb.load_scene(SEED004))
+    assert st.preload is None and "preload" not in st.models_used
+    assert st.P_W == 39.49342415993864
+
+
+# --------------------------------------------------------------------------- (e) runaway
+def test_seed004_pair_runs_away_at_6500_rpm():
+    """Seed 004's 7210 as a back-to-back pair preloaded to 450 N: at 3200 rpm its preload settles (about three
+    times the cold one), at 6500 rpm each step adds more than the last — a thermal preload runaway, named with the
+    history of rising preloads; with a spring preload of the same force the point solves."""
+    with pytest.warns(tb.OutsideValidity):
+        ok = tb.steady_state(seed004_pair())
+    assert 2 * 450.0 < ok.preload["warm_N"] < 5 * 450.0
+    with pytest.raises(ThermalPreloadRunaway, match="thermal preload runaway of a back-to-back pair") as e:
+        tb.steady_state(seed004_pair(n_rpm=6500.0))
+    pre = e.value.preload_history_N
+    assert len(pre) >= 3 and pre[0] > 450.0 and all(b > a for a, b in zip(pre, pre[1:]))
+    assert preload_step_runs_away(e.value.history) and e.value.dT_inner_outer_K > 0
+    spring = tb.steady_state(seed004_pair(n_rpm=6500.0, preload="spring"))
+    assert spring.preload["warm_N"] == 450.0
+
+
+def test_the_step_criterion_needs_growth_that_does_not_slow():
+    """Synthetic histories of the loaded bearing's axial load (used → warm): the loop's steps r = g(F) − F.  Steps
+    that grow and grow faster: a runaway.  Steps that grow for a while from a light preload, then slow and
+    shrink (the 7014C pair at 16000 rpm: 13, 63, 136, 267, 101 N, settling at 1080 N): never called a runaway,
+    though the secant slope passes 1 on the way."""
+    def history(steps, F=431.0):
+        out = []
+        for r in steps:
+            out.append(dict(Fa_used_N=F, Fa_N=F + r))
+            F += r
+        return out
+    assert preload_step_runs_away(history([1398.0, 1278.0, 1470.0]))           # seed 004 at 6500 rpm
+    settling = history([13.2, 62.8, 136.3, 267.2, 101.3, 41.9, 16.1])
+    assert not any(preload_step_runs_away(settling[:k]) for k in range(1, len(settling) + 1))
+    assert not preload_step_runs_away(history([100.0, 200.0]))                 # two steps decide nothing
+    assert not preload_step_runs_away(history([-50.0, -80.0, -150.0]))         # falling: losing preload
+
+
+# --------------------------------------------------------------------------- (f) bad input
+def _pair_file(tmp_path, **bearing) -> Path:
+    """Seed 004's scene file with keys added to its [bearing] table."""
+    text = Path(SEED004).read_text(encoding="utf-8")
+    keys = "".join(f"{k} = {json.dumps(v)}\n" for k, v in bearing.items())
+    path = tmp_path / "pair.toml"
+    path.write_text(text.replace('catalog = "7210"', 'catalog = "7210"\n' + keys, 1), encoding="utf-8")
+    return path
+
+
+@pytest.mark.parametrize("keys, field", [
+    (dict(arrangement="back_to_back", preload_N=0.0), "bearing.preload_N"),
+    (dict(arrangement="back_to_back", preload_N=-100.0), "bearing.preload_N"),
+    (dict(arrangement="back_to_back", preload_N=300.0, preload="soft"), "bearing.preload"),
+    (dict(arrangement="tandem", preload_N=300.0), "bearing.arrangement"),
+    (dict(preload_N=300.0), "bearing.preload_N"),
+    (dict(arrangement="face_to_face"), "bearing.preload_N"),
+])
+def test_bad_pair_keys_are_refused_naming_the_field(tmp_path, keys, field):
+    with pytest.raises(InputError) as e:
+        tb.load_scene(_pair_file(tmp_path, **keys))
+    assert e.value.field == field
+
+
+@pytest.mark.parametrize("name, kind", [("6208", "deep groove"), ("51205", "thrust")])
+def test_a_pair_needs_angular_contact_bearings(name, kind):
+    s = tb.load_scene(SEED004)
+    with pytest.raises(InputError, match=f"only for angular contact bearings.*{kind}") as e:
+        s.with_(bearing=name, arrangement="back_to_back", preload_N=300.0, Fr=0.0 if kind == "thrust" else 325.0)
+    assert e.value.field == "bearing.arrangement" and e.value.value == "back_to_back"
+
+
+def test_a_pair_refuses_loads_and_paths_it_does_not_model():
+    s = seed004_pair()
+    for kw, field in ((dict(M=2.0), "operation.M_Nm"), (dict(Fz=100.0), "operation.Fz_N"),
+                      (dict(T_C=50.0), "operation.T_C")):
+        with pytest.raises(InputError) as e:
+            s.with_(**kw)
+        assert e.value.field == field
+    with pytest.raises(InputError, match="solved by the coupled steady state") as e:
+        tb.transient(s, 10.0)                        # a heat-up does not close the pair's preload (yet)
+    assert e.value.field == "bearing.arrangement"
+
+
+def test_a_deep_groove_pair_on_the_command_line_is_one_line_exit_2(tmp_path, capsys):
+    path = tmp_path / "dg.toml"
+    text = Path(tb.example_path("oil_bath_6208.toml")).read_text(encoding="utf-8")
+    d = tomllib.loads(text)
+    assert "catalog" in d["bearing"]
+    path.write_text(text.replace(f'catalog = "{d["bearing"]["catalog"]}"',
+                                 f'catalog = "{d["bearing"]["catalog"]}"\narrangement = "back_to_back"\n'
+                                 'preload_N = 300.0', 1), encoding="utf-8")
+    assert main(["run", str(path)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("error: bearing.arrangement = 'back_to_back'")
+
+
+# --------------------------------------------------------------------------- (g) the command line
+def test_run_prints_the_pair_preload(tmp_path, capsys):
+    path = _pair_file(tmp_path, arrangement="back_to_back", preload_N=450.0)
+    assert main(["run", str(path), "--set", "Fa_N=0", "--set", "Fr_N=650"]) == 0
+    out, err = capsys.readouterr()
+    assert "Preload of the pair" in out
+    assert "preload (back-to-back pair, position): cold 450 N, warm " in out and "fixed point in " in out
+    assert "warning: OutsideValidity: bearing.preload_N: warm / cold preload of a position-preloaded pair" in err
+    assert main(["run", str(path), "--set", "Fa_N=0", "--set", "Fr_N=650", "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    assert d["preload"]["cold_N"] == 450.0 and d["preload"]["warm_N"] > 450.0
+    assert d["models_used"]["preload"]["choice"] == "position"
+    assert len(d["preload"]["history"]) == d["preload"]["iterations"]
+
+
+def test_run_names_the_runaway_exit_3(tmp_path, capsys):
+    path = _pair_file(tmp_path, arrangement="back_to_back", preload_N=450.0)
+    assert main(["run", str(path), "--set", "n_rpm=6500"]) == 3
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("error: ThermalPreloadRunaway: thermal preload runaway")

@@ -1,0 +1,279 @@
+r"""Temperature → preload → loads → losses → temperatures: the thermal preload of a position-preloaded pair.
+
+A scene with ``[bearing] arrangement`` is one bearing of a symmetric pair of angular contact bearings
+(:mod:`thermobear.scene.pair`: both run the same temperatures, the scene's network is that bearing's share of the
+machine, the scene's bearing the one that carries the larger axial load).  Its loads come from the pair
+(:func:`thermobear.loads.pair.pair_loads`): the external Fa, Fr on the pair's cold preload F_0, and — with a
+position preload — the rings' and balls' temperatures above the mounting temperature (20 °C): the inner ring
+running warmer than the outer and the balls warmer still, the inner ring grows radially against the outer ring
+and the preload rises (Harris & Kotzalas 2007 [1] ch. 3 and 8).  More preload, more friction, a hotter inner ring
+and more preload: the steady state is the fixed point
+
+.. math:: F_{a,k} = g(F_{a,k}) = F_{a,k}\bigl(T_i(F_{a,k}),\, T_o(F_{a,k}),\, T_b(F_{a,k})\bigr)
+
+solved by direct iteration, as the heat-up would reach it: each step a full coupled steady state of the bearing
+under the loaded bearing's loads (F_a,k, F_r,k), its inner-ring, outer-ring and ball temperatures (nodes
+``inner_ring`` / ``outer_ring``, else the inner / outer role; the ball role), the warm pair's loads again, until the
+loads change by less than ``tol_N``.  The first step is at the cold preload.  A spring preload keeps its force:
+no loop, one steady state under the spring force and the external loads.
+
+Runaway (:class:`~thermobear.errors.ThermalPreloadRunaway`, with the history of the loop and its warm preloads):
+as for a radial preload (:mod:`thermobear.coupled.clearance`), the iteration diverges when the loop's gain g′
+reaches 1.  From three steps with the load rising (r = g(F) − F > 0), the step not shrinking, r_k ≥ r_{k−1} (the
+secant slope of g ≥ 1), and its growth not slowing, r_k / r_{k−1} ≥ r_{k−1} / r_{k−2} (the slope not falling): g(F) − F
+only grows with the preload, no fixed point ahead (:func:`preload_step_runs_away`; the slope alone passes 1 for a
+step or two from a light preload before the loop settles).  Also a runaway: a step at a preload above the cold one whose coupled steady state has no solution (its thermal fixed
+point runs away, :class:`~thermobear.errors.ThermalRunaway`, or its contacts are overloaded), warm loads the pair
+cannot carry (its contacts overloaded, or its rings grown through the clearance), and ``_MAXITER`` steps still
+rising.  The answer carries a named warning where the warm preload passes twice the cold one
+(:data:`thermobear.validity.LIMITS` ``thermal_preload``).
+
+The pair's loads are the static (low-speed) form: the centrifugal effects on the preload are not in them
+(:mod:`thermobear.loads.pair`).  Cost: (iterations + 1) steady states per point, the points of a step in one call.
+
+References
+----------
+.. [1] Harris, T. A. & Kotzalas, M. N. (2007). *Essential Concepts of Bearing Technology*, 5th ed., CRC Press,
+   ch. 3 (thermal expansion) and ch. 8 (bearing deflection and preloading: duplex pairs, position and spring
+   preload).
+"""
+from __future__ import annotations
+
+import dataclasses
+
+from thermobear.contact.fits import T_REF_C
+from thermobear.coupled.ratings import _node_T
+from thermobear.errors import ContactLimit, InputError, NoConvergence, SolverError, ThermalPreloadRunaway, ThermalRunaway
+from thermobear.loads.pair import PairLoads, pair_loads, pair_preload_offset
+from thermobear.validity import check, collect
+
+__all__ = ["preload_loop", "pair_scene", "loaded_scene", "pair_temperatures", "preload_step_runs_away",
+           "preload_lines", "PRELOAD_TOL_N"]
+
+PRELOAD_TOL_N = 1e-3          #: fixed-point tolerance on the loaded bearing's loads [N]
+_MAXITER = 40
+
+
+def pair_temperatures(T_C: dict, roles: dict) -> dict:
+    """Inner-ring, outer-ring and ball temperatures [°C] of a solved state (node → °C; ``roles``: role → node): the
+    nodes ``inner_ring`` / ``outer_ring``, else the inner / outer role's; the ball role's."""
+    return {"inner ring": _node_T(T_C, roles, ("inner_ring",), "inner")[0],
+            "outer ring": _node_T(T_C, roles, ("outer_ring",), "outer")[0],
+            "balls": _node_T(T_C, roles, (), "ball")[0]}
+
+
+def pair_scene(scene, loads: PairLoads):
+    """The pair scene's bearing alone under the loaded bearing's ``loads`` (the network and everything else
+    unchanged): a single-bearing scene."""
+    return dataclasses.replace(scene, Fa=loads.Fa, Fr=loads.Fr, arrangement=None, preload_force=None,
+                               preload_kind=None)
+
+
+def loaded_scene(scene, steady):
+    """The scene as its bearing runs in a solved state: a pair scene's loaded bearing under the loads of the
+    answer (``steady.preload``), any other scene as it is (e.g. for the ratings)."""
+    p = getattr(steady, "preload", None)
+    if scene.arrangement is None or not p:
+        return scene
+    return dataclasses.replace(scene, Fa=p["Fa_N"], Fr=p["Fr_N"], arrangement=None, preload_force=None,
+                               preload_kind=None)
+
+
+def preload_step_runs_away(history: list, tol_N: float = PRELOAD_TOL_N) -> bool:
+    r"""The loop's steps raise the loaded bearing's axial load without shrinking, and their growth is not slowing
+    (module docstring): with r = g(F) − F (``Fa_N`` − ``Fa_used_N``) of the last three steps,
+
+    .. math:: r_k > \mathrm{tol}, \qquad r_k \ge r_{k-1} > 0, \qquad r_k\, r_{k-2} \ge r_{k-1}^2 .
+
+    In direct iteration F_k = g(F_{k−1}), so r_k / r_{k−1} is the secant slope of g between the last two steps: the
+    first condition is g′ ≥ 1 (the steps not shrinking, as :mod:`thermobear.coupled.clearance` names it), the second
+    that this slope is not falling (g − F convex): then g(F) − F only grows with the preload, no fixed point ahead.
+    The slope alone is not enough: from a light cold preload the force rises steeply with the interference (Hertz,
+    F ∝ δ^1.5) and the loop's gain passes 1 for a step or two before the loss's response flattens and the loop
+    settles (a 7014C pair at 16000 rpm: steps 13, 63, 136, 267 N, then 101 N, settling at 1080 N).
+
+    >>> h = [dict(Fa_used_N=431.0, Fa_N=450.0), dict(Fa_used_N=450.0, Fa_N=500.0), dict(Fa_used_N=500.0, Fa_N=640.0)]
+    >>> preload_step_runs_away(h), preload_step_runs_away(h[:2])          # steps 19, 50, 140 N: growing faster
+    (True, False)
+    >>> preload_step_runs_away([h[0], h[1], dict(Fa_used_N=500.0, Fa_N=600.0)])   # 19, 50, 100 N: slope falling
+    False
+    """
+    if len(history) < 3:
+        return False
+    r2, r1, r0 = (h["Fa_N"] - h["Fa_used_N"] for h in history[-3:])
+    return r0 > tol_N and r0 >= r1 > 0 and r2 > 0 and r0 * r2 >= r1 * r1
+
+
+def _runaway(scene, hist: list, T: dict, what: str) -> ThermalPreloadRunaway:
+    """The named error of a pair's preload that runs away (``hist`` the loop's steps, ``T`` the last temperatures)."""
+    dT = T["inner ring"] - T["outer ring"]
+    last = hist[-1] if hist else {}
+    pre = [h["preload_N"] for h in hist]
+    return ThermalPreloadRunaway(
+        f"thermal preload runaway of a {scene.arrangement.replace('_', '-')} pair: {what} — cold preload "
+        f"{scene.preload_force:.4g} N" + (f", warm {pre[-1]:.4g} N" if pre else "") +
+        f" with the inner ring at {T['inner ring']:.1f} °C, outer ring {T['outer ring']:.1f} °C (ΔT {dT:.1f} K), "
+        f"balls {T['balls']:.1f} °C: a lighter preload, a spring preload, more cooling or less speed is needed",
+        iterations=len(hist), residual=abs(last.get("Fa_N", 0.0) - last.get("Fa_used_N", 0.0)), last=last,
+        history=hist, preload_history_N=pre, dT_inner_outer_K=float(dT))
+
+
+def _warm_failure(exc, hist: list) -> str:
+    """What stopped the pair's loads at a step's temperatures (``exc``), for the runaway's message: the rings and
+    balls grown through the bearing's radial play, or overloaded contacts; with the loop's steps so far."""
+    field = getattr(exc, "field", "")
+    what = ("the rings and balls at these temperatures close the bearing's radial play (its free contact angle "
+            "would pass 0: a radial preload on top of the axial one, beyond the model)" if field.startswith("dT_") else
+            "the warm pair's contacts are overloaded" if field.startswith("Fa, Fr, M") else
+            f"the warm pair has no equilibrium ({type(exc).__name__})")
+    steps = [h["Fa_N"] - h["Fa_used_N"] for h in hist]
+    if steps:
+        what += (f"; the loop's steps of the loaded bearing's axial load {', '.join(f'{r:+.4g}' for r in steps)} N" +
+                 (" were shrinking: a fixed point may lie just past what the model represents" if len(steps) > 1 and
+                  abs(steps[-1]) < abs(steps[-2]) else ""))
+    return f"{what} [{' '.join(str(exc).split())[:200]}]"
+
+
+def thermal_preload_warnings(scene, warm: float, T: dict) -> list:
+    """The named warning of a warm preload beyond twice the cold one (:data:`thermobear.validity.LIMITS`
+    ``thermal_preload``), or none."""
+    with collect(replay=False) as got:
+        check("thermal_preload", warm / scene.preload_force, "bearing.preload_N",
+              what=f"{warm:.4g} N warm against {scene.preload_force:.4g} N cold, inner ring {T['inner ring']:.1f} °C, "
+                   f"outer ring {T['outer ring']:.1f} °C, balls {T['balls']:.1f} °C")
+    return list(got)
+
+
+class _Pair:
+    """One point's loop (module docstring): its cold loads, the loads used, the history."""
+
+    def __init__(self, scene, tol_N: float):
+        self.scene, self.tol, self.hist = scene, tol_N, []
+        self.kind = scene.preload_kind or "position"
+        self.offset = (pair_preload_offset(scene.bearing, scene.preload_force) if self.kind == "position" else None)
+        self.cold = self.used = self.loads_at(None)
+
+    def loads_at(self, T) -> PairLoads:
+        """The pair's loads at the temperatures ``T`` (None: the mounting temperature)."""
+        s, dT = self.scene, ({k: 0.0 for k in ("inner ring", "outer ring", "balls")} if T is None else
+                             {k: T[k] - T_REF_C for k in ("inner ring", "outer ring", "balls")})
+        return pair_loads(s.bearing, s.arrangement, s.preload_force, self.kind, s.Fa, s.Fr, dT_inner=dT["inner ring"],
+                          dT_outer=dT["outer ring"], dT_ball=dT["balls"], offset=self.offset)
+
+    def step(self, r):
+        """(the point's answer or error, None) or (None, the scene of the next step)."""
+        T = pair_temperatures(r.T_C, r.roles)
+        if self.kind == "spring":                  # a constant force: the cold loads are the loads
+            return self.answer(r, self.cold, T, self.scene.preload_force, 0.0), None
+        try:
+            g = self.loads_at(T)
+        except (InputError, SolverError) as exc:
+            e = _runaway(self.scene, self.hist, T, _warm_failure(exc, self.hist))
+            e.__cause__ = exc
+            return e, None
+        res = max(abs(g.Fa - self.used.Fa), abs(g.Fr - self.used.Fr))
+        self.hist.append(dict(iteration=len(self.hist) + 1, Fa_used_N=self.used.Fa, Fa_N=g.Fa, Fr_used_N=self.used.Fr,
+                              Fr_N=g.Fr, Fa_other_N=g.Fa_other, preload_N=g.preload, T_inner_ring_C=T["inner ring"],
+                              T_outer_ring_C=T["outer ring"], T_balls_C=T["balls"],
+                              dT_inner_outer_K=T["inner ring"] - T["outer ring"], P_W=r.P_W))
+        if res <= self.tol:
+            return self.answer(r, self.used, T, g.preload, res), None
+        if preload_step_runs_away(self.hist, self.tol):
+            return _runaway(self.scene, self.hist, T, "each step of the preload loop adds at least as much load as "
+                            "the last (the heat of the preload warms the inner ring and balls into more preload than "
+                            "it took: no fixed point)"), None
+        if len(self.hist) >= _MAXITER:
+            if g.Fa > self.used.Fa:
+                return _runaway(self.scene, self.hist, T, f"the preload loop still rises after {_MAXITER} steps"), None
+            return NoConvergence(f"pair preload: no fixed point within {_MAXITER} steps (last {self.used.Fa:.6g} → "
+                                 f"{g.Fa:.6g} N)", iterations=len(self.hist), residual=res, history=self.hist), None
+        self.used = g
+        return None, pair_scene(self.scene, g)
+
+    def stopped(self, r, T_last: dict):
+        """A step's error at a preload above the cold one — its steady state runs away or its contacts are
+        overloaded — as the preload's runaway (the error as its cause); other errors as they are."""
+        overload = isinstance(r, ContactLimit) or isinstance(r, InputError) and r.field == "Fa, Fr, M"
+        if not (isinstance(r, ThermalRunaway) or overload) or not self.used.Fa > self.cold.Fa:
+            return r
+        e = _runaway(self.scene, self.hist, T_last, f"the coupled steady state under Fa {self.used.Fa:.4g} N, Fr "
+                     f"{self.used.Fr:.4g} N has no solution ({type(r).__name__}: {' '.join(str(r).split())[:200]})")
+        e.__cause__ = r
+        return e
+
+    def answer(self, r, used: PairLoads, T: dict, warm: float, res: float):
+        """The point's state with its ``preload`` (loads used, warm preload, history) and its models_used entry."""
+        s, n = self.scene, max(len(self.hist), 1)
+        pre = dict(arrangement=s.arrangement, kind=self.kind, cold_N=s.preload_force, warm_N=warm,
+                   offset_um=None if self.offset is None else self.offset * 1e6, Fa_N=used.Fa, Fr_N=used.Fr,
+                   Fa_other_N=used.Fa_other, loaded=used.loaded, external_Fa_N=s.Fa, external_Fr_N=s.Fr,
+                   iterations=n, residual_N=res, history=list(self.hist), temperatures_C=dict(T))
+        how = (f"spring: a constant {s.preload_force:.4g} N (no thermal change)" if self.kind == "spring" else
+               f"position ({self.offset * 1e6:.3g} µm offset): {s.preload_force:.4g} N cold → {warm:.4g} N warm with the "
+               f"inner ring {T['inner ring']:.1f} °C, outer ring {T['outer ring']:.1f} °C, balls {T['balls']:.1f} °C "
+               f"(fixed point, {n} steps, residual {res:.1e} N)")
+        reason = (f"{s.arrangement.replace('_', '-')} pair, {how}; the loaded bearing carries Fa {used.Fa:.4g} N, "
+                  f"Fr {used.Fr:.4g} N (the pair under Fa {s.Fa:.4g} N, Fr {s.Fr:.4g} N; the other bearing Fa "
+                  f"{used.Fa_other:.4g} N; static form: no centrifugal term in the preload)")
+        warned = r.warnings + [w for w in thermal_preload_warnings(s, warm, T) if str(w) not in map(str, r.warnings)]
+        return dataclasses.replace(r, preload=pre, models_used={**r.models_used, "preload": (self.kind, reason)},
+                                   warnings=warned)
+
+
+def preload_loop(scenes, solve, *, tol_N: float = PRELOAD_TOL_N) -> list:
+    """The steady states of ``scenes``, the pair scenes' at their preload's fixed point (module docstring).
+
+    Parameters
+    ----------
+    scenes : list of Scene   the operating points (pair scenes and others)
+    solve : callable         ``solve(scenes) -> list`` of steady states or errors of single-bearing scenes
+    tol_N : float            fixed-point tolerance on the loaded bearing's loads [N]
+
+    Returns
+    -------
+    list   per point: the state of a scene without a pair as ``solve`` gives it (the scenes without a pair solved
+           in the first call, as given); of a pair scene the state of its loaded bearing at the fixed point
+           (``preload`` with the cold and warm preloads, the loads, ``iterations``, ``residual_N`` and the
+           ``history``), or the error that stopped it (:class:`~thermobear.errors.ThermalPreloadRunaway` where
+           the preload runs away)
+    """
+    out: list = [None] * len(scenes)
+    pairs, first = {}, {}
+    for i, sc in enumerate(scenes):
+        if sc.arrangement is None:
+            first[i] = sc
+            continue
+        try:
+            pairs[i] = _Pair(sc, tol_N)
+            first[i] = pair_scene(sc, pairs[i].cold)
+        except (InputError, SolverError) as exc:
+            out[i] = exc
+    for i, r in zip(first, solve(list(first.values()))):
+        out[i] = r
+    live = [i for i in pairs if not isinstance(out[i], Exception)]
+    while live:
+        nxt = {}
+        for i in live:
+            done, sc = pairs[i].step(out[i])
+            if done is not None:
+                out[i] = done
+            else:
+                nxt[i] = (sc, pair_temperatures(out[i].T_C, out[i].roles))
+        for i, r in zip(nxt, solve([sc for sc, _ in nxt.values()]) if nxt else ()):
+            out[i] = pairs[i].stopped(r, nxt[i][1])
+        live = [i for i in nxt if not isinstance(out[i], Exception)]
+    return out
+
+
+def preload_lines(p: dict | None) -> list:
+    """The text lines of a pair's preload (``SteadyState.preload``; none without)."""
+    if not p:
+        return []
+    head = (f"  preload ({p['arrangement'].replace('_', '-')} pair, {p['kind']}): cold {p['cold_N']:.4g} N, warm "
+            f"{p['warm_N']:.4g} N ({p['warm_N'] / p['cold_N']:.3g} × cold)")
+    if p["kind"] == "position":
+        head += f", fixed point in {p['iterations']} steps, residual {p['residual_N']:.1e} N"
+    T = p["temperatures_C"]
+    return [head, f"  loaded bearing: Fa {p['Fa_N']:.4g} N, Fr {p['Fr_N']:.4g} N (the other Fa {p['Fa_other_N']:.4g} N) "
+                  f"under the pair's Fa {p['external_Fa_N']:.4g} N, Fr {p['external_Fr_N']:.4g} N; inner ring "
+                  f"{T['inner ring']:.1f} °C, outer ring {T['outer ring']:.1f} °C, balls {T['balls']:.1f} °C"]

@@ -1,0 +1,166 @@
+r"""A preloaded pair of equal angular contact bearings: its position preload from the cold preload force, and the
+loads of its loaded bearing with warm rings and balls.
+
+Spindle bearings are mounted in pairs, back to back or face to face, and preloaded cold (Harris & Kotzalas 2007
+[1] ch. 8): by position (ground faces or spacers push each inner ring δ/2 beyond first touch) or by a spring (a
+constant force F_s).  Catalogues state the preload as a force F_0, the axial load each bearing carries at mounting
+without external load.  By symmetry the shaft of an unloaded pair stays where it was mounted, so each bearing is
+a bearing under the pure axial load F_0, and the pair's offset is
+
+.. math:: δ = 2\,\bigl(δ_a(F_0) − A \sin α_0\bigr)
+
+with δ_a(F_0) the axial displacement of the inner ring from the centred position under F_0
+(:func:`thermobear.loads.static.load_distribution_static`) and A sin α0 its axial travel to first touch: the
+exact inverse of :func:`thermobear.loads.sets.bearing_set`'s ``preload_offset`` for the force.  Warm, the inner
+ring (with the shaft) ΔT_i, the outer ring (with the housing) ΔT_o and the balls ΔT_b above the mounting
+temperature, the rings and balls grow ([1] ch. 3), the groove centres move and the position preload follows
+(:func:`thermobear.loads.sets.warm_supports`); a spring keeps its force.
+
+This is the low-speed (static) form of the pair: the centrifugal force of the balls and the centrifugal growth of
+the inner ring are not in the preload (the high-speed form of the loaded bearing's own equilibrium, in the coupled
+steady state, has the balls' centrifugal force at the loads given here).
+
+References
+----------
+.. [1] Harris, T. A. & Kotzalas, M. N. (2007). *Essential Concepts of Bearing Technology*, 5th ed., CRC Press,
+   ch. 3 (thermal expansion), ch. 7 (the load–deflection of a ball bearing under axial load) and ch. 8 (bearing
+   deflection and preloading: duplex pairs, position and spring preload).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from thermobear.contact.geometry import BallBearing
+from thermobear.errors import InputError
+from thermobear.loads.sets import ARRANGEMENTS, bearing_set
+from thermobear.loads.static import load_distribution_static
+
+__all__ = ["PairLoads", "pair_preload_offset", "pair_loads"]
+
+
+@dataclass(frozen=True)
+class PairLoads:
+    """The loads of a preloaded pair at given ring and ball temperatures.
+
+    Attributes
+    ----------
+    Fa, Fr : float      axial and radial load of the loaded bearing (the larger axial load) [N]
+    loaded : int        which bearing of :func:`~thermobear.loads.sets.bearing_set` it is (0 at −B/2, 1 at +B/2)
+    Fa_other : float    the other bearing's axial load [N]
+    preload : float     the pair's preload at these temperatures without external load: each bearing's axial
+                        load [N] (the two alike by symmetry)
+    offset : float | None  the position preload δ [m] (None: a spring preload)
+    """
+
+    Fa: float
+    Fr: float
+    loaded: int
+    Fa_other: float
+    preload: float
+    offset: float | None
+
+
+def pair_preload_offset(brg: BallBearing, preload, *, stiffness: str = "nominal") -> float:
+    r"""The position preload δ [m] of a pair whose bearings each carry ``preload`` [N] cold, without external load
+    (module docstring: δ = 2 (δ_a(F_0) − A sin α0)).
+
+    Parameters
+    ----------
+    brg : BallBearing   the bearing of both rows (angular contact)
+    preload : float     the cold preload F_0, each bearing's axial load [N], > 0
+    stiffness : str     as :func:`thermobear.loads.load_distribution`
+
+    Returns
+    -------
+    float               the total axial offset of the pair beyond first touch [m]
+
+    Examples
+    --------
+    A 7205B pair preloaded to 470 N: about the 10 µm of :func:`~thermobear.loads.sets.bearing_set`'s example (whose
+    preload, 469.5 N, is rounded there); set back, the offset gives the force.
+
+    >>> from thermobear.contact.geometry import bearing
+    >>> from thermobear.loads.sets import bearing_set
+    >>> d = pair_preload_offset(bearing("7205B"), 470.0)
+    >>> round(d * 1e6, 2), [round(float(F), 9) for F in bearing_set(bearing("7205B"), preload_offset=d).preload]
+    (10.01, [470.0, 470.0])
+    """
+    if brg.kind != "angular_contact":
+        raise InputError("bearing.arrangement", brg.kind, "a preloaded pair needs angular contact bearings")
+    F0 = float(preload)
+    if not (np.isfinite(F0) and F0 > 0):
+        raise InputError("bearing.preload_N", preload, "the cold preload must be finite and > 0 [N]")
+    ld = load_distribution_static(brg, Fa=F0, Fr=0.0, stiffness=stiffness)
+    return float(2.0 * (float(ld.delta_a) - brg.A * np.sin(brg.alpha0)))
+
+
+def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "position", Fa=0.0, Fr=0.0, *,
+               dT_inner: float = 0.0, dT_outer: float = 0.0, dT_ball: float | None = None,
+               offset: float | None = None, stiffness: str = "nominal") -> PairLoads:
+    r"""The loads of a preloaded pair's loaded bearing, and the pair's preload, with warm rings and balls.
+
+    Parameters
+    ----------
+    brg : BallBearing   the bearing of both rows (angular contact, with its width)
+    arrangement : str   ``"back_to_back"`` or ``"face_to_face"``
+    preload : float     the cold preload F_0 [N] (each bearing's axial load at mounting, no external load)
+    kind : str          ``"position"`` (ground faces or spacers) or ``"spring"`` (constant force)
+    Fa, Fr : float      external axial load on the shaft and radial load at the pair's centre [N] (≥ 0; the
+                        axial load towards the bearing whose outer ring is held: the spring yields to none)
+    dT_inner, dT_outer, dT_ball : float  rises of the inner rings (with the shaft), outer rings (with the housing)
+                        and balls above the mounting temperature [K] (dT_ball default: the rings' mean)
+    offset : float      the position preload δ [m] (default :func:`pair_preload_offset` of ``preload``)
+    stiffness : str     as :func:`thermobear.loads.load_distribution`
+
+    Returns
+    -------
+    PairLoads
+
+    Raises
+    ------
+    InputError     bad input; loads the warm contacts cannot carry (named ``Fa, Fr, M (shaft loads)``); a warm
+                   bearing with no clearance left (``dT_inner``: its contact angle would pass 0)
+    NoEquilibrium, NoConvergence   as :func:`~thermobear.loads.sets.shaft_loads`
+
+    Notes
+    -----
+    One :func:`~thermobear.loads.sets.bearing_set` call on two load cases, the external loads and none (rigid rings,
+    low speed: the centrifugal effects are not in the preload).  The loaded bearing's tilting moment in the pair is
+    not returned: a single-bearing scene holds its tilt.
+
+    Examples
+    --------
+    A 7014C back-to-back pair preloaded to 300 N cold: the inner rings 10 K warmer than the outer rings raise the
+    preload (the balls at the rings' mean).
+
+    >>> from thermobear.contact.geometry import bearing
+    >>> b = bearing("7014C")
+    >>> cold = pair_loads(b, "back_to_back", 300.0, Fr=2020.0)
+    >>> warm = pair_loads(b, "back_to_back", 300.0, Fr=2020.0, dT_inner=20.0, dT_outer=10.0)
+    >>> round(cold.preload, 6), round(cold.Fa), round(cold.Fr), round(warm.preload)
+    (300.0, 431, 1010, 1381)
+    """
+    if arrangement not in ("back_to_back", "face_to_face"):
+        raise InputError("bearing.arrangement", arrangement, "back_to_back or face_to_face")
+    if kind not in ("position", "spring"):
+        raise InputError("bearing.preload", kind, "position or spring")
+    for name, v in (("Fa", Fa), ("Fr", Fr)):
+        if not (np.isfinite(v) and v >= 0):
+            raise InputError(name, v, "must be finite and >= 0 [N]")
+    if kind == "spring":
+        pre = dict(preload_force=float(preload))
+        offset = None
+        if not (np.isfinite(pre["preload_force"]) and pre["preload_force"] > 0):
+            raise InputError("bearing.preload_N", preload, "the spring force must be finite and > 0 [N]")
+    else:
+        offset = pair_preload_offset(brg, preload, stiffness=stiffness) if offset is None else float(offset)
+        pre = dict(preload_offset=offset)
+    towards = ARRANGEMENTS[arrangement][0]          # the axial load on the first (held) bearing
+    s = bearing_set(brg, arrangement, [towards * float(Fa), 0.0], [float(Fr), 0.0], **pre, dT_inner=dT_inner,
+                    dT_outer=dT_outer, dT_ball=dT_ball, stiffness=stiffness)
+    R = s.reactions                                 # (2 cases, 2 bearings, 5)
+    k = int(np.argmax(R[0, :, 0]))
+    return PairLoads(Fa=float(R[0, k, 0]), Fr=float(np.hypot(R[0, k, 1], R[0, k, 3])), loaded=k,
+                     Fa_other=float(R[0, 1 - k, 0]), preload=float(R[1, :, 0].mean()), offset=offset)
