@@ -2,12 +2,14 @@
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 import pytest
 from scipy.special import ellipk
 
+import thermobear as tb
 from thermobear.files import data_dir, read_toml
 from thermobear.errors import InputError, NoConvergence
 from thermobear.thermal import (prepare_network, load_network, network_names, solve_steady, solve_transient,
@@ -620,3 +622,27 @@ def test_the_output_pass_in_chunks_equals_one_call(monkeypatch):
     np.testing.assert_allclose(chunked.P_W, whole.P_W, rtol=1e-12)
     for k, v in whole.breakdown_W.items():
         np.testing.assert_allclose(chunked.breakdown_W[k], v, rtol=1e-12, atol=1e-15)
+
+
+def test_forced_plate_convection_takes_temperatures_per_operating_point():
+    """ht's laminar flat-plate law branches on Pr with a scalar `if`: film temperatures of several stacked points (the
+    alternatives of a point in a model-switch band) made it raise ValueError, and a built machine with forced air
+    stopped with an internal error there.  Elementwise now, equal to the scalar calls."""
+    from thermobear.thermal.convection import h_forced_plate
+    T = np.array([300.0, 320.0, 360.0])
+    got = np.asarray(h_forced_plate(2.0, 0.1, T, 300.0))
+    np.testing.assert_allclose(got, [h_forced_plate(2.0, 0.1, float(t), 300.0) for t in T], rtol=1e-15)
+    assert np.all(np.diff(got) < 0)                     # warmer film air: a thicker, more viscous boundary layer
+
+
+def test_a_forced_air_machine_in_a_switch_band_solves(tmp_path):
+    from thermobear.app.cli import main
+    path = tmp_path / "s.toml"
+    assert main(["init", "7014C", "--lubrication", "oil-air", "--speed-rpm", "4000", "--out", str(path)]) == 0
+    text = path.read_text(encoding="utf-8").replace('air = "still"', 'air = "forced"\nair_speed_m_s = 30.0')
+    path.write_text(text, encoding="utf-8")
+    s = tb.load_scene(path).with_(Fa=431.0, Fr=1010.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        st = tb.steady_state(s)
+    assert "blend" in st.models_used and st.P_W > 0 and abs(st.residual_K) < 1e-6

@@ -71,6 +71,8 @@ HARRIS_COEFFICIENTS = {
 
 #: ht's horizontal-plate law (scalar branches) over arrays
 _NU_HORIZONTAL_PLATE = np.vectorize(Nu_horizontal_plate_VDI, otypes=[float])
+#: ht's laminar flat-plate law in parallel flow (branches on Pr) over arrays
+_NU_PLATE_LAMINAR = np.vectorize(Nu_horizontal_plate_laminar_Baehr, otypes=[float])
 
 
 def h_harris(k, Pr, u, nu, x, coefficient="harris"):
@@ -246,11 +248,13 @@ def h_forced_plate(u_inf, L, T_s_K, T_inf_K):
     --------
     >>> round(h_forced_plate(2.0, 0.1, 320.0, 300.0), 2)    # laminar: 0.664 Re^½ Pr^⅓ k/L
     17.55
+    >>> [round(float(h), 2) for h in h_forced_plate(2.0, 0.1, [320.0, 340.0], 300.0)]   # film temperatures per point
+    [17.55, 17.51]
     """
     L, u = checked("L_m", L), checked("u_air_m_s", u_inf)
     _, air = _film_air(T_s_K, T_inf_K)
     Re = u * L / air["nu"]
-    Nu = np.where(Re < 5e5, Nu_horizontal_plate_laminar_Baehr(Re, air["Pr"]),
+    Nu = np.where(Re < 5e5, _NU_PLATE_LAMINAR(Re, air["Pr"]),
                   Nu_horizontal_plate_turbulent_Schlichting(np.maximum(Re, 5e5), air["Pr"]))
     return _out(Nu * air["k"] / L)
 
