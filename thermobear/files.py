@@ -20,11 +20,19 @@ _PKG = Path(__file__).resolve().parent
 
 
 def data_dir(kind: str) -> Path:
-    """Folder of a data kind: ``"materials"`` or ``"networks"``."""
-    for base in (_PKG / "_data" / kind, _PKG.parent / kind):
-        if base.is_dir():
-            return base
-    raise FileNotFoundError(f"thermobear data folder '{kind}' not found next to the package")
+    """Folder of a data kind: ``"materials"`` or ``"networks"`` (found once per process: the package does not
+    move while it runs; part of the file catalogue, as :data:`_PARSED`)."""
+    got = _DIRS.get(kind)
+    if got is None:
+        got = next((b for b in (_PKG / "_data" / kind, _PKG.parent / kind) if b.is_dir()), None)
+        if got is None:
+            raise FileNotFoundError(f"thermobear data folder '{kind}' not found next to the package")
+        _DIRS[kind] = got
+    return got
+
+
+#: The data folders found, by kind (:func:`data_dir`).
+_DIRS: dict = {}
 
 
 def read_toml(path: str) -> dict:
