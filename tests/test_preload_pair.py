@@ -262,3 +262,24 @@ def test_run_names_the_runaway_exit_3(tmp_path, capsys):
     assert main(["run", str(path), "--set", "n_rpm=6500"]) == 3
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("error: ThermalPreloadRunaway: thermal preload runaway")
+
+
+def test_init_writes_a_pair_scene_that_run_solves_to_the_examples_answer(tmp_path, capsys):
+    """`thermobear init 7014C --lubrication oil-air --speed-rpm 12000 --pair back_to_back --preload-N 300` writes the
+    pair's keys and no external axial load (the preload sets the contacts); it is the bundled example scene, and
+    `run` solves its thermal preload.  Bad options are refused naming them."""
+    from thermobear.app.cli import main
+    out = tmp_path / "pair.toml"
+    assert main(["init", "7014C", "--lubrication", "oil-air", "--speed-rpm", "12000", "--pair", "back_to_back",
+                 "--preload-N", "300", "--out", str(out)]) == 0
+    text = out.read_text(encoding="utf-8")
+    assert 'arrangement = "back_to_back"' in text and "preload_N = 300.0" in text and "Fa_N = 0.0" in text
+    example = tb.example_path("spindle_7014C_pair_oil_air.toml")
+    assert text.split("\n", 1)[1] == open(example, encoding="utf-8").read().split("\n", 1)[1]   # (header: command)
+    capsys.readouterr()
+    for bad, field in ((["6208", "--pair", "back_to_back", "--preload-N", "300"], "--pair"),
+                       (["7014C", "--preload-N", "300"], "--preload-N"),
+                       (["7014C", "--pair", "back_to_back"], "--preload-N"),
+                       (["7014C", "--pair", "back_to_back", "--preload-N", "-5"], "--preload-N")):
+        assert main(["init", *bad, "--lubrication", "oil-air"]) == 2
+        assert f"error: {field}" in capsys.readouterr().err

@@ -236,6 +236,10 @@ def build_parser() -> argparse.ArgumentParser:
                     "load given: 0 for a deep groove bearing, the axial reaction 1.25 Fr tan(alpha0) of an angular "
                     "contact bearing's half load zone, ISO 15312's 0.02 C0 for a thrust bearing; with --Fr-N alone: "
                     "0, refused for an angular contact bearing)")
+    it.add_argument("--pair", choices=["back_to_back", "face_to_face"], help="an angular contact bearing as one of a "
+                    "preloaded pair (a spindle's set): its thermal preload is solved with the temperatures")
+    it.add_argument("--preload-N", dest="preload_N", type=float, metavar="F", help="the pair's cold mounted preload "
+                    "[N] (with --pair; the maker's light, medium or heavy preload of the set)")
     it.add_argument("--out", metavar="FILE", help="write the scene to FILE (default: print it)")
     it.set_defaults(func=cmd_init)
 

@@ -40,6 +40,7 @@ from thermobear.losses.seals import BALL_SEALS, seal_constants
 from thermobear.losses.skf import K_RS
 from thermobear.lubrication.lubricant import lubricant, lubricant_names
 from thermobear.rating.life import load_ratings, stated_ratings
+from thermobear.scene.pair import PAIR_ARRANGEMENTS
 from thermobear.scene import Scene, scene_from_dict
 from thermobear.thermal.builders.layout import H_MOUNT_W_M2K, layout
 
@@ -116,7 +117,28 @@ def _sig(x: float, digits: int = 2) -> float:
     return float(f"{x:.{digits}g}") if x > 0 else 0.0
 
 
-def _operation(brg, ref: ReferenceSpeed | None, n_rpm, Fr_N, Fa_N) -> list:
+def _pair_rows(brg: BallBearing, pair, preload_N) -> list:
+    """The [bearing] rows of a preloaded pair (``--pair``, ``--preload-N``), or none; refused naming the option."""
+    if pair is None:
+        if preload_N is not None:
+            raise InputError("--preload-N", preload_N, "a preload needs its pair: give --pair back_to_back or face_to_face")
+        return []
+    if pair not in PAIR_ARRANGEMENTS:
+        raise InputError("--pair", pair, f"one of {', '.join(PAIR_ARRANGEMENTS)}")
+    if brg.kind != "angular_contact":
+        raise InputError("--pair", pair, f"a preloaded pair of angular contact bearings; {brg.name} is {brg.kind}")
+    _check_number("--preload-N", preload_N, True)
+    if preload_N is None:
+        raise InputError("--preload-N", None, "a pair needs its cold mounted preload, > 0 [N] (the maker's light, "
+                         "medium or heavy preload of the set)")
+    return [("arrangement", pair, "one bearing of a symmetric pair (--pair); the loaded one of the two is solved, both at "
+             "the same temperatures (thermobear.scene.pair)"),
+            ("preload_N", float(preload_N), "N: the pair's cold mounted preload (--preload-N), a position preload: it "
+             "follows the rings' and balls' temperatures (coupled.preload)"),
+            ("preload", "position", "position (rigid: ground faces or spacers) | spring (a constant force)")]
+
+
+def _operation(brg, ref: ReferenceSpeed | None, n_rpm, Fr_N, Fa_N, pair: bool = False) -> list:
     rows = []
     if n_rpm is None:
         n = _sig(SPEED_FRACTION * ref.n_rpm)
@@ -137,13 +159,16 @@ def _operation(brg, ref: ReferenceSpeed | None, n_rpm, Fr_N, Fa_N) -> list:
         src_fa = {"thrust": f"N: 0.02 C0, ISO 15312 reference load of thrust bearings, {C0}",
                   "angular_contact": "N: 1.25 Fr tan(alpha0), the axial reaction of a half load zone (Sjövall; Harris "
                                      "& Kotzalas 2007): a single angular contact bearing needs it"}.get(brg.kind)
-        rows.append(("Fa_N", _sig(fa, 3), src_fa if fa > 0 else "N: none (radial reference load)"))
+        if pair:                          # the preload, not an external axial load, sets a pair's contacts
+            fa, src_fa = 0.0, None
+        rows.append(("Fa_N", _sig(fa, 3), src_fa if fa > 0 else "N: none (radial reference load)" if not pair else
+                     "N: no external axial load on the pair (its preload sets the contacts)"))
         rows.append(("Fr_N", _sig(fr, 3), src_fr if fr > 0 else "N: none (axial reference load)"))
     else:
         if brg.kind == "thrust" and (Fr_N or not Fa_N):
             raise InputError("--Fr-N" if Fr_N else "--Fa-N", Fr_N or Fa_N, "a thrust ball bearing carries an axial load "
                              "only: give --Fa-N > 0 and no --Fr-N")
-        if brg.kind == "angular_contact" and not Fa_N:
+        if brg.kind == "angular_contact" and not Fa_N and not pair:
             raise InputError("--Fa-N", Fa_N, "a single angular contact bearing needs an axial load against its "
                              "shoulder: give --Fa-N (the axial reaction or preload of the arrangement)")
         rows.append(("Fa_N", float(Fa_N or 0.0), "N: given (--Fa-N)" if Fa_N is not None else "N: 0 (only --Fr-N given)"))
@@ -357,7 +382,7 @@ def _skf_hint(scene) -> str:
 
 
 def scaffold(name: str, lubrication: str, *, oil: str | None = None, housing: str = "block", n_rpm=None, Fr_N=None,
-             Fa_N=None, command: str | None = None) -> str:
+             Fa_N=None, pair: str | None = None, preload_N=None, command: str | None = None) -> str:
     """The commented scene TOML of a catalogue bearing in a parametric machine (see the module docstring).
 
     Parameters
@@ -367,7 +392,9 @@ def scaffold(name: str, lubrication: str, *, oil: str | None = None, housing: st
     oil : str             lubricant name (default: ISO 15312's reference oil or grease)
     housing : str         ``block``, ``pillow`` or ``flange``
     n_rpm : float         speed [r/min] (default: half the thermal reference speed)
-    Fr_N, Fa_N : float    loads [N] (default: ISO 15312's reference load)
+    Fr_N, Fa_N : float    loads [N] (default: ISO 15312's reference load; a pair: no external axial load)
+    pair : str            an angular contact bearing as one of a preloaded pair, ``back_to_back`` or ``face_to_face``
+                          (:mod:`thermobear.scene.pair`), with ``preload_N`` its cold mounted preload [N]
     command : str         the command line, recorded in the header
 
     Returns
@@ -388,6 +415,7 @@ def scaffold(name: str, lubrication: str, *, oil: str | None = None, housing: st
     _check_number("--Fr-N", Fr_N, False)
     _check_number("--Fa-N", Fa_N, False)
     brg, closure = _bearing(name)
+    pair_rows = _pair_rows(brg, pair, preload_N)
     missing = [f"{k}_mm" for k in ("bore", "outer_diameter", "width") if getattr(brg, k) is None]
     if missing:
         raise InputError("bearing", name, f"a bundled bearing without boundary dimensions ({', '.join(missing)}): a "
@@ -397,8 +425,9 @@ def scaffold(name: str, lubrication: str, *, oil: str | None = None, housing: st
     oil, oil_src = _lubricant(oil, supply, brg)
     _check_loads(brg, oil, supply, Fa_N, Fr_N)
     ref = _reference_speed(brg) if (n_rpm is None or supply == "oil_jet") else None
-    rows = {"bearing": _bearing_rows(brg) + closure, "lubricant": _lubrication(brg, supply, oil, oil_src, ref),
-            "operation": _operation(brg, ref, n_rpm, Fr_N, Fa_N),
+    rows = {"bearing": _bearing_rows(brg) + closure + pair_rows,
+            "lubricant": _lubrication(brg, supply, oil, oil_src, ref),
+            "operation": _operation(brg, ref, n_rpm, Fr_N, Fa_N, bool(pair_rows)),
             "thermal": [("T_ambient_C", T_AMBIENT_REF_C, "°C: ISO 15312 reference ambient; network = \"parametric\" "
                          "is implied by [shaft] / [housing]"),
                         ("uncertainty.T_ambient_C", {"offset": [-5.0, 5.0], "source": "reasoning: the machine's room is "

@@ -237,9 +237,10 @@ def cmd_init(args):
     cmd = " ".join(["thermobear init", args.bearing, "--lubrication", args.lubrication]
                    + [f"{flag} {v:g}" if isinstance(v, float) else f"{flag} {v}" for flag, v in
                       (("--oil", args.oil), ("--housing", args.housing), ("--speed-rpm", args.speed_rpm),
-                       ("--Fr-N", args.Fr_N), ("--Fa-N", args.Fa_N)) if v is not None])
+                       ("--Fr-N", args.Fr_N), ("--Fa-N", args.Fa_N), ("--pair", args.pair),
+                       ("--preload-N", args.preload_N)) if v is not None])
     text = scaffold(args.bearing, args.lubrication, oil=args.oil, housing=args.housing, n_rpm=args.speed_rpm,
-                    Fr_N=args.Fr_N, Fa_N=args.Fa_N, command=cmd)
+                    Fr_N=args.Fr_N, Fa_N=args.Fa_N, pair=args.pair, preload_N=args.preload_N, command=cmd)
     if out is None:
         print(text, end="")
     else:
