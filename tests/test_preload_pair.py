@@ -3,6 +3,7 @@ thermobear.loads.pair, thermobear.coupled.preload): the cold offset, the warm pa
 coupled steady state, its runaway, bad input and the command line."""
 import json
 import tomllib
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -283,3 +284,14 @@ def test_init_writes_a_pair_scene_that_run_solves_to_the_examples_answer(tmp_pat
                        (["7014C", "--pair", "back_to_back", "--preload-N", "-5"], "--preload-N")):
         assert main(["init", *bad, "--lubrication", "oil-air"]) == 2
         assert f"error: {field}" in capsys.readouterr().err
+
+
+def test_sweep_rows_of_a_pair_carry_its_warm_preload():
+    from thermobear.app.sweep import run_sweep
+    s = tb.load_scene(tb.example_path("spindle_7014C_pair_oil_air.toml"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        st = tb.steady_state(s)
+        row = run_sweep(s, {"n_rpm": [s.n_rpm]}, processes=1)[0]
+    assert row["preload_cold_N"] == 300.0 and row["preload_warm_N"] == pytest.approx(st.preload["warm_N"], rel=1e-9)
+    assert row["preload_warm_N"] > 2 * row["preload_cold_N"] and any("warm / cold preload" in w for w in row["warnings"])

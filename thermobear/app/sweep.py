@@ -28,7 +28,7 @@ Each row holds the grid values and ``P_W`` [W], ``torque_Nm`` [N m], ``breakdown
 class), ``reason``, ``iterations``, ``residual_K`` and ``warnings`` (the OutsideValidity messages);
 and the ratings `run` gives at their temperatures, ``L10m_h`` [h], ``kappa`` [-], ``s0`` [-] and
 ``clearance_operating_um`` [µm], with the ratings' warnings (a clearance consumed into a preload, a low κ, a load
-below the minimum).
+below the minimum); a preloaded pair's coupled rows ``preload_cold_N`` and ``preload_warm_N`` [N].
 """
 from __future__ import annotations
 
@@ -102,6 +102,9 @@ def _row(point: dict, sc: Scene, st=None, exc=None) -> dict:
                iterations=int(st.iterations), residual_K=float(st.residual_K),
                warnings=[str(w) for w in st.warnings])
     row.update(_ratings_columns(sc, st, row["warnings"]))
+    pre = getattr(st, "preload", None)                  # a preloaded pair: its warm preload at the point
+    if pre:
+        row.update(preload_cold_N=float(pre["cold_N"]), preload_warm_N=float(pre["warm_N"]))
     return row
 
 

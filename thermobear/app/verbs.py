@@ -462,7 +462,8 @@ def _sweep_header(scene, grid) -> list:
     if prescribed:
         nodes.append("contacts (prescribed)")
     bd = SKF_BREAKDOWN_KEYS if scene.models.get("losses") == "skf" else BREAKDOWN_KEYS
-    rated = ["L10m_h", "kappa", "s0", "clearance_operating_um"]
+    rated = ["L10m_h", "kappa", "s0", "clearance_operating_um"] + (
+        ["preload_cold_N", "preload_warm_N"] if coupled and getattr(scene, "arrangement", None) else [])
     return (list(grid) + ["status", "reason", "P_W", "torque_Nm", "T_ball_C"] + rated + ["iterations", "residual_K"]
             + [f"breakdown_W.{k}" for k in bd] + [f"temperatures_C.{n}" for n in nodes]
             + [f"models.{k}" for k in _MODEL_COLUMNS] + ["warnings"])
