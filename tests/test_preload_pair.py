@@ -295,3 +295,26 @@ def test_sweep_rows_of_a_pair_carry_its_warm_preload():
         row = run_sweep(s, {"n_rpm": [s.n_rpm]}, processes=1)[0]
     assert row["preload_cold_N"] == 300.0 and row["preload_warm_N"] == pytest.approx(st.preload["warm_N"], rel=1e-9)
     assert row["preload_warm_N"] > 2 * row["preload_cold_N"] and any("warm / cold preload" in w for w in row["warnings"])
+
+
+def test_a_lost_preload_and_the_static_form_at_speed_are_named():
+    """At 20 000 rpm the example's outer ring runs 23 K above its inner ring and the pair's preload goes to 0 N: the
+    run gave it as a fixed point with no word of the play; now named (warm / cold below 0.5, 'the pair has play').
+    At a speed where the bearing takes the high-speed form, the answer says that the pair's preload is the static
+    form's (no centrifugal terms); a spring preload does not get that warning."""
+    s = tb.load_scene(tb.example_path("spindle_7014C_pair_oil_air.toml"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        fast = tb.steady_state(s.with_(n_rpm=20000.0))
+        spring = tb.steady_state(s.with_(preload="spring"))
+    texts = [str(w) for w in fast.warnings]
+    assert fast.preload["warm_N"] < 0.5 * fast.preload["cold_N"]
+    assert any("the pair has play" in t for t in texts) and fast.preload["warm_N"] == 0.0
+    assert fast.models_used["high_speed"][0] == "yes" and any("pair preload, static form" in t for t in texts)
+    assert not any("pair preload, static form" in str(w) for w in spring.warnings)
+
+
+def test_din732_refuses_a_pair_scene_by_name():
+    from thermobear.coupled.speeds import din732_safe_speed
+    with pytest.raises(InputError, match="bearing.arrangement"):
+        din732_safe_speed(tb.load_scene(tb.example_path("spindle_7014C_pair_oil_air.toml")))

@@ -24,7 +24,7 @@ The limits (the README's table is :func:`limits_table`, with the reasoning and s
 | static safety s0 | – | < 0.5 | < 1 |
 | viscosity ratio κ = ν/ν1 | – | – | < 0.1 |
 | operating radial clearance | µm | – | < 0 |
-| warm / cold preload of a position-preloaded pair | – | – | > 2 |
+| warm / cold preload of a position-preloaded pair | – | – | outside [0.5, 2] |
 | load (Fa, Fr or M/ℜ_i), when not 0 | N | < 1e-06 | – |
 | speed, when not 0 | rpm | < 1e-06 | – |
 | load / SKF's minimum load, radial (deep groove) or axial (angular contact, thrust) | – | – | < 1 |
@@ -160,11 +160,13 @@ LIMITS = {
                "7), whose load and heat grow as the inner ring warms (the models' data are of bearings with a "
                "clearance)"),
     "thermal_preload": Limit(
-        "warm / cold preload of a position-preloaded pair", "-", (None, None), (None, 2.0),
+        "warm / cold preload of a position-preloaded pair", "-", (None, None), (0.5, 2.0),
         source="reasoning: the rings and balls warmer than at mounting, the inner ring above the outer, raise a "
                "position preload (Harris & Kotzalas 2007 ch. 3, 8); beyond twice the mounted one the bearing runs "
                "a preload class heavier than chosen (the makers' light, medium and heavy preloads step by about 2) "
-               "and its heat grows with it: the runaway of spindle bearings"),
+               "and its heat grows with it: the runaway of spindle bearings; below half of it (a shaft growing "
+               "axially more than the housing, a cold inner ring) a preload class lighter, at 0 the pair has play: "
+               "its balls may skid and the spindle loses stiffness"),
     "load": Limit(
         "load (Fa, Fr or M/ℜ_i), when not 0", "N", (1e-6, None), (None, None),
         source="below 1 µN the Hertz approach of a ball, (Q/K)^(2/3) with K ≈ 1e10 N/m^1.5, is below a tenth of "

@@ -239,7 +239,8 @@ def build_parser() -> argparse.ArgumentParser:
     it.add_argument("--pair", choices=["back_to_back", "face_to_face"], help="an angular contact bearing as one of a "
                     "preloaded pair (a spindle's set): its thermal preload is solved with the temperatures")
     it.add_argument("--preload-N", dest="preload_N", type=float, metavar="F", help="the pair's cold mounted preload "
-                    "[N] (with --pair; the maker's light, medium or heavy preload of the set)")
+                    "[N] (with --pair; as mounted: a maker's light, medium or heavy preload is the unmounted set's, "
+                    "its seats' fits add to it)")
     it.add_argument("--out", metavar="FILE", help="write the scene to FILE (default: print it)")
     it.set_defaults(func=cmd_init)
 

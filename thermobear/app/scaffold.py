@@ -129,12 +129,12 @@ def _pair_rows(brg: BallBearing, pair, preload_N) -> list:
         raise InputError("--pair", pair, f"a preloaded pair of angular contact bearings; {brg.name} is {brg.kind}")
     _check_number("--preload-N", preload_N, True)
     if preload_N is None:
-        raise InputError("--preload-N", None, "a pair needs its cold mounted preload, > 0 [N] (the maker's light, "
-                         "medium or heavy preload of the set)")
+        raise InputError("--preload-N", None, "a pair needs its cold mounted preload, > 0 [N] (as mounted: a maker's "
+                         "light, medium or heavy preload is the unmounted set's)")
     return [("arrangement", pair, "one bearing of a symmetric pair (--pair); the loaded one of the two is solved, both at "
              "the same temperatures (thermobear.scene.pair)"),
-            ("preload_N", float(preload_N), "N: the pair's cold mounted preload (--preload-N), a position preload: it "
-             "follows the rings' and balls' temperatures (coupled.preload)"),
+            ("preload_N", float(preload_N), "N: the pair's cold preload as mounted (--preload-N; a maker's class is the "
+             "unmounted set's, the seats' fits add to it), a position preload: it follows the temperatures"),
             ("preload", "position", "position (rigid: ground faces or spacers) | spring (a constant force)")]
 
 

@@ -43,7 +43,8 @@ import dataclasses
 
 from thermobear.contact.fits import T_REF_C
 from thermobear.coupled.ratings import _node_T
-from thermobear.errors import ContactLimit, InputError, NoConvergence, SolverError, ThermalPreloadRunaway, ThermalRunaway
+from thermobear.errors import (ContactLimit, InputError, NoConvergence, OutsideValidity, SolverError,
+                               ThermalPreloadRunaway, ThermalRunaway)
 from thermobear.loads.pair import PairLoads, pair_loads, pair_preload_offset
 from thermobear.validity import check, collect
 
@@ -134,14 +135,25 @@ def _warm_failure(exc, hist: list) -> str:
     return f"{what} [{' '.join(str(exc).split())[:200]}]"
 
 
-def thermal_preload_warnings(scene, warm: float, T: dict) -> list:
-    """The named warning of a warm preload beyond twice the cold one (:data:`thermobear.validity.LIMITS`
-    ``thermal_preload``), or none."""
+def thermal_preload_warnings(scene, warm: float, T: dict, high_speed: bool = False) -> list:
+    """The named warnings of a pair's warm preload (:data:`thermobear.validity.LIMITS` ``thermal_preload``): beyond
+    twice the cold one, below half of it (0: the pair has play), and — ``high_speed``, the bearing solved in the
+    high-speed form — that the pair's preload is the static form's, without the balls' centrifugal force and the
+    inner ring's centrifugal growth, which both change it at that speed."""
+    lost = "; the pair has play (no preload left)" if warm <= 0.0 else ""
     with collect(replay=False) as got:
         check("thermal_preload", warm / scene.preload_force, "bearing.preload_N",
               what=f"{warm:.4g} N warm against {scene.preload_force:.4g} N cold, inner ring {T['inner ring']:.1f} °C, "
-                   f"outer ring {T['outer ring']:.1f} °C, balls {T['balls']:.1f} °C")
-    return list(got)
+                   f"outer ring {T['outer ring']:.1f} °C, balls {T['balls']:.1f} °C{lost}")
+    out = list(got)
+    if high_speed:
+        out.append(OutsideValidity(
+            "pair preload, static form: the bearing runs in the high-speed form (the balls' centrifugal force matters "
+            "at this speed), but the pair's preload is the low-speed load–deflection's — the centrifugal force on the "
+            "balls and the inner ring's centrifugal growth, which change a position preload at speed, are not in it",
+            quantity="pair preload form", value="static", limit="the high-speed form not chosen",
+            source="thermobear.loads.pair (Harris & Kotzalas 2007 ch. 8, the static pair)", field="bearing.arrangement"))
+    return out
 
 
 class _Pair:
@@ -215,7 +227,8 @@ class _Pair:
         reason = (f"{s.arrangement.replace('_', '-')} pair, {how}; the loaded bearing carries Fa {used.Fa:.4g} N, "
                   f"Fr {used.Fr:.4g} N (the pair under Fa {s.Fa:.4g} N, Fr {s.Fr:.4g} N; the other bearing Fa "
                   f"{used.Fa_other:.4g} N; static form: no centrifugal term in the preload)")
-        warned = r.warnings + [w for w in thermal_preload_warnings(s, warm, T) if str(w) not in map(str, r.warnings)]
+        fast = self.kind == "position" and r.models_used.get("high_speed", ("no",))[0] == "yes"
+        warned = r.warnings + [w for w in thermal_preload_warnings(s, warm, T, fast) if str(w) not in map(str, r.warnings)]
         return dataclasses.replace(r, preload=pre, models_used={**r.models_used, "preload": (self.kind, reason)},
                                    warnings=warned)
 

@@ -481,7 +481,8 @@ def din732_safe_speed(scene: Scene, *, limit_C: float = 70.0) -> Din732Speed:
 
     Raises
     ------
-    InputError    thrust ball bearings (outside DIN 732), dry-film supply, a limit not above the ambient
+    InputError    thrust ball bearings (outside DIN 732), a preloaded pair (its loads are the coupled state's),
+                  dry-film supply, a limit not above the ambient
 
     >>> import thermobear as tb
     >>> d = din732_safe_speed(tb.load_scene(tb.example_path("block_6208_oil_bath.toml")))
@@ -491,6 +492,10 @@ def din732_safe_speed(scene: Scene, *, limit_C: float = 70.0) -> Din732Speed:
     brg = scene.bearing
     if brg.kind == "thrust":
         raise InputError("bearing.kind", brg.kind, "DIN 732 gives no thermally safe speed for thrust ball bearings")
+    if getattr(scene, "arrangement", None) is not None:
+        raise InputError("bearing.arrangement", scene.arrangement, "DIN 732 rates one bearing under its own loads; a "
+                         "pair's loaded bearing carries the warm preload the coupled state solves (thermobear run): "
+                         "give that bearing's loads without arrangement for DIN 732's row")
     if scene.supply not in _SUPPLIES:
         raise InputError("lubricant.supply", scene.supply, f"DIN 732 here: one of {', '.join(_SUPPLIES)}")
     dT_A = limit_C - scene.T_ambient_C

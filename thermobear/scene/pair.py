@@ -37,7 +37,8 @@ PAIR_FIELDS = {
     "arrangement": Field.choice(*PAIR_ARRANGEMENTS, doc="the scene's bearing is one of a preloaded pair of angular "
                                 "contact bearings, back to back (DB) or face to face (DF); the loaded one"),
     "preload_N": Field.number("N", 0.0, None, lo_open=True, doc="the pair's cold mounted preload (each bearing's axial "
-                              "load at 20 °C without external load: a catalogue's light / medium / heavy preload)"),
+                              "load at 20 °C without external load, as mounted: a catalogue's light / medium / heavy "
+                              "preload is the unmounted set's — the seats' fits add to it, not applied here)"),
     "preload": Field.choice(*PRELOAD_KINDS, doc="position (default: ground faces or spacers, the preload follows "
                             "the temperatures) or spring (a constant force)"),
 }
