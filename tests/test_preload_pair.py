@@ -318,3 +318,19 @@ def test_din732_refuses_a_pair_scene_by_name():
     from thermobear.coupled.speeds import din732_safe_speed
     with pytest.raises(InputError, match="bearing.arrangement"):
         din732_safe_speed(tb.load_scene(tb.example_path("spindle_7014C_pair_oil_air.toml")))
+
+
+@pytest.mark.parametrize("n_rpm, second", [(12000.0, False), (17000.0, True)])
+def test_the_fixed_point_is_probed_for_a_second_equilibrium_above_it(n_rpm, second):
+    """At 17 000 rpm the example's loop settles at a light preload (its loaded bearing ≈ 400 N), but the loop map g
+    rises above the diagonal again higher up (a reviewer evaluated g(700 N) = 787 N; a second fixed point ≈ 880 N):
+    which one the loop found depended on its first step only.  The loop now starts once more at twice the fixed
+    point's axial load; where g does not fall back there, a named warning says the preload has a second, unstable
+    equilibrium above it.  At 12 000 rpm the probe falls back: no warning."""
+    s = tb.load_scene(tb.example_path("spindle_7014C_pair_oil_air.toml")).with_(n_rpm=n_rpm)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        st = tb.steady_state(s)
+    probe = st.preload["probe"]
+    assert probe["Fa_N"] == pytest.approx(2.0 * st.preload["Fa_N"]) and probe["rises"] is second
+    assert any("second equilibrium above the fixed point" in str(w) for w in st.warnings) is second

@@ -28,8 +28,10 @@ cannot carry (its contacts overloaded, or its rings grown through the clearance)
 rising.  The answer carries a named warning where the warm preload passes twice the cold one
 (:data:`thermobear.validity.LIMITS` ``thermal_preload``).
 
-The pair's loads are the static (low-speed) form: the centrifugal effects on the preload are not in them
-(:mod:`thermobear.loads.pair`).  Cost: (iterations + 1) steady states per point, the points of a step in one call.
+The fixed point is probed once for stability: the loop started at twice its axial load must fall back
+(g(2F) < 2F), else a second, unstable equilibrium lies between and the answer says so (a named warning; the
+probe's result in ``preload["probe"]``).  The pair's loads are the static (low-speed) form: the centrifugal effects on the preload are not in them
+(:mod:`thermobear.loads.pair`).  Cost: (iterations + 2) steady states per point, the points of a step in one call.
 
 References
 ----------
@@ -162,6 +164,7 @@ class _Pair:
     def __init__(self, scene, tol_N: float):
         self.scene, self.tol, self.hist = scene, tol_N, []
         self.kind = scene.preload_kind or "position"
+        self.final, self.done = None, False       # the fixed point's answer, while its stability probe runs
         self.offset = (pair_preload_offset(scene.bearing, scene.preload_force) if self.kind == "position" else None)
         self.cold = self.used = self.loads_at(None)
 
@@ -174,6 +177,10 @@ class _Pair:
 
     def step(self, r):
         """(the point's answer or error, None) or (None, the scene of the next step)."""
+        if self.done:
+            return r, None
+        if self.final is not None:                 # the probe above the fixed point came back
+            return self.probed(r), None
         T = pair_temperatures(r.T_C, r.roles)
         if self.kind == "spring":                  # a constant force: the cold loads are the loads
             return self.answer(r, self.cold, T, self.scene.preload_force, 0.0), None
@@ -189,7 +196,8 @@ class _Pair:
                               T_outer_ring_C=T["outer ring"], T_balls_C=T["balls"],
                               dT_inner_outer_K=T["inner ring"] - T["outer ring"], P_W=r.P_W))
         if res <= self.tol:
-            return self.answer(r, self.used, T, g.preload, res), None
+            self.final = (r, self.used, T, g.preload, res)
+            return None, pair_scene(self.scene, self.probe_loads())
         if preload_step_runs_away(self.hist, self.tol):
             return _runaway(self.scene, self.hist, T, "each step of the preload loop adds at least as much load as "
                             "the last (the heat of the preload warms the inner ring and balls into more preload than "
@@ -202,9 +210,44 @@ class _Pair:
         self.used = g
         return None, pair_scene(self.scene, g)
 
+    def probe_loads(self) -> PairLoads:
+        """The loaded bearing's loads of the stability probe: the fixed point's with the axial load doubled."""
+        return dataclasses.replace(self.final[1], Fa=2.0 * self.final[1].Fa)
+
+    def probed(self, r):
+        r"""The fixed point's answer, with a named warning where the probe at twice its axial load does not fall back:
+        there g(F) ≥ F (or no steady state at all), so g − F crosses 0 again above the fixed point — an unstable
+        equilibrium, beyond which the preload rises to a second, hotter fixed point or runs away; a heat-up that
+        overshoots (the inner ring and balls warming before the housing) can carry the pair across it."""
+        self.done = True
+        r0, used, T, warm, res = self.final
+        out = self.answer(r0, used, T, warm, res)
+        F = self.probe_loads().Fa
+        if isinstance(r, Exception):
+            got, above = f"no steady state ({type(r).__name__})", True
+        else:
+            try:
+                g = self.loads_at(pair_temperatures(r.T_C, r.roles)).Fa
+                got, above = f"g = {g:.4g} N", g >= F
+            except (InputError, SolverError) as exc:
+                got, above = f"no warm equilibrium of the pair ({type(exc).__name__})", True
+        out.preload["probe"] = dict(Fa_N=F, result=got, rises=bool(above))
+        if above:
+            out.warnings.append(OutsideValidity(
+                f"pair preload: a second equilibrium above the fixed point — the loop started at twice its axial load "
+                f"({F:.4g} N) does not fall back ({got}): between the two the preload is unstable, above it rises "
+                "to a hotter state or runs away; a heat-up that overshoots (inner ring and balls warming before the "
+                "housing) can carry the pair there", quantity="pair preload stability", value=F,
+                limit="g(2 F) < 2 F", source="thermobear.coupled.preload (the loop map g probed once)",
+                field="bearing.preload_N"))
+        return out
+
     def stopped(self, r, T_last: dict):
         """A step's error at a preload above the cold one — its steady state runs away or its contacts are
-        overloaded — as the preload's runaway (the error as its cause); other errors as they are."""
+        overloaded — as the preload's runaway (the error as its cause); other errors as they are (the stability
+        probe's: the fixed point's answer, :meth:`probed`)."""
+        if self.final is not None and not self.done and isinstance(r, Exception):
+            return self.probed(r)
         overload = isinstance(r, ContactLimit) or isinstance(r, InputError) and r.field == "Fa, Fr, M"
         if not (isinstance(r, ThermalRunaway) or overload) or not self.used.Fa > self.cold.Fa:
             return r
