@@ -132,7 +132,9 @@ def _pair_rows(brg: BallBearing, pair, preload_N) -> list:
         raise InputError("--preload-N", None, "a pair needs its cold mounted preload, > 0 [N] (as mounted: a maker's "
                          "light, medium or heavy preload is the unmounted set's)")
     return [("arrangement", pair, "one bearing of a symmetric pair (--pair); the loaded one of the two is solved, both at "
-             "the same temperatures (thermobear.scene.pair)"),
+             "the same temperatures (thermobear.scene.pair); the network below is one bearing's machine, which "
+             "overstates a pair bearing's cooling: cut it at the pair's middle with [shaft] length_right_mm = 0 and "
+             "both end_right = \"adiabatic\""),
             ("preload_N", float(preload_N), "N: the pair's cold preload as mounted (--preload-N; a maker's class is the "
              "unmounted set's, the seats' fits add to it), a position preload: it follows the temperatures"),
             ("preload", "position", "position (rigid: ground faces or spacers) | spring (a constant force)")]
