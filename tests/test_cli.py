@@ -127,7 +127,9 @@ def test_runaway_of_a_built_oil_bath_network_is_exit_3_not_bad_input(capsys):
     # beyond it on the way is the runaway's (exit 3, named, 250 °C in the reason), not bad input (exit 2)
     code, out, err = run(capsys, "run", EX / "oil_bath_6208.toml", "--set", "n_rpm=30000", "--json")
     assert code == 3 and err.startswith("error: ThermalRunaway:") and "250 °C" in err and "nan" not in err
-    assert out == ""
+    got = json.loads(out)              # --json: the failure as data on stdout (it printed nothing; a caller lost it)
+    assert got["error"] == "ThermalRunaway" and got["iterations"] >= 1 and "250 °C" in got["message"]
+    assert isinstance(got["history"], list) and "NaN" not in out
 
 
 def test_console_script_bad_input_no_traceback(tmp_path):

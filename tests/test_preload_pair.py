@@ -263,6 +263,10 @@ def test_run_names_the_runaway_exit_3(tmp_path, capsys):
     assert main(["run", str(path), "--set", "n_rpm=6500"]) == 3
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("error: ThermalPreloadRunaway: thermal preload runaway")
+    assert main(["run", str(path), "--set", "n_rpm=6500", "--json"]) == 3     # --json: the history as data
+    d = json.loads(capsys.readouterr().out)
+    assert d["error"] == "ThermalPreloadRunaway" and len(d["preload_history_N"]) == d["iterations"] >= 3
+    assert all(b > a for a, b in zip(d["preload_history_N"], d["preload_history_N"][1:]))
 
 
 def test_init_writes_a_pair_scene_that_run_solves_to_the_examples_answer(tmp_path, capsys):

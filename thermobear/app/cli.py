@@ -37,9 +37,10 @@ from thermobear.app.speed import cmd_speed
 from thermobear.app.verbs import (EXIT_INTERRUPTED, cmd_calibrate, cmd_compare, cmd_init, cmd_list, cmd_loads, cmd_run,
                                   cmd_spin_down, cmd_sweep, cmd_transient)
 from thermobear import __version__
+from thermobear.app.output import print_json
 from thermobear.errors import InputError, NoEquilibrium, OutsideValidity, SolverError, ThermobearError
 
-__all__ = ["main", "build_parser", "EXIT_BAD_INPUT", "EXIT_SOLVER", "EXIT_INTERRUPTED"]
+__all__ = ["main", "build_parser", "solver_error_data", "EXIT_BAD_INPUT", "EXIT_SOLVER", "EXIT_INTERRUPTED"]
 
 EXIT_BAD_INPUT = 2
 EXIT_SOLVER = 3
@@ -276,6 +277,23 @@ def _terminate(signum, frame):
     raise KeyboardInterrupt
 
 
+def solver_error_data(e: SolverError, message: str) -> dict:
+    """A solver's failure as plain data (``--json`` of a verb that exits 3): its class, message, iterations and last
+    residual, its history where kept, and a runaway's clearance or preload history and ring temperature difference.
+
+    >>> from thermobear.errors import ThermalPreloadRunaway
+    >>> d = solver_error_data(ThermalPreloadRunaway("x", iterations=3, preload_history_N=[500.0, 900.0]), "x")
+    >>> d["error"], d["iterations"], d["preload_history_N"]
+    ('ThermalPreloadRunaway', 3, [500.0, 900.0])
+    """
+    out = {"error": type(e).__name__, "message": message, "iterations": e.iterations, "residual": e.residual,
+           "history": e.history if isinstance(e.history, list) else []}
+    for k in ("clearance_history_m", "preload_history_N", "dT_inner_outer_K"):
+        if getattr(e, k, None) is not None and getattr(e, k) != []:
+            out[k] = getattr(e, k)
+    return out
+
+
 def main(argv=None) -> int:
     parser = build_parser()
     args = parser.parse_args(attach_negative_values(sys.argv[1:] if argv is None else argv, valued_options(parser)))
@@ -298,6 +316,8 @@ def main(argv=None) -> int:
         if debug:
             raise
         print(f"error: {type(e).__name__}: {_one_line(e)}", file=sys.stderr)
+        if getattr(args, "json", False):         # --json: what the solver did, for the caller (stdout)
+            print_json(solver_error_data(e, _one_line(e)))
         return EXIT_SOLVER
     except ThermobearError as e:
         if debug:
