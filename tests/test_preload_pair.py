@@ -11,7 +11,9 @@ import pytest
 
 import thermobear as tb
 from thermobear.app.cli import main
+from thermobear.app.sweep import run_sweep
 from thermobear.contact.fits import T_REF_C
+from thermobear.coupled.speeds import din732_safe_speed
 from thermobear.coupled.preload import PRELOAD_TOL_N, pair_scene, preload_step_runs_away
 from thermobear.errors import InputError, ThermalPreloadRunaway
 from thermobear.loads.pair import pair_loads, pair_preload_offset
@@ -273,7 +275,6 @@ def test_init_writes_a_pair_scene_that_run_solves_to_the_examples_answer(tmp_pat
     """`thermobear init 7014C --lubrication oil-air --speed-rpm 12000 --pair back_to_back --preload-N 300` writes the
     pair's keys and no external axial load (the preload sets the contacts); it is the bundled example scene, and
     `run` solves its thermal preload.  Bad options are refused naming them."""
-    from thermobear.app.cli import main
     out = tmp_path / "pair.toml"
     assert main(["init", "7014C", "--lubrication", "oil-air", "--speed-rpm", "12000", "--pair", "back_to_back",
                  "--preload-N", "300", "--out", str(out)]) == 0
@@ -291,7 +292,6 @@ def test_init_writes_a_pair_scene_that_run_solves_to_the_examples_answer(tmp_pat
 
 
 def test_sweep_rows_of_a_pair_carry_its_warm_preload():
-    from thermobear.app.sweep import run_sweep
     s = tb.load_scene(tb.example_path("spindle_7014C_pair_oil_air.toml"))
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -319,7 +319,6 @@ def test_a_lost_preload_and_the_static_form_at_speed_are_named():
 
 
 def test_din732_refuses_a_pair_scene_by_name():
-    from thermobear.coupled.speeds import din732_safe_speed
     with pytest.raises(InputError, match="bearing.arrangement"):
         din732_safe_speed(tb.load_scene(tb.example_path("spindle_7014C_pair_oil_air.toml")))
 
@@ -338,3 +337,37 @@ def test_the_fixed_point_is_probed_for_a_second_equilibrium_above_it(n_rpm, seco
     probe = st.preload["probe"]
     assert probe["Fa_N"] == pytest.approx(2.0 * st.preload["Fa_N"]) and probe["rises"] is second
     assert any("second equilibrium above the fixed point" in str(w) for w in st.warnings) is second
+
+
+def test_a_pair_without_external_radial_load_runs(tmp_path):
+    """`init 7014C --pair face_to_face --preload-N 200 --Fa-N 500` writes Fr_N = 0: the pair's loaded bearing took the
+    solver's radial residual (≈ 1e-14 N) as its Fr, and `run` refused it as a load below 1e-6 N (a value the user
+    never gave).  Its Fr is 0 now, and the scene solves."""
+    out = tmp_path / "fa.toml"
+    assert main(["init", "7014C", "--lubrication", "oil-air", "--pair", "face_to_face", "--preload-N", "200",
+                 "--Fa-N", "500", "--out", str(out)]) == 0
+    s = tb.load_scene(out)
+    assert s.Fr == 0.0 and pair_loads(s.bearing, "face_to_face", 200.0, "position", 500.0, 0.0).Fr == 0.0
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        st = tb.steady_state(s)
+    assert st.preload["Fr_N"] == 0.0 and st.preload["Fa_N"] > 500.0 and st.preload["warm_N"] > 200.0
+
+
+def test_a_probe_the_models_cannot_evaluate_is_not_called_unstable(tmp_path):
+    """The example cut at the pair's middle (no right shaft end, both right ends adiabatic) settles at 4378 N; at twice
+    that load the warm rings close the bearing's radial play, where the pair's loads are beyond the model.  That was
+    reported as 'a second equilibrium'; it is now 'stability not established' (probe['rises'] None)."""
+    text = open(tb.example_path("spindle_7014C_pair_oil_air.toml"), encoding="utf-8").read()
+    text = text.replace("length_right_mm = 175.0", "length_right_mm = 0.0")
+    text = text.replace('end_right = "free" ', 'end_right = "adiabatic" ').replace('end_right = "air" ',
+                                                                                 'end_right = "adiabatic" ')
+    path = tmp_path / "cut.toml"
+    path.write_text(text, encoding="utf-8")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        st = tb.steady_state(tb.load_scene(path))
+    assert st.preload["warm_N"] == pytest.approx(4378.0, rel=2e-3) and st.preload["probe"]["rises"] is None
+    texts = [str(w) for w in st.warnings]
+    assert any("stability above the fixed point is not established" in t for t in texts)
+    assert not any("second equilibrium" in t for t in texts)

@@ -37,7 +37,7 @@ from thermobear.app.speed import cmd_speed
 from thermobear.app.verbs import (EXIT_INTERRUPTED, cmd_calibrate, cmd_compare, cmd_init, cmd_list, cmd_loads, cmd_run,
                                   cmd_spin_down, cmd_sweep, cmd_transient)
 from thermobear import __version__
-from thermobear.app.output import print_json
+from thermobear.app.output import jsonable, print_json
 from thermobear.errors import InputError, NoEquilibrium, OutsideValidity, SolverError, ThermobearError
 
 __all__ = ["main", "build_parser", "solver_error_data", "EXIT_BAD_INPUT", "EXIT_SOLVER", "EXIT_INTERRUPTED"]
@@ -278,20 +278,31 @@ def _terminate(signum, frame):
 
 
 def solver_error_data(e: SolverError, message: str) -> dict:
-    """A solver's failure as plain data (``--json`` of a verb that exits 3): its class, message, iterations and last
-    residual, its history where kept, and a runaway's clearance or preload history and ring temperature difference.
+    """A solver's failure as JSON-safe data (``--json`` of a verb that exits 3).
+
+    Parameters
+    ----------
+    e : SolverError    the failure
+    message : str      its one-line message
+
+    Returns
+    -------
+    dict   ``error`` (class), ``message``, ``iterations``, ``residual`` (its unit in the message; null where not
+           finite), ``history`` (the solver's, where kept), and a runaway's ``clearance_history_m`` [m],
+           ``preload_history_N`` [N], ``dT_inner_outer_K`` [K] and ``mounted_m`` [m] where it has them
 
     >>> from thermobear.errors import ThermalPreloadRunaway
     >>> d = solver_error_data(ThermalPreloadRunaway("x", iterations=3, preload_history_N=[500.0, 900.0]), "x")
-    >>> d["error"], d["iterations"], d["preload_history_N"]
-    ('ThermalPreloadRunaway', 3, [500.0, 900.0])
+    >>> d["error"], d["iterations"], d["preload_history_N"], d["residual"]
+    ('ThermalPreloadRunaway', 3, [500.0, 900.0], None)
     """
     out = {"error": type(e).__name__, "message": message, "iterations": e.iterations, "residual": e.residual,
-           "history": e.history if isinstance(e.history, list) else []}
-    for k in ("clearance_history_m", "preload_history_N", "dT_inner_outer_K"):
-        if getattr(e, k, None) is not None and getattr(e, k) != []:
-            out[k] = getattr(e, k)
-    return out
+           "history": list(e.history or [])}
+    for k in ("clearance_history_m", "preload_history_N", "dT_inner_outer_K", "mounted_m"):
+        v = getattr(e, k, None)
+        if v is not None and not (isinstance(v, list) and not v) and not (isinstance(v, float) and v != v):
+            out[k] = v                                    # (a NaN default: the runaway does not have it)
+    return jsonable(out)
 
 
 def main(argv=None) -> int:

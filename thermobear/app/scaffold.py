@@ -131,6 +131,11 @@ def _pair_rows(brg: BallBearing, pair, preload_N) -> list:
     if preload_N is None:
         raise InputError("--preload-N", None, "a pair needs its cold mounted preload, > 0 [N] (as mounted: a maker's "
                          "light, medium or heavy preload is the unmounted set's)")
+    try:                                 # the preload alone: each bearing's axial load, the static safety run checks
+        check_static_safety(Scene(name=brg.name, bearing=brg, lubricant=lubricant("iso-vg-32-mineral"),
+                                  supply="oil_air", n_rpm=1.0, Fa=float(preload_N), Fr=0.0))
+    except InputError as exc:
+        raise InputError("--preload-N", preload_N, exc.expected) from None
     return [("arrangement", pair, "one bearing of a symmetric pair (--pair); the loaded one of the two is solved, both at "
              "the same temperatures (thermobear.scene.pair); the network below is one bearing's machine, which "
              "overstates a pair bearing's cooling: cut it at the pair's middle with [shaft] length_right_mm = 0 and "

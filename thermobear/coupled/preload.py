@@ -30,8 +30,9 @@ rising.  The answer carries a named warning where the warm preload passes twice 
 
 The fixed point is probed once for stability: the loop started at twice its axial load must fall back
 (g(2F) < 2F), else a second, unstable equilibrium lies between and the answer says so (a named warning; the
-probe's result in ``preload["probe"]``).  The pair's loads are the static (low-speed) form: the centrifugal effects on the preload are not in them
-(:mod:`thermobear.loads.pair`).  Cost: (iterations + 2) steady states per point, the points of a step in one call.
+probe's result in ``preload["probe"]``; a probe the models cannot evaluate — the warm rings closing the radial play
+at 2F — says that the stability is not established).  The pair's loads are the static (low-speed) form: the centrifugal effects on the preload are not in them
+(:mod:`thermobear.loads.pair`).  Cost: (iterations + 1) steady states per point (the probe included), the points of a step in one call.
 
 References
 ----------
@@ -222,17 +223,25 @@ class _Pair:
         self.done = True
         r0, used, T, warm, res = self.final
         out = self.answer(r0, used, T, warm, res)
-        F = self.probe_loads().Fa
-        if isinstance(r, Exception):
+        F, g = self.probe_loads().Fa, None
+        if isinstance(r, ThermalRunaway):            # no steady state at 2F: the heat outgrows the cooling there
             got, above = f"no steady state ({type(r).__name__})", True
+        elif isinstance(r, Exception):               # a model limit, not a verdict on stability
+            got, above = f"not evaluated: {type(r).__name__}", None
         else:
             try:
                 g = self.loads_at(pair_temperatures(r.T_C, r.roles)).Fa
                 got, above = f"g = {g:.4g} N", g >= F
-            except (InputError, SolverError) as exc:
-                got, above = f"no warm equilibrium of the pair ({type(exc).__name__})", True
-        out.preload["probe"] = dict(Fa_N=F, result=got, rises=bool(above))
-        if above:
+            except (InputError, SolverError) as exc:  # e.g. the warm rings closing the radial play at 2F
+                got, above = f"not evaluated: {_warm_failure(exc, [])}", None
+        out.preload["probe"] = dict(Fa_N=F, g_N=g, result=got, rises=above)
+        if above is None:
+            out.warnings.append(OutsideValidity(
+                f"pair preload: its stability above the fixed point is not established — the loop started at twice "
+                f"its axial load ({F:.4g} N) could not be evaluated ({got})", quantity="pair preload stability",
+                value=F, limit="g(2 F) evaluated", source="thermobear.coupled.preload (the loop map g probed once)",
+                field="bearing.preload_N"))
+        elif above:
             out.warnings.append(OutsideValidity(
                 f"pair preload: a second equilibrium above the fixed point — the loop started at twice its axial load "
                 f"({F:.4g} N) does not fall back ({got}): between the two the preload is unstable, above it rises "

@@ -162,5 +162,7 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
                     dT_outer=dT_outer, dT_ball=dT_ball, stiffness=stiffness)
     R = s.reactions                                 # (2 cases, 2 bearings, 5)
     k = int(np.argmax(R[0, :, 0]))
-    return PairLoads(Fa=float(R[0, k, 0]), Fr=float(np.hypot(R[0, k, 1], R[0, k, 3])), loaded=k,
+    # without an external radial load the bearings' radial reactions are the solver's residual (≈ 1e-14 N): 0
+    Fr_k = float(np.hypot(R[0, k, 1], R[0, k, 3])) if float(Fr) > 0.0 else 0.0
+    return PairLoads(Fa=float(R[0, k, 0]), Fr=Fr_k, loaded=k,
                      Fa_other=float(R[0, 1 - k, 0]), preload=float(R[1, :, 0].mean()), offset=offset)
