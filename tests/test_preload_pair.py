@@ -371,3 +371,28 @@ def test_a_probe_the_models_cannot_evaluate_is_not_called_unstable(tmp_path):
     texts = [str(w) for w in st.warnings]
     assert any("stability above the fixed point is not established" in t for t in texts)
     assert not any("second equilibrium" in t for t in texts)
+
+
+@pytest.mark.parametrize("arrangement, sign", [("back_to_back", -1), ("face_to_face", +1)])
+def test_a_spacer_lets_the_shaft_and_housing_grow_apart_over_it(arrangement, sign):
+    """Equal spacers between the bearings (`[bearing] spacer_mm`): with the inner ring (and shaft) 10 K above the outer
+    ring (and housing), the shaft grows axially more than the housing over the spacer — relieving a back-to-back
+    pair's preload, adding to a face-to-face one's (Harris & Kotzalas 2007 ch. 8) — more so the longer the spacer; the
+    cold preload does not depend on it, and spacer 0 is the adjacent pair."""
+    b = tb.bearing("7014C")
+    warm = [pair_loads(b, arrangement, 300.0, dT_inner=20.0, dT_outer=10.0, dT_ball=15.0, spacer=L).preload
+            for L in (0.0, 0.02, 0.04)]
+    assert warm[0] == pytest.approx(pair_loads(b, arrangement, 300.0, dT_inner=20.0, dT_outer=10.0, dT_ball=15.0).preload)
+    assert np.all(sign * np.diff(warm) > 0)
+    assert pair_loads(b, arrangement, 300.0, spacer=0.04).preload == pytest.approx(300.0, rel=1e-6)
+
+
+def test_a_spacer_is_read_from_the_scene_and_needs_its_pair(tmp_path):
+    s = tb.load_scene(tb.example_path("spindle_7014C_pair_oil_air.toml"))
+    assert s.pair_spacer is None and s.with_(spacer_mm=40.0).pair_spacer == pytest.approx(0.04)
+    text = open(tb.example_path("spindle_7014C_pair_oil_air.toml"), encoding="utf-8").read()
+    path = tmp_path / "lone.toml"
+    lines = [ln for ln in text.splitlines() if not ln.startswith(("preload_N", "preload ="))]
+    path.write_text("\n".join(lines).replace('arrangement = "back_to_back"', 'spacer_mm = 40.0'), encoding="utf-8")
+    with pytest.raises(InputError, match="bearing.spacer_mm"):
+        tb.load_scene(path)

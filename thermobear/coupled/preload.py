@@ -70,7 +70,7 @@ def pair_scene(scene, loads: PairLoads):
     """The pair scene's bearing alone under the loaded bearing's ``loads`` (the network and everything else
     unchanged): a single-bearing scene."""
     return dataclasses.replace(scene, Fa=loads.Fa, Fr=loads.Fr, arrangement=None, preload_force=None,
-                               preload_kind=None)
+                               preload_kind=None, pair_spacer=None)
 
 
 def loaded_scene(scene, steady):
@@ -80,7 +80,7 @@ def loaded_scene(scene, steady):
     if scene.arrangement is None or not p:
         return scene
     return dataclasses.replace(scene, Fa=p["Fa_N"], Fr=p["Fr_N"], arrangement=None, preload_force=None,
-                               preload_kind=None)
+                               preload_kind=None, pair_spacer=None)
 
 
 def preload_step_runs_away(history: list, tol_N: float = PRELOAD_TOL_N) -> bool:
@@ -173,7 +173,8 @@ class _Pair:
         """The pair's loads at the temperatures ``T`` (None: the mounting temperature)."""
         s, dT = self.scene, ({k: 0.0 for k in ("inner ring", "outer ring", "balls")} if T is None else
                              {k: T[k] - T_REF_C for k in ("inner ring", "outer ring", "balls")})
-        return pair_loads(s.bearing, s.arrangement, s.preload_force, self.kind, s.Fa, s.Fr, dT_inner=dT["inner ring"],
+        return pair_loads(s.bearing, s.arrangement, s.preload_force, self.kind, s.Fa, s.Fr, spacer=s.pair_spacer or 0.0,
+                          dT_inner=dT["inner ring"],
                           dT_outer=dT["outer ring"], dT_ball=dT["balls"], offset=self.offset)
 
     def step(self, r):

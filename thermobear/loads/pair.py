@@ -98,7 +98,7 @@ def pair_preload_offset(brg: BallBearing, preload, *, stiffness: str = "nominal"
 
 def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "position", Fa=0.0, Fr=0.0, *,
                dT_inner: float = 0.0, dT_outer: float = 0.0, dT_ball: float | None = None,
-               offset: float | None = None, stiffness: str = "nominal") -> PairLoads:
+               offset: float | None = None, stiffness: str = "nominal", spacer: float = 0.0) -> PairLoads:
     r"""The loads of a preloaded pair's loaded bearing, and the pair's preload, with warm rings and balls.
 
     Parameters
@@ -113,6 +113,9 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
                         and balls above the mounting temperature [K] (dT_ball default: the rings' mean)
     offset : float      the position preload δ [m] (default :func:`pair_preload_offset` of ``preload``)
     stiffness : str     as :func:`thermobear.loads.load_distribution`
+    spacer : float      length of equal inner and outer spacers between the bearings [m] (0: adjacent): the
+                        bearings sit at ∓(B + spacer)/2, where the shaft's and housing's axial growth moves them
+                        (:func:`~thermobear.loads.sets.warm_supports`; the cold offset does not depend on it)
 
     Returns
     -------
@@ -159,7 +162,7 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
         pre = dict(preload_offset=offset)
     towards = ARRANGEMENTS[arrangement][0]          # the axial load on the first (held) bearing
     s = bearing_set(brg, arrangement, [towards * float(Fa), 0.0], [float(Fr), 0.0], **pre, dT_inner=dT_inner,
-                    dT_outer=dT_outer, dT_ball=dT_ball, stiffness=stiffness)
+                    dT_outer=dT_outer, dT_ball=dT_ball, stiffness=stiffness, spacer=float(spacer))
     R = s.reactions                                 # (2 cases, 2 bearings, 5)
     k = int(np.argmax(R[0, :, 0]))
     # without an external radial load the bearings' radial reactions are the solver's residual (≈ 1e-14 N): 0

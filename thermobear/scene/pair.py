@@ -8,7 +8,10 @@ faces or spacers (a position preload) or by springs (a constant force).  A scene
 * ``preload_N`` — the cold mounted preload of the pair [N], the axial load each bearing carries at 20 °C without
   external load (what spindle catalogues call a light, medium or heavy preload);
 * ``preload`` — ``"position"`` (default: rigid, ground faces or spacers; the preload follows the rings' and balls'
-  temperatures) or ``"spring"`` (a constant force: no thermal change).
+  temperatures) or ``"spring"`` (a constant force: no thermal change);
+* ``spacer_mm`` — equal inner and outer spacers between the two bearings [mm] (default 0: adjacent): over the
+  spacer the shaft and the housing grow apart as they warm, which relieves a back-to-back pair's preload when the
+  shaft runs warmer than the housing and adds to a face-to-face one's (Harris & Kotzalas 2007 [1] ch. 8).
 
 Assumptions, stated where the scene is read: both bearings run the same temperatures (adjacent in one housing);
 the scene's thermal network is that bearing's own share of the machine; the scene's ``operation.Fa_N`` acts on
@@ -41,14 +44,17 @@ PAIR_FIELDS = {
                               "preload is the unmounted set's — the seats' fits add to it, not applied here)"),
     "preload": Field.choice(*PRELOAD_KINDS, doc="position (default: ground faces or spacers, the preload follows "
                             "the temperatures) or spring (a constant force)"),
+    "spacer_mm": Field.number("mm", 0.0, 1e3, doc="length of equal inner and outer spacers between the pair's "
+                              "bearings (default 0: adjacent); the shaft and housing grow apart over it as they warm"),
 }
-_ATTRS = {"arrangement": "arrangement", "preload_N": "preload_force", "preload": "preload_kind"}
+_ATTRS = {"arrangement": "arrangement", "preload_N": "preload_force", "preload": "preload_kind", "spacer_mm": "pair_spacer"}
+_SCALE = {"spacer_mm": 1e-3}           #: file unit → the Scene attribute's SI unit
 
 
 def _with(key: str):
-    """:meth:`Scene.with_` of ``[bearing] key`` (None clears it), checked by its field."""
+    """:meth:`Scene.with_` of ``[bearing] key`` (None clears it), checked by its field (in the file's unit)."""
     def f(scene, v, name):
-        return {_ATTRS[key]: None if v is None else check_value(v, PAIR_FIELDS[key], name)}
+        return {_ATTRS[key]: None if v is None else check_value(v, PAIR_FIELDS[key], name) * _SCALE.get(key, 1)}
     if PAIR_FIELDS[key].kind == "number":
         f.address = f"bearing.{key}"
     return f
@@ -65,7 +71,7 @@ def check_pair(s) -> None:
     if not given:
         return
     if s.arrangement is None:
-        raise InputError(given[0][0], given[0][1], "a preload needs its pair: bearing.arrangement = "
+        raise InputError(given[0][0], given[0][1], "a key of a preloaded pair needs its pair: bearing.arrangement = "
                          f"{' or '.join(map(repr, PAIR_ARRANGEMENTS))}")
     b = s.bearing
     if b.kind != "angular_contact":

@@ -200,7 +200,8 @@ class Scene:
                                   catalogue-typical fit for the load, :func:`thermobear.coupled.ratings.scene_clearance`)
     arrangement : str | None      the bearing is one of a preloaded pair (``back_to_back``, ``face_to_face``;
                                   :mod:`thermobear.scene.pair`): Fa, Fr act on the pair; None: a single bearing
-    preload_force : float | None  the pair's cold mounted preload [N]; preload_kind: ``position`` (None) or ``spring``
+    preload_force : float | None  the pair's cold mounted preload [N]; preload_kind: ``position`` (None) or ``spring``;
+                                  pair_spacer: the spacers' length between the pair's bearings [m] (None: 0)
     T_C : float | None            prescribed contact temperature [°C] (None: solve the thermal network)
     oil_flow : float              supplied oil flow [m^3/s] (oil jet)
     jet_penetration : float       share of it that passes through the bearing [-] (seed 004 §4.5 β;
@@ -258,6 +259,7 @@ class Scene:
     arrangement: str | None = None
     preload_force: float | None = None
     preload_kind: str | None = None
+    pair_spacer: float | None = None
     oil_flow: float = 0.0
     jet_penetration: float = 1.0
     T_oil_in_C: float | None = None
@@ -624,7 +626,7 @@ def scene_from_dict(d: dict, path: str | None = None) -> Scene:
         Fa=op.get("Fa_N", 0.0), Fr=op.get("Fr_N", 0.0), M=op.get("M_Nm"), T_C=op.get("T_C"),
         Fz=op.get("Fz_N", 0.0), My=op.get("My_Nm"), contamination=op.get("contamination", "normal_cleanliness"),
         shaft_fit=bx.get("shaft_fit"), housing_fit=bx.get("housing_fit"), arrangement=bx.get("arrangement"),
-        preload_force=bx.get("preload_N"), preload_kind=bx.get("preload"),
+        preload_force=bx.get("preload_N"), preload_kind=bx.get("preload"), pair_spacer=mm(bx.get("spacer_mm")),
         oil_flow=lsec.get("flow_L_h", 0.0) * 1e-3 / 3600.0, jet_penetration=lsec.get("jet_penetration", _default_penetration(lsec.get("supply", "oil_jet"), lsec)),
         T_oil_in_C=lsec.get("T_in_C"),
         T_ambient_C=th.get("T_ambient_C", 20.0), Rq_ball=lsec.get("Rq_ball_um", 0.05) * 1e-6,
