@@ -82,3 +82,14 @@ def test_a_k_rs_start_outside_its_open_range_is_refused_by_name(start):
     log = read_log(LOGS / "synthetic_heatup_7210.csv")
     with pytest.raises(InputError, match=r"--param K_rs = .* start must lie in \(0, 1e-0?6\)"):
         calibrate(scene, log, [f"K_rs={start}"], channel_map(scene, log))
+
+
+def test_a_zero_start_of_a_quantity_that_cannot_go_negative_is_refused_by_name():
+    """An oil bath's flow of 0 L/h (its default) as the start: the fit stepped linearly to −1 L/h and stopped on
+    `oil_flow_L_h = -1.0 — must be in [0, 100000]`, a value the user never gave.  A zero start of a quantity bounded
+    at 0 (here μ_boundary of the grease scene, whose flow its models do not read) is refused up front, naming the
+    parameter (it is fitted in logarithms: start > 0)."""
+    scene = load_scene(LOGS / "synthetic_heatup_scene.toml")
+    log = read_log(LOGS / "synthetic_heatup_7210.csv")
+    with pytest.raises(InputError, match=r"--param mu_boundary = 0.0 — a start of 0 cannot be fitted"):
+        calibrate(scene, log, ["mu_boundary=0"], channel_map(scene, log))

@@ -124,6 +124,12 @@ def _parse_param(scene: Scene, spec: str):
         x0 = getattr(scene, name)
     if x0 is None or isinstance(x0, bool) or not isinstance(x0, (int, float)) or not math.isfinite(x0):
         raise InputError(f"--param {name}", x0, "needs a finite numeric start value (give NAME=START)")
+    if x0 == 0.0 and name in _ADDRESS and name != "K_rs":  # a start of 0 of a quantity that cannot go negative
+        sec, key = _ADDRESS[name].split(".", 1)
+        fld = SECTIONS[sec][key]
+        if fld.lo is not None and fld.lo >= 0.0:
+            raise InputError(f"--param {name}", x0, f"a start of 0 cannot be fitted: {name} stays >= {fld.lo:g}, "
+                             "so it is fitted as a positive value in logarithms; give NAME=START > 0")
     hi = SECTIONS["lubricant"]["K_rs"].hi               # the scene file's bound, one place
     if name == "K_rs" and not 0.0 < x0 < hi:
         raise InputError(f"--param {name}", x0, f"start must lie in (0, {hi:g}): K_rs is fitted in logarithms (0 is no "
