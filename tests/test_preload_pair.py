@@ -396,3 +396,22 @@ def test_a_spacer_is_read_from_the_scene_and_needs_its_pair(tmp_path):
     path.write_text("\n".join(lines).replace('arrangement = "back_to_back"', 'spacer_mm = 40.0'), encoding="utf-8")
     with pytest.raises(InputError, match="bearing.spacer_mm"):
         tb.load_scene(path)
+
+
+def test_the_answer_brackets_the_balls_share_of_the_preload_rise():
+    """The balls run 29 K above the rings' mean in the example and their growth drives most of the rise; their
+    temperature rests on the estimated ball–race conductance.  The answer gives the warm preload at the same ring
+    temperatures with the balls at the rings' mean beside its own (533 N against 1482 N), and `run` prints it; a spring
+    keeps its force either way."""
+    s = tb.load_scene(tb.example_path("spindle_7014C_pair_oil_air.toml"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        st = tb.steady_state(s)
+        spring = tb.steady_state(s.with_(preload="spring"))
+    p, T = st.preload, st.preload["temperatures_C"]
+    lo = pair_loads(s.bearing, "back_to_back", 300.0, dT_inner=T["inner ring"] - T_REF_C,
+                    dT_outer=T["outer ring"] - T_REF_C,
+                    dT_ball=0.5 * (T["inner ring"] + T["outer ring"]) - T_REF_C).preload
+    assert p["warm_balls_at_rings_N"] == pytest.approx(lo, rel=1e-9)
+    assert p["cold_N"] < p["warm_balls_at_rings_N"] < 0.5 * p["warm_N"]
+    assert spring.preload["warm_balls_at_rings_N"] == 300.0

@@ -266,10 +266,22 @@ class _Pair:
         e.__cause__ = r
         return e
 
+    def balls_at_rings(self, T: dict, warm: float) -> float:
+        """The warm preload [N] at the same ring temperatures with the balls at the rings' mean: the lower end of a
+        bracket whose upper end is the answer's — the balls' temperature above the rings rests on the estimated
+        ball–race conductance of the network and drives most of a position preload's rise (a spring: its force)."""
+        if self.kind == "spring":
+            return warm
+        try:
+            return self.loads_at({**T, "balls": 0.5 * (T["inner ring"] + T["outer ring"])}).preload
+        except (InputError, SolverError):       # (a warm pair beyond the model even so: no lower end to give)
+            return float("nan")
+
     def answer(self, r, used: PairLoads, T: dict, warm: float, res: float):
         """The point's state with its ``preload`` (loads used, warm preload, history) and its models_used entry."""
         s, n = self.scene, max(len(self.hist), 1)
         pre = dict(arrangement=s.arrangement, kind=self.kind, cold_N=s.preload_force, warm_N=warm,
+                   warm_balls_at_rings_N=self.balls_at_rings(T, warm),
                    offset_um=None if self.offset is None else self.offset * 1e6, Fa_N=used.Fa, Fr_N=used.Fr,
                    Fa_other_N=used.Fa_other, loaded=used.loaded, external_Fa_N=s.Fa, external_Fr_N=s.Fr,
                    iterations=n, residual_N=res, history=list(self.hist), temperatures_C=dict(T))
@@ -340,6 +352,10 @@ def preload_lines(p: dict | None) -> list:
     if p["kind"] == "position":
         head += f", fixed point in {p['iterations']} steps, residual {p['residual_N']:.1e} N"
     T = p["temperatures_C"]
-    return [head, f"  loaded bearing: Fa {p['Fa_N']:.4g} N, Fr {p['Fr_N']:.4g} N (the other Fa {p['Fa_other_N']:.4g} N) "
+    lo = p.get("warm_balls_at_rings_N")
+    bracket = ([f"  with the balls at the rings' mean instead ({0.5 * (T['inner ring'] + T['outer ring']):.1f} °C): "
+                f"{lo:.4g} N warm — the balls' temperature (the estimated ball–race conductance) makes the difference"]
+               if p["kind"] == "position" and lo is not None and lo == lo else [])
+    return [head] + bracket + [f"  loaded bearing: Fa {p['Fa_N']:.4g} N, Fr {p['Fr_N']:.4g} N (the other Fa {p['Fa_other_N']:.4g} N) "
                   f"under the pair's Fa {p['external_Fa_N']:.4g} N, Fr {p['external_Fr_N']:.4g} N; inner ring "
                   f"{T['inner ring']:.1f} °C, outer ring {T['outer ring']:.1f} °C, balls {T['balls']:.1f} °C"]
