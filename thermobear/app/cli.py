@@ -38,6 +38,7 @@ from thermobear.app.verbs import (EXIT_INTERRUPTED, cmd_calibrate, cmd_compare, 
                                   cmd_spin_down, cmd_sweep, cmd_transient)
 from thermobear import __version__
 from thermobear.app.output import jsonable, print_json
+from thermobear.loads.pair import PAIR_ARRANGEMENTS
 from thermobear.errors import InputError, NoEquilibrium, OutsideValidity, SolverError, ThermobearError
 
 __all__ = ["main", "build_parser", "solver_error_data", "EXIT_BAD_INPUT", "EXIT_SOLVER", "EXIT_INTERRUPTED"]
@@ -237,7 +238,7 @@ def build_parser() -> argparse.ArgumentParser:
                     "load given: 0 for a deep groove bearing, the axial reaction 1.25 Fr tan(alpha0) of an angular "
                     "contact bearing's half load zone, ISO 15312's 0.02 C0 for a thrust bearing; with --Fr-N alone: "
                     "0, refused for an angular contact bearing)")
-    it.add_argument("--pair", choices=["back_to_back", "face_to_face"], help="an angular contact bearing as one of a "
+    it.add_argument("--pair", choices=list(PAIR_ARRANGEMENTS), help="an angular contact bearing as one of a "
                     "preloaded pair (a spindle's set): its thermal preload is solved with the temperatures")
     it.add_argument("--preload-N", dest="preload_N", type=float, metavar="F", help="the pair's cold mounted preload "
                     "[N] (with --pair; as mounted: a maker's light, medium or heavy preload is the unmounted set's, "

@@ -40,7 +40,7 @@ from thermobear.losses.seals import BALL_SEALS, seal_constants
 from thermobear.losses.skf import K_RS
 from thermobear.lubrication.lubricant import lubricant, lubricant_names
 from thermobear.rating.life import load_ratings, stated_ratings
-from thermobear.scene.pair import PAIR_ARRANGEMENTS
+from thermobear.loads.pair import PAIR_ARRANGEMENTS
 from thermobear.scene import Scene, scene_from_dict
 from thermobear.thermal.builders.layout import H_MOUNT_W_M2K, layout
 

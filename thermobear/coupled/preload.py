@@ -66,11 +66,13 @@ def pair_temperatures(T_C: dict, roles: dict) -> dict:
             "balls": _node_T(T_C, roles, (), "ball")[0]}
 
 
-def pair_scene(scene, loads: PairLoads):
-    """The pair scene's bearing alone under the loaded bearing's ``loads`` (the network and everything else
-    unchanged): a single-bearing scene."""
-    return dataclasses.replace(scene, Fa=loads.Fa, Fr=loads.Fr, arrangement=None, preload_force=None,
-                               preload_kind=None, pair_spacer=None)
+def pair_scene(scene, loads):
+    """The pair scene's bearing alone under the loaded bearing's ``loads`` (a :class:`~thermobear.loads.pair.PairLoads`,
+    or an answer's ``preload`` dict with ``Fa_N``, ``Fr_N``; the network and everything else unchanged): a
+    single-bearing scene."""
+    Fa, Fr = (loads["Fa_N"], loads["Fr_N"]) if isinstance(loads, dict) else (loads.Fa, loads.Fr)
+    return dataclasses.replace(scene, Fa=Fa, Fr=Fr, arrangement=None, preload_force=None, preload_kind=None,
+                               pair_spacer=None)
 
 
 def loaded_scene(scene, steady):
@@ -79,8 +81,7 @@ def loaded_scene(scene, steady):
     p = getattr(steady, "preload", None)
     if scene.arrangement is None or not p:
         return scene
-    return dataclasses.replace(scene, Fa=p["Fa_N"], Fr=p["Fr_N"], arrangement=None, preload_force=None,
-                               preload_kind=None, pair_spacer=None)
+    return pair_scene(scene, p)
 
 
 def preload_step_runs_away(history: list, tol_N: float = PRELOAD_TOL_N) -> bool:

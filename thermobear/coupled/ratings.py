@@ -250,15 +250,13 @@ def scene_clearance(scene, T_C: dict, roles: dict, *, static=None) -> dict:
     Tb, nb = _node_T(T_C, roles, (), "ball")
     (Ts, ns), (Th, nh) = _node_T(T_C, roles, ("shaft",), "inner"), _node_T(T_C, roles, ("housing",), "outer")
     n_in = scene.n_rpm if scene.rotating == "inner" else 0.0
-    if all(np.ndim(v) == 0 for v in (Ti, To, Tb, Ts, Th)):      # mounted (20 °C, at rest) and operating: one call
-        both = operating_clearance(b, shaft=shaft, housing=housing, T_inner_C=[T_REF_C, Ti], T_outer_C=[T_REF_C, To],
-                                   T_ball_C=[T_REF_C, Tb], T_shaft_C=[T_REF_C, Ts], T_housing_C=[T_REF_C, Th],
-                                   n_rpm=[0.0, n_in], **seats).Pd
-        mounted, op = float(both[0]), float(both[1])
-    else:
-        mounted = float(operating_clearance(b, shaft=shaft, housing=housing, **seats).Pd)
-        op = operating_clearance(b, shaft=shaft, housing=housing, T_inner_C=Ti, T_outer_C=To, T_ball_C=Tb,
-                                 T_shaft_C=Ts, T_housing_C=Th, n_rpm=n_in, **seats).Pd
+    # mounted (20 °C, at rest) and operating in one call: a leading axis of two states
+    T2 = [np.stack([np.full_like(v, T_REF_C), v]) for v in np.broadcast_arrays(*(np.asarray(v, float)
+                                                                               for v in (Ti, To, Tb, Ts, Th)))]
+    n2 = np.reshape([0.0, n_in], (2,) + (1,) * (T2[0].ndim - 1))
+    Pd = operating_clearance(b, shaft=shaft, housing=housing, T_inner_C=T2[0], T_outer_C=T2[1], T_ball_C=T2[2],
+                             T_shaft_C=T2[3], T_housing_C=T2[4], n_rpm=n2, **seats).Pd
+    mounted, op = float(np.ravel(Pd[0])[0]), Pd[1]
     out.update(unmounted=b.Pd * 1e6, mounted=mounted * 1e6, operating=_num(op) * 1e6, used=b.Pd * 1e6,
                temperatures_C={"inner ring": Ti, "outer ring": To, "balls": Tb, "shaft": Ts, "housing": Th},
                nodes={"inner ring": ni, "outer ring": no, "balls": nb, "shaft": ns, "housing": nh})

@@ -37,7 +37,12 @@ from thermobear.errors import InputError
 from thermobear.loads.sets import ARRANGEMENTS, bearing_set
 from thermobear.loads.static import load_distribution_static
 
-__all__ = ["PairLoads", "pair_preload_offset", "pair_loads"]
+__all__ = ["PAIR_ARRANGEMENTS", "PRELOAD_KINDS", "PairLoads", "pair_preload_offset", "pair_loads"]
+
+#: The arrangements of a preloaded pair (:data:`~thermobear.loads.sets.ARRANGEMENTS` less the tandem, which has no
+#: position preload of its own) and the kinds of its preload.
+PAIR_ARRANGEMENTS = tuple(a for a in ARRANGEMENTS if a != "tandem")
+PRELOAD_KINDS = ("position", "spring")
 
 
 @dataclass(frozen=True)
@@ -145,10 +150,10 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
     >>> round(cold.preload, 6), round(cold.Fa), round(cold.Fr), round(warm.preload)
     (300.0, 431, 1010, 1381)
     """
-    if arrangement not in ("back_to_back", "face_to_face"):
-        raise InputError("bearing.arrangement", arrangement, "back_to_back or face_to_face")
-    if kind not in ("position", "spring"):
-        raise InputError("bearing.preload", kind, "position or spring")
+    if arrangement not in PAIR_ARRANGEMENTS:
+        raise InputError("bearing.arrangement", arrangement, " or ".join(PAIR_ARRANGEMENTS))
+    if kind not in PRELOAD_KINDS:
+        raise InputError("bearing.preload", kind, " or ".join(PRELOAD_KINDS))
     for name, v in (("Fa", Fa), ("Fr", Fr)):
         if not (np.isfinite(v) and v >= 0):
             raise InputError(name, v, "must be finite and >= 0 [N]")

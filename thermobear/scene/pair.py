@@ -28,12 +28,11 @@ References
 from __future__ import annotations
 
 from thermobear.errors import InputError
+from thermobear.loads.pair import PAIR_ARRANGEMENTS, PRELOAD_KINDS
 from thermobear.schema import Field, check_value
 
 __all__ = ["PAIR_ARRANGEMENTS", "PRELOAD_KINDS", "PAIR_FIELDS", "PAIR_WITH", "check_pair"]
 
-PAIR_ARRANGEMENTS = ("back_to_back", "face_to_face")
-PRELOAD_KINDS = ("position", "spring")
 
 #: ``[bearing]`` keys of a preloaded pair (the scene's bearing is one of two equal ones)
 PAIR_FIELDS = {
