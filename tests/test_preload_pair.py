@@ -301,12 +301,12 @@ def test_sweep_rows_of_a_pair_carry_its_warm_preload():
     assert row["preload_warm_N"] > 2 * row["preload_cold_N"] and any("warm / cold preload" in w for w in row["warnings"])
 
 
-def test_a_lost_preload_and_the_static_form_at_speed_are_named():
-    """At 20 000 rpm the example's outer ring runs 23 K above its inner ring and the pair's preload goes to 0 N: the
+def test_a_lost_preload_and_the_static_form_at_speed_are_named(spindle):
+    """At 20 000 rpm the uncut machine's (one bearing's, a shaft end either side) outer ring runs 23 K above its inner ring and the pair's preload goes to 0 N: the
     run gave it as a fixed point with no word of the play; now named (warm / cold below 0.5, 'the pair has play').
     At a speed where the bearing takes the high-speed form, the answer says that the pair's preload is the static
     form's (no centrifugal terms); a spring preload does not get that warning."""
-    s = tb.load_scene(tb.example_path("spindle_7014C_pair_oil_air.toml"))
+    s = spindle
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         fast = tb.steady_state(s.with_(n_rpm=20000.0))
@@ -324,13 +324,13 @@ def test_din732_refuses_a_pair_scene_by_name():
 
 
 @pytest.mark.parametrize("n_rpm, second", [(12000.0, False), (17000.0, True)])
-def test_the_fixed_point_is_probed_for_a_second_equilibrium_above_it(n_rpm, second):
-    """At 17 000 rpm the example's loop settles at a light preload (its loaded bearing ≈ 400 N), but the loop map g
+def test_the_fixed_point_is_probed_for_a_second_equilibrium_above_it(spindle, n_rpm, second):
+    """At 17 000 rpm the uncut machine's loop settles at a light preload (its loaded bearing ≈ 400 N), but the loop map g
     rises above the diagonal again higher up (a reviewer evaluated g(700 N) = 787 N; a second fixed point ≈ 880 N):
     which one the loop found depended on its first step only.  The loop now starts once more at twice the fixed
     point's axial load; where g does not fall back there, a named warning says the preload has a second, unstable
     equilibrium above it.  At 12 000 rpm the probe falls back: no warning."""
-    s = tb.load_scene(tb.example_path("spindle_7014C_pair_oil_air.toml")).with_(n_rpm=n_rpm)
+    s = spindle.with_(n_rpm=n_rpm)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         st = tb.steady_state(s)
@@ -354,23 +354,33 @@ def test_a_pair_without_external_radial_load_runs(tmp_path):
     assert st.preload["Fr_N"] == 0.0 and st.preload["Fa_N"] > 500.0 and st.preload["warm_N"] > 200.0
 
 
-def test_a_probe_the_models_cannot_evaluate_is_not_called_unstable(tmp_path):
-    """The example cut at the pair's middle (no right shaft end, both right ends adiabatic) settles at 4378 N; at twice
-    that load the warm rings close the bearing's radial play, where the pair's loads are beyond the model.  That was
-    reported as 'a second equilibrium'; it is now 'stability not established' (probe['rises'] None)."""
-    text = open(tb.example_path("spindle_7014C_pair_oil_air.toml"), encoding="utf-8").read()
-    text = text.replace("length_right_mm = 175.0", "length_right_mm = 0.0")
-    text = text.replace('end_right = "free" ', 'end_right = "adiabatic" ').replace('end_right = "air" ',
-                                                                                 'end_right = "adiabatic" ')
-    path = tmp_path / "cut.toml"
-    path.write_text(text, encoding="utf-8")
+def test_a_probe_the_models_cannot_evaluate_is_not_called_unstable():
+    """The example (`init --pair`: the bearing's share of the pair's machine, cut at the symmetry plane) settles at
+    3138 N; at twice that load the warm rings close the bearing's radial play, where the pair's loads are beyond the
+    model.  That was reported as 'a second equilibrium'; it is now 'stability not established' (probe['rises'] None)."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        st = tb.steady_state(tb.load_scene(path))
-    assert st.preload["warm_N"] == pytest.approx(4378.0, rel=2e-3) and st.preload["probe"]["rises"] is None
+        st = tb.steady_state(tb.load_scene(tb.example_path("spindle_7014C_pair_oil_air.toml")))
+    assert st.preload["warm_N"] == pytest.approx(3138.0, rel=2e-3) and st.preload["probe"]["rises"] is None
     texts = [str(w) for w in st.warnings]
     assert any("stability above the fixed point is not established" in t for t in texts)
     assert not any("second equilibrium" in t for t in texts)
+
+
+def test_init_pair_cuts_the_machine_at_the_symmetry_plane(spindle):
+    """`init --pair` builds the bearing's share of the pair's machine: the shaft and housing end at the bearing's face
+    toward the other bearing, adiabatic (no heat crosses the symmetry plane).  With half the cooling paths of one
+    bearing's machine (a shaft end either side, a housing around it alone: the `spindle` fixture, the same bearing,
+    loads and preload), the share runs hotter and its preload higher."""
+    ex = tb.load_scene(tb.example_path("spindle_7014C_pair_oil_air.toml"))
+    sh, ho = ex.network.shaft, ex.network.housing
+    assert sh.length_right == 0.0 and sh.end_right == "adiabatic" and ho.end_right == "adiabatic"
+    B = ex.bearing.width
+    assert ho.offset + 0.5 * ho.axial_length == pytest.approx(0.5 * B)        # the housing ends at the bearing's face
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        cut, whole = tb.steady_state(ex), tb.steady_state(spindle)
+    assert cut.T_C["inner_ring"] > whole.T_C["inner_ring"] + 10.0 and cut.preload["warm_N"] > whole.preload["warm_N"]
 
 
 @pytest.mark.parametrize("arrangement, sign", [("back_to_back", -1), ("face_to_face", +1)])
@@ -398,12 +408,12 @@ def test_a_spacer_is_read_from_the_scene_and_needs_its_pair(tmp_path):
         tb.load_scene(path)
 
 
-def test_the_answer_brackets_the_balls_share_of_the_preload_rise():
-    """The balls run 29 K above the rings' mean in the example and their growth drives most of the rise; their
+def test_the_answer_brackets_the_balls_share_of_the_preload_rise(spindle):
+    """The balls run 29 K above the rings' mean in the uncut machine and their growth drives most of the rise; their
     temperature rests on the estimated ball–race conductance.  The answer gives the warm preload at the same ring
     temperatures with the balls at the rings' mean beside its own (533 N against 1482 N), and `run` prints it; a spring
     keeps its force either way."""
-    s = tb.load_scene(tb.example_path("spindle_7014C_pair_oil_air.toml"))
+    s = spindle
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         st = tb.steady_state(s)

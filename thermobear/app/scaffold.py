@@ -137,9 +137,8 @@ def _pair_rows(brg: BallBearing, pair, preload_N) -> list:
     except InputError as exc:
         raise InputError("--preload-N", preload_N, exc.expected) from None
     return [("arrangement", pair, "one bearing of a symmetric pair (--pair); the loaded one of the two is solved, both at "
-             "the same temperatures (thermobear.scene.pair); the network below is one bearing's machine, which "
-             "overstates a pair bearing's cooling: cut it at the pair's middle with [shaft] length_right_mm = 0 and "
-             "both end_right = \"adiabatic\""),
+             "the same temperatures (thermobear.scene.pair); the network below is this bearing's share of the "
+             "pair's machine, cut at the symmetry plane between the two ([shaft] and [housing] end_right)"),
             ("preload_N", float(preload_N), "N: the pair's cold preload as mounted (--preload-N; a maker's class is the "
              "unmounted set's, the seats' fits add to it), a position preload: it follows the temperatures"),
             ("preload", "position", "position (rigid: ground faces or spacers) | spring (a constant force)")]
@@ -258,27 +257,41 @@ def _T_in_range() -> tuple:
 _MACHINE_SRC = "builders' default (thermobear/thermal/builders/machine.py)"
 
 
-def _shaft_rows(m, lay) -> list:
+#: where a pair's bearing's share of the machine ends (``init --pair``): the symmetry plane between the two
+#: bearings, adjacent (no spacer), through which no heat flows
+_PAIR_CUT = "the pair's symmetry plane (--pair): the bearing's share of the machine ends at its face toward the other bearing"
+
+
+def _shaft_rows(m, lay, pair: bool = False) -> list:
     s = m.shaft
+    right = ([("length_right_mm", round(1e3 * (lay.z_s1 - lay.B / 2), 3), f"mm: 0, {_PAIR_CUT} (with a spacer, [bearing] spacer_mm: half its length)")] if pair else
+             [("length_right_mm", round(1e3 * (lay.z_s1 - lay.B / 2), 3), "mm: 2.5 d, as the left")])
     return [
         ("diameter_mm", round(2e3 * lay.r_s, 3), "mm: the bearing bore (catalogue)"),
         ("length_left_mm", round(1e3 * (-lay.B / 2 - lay.z_s0), 3), f"mm: 2.5 d, {_MACHINE_SRC}: DIN 748-1 shaft ends "
          "are 2.1-2.8 d long"),
-        ("length_right_mm", round(1e3 * (lay.z_s1 - lay.B / 2), 3), "mm: 2.5 d, as the left"),
+        *right,
         ("material", s.material, f"{_MACHINE_SRC} (steel C45)"),
         ("end_left", s.end_left, "free: convection from the end face; fixed (with T_end_left_C): a coupling, a motor"),
-        ("end_right", s.end_right, "free | fixed | adiabatic"),
+        ("end_right", s.end_right, "adiabatic: the symmetry plane (free | fixed | adiabatic)" if pair else
+         "free | fixed | adiabatic"),
         ("surface", s.surface, "air: the shaft outside the housing in the room's air"),
         ("interference_um", round(1e6 * lay.delta_inner, 2), "µm diametral: probable interference of a k5 seat "
          "(m5 above 100 mm), ISO 286 / ISO 492 (materials/iso286_fits.toml)"),
     ]
 
 
-def _housing_rows(m, lay, housing: str) -> list:
+def _housing_rows(m, lay, housing: str, pair: bool = False) -> list:
     h = m.housing
     rows = [("type", housing, "--housing: block | pillow | flange"),
-            ("material", h.material, f"{_MACHINE_SRC}: grey cast iron EN-GJL-250, the material of plummer blocks"),
-            ("axial_length_mm", round(1e3 * lay.L_h, 3), f"mm: 2 B, {_MACHINE_SRC} (room for a cover either side)")]
+            ("material", h.material, f"{_MACHINE_SRC}: grey cast iron EN-GJL-250, the material of plummer blocks")]
+    if pair:
+        rows += [("axial_length_mm", round(1e3 * lay.L_h, 3), f"mm: 1.5 B, room for a cover on the left ({_MACHINE_SRC}: "
+                  f"B/2 either side of a single bearing), {_PAIR_CUT}"),
+                 ("offset_mm", round(1e3 * h.offset, 3), "mm: the housing's centre from the bearing's (its right end at "
+                  "the bearing's right face)")]
+    else:
+        rows.append(("axial_length_mm", round(1e3 * lay.L_h, 3), f"mm: 2 B, {_MACHINE_SRC} (room for a cover either side)"))
     if lay.shape == "block":
         rows += [("height_mm", round(1e3 * lay.height, 3), f"mm: 2 D, {_MACHINE_SRC} (a wall of D/2 around the seat)"),
                  ("depth_mm", round(1e3 * lay.depth, 3), "mm: 2 D, as the height"),
@@ -290,7 +303,8 @@ def _housing_rows(m, lay, housing: str) -> list:
                      ("base_length_mm", round(1e3 * lay.base_length, 3), "mm: 2.5 × body diameter (the foot)")]
     rows += [("end_left", lay.end_left, "air | mounted | adiabatic" + (" (a flange is bolted by its left face)"
                                                                         if housing == "flange" else "")),
-             ("end_right", lay.end_right, "air | mounted | adiabatic"),
+             ("end_right", lay.end_right, "adiabatic: the symmetry plane (air | mounted | adiabatic)" if pair else
+              "air | mounted | adiabatic"),
              ("mounting", h.mounting, "bolted to a frame at ambient (a half-space); none: free-standing"),
              ("mounting_h_W_m2K", round(H_MOUNT_W_M2K, 1), "W/(m2 K): bolted joint in air at 0.1 MPa (Bergman et al. "
               "2011 Table 3.2)"),
@@ -446,9 +460,14 @@ def scaffold(name: str, lubrication: str, *, oil: str | None = None, housing: st
                       "conditions, builders' defaults; no measurement", None)]
     d = {k: _table(r) for k, r in rows.items()}
     d["housing"] = {"type": housing}
+    pair = bool(pair_rows)
+    if pair:                     # the bearing's share of the pair's machine: cut at the symmetry plane (_PAIR_CUT)
+        B_mm = 1e3 * brg.width
+        d["shaft"] = {"length_right_mm": 0.0, "end_right": "adiabatic"}
+        d["housing"].update(axial_length_mm=1.5 * B_mm, offset_mm=-0.25 * B_mm, end_right="adiabatic")
     sc = scene_from_dict(d)
     lay = layout(sc.network)
-    rows["shaft"], rows["housing"] = _shaft_rows(sc.network, lay), _housing_rows(sc.network, lay, housing)
+    rows["shaft"], rows["housing"] = _shaft_rows(sc.network, lay, pair), _housing_rows(sc.network, lay, housing, pair)
     d = {k: _table(r) for k, r in rows.items()}
     sc = scene_from_dict(d)                                  # the scene as written is a valid scene
     lines = [f"# A {brg.name}{_suffix(closure)} in a {housing} housing, {lubrication}: written by "
