@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import warnings
 
 import numpy as np
 import pytest
@@ -293,6 +294,25 @@ def test_api_steady_state_with_uncertainty(s004):
         tb.steady_state(s004, uncertainty=0)
     with pytest.raises(InputError):
         tb.steady_state(s004.with_(T_C=50.0), uncertainty=4)
+
+
+def test_a_pairs_band_carries_its_warm_preload(s004):
+    """Seed 004's 7210 as one bearing of a back-to-back pair preloaded to 450 N (the block's 650 N on the pair): the
+    warm preload, the design answer of a pair, gets its band and its ranking like a temperature.  Each solved sample's
+    loaded bearing carries at least the pair's preload (a radial load on a preloaded pair adds axial load to the
+    loaded bearing), the nominal value is the nominal answer's, and a scene without a pair has no such output."""
+    pair = s004.with_(arrangement="back_to_back", preload_N=450.0, Fa=0.0, Fr=650.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = tb.steady_state(pair, uncertainty=8, seed=1)
+    warm, Fa = r.outputs["preload.warm_N"], r.outputs["preload.Fa_N"]
+    ok = np.isfinite(warm)
+    assert ok.sum() >= 6 and np.all(Fa[ok] > warm[ok]) and np.all(warm[ok] > 450.0)
+    assert r.nominal_values["preload.warm_N"] == pytest.approx(r.nominal.preload["warm_N"], rel=1e-12)
+    b = r.bands["preload.warm_N"]
+    assert b["p5"] < b["p50"] < b["p95"] and "preload.warm_N" in r.sensitivity
+    assert "preload.warm_N [N]" in r.summary() and "Inputs ranked for preload.warm_N" in r.summary()
+    assert not any(k.startswith("preload.") for k in tb.steady_state(s004, uncertainty=4, seed=1).outputs)
 
 
 def test_cli_run_uncertainty_json_and_table(capsys):

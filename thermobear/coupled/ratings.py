@@ -53,7 +53,7 @@ from thermobear.rating.minimum_load import (AXIAL_KINDS, minimum_axial_load, min
 from thermobear.thermal.builders import Machine, seat_interferences
 from thermobear.validity import LIMITS, check, collect
 
-__all__ = ["RATING_OUTPUTS", "Ratings", "check_static_safety", "operating_lives", "operating_temperature_C",
+__all__ = ["PRELOAD_OUTPUTS", "RATING_OUTPUTS", "Ratings", "check_static_safety", "operating_lives", "operating_temperature_C",
            "preload_warnings", "rating_samples", "scene_clearance", "scene_ratings", "typical_fits"]
 
 _LOAD_FIELDS = "operation (Fa_N, Fr_N, Fz_N)"
@@ -472,6 +472,10 @@ def operating_lives(scene, T_op_C, nu_m2_s=None, *, static=None) -> dict:
 #: the design answers an uncertainty band gives (:func:`rating_samples`): output name → unit
 RATING_OUTPUTS = {"ratings.T_operating_C": "°C", "ratings.kappa": "-", "ratings.a_ISO": "-", "ratings.L10m_h": "h",
                   "ratings.clearance_op_um": "µm"}
+
+#: a preloaded pair's answers an uncertainty band gives (:mod:`thermobear.coupled.preload`): the warm preload and the
+#: loaded bearing's axial load → unit
+PRELOAD_OUTPUTS = {"preload.warm_N": "N", "preload.Fa_N": "N"}
 
 
 def rating_samples(scenes, states) -> dict:

@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from thermobear.coupled.ratings import RATING_OUTPUTS
+from thermobear.coupled.ratings import PRELOAD_OUTPUTS, RATING_OUTPUTS
 from thermobear.errors import InputError
 from thermobear.lazy import lazy_module
 
@@ -274,13 +274,15 @@ def summary_lines(res, top: int = 8) -> list:
     outside = 0
     for key, b in res.bands.items():
         kind, _, name = key.partition(".")
-        unit = RATING_OUTPUTS.get(key) or ("°C" if kind == "T_C" else "W")
-        v = res.nominal_values.get(key, _nominal_value(nom, key) if kind != "ratings" else None)
-        f = ".4g" if key in RATING_OUTPUTS else ".2f"
+        design = RATING_OUTPUTS.get(key) or PRELOAD_OUTPUTS.get(key)
+        unit = design or ("°C" if kind == "T_C" else "W")
+        v = res.nominal_values.get(key, _nominal_value(nom, key) if not design else None)
+        f = ".4g" if design else ".2f"
         lo, hi = last(b["p5"]), last(b["p95"])
         out = v is not None and bool(np.isfinite(lo) and np.isfinite(hi)) and not lo <= v <= hi
         outside += out
-        lines.append(f"  {(name or key) + ' [' + unit + ']':26s} {'' if v is None else f'{v:9{f}}':>9s} "
+        label = key if key in PRELOAD_OUTPUTS else (name or key)
+        lines.append(f"  {label + ' [' + unit + ']':26s} {'' if v is None else f'{v:9{f}}':>9s} "
                      f"{last(b['p5']):9{f}} {last(b['p50']):9{f}} {last(b['p95']):9{f}}" + ("  *" if out else ""))
     if outside:
         lines += ["", "  * nominal outside its 5-95 % band: the nominal inputs are not the middle of their ranges "
@@ -288,7 +290,7 @@ def summary_lines(res, top: int = 8) -> list:
     fc = res.failed_count
     lines += ["", f"Failed samples: {len(res.failed)} of {res.n}" + (
         " (" + ", ".join(f"{k} {v}" for k, v in sorted(fc.items())) + ")" if fc else "")]
-    shown = [k for k in ("P_W", *(f"T_C.{n}" for n in res.focus)) if k in res.sensitivity]
+    shown = [k for k in ("P_W", *(f"T_C.{n}" for n in res.focus), "preload.warm_N") if k in res.sensitivity]
     caveat = next((res.sensitivity[k]["caveat"] for k in shown if res.sensitivity[k].get("caveat")), None)
     if caveat:
         lines += ["", f"caveat: {caveat['name']}: {caveat['message']}"]

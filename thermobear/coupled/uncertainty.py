@@ -68,7 +68,7 @@ from thermobear.contact.geometry import bearing_values
 from thermobear.contact.materials import PROPERTIES, material
 from thermobear.coupled.pipeline import Family, families, family_contacts, family_loads
 from thermobear.coupled.preload import loaded_scene
-from thermobear.coupled.ratings import rating_samples
+from thermobear.coupled.ratings import PRELOAD_OUTPUTS, rating_samples
 from thermobear.coupled.sensitivity import SENSITIVITY, bands, ranking, summary_lines
 from thermobear.coupled.sources import family_network, loss_sources, prepared_for
 from thermobear.coupled import steady as _steady
@@ -447,10 +447,26 @@ def steady_outputs(results, scenes=None) -> dict:
         out["P_W"][i] = r.P_W
         for k, v in loss[i].items():
             out[f"breakdown_W.{k}"][i] = float(v)
+    if any(getattr(r, "preload", None) for r in ok.values()):   # a preloaded pair: its warm preload, a design answer
+        out.update({k: np.full(len(results), np.nan) for k in PRELOAD_OUTPUTS})
+        for i, r in ok.items():
+            out.update({k: _put(out[k], i, r.preload[k.split(".", 1)[1]]) for k in PRELOAD_OUTPUTS})
     if scenes is not None:
         states = [r if isinstance(r, SteadyState) else None for r in results]
         out.update(rating_samples([loaded_scene(sc, r) for sc, r in zip(scenes, states)], states))
     return out
+
+
+def _put(a: np.ndarray, i: int, v) -> np.ndarray:
+    a[i] = float(v)
+    return a
+
+
+def preload_values(st: SteadyState) -> dict:
+    """A preloaded pair's answers of :data:`PRELOAD_OUTPUTS` (output name → value [N]) of a solved point (none
+    without a pair)."""
+    p = getattr(st, "preload", None)
+    return {k: float(p[k.split(".", 1)[1]]) for k in PRELOAD_OUTPUTS} if p else {}
 
 
 def steady_uncertainty(scene: Scene, n: int, *, seed=None, method: str = "lhs", groups: int | None = None,
@@ -497,8 +513,9 @@ def steady_uncertainty(scene: Scene, n: int, *, seed=None, method: str = "lhs", 
                              sensitivity=ranking(sm.inputs, sm.X, outputs, sensitivity), failed=failed, n=sm.X.shape[0],
                              seed=seed, method=method, groups=sm.groups, sensitivity_method=sensitivity, group=sm.group,
                              focus=_focus(scene, nominal.T_C),
-                             nominal_values={k: float(v[0]) for k, v in rating_samples([loaded_scene(scene, nominal)],
-                                                                                       [nominal]).items()})
+                             nominal_values={**{k: float(v[0]) for k, v in rating_samples([loaded_scene(scene, nominal)],
+                                                                                         [nominal]).items()},
+                                             **preload_values(nominal)})
 
 
 def _solve_split(scenes, tol_K, prepared) -> list:
