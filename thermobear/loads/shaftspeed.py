@@ -179,6 +179,26 @@ def _external(Fa, Fr, M, x_load, n_rpm):
     return shape, np.stack([Fa, Fr, M - xF * Fr], axis=1), n
 
 
+def _start(sups, P, stiffness, tilt_arm):
+    """Bearing 0's loads (nb, 3) to start from and the cases' force scale (nb,) [N]: the low-speed shaft's, each
+    bearing kept at ≥ 10 % of the scale axially (the high-speed form needs both loaded; at speed the balls'
+    centrifugal force keeps a bearing loaded that the static pair unloads); where the low-speed shaft has no
+    solution (a bearing unloaded completely), the external loads shared."""
+    s0, s1 = sups[0].facing, sups[1].facing
+    try:
+        st = shaft_loads(sups, P[:, 0], P[:, 1], P[:, 2], stiffness=stiffness, tilt_arm=tilt_arm, refuse_overload=False)
+        R = st.reactions.reshape(-1, 2, 5)
+        R0, scale = R[:, 0, :3].copy(), np.maximum(np.abs(R[:, :, :2]).max(axis=(1, 2)), np.abs(P[:, :2]).max(axis=1))
+    except SolverError:
+        R0 = np.stack([np.maximum(s0 * P[:, 0], 0.0), 0.5 * P[:, 1], np.zeros(len(P))], axis=1)
+        scale = np.abs(P[:, :2]).max(axis=1)
+    scale = np.maximum(scale, 1e-3)
+    if sups[1].spring is None:
+        f = 0.1 * scale
+        R0[:, 0] = np.maximum(R0[:, 0], np.maximum(f, f - s1 * P[:, 0]))
+    return R0, scale
+
+
 def _newton(pb, z, tol, maxiter):
     """Damped Newton on every case: (z, scaled residual norm, iterations); NoConvergence names the first case that
     does not reach ``tol``."""
@@ -188,9 +208,8 @@ def _newton(pb, z, tol, maxiter):
     norm = np.abs(r).max(axis=1)
     its = np.zeros(nb, dtype=int)
     live = np.flatnonzero(norm > tol)
+    err = None                          # the last trial's error: what stopped a step that found no descent
     while live.size:
-        if its[live].max() >= maxiter:
-            break
         dz = -np.linalg.solve(J[live], r[live][..., None])[..., 0]
         lam, todo = np.ones(live.size), np.arange(live.size)
         for _ in range(_HALVINGS):
@@ -198,12 +217,13 @@ def _newton(pb, z, tol, maxiter):
             try:
                 r_t, J_t = pb.evaluate(z[sel] + lam[todo, None] * dz[todo], sel)
                 n_t = np.abs(r_t).max(axis=1)
-            except SolverError:         # loads the high-speed form cannot solve: shorter steps (all, in the batch)
-                n_t = np.full(sel.size, np.inf)
+            except SolverError as exc:  # loads the high-speed form cannot solve: shorter steps (all, in the batch)
+                n_t, err = np.full(sel.size, np.inf), exc
             ok = n_t < norm[sel]
-            took = sel[ok]
-            z[took] += lam[todo[ok], None] * dz[todo[ok]]
-            r[took], J[took], norm[took] = r_t[ok], J_t[ok], n_t[ok]
+            if ok.any():
+                took = sel[ok]
+                z[took] += lam[todo[ok], None] * dz[todo[ok]]
+                r[took], J[took], norm[took] = r_t[ok], J_t[ok], n_t[ok]
             lam[todo[~ok]] *= 0.5
             todo = todo[~ok]
             if not todo.size:
@@ -212,8 +232,23 @@ def _newton(pb, z, tol, maxiter):
         if todo.size:                   # no descent along the Newton step: stop those cases
             its[live[todo]] = maxiter
         live = live[norm[live] > tol]
+        P0 = pb.unknowns(z[live], live)    # a bearing unloading (F_a < 10⁻³ of the scale): no equilibrium ahead
+        its[live[np.minimum(P0[:, 0], pb.loads(P0, live)[:, 0]) < 1e-3 * pb.unit[live, 0]]] = maxiter
+        live = live[its[live] < maxiter]
     if np.any(norm > tol):
         k = int(np.argmax(norm > tol))
+        P0 = pb.unknowns(z[k:k + 1], np.array([k]))
+        Fa_k = np.array([P0[0, 0], pb.loads(P0, np.array([k]))[0, 0]])
+        if Fa_k.min() < 1e-2 * pb.unit[k, 0]:
+            err = NoEquilibrium(f"bearing {int(np.argmin(Fa_k))} of the pair unloads axially (F_a {Fa_k.min():.3g} N "
+                                "→ 0 along the steps: the other carries the external load alone, its balls lifted "
+                                "off the inner race — beyond the high-speed form, which needs both bearings loaded)",
+                                field="Fa, Fr, M (shaft loads)")
+        if isinstance(err, NoEquilibrium):
+            raise NoEquilibrium(
+                f"high-speed shaft on two bearings: no equilibrium for Fa = {pb.P[k, 0]:g} N, Fr = {pb.P[k, 1]:g} N, "
+                f"M = {pb.P[k, 2]:g} N m at {pb.n[k]:g} rpm — the steps towards it end where {err}",
+                field=err.field, iterations=int(its[k]), residual=float(norm[k])) from err
         raise NoConvergence(
             f"high-speed shaft on two bearings: compatibility not reached for Fa = {pb.P[k, 0]:g} N, Fr = "
             f"{pb.P[k, 1]:g} N, M = {pb.P[k, 2]:g} N m at {pb.n[k]:g} rpm (scaled residual {norm[k]:.3g} after "
@@ -276,10 +311,7 @@ def shaft_loads_high_speed(supports, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=0.0, x_load
     if any(s.bearing.kind != "angular_contact" for s in sups):
         raise InputError("supports", supports, "two angular contact bearings (a preloaded pair)")
     shape, P, n = _external(Fa, Fr, M, x_load, n_rpm)
-    st = shaft_loads(sups, P[:, 0], P[:, 1], P[:, 2], stiffness=stiffness, tilt_arm=tilt_arm, refuse_overload=False)
-    R0 = st.reactions.reshape(-1, 2, 5)[:, 0, :3]
-    scale = np.maximum(np.abs(st.reactions.reshape(-1, 2, 5)[:, :, :2]).max(axis=(1, 2)), np.abs(P[:, :2]).max(axis=1))
-    scale = np.maximum(scale, 1e-3)
+    R0, scale = _start(sups, P, stiffness, tilt_arm)
     pb = _Pair(sups, P, n, control, stiffness, tilt_arm, scale)
     z, norm, its = _newton(pb, R0[:, pb.free] / pb.unit[:, pb.free], tol, maxiter)
     idx = np.arange(P.shape[0])
