@@ -15,7 +15,8 @@ own frame (x mirrored for σ = −1) its inner ring is displaced by
 (rigid-body motion to first order; e_a the axial unit vector), with c_k its mounted axial position (the
 position preload: A sin α0 + offset, offset beyond first touch) and w_k the axial slide of an outer ring
 held by a spring (constant-force preload; w_k = 0 otherwise).  Its ring reaction P_k(q_k) and stiffness K_k
-are those of :func:`thermobear.loads.static.ring_reaction` (rigid rings, low speed).  By virtual work the
+are those of :func:`thermobear.loads.static.ring_reaction` (rigid rings, low speed; two bearings in the
+high-speed form: :mod:`thermobear.loads.shaftspeed`).  By virtual work the
 shaft is in equilibrium when
 
 .. math::
