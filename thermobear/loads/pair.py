@@ -141,7 +141,8 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
                         (:func:`~thermobear.loads.sets.warm_supports`; the cold offset does not depend on it)
     n_rpm : float       speed of the inner rings (with the shaft) [rpm], ≥ 0: the high-speed form (module docstring;
                         the offset stays the one mounted at rest); ``None`` (default): the static form
-    control : str       the high-speed form's raceway control (:func:`~thermobear.loads.highspeed.load_distribution_high_speed`)
+    control : str       the high-speed form's raceway control
+                        (:func:`~thermobear.loads.highspeed.load_distribution_high_speed`)
 
     Returns
     -------

@@ -2,9 +2,10 @@ r"""A rigid shaft on two bearings in the high-speed form: each bearing's loads f
 (the balls' centrifugal force and gyroscopic moment, Jones 1960), the shaft through both inner rings.
 
 :mod:`thermobear.loads.sets` solves the shaft with each bearing's low-speed ring reaction P_k(q_k), a function of
-its inner ring's displacement.  The high-speed relation (:func:`thermobear.loads.highspeed.load_distribution_high_speed`)
-is force-controlled: it gives the inner ring's displacement q_k = (δa, δr, θ)_k under the loads
-P_k = (F_a, F_r, M)_k of bearing k in its own frame (rings rigid, outer ring fixed, inner ring at n).  With two
+its inner ring's displacement.  The high-speed relation
+(:func:`thermobear.loads.highspeed.load_distribution_high_speed`) is force-controlled: it gives the inner ring's
+displacement q_k = (δa, δr, θ)_k under the loads P_k = (F_a, F_r, M)_k of bearing k in its own frame (rings rigid,
+outer ring fixed, inner ring at n).  With two
 bearings the shaft's equilibrium (axes, signs, T_k and c_k of :mod:`thermobear.loads.sets`; loads in the x–y plane)
 
 .. math:: T_0^T P_0 + T_1^T P_1 = P_{ext} \quad\Rightarrow\quad P_1 = T_1^{-T}\,\bigl(P_{ext} − T_0^T P_0\bigr)
@@ -138,7 +139,8 @@ class _Pair:
         """Bearing k's inner-ring displacement (nb, 3) [m, m, rad] under its loads P (nb, 3) at the speeds n."""
         if np.any(P[:, 0] <= 0.0) or not np.all(np.isfinite(P)):
             raise NoEquilibrium(f"bearing {k} of the pair would lose its axial load (F_a = {P[:, 0].min():.4g} N): "
-                                "the high-speed form needs both bearings loaded axially", field="Fa, Fr, M (shaft loads)")
+                                "the high-speed form needs both bearings loaded axially",
+                                field="Fa, Fr, M (shaft loads)")
         ld = load_distribution_high_speed(self.sups[k].bearing, Fa=P[:, 0], Fr=P[:, 1], M=P[:, 2], n_rpm=n, **self.kw)
         return np.stack([ld.delta_a, ld.delta_r, ld.theta], axis=1)
 
@@ -285,7 +287,10 @@ def shaft_loads_high_speed(supports, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=0.0, x_load
 
     Notes
     -----
-    .. math:: P_1 = T_1^{-T}(P_{ext} − T_0^T P_0), \qquad q_1(P_1) − (c_1 + w_1) e_a = T_1 T_0^{-1}\bigl(q_0(P_0) − c_0 e_a\bigr)
+    .. math::
+
+        P_1 = T_1^{-T}(P_{ext} − T_0^T P_0), \qquad
+        q_1(P_1) − (c_1 + w_1) e_a = T_1 T_0^{-1}\bigl(q_0(P_0) − c_0 e_a\bigr)
 
     (module docstring; Jones 1960; Harris & Kotzalas 2007, *Essential Concepts* ch. 8 and *Advanced Concepts*
     ch. 1–3).  At n = 0 it equals :func:`~thermobear.loads.sets.shaft_loads`.
