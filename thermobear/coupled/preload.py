@@ -14,8 +14,8 @@ and more preload: the steady state is the fixed point
 solved by direct iteration, as the heat-up would reach it: each step a full coupled steady state of the bearing
 under the loaded bearing's loads (F_a,k, F_r,k), its inner-ring, outer-ring and ball temperatures (nodes
 ``inner_ring`` / ``outer_ring``, else the inner / outer role; the ball role), the warm pair's loads again, until the
-loads change by less than ``tol_N``.  The first step is at the cold preload at the scene's speed.  A spring preload keeps its force:
-no loop, one steady state under the spring force and the external loads.
+loads change by less than ``tol_N``.  The first step is at the cold preload at the scene's speed.  A spring preload
+keeps its force: no loop, one steady state under the spring force and the external loads.
 
 Runaway (:class:`~thermobear.errors.ThermalPreloadRunaway`, with the history of the loop and its warm preloads):
 as for a radial preload (:mod:`thermobear.coupled.clearance`), the iteration diverges when the loop's gain g′
