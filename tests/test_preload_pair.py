@@ -14,7 +14,7 @@ from thermobear.app.cli import main
 from thermobear.app.sweep import run_sweep
 from thermobear.contact.fits import T_REF_C
 from thermobear.coupled.speeds import din732_safe_speed
-from thermobear.coupled.preload import PRELOAD_TOL_N, pair_scene, preload_step_runs_away
+from thermobear.coupled.preload import PRELOAD_TOL_N, pair_scene, preload_step_runs_away, thermal_preload_warnings
 from thermobear.errors import InputError, ThermalPreloadRunaway
 from thermobear.loads.pair import pair_loads, pair_preload_offset
 from thermobear.loads.sets import bearing_set
@@ -116,9 +116,10 @@ def test_the_external_axial_load_goes_to_the_loaded_bearing():
 
 # --------------------------------------------------------------------------- (d) the fixed point of a scene
 def test_spindle_pair_solves_to_a_warm_preload_above_the_cold_one(spindle, spindle_state):
-    """A 7014C pair at 12000 rpm on oil-air: the warm rings and balls raise the 300 N preload; the answer's loads
-    are the warm pair's at its own temperatures (the fixed point, to tolerance), the power above the power at the
-    cold preload, the warning named (warm > 2 × cold)."""
+    """A 7014C pair at 12000 rpm on oil-air: the speed (the balls' centrifugal force, the inner rings' growth) and
+    the warm rings and balls raise the 300 N preload; the answer's loads are the warm pair's at its own temperatures
+    and speed (the fixed point, to tolerance), the power above the power at the cold preload (at speed), the warning
+    named (warm > 2 × cold)."""
     st = spindle_state
     p = st.preload
     assert p["kind"] == "position" and p["cold_N"] == 300.0 and p["warm_N"] > 2 * 300.0
@@ -128,11 +129,14 @@ def test_spindle_pair_solves_to_a_warm_preload_above_the_cold_one(spindle, spind
     assert T["inner ring"] == pytest.approx(st.T_C["inner_ring"]) and T["balls"] == pytest.approx(st.T_ball_C)
     again = pair_loads(spindle.bearing, "back_to_back", 300.0, "position", 0.0, spindle.Fr,
                        dT_inner=T["inner ring"] - T_REF_C, dT_outer=T["outer ring"] - T_REF_C,
-                       dT_ball=T["balls"] - T_REF_C)
+                       dT_ball=T["balls"] - T_REF_C, n_rpm=spindle.n_rpm)
     assert abs(again.Fa - p["Fa_N"]) <= PRELOAD_TOL_N and again.preload == pytest.approx(p["warm_N"], rel=1e-9)
     pre = [h["preload_N"] for h in p["history"]]
     assert pre == sorted(pre)                                    # the heat-up's way: rising to the answer
-    cold = tb.steady_state(pair_scene(spindle, pair_loads(spindle.bearing, "back_to_back", 300.0, Fr=spindle.Fr)))
+    at_speed = pair_loads(spindle.bearing, "back_to_back", 300.0, Fr=spindle.Fr, n_rpm=spindle.n_rpm)
+    assert p["form"] == "high_speed" and p["at_speed_cold_N"] == pytest.approx(at_speed.preload, rel=1e-9)
+    assert 300.0 < p["at_speed_cold_N"] < p["warm_N"]
+    cold = tb.steady_state(pair_scene(spindle, at_speed))
     assert st.P_W > cold.P_W and st.T_C["inner_ring"] > cold.T_C["inner_ring"]
     assert any(w.quantity == "thermal_preload" for w in st.warnings)
 
@@ -272,11 +276,11 @@ def test_run_names_the_runaway_exit_3(tmp_path, capsys):
 
 
 def test_init_writes_a_pair_scene_that_run_solves_to_the_examples_answer(tmp_path, capsys):
-    """`thermobear init 7014C --lubrication oil-air --speed-rpm 12000 --pair back_to_back --preload-N 300` writes the
+    """`thermobear init 7014C --lubrication oil-air --speed-rpm 8000 --pair back_to_back --preload-N 300` writes the
     pair's keys and no external axial load (the preload sets the contacts); it is the bundled example scene, and
     `run` solves its thermal preload.  Bad options are refused naming them."""
     out = tmp_path / "pair.toml"
-    assert main(["init", "7014C", "--lubrication", "oil-air", "--speed-rpm", "12000", "--pair", "back_to_back",
+    assert main(["init", "7014C", "--lubrication", "oil-air", "--speed-rpm", "8000", "--pair", "back_to_back",
                  "--preload-N", "300", "--out", str(out)]) == 0
     text = out.read_text(encoding="utf-8")
     assert 'arrangement = "back_to_back"' in text and "preload_N = 300.0" in text and "Fa_N = 0.0" in text
@@ -301,21 +305,24 @@ def test_sweep_rows_of_a_pair_carry_its_warm_preload():
     assert row["preload_warm_N"] > 2 * row["preload_cold_N"] and any("warm / cold preload" in w for w in row["warnings"])
 
 
-def test_a_lost_preload_and_the_static_form_at_speed_are_named(spindle):
-    """At 20 000 rpm the uncut machine's (one bearing's, a shaft end either side) outer ring runs 23 K above its inner ring and the pair's preload goes to 0 N: the
-    run gave it as a fixed point with no word of the play; now named (warm / cold below 0.5, 'the pair has play').
-    At a speed where the bearing takes the high-speed form, the answer says that the pair's preload is the static
-    form's (no centrifugal terms); a spring preload does not get that warning."""
+def test_a_lost_preload_is_named_and_at_20000_rpm_the_speed_runs_the_pair_away(spindle):
+    """A warm preload of 0 N is named (warm / cold below 0.5, 'the pair has play').  With the static form the
+    uncut machine's pair lost its preload at 20 000 rpm (its outer ring 23 K above its inner ring); with the pair at speed
+    (the balls' centrifugal force, the inner rings' growth) it carries 3000 N cold at 20 000 rpm, and the loop's
+    heat closes the bearing's radial play: a thermal preload runaway, named so, its steps shrinking (a fixed point
+    may lie just past what the model represents).  No warning says the pair's preload is the static form's."""
     s = spindle
+    T = {"inner ring": 40.0, "outer ring": 63.0, "balls": 51.5}
+    texts = [str(w) for w in thermal_preload_warnings(s, 0.0, T)]
+    assert len(texts) == 1 and "the pair has play" in texts[0] and "bearing.preload_N" in texts[0]
+    assert pair_loads(s.bearing, "back_to_back", 300.0, Fr=s.Fr, n_rpm=20000.0).preload == pytest.approx(3000.0, rel=2e-3)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        fast = tb.steady_state(s.with_(n_rpm=20000.0))
-        spring = tb.steady_state(s.with_(preload="spring"))
-    texts = [str(w) for w in fast.warnings]
-    assert fast.preload["warm_N"] < 0.5 * fast.preload["cold_N"]
-    assert any("the pair has play" in t for t in texts) and fast.preload["warm_N"] == 0.0
-    assert fast.models_used["high_speed"][0] == "yes" and any("pair preload, static form" in t for t in texts)
-    assert not any("pair preload, static form" in str(w) for w in spring.warnings)
+        with pytest.raises(ThermalPreloadRunaway, match="close the bearing's radial play") as e:
+            tb.steady_state(s.with_(n_rpm=20000.0))
+        st = tb.steady_state(s)
+    assert "were shrinking" in str(e.value) and e.value.preload_history_N[0] > 2500.0
+    assert not any("static form" in str(w) for w in st.warnings)
 
 
 def test_din732_refuses_a_pair_scene_by_name():
@@ -323,20 +330,22 @@ def test_din732_refuses_a_pair_scene_by_name():
         din732_safe_speed(tb.load_scene(tb.example_path("spindle_7014C_pair_oil_air.toml")))
 
 
-@pytest.mark.parametrize("n_rpm, second", [(12000.0, False), (17000.0, True)])
+@pytest.mark.parametrize("n_rpm, second", [(12000.0, False), (17000.0, None)])
 def test_the_fixed_point_is_probed_for_a_second_equilibrium_above_it(spindle, n_rpm, second):
-    """At 17 000 rpm the uncut machine's loop settles at a light preload (its loaded bearing ≈ 400 N), but the loop map g
-    rises above the diagonal again higher up (a reviewer evaluated g(700 N) = 787 N; a second fixed point ≈ 880 N):
-    which one the loop found depended on its first step only.  The loop now starts once more at twice the fixed
-    point's axial load; where g does not fall back there, a named warning says the preload has a second, unstable
-    equilibrium above it.  At 12 000 rpm the probe falls back: no warning."""
+    """With the static pair at 17 000 rpm the uncut machine's loop settled at a light preload (≈ 400 N) below a second,
+    unstable one (a reviewer evaluated g(700 N) = 787 N): which one the loop found depended on its first step only.
+    The loop starts once more at twice the fixed point's axial load; where g does not fall back there, a named
+    warning says the preload has a second, unstable equilibrium above it; where the models cannot evaluate it, that
+    the stability is not established.  At 12 000 rpm the probe falls back: no warning.  With the pair at speed the
+    17 000 rpm loop settles at 4270 N, and at twice that the warm rings close the radial play: not established."""
     s = spindle.with_(n_rpm=n_rpm)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         st = tb.steady_state(s)
     probe = st.preload["probe"]
     assert probe["Fa_N"] == pytest.approx(2.0 * st.preload["Fa_N"]) and probe["rises"] is second
-    assert any("second equilibrium above the fixed point" in str(w) for w in st.warnings) is second
+    assert any("second equilibrium above the fixed point" in str(w) for w in st.warnings) is bool(second)
+    assert any("stability above the fixed point is not established" in str(w) for w in st.warnings) is (second is None)
 
 
 def test_a_pair_without_external_radial_load_runs(tmp_path):
@@ -354,24 +363,24 @@ def test_a_pair_without_external_radial_load_runs(tmp_path):
     assert st.preload["Fr_N"] == 0.0 and st.preload["Fa_N"] > 500.0 and st.preload["warm_N"] > 200.0
 
 
-def test_a_probe_the_models_cannot_evaluate_is_not_called_unstable():
-    """The example (`init --pair`: the bearing's share of the pair's machine, cut at the symmetry plane) settles at
-    3138 N; at twice that load the warm rings close the bearing's radial play, where the pair's loads are beyond the
-    model.  That was reported as 'a second equilibrium'; it is now 'stability not established' (probe['rises'] None)."""
+def test_the_cut_pair_runs_away_at_12000_rpm():
+    """The example is the bearing's share of the pair's machine, cut at the pair's middle (no right shaft end, both
+    right ends adiabatic).  With the static pair, cut so, it settled at 12 000 rpm at 4378 N (its probe not evaluated:
+    at twice that load the warm rings closed the radial play).  With the pair at speed (1269 N cold at 12 000 rpm) the
+    less-cooled bearing's loop closes the radial play itself: a thermal preload runaway naming it."""
+    s = tb.load_scene(tb.example_path("spindle_7014C_pair_oil_air.toml")).with_(n_rpm=12000.0)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        st = tb.steady_state(tb.load_scene(tb.example_path("spindle_7014C_pair_oil_air.toml")))
-    assert st.preload["warm_N"] == pytest.approx(3138.0, rel=2e-3) and st.preload["probe"]["rises"] is None
-    texts = [str(w) for w in st.warnings]
-    assert any("stability above the fixed point is not established" in t for t in texts)
-    assert not any("second equilibrium" in t for t in texts)
+        with pytest.raises(ThermalPreloadRunaway, match="close the bearing's radial play") as e:
+            tb.steady_state(s)
+    assert e.value.preload_history_N[0] > 2000.0 and e.value.dT_inner_outer_K > 0
 
 
 def test_init_pair_cuts_the_machine_at_the_symmetry_plane(spindle):
     """`init --pair` builds the bearing's share of the pair's machine: the shaft and housing end at the bearing's face
     toward the other bearing, adiabatic (no heat crosses the symmetry plane).  With half the cooling paths of one
     bearing's machine (a shaft end either side, a housing around it alone: the `spindle` fixture, the same bearing,
-    loads and preload), the share runs hotter and its preload higher."""
+    loads, preload and speed), the share runs hotter and its preload higher."""
     ex = tb.load_scene(tb.example_path("spindle_7014C_pair_oil_air.toml"))
     sh, ho = ex.network.shaft, ex.network.housing
     assert sh.length_right == 0.0 and sh.end_right == "adiabatic" and ho.end_right == "adiabatic"
@@ -379,7 +388,7 @@ def test_init_pair_cuts_the_machine_at_the_symmetry_plane(spindle):
     assert ho.offset + 0.5 * ho.axial_length == pytest.approx(0.5 * B)        # the housing ends at the bearing's face
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        cut, whole = tb.steady_state(ex), tb.steady_state(spindle)
+        cut, whole = tb.steady_state(ex), tb.steady_state(spindle.with_(n_rpm=ex.n_rpm))
     assert cut.T_C["inner_ring"] > whole.T_C["inner_ring"] + 10.0 and cut.preload["warm_N"] > whole.preload["warm_N"]
 
 
@@ -409,10 +418,10 @@ def test_a_spacer_is_read_from_the_scene_and_needs_its_pair(tmp_path):
 
 
 def test_the_answer_brackets_the_balls_share_of_the_preload_rise(spindle):
-    """The balls run 29 K above the rings' mean in the uncut machine and their growth drives most of the rise; their
-    temperature rests on the estimated ball–race conductance.  The answer gives the warm preload at the same ring
-    temperatures with the balls at the rings' mean beside its own (533 N against 1482 N), and `run` prints it; a spring
-    keeps its force either way."""
+    """The balls run 28 K above the rings' mean in the uncut machine and their growth drives most of the thermal rise;
+    their temperature rests on the estimated ball–race conductance.  The answer gives the warm preload at the same
+    ring temperatures and speed with the balls at the rings' mean beside its own (1695 N against 2806 N; 1269 N at
+    speed cold), and `run` prints it; a spring keeps its force either way."""
     s = spindle
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -421,7 +430,8 @@ def test_the_answer_brackets_the_balls_share_of_the_preload_rise(spindle):
     p, T = st.preload, st.preload["temperatures_C"]
     lo = pair_loads(s.bearing, "back_to_back", 300.0, dT_inner=T["inner ring"] - T_REF_C,
                     dT_outer=T["outer ring"] - T_REF_C,
-                    dT_ball=0.5 * (T["inner ring"] + T["outer ring"]) - T_REF_C).preload
+                    dT_ball=0.5 * (T["inner ring"] + T["outer ring"]) - T_REF_C, n_rpm=s.n_rpm).preload
     assert p["warm_balls_at_rings_N"] == pytest.approx(lo, rel=1e-9)
-    assert p["cold_N"] < p["warm_balls_at_rings_N"] < 0.5 * p["warm_N"]
+    rise = p["warm_N"] - p["at_speed_cold_N"]
+    assert p["at_speed_cold_N"] < p["warm_balls_at_rings_N"] < p["warm_N"] - 0.5 * rise
     assert spring.preload["warm_balls_at_rings_N"] == 300.0

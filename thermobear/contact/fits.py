@@ -59,7 +59,7 @@ from thermobear.errors import InputError
 from thermobear.files import data_dir, lookup, read_toml
 
 __all__ = ["T_REF_C", "seat_deviations", "ring_deviations", "fit_interference", "lame_displacement",
-           "fit_pressure", "rotating_ring_displacement", "OperatingClearance", "operating_clearance",
+           "fit_pressure", "rotating_ring_displacement", "raceway_growth", "OperatingClearance", "operating_clearance",
            "clearance_preload", "expanded_bearing", "steel_expansion", "SHAFT_CLASSES", "HOUSING_CLASSES"]
 
 T_REF_C = 20.0          #: reference temperature of sizes and clearances [°C] (ISO 1)
@@ -318,6 +318,45 @@ def rotating_ring_displacement(r, a, b, omega, rho=7830.0, E=210e9, nu=0.3):
                                    - (1.0 - nu * nu) * r ** 3)
 
 
+def raceway_growth(brg: BallBearing, n_rpm):
+    r"""Centrifugal growth of a rotating inner ring's raceway (its groove bottom, radius) [m].
+
+    The inner ring as a free annular disc from its bore d/2 to its raceway d_i/2 = (d_m − D)/2, spinning at n
+    (:func:`rotating_ring_displacement`, Timoshenko & Goodier 1970 [1] ch. 4; the ring's own material):
+
+    .. math:: u_i = u\bigl(d_i/2;\ a = d/2,\ b = d_i/2,\ ω = π n / 30\bigr)
+
+    The raceway diameter grows by 2u_i and the operating diametral clearance falls by as much
+    (:func:`operating_clearance`); the groove curvature centre moves out with it (:func:`expanded_bearing`'s
+    ``u_inner``).  A seat's interference is loosened, not added (the ring grows as if free; Harris & Kotzalas
+    2007 [3] ch. 3).
+
+    Parameters
+    ----------
+    brg : BallBearing   needs ``bore`` where n > 0
+    n_rpm : array_like  speed of the inner ring [rpm]
+
+    Returns
+    -------
+    ndarray or float    u_i [m] (0.0 without a bore at rest)
+
+    Examples
+    --------
+    A 7014C (bore 70 mm, raceway ≈ 78.5 mm) at 12 000 rpm: about 3 µm on the radius.
+
+    >>> from thermobear.contact.geometry import bearing
+    >>> round(float(raceway_growth(bearing("7014C"), 12000.0)) * 1e6, 2)
+    2.96
+    """
+    w = np.asarray(n_rpm, dtype=float) * np.pi / 30.0
+    if np.any(w > 0) and brg.bore is None:
+        raise InputError("bearing.bore", None, "the centrifugal growth of the inner ring needs its bore [m]")
+    if brg.bore is None:
+        return 0.0
+    rm, d_i = brg.ring_material, brg.dm - brg.D
+    return rotating_ring_displacement(0.5 * d_i, 0.5 * brg.bore, 0.5 * d_i, w, rm.rho, rm.E, rm.nu)
+
+
 @dataclass(frozen=True)
 class OperatingClearance:
     """Operating radial clearance of a bearing and its parts (diametral, [m]; leading axes as the inputs).
@@ -385,7 +424,7 @@ def operating_clearance(brg: BallBearing, *, shaft: str | None = None, housing: 
     ring in the Lamé formulae, and the diameters that expand with temperature; interference at temperature
     I_i,T = I_i + α_s d (T_s − 20) − α_r d (T_i − 20) − 2 [u_ω,ring(d/2) − u_ω,shaft(d/2)],
     I_o,T = I_o − α_h D (T_h − 20) + α_r D (T_o − 20).  Fits per Lamé (:func:`fit_pressure`,
-    :func:`lame_displacement`), rotation per :func:`rotating_ring_displacement` (Timoshenko & Goodier 1970;
+    :func:`lame_displacement`), rotation per :func:`rotating_ring_displacement` and :func:`raceway_growth` (Timoshenko & Goodier 1970;
     Harris & Kotzalas 2007 ch. 3).
 
     Examples
@@ -427,10 +466,7 @@ def operating_clearance(brg: BallBearing, *, shaft: str | None = None, housing: 
     sm, hm = shaft_material or rm, housing_material or rm
     d_i, d_o, D = brg.dm - brg.D, brg.dm + brg.D, brg.D
     thermal = a_r * d_o * (To - T_REF_C) - a_r * d_i * (Ti - T_REF_C) - 2.0 * a_b * D * (Tb - T_REF_C)
-    if np.any(w > 0) and brg.bore is None:
-        raise InputError("bearing.bore", None, "the centrifugal growth of the inner ring needs its bore [m]")
-    u_w = 0.0 if brg.bore is None else rotating_ring_displacement(0.5 * d_i, 0.5 * brg.bore, 0.5 * d_i, w, rm.rho,
-                                                                  rm.E, rm.nu)
+    u_w = raceway_growth(brg, n_rpm)
     zero = 0.0 * (Ti + To + Tb + Ts + Th + w)
     I_i = I_o = p_i = p_o = fit_i = fit_o = zero
     if shaft is not None or I_inner_m is not None:
@@ -487,7 +523,7 @@ def clearance_preload(brg: BallBearing, Pd):
 
 
 def expanded_bearing(brg: BallBearing, dT_inner=0.0, dT_outer=0.0, dT_ball=None, *, alpha_ring=None,
-                     alpha_ball=None) -> BallBearing:
+                     alpha_ball=None, u_inner: float = 0.0) -> BallBearing:
     r"""The bearing with its rings and balls grown by their temperature rises (uniform free expansion).
 
     Parameters
@@ -496,6 +532,8 @@ def expanded_bearing(brg: BallBearing, dT_inner=0.0, dT_outer=0.0, dT_ball=None,
     dT_inner, dT_outer, dT_ball : float   temperature rises of the inner ring, outer ring and balls [K]
                           (dT_ball default: the mean of the rings')
     alpha_ring, alpha_ball : float        thermal expansion coefficients [1/K] (default AISI 52100)
+    u_inner : float      radial growth of the inner raceway beyond the thermal one [m]: the centrifugal growth of a
+                          rotating inner ring (:func:`raceway_growth`; 0: at rest)
 
     Returns
     -------
@@ -510,7 +548,9 @@ def expanded_bearing(brg: BallBearing, dT_inner=0.0, dT_outer=0.0, dT_ball=None,
 
     .. math:: c_i' − c_o' = A_{r0}' = A' − P_d'/2
 
-    (A' cos α0' with a clearance), and d_m' = d_m + ε_i (d_m − D)/2 + ε_o (d_m + D)/2 (the raceway bottoms).  A
+    (A' cos α0' with a clearance), and d_m' = d_m + ε_i (d_m − D)/2 + ε_o (d_m + D)/2 (the raceway bottoms).  The
+    centrifugal growth u_i of a rotating inner ring moves its groove (bottom and curvature centre) out as a whole:
+    c_i' and d_m' grow by u_i (its groove radius by u_i r_i / (d_i/2), ~10⁻⁴ of u_i: left out).  A
     deep groove bearing whose clearance closes (c_i' − c_o' > A') comes back with the negative clearance
     P_d' = 2 (A' − c_i' + c_o'), a radial preload (:func:`clearance_preload`); an angular contact bearing's is
     refused (its contact angle would pass 0).
@@ -539,12 +579,18 @@ def expanded_bearing(brg: BallBearing, dT_inner=0.0, dT_outer=0.0, dT_ball=None,
     co = (0.5 * brg.dm - (ro - 0.5 * D) * ca) * (1.0 + eo)
     D2 = D * (1.0 + eb)
     A2 = ri * (1.0 + ei) + ro * (1.0 + eo) - D2
-    radial = ci - co
     dm2 = brg.dm + ei * 0.5 * (brg.dm - D) + eo * 0.5 * (brg.dm + D)
+    u = float(u_inner)
+    if not np.isfinite(u):
+        raise InputError("u_inner", u_inner, "the inner raceway's growth must be finite [m]")
+    if u != 0.0:
+        ci, dm2 = ci + u, dm2 + u
+    radial = ci - co
     warm = dict(D=D2, dm=dm2, fi=ri * (1.0 + ei) / D2, fo=ro * (1.0 + eo) / D2)
     if radial >= A2:
         if brg.kind == "deep_groove":      # the clearance closed: a radial preload
             return brg.with_(Pd=2.0 * (A2 - radial), **warm)
         raise InputError("dT_inner", dT_inner, f"the warm bearing has no clearance left (radial distance of the groove "
-                         f"centres {radial * 1e6:.4g} µm >= A = {A2 * 1e6:.4g} µm): its contact angle would pass 0")
+                         f"centres {radial * 1e6:.4g} µm >= A = {A2 * 1e6:.4g} µm, the inner ring's growth at speed "
+                         f"{u * 1e6:.3g} µm of it): its contact angle would pass 0")
     return brg.with_(alpha0=float(np.arccos(radial / A2)), **warm)

@@ -14,8 +14,8 @@ and more preload: the steady state is the fixed point
 solved by direct iteration, as the heat-up would reach it: each step a full coupled steady state of the bearing
 under the loaded bearing's loads (F_a,k, F_r,k), its inner-ring, outer-ring and ball temperatures (nodes
 ``inner_ring`` / ``outer_ring``, else the inner / outer role; the ball role), the warm pair's loads again, until the
-loads change by less than ``tol_N``.  The first step is at the cold preload.  A spring preload keeps its force:
-no loop, one steady state under the spring force and the external loads.
+loads change by less than ``tol_N``.  The first step is at the cold preload at the scene's speed.  A spring preload
+keeps its force: no loop, one steady state under the spring force and the external loads.
 
 Runaway (:class:`~thermobear.errors.ThermalPreloadRunaway`, with the history of the loop and its warm preloads):
 as for a radial preload (:mod:`thermobear.coupled.clearance`), the iteration diverges when the loop's gain g′
@@ -31,8 +31,15 @@ rising.  The answer carries a named warning where the warm preload passes twice 
 The fixed point is probed once for stability: the loop started at twice its axial load must fall back
 (g(2F) < 2F), else a second, unstable equilibrium lies between and the answer says so (a named warning; the
 probe's result in ``preload["probe"]``; a probe the models cannot evaluate — the warm rings closing the radial play
-at 2F — says that the stability is not established).  The pair's loads are the static (low-speed) form: the centrifugal effects on the preload are not in them
-(:mod:`thermobear.loads.pair`).  Cost: (iterations + 1) steady states per point (the probe included), the points of a step in one call.
+at 2F — says that the stability is not established).  The pair's loads are those at the scene's speed
+(:func:`thermobear.loads.pair.pair_loads` with ``n_rpm``: each bearing's high-speed load–displacement, the balls'
+centrifugal force, and the inner rings' centrifugal growth; Jones 1960, Harris & Kotzalas 2007 *Advanced Concepts*
+ch. 1–3): the preload at speed, at any speed — the form reduces to the static one as n → 0, so it does not follow
+the loaded bearing's own choice of form (``models.high_speed``), raceway control the scene's kinematics (outer
+unless ``inner``).  The cold preload F_0 is mounted at rest; at speed, cold, the pair already carries more
+(``preload["at_speed_cold_N"]``, the first step's).  A rotating outer ring keeps the static form (the high-speed
+form is the inner ring's; so is the bearing's own, :func:`thermobear.models.choose_models`).  Cost: (iterations +
+1) steady states per point (the probe included), the points of a step in one call.
 
 References
 ----------
@@ -139,25 +146,15 @@ def _warm_failure(exc, hist: list) -> str:
     return f"{what} [{' '.join(str(exc).split())[:200]}]"
 
 
-def thermal_preload_warnings(scene, warm: float, T: dict, high_speed: bool = False) -> list:
+def thermal_preload_warnings(scene, warm: float, T: dict) -> list:
     """The named warnings of a pair's warm preload (:data:`thermobear.validity.LIMITS` ``thermal_preload``): beyond
-    twice the cold one, below half of it (0: the pair has play), and — ``high_speed``, the bearing solved in the
-    high-speed form — that the pair's preload is the static form's, without the balls' centrifugal force and the
-    inner ring's centrifugal growth, which both change it at that speed."""
+    twice the cold one, below half of it (0: the pair has play)."""
     lost = "; the pair has play (no preload left)" if warm <= 0.0 else ""
     with collect(replay=False) as got:
         check("thermal_preload", warm / scene.preload_force, "bearing.preload_N",
               what=f"{warm:.4g} N warm against {scene.preload_force:.4g} N cold, inner ring {T['inner ring']:.1f} °C, "
                    f"outer ring {T['outer ring']:.1f} °C, balls {T['balls']:.1f} °C{lost}")
-    out = list(got)
-    if high_speed:
-        out.append(OutsideValidity(
-            "pair preload, static form: the bearing runs in the high-speed form (the balls' centrifugal force matters "
-            "at this speed), but the pair's preload is the low-speed load–deflection's — the centrifugal force on the "
-            "balls and the inner ring's centrifugal growth, which change a position preload at speed, are not in it",
-            quantity="pair preload form", value="static", limit="the high-speed form not chosen",
-            source="thermobear.loads.pair (Harris & Kotzalas 2007 ch. 8, the static pair)", field="bearing.arrangement"))
-    return out
+    return list(got)
 
 
 class _Pair:
@@ -168,6 +165,10 @@ class _Pair:
         self.kind = scene.preload_kind or "position"
         self.final, self.done = None, False       # the fixed point's answer, while its stability probe runs
         self.offset = (pair_preload_offset(scene.bearing, scene.preload_force) if self.kind == "position" else None)
+        # the pair at the scene's speed (the high-speed form is the rotating inner ring's: else the static form)
+        self.n_rpm = float(scene.n_rpm) if scene.rotating == "inner" else None
+        ctl = scene.models.get("kinematics", "outer")
+        self.control = ctl if ctl in ("outer", "inner") else "outer"
         self.cold = self.used = self.loads_at(None)
 
     def loads_at(self, T) -> PairLoads:
@@ -176,7 +177,8 @@ class _Pair:
                              {k: T[k] - T_REF_C for k in ("inner ring", "outer ring", "balls")})
         return pair_loads(s.bearing, s.arrangement, s.preload_force, self.kind, s.Fa, s.Fr, spacer=s.pair_spacer or 0.0,
                           dT_inner=dT["inner ring"],
-                          dT_outer=dT["outer ring"], dT_ball=dT["balls"], offset=self.offset)
+                          dT_outer=dT["outer ring"], dT_ball=dT["balls"], offset=self.offset, n_rpm=self.n_rpm,
+                          control=self.control)
 
     def step(self, r):
         """(the point's answer or error, None) or (None, the scene of the next step)."""
@@ -281,7 +283,8 @@ class _Pair:
     def answer(self, r, used: PairLoads, T: dict, warm: float, res: float):
         """The point's state with its ``preload`` (loads used, warm preload, history) and its models_used entry."""
         s, n = self.scene, max(len(self.hist), 1)
-        pre = dict(arrangement=s.arrangement, kind=self.kind, cold_N=s.preload_force, warm_N=warm,
+        pre = dict(arrangement=s.arrangement, kind=self.kind, cold_N=s.preload_force,
+                   at_speed_cold_N=self.cold.preload, form="static" if self.n_rpm is None else "high_speed", warm_N=warm,
                    warm_balls_at_rings_N=self.balls_at_rings(T, warm),
                    offset_um=None if self.offset is None else self.offset * 1e6, Fa_N=used.Fa, Fr_N=used.Fr,
                    Fa_other_N=used.Fa_other, loaded=used.loaded, external_Fa_N=s.Fa, external_Fr_N=s.Fr,
@@ -290,11 +293,13 @@ class _Pair:
                f"position ({self.offset * 1e6:.3g} µm offset): {s.preload_force:.4g} N cold → {warm:.4g} N warm with the "
                f"inner ring {T['inner ring']:.1f} °C, outer ring {T['outer ring']:.1f} °C, balls {T['balls']:.1f} °C "
                f"(fixed point, {n} steps, residual {res:.1e} N)")
+        form = ("static form: no centrifugal term in the preload" if self.n_rpm is None else
+                f"high-speed form at {self.n_rpm:.6g} rpm: the balls' centrifugal force and the inner rings' growth in "
+                f"the preload, {self.cold.preload:.4g} N at speed cold")
         reason = (f"{s.arrangement.replace('_', '-')} pair, {how}; the loaded bearing carries Fa {used.Fa:.4g} N, "
                   f"Fr {used.Fr:.4g} N (the pair under Fa {s.Fa:.4g} N, Fr {s.Fr:.4g} N; the other bearing Fa "
-                  f"{used.Fa_other:.4g} N; static form: no centrifugal term in the preload)")
-        fast = self.kind == "position" and r.models_used.get("high_speed", ("no",))[0] == "yes"
-        warned = r.warnings + [w for w in thermal_preload_warnings(s, warm, T, fast) if str(w) not in map(str, r.warnings)]
+                  f"{used.Fa_other:.4g} N; {form})")
+        warned = r.warnings + [w for w in thermal_preload_warnings(s, warm, T) if str(w) not in map(str, r.warnings)]
         return dataclasses.replace(r, preload=pre, models_used={**r.models_used, "preload": (self.kind, reason)},
                                    warnings=warned)
 
@@ -348,8 +353,11 @@ def preload_lines(p: dict | None) -> list:
     """The text lines of a pair's preload (``SteadyState.preload``; none without)."""
     if not p:
         return []
+    at = p.get("at_speed_cold_N")
+    speed = (f"; {at:.4g} N at speed, cold" if p.get("form") == "high_speed" and p["kind"] == "position"
+             and at is not None else "")
     head = (f"  preload ({p['arrangement'].replace('_', '-')} pair, {p['kind']}): cold {p['cold_N']:.4g} N, warm "
-            f"{p['warm_N']:.4g} N ({p['warm_N'] / p['cold_N']:.3g} × cold)")
+            f"{p['warm_N']:.4g} N ({p['warm_N'] / p['cold_N']:.3g} × cold{speed})")
     if p["kind"] == "position":
         head += f", fixed point in {p['iterations']} steps, residual {p['residual_N']:.1e} N"
     T = p["temperatures_C"]

@@ -5,10 +5,11 @@ faces or spacers (a position preload) or by springs (a constant force).  A scene
 **one** bearing of a symmetric pair of two equal bearings:
 
 * ``arrangement`` — ``"back_to_back"`` or ``"face_to_face"`` (Harris & Kotzalas 2007 [1] ch. 8);
-* ``preload_N`` — the cold mounted preload of the pair [N], the axial load each bearing carries at 20 °C without
-  external load (what spindle catalogues call a light, medium or heavy preload);
-* ``preload`` — ``"position"`` (default: rigid, ground faces or spacers; the preload follows the rings' and balls'
-  temperatures) or ``"spring"`` (a constant force: no thermal change);
+* ``preload_N`` — the cold mounted preload of the pair [N], the axial load each bearing carries at 20 °C at rest
+  without external load (what spindle catalogues call a light, medium or heavy preload);
+* ``preload`` — ``"position"`` (default: rigid, ground faces or spacers; the preload follows the speed — the balls'
+  centrifugal force, the inner rings' centrifugal growth — and the rings' and balls' temperatures) or ``"spring"``
+  (a constant force: no thermal or speed change);
 * ``spacer_mm`` — equal inner and outer spacers between the two bearings [mm] (default 0: adjacent): over the
   spacer the shaft and the housing grow apart as they warm, which relieves a back-to-back pair's preload when the
   shaft runs warmer than the housing and adds to a face-to-face one's (Harris & Kotzalas 2007 [1] ch. 8).
