@@ -13,7 +13,7 @@ import thermobear as tb
 import thermobear.app.speed as app_speed
 from thermobear.app.cli import main
 from thermobear.coupled.speeds import (din732_safe_speed, hottest_ring_C, reference_loads, reference_lubricant,
-                                       thermal_reference_speed, thermally_safe_speed)
+                                       runaway_speed, thermal_reference_speed, thermally_safe_speed)
 from thermobear.errors import ContactLimit, InputError, NoSpeedRoot
 from thermobear.rating.speeds import (din732_parameters, din732_speed_ratio, palmgren_moments, reference_conditions,
                                       reference_heat_flow_density, reference_surface, standard_reference_speed)
@@ -140,6 +140,9 @@ def test_cli_speed_json(capsys, block):
     rep = json.loads(capsys.readouterr().out)
     assert abs(rep["model"]["T_C"] - 70.0) < 0.01 and "jump" not in rep["model"]
     assert {"n_rpm", "T_C"} <= set(rep["iso15312"]) and {"n_rpm", "f_n", "T_C"} <= set(rep["din732"])
+    run = rep["runaway"]            # the equilibria end well above the speed at which the race reaches 70 °C
+    assert run["kind"] == "thermal runaway" and run["settled_rpm"] < run["n_rpm"] <= 1.01 * run["settled_rpm"]
+    assert run["n_rpm"] > rep["model"]["n_rpm"] and run["T_C"] > 70.0 and run["preload_warm_N"] is None
 
 
 def test_cli_speed_says_when_the_limit_is_jumped_and_prints_the_answers_warnings(capsys, tmp_path):
@@ -376,3 +379,35 @@ def test_din732_balance_root_meets_its_balance_and_its_limits():
     assert d.f_n_balance == pytest.approx(float(din732_balance_ratio(d.K_L, d.K_P)))
     assert d.K_L == pytest.approx(1.421, abs=5e-4) and d.K_P == pytest.approx(0.303, abs=5e-4)   # M0's share the larger
     assert d.f_n / d.f_n_balance == pytest.approx(1.004, abs=0.002)
+
+
+def _pair(preload_N: float):
+    """Seed 004's 7210 on its oil jet as one bearing of a back-to-back pair (the block's 650 N on the pair)."""
+    return tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml")).with_(arrangement="back_to_back",
+                                                                           preload_N=preload_N, Fa=0.0, Fr=650.0)
+
+
+def test_runaway_speed_brackets_where_a_pairs_preload_runs_away():
+    """The speed at which the equilibria end: at its lower end the pair settles (its warm preload the answer's), at
+    its upper end the preload runs away (ThermalPreloadRunaway, named), the two within rtol; a pair preloaded twice
+    as hard runs away at a lower speed (more preload, more heat, more preload)."""
+    r = runaway_speed(_pair(450.0), n_min_rpm=2000.0, n_max_rpm=6500.0, points=2, rtol=0.03)
+    assert r.kind == "preload runaway" and r.why.startswith("ThermalPreloadRunaway")
+    assert r.settled_rpm < r.n_rpm <= 1.03 * r.settled_rpm
+    assert r.preload_warm_N == pytest.approx(r.steady.preload["warm_N"]) and r.preload_warm_N > 2 * 450.0
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        with pytest.raises(tb.ThermalPreloadRunaway):
+            tb.steady_state(_pair(450.0).with_(n_rpm=r.n_rpm))
+    heavy = runaway_speed(_pair(900.0), n_min_rpm=2000.0, n_max_rpm=6500.0, points=2, rtol=0.03)
+    assert heavy.n_rpm < r.settled_rpm
+
+
+def test_runaway_speed_says_when_there_is_none_in_the_range():
+    s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml"))
+    with pytest.raises(NoSpeedRoot, match="an equilibrium at every speed up to 8000 rpm"):
+        runaway_speed(s, n_min_rpm=2000.0, n_max_rpm=8000.0, points=3)
+    with pytest.raises(NoSpeedRoot, match="no equilibrium already at 6500 rpm"):
+        runaway_speed(_pair(450.0), n_min_rpm=6500.0, n_max_rpm=8000.0, points=2)
+    with pytest.raises(InputError, match="rtol"):
+        runaway_speed(s, rtol=0.0)

@@ -1,6 +1,7 @@
 """``thermobear speed``: ISO 15312's thermal reference speed (the model's losses at the standard's
-reference conditions), the thermally safe speed of the scene's own cooling (the coupled model) and
-DIN 732's thermally safe speed (the standard's method), each with the temperature of the node the limit is
+reference conditions), the thermally safe speed of the scene's own cooling (the coupled model), the speed at which
+the model's equilibria end (a thermal runaway, a preloaded pair's preload running away:
+:func:`thermobear.coupled.speeds.runaway_speed`) and DIN 732's thermally safe speed (the standard's method), each with the temperature of the node the limit is
 on at that speed: the hotter race (``inner_race`` or ``outer_race``, the rings' raceway layers — not the ring
 bodies ``inner_ring`` / ``outer_ring``; :func:`thermobear.coupled.speeds.hottest_race`), or ``--node``.
 
@@ -18,8 +19,8 @@ from thermobear.app.overrides import load_scene_with
 from thermobear.coupled.limits import emit
 from thermobear.coupled.ratings import scene_ratings
 from thermobear.coupled.sources import prepare
-from thermobear.coupled.speeds import (HOTTER_RACE, check_node, din732_safe_speed, hottest_race, thermal_reference_speed,
-                                      thermally_safe_speed)
+from thermobear.coupled.speeds import (HOTTER_RACE, check_node, din732_safe_speed, hottest_race, runaway_speed,
+                                      thermal_reference_speed, thermally_safe_speed)
 from thermobear.coupled.steady import steady_state, steady_states
 from thermobear.errors import InputError, NoSpeedRoot, OutsideValidity, SolverError
 from thermobear.losses.seals import CONTACT_SEALS
@@ -114,6 +115,7 @@ def _report(scene: Scene, limit_C: float, node, node_field: str = "node") -> tup
                            "warnings": [w.as_dict() for w in r.warnings]}
     except (SolverError, InputError) as exc:
         rep["iso15312"] = {"error": " ".join(str(exc).split())}
+    s = None
     try:
         s = thermally_safe_speed(scene, limit_C=limit_C, node=node)
         with warnings.catch_warnings():      # the state's ratings at that speed: a consumed clearance, a preload
@@ -131,6 +133,7 @@ def _report(scene: Scene, limit_C: float, node, node_field: str = "node") -> tup
                         f"{type(exc).__name__}: " + " ".join(str(exc).split())}
         if hasattr(exc, "contact_limit_rpm"):          # the search ended where the contacts stop carrying the loads
             rep["model"].update(contact_limit_rpm=exc.contact_limit_rpm, T_C_at_contact_limit=exc.T_C)
+    rep["runaway"] = _runaway(scene, s.ladder if s is not None else None)
     try:
         d = din732_safe_speed(scene, limit_C=limit_C)
         rep["din732"] = {"n_rpm": d.n_rpm, "f_n": d.f_n, "K_L": d.K_L, "K_P": d.K_P,
@@ -146,6 +149,18 @@ def _report(scene: Scene, limit_C: float, node, node_field: str = "node") -> tup
         else:
             rep[k]["T_node"], rep[k]["T_C"] = T
     return rep, ws
+
+
+def _runaway(scene: Scene, ladder) -> dict:
+    """The speed at which the model's equilibria end (:func:`~thermobear.coupled.speeds.runaway_speed`, on the
+    thermally safe speed's ladder where it has one), or ``error`` saying why there is none."""
+    try:
+        r = runaway_speed(scene, ladder=ladder)
+    except (SolverError, InputError) as exc:
+        return {"error": " ".join(str(exc).split()) if isinstance(exc, NoSpeedRoot) else
+                f"{type(exc).__name__}: " + " ".join(str(exc).split())}
+    return {"n_rpm": r.n_rpm, "settled_rpm": r.settled_rpm, "kind": r.kind, "why": r.why, "T_C": r.T_C,
+            "T_node": r.T_node, "P_W": r.P_W, "preload_warm_N": r.preload_warm_N}
 
 
 def _maker(scene: Scene, rep: dict) -> dict:
@@ -204,6 +219,16 @@ def _line(label: str, part: dict, note: str = "") -> str:
     return f"  {label:58s} {part['n_rpm']:9.0f} rpm   {T}"
 
 
+def _runaway_line(part: dict) -> str:
+    """The row of the speed at which the model's equilibria end."""
+    label = "equilibria end (model: runaway speed)"
+    if "error" in part:
+        return f"  {label:58s} —  {part['error']}"
+    pre = "" if part["preload_warm_N"] is None else f", warm preload {part['preload_warm_N']:.0f} N"
+    return (f"  {label:58s} {part['n_rpm']:9.0f} rpm   {part['kind']}; at {part['settled_rpm']:.0f} rpm still "
+            f"{part['T_node']} {part['T_C']:.2f} °C, {part['P_W']:.1f} W{pre}")
+
+
 def summary(rep: dict) -> str:
     """The text table of :func:`speed_report`."""
     races = rep.get("race_nodes")
@@ -228,6 +253,7 @@ def summary(rep: dict) -> str:
         else f"; a step of the model passes the limit here (+{mod['residual_K']:.1f} K)")
     lines.append(_line("thermally safe speed, this scene's cooling (model)", mod, bound + past["model"]))
     lines.append(_line("DIN 732 thermally safe speed (standard's method)", din, " (model)" + hot["din732"] + past["din732"]))
+    lines.append(_runaway_line(rep["runaway"]))
     lines += _maker_lines(rep)
     if "error" not in iso:
         lines.append(f"    ISO 15312: q_r A_r = {iso['Phi_r_W']:.2f} W (A_r {iso['A_r_mm2']:.0f} mm²), load "

@@ -9,6 +9,8 @@ thermally safe speed of a scene's own cooling (root finding on the coupled stead
   contact role: ``inner_race`` / ``outer_race``, the rings' raceway layers, where the network has them;
   :func:`hottest_race`) or a chosen node of the scene's coupled steady state reaches a limit
   temperature: DIN 732's question answered with the full model.
+* :func:`runaway_speed` — the speed at which the coupled model's equilibria end: a thermal runaway, a preloaded
+  pair's preload running away, or another end (:data:`ENDS`), bracketed by bisection in log speed.
 * :func:`din732_safe_speed` — DIN 732's answer: n_θ = f_n n_θr with n_θr by ISO 15312's own
   (Palmgren-form) equations and the heat the seating surfaces and the circulating oil carry away.
 
@@ -34,7 +36,7 @@ import numpy as np
 from thermobear.contact.geometry import BallBearing
 from thermobear.coupled.sources import prepare, prepared_for
 from thermobear.coupled.steady import SteadyState, steady_state, steady_states
-from thermobear.errors import (ContactLimit, InputError, NoConvergence, NoSpeedRoot, OutsideValidity,
+from thermobear.errors import (ContactLimit, InputError, NoConvergence, NoSpeedRoot, OutsideValidity, SolverError,
                                ThermalPreloadRunaway, ThermalRunaway)
 from thermobear.lazy import lazy_module
 from thermobear.losses import bearing_losses
@@ -49,7 +51,7 @@ from thermobear.validity import LIMITS, collect
 
 optimize = lazy_module("scipy.optimize")    # brentq: loaded by its first use
 
-__all__ = ["ReferenceSpeed", "SafeSpeed", "Din732Speed", "reference_lubricant", "reference_loads", "thermal_reference_speed",
+__all__ = ["ReferenceSpeed", "SafeSpeed", "RunawaySpeed", "Din732Speed", "runaway_speed", "reference_lubricant", "reference_loads", "thermal_reference_speed",
            "thermally_safe_speed", "din732_safe_speed", "hottest_ring_C", "hottest_race", "check_node",
            "HOTTER_RACE"]
 
@@ -264,6 +266,7 @@ class SafeSpeed:
     steady: SteadyState = field(repr=False, default=None)
     warnings: list = field(default_factory=list)
     T_node: str = ""
+    ladder: tuple = field(repr=False, default=())   # ((speed [rpm], None or the exception that stopped it), ...)
 
 
 #: the errors of a point without an equilibrium: a thermal runaway, or a preload's (a radial one, a pair's)
@@ -284,16 +287,11 @@ def _one(scene, prepared):
 
 def _ladder_T(scenes, node, prepared, limit_C) -> tuple:
     """(node temperatures of the ladder's steady states, index of the first rung whose contacts cannot carry
-    the loads or None): a point without an equilibrium below the lubricant's limit is inf; the rungs from a
+    the loads or None, the steady states or exceptions): a point without an equilibrium below the lubricant's limit is inf; the rungs from a
     :class:`~thermobear.errors.ContactLimit` on are cut off (it is raised at the first rung); another error
     at or below the first crossing is raised."""
     T, errors = [], {}
-    try:
-        results = steady_states(scenes, prepared=prepared)
-    except InputError as exc:          # a point past the lubricant's limit can stop the batch: one by one
-        if not _beyond(exc):
-            raise
-        results = [_one(sc, prepared) for sc in scenes]
+    results = _ladder_results(scenes, prepared)
     stop = next((k for k, r in enumerate(results) if isinstance(r, ContactLimit)), None)
     if stop == 0:
         raise results[0]
@@ -309,7 +307,18 @@ def _ladder_T(scenes, node, prepared, limit_C) -> tuple:
     for k, e in errors.items():
         if i is None or k <= i:
             raise e
-    return T, stop
+    return T, stop, results
+
+
+def _ladder_results(scenes, prepared) -> list:
+    """The steady states of a ladder's scenes in one batched call, or each one's exception (one by one where a
+    point past the lubricant's limit stops the batch)."""
+    try:
+        return steady_states(scenes, prepared=prepared)
+    except InputError as exc:
+        if not _beyond(exc):
+            raise
+        return [_one(sc, prepared) for sc in scenes]
 
 
 def _contact_limit(scene, prepared, lo, hi, node, rtol=2e-3) -> tuple:
@@ -386,7 +395,7 @@ def thermally_safe_speed(scene: Scene, *, limit_C: float = 70.0, node: str | Non
     ladder = np.geomspace(bottom, top, points)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OutsideValidity)         # the answer's own warnings are kept
-        T, stop = _ladder_T([scene.with_(n_rpm=float(n)) for n in ladder], node, prep, limit_C)
+        T, stop, res = _ladder_T([scene.with_(n_rpm=float(n)) for n in ladder], node, prep, limit_C)
         i = _first_crossing(ladder, T - limit_C)
         lo, hi = (float(ladder[i - 1]), float(ladder[i])) if i else (None, None)
         if i is None and stop is not None:
@@ -430,7 +439,121 @@ def thermally_safe_speed(scene: Scene, *, limit_C: float = 70.0, node: str | Non
     rise = T[int(np.argmin(T[:i + 1])):i + 1]       # from the coolest ladder point up to the crossing
     return SafeSpeed(scene=scene.name, n_rpm=float(n), limit_C=float(limit_C), node=node or HOTTER_RACE, T_C=Tn,
                      residual_K=Tn - limit_C, iterations=int(r.iterations), bracket_rpm=(lo, hi),
-                     monotonic=bool(np.all(np.diff(rise) > 0.0)), steady=st, warnings=list(st.warnings), T_node=at)
+                     monotonic=bool(np.all(np.diff(rise) > 0.0)), steady=st, warnings=list(st.warnings), T_node=at,
+                     ladder=tuple((float(n), r if isinstance(r, Exception) else None) for n, r in zip(ladder, res)))
+
+
+#: what ends the equilibria at a speed: the error's class → its name in the answer
+ENDS = {ThermalPreloadRunaway: "preload runaway", ThermalRunaway: "thermal runaway", NoConvergence: "no converged "
+        "equilibrium", ContactLimit: "the contacts cannot carry the loads", InputError: "past the lubricant's limit"}
+
+
+def _ends(exc) -> str | None:
+    """The name of what ends the equilibria (:data:`ENDS`), or None for another error."""
+    if isinstance(exc, InputError) and not _beyond(exc):
+        return None
+    return next((v for k, v in ENDS.items() if isinstance(exc, k)), None)
+
+
+@dataclass
+class RunawaySpeed:
+    """The lowest speed at which a scene's coupled model has no equilibrium, and the highest below it that has one.
+
+    Attributes
+    ----------
+    scene : str
+    n_rpm : float          the lowest speed found without an equilibrium [rpm]
+    settled_rpm : float    the highest speed found with one, within ``rtol`` below n_rpm [rpm]
+    kind : str             what ends the equilibria there (:data:`ENDS`: a thermal runaway, a preload's, …)
+    why : str              the error at n_rpm, one line
+    T_C, T_node : float, str  the hotter race's temperature at settled_rpm [°C] and its node
+    P_W : float            the power loss at settled_rpm [W]
+    preload_warm_N : float | None  a preloaded pair's warm preload at settled_rpm [N] (None: no pair)
+    steady : SteadyState   the coupled steady state at settled_rpm
+    """
+
+    scene: str
+    n_rpm: float
+    settled_rpm: float
+    kind: str
+    why: str
+    T_C: float
+    T_node: str
+    P_W: float
+    preload_warm_N: float | None = None
+    steady: SteadyState = field(repr=False, default=None)
+
+
+def runaway_speed(scene: Scene, *, n_min_rpm=None, n_max_rpm=None, points: int = 9, rtol: float = 0.01,
+                  ladder=None) -> RunawaySpeed:
+    """The speed at which the coupled model of a scene's machine stops having an equilibrium: a thermal runaway
+    (the losses grow with temperature faster than the cooling), a preloaded pair's preload running away (the warm
+    inner ring and balls adding preload, the preload adding heat), or another end of the equilibria (:data:`ENDS`).
+    A ladder of speeds (one batched call; or ``ladder``, a :class:`SafeSpeed`'s) finds the first rung without an
+    equilibrium, and bisection in log speed narrows it with the rung below to ``rtol`` relative.
+
+    Parameters
+    ----------
+    scene : Scene          the machine; its own speed is replaced
+    n_min_rpm, n_max_rpm   search range [rpm] (as :func:`thermally_safe_speed`)
+    points : int           ladder points
+    rtol : float           relative width of the final bracket [-]
+    ladder : tuple         ``((speed [rpm], None or the exception there), ...)`` already solved, ascending
+
+    Raises
+    ------
+    NoSpeedRoot   an equilibrium at every rung up to the top of the range, or none already at its bottom
+    InputError    bad range; SolverError / InputError of another kind at a rung below the first without equilibrium
+
+    >>> import thermobear as tb
+    >>> s = tb.load_scene(tb.example_path("seed004_oil_jet_7210.toml")).with_(arrangement="back_to_back",
+    ...                                                                    preload_N=450.0, Fa=0.0, Fr=650.0)
+    >>> r = runaway_speed(s, n_min_rpm=3200.0, n_max_rpm=6500.0, points=2, rtol=0.05)
+    >>> r.kind, 3200.0 < r.settled_rpm < r.n_rpm <= 1.05 * r.settled_rpm
+    ('preload runaway', True)
+    """
+    if not isinstance(scene, Scene):
+        raise InputError("scene", type(scene).__name__, "a thermobear Scene")
+    if not (np.isfinite(rtol) and 0.0 < rtol < 1.0):
+        raise InputError("rtol", rtol, "a relative bracket width in (0, 1)")
+    prep = prepare(scene)
+    if ladder is None:
+        top = _ceiling_rpm(scene.bearing, n_max_rpm)
+        bottom = max(1.0, 0.01 * scene.n_rpm) if n_min_rpm is None else float(n_min_rpm)
+        if not 0.0 < bottom < top:
+            raise InputError("n_min_rpm", n_min_rpm, f"a speed in (0, {top:.6g}) rpm below n_max_rpm")
+        rungs = np.geomspace(bottom, top, max(int(points), 2))
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", OutsideValidity)
+            res = _ladder_results([scene.with_(n_rpm=float(n)) for n in rungs], prep)
+        ladder = tuple((float(n), r if isinstance(r, Exception) else None) for n, r in zip(rungs, res))
+    k = next((k for k, (_, e) in enumerate(ladder) if e is not None), None)
+    if k is not None and _ends(ladder[k][1]) is None:
+        raise ladder[k][1]
+    if k is None:
+        raise NoSpeedRoot(f"{scene.name}: an equilibrium at every speed up to {ladder[-1][0]:.6g} rpm (the top of "
+                          "the search: the n·dm limit of the models or n_max_rpm)", residual=0.0)
+    if k == 0:
+        raise NoSpeedRoot(f"{scene.name}: no equilibrium already at {ladder[0][0]:.6g} rpm ({_ends(ladder[0][1])})",
+                          residual=0.0)
+    (lo, _), (hi, why) = ladder[k - 1], ladder[k]
+    st = None
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", OutsideValidity)
+        while hi / lo > 1.0 + rtol:
+            mid = float(np.sqrt(lo * hi))
+            try:
+                st, lo = steady_state(scene.with_(n_rpm=mid), prepared=prep), mid
+            except (SolverError, InputError) as e:
+                if _ends(e) is None:
+                    raise
+                hi, why = mid, e
+        st = st if st is not None else steady_state(scene.with_(n_rpm=lo), prepared=prep)
+    at, T = hottest_race(st, None)
+    pre = getattr(st, "preload", None)
+    return RunawaySpeed(scene=scene.name, n_rpm=float(hi), settled_rpm=float(lo), kind=_ends(why),
+                        why=f"{type(why).__name__}: " + " ".join(str(why).split()), T_C=T, T_node=at, P_W=float(st.P_W),
+                        preload_warm_N=float(pre["warm_N"]) if pre else None, steady=st)
 
 
 @dataclass
