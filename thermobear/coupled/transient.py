@@ -45,7 +45,7 @@ from __future__ import annotations
 
 import math
 import warnings
-from dataclasses import dataclass, field, fields
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -58,12 +58,12 @@ from thermobear.coupled.sources import loss_sources, prepared_for
 from thermobear.errors import InputError, OutsideValidity, SolverError, ThermalRunaway
 from thermobear.losses import prepare_contacts
 from thermobear.arrays import instance_of, take
-from thermobear.coupled.blend import StackedBlend
+from thermobear.coupled.blend import FilmNetwork, StackedBlend
 from thermobear.models import Alternative, plan_many
 from thermobear.scene import Scene
 from thermobear.scene.scene import SECTIONS
 from thermobear.schema import Field, check_value, real_number
-from thermobear.thermal import ThermalNetwork, solve_transient
+from thermobear.thermal import solve_transient
 from thermobear.thermal.solve import LinearBoundary
 from thermobear.validity import T_LUBRICANT_REFUSE_C
 
@@ -597,26 +597,6 @@ class _FilmCells:
             self.solved[(k, T)] = (take(ld, i, K), take(sol, np.array([i]), K))
 
 
-@dataclass(frozen=True)
-class _FilmNetwork(ThermalNetwork):
-    """A network between two: the dominant alternative's network with its loads at the two film temperatures
-    T_lo, T_hi [°C] of a piece's film cell (its contact ellipses and speeds differ), the conductances
-    interpolated linearly in the film temperature as the losses are (:class:`~thermobear.coupled.blend.StackedBlend`)."""
-
-    upper: ThermalNetwork = None
-    film: tuple = ()                 # (c (n,): the film temperature c · T [K] of the node temperatures T, T_lo, T_hi)
-
-    @classmethod
-    def between(cls, lower: ThermalNetwork, upper: ThermalNetwork, roles: dict, T_lo: float, T_hi: float):
-        return cls(**{f.name: getattr(lower, f.name) for f in fields(ThermalNetwork)}, upper=upper,
-                   film=(_film_weights(lower, roles), T_lo, T_hi))
-
-    def conductances(self, T_K) -> np.ndarray:
-        c, T_lo, T_hi = self.film
-        th = np.clip((T_K @ c - _C0 - T_lo) / (T_hi - T_lo), -0.5, 1.5)[..., None]
-        return (1.0 - th) * super().conductances(T_K) + th * self.upper.conductances(T_K)
-
-
 def _piece_model(sc: Scene, alts, load, prepared, cells: _FilmCells, nodes, dominant=None) -> PointModel:
     """The point model of a piece (``load``: injected loads instead of the alternatives'): across a switch band
     its heat sources are the weighted losses of the alternatives, evaluated as stacked points of one batch
@@ -640,7 +620,8 @@ def _piece_model(sc: Scene, alts, load, prepared, cells: _FilmCells, nodes, domi
     if film[k_dom] and len(nodes) > 1:       # the dominant's network follows the film temperature as its losses do
         hi = point_model(sc, dom.models, load=cells.load(k_dom, dom, nodes[-1]), prepared=prepared).network
         pm = PointModel(family=pm.family, coupling=pm.coupling, source=pm.source,
-                        network=_FilmNetwork.between(pm.network, hi, pm.coupling.roles, nodes[0], nodes[-1]))
+                        network=FilmNetwork.between(pm.network, hi, _film_weights(pm.network, pm.coupling.roles),
+                                                             nodes[0], nodes[-1]))
     K, m = len(rows), dom.models
     fam = Family(scenes=(sc,) * K, index=tuple(range(K)), models=m, dry=(None,) * K)
     cs = prepare_contacts(sc.bearing, fam.values("Fa"), fam.values("Fr"), fam.values("n_rpm"),
