@@ -314,10 +314,9 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary, fol
                 te, last_seg, split = ts + float(tr.t[-1]), False, True
             prev = tr if split and tr.completed else None  # the next piece goes on with this one's integrator
             _append(out_t, out_T, out_rep, tr, ts, te, t_eval, last_seg)
-            if tr.t.size:
-                T_state = _T_nodes_of(tr, net)
-            if not tr.completed:
-                completed = False
+            T_state = _T_nodes_of(tr, net) if tr.t.size else T_state
+            if not tr.completed:           # stopped: what was integrated, to the time it reached
+                completed, te = False, (ts + float(tr.t[-1]) if tr.t.size else ts)
                 break
             if film:           # the film temperature's rate at the end: its crossing of the next cell, or settling
                 last_film = (float(tr.end_rate_K_s()[0] @ _film_weights(net, cp.roles)), sc)

@@ -318,7 +318,7 @@ def preload_line(p: dict | None) -> str | None:
         return f"preload {p['cold_N']:.4g} N (spring: a constant force); loaded bearing Fa {p['Fa_N']:.4g} N, Fr " \
                f"{p['Fr_N']:.4g} N"
     start = f" ({p['start_N']:.4g} N at the start)" if abs(p["start_N"] - p["cold_N"]) > 5e-4 * p["cold_N"] else ""
-    peak = (f" → peak {p['peak_N']:.4g} N at {p['peak_t_s']:.4g} s" if p["peak_t_s"] < p["end_t_s"] else "")
+    peak = (f" → peak {p['peak_N']:.4g} N at {p['peak_t_s']:.4g} s" if p["peak_N"] > (1 + 1e-3) * p["end_N"] else "")
     low = (f" (lowest {p['min_N']:.4g} N at {p['min_t_s']:.4g} s)" if p["min_N"] < min(p["start_N"], p["end_N"]) else "")
     return (f"preload {p['cold_N']:.4g} N cold{start}{peak} → {p['end_N']:.4g} N at the end ({p['end_t_s']:.4g} s){low}; "
             f"loaded bearing Fa {p['Fa_N']:.4g} N, Fr {p['Fr_N']:.4g} N; {p['pieces']} pieces of ≤ "
