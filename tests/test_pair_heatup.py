@@ -146,8 +146,9 @@ def test_the_command_line_prints_the_preload_line(tmp_path, capsys):
                                  'preload_N = 450.0\n', 1), encoding="utf-8")
     base = ["transient", str(path), "--set", "Fa_N=0", "--set", "Fr_N=650", "--t-end", "1200", "--points", "13"]
     csv = tmp_path / "h.csv"
-    assert main(base + ["--csv", str(csv)]) == 0
+    assert main(base + ["--csv", str(csv), "--plot", str(tmp_path / "pics")]) == 0
     out = capsys.readouterr().out
+    assert (tmp_path / "pics" / "heatup.png").stat().st_size > 0         # its power panel carries the preload
     line = [ln for ln in out.splitlines() if ln.startswith("preload 450 N cold")]
     assert len(line) == 1 and " → peak " in line[0] and " N at the end (1200 s)" in line[0]
     rows = [ln for ln in csv.read_text(encoding="utf-8").splitlines() if not ln.startswith("#")]

@@ -417,7 +417,7 @@ def cmd_transient(args):
         out_dir.mkdir(parents=True, exist_ok=True)
         free = {n: run.T_C[n] for n in nodes if np.ptp(run.T_C[n]) > 0}
         wrote([plots.plot_heatup(run.t_s, free, out_dir / "heatup.png", title=f"Heat-up — {scene.name}",
-                                 power_W=run.P_W)])
+                                 power_W=run.P_W, preload_N=(run.preload or {}).get("series", {}).get("preload_N"))])
     return 0
 
 

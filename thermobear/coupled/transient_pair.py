@@ -31,7 +31,7 @@ spring preload keeps its force: its loads once.
 
 The answer (``TransientRun.preload``) gives the cold, peak and end preloads, the history of the pieces (their
 start times, the preload and the loaded bearing's loads, the ring and ball temperatures) and the preload and loads
-at the output times (linear between the pieces' starts).  Warnings as the steady state's
+at the output times (at the temperatures, linear between the integrator's steps; its peak among them).  Warnings as the steady state's
 (:func:`~thermobear.coupled.preload.thermal_preload_warnings`): at the end, and at the peak or the lowest preload
 during the heat-up where those pass the limits (the pair losing its preload: play).
 
