@@ -231,9 +231,11 @@ def test_a_pair_refuses_loads_and_paths_it_does_not_model():
         with pytest.raises(InputError) as e:
             s.with_(**kw)
         assert e.value.field == field
-    with pytest.raises(InputError, match="solved by the coupled steady state") as e:
-        tb.transient(s, 10.0)                        # a heat-up does not close the pair's preload (yet)
-    assert e.value.field == "bearing.arrangement"
+    ld = tb.load_distribution(s.bearing, Fa=450.0, Fr=325.0)
+    for kw in (dict(load=ld), dict(uncertainty=2)):   # given loads do not close the pair's preload (a heat-up does:
+        with pytest.raises(InputError, match="solved by the coupled steady state and its heat-up") as e:
+            tb.transient(s, 10.0, **kw)               # tests/test_pair_heatup.py)
+        assert e.value.field == "bearing.arrangement"
 
 
 def test_a_deep_groove_pair_on_the_command_line_is_one_line_exit_2(tmp_path, capsys):

@@ -162,7 +162,8 @@ LIMITS = {
     "thermal_preload": Limit(
         "warm / cold preload of a position-preloaded pair", "-", (None, None), (0.5, 2.0),
         source="reasoning: the rings and balls warmer than at mounting, the inner ring above the outer, raise a "
-               "position preload (Harris & Kotzalas 2007 ch. 3, 8); beyond twice the mounted one the bearing runs "
+               "position preload (Harris & Kotzalas 2007 ch. 3, 8), as do the balls' centrifugal force and the inner "
+               "ring's growth at speed (Jones 1960); beyond twice the mounted one the bearing runs "
                "a preload class heavier than chosen (the makers' light, medium and heavy preloads step by about 2) "
                "and its heat grows with it: the runaway of spindle bearings; below half of it (a shaft growing "
                "axially more than the housing, a cold inner ring) a preload class lighter, at 0 the pair has play: "

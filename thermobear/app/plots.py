@@ -233,10 +233,10 @@ def _family_colours(names) -> dict:
 
 
 def plot_heatup(t_s, simulated: dict, path, measured: dict | None = None, title: str = "",
-                mapping: dict | None = None, power_W=None, bands: dict | None = None) -> str:
+                mapping: dict | None = None, power_W=None, bands: dict | None = None, preload_N=None) -> str:
     """Temperatures vs time [°C]: simulated lines (one colour family per machine part:
     :func:`node_family`), measured points in the same colour; the power loss [W] in a second panel
-    when ``power_W`` is given.
+    when ``power_W`` is given, with a preloaded pair's preload [N] on its right axis (``preload_N``).
 
     Parameters
     ----------
@@ -247,6 +247,7 @@ def plot_heatup(t_s, simulated: dict, path, measured: dict | None = None, title:
     power_W : array_like   optional total power loss over t_s [W]
     bands : dict           optional name → (low, high) temperatures [°C] at t_s, shaded (the 5–95 %
                            band over the estimated inputs)
+    preload_N : array_like optional preload of a preloaded pair over t_s [N] (with ``power_W``)
     """
     t = np.asarray(t_s, float)
     if power_W is None:
@@ -268,7 +269,7 @@ def plot_heatup(t_s, simulated: dict, path, measured: dict | None = None, title:
                     label=f"{k} (measured)")
     ax.set_ylabel("temperature [°C]")
     if len(simulated) > 12:                     # many nodes: the legend beside the axes
-        ax.legend(fontsize=6, ncol=2, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+        ax.legend(fontsize=6, ncol=2, loc="upper left", bbox_to_anchor=(1.01 if preload_N is None else 1.12, 1.0))
     else:
         ax.legend(fontsize=7, ncol=2)
     ax.grid(alpha=0.3)
@@ -277,6 +278,10 @@ def plot_heatup(t_s, simulated: dict, path, measured: dict | None = None, title:
         axp.plot(t / scale, np.asarray(power_W, float), "k-")
         axp.set_ylabel("power loss [W]")
         axp.grid(alpha=0.3)
+        if preload_N is not None:               # a preloaded pair: its preload beside the power it drives
+            axf = axp.twinx()
+            axf.plot(t / scale, np.asarray(preload_N, float), "-", color="tab:red")
+            axf.set_ylabel("preload [N]", color="tab:red")
     (axp if power_W is not None else ax).set_xlabel(f"time [{unit}]")
     return _save(fig, path)
 

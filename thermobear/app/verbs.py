@@ -27,8 +27,9 @@ from thermobear.app.sweep import run_sweep, sweep_points
 from thermobear.contact.geometry import bearing, bearing_names
 from thermobear.contact.materials import material_names
 from thermobear.coupled import solve, transient
+from thermobear.coupled.transient_pair import preload_line
 from thermobear.coupled.uncertainty import steady_uncertainty, transient_uncertainty
-from thermobear.errors import InputError
+from thermobear.errors import InputError, ThermalPreloadRunaway
 from thermobear.files import data_dir, names_in, read_toml
 from thermobear.loads import load_distribution
 from thermobear.losses import BREAKDOWN_KEYS
@@ -376,21 +377,20 @@ def cmd_transient(args):
     try:
         run = transient(scene, args.t_end, schedule=schedule, T0_C=T0, t_eval=np.linspace(0.0, args.t_end, args.points),
                         stop=lambda: stop["flag"])
+    except ThermalPreloadRunaway as e:       # a pair's preload ran away: what was integrated to --csv, then exit 3
+        if out_csv and getattr(e.last, "t_s", np.zeros(0)).size:
+            _transient_csv(e.last, scene, args, out_csv, f", the pair's preload ran away after {e.last.t_s[-1]:g} s")
+        raise
     finally:
         for s, h in previous.items():
             signal.signal(s, h)
     nodes = list(run.T_C)
-    header = ["t_s"] + [f"T_{n}_C" for n in nodes] + ["P_W"] + [f"P_{k}_W" for k in run.breakdown_W]
-    cols = [run.t_s] + [run.T_C[n] for n in nodes] + [run.P_W] + list(run.breakdown_W.values())
-    rows = list(zip(*[np.asarray(c, float) for c in cols]))
     if out_csv:
-        write_text(out_csv, csv_text(header, rows, [f"thermobear transient of {scene.name} ({args.scene}), "
-                                                     f"t_end {args.t_end:g} s" + ("" if run.completed else
-                                                     f", interrupted at {run.t_s[-1] if run.t_s.size else 0:g} s")]))
-        wrote([out_csv])
+        _transient_csv(run, scene, args, out_csv, "" if run.completed else
+                       f", interrupted at {run.t_s[-1] if run.t_s.size else 0:g} s")
     if not run.completed:
         t = float(run.t_s[-1]) if run.t_s.size else 0.0
-        print(f"interrupted at t = {t:g} s: kept {len(rows)} output times" + (f" in {out_csv}" if out_csv else
+        print(f"interrupted at t = {t:g} s: kept {run.t_s.size} output times" + (f" in {out_csv}" if out_csv else
               " (no --csv: nothing written)"), file=sys.stderr)
         return EXIT_INTERRUPTED
     if args.json:
@@ -398,6 +398,7 @@ def cmd_transient(args):
                     "breakdown_W": run.breakdown_W, "schedule": schedule,
                     "final_T_C": {n: float(run.T_C[n][-1]) for n in nodes},
                     "t90_s": {n: t90_s(run.t_s, run.T_C[n]) for n in nodes},
+                    **({"preload": run.preload} if run.preload else {}),
                     "warnings": [w.as_dict() for w in run.warnings]})
     else:
         print(f"thermobear transient — {scene.name}: {args.t_end:g} s, {len(schedule)} schedule steps")
@@ -409,13 +410,29 @@ def cmd_transient(args):
         print(f"\nPower loss at the end {run.P_W[-1]:.3f} W (start {run.P_W[0]:.3f} W)")
         for k, v in run.breakdown_W.items():
             print(f"  {k:12s} {float(v[-1]):10.4f} W")
+        if run.preload:                      # one bearing of a preloaded pair: its preload through the heat-up
+            print(f"\n{preload_line(run.preload)}")
     if out_dir is not None:
         plots = _plots()
         out_dir.mkdir(parents=True, exist_ok=True)
         free = {n: run.T_C[n] for n in nodes if np.ptp(run.T_C[n]) > 0}
         wrote([plots.plot_heatup(run.t_s, free, out_dir / "heatup.png", title=f"Heat-up — {scene.name}",
-                                 power_W=run.P_W)])
+                                 power_W=run.P_W, preload_N=(run.preload or {}).get("series", {}).get("preload_N"))])
     return 0
+
+
+def _transient_csv(run, scene, args, path, note: str = "") -> None:
+    """The heat-up's ``--csv``: times [s], node temperatures [°C], power and its breakdown [W]; of a preloaded pair's
+    bearing the pair's preload and the loaded bearing's loads [N] at the output times."""
+    p = (run.preload or {}).get("series")
+    header = (["t_s"] + [f"T_{n}_C" for n in run.T_C] + ["P_W"] + [f"P_{k}_W" for k in run.breakdown_W] +
+              (["preload_N", "Fa_loaded_N", "Fr_loaded_N"] if p else []))
+    cols = ([run.t_s] + list(run.T_C.values()) + [run.P_W] + list(run.breakdown_W.values()) +
+            ([p["preload_N"], p["Fa_N"], p["Fr_N"]] if p else []))
+    rows = list(zip(*[np.asarray(c, float) for c in cols]))
+    write_text(path, csv_text(header, rows, [f"thermobear transient of {scene.name} ({args.scene}), t_end "
+                                             f"{args.t_end:g} s{note}"]))
+    wrote([path])
 
 
 def _transient_bands(args, scene, schedule, T0, out_csv, out_dir):

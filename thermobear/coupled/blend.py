@@ -23,8 +23,9 @@ import numpy as np
 
 from thermobear.coupled.pipeline import SWITCHED
 from thermobear.errors import OutsideValidity
+from thermobear.thermal import ThermalNetwork
 
-__all__ = ["blend_states", "blend_losses", "switch_label", "StackedBlend"]
+__all__ = ["blend_states", "blend_losses", "switch_label", "StackedBlend", "FilmNetwork"]
 
 
 def switch_label(models: dict, others: list) -> str:
@@ -202,3 +203,26 @@ class StackedBlend:
         return dataclasses.replace(r, P_W=wsum(r.P_W), torque_Nm=wsum(r.torque_Nm),
                                    breakdown_W={k: wsum(v) for k, v in r.breakdown_W.items()},
                                    contact_W={k: wsum(v) for k, v in r.contact_W.items()})
+
+
+@dataclasses.dataclass(frozen=True)
+class FilmNetwork(ThermalNetwork):
+    """A network between two: the dominant alternative's network with its loads at the two film temperatures
+    T_lo, T_hi [°C] of a heat-up piece's film cell (its contact ellipses and speeds differ), the conductances
+    interpolated linearly in the film temperature as the losses are (:class:`StackedBlend`;
+    :mod:`thermobear.coupled.transient`)."""
+
+    upper: ThermalNetwork = None
+    film: tuple = ()                 # (c (n,): the film temperature c · T [K] of the node temperatures T, T_lo, T_hi)
+
+    @classmethod
+    def between(cls, lower: ThermalNetwork, upper: ThermalNetwork, c, T_lo: float, T_hi: float):
+        """The network of ``lower`` (at T_lo [°C]) and ``upper`` (at T_hi [°C]); ``c`` (n,) the film temperature's
+        weights of the node temperatures."""
+        return cls(**{f.name: getattr(lower, f.name) for f in dataclasses.fields(ThermalNetwork)}, upper=upper,
+                   film=(np.asarray(c, float), T_lo, T_hi))
+
+    def conductances(self, T_K) -> np.ndarray:
+        c, T_lo, T_hi = self.film
+        th = np.clip((T_K @ c - 273.15 - T_lo) / (T_hi - T_lo), -0.5, 1.5)[..., None]
+        return (1.0 - th) * super().conductances(T_K) + th * self.upper.conductances(T_K)

@@ -58,7 +58,8 @@ from thermobear.errors import (ContactLimit, InputError, NoConvergence, OutsideV
 from thermobear.loads.pair import PairLoads, pair_loads, pair_preload_offset
 from thermobear.validity import check, collect
 
-__all__ = ["preload_loop", "pair_scene", "loaded_scene", "pair_temperatures", "preload_step_runs_away",
+__all__ = ["preload_loop", "pair_scene", "loaded_scene", "pair_temperatures", "pair_speed_rpm", "scene_pair_loads",
+           "preload_step_runs_away",
            "preload_lines", "PRELOAD_TOL_N"]
 
 PRELOAD_TOL_N = 1e-3          #: fixed-point tolerance on the loaded bearing's loads [N]
@@ -146,15 +147,39 @@ def _warm_failure(exc, hist: list) -> str:
     return f"{what} [{' '.join(str(exc).split())[:200]}]"
 
 
-def thermal_preload_warnings(scene, warm: float, T: dict) -> list:
+def thermal_preload_warnings(scene, warm: float, T: dict, at_speed_N: float | None = None) -> list:
     """The named warnings of a pair's warm preload (:data:`thermobear.validity.LIMITS` ``thermal_preload``): beyond
-    twice the cold one, below half of it (0: the pair has play)."""
+    twice the cold one, below half of it (0: the pair has play); ``at_speed_N``: the pair's preload at speed still
+    cold [N], named beside (the share of the speed in the rise)."""
     lost = "; the pair has play (no preload left)" if warm <= 0.0 else ""
+    fast = "" if at_speed_N is None else f" ({at_speed_N:.4g} N at speed, still cold)"
     with collect(replay=False) as got:
         check("thermal_preload", warm / scene.preload_force, "bearing.preload_N",
-              what=f"{warm:.4g} N warm against {scene.preload_force:.4g} N cold, inner ring {T['inner ring']:.1f} °C, "
-                   f"outer ring {T['outer ring']:.1f} °C, balls {T['balls']:.1f} °C{lost}")
+              what=f"{warm:.4g} N warm against {scene.preload_force:.4g} N cold at rest{fast}, inner ring "
+                   f"{T['inner ring']:.1f} °C, outer ring {T['outer ring']:.1f} °C, balls {T['balls']:.1f} °C{lost}")
     return list(got)
+
+
+def pair_speed_rpm(scene) -> float | None:
+    """The speed of a pair scene's high-speed form [rpm]: the scene's where its inner ring rotates (the form of
+    :func:`~thermobear.loads.pair.pair_loads` with ``n_rpm``), else None (the static form)."""
+    return float(scene.n_rpm) if scene.rotating == "inner" else None
+
+
+def scene_pair_loads(scene, T, offset: float | None = None, start: PairLoads | None = None) -> PairLoads:
+    """The loads of a pair scene's loaded bearing and the pair's preload (:func:`~thermobear.loads.pair.pair_loads`)
+    at the ring and ball temperatures ``T`` [°C] (:func:`pair_temperatures`; None: the mounting temperature
+    :data:`~thermobear.contact.fits.T_REF_C`), at the scene's speed where its inner ring rotates (the high-speed form
+    of both bearings; else the static form), with its kinematics' raceway control; ``offset``: the position
+    preload [m] when the caller has it (default :func:`~thermobear.loads.pair.pair_preload_offset`); ``start``: a
+    nearby answer to start the high-speed solve from.  The one evaluation the steady loop and the heat-up share."""
+    kind = scene.preload_kind or "position"
+    dT = {k: 0.0 if T is None else T[k] - T_REF_C for k in ("inner ring", "outer ring", "balls")}
+    ctl = scene.models.get("kinematics", "outer")
+    return pair_loads(scene.bearing, scene.arrangement, scene.preload_force, kind, scene.Fa, scene.Fr,
+                      spacer=scene.pair_spacer or 0.0, dT_inner=dT["inner ring"], dT_outer=dT["outer ring"],
+                      dT_ball=dT["balls"], offset=offset,
+                      n_rpm=pair_speed_rpm(scene), control=ctl if ctl in ("outer", "inner") else "outer", start=start)
 
 
 class _Pair:
@@ -165,20 +190,12 @@ class _Pair:
         self.kind = scene.preload_kind or "position"
         self.final, self.done = None, False       # the fixed point's answer, while its stability probe runs
         self.offset = (pair_preload_offset(scene.bearing, scene.preload_force) if self.kind == "position" else None)
-        # the pair at the scene's speed (the high-speed form is the rotating inner ring's: else the static form)
-        self.n_rpm = float(scene.n_rpm) if scene.rotating == "inner" else None
-        ctl = scene.models.get("kinematics", "outer")
-        self.control = ctl if ctl in ("outer", "inner") else "outer"
+        self.n_rpm = pair_speed_rpm(scene)
         self.cold = self.used = self.loads_at(None)
 
     def loads_at(self, T) -> PairLoads:
-        """The pair's loads at the temperatures ``T`` (None: the mounting temperature)."""
-        s, dT = self.scene, ({k: 0.0 for k in ("inner ring", "outer ring", "balls")} if T is None else
-                             {k: T[k] - T_REF_C for k in ("inner ring", "outer ring", "balls")})
-        return pair_loads(s.bearing, s.arrangement, s.preload_force, self.kind, s.Fa, s.Fr, spacer=s.pair_spacer or 0.0,
-                          dT_inner=dT["inner ring"],
-                          dT_outer=dT["outer ring"], dT_ball=dT["balls"], offset=self.offset, n_rpm=self.n_rpm,
-                          control=self.control)
+        """The pair's loads at the temperatures ``T`` (None: the mounting temperature): :func:`scene_pair_loads`."""
+        return scene_pair_loads(self.scene, T, self.offset)
 
     def step(self, r):
         """(the point's answer or error, None) or (None, the scene of the next step)."""
@@ -299,7 +316,8 @@ class _Pair:
         reason = (f"{s.arrangement.replace('_', '-')} pair, {how}; the loaded bearing carries Fa {used.Fa:.4g} N, "
                   f"Fr {used.Fr:.4g} N (the pair under Fa {s.Fa:.4g} N, Fr {s.Fr:.4g} N; the other bearing Fa "
                   f"{used.Fa_other:.4g} N; {form})")
-        warned = r.warnings + [w for w in thermal_preload_warnings(s, warm, T) if str(w) not in map(str, r.warnings)]
+        warned = r.warnings + [w for w in thermal_preload_warnings(s, warm, T, self.cold.preload if self.n_rpm
+                                                                                        else None) if str(w) not in map(str, r.warnings)]
         return dataclasses.replace(r, preload=pre, models_used={**r.models_used, "preload": (self.kind, reason)},
                                    warnings=warned)
 

@@ -35,6 +35,10 @@ under 1300 N radial; 8070 rpm under 750 N) within 1.7, 2.2 and 0.8 mK and the oi
 vary with T_f in 0.3 % waves about 6 K long, within 76 mK, where pieces of ≈ 2 K held at their start
 temperature gave 6, 53, 63 and 161 mK (validation/CHANGES.md).
 
+One bearing of a preloaded pair (``[bearing] arrangement``) runs its loaded bearing in pieces under the pair's loads
+at the ring and ball temperatures of each piece's start, a piece ending where they drift by more than 2 % (the warm-up
+overshoot of a position preload, its runaway: :mod:`thermobear.coupled.transient_pair`, ``TransientRun.preload``).
+
 A logged boundary (``boundary``: node → temperatures sampled at times, e.g. the room, an outer
 ring, the oil inlet as a rig logged them) imposes those nodes, linear between the samples
 (:class:`thermobear.thermal.solve.LinearBoundary`), and varies them continuously through every
@@ -45,7 +49,7 @@ from __future__ import annotations
 
 import math
 import warnings
-from dataclasses import dataclass, field, fields
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -55,15 +59,16 @@ from thermobear.coupled.ratings import check_static_safety, scene_clearance
 from thermobear.coupled.pipeline import Family, family_film_loads, family_loads, film_temperature_C, stack_loads
 from thermobear.coupled.pointmodel import PointModel, heat_sources, point_model
 from thermobear.coupled.sources import loss_sources, prepared_for
-from thermobear.errors import InputError, OutsideValidity, SolverError, ThermalRunaway
+from thermobear.coupled.transient_pair import load_follower
+from thermobear.errors import InputError, OutsideValidity, SolverError, ThermalPreloadRunaway, ThermalRunaway
 from thermobear.losses import prepare_contacts
 from thermobear.arrays import instance_of, take
-from thermobear.coupled.blend import StackedBlend
+from thermobear.coupled.blend import FilmNetwork, StackedBlend
 from thermobear.models import Alternative, plan_many
 from thermobear.scene import Scene
 from thermobear.scene.scene import SECTIONS
 from thermobear.schema import Field, check_value, real_number
-from thermobear.thermal import ThermalNetwork, solve_transient
+from thermobear.thermal import solve_transient
 from thermobear.thermal.solve import LinearBoundary
 from thermobear.validity import T_LUBRICANT_REFUSE_C
 
@@ -96,6 +101,8 @@ class TransientRun:
     roles : dict             role → node
     warnings : list          OutsideValidity warnings of the run
     completed : bool         False when the run was stopped early (what was integrated is kept)
+    preload : dict | None    of a preloaded pair's bearing: its preload through the heat-up (cold, peak, end [N],
+                             history; :mod:`thermobear.coupled.transient_pair`)
     """
 
     t_s: np.ndarray
@@ -106,6 +113,7 @@ class TransientRun:
     roles: dict = field(default_factory=dict)
     warnings: list = field(default_factory=list)
     completed: bool = True
+    preload: dict | None = None
 
 
 def _segments(scene: Scene, schedule, t_end_s):
@@ -173,7 +181,12 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
 
     Returns
     -------
-    TransientRun
+    TransientRun             of one bearing of a preloaded pair with its ``preload`` through the heat-up (cold,
+                             peak and end preload, the history; :mod:`thermobear.coupled.transient_pair`)
+
+    Raises
+    ------
+    ThermalPreloadRunaway    a pair's preload that runs away (what was integrated in its ``last``)
     """
     scene, T0_C = instance_of(scene, Scene, "scene"), _start_of(T0_C)
     t_end_s, rtol, atol = (check_value(v, _POSITIVE[k], k) for k, v in (("t_end_s", t_end_s), ("rtol", rtol),
@@ -197,8 +210,8 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
             if t_s == 0.0:
                 raise
             raise InputError(f"schedule step at t = {t_s:g} s: {exc.field}", exc.value, exc.expected) from None
-    pre = prepared_for(scene, prepared)
-    return _run(_pieces(segments, t_end_s), scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary)
+    pre, follow = prepared_for(scene, prepared), load_follower(scene, load)    # a pair: its loads follow the heat-up
+    return _run(_pieces(segments, t_end_s), scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary, follow)
 
 
 _POSITIVE = {k: Field.number(u, 0.0, lo_open=True) for k, u in (("t_end_s", "s"), ("rtol", "-"), ("atol", "K"))}
@@ -227,7 +240,7 @@ def _imposed(boundary, scene: Scene, t_end_s):
     return boundary, scene.with_(T_fixed_C={**scene.T_fixed_C, **boundary(0.0)})
 
 
-def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None) -> TransientRun:
+def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary, follow) -> TransientRun:
     T_state = scene.T_ambient_C if T0_C is None else T0_C
     out_t, out_T, out_rep, first, seg_changes, seen = [], {}, {}, None, {}, set()
     film_dt, completed, i, plans, clear_hist, prev, kept = None, True, -1, {}, [], None, (None, None, None, None)
@@ -241,14 +254,15 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
         warnings.simplefilter("ignore", OutsideValidity)
         while i + 1 < len(pieces):
             i += 1
-            ts, te, sc, last_seg = pieces[i]
+            (ts, te, sc0, last_seg), roles = pieces[i], (first[1] if first else pre.coupling.roles)
+            sc = follow.piece(sc0, ts, _T_nodes(T_state, roles, sc0), roles)     # a pair's: its loaded bearing
             if id(sc) not in plans:           # film pieces of one step share its scene: planned once
                 plans[id(sc)] = _alternatives(sc, load)
             alts = plans[id(sc)]
             choice = alts[0].models["clearance"][0] if load is None else "given"
             clear, sc_p = choice == "operating", sc
             if choice != "given":             # the clearance at the piece's start temperatures
-                c = _piece_clearance(sc, T_state, first[1] if first else pre.coupling.roles, clear_hist, ts)
+                c = _piece_clearance(sc, T_state, roles, clear_hist, ts)
             if clear:                         # the loads at it (negative: a radial preload)
                 sc_p = scene_at_clearance(sc, c["operating"] * 1e-6)
                 alts = _alternatives(sc_p, load)
@@ -259,20 +273,19 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
                 sc_p, alts = mounted[id(sc)]
             models = max(alts, key=lambda a: a.weight).models
             film = load is None and any(a.models["load_model"][0] == "film" for a in alts)
-            T_film, split, nodes = (_film_of(T_state, first[1] if first else pre.coupling.roles, sc) if film else None), \
-                False, (None,)
+            T_film, split, nodes = (_film_of(T_state, roles, sc) if film else None), False, (None,)
             fc = cells.setdefault(id(sc_p), _FilmCells(sc_p, T_film if film else 0.0))
             t_max, settled = np.inf, False
             if film and not clear:     # a cell of the film grid, a fine one where the heat-up has settled
                 nodes, t_max, settled = settling.cell(fc, T_film, ts, te, sc, last_film)
             elif film:                 # a piece at its own operating clearance: a scene of its own
                 nodes = (T_film,)
-            if clear or len(nodes) == 1 and film:    # pieces of ≈ _FILM_DRIFT_K of film-temperature drift,
-                # _CLEAR_DRIFT_M of clearance drift, the loads at each one's start
+            if clear or len(nodes) == 1 and film:    # pieces of ≈ _FILM_DRIFT_K / _CLEAR_DRIFT_M of drift, loads at start
                 film_dt = min(_FILM_DT0_S, te - ts) if film_dt is None else film_dt
-                if ts + film_dt < te - 1e-9 * te:
-                    pieces.insert(i + 1, (ts + film_dt, te, sc, last_seg))
-                    te, last_seg, split = ts + film_dt, False, True
+            dt = min(film_dt if clear or len(nodes) == 1 and film else np.inf, follow.length_s())   # a pair's: its drift
+            if ts + dt < te - 1e-9 * te:
+                pieces.insert(i + 1, (ts + dt, te, sc0, last_seg))
+                te, last_seg, split = ts + dt, False, True
             pm, sources = _sources_of(kept, sc_p, alts, load, pre, fc, nodes)
             if settled and kept[0] is sc_p and len(kept[1]) == 2 and settling.jumps(
                     sc, T_film, ts, _loss_step(kept[3], sources, pm.network, T_state)):  # the fine cell's loads
@@ -282,8 +295,8 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
             net, cp = pm.network, pm.coupling
             first = first or (models, cp.roles, list(net.nodes))
             changed = {k: v for k, v in models.items() if first[0].get(k, (None,))[0] != v[0]}
-            if changed and id(sc) not in seen:
-                seen.add(id(sc))
+            if changed and id(sc0) not in seen:
+                seen.add(id(sc0))
                 seg_changes[ts] = changed
             if list(net.nodes) != first[2]:
                 raise InputError("schedule", ts, "a step may not change the thermal network's nodes")
@@ -294,17 +307,16 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
             tr = solve_transient(net, sources, te - ts, T0_C=None if prev else _T0(T_state, net), t_eval=seg,
                                  rtol=rtol, atol=atol, stop=stop, continue_from=prev,
                                  fixed_C=None if boundary is None else boundary.shifted(ts),
-                                 until=(_cell_exit(nodes, net, cp.roles, t_max) if len(nodes) > 1 else
-                                        _drift_exit(nodes[0], net, cp.roles) if film else None))
+                                 until=follow.until(net, cp.roles, _cell_exit(nodes, net, cp.roles, t_max) if len(nodes)
+                                                    > 1 else _drift_exit(nodes[0], net, cp.roles) if film else None))
             if tr.completed and tr.t.size and float(tr.t[-1]) < te - ts:     # it left its film cell: the rest from there
-                pieces.insert(i + 1, (ts + float(tr.t[-1]), te, sc, last_seg))
+                pieces.insert(i + 1, (ts + float(tr.t[-1]), te, sc0, last_seg))
                 te, last_seg, split = ts + float(tr.t[-1]), False, True
             prev = tr if split and tr.completed else None  # the next piece goes on with this one's integrator
             _append(out_t, out_T, out_rep, tr, ts, te, t_eval, last_seg)
-            if tr.t.size:
-                T_state = _T_nodes_of(tr, net)
-            if not tr.completed:
-                completed = False
+            T_state = _T_nodes_of(tr, net) if tr.t.size else T_state
+            if not tr.completed:           # stopped: what was integrated, to the time it reached
+                completed, te = False, (ts + float(tr.t[-1]) if tr.t.size else ts)
                 break
             if film:           # the film temperature's rate at the end: its crossing of the next cell, or settling
                 last_film = (float(tr.end_rate_K_s()[0] @ _film_weights(net, cp.roles)), sc)
@@ -316,11 +328,13 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
                 film_dt = (te - ts) * float(np.clip(min(f), 0.5, 4.0))
             try:
                 runaway_at(T_state, te)
-            except ThermalRunaway as e:      # at a radial preload: the preload's runaway (what was integrated: .last)
-                if not (clear and c["operating"] < 0):
+                follow.ended(te, _T_nodes(T_state, cp.roles, sc0), cp.roles)   # a pair: the next piece's loads
+            except (ThermalRunaway, ThermalPreloadRunaway) as e:  # a radial or pair's preload: its runaway (.last)
+                err = follow.runaway(e, te) or (preload_runaway(sc, c, clear_hist, f"during the heat-up at t = {te:g} s "
+                                                                f"({e})") if clear and c["operating"] < 0 else None)
+                if err is None:
                     raise
-                err = preload_runaway(sc, c, clear_hist, f"during the heat-up at t = {te:g} s ({e})")
-                err.last = _assemble(out_t, out_T, out_rep, first, seg_changes, [], False)
+                err.last = follow.finish(_assemble(out_t, out_T, out_rep, first, seg_changes, [], False))
                 raise err from e
         if completed and film and len(nodes) == 2 and settling.warning is None and id(sc) not in settling.at:
             # ends settled inside a grid cell: the loads there?
@@ -333,18 +347,18 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary=None
         x = [0.5 * (Tb + cat(out_T[ro["inner"]])), 0.5 * (Tb + cat(out_T[ro["outer"]])), cat(out_T[ro["oil"]])]
         runaway_in(x, cat(out_t))
         seal = cat(out_T["seal"]).max() if "seal" in out_T else None      # a built network's seal node
-        for _, _, sc, _ in pieces[:i + 1]:
+        for sc in follow.scenes(pieces[:i + 1]):
             got += [w for w in point_warnings(sc, None, np.concatenate(x), T_seal_C=seal) if str(w) not in map(str, got)]
         for fc in cells.values():             # the film loads it passed: a preload by the films (cold, viscous oil)
             got += [w for w in fc.preload_warnings() if str(w) not in map(str, got)]
     got += [settling.warning] if settling.warning is not None else []
     end = first and load is None and _T_nodes(T_state, first[1], pieces[i][2])
     got += heat_up_preload_warnings(pieces[i][2], c if choice == "operating" else None, end or None,
-                                    first[1] if first else None, clear_hist, te)
+                                    first[1] if first else None, clear_hist, te) + follow.warnings(end, roles, te)
     if choice != "given" and c is not None and c["operating" if choice == "operating" else "mounted"] < 0:
         got = [w for w in got if w.quantity != "unloaded"]    # the loads at a radial preload: every ball loaded
     emit(got)
-    return _assemble(out_t, out_T, out_rep, first, seg_changes, got, completed)
+    return follow.finish(_assemble(out_t, out_T, out_rep, first, seg_changes, got, completed))
 
 
 def _append(out_t, out_T, out_rep, tr, ts, te, t_eval, last_seg):
@@ -597,26 +611,6 @@ class _FilmCells:
             self.solved[(k, T)] = (take(ld, i, K), take(sol, np.array([i]), K))
 
 
-@dataclass(frozen=True)
-class _FilmNetwork(ThermalNetwork):
-    """A network between two: the dominant alternative's network with its loads at the two film temperatures
-    T_lo, T_hi [°C] of a piece's film cell (its contact ellipses and speeds differ), the conductances
-    interpolated linearly in the film temperature as the losses are (:class:`~thermobear.coupled.blend.StackedBlend`)."""
-
-    upper: ThermalNetwork = None
-    film: tuple = ()                 # (c (n,): the film temperature c · T [K] of the node temperatures T, T_lo, T_hi)
-
-    @classmethod
-    def between(cls, lower: ThermalNetwork, upper: ThermalNetwork, roles: dict, T_lo: float, T_hi: float):
-        return cls(**{f.name: getattr(lower, f.name) for f in fields(ThermalNetwork)}, upper=upper,
-                   film=(_film_weights(lower, roles), T_lo, T_hi))
-
-    def conductances(self, T_K) -> np.ndarray:
-        c, T_lo, T_hi = self.film
-        th = np.clip((T_K @ c - _C0 - T_lo) / (T_hi - T_lo), -0.5, 1.5)[..., None]
-        return (1.0 - th) * super().conductances(T_K) + th * self.upper.conductances(T_K)
-
-
 def _piece_model(sc: Scene, alts, load, prepared, cells: _FilmCells, nodes, dominant=None) -> PointModel:
     """The point model of a piece (``load``: injected loads instead of the alternatives'): across a switch band
     its heat sources are the weighted losses of the alternatives, evaluated as stacked points of one batch
@@ -640,7 +634,8 @@ def _piece_model(sc: Scene, alts, load, prepared, cells: _FilmCells, nodes, domi
     if film[k_dom] and len(nodes) > 1:       # the dominant's network follows the film temperature as its losses do
         hi = point_model(sc, dom.models, load=cells.load(k_dom, dom, nodes[-1]), prepared=prepared).network
         pm = PointModel(family=pm.family, coupling=pm.coupling, source=pm.source,
-                        network=_FilmNetwork.between(pm.network, hi, pm.coupling.roles, nodes[0], nodes[-1]))
+                        network=FilmNetwork.between(pm.network, hi, _film_weights(pm.network, pm.coupling.roles),
+                                                             nodes[0], nodes[-1]))
     K, m = len(rows), dom.models
     fam = Family(scenes=(sc,) * K, index=tuple(range(K)), models=m, dry=(None,) * K)
     cs = prepare_contacts(sc.bearing, fam.values("Fa"), fam.values("Fr"), fam.values("n_rpm"),

@@ -78,7 +78,7 @@ from thermobear.coupled.transient import PointModel, heat_sources
 from thermobear.errors import InputError, OutsideValidity, SolverError
 from thermobear.lazy import lazy_module
 from thermobear.model_inputs import FRICTION_INPUTS, unread_inputs
-from thermobear.models import plan_many
+from thermobear.models import plan_many, refuse_pair
 from thermobear.scene import Scene
 from thermobear.scene.scene import SECTIONS
 from thermobear.schema import Uncertainty, check_value
@@ -616,6 +616,7 @@ def transient_uncertainty(scene: Scene, t_end_s: float, n: int, *, t_eval=None, 
     parameters as :func:`steady_uncertainty` and :func:`thermobear.coupled.transient.transient` (no
     schedule: one operating point).  A batch whose integration fails counts all its samples as failed.
     """
+    refuse_pair(scene)      # the samples' heat-ups run given loads (a pair's follow its preload: transient alone)
     t_eval = np.linspace(0.0, t_end_s, 51)[1:] if t_eval is None else np.asarray(t_eval, float)
     nominal = nominal if nominal is not None else _transient.transient(scene, t_end_s, t_eval=t_eval, T0_C=T0_C,
                                                                        rtol=rtol, atol=atol, stop=stop, boundary=boundary)

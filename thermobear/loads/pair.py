@@ -44,7 +44,7 @@ References
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -74,6 +74,8 @@ class PairLoads:
     preload : float     the pair's preload at these temperatures without external load: each bearing's axial
                         load [N] (the two alike by symmetry)
     offset : float | None  the position preload δ [m] (None: a spring preload)
+    start : ndarray | None  the high-speed form's bearing 0 loads (Fa, Fr, M) of its two load cases (the external
+                        loads, none), (2, 3) [N, N, N m]: where a nearby solve starts (``pair_loads(start=…)``)
     """
 
     Fa: float
@@ -82,6 +84,7 @@ class PairLoads:
     Fa_other: float
     preload: float
     offset: float | None
+    start: np.ndarray | None = field(default=None, repr=False, compare=False)
 
 
 def pair_preload_offset(brg: BallBearing, preload, *, stiffness: str = "nominal") -> float:
@@ -121,7 +124,7 @@ def pair_preload_offset(brg: BallBearing, preload, *, stiffness: str = "nominal"
 def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "position", Fa=0.0, Fr=0.0, *,
                dT_inner: float = 0.0, dT_outer: float = 0.0, dT_ball: float | None = None,
                offset: float | None = None, stiffness: str = "nominal", spacer: float = 0.0,
-               n_rpm: float | None = None, control: str = "outer") -> PairLoads:
+               n_rpm: float | None = None, control: str = "outer", start: "PairLoads | None" = None) -> PairLoads:
     r"""The loads of a preloaded pair's loaded bearing, and the pair's preload, with warm rings and balls.
 
     Parameters
@@ -143,6 +146,8 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
                         the offset stays the one mounted at rest); ``None`` (default): the static form
     control : str       the high-speed form's raceway control
                         (:func:`~thermobear.loads.highspeed.load_distribution_high_speed`)
+    start : PairLoads   a nearby answer of the high-speed form (e.g. a heat-up's last) whose loads start its Newton
+                        iteration (default: the low-speed pair's); the answer is the same to the solver's tolerance
 
     Returns
     -------
@@ -208,10 +213,12 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
         sups, _ = duplex_supports(brg, arrangement, **pre, spacer=float(spacer))
         if dT_inner or dT_outer or dT_ball or n > 0:
             sups = warm_supports(sups, dT_inner, dT_outer, dT_ball, n_rpm=n)
-        s = shaft_loads_high_speed(sups, Fa2, Fr2, n, control=control, stiffness=stiffness)
+        s = shaft_loads_high_speed(sups, Fa2, Fr2, n, control=control, stiffness=stiffness,
+                                   start=None if start is None or start.start is None else start.start)
     R = s.reactions                                 # (2 cases, 2 bearings, 5)
     k = int(np.argmax(R[0, :, 0]))
     # without an external radial load the bearings' radial reactions are the solver's residual (≈ 1e-14 N): 0
     Fr_k = float(np.hypot(R[0, k, 1], R[0, k, 3])) if float(Fr) > 0.0 else 0.0
     return PairLoads(Fa=float(R[0, k, 0]), Fr=Fr_k, loaded=k,
-                     Fa_other=float(R[0, 1 - k, 0]), preload=float(R[1, :, 0].mean()), offset=offset)
+                     Fa_other=float(R[0, 1 - k, 0]), preload=float(R[1, :, 0].mean()), offset=offset,
+                     start=None if n_rpm is None else np.array(R[:, 0, :3]))

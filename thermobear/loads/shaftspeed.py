@@ -209,6 +209,15 @@ def _start(sups, P, stiffness, tilt_arm):
     return R0, scale
 
 
+def _given_start(start, P):
+    """Bearing 0's loads (nb, 3) to start from, given (e.g. a nearby solution's), and the cases' force scale (nb,)
+    [N]: the larger of those loads and the external ones (as :func:`_start`'s)."""
+    R0 = np.broadcast_to(np.asarray(start, float), (P.shape[0], 3)).copy()
+    if not np.all(np.isfinite(R0)):
+        raise InputError("start", start, "bearing 0's loads (Fa, Fr, M) to start from: finite [N, N, N m]")
+    return R0, np.maximum(np.maximum(np.abs(R0[:, :2]).max(axis=1), np.abs(P[:, :2]).max(axis=1)), 1e-3)
+
+
 def _newton(pb, z, tol, maxiter):
     """Damped Newton on every case: (z, scaled residual norm, iterations); NoConvergence names the first case that
     does not reach ``tol``."""
@@ -268,7 +277,7 @@ def _newton(pb, z, tol, maxiter):
 
 def shaft_loads_high_speed(supports, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=0.0, x_load=0.0, control: str = "outer",
                            stiffness: str = "nominal", tilt_arm: str = "groove", tol: float = _TOL,
-                           maxiter: int = _MAXIT, refuse_overload: bool = True) -> HighSpeedShaftLoads:
+                           maxiter: int = _MAXIT, refuse_overload: bool = True, start=None) -> HighSpeedShaftLoads:
     r"""Equilibrium of a rigid shaft on two bearings with each bearing's high-speed load–displacement relation.
 
     Parameters
@@ -281,6 +290,8 @@ def shaft_loads_high_speed(supports, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=0.0, x_load
     M : array_like      moment in the x–y plane [N m]
     control, stiffness, tilt_arm : as :func:`thermobear.loads.highspeed.load_distribution_high_speed`
     tol, maxiter : Newton tolerance (scaled compatibility residual) and steps
+    start : array_like  bearing 0's loads (Fa, Fr, M) [N, N, N m] to start Newton from, one per case (e.g. a nearby
+                        answer's ``reactions[..., 0, :3]``: a heat-up's last); default the low-speed shaft's
 
     Returns
     -------
@@ -324,7 +335,7 @@ def shaft_loads_high_speed(supports, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=0.0, x_load
     if any(s.bearing.kind != "angular_contact" for s in sups):
         raise InputError("supports", supports, "two angular contact bearings (a preloaded pair)")
     shape, P, n = _external(Fa, Fr, M, x_load, n_rpm)
-    R0, scale = _start(sups, P, stiffness, tilt_arm)
+    R0, scale = _start(sups, P, stiffness, tilt_arm) if start is None else _given_start(start, P)
     pb = _Pair(sups, P, n, control, stiffness, tilt_arm, scale)
     z, norm, its = _newton(pb, R0[:, pb.free] / pb.unit[:, pb.free], tol, maxiter)
     idx = np.arange(P.shape[0])
