@@ -7,7 +7,8 @@ import pytest
 import thermobear as tb
 from thermobear.contact.fits import (clearance_preload, expanded_bearing, fit_interference, fit_pressure,
                                      lame_displacement, operating_clearance, ring_deviations,
-                                     rotating_ring_displacement, seat_deviations, steel_expansion)
+                                     raceway_growth, rotating_ring_displacement, seat_deviations,
+                                     seated_raceway_growth, steel_expansion)
 from thermobear.contact.geometry import radial_clearance
 from thermobear.errors import InputError
 
@@ -139,3 +140,19 @@ def test_seat_materials_by_catalogue_name_equal_the_materials():
     assert by_name.pressure_inner < tb.operating_clearance(b, shaft="k5", housing="H7").pressure_inner
     with pytest.raises(InputError, match="^shaft_material = 3 — must be a Material"):
         tb.operating_clearance(b, shaft="k5", shaft_material=3)
+
+
+@pytest.mark.parametrize("n_rpm", [4000.0, 8000.0, 12000.0])
+def test_a_ring_on_its_seat_grows_less_at_speed_than_a_free_one(n_rpm):
+    """The inner raceway's growth at speed on an interference seat: the free ring's centrifugal growth less the fit's
+    relief (the ring's bore grows more than the solid shaft's: the interference and the fit's expansion fall).  A
+    loose seat (a clearance) leaves the ring free; a tight one takes back most of the growth, the same at any speed
+    (both ∝ ω²); it is operating_clearance's change of the clearance with speed, halved."""
+    b = tb.bearing("7014C")
+    free = raceway_growth(b, n_rpm)
+    assert seated_raceway_growth(b, n_rpm) == free
+    assert seated_raceway_growth(b, n_rpm, I_inner_m=-10e-6) == pytest.approx(free, rel=1e-12)
+    tight = seated_raceway_growth(b, n_rpm, I_inner_m=16e-6)
+    assert 0.0 < tight < 0.3 * free and tight / free == pytest.approx(0.62 / 2.96, rel=0.02)
+    oc = operating_clearance(b, shaft="k5", n_rpm=np.array([0.0, n_rpm]))
+    assert seated_raceway_growth(b, n_rpm, shaft="k5") == pytest.approx(-0.5 * float(oc.Pd[1] - oc.Pd[0]), rel=1e-12)

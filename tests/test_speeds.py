@@ -12,8 +12,9 @@ from scipy.optimize import brentq
 import thermobear as tb
 import thermobear.app.speed as app_speed
 from thermobear.app.cli import main
-from thermobear.coupled.speeds import (din732_safe_speed, hottest_ring_C, reference_loads, reference_lubricant,
-                                       runaway_speed, thermal_reference_speed, thermally_safe_speed)
+from thermobear.coupled.speeds import (ENDS, _ends, din732_safe_speed, hottest_ring_C, reference_loads,
+                                       reference_lubricant, runaway_speed, thermal_reference_speed,
+                                       thermally_safe_speed)
 from thermobear.errors import ContactLimit, InputError, NoSpeedRoot
 from thermobear.rating.speeds import (din732_parameters, din732_speed_ratio, palmgren_moments, reference_conditions,
                                       reference_heat_flow_density, reference_surface, standard_reference_speed)
@@ -411,3 +412,12 @@ def test_runaway_speed_says_when_there_is_none_in_the_range():
         runaway_speed(_pair(450.0), n_min_rpm=6500.0, n_max_rpm=8000.0, points=2)
     with pytest.raises(InputError, match="rtol"):
         runaway_speed(s, rtol=0.0)
+
+
+def test_what_ends_the_equilibria_is_named_including_the_contacts_limit():
+    """The errors that end the equilibria each have their name (a ContactLimit is an InputError, but not the
+    lubricant's); another InputError is not an end (it is raised)."""
+    assert _ends(ContactLimit("operation (Fa_N, Fr_N, M_Nm)", "Fa 0 N", "maximum contact pressure 6528 MPa")) == \
+        ENDS[ContactLimit]
+    assert _ends(tb.ThermalPreloadRunaway("x")) == "preload runaway" and _ends(tb.ThermalRunaway("x")) == "thermal runaway"
+    assert _ends(InputError("operation.n_rpm", -1.0, "must be >= 0")) is None

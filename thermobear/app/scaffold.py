@@ -289,7 +289,7 @@ def _housing_rows(m, lay, housing: str, pair: bool = False) -> list:
         rows += [("axial_length_mm", round(1e3 * lay.L_h, 3), f"mm: 1.5 B, room for a cover on the left ({_MACHINE_SRC}: "
                   f"B/2 either side of a single bearing), {_PAIR_CUT}"),
                  ("offset_mm", round(1e3 * h.offset, 3), "mm: the housing's centre from the bearing's (its right end at "
-                  "the bearing's right face)")]
+                  "the bearing's right face; with a spacer, [bearing] spacer_mm, half its length further)")]
     else:
         rows.append(("axial_length_mm", round(1e3 * lay.L_h, 3), f"mm: 2 B, {_MACHINE_SRC} (room for a cover either side)"))
     if lay.shape == "block":

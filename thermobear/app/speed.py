@@ -160,7 +160,8 @@ def _runaway(scene: Scene, ladder) -> dict:
         return {"error": " ".join(str(exc).split()) if isinstance(exc, NoSpeedRoot) else
                 f"{type(exc).__name__}: " + " ".join(str(exc).split())}
     return {"n_rpm": r.n_rpm, "settled_rpm": r.settled_rpm, "kind": r.kind, "why": r.why, "T_C": r.T_C,
-            "T_node": r.T_node, "P_W": r.P_W, "preload_warm_N": r.preload_warm_N}
+            "T_node": r.T_node, "P_W": r.P_W, "preload_warm_N": r.preload_warm_N, "iterations": r.iterations,
+            "again_rpm": list(r.again_rpm)}
 
 
 def _maker(scene: Scene, rep: dict) -> dict:
@@ -225,8 +226,10 @@ def _runaway_line(part: dict) -> str:
     if "error" in part:
         return f"  {label:58s} —  {part['error']}"
     pre = "" if part["preload_warm_N"] is None else f", warm preload {part['preload_warm_N']:.0f} N"
+    again = ("" if not part["again_rpm"] else "; equilibria again at " + ", ".join(f"{n:.0f}" for n in
+                                                                               part["again_rpm"]) + " rpm (the first end)")
     return (f"  {label:58s} {part['n_rpm']:9.0f} rpm   {part['kind']}; at {part['settled_rpm']:.0f} rpm still "
-            f"{part['T_node']} {part['T_C']:.2f} °C, {part['P_W']:.1f} W{pre}")
+            f"{part['T_node']} {part['T_C']:.2f} °C, {part['P_W']:.1f} W{pre}{again}")
 
 
 def summary(rep: dict) -> str:

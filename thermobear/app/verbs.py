@@ -379,7 +379,8 @@ def cmd_transient(args):
                         stop=lambda: stop["flag"])
     except ThermalPreloadRunaway as e:       # a pair's preload ran away: what was integrated to --csv, then exit 3
         if out_csv and getattr(e.last, "t_s", np.zeros(0)).size:
-            _transient_csv(e.last, scene, args, out_csv, f", the pair's preload ran away after {e.last.t_s[-1]:g} s")
+            what = "the pair's preload" if getattr(e.last, "preload", None) else "the radial preload"
+            _transient_csv(e.last, scene, args, out_csv, f", {what} ran away after {e.last.t_s[-1]:g} s")
         raise
     finally:
         for s, h in previous.items():

@@ -59,7 +59,8 @@ from thermobear.errors import InputError
 from thermobear.files import data_dir, lookup, read_toml
 
 __all__ = ["T_REF_C", "seat_deviations", "ring_deviations", "fit_interference", "lame_displacement",
-           "fit_pressure", "rotating_ring_displacement", "raceway_growth", "OperatingClearance", "operating_clearance",
+           "fit_pressure", "rotating_ring_displacement", "raceway_growth", "seated_raceway_growth",
+           "OperatingClearance", "operating_clearance",
            "clearance_preload", "expanded_bearing", "steel_expansion", "SHAFT_CLASSES", "HOUSING_CLASSES"]
 
 T_REF_C = 20.0          #: reference temperature of sizes and clearances [°C] (ISO 1)
@@ -328,8 +329,8 @@ def raceway_growth(brg: BallBearing, n_rpm):
 
     The raceway diameter grows by 2u_i and the operating diametral clearance falls by as much
     (:func:`operating_clearance`); the groove curvature centre moves out with it (:func:`expanded_bearing`'s
-    ``u_inner``).  A seat's interference is loosened, not added (the ring grows as if free; Harris & Kotzalas
-    2007 [3] ch. 3).
+    ``u_inner``).  This is the free ring's growth: on an interference seat the fit's relief takes back part of it
+    (:func:`seated_raceway_growth`; Harris & Kotzalas 2007 [3] ch. 3).
 
     Parameters
     ----------
@@ -355,6 +356,45 @@ def raceway_growth(brg: BallBearing, n_rpm):
         return 0.0
     rm, d_i = brg.ring_material, brg.dm - brg.D
     return rotating_ring_displacement(0.5 * d_i, 0.5 * brg.bore, 0.5 * d_i, w, rm.rho, rm.E, rm.nu)
+
+
+def seated_raceway_growth(brg: BallBearing, n_rpm, *, shaft: str | None = None, I_inner_m=None,
+                          shaft_bore: float = 0.0, shaft_material=None, interference: str = "mean"):
+    r"""Growth of a rotating inner ring's raceway on its seat at speed (radius) [m]: the free ring's centrifugal
+    growth (:func:`raceway_growth`) less the relief of its fit — the ring's bore grows more than the shaft's, the
+    interference falls and with it the fit's expansion of the raceway (Lamé; Harris & Kotzalas 2007 [3] ch. 3) —, as
+    :func:`operating_clearance`'s inner terms give them at 20 °C:
+
+    .. math:: u = −\tfrac12 \left[P_{d,op}(n) − P_{d,op}(0)\right] = u_i − \tfrac12\left[Δ_{fit}(n) − Δ_{fit}(0)\right]
+
+    Parameters
+    ----------
+    brg : BallBearing           needs ``bore``
+    n_rpm : array_like          speed of the inner ring and shaft [rpm]
+    shaft, I_inner_m, shaft_bore, shaft_material, interference : the seat, as :func:`operating_clearance` (neither
+                                ``shaft`` nor ``I_inner_m``: a free ring, :func:`raceway_growth`)
+
+    Returns
+    -------
+    ndarray or float            u [m]
+
+    Examples
+    --------
+    A 7014C at 12 000 rpm: a free ring grows 2.96 µm on its raceway's radius; on a solid steel shaft with 16 µm
+    interference the seat takes back most of it.
+
+    >>> from thermobear.contact.geometry import bearing
+    >>> b = bearing("7014C")
+    >>> [round(float(u) * 1e6, 2) for u in (raceway_growth(b, 12000.0), seated_raceway_growth(b, 12000.0, I_inner_m=16e-6))]
+    [2.96, 0.62]
+    """
+    n = np.asarray(n_rpm, dtype=float)
+    if shaft is None and I_inner_m is None:
+        return raceway_growth(brg, n)
+    oc = operating_clearance(brg, shaft=shaft, I_inner_m=I_inner_m, shaft_bore=shaft_bore,
+                             shaft_material=shaft_material, interference=interference,
+                             n_rpm=np.stack([np.zeros_like(n), n]))
+    return -0.5 * (oc.Pd[1] - oc.Pd[0])
 
 
 @dataclass(frozen=True)

@@ -51,11 +51,12 @@ from __future__ import annotations
 
 import dataclasses
 
-from thermobear.contact.fits import T_REF_C
-from thermobear.coupled.ratings import _node_T
+from thermobear.contact.fits import T_REF_C, seated_raceway_growth
+from thermobear.coupled.ratings import _node_T, inner_seat
 from thermobear.errors import (ContactLimit, InputError, NoConvergence, OutsideValidity, SolverError,
                                ThermalPreloadRunaway, ThermalRunaway)
 from thermobear.loads.pair import PairLoads, pair_loads, pair_preload_offset
+from thermobear.models import high_speed_control
 from thermobear.validity import check, collect
 
 __all__ = ["preload_loop", "pair_scene", "loaded_scene", "pair_temperatures", "pair_speed_rpm", "scene_pair_loads",
@@ -103,7 +104,8 @@ def preload_step_runs_away(history: list, tol_N: float = PRELOAD_TOL_N) -> bool:
     that this slope is not falling (g − F convex): then g(F) − F only grows with the preload, no fixed point ahead.
     The slope alone is not enough: from a light cold preload the force rises steeply with the interference (Hertz,
     F ∝ δ^1.5) and the loop's gain passes 1 for a step or two before the loss's response flattens and the loop
-    settles (a 7014C pair at 16000 rpm: steps 13, 63, 136, 267 N, then 101 N, settling at 1080 N).
+    settles (measured with the pair's static form: a 7014C pair at 16000 rpm, steps 13, 63, 136, 267 N, then
+    101 N, settling at 1080 N).
 
     >>> h = [dict(Fa_used_N=431.0, Fa_N=450.0), dict(Fa_used_N=450.0, Fa_N=500.0), dict(Fa_used_N=500.0, Fa_N=640.0)]
     >>> preload_step_runs_away(h), preload_step_runs_away(h[:2])          # steps 19, 50, 140 N: growing faster
@@ -175,11 +177,12 @@ def scene_pair_loads(scene, T, offset: float | None = None, start: PairLoads | N
     nearby answer to start the high-speed solve from.  The one evaluation the steady loop and the heat-up share."""
     kind = scene.preload_kind or "position"
     dT = {k: 0.0 if T is None else T[k] - T_REF_C for k in ("inner ring", "outer ring", "balls")}
-    ctl = scene.models.get("kinematics", "outer")
+    n = pair_speed_rpm(scene)
+    u = None if not n else float(seated_raceway_growth(scene.bearing, n, **inner_seat(scene)))
     return pair_loads(scene.bearing, scene.arrangement, scene.preload_force, kind, scene.Fa, scene.Fr,
                       spacer=scene.pair_spacer or 0.0, dT_inner=dT["inner ring"], dT_outer=dT["outer ring"],
-                      dT_ball=dT["balls"], offset=offset,
-                      n_rpm=pair_speed_rpm(scene), control=ctl if ctl in ("outer", "inner") else "outer", start=start)
+                      dT_ball=dT["balls"], offset=offset, n_rpm=n,
+                      control=high_speed_control(scene) if n else "outer", start=start, u_inner=u)
 
 
 class _Pair:
@@ -311,8 +314,10 @@ class _Pair:
                f"inner ring {T['inner ring']:.1f} °C, outer ring {T['outer ring']:.1f} °C, balls {T['balls']:.1f} °C "
                f"(fixed point, {n} steps, residual {res:.1e} N)")
         form = ("static form: no centrifugal term in the preload" if self.n_rpm is None else
-                f"high-speed form at {self.n_rpm:.6g} rpm: the balls' centrifugal force and the inner rings' growth in "
-                f"the preload, {self.cold.preload:.4g} N at speed cold")
+                f"high-speed form at {self.n_rpm:.6g} rpm: the spring keeps its force, the balls' centrifugal force "
+                "sets the contacts" if self.kind == "spring" else
+                f"high-speed form at {self.n_rpm:.6g} rpm: the balls' centrifugal force and the inner rings' growth on "
+                f"their seat in the preload, {self.cold.preload:.4g} N at speed cold")
         reason = (f"{s.arrangement.replace('_', '-')} pair, {how}; the loaded bearing carries Fa {used.Fa:.4g} N, "
                   f"Fr {used.Fr:.4g} N (the pair under Fa {s.Fa:.4g} N, Fr {s.Fr:.4g} N; the other bearing Fa "
                   f"{used.Fa_other:.4g} N; {form})")

@@ -53,7 +53,7 @@ from thermobear.rating.minimum_load import (AXIAL_KINDS, minimum_axial_load, min
 from thermobear.thermal.builders import Machine, seat_interferences
 from thermobear.validity import LIMITS, check, collect
 
-__all__ = ["PRELOAD_OUTPUTS", "RATING_OUTPUTS", "Ratings", "check_static_safety", "operating_lives", "operating_temperature_C",
+__all__ = ["PRELOAD_OUTPUTS", "RATING_OUTPUTS", "Ratings", "check_static_safety", "inner_seat", "operating_lives", "operating_temperature_C",
            "preload_warnings", "rating_samples", "scene_clearance", "scene_ratings", "typical_fits"]
 
 _LOAD_FIELDS = "operation (Fa_N, Fr_N, Fz_N)"
@@ -200,23 +200,9 @@ def _node_T(T, roles, names, role):
     return _num(T[node]), node
 
 
-def scene_clearance(scene, T_C: dict, roles: dict, *, static=None) -> dict:
-    """Unmounted, mounted (fits at 20 °C) and operating diametral clearance [µm] of a scene's bearing at the node
-    temperatures ``T_C`` (node → °C, or → an array of one per operating point: then the operating clearance and the
-    temperatures are arrays too; ``roles``: role → node), with the scene's fits (``shaft_fit``, ``housing_fit``), else —
-    a scene that describes its machine — the seats of its network's joints
-    (:func:`thermobear.thermal.builders.seat_interferences`: its ``interference_um`` or the usual fit, with its shaft's
-    and housing's materials), else the typical fits for its load (:func:`typical_fits`), as
-    :func:`~thermobear.contact.fits.operating_clearance` gives them: the ring
-    temperatures from the nodes ``inner_ring`` / ``outer_ring`` (else the inner / outer role), the balls', the
-    shaft's and housing's (else the ring's), the inner ring's speed when it rotates.
-
-    >>> import thermobear as tb
-    >>> s = tb.load_scene(tb.example_path("oil_bath_6208.toml"))
-    >>> c = scene_clearance(s, {"ball": 20.0, "ir": 20.0, "or": 20.0}, {"ball": "ball", "inner": "ir", "outer": "or"})
-    >>> round(c["mounted"], 2), c["shaft_fit"]
-    (1.69, 'k5 (13.5 µm)')
-    """
+def _fits(scene, static=None) -> tuple:
+    """(shaft class or None, housing class or None, the machine's seats as :func:`operating_clearance` keywords, the
+    answer's fit labels) of a scene's bearing (:func:`scene_clearance`)."""
     b = scene.bearing
     C, _, P, _ = _static(scene) if static is None else static        # (static: the caller's _static(scene))
     typ = typical_fits(b, P, C, scene.rotating)
@@ -246,6 +232,39 @@ def scene_clearance(scene, T_C: dict, roles: dict, *, static=None) -> dict:
         out["fits_from"] = "no fit: the bearing has no bore / outside diameter"
         shaft = housing = None
         seats = {}
+    return shaft, housing, seats, out
+
+
+def inner_seat(scene) -> dict:
+    """The inner ring's seat of a scene as :func:`~thermobear.contact.fits.operating_clearance` keywords (``shaft``
+    class or ``I_inner_m``, ``shaft_bore``, ``shaft_material``), as :func:`scene_clearance` takes it: the scene's
+    fit, else its machine's seat, else the typical fit for its loads; an empty dict where the ring has no fit."""
+    shaft, _, seats, _ = _fits(scene)
+    out = {k: seats[k] for k in ("I_inner_m", "shaft_bore", "shaft_material") if k in seats}
+    if shaft is not None:
+        out["shaft"] = shaft
+    return out if ("shaft" in out or "I_inner_m" in out) else {}
+
+
+def scene_clearance(scene, T_C: dict, roles: dict, *, static=None) -> dict:
+    """Unmounted, mounted (fits at 20 °C) and operating diametral clearance [µm] of a scene's bearing at the node
+    temperatures ``T_C`` (node → °C, or → an array of one per operating point: then the operating clearance and the
+    temperatures are arrays too; ``roles``: role → node), with the scene's fits (``shaft_fit``, ``housing_fit``), else —
+    a scene that describes its machine — the seats of its network's joints
+    (:func:`thermobear.thermal.builders.seat_interferences`: its ``interference_um`` or the usual fit, with its shaft's
+    and housing's materials), else the typical fits for its load (:func:`typical_fits`), as
+    :func:`~thermobear.contact.fits.operating_clearance` gives them: the ring
+    temperatures from the nodes ``inner_ring`` / ``outer_ring`` (else the inner / outer role), the balls', the
+    shaft's and housing's (else the ring's), the inner ring's speed when it rotates.
+
+    >>> import thermobear as tb
+    >>> s = tb.load_scene(tb.example_path("oil_bath_6208.toml"))
+    >>> c = scene_clearance(s, {"ball": 20.0, "ir": 20.0, "or": 20.0}, {"ball": "ball", "inner": "ir", "outer": "or"})
+    >>> round(c["mounted"], 2), c["shaft_fit"]
+    (1.69, 'k5 (13.5 µm)')
+    """
+    b = scene.bearing
+    shaft, housing, seats, out = _fits(scene, static)
     (Ti, ni), (To, no) = _node_T(T_C, roles, ("inner_ring",), "inner"), _node_T(T_C, roles, ("outer_ring",), "outer")
     Tb, nb = _node_T(T_C, roles, (), "ball")
     (Ts, ns), (Th, nh) = _node_T(T_C, roles, ("shaft",), "inner"), _node_T(T_C, roles, ("housing",), "outer")

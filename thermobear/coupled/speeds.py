@@ -450,6 +450,8 @@ ENDS = {ThermalPreloadRunaway: "preload runaway", ThermalRunaway: "thermal runaw
 
 def _ends(exc) -> str | None:
     """The name of what ends the equilibria (:data:`ENDS`), or None for another error."""
+    if isinstance(exc, ContactLimit):              # (an InputError: before the lubricant's)
+        return ENDS[ContactLimit]
     if isinstance(exc, InputError) and not _beyond(exc):
         return None
     return next((v for k, v in ENDS.items() if isinstance(exc, k)), None)
@@ -470,6 +472,9 @@ class RunawaySpeed:
     P_W : float            the power loss at settled_rpm [W]
     preload_warm_N : float | None  a preloaded pair's warm preload at settled_rpm [N] (None: no pair)
     steady : SteadyState   the coupled steady state at settled_rpm
+    iterations : int       bisection steps
+    again_rpm : tuple      ladder speeds above n_rpm that have an equilibrium again (the ladder not monotonic: the
+                           first end is the answer, these say it is not the last) [rpm]
     """
 
     scene: str
@@ -482,6 +487,8 @@ class RunawaySpeed:
     P_W: float
     preload_warm_N: float | None = None
     steady: SteadyState = field(repr=False, default=None)
+    iterations: int = 0
+    again_rpm: tuple = ()
 
 
 def runaway_speed(scene: Scene, *, n_min_rpm=None, n_max_rpm=None, points: int = 9, rtol: float = 0.01,
@@ -498,7 +505,13 @@ def runaway_speed(scene: Scene, *, n_min_rpm=None, n_max_rpm=None, points: int =
     n_min_rpm, n_max_rpm   search range [rpm] (as :func:`thermally_safe_speed`)
     points : int           ladder points
     rtol : float           relative width of the final bracket [-]
-    ladder : tuple         ``((speed [rpm], None or the exception there), ...)`` already solved, ascending
+    ladder : tuple         ``((speed [rpm], None or the exception there), ...)`` already solved, ascending (then
+                           ``n_min_rpm``, ``n_max_rpm`` and ``points`` are not used)
+
+    Returns
+    -------
+    RunawaySpeed           the bracket, what ends the equilibria, the state below it, the bisection's steps and the
+                           ladder's speeds above it that have an equilibrium again
 
     Raises
     ------
@@ -537,11 +550,12 @@ def runaway_speed(scene: Scene, *, n_min_rpm=None, n_max_rpm=None, points: int =
         raise NoSpeedRoot(f"{scene.name}: no equilibrium already at {ladder[0][0]:.6g} rpm ({_ends(ladder[0][1])})",
                           residual=0.0)
     (lo, _), (hi, why) = ladder[k - 1], ladder[k]
-    st = None
+    again = tuple(n for n, e in ladder[k + 1:] if e is None)
+    st, its = None, 0
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OutsideValidity)
         while hi / lo > 1.0 + rtol:
-            mid = float(np.sqrt(lo * hi))
+            mid, its = float(np.sqrt(lo * hi)), its + 1
             try:
                 st, lo = steady_state(scene.with_(n_rpm=mid), prepared=prep), mid
             except (SolverError, InputError) as e:
@@ -553,7 +567,8 @@ def runaway_speed(scene: Scene, *, n_min_rpm=None, n_max_rpm=None, points: int =
     pre = getattr(st, "preload", None)
     return RunawaySpeed(scene=scene.name, n_rpm=float(hi), settled_rpm=float(lo), kind=_ends(why),
                         why=f"{type(why).__name__}: " + " ".join(str(why).split()), T_C=T, T_node=at, P_W=float(st.P_W),
-                        preload_warm_N=float(pre["warm_N"]) if pre else None, steady=st)
+                        preload_warm_N=float(pre["warm_N"]) if pre else None, steady=st, iterations=its,
+                        again_rpm=again)
 
 
 @dataclass

@@ -450,16 +450,12 @@ def steady_outputs(results, scenes=None) -> dict:
     if any(getattr(r, "preload", None) for r in ok.values()):   # a preloaded pair: its warm preload, a design answer
         out.update({k: np.full(len(results), np.nan) for k in PRELOAD_OUTPUTS})
         for i, r in ok.items():
-            out.update({k: _put(out[k], i, r.preload[k.split(".", 1)[1]]) for k in PRELOAD_OUTPUTS})
+            for k, v in preload_values(r).items():
+                out[k][i] = v
     if scenes is not None:
         states = [r if isinstance(r, SteadyState) else None for r in results]
         out.update(rating_samples([loaded_scene(sc, r) for sc, r in zip(scenes, states)], states))
     return out
-
-
-def _put(a: np.ndarray, i: int, v) -> np.ndarray:
-    a[i] = float(v)
-    return a
 
 
 def preload_values(st: SteadyState) -> dict:

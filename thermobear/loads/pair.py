@@ -25,8 +25,9 @@ and tilt alike at both, the shaft in equilibrium — is solved by
 :func:`thermobear.loads.shaftspeed.shaft_loads_high_speed`.  The position preload δ stays the one mounted cold at
 rest; at speed a position-preloaded pair's load rises (Harris & Kotzalas 2007 [3] ch. 1–3; Li & Shin 2004 [4]):
 the 7014C back-to-back pair of 300 N cold carries 903 N at 12 000 rpm from the balls' centrifugal force alone, and
-1269 N with the inner rings' centrifugal growth (2.9 µm on the raceway's radius, 11.6 µm more axial interference
-per bearing at α0 = 15°).  A spring keeps its force at any speed; only the split of the loads changes.  Without
+1269 N with the free inner rings' centrifugal growth (3.0 µm on the raceway's radius, 11.6 µm more axial
+interference per bearing at α0 = 15°); on an interference seat the fit's relief takes back most of that growth
+(``u_inner``: :func:`thermobear.contact.fits.seated_raceway_growth`, 0.62 µm on a 16 µm seat).  A spring keeps its force at any speed; only the split of the loads changes.  Without
 a speed (``n_rpm=None``) the pair is the low-speed (static) form: :func:`~thermobear.loads.sets.bearing_set`,
 rigid rings, no centrifugal terms.
 
@@ -124,7 +125,8 @@ def pair_preload_offset(brg: BallBearing, preload, *, stiffness: str = "nominal"
 def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "position", Fa=0.0, Fr=0.0, *,
                dT_inner: float = 0.0, dT_outer: float = 0.0, dT_ball: float | None = None,
                offset: float | None = None, stiffness: str = "nominal", spacer: float = 0.0,
-               n_rpm: float | None = None, control: str = "outer", start: "PairLoads | None" = None) -> PairLoads:
+               n_rpm: float | None = None, control: str = "outer", start: "PairLoads | None" = None,
+               u_inner: float | None = None) -> PairLoads:
     r"""The loads of a preloaded pair's loaded bearing, and the pair's preload, with warm rings and balls.
 
     Parameters
@@ -146,6 +148,9 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
                         the offset stays the one mounted at rest); ``None`` (default): the static form
     control : str       the high-speed form's raceway control
                         (:func:`~thermobear.loads.highspeed.load_distribution_high_speed`)
+    u_inner : float     the inner raceways' growth at ``n_rpm`` [m] (default: a free ring's,
+                        :func:`~thermobear.contact.fits.raceway_growth`; on an interference seat
+                        :func:`~thermobear.contact.fits.seated_raceway_growth`, less)
     start : PairLoads   a nearby answer of the high-speed form (e.g. a heat-up's last) whose loads start its Newton
                         iteration (default: the low-speed pair's); the answer is the same to the solver's tolerance
 
@@ -212,7 +217,7 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
             raise InputError("n_rpm", n_rpm, "the inner rings' speed must be finite and >= 0 [rpm]")
         sups, _ = duplex_supports(brg, arrangement, **pre, spacer=float(spacer))
         if dT_inner or dT_outer or dT_ball or n > 0:
-            sups = warm_supports(sups, dT_inner, dT_outer, dT_ball, n_rpm=n)
+            sups = warm_supports(sups, dT_inner, dT_outer, dT_ball, n_rpm=n, u_inner=u_inner)
         s = shaft_loads_high_speed(sups, Fa2, Fr2, n, control=control, stiffness=stiffness,
                                    start=None if start is None or start.start is None else start.start)
     R = s.reactions                                 # (2 cases, 2 bearings, 5)

@@ -426,7 +426,7 @@ def _result(pb, r, shape, stiffness, tilt_arm, check):
 
 
 def warm_supports(supports, dT_inner=0.0, dT_outer=0.0, dT_ball=None, *, alpha_ring=None, alpha_ball=None,
-                  n_rpm: float = 0.0):
+                  n_rpm: float = 0.0, u_inner: float | None = None):
     r"""The supports of a shaft whose inner rings (and shaft) run ``dT_inner`` and outer rings (and housing)
     ``dT_outer`` warmer than at mounting [K]: each bearing grown (:func:`thermobear.contact.fits.expanded_bearing`:
     groove radii, pitch diameter, free contact angle) and its position preload moved by the axial growth.
@@ -439,7 +439,8 @@ def warm_supports(supports, dT_inner=0.0, dT_outer=0.0, dT_ball=None, *, alpha_r
     offset' = A sin α0 + offset + σ_k (ε_i − ε_o) x_k − A' sin α0'; a spring keeps its force (its outer ring
     slides), a deep groove bearing without a preload stays centred.  At speed (``n_rpm`` > 0, the inner rings
     rotating) each inner raceway also grows by its centrifugal growth u_i (:func:`thermobear.contact.fits.raceway_growth`,
-    Timoshenko & Goodier 1970 ch. 4: a free rotating ring), radially, like its thermal growth; the shaft's axial
+    Timoshenko & Goodier 1970 ch. 4: a free rotating ring; ``u_inner`` given: e.g. on its seat,
+    :func:`thermobear.contact.fits.seated_raceway_growth`), radially, like its thermal growth; the shaft's axial
     (Poisson) contraction at speed is left out.
 
     Parameters
@@ -450,6 +451,7 @@ def warm_supports(supports, dT_inner=0.0, dT_outer=0.0, dT_ball=None, *, alpha_r
     dT_ball : float             of the balls [K] (default: the mean)
     alpha_ring, alpha_ball : float  expansion coefficients [1/K] (default AISI 52100, shaft and housing alike)
     n_rpm : float               speed of the inner rings [rpm] (0: at rest, no centrifugal growth)
+    u_inner : float             the inner raceways' growth at that speed [m] (default: a free ring's, raceway_growth)
 
     Returns
     -------
@@ -471,7 +473,7 @@ def warm_supports(supports, dT_inner=0.0, dT_outer=0.0, dT_ball=None, *, alpha_r
     out = []
     for s in supports:
         b = s.bearing
-        u = raceway_growth(b, n_rpm) if n_rpm else 0.0
+        u = (raceway_growth(b, n_rpm) if u_inner is None else float(u_inner)) if n_rpm else 0.0
         warm = expanded_bearing(b, dT_inner, dT_outer, dT_ball, alpha_ring=a_r, alpha_ball=alpha_ball, u_inner=u)
         if s.spring is not None or (s.offset is None and b.kind == "deep_groove"):
             out.append(Support(warm, s.x, s.facing, s.offset, s.spring))
