@@ -55,9 +55,9 @@ def test_a_position_preload_rises_with_speed_at_constant_temperature(arrangement
 
 def test_the_examples_cold_preload_at_12000_rpm():
     """examples/spindle_7014C_pair_oil_air.toml, 7014C back-to-back, 300 N cold (20.78 µm offset), at 12 000 rpm
-    (the example runs at 8000): the reviewer's 903 N at the static position is the balls' centrifugal force alone (902.6 N); the inner rings'
-    centrifugal growth, 2.96 µm on the raceway's radius (the operating clearance's −5.9 µm diametral), moves each
-    bearing's groove centres 11.6 µm further into the balls at α0 = 15° and the pair carries 1269 N; with the
+    (the example runs at 8000): at the static position the balls' centrifugal force alone gives 903 N (902.6 N); the
+    free inner rings' centrifugal growth, 2.96 µm on the raceway's radius (the operating clearance's −5.9 µm
+    diametral), moves each bearing's groove centres 11.6 µm further into the balls at α0 = 15° and the pair carries 1269 N; with the
     example's 2020 N radial load on the pair its loaded bearing carries 1352 N."""
     s = tb.load_scene(tb.example_path("spindle_7014C_pair_oil_air.toml"))
     d = pair_preload_offset(s.bearing, 300.0)

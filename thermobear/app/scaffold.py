@@ -259,13 +259,15 @@ _MACHINE_SRC = "builders' default (thermobear/thermal/builders/machine.py)"
 
 #: where a pair's bearing's share of the machine ends (``init --pair``): the symmetry plane between the two
 #: bearings, adjacent (no spacer), through which no heat flows
-_PAIR_CUT = "the pair's symmetry plane (--pair): the bearing's share of the machine ends at its face toward the other bearing"
+_PAIR_CUT = ("the pair's symmetry plane (--pair): the bearing's share of the machine ends at its face toward the other "
+             "bearing")
 
 
 def _shaft_rows(m, lay, pair: bool = False) -> list:
     s = m.shaft
-    right = ([("length_right_mm", round(1e3 * (lay.z_s1 - lay.B / 2), 3), f"mm: 0, {_PAIR_CUT} (with a spacer, [bearing] spacer_mm: half its length)")] if pair else
-             [("length_right_mm", round(1e3 * (lay.z_s1 - lay.B / 2), 3), "mm: 2.5 d, as the left")])
+    L_right = round(1e3 * (lay.z_s1 - lay.B / 2), 3)
+    right = ([("length_right_mm", L_right, f"mm: 0, {_PAIR_CUT} (with a spacer, [bearing] spacer_mm: half its length)")]
+             if pair else [("length_right_mm", L_right, "mm: 2.5 d, as the left")])
     return [
         ("diameter_mm", round(2e3 * lay.r_s, 3), "mm: the bearing bore (catalogue)"),
         ("length_left_mm", round(1e3 * (-lay.B / 2 - lay.z_s0), 3), f"mm: 2.5 d, {_MACHINE_SRC}: DIN 748-1 shaft ends "

@@ -1,8 +1,8 @@
 """``thermobear speed``: ISO 15312's thermal reference speed (the model's losses at the standard's
 reference conditions), the thermally safe speed of the scene's own cooling (the coupled model), the speed at which
 the model's equilibria end (a thermal runaway, a preloaded pair's preload running away:
-:func:`thermobear.coupled.speeds.runaway_speed`) and DIN 732's thermally safe speed (the standard's method), each with the temperature of the node the limit is
-on at that speed: the hotter race (``inner_race`` or ``outer_race``, the rings' raceway layers — not the ring
+:func:`thermobear.coupled.speeds.runaway_speed`) and DIN 732's thermally safe speed (the standard's method), each
+with the temperature of the node the limit is on at that speed: the hotter race (``inner_race`` or ``outer_race``, the rings' raceway layers — not the ring
 bodies ``inner_ring`` / ``outer_ring``; :func:`thermobear.coupled.speeds.hottest_race`), or ``--node``.
 
 Beside them the maker's reference speed (of the open bearing, ISO 15312's; of a thrust ball bearing, which ISO
