@@ -440,3 +440,27 @@ def test_the_answer_brackets_the_balls_share_of_the_preload_rise(spindle):
     rise = p["warm_N"] - p["at_speed_cold_N"]
     assert p["at_speed_cold_N"] < p["warm_balls_at_rings_N"] < p["warm_N"] - 0.5 * rise
     assert spring.preload["warm_balls_at_rings_N"] == 300.0
+
+
+def test_a_sweep_over_the_cold_preload_of_a_pair(tmp_path, capsys):
+    """`thermobear sweep --preload-N` compares preload classes: seed 004's 7210 as a back-to-back pair at 3200 rpm,
+    150 / 450 / 900 N cold — a heavier cold preload gives a heavier warm one and more heat (each row the steady
+    answer at that preload); a scene without a pair refuses the axis by the field it needs."""
+    text = Path(SEED004).read_text(encoding="utf-8")
+    path = tmp_path / "pair.toml"
+    path.write_text(text.replace('catalog = "7210"', 'catalog = "7210"\narrangement = "back_to_back"\n'
+                                 'preload_N = 450.0\n', 1), encoding="utf-8")
+    out = tmp_path / "rows.jsonl"
+    assert main(["sweep", str(path), "--set", "Fa_N=0", "--set", "Fr_N=650", "--preload-N", "150,450,900",
+                 "--jsonl", str(out), "--quiet"]) == 0
+    rows = [json.loads(ln) for ln in out.read_text(encoding="utf-8").splitlines()]
+    rows = sorted(rows, key=lambda r: r["preload_N"])
+    assert [r["preload_cold_N"] for r in rows] == [150.0, 450.0, 900.0] and all(r["status"] == "ok" for r in rows)
+    assert np.all(np.diff([r["preload_warm_N"] for r in rows]) > 0) and np.all(np.diff([r["P_W"] for r in rows]) > 0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        st = tb.steady_state(seed004_pair())
+    assert rows[1]["preload_warm_N"] == pytest.approx(st.preload["warm_N"], rel=1e-6)
+    capsys.readouterr()
+    assert main(["sweep", SEED004, "--preload-N", "300,600", "--quiet"]) == 2
+    assert "error: bearing.preload_N" in capsys.readouterr().err

@@ -160,7 +160,8 @@ def build_parser() -> argparse.ArgumentParser:
     _uncertainty_args(tr)
     tr.set_defaults(func=cmd_transient)
 
-    sw = sub.add_parser("sweep", help="grid over speed, load, temperature and lubricant (rows written as they finish)",
+    sw = sub.add_parser("sweep", help="grid over speed, load, temperature, lubricant and a pair's preload (rows written as "
+                        "they finish)",
                         epilog="A:B:N is N values from A to B (inclusive), a,b a list. A range or list may start "
                         "with a negative number as it is: --T-C -10:100:12, --T-C -20,0,20 (--T-C=-10:100:12 too).")
     sw.add_argument("scene")
@@ -169,6 +170,8 @@ def build_parser() -> argparse.ArgumentParser:
     sw.add_argument("--Fr", metavar="A:B:N|a,b", help="radial loads [N]")
     sw.add_argument("--T-C", dest="T_C", metavar="A:B:N|a,b", help="prescribed temperatures [°C], e.g. -10:100:12")
     sw.add_argument("--lubricant", metavar="NAME,...", help="lubricant names")
+    sw.add_argument("--preload-N", dest="preload_N", metavar="A:B:N|a,b",
+                    help="cold mounted preloads of a preloaded pair [N] (a pair scene: [bearing] arrangement)")
     sw.add_argument("--csv", metavar="OUT", help="write the rows as CSV (index column first), each row as it finishes")
     sw.add_argument("--jsonl", metavar="OUT", help="write the rows as JSON lines, each row as it finishes")
     sw.add_argument("--scheduler", metavar="tcp://host:port", help="dask scheduler address")

@@ -490,13 +490,13 @@ def _sweep_header(scene, grid) -> list:
 def _grid(args) -> dict:
     grid = {}
     for attr, key, field in (("n_rpm", "n_rpm", "--n-rpm"), ("Fa", "Fa_N", "--Fa"), ("Fr", "Fr_N", "--Fr"),
-                             ("T_C", "T_C", "--T-C")):
+                             ("T_C", "T_C", "--T-C"), ("preload_N", "preload_N", "--preload-N")):
         if getattr(args, attr) is not None:
             grid[key] = parse_values(getattr(args, attr), field)
     if args.lubricant is not None:
         grid["lubricant"] = parse_values(args.lubricant, "--lubricant", allow_str=True)
     if not grid:
-        raise InputError("sweep", None, "give at least one of --n-rpm, --Fa, --Fr, --T-C, --lubricant")
+        raise InputError("sweep", None, "give at least one of --n-rpm, --Fa, --Fr, --T-C, --lubricant, --preload-N")
     return grid
 
 
