@@ -57,6 +57,7 @@ from thermobear.contact.geometry import BallBearing, bearing
 from thermobear.contact.materials import Material, material
 from thermobear.errors import InputError
 from thermobear.files import data_dir, lookup, read_toml
+from thermobear.units import ZERO_C_K
 
 __all__ = ["T_REF_C", "seat_deviations", "ring_deviations", "fit_interference", "lame_displacement",
            "fit_pressure", "rotating_ring_displacement", "raceway_growth", "seated_raceway_growth",
@@ -498,7 +499,7 @@ def operating_clearance(brg: BallBearing, *, shaft: str | None = None, housing: 
     Ts = Ti if T_shaft_C is None else np.asarray(T_shaft_C, dtype=float)
     Th = To if T_housing_C is None else np.asarray(T_housing_C, dtype=float)
     for name, v in (("T_inner_C", Ti), ("T_outer_C", To), ("T_ball_C", Tb), ("T_shaft_C", Ts), ("T_housing_C", Th)):
-        if not np.all(np.isfinite(v)) or np.any(v < -273.15):
+        if not np.all(np.isfinite(v)) or np.any(v < -ZERO_C_K):
             raise InputError(name, v, "temperature must be finite and above absolute zero [°C]")
     w = np.asarray(n_rpm, dtype=float) * np.pi / 30.0
     Pd0 = brg.Pd if Pd_unmounted is None else float(Pd_unmounted)

@@ -24,6 +24,7 @@ import numpy as np
 from thermobear.coupled.pipeline import SWITCHED
 from thermobear.errors import OutsideValidity
 from thermobear.thermal import ThermalNetwork
+from thermobear.units import ZERO_C_K
 
 __all__ = ["blend_states", "blend_losses", "switch_label", "StackedBlend", "FilmNetwork"]
 
@@ -224,5 +225,5 @@ class FilmNetwork(ThermalNetwork):
 
     def conductances(self, T_K) -> np.ndarray:
         c, T_lo, T_hi = self.film
-        th = np.clip((T_K @ c - 273.15 - T_lo) / (T_hi - T_lo), -0.5, 1.5)[..., None]
+        th = np.clip((T_K @ c - ZERO_C_K - T_lo) / (T_hi - T_lo), -0.5, 1.5)[..., None]
         return (1.0 - th) * super().conductances(T_K) + th * self.upper.conductances(T_K)

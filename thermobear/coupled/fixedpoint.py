@@ -43,6 +43,7 @@ from typing import Callable
 import numpy as np
 
 from thermobear.errors import InputError, NoConvergence, ThermalRunaway
+from thermobear.units import ZERO_C_K
 
 __all__ = ["CoupledResult", "solve_coupled", "loop_gain"]
 
@@ -312,7 +313,7 @@ def _picard(ev, x0, damping, *, tol_K, tol_energy_rel, max_iter, T_limit_K, labe
                     return hot
                 accelerating = not bounded
         if heating and (np.max(g) > T_limit_K or accelerating):
-            why = (f"passes the limit T_limit_K = {T_limit_K:g} K ({T_limit_K - 273.15:g} °C)"
+            why = (f"passes the limit T_limit_K = {T_limit_K:g} K ({T_limit_K - ZERO_C_K:g} °C)"
                    if np.max(g) > T_limit_K else "heats by growing increments")
             gain = (f"path gain dT_out/dT_in ≈ {steps[-1] / steps[-2]:.3g}" if len(steps) >= 2 and steps[-2]
                     else f"{len(steps)} heating step{'s' * (len(steps) != 1)}")

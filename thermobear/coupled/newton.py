@@ -26,11 +26,12 @@ from thermobear.coupled.fixedpoint import solve_coupled
 from thermobear.coupled.sources import Coupling
 from thermobear.errors import ExtrapolationWarning, NoConvergence
 from thermobear.thermal.solve import batched_solve, isolated_nodes
+from thermobear.units import ZERO_C_K
 from thermobear.validity import T_LUBRICANT_REFUSE_C
 
 __all__ = ["T_LIMIT_K"]
 
-_C0 = 273.15
+_C0 = ZERO_C_K                 # [K] at 0 °C (thermobear.units)
 T_LIMIT_K = T_LUBRICANT_REFUSE_C[1] + _C0     #: an equilibrium beyond the lubricant's limit is runaway
 
 

@@ -70,11 +70,12 @@ from thermobear.scene.scene import SECTIONS
 from thermobear.schema import Field, check_value, real_number
 from thermobear.thermal import solve_transient
 from thermobear.thermal.solve import LinearBoundary
+from thermobear.units import ZERO_C_K
 from thermobear.validity import T_LUBRICANT_REFUSE_C
 
 __all__ = ["TransientRun", "transient", "PointModel", "point_model", "heat_sources"]
 
-_C0 = 273.15
+_C0 = ZERO_C_K                 # [K] at 0 °C (thermobear.units)
 _FILM_DT0_S = 20.0      # first piece of a film-load-model transient [s]
 _FILM_DRIFT_K = 2.0     # film-temperature drift per piece [K] where the loads are re-solved at each piece's start
 _FILM_CELL_K = 3.0      # film temperatures at which the film loads are solved: a grid this far apart [K]

@@ -57,6 +57,7 @@ from thermobear.coupled.ratings import check_static_safety
 from thermobear.errors import InputError, OutsideValidity, SolverError, ThermalPreloadRunaway, ThermalRunaway
 from thermobear.loads.pair import PairLoads, pair_preload_offset
 from thermobear.models import refuse_pair
+from thermobear.units import ZERO_C_K
 from thermobear.validity import LIMITS
 
 __all__ = ["PRELOAD_DRIFT_REL", "HeldLoads", "PairHeatUp", "load_follower", "preload_line"]
@@ -64,7 +65,7 @@ __all__ = ["PRELOAD_DRIFT_REL", "HeldLoads", "PairHeatUp", "load_follower", "pre
 #: The drift bound of a piece of a pair's heat-up, relative to the loaded bearing's axial load at its start (at
 #: least the cold preload): a piece ends where the pair's loads at the current temperatures have moved that far
 PRELOAD_DRIFT_REL = 0.02
-_C0 = 273.15
+_C0 = ZERO_C_K                 # [K] at 0 °C (thermobear.units)
 _PARTS = ("inner ring", "outer ring", "balls")
 
 
@@ -122,7 +123,7 @@ class PairHeatUp(HeldLoads):
     def __init__(self):
         self.rel = float(PRELOAD_DRIFT_REL)
         self.rows: list = []        # per piece's start (and the end): the preload, the loads, the temperatures
-        self.held: dict = {}        # pair scene (id) → (its offset [m] or None, its cold PairLoads, a spring's scene)
+        self.held: dict = {}        # pair scene (id) → [offset [m] or None, cold PairLoads, a spring's scene, last PairLoads]
         self.current = None         # (pair scene, PairLoads) of the piece running
         self.at = None              # (pair scene, t_s, PairLoads, temperatures) at the last piece's end
         self.ran: list = []         # the pieces' single-bearing scenes

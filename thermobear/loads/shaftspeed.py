@@ -39,9 +39,10 @@ centrifugal force pushes it out against the outer race; the inner and outer cont
 down) and the inner ring's axial displacement under a given axial load falls (the 7014C under 300 N: 26 µm less
 at 12 000 rpm), so at the pair's fixed axial offset the axial load rises with speed at constant temperature; the
 inner ring's centrifugal
-growth (carried by the supports' geometry, :func:`thermobear.contact.fits.raceway_growth`) adds to it.  The
-7014C back-to-back pair of 300 N cold (α0 = 15°): 903 N at 12 000 rpm from the balls alone, 1269 N with the
-growth (:func:`thermobear.loads.pair.pair_loads`).
+growth (carried by the supports' geometry: a free ring's, :func:`thermobear.contact.fits.raceway_growth`, or on its
+seat, :func:`thermobear.contact.fits.seated_raceway_growth`) adds to it.  The 7014C back-to-back pair of 300 N cold
+(α0 = 15°): 903 N at 12 000 rpm from the balls alone, 1269 N with a free ring's growth
+(:func:`thermobear.loads.pair.pair_loads`).
 
 References
 ----------
@@ -68,6 +69,7 @@ from thermobear.errors import InputError, NoConvergence, NoEquilibrium, SolverEr
 from thermobear.loads.highspeed import load_distribution_high_speed, load_distribution_high_speed_full
 from thermobear.loads.overload import refuse_overload as refuse_overload_of
 from thermobear.loads.sets import Support, shaft_loads, shaft_transform
+from thermobear.loads.sets import _external as external_loads
 
 __all__ = ["HighSpeedShaftLoads", "shaft_loads_high_speed"]
 
@@ -177,16 +179,16 @@ class _Pair:
 
 
 def _external(Fa, Fr, M, x_load, n_rpm):
-    """The cases as one flat batch: shape, P_ext (nb, 3) at x = 0 [N, N, N m] and the speeds (nb,) [rpm]."""
-    vals = [np.asarray(v, dtype=float) for v in (Fa, Fr, M, x_load, n_rpm)]
-    shape = np.broadcast_shapes(*(v.shape for v in vals))
-    Fa, Fr, M, xF, n = (np.broadcast_to(v, shape).ravel() for v in vals)
-    for name, v in (("Fa", Fa), ("Fr", Fr), ("M", M), ("x_load", xF)):
-        if v.size and not np.all(np.isfinite(v)):
-            raise InputError(name, v, "must be finite [N], [N m] or [m]")
+    """The cases as one flat batch: shape, P_ext (nb, 3) at x = 0 [N, N, N m] (checked and moved to x = 0 by
+    :mod:`thermobear.loads.sets`' own) and the speeds (nb,) [rpm]."""
+    n = np.asarray(n_rpm, dtype=float)
+    shape = np.broadcast_shapes(*(np.shape(v) for v in (Fa, Fr, M, x_load)), n.shape)
+    on = (lambda v: np.broadcast_to(np.asarray(v, dtype=float), shape))  # noqa: E731
+    _, P = external_loads(on(Fa), on(Fr), on(M), 0.0, 0.0, on(x_load))
+    n = on(n).ravel()
     if n.size and not (np.all(np.isfinite(n)) and np.all(n >= 0)):
         raise InputError("n_rpm", n, "the inner rings' speed must be finite and >= 0 [rpm]")
-    return shape, np.stack([Fa, Fr, M - xF * Fr], axis=1), n
+    return shape, P[:, :3], n
 
 
 def _start(sups, P, stiffness, tilt_arm):

@@ -14,6 +14,7 @@ from thermobear.losses.drag import cavity_oil_fraction, churning_loss, drag_loss
 from thermobear.losses.skf import K_RS, phi_rs
 from thermobear.lubrication.thermal_film import (thermal_inlet_viscosity, thermal_loading_parameter,
                                                  thermal_reduction_gupta)
+from thermobear.units import ZERO_C_K
 
 __all__ = ["temperature_stack", "property_at", "drag_power", "inlet_viscosity", "replenishment", "added_powers"]
 
@@ -85,10 +86,10 @@ def drag_power(cs, oil, T_oil, eta_oil, supply, oil_flow_m3_s):
     wc = cs.omega_cage if all_run else np.where(run, cs.omega_cage, 1.0)
     if T_oil.size <= _FEW and oil.points is None:  # a few states: the formulas on Python floats
         each = (np.broadcast_to(v, T_oil.shape).ravel().tolist() for v in (T_oil, eta_oil, wc, X))
-        P = np.array([drag_loss(brg.Z, brg.D, brg.dm, w, x, oil.rho(t), e, t + 273.15, check=False).P_W
+        P = np.array([drag_loss(brg.Z, brg.D, brg.dm, w, x, oil.rho(t), e, t + ZERO_C_K, check=False).P_W
                       for t, e, w, x in zip(*each)]).reshape(T_oil.shape)
     else:
-        P = drag_loss(brg.Z, brg.D, brg.dm, wc, X, oil.rho(T_oil), eta_oil, T_oil + 273.15, check=False).P_W
+        P = drag_loss(brg.Z, brg.D, brg.dm, wc, X, oil.rho(T_oil), eta_oil, T_oil + ZERO_C_K, check=False).P_W
     return P if all_run else np.where(run, P, 0.0)
 
 

@@ -39,6 +39,7 @@ from thermobear.thermal.convection import (HARRIS_COEFFICIENTS, SIGMA_SB, advect
                                            h_free_horizontal_plate, h_free_vertical_plate, h_harris,
                                            h_natural_horizontal_cylinder, h_radiation, h_rotating_cylinder,
                                            mixed_convection, oil_air_properties)
+from thermobear.units import ZERO_C_K
 from thermobear.validity import T_LUBRICANT_REFUSE_C
 
 __all__ = [
@@ -56,7 +57,7 @@ def _oil_T(T_K):
     """Temperature [°C] for the oil's property correlations, held inside their accepted range: an
     iterate of a coupled solve may overshoot transiently; an equilibrium beyond the limit is
     reported as runaway by the solver, not as an error from a property call."""
-    return np.clip(np.asarray(T_K, float) - 273.15, *T_LUBRICANT_REFUSE_C)
+    return np.clip(np.asarray(T_K, float) - ZERO_C_K, *T_LUBRICANT_REFUSE_C)
 
 
 @dataclass(frozen=True)
@@ -195,7 +196,7 @@ class Convection(Element):
             props = air_properties(np.clip(Tf, *AIR_T_RANGE_K))
         else:
             T_C = _oil_T(Tf)
-            props = oil_air_properties(X, oil.rho(T_C), oil.nu(T_C), oil.k_th(T_C), oil.cp(T_C), T_C + 273.15)
+            props = oil_air_properties(X, oil.rho(T_C), oil.nu(T_C), oil.k_th(T_C), oil.cp(T_C), T_C + ZERO_C_K)
         if shared is not None:
             shared[key] = props
         return props

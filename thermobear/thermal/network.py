@@ -65,6 +65,7 @@ from thermobear.thermal.elements import (CORRELATION_KEYS, ELEMENT_TYPES, HARRIS
                                          STRING_KEYS, Element)
 from thermobear.thermal.expressions import MISSING, compile_expression, lookup
 from thermobear.thermal.instance import ThermalNetwork, Structure
+from thermobear.units import ZERO_C_K
 
 __all__ = ["NetworkTemplate", "ThermalNetwork", "prepare_network", "load_network", "network_names", "ROLES",
            "STATIC_ROOTS"]
@@ -97,7 +98,7 @@ _NODE_NUMBERS = ("C_J_K", "mass_kg", "volume_m3", "T_C")
 _NODE_INFO = ("description", "measured_by", "source", "estimated")
 _ELEMENT_META = {"type", "between", "name", "description", "estimated", "source", "uncertainty"}
 _TOP_KEYS = {"name", "description", "source", "nodes", "elements", "notes"}
-_C0 = 273.15
+_C0 = ZERO_C_K                 # [K] at 0 °C (thermobear.units)
 
 
 def _check_value(fld, key, v):

@@ -41,13 +41,14 @@ from thermobear.errors import InputError, NoConvergence
 from thermobear.lazy import lazy_module
 from thermobear.thermal.boundary import LinearBoundary  # noqa: F401  (re-exported: the transient's fixed_C)
 from thermobear.thermal.network import ThermalNetwork
+from thermobear.units import ZERO_C_K
 
 integrate = lazy_module("scipy.integrate")  # BDF, Radau: loaded by the first transient
 
 __all__ = ["SteadyResult", "TransientResult", "solve_steady", "solve_linear", "solve_transient", "split_losses",
            "sources_matrix", "batched_solve", "heat_out", "heat_paths", "isolated_nodes", "LinearBoundary"]
 
-_C0 = 273.15
+_C0 = ZERO_C_K                 # [K] at 0 °C (thermobear.units)
 
 
 def batched_solve(A, b):

@@ -20,6 +20,7 @@ from thermobear.thermal.conduction import spreading_conductance
 from thermobear.thermal.convection import (h_free_vertical_plate, h_harris, h_natural_horizontal_cylinder,
                                            h_radiation, h_rotating_cylinder, mixed_convection)
 from thermobear.lubrication.air import air_properties
+from thermobear.units import ZERO_C_K
 
 __all__ = ["Layout", "layout", "seat_interferences", "DT_REF_K", "H_MOUNT_W_M2K"]
 
@@ -27,7 +28,7 @@ DT_REF_K = 20.0          #: surface excess over ambient at which the rule estima
 #: bolted joint, Bergman et al. 2011 Table 3.2 (air, 0.1 MPa) [W/(m² K)]: the data's nominal
 #: (materials/network_builders.toml ``R_mount_m2K_W``; a machine reads its own, :func:`_mounting`)
 H_MOUNT_W_M2K = 1.0 / estimates.values()["R_mount_m2K_W"]
-_C0 = 273.15
+_C0 = ZERO_C_K                 # [K] at 0 °C (thermobear.units)
 
 
 @dataclass(frozen=True)
