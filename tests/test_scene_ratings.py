@@ -15,8 +15,8 @@ from thermobear.app.cli import main
 from thermobear.contact.fits import operating_clearance
 from thermobear.contact.materials import material
 from thermobear.coupled.pipeline import scene_load
-from thermobear.coupled.ratings import (check_static_safety, operating_lives, rating_samples, scene_ratings,
-                                        typical_fits)
+from thermobear.coupled.ratings import (check_static_safety, operating_lives, rating_samples, scene_clearance,
+                                        scene_ratings, scene_ratings_many, typical_fits)
 from thermobear.errors import InputError, OutsideValidity
 from thermobear.rating import load_ratings
 from thermobear.rating.life import stated_ratings
@@ -223,6 +223,28 @@ def test_rating_samples_equal_each_points_ratings():
     thrust = tb.load_scene(str(EX / "seed002_grease_thrust_51107.toml"))
     got = rating_samples([thrust], [tb.steady_state(thrust)])
     assert "ratings.kappa" in got and "ratings.clearance_op_um" not in got   # no radial clearance
+
+
+def test_ratings_of_many_points_are_each_points_ratings():
+    """A sweep's rows rated together (scene_ratings_many: the clearance once per group of bearing, fits and network)
+    answer as each point rated alone: a deep groove bearing's machine at two speeds and two loads, another machine,
+    an angular contact bearing on its typical fits and a thrust bearing, mixed and in reverse order."""
+    scenes = [S.with_(n_rpm=n, Fr_N=f) for n in (2000.0, 4000.0) for f in (500.0, 3000.0)]
+    scenes += [tb.load_scene(str(EX / f)) for f in ("block_6208_oil_jet.toml", "seed004_oil_jet_7210.toml",
+                                                   "seed002_grease_thrust_51107.toml")]
+    states = [tb.steady_state(s) for s in scenes]
+    many = scene_ratings_many(scenes[::-1], states[::-1])[::-1]
+    fits = set()
+    for s, st, rt in zip(scenes, states, many):
+        assert rt.as_dict() == scene_ratings(s, st).as_dict()
+        if s.bearing.kind != "thrust":
+            alone = scene_clearance(s, st.T_C, st.roles)
+            assert rt.clearance_um["operating"] == pytest.approx(alone["operating"], rel=1e-12, abs=1e-9)
+            assert rt.clearance_um["shaft_fit"] == alone["shaft_fit"]
+            fits.add(alone["shaft_fit"])
+    assert len(fits) >= 2                       # (groups of different fits in one call)
+    assert many[-1].clearance_um["applies"] is False
+    assert scene_ratings_many([], []) == []
 
 
 def test_a_machines_clearance_takes_the_seats_of_its_network(tmp_path):

@@ -46,7 +46,7 @@ from thermobear.arrays import take
 from thermobear.coupled.limits import family_warnings
 from thermobear.coupled.pipeline import film_scene_load
 from thermobear.coupled.preload import loaded_scene
-from thermobear.coupled.ratings import scene_ratings
+from thermobear.coupled.ratings import scene_ratings_many
 from thermobear.coupled.run import Prescribed
 from thermobear.models import moments, plan, plan_many
 from thermobear.scene import Scene
@@ -83,8 +83,9 @@ def _base_row(point: dict) -> dict:
             for k, v in point.items()}
 
 
-def _row(point: dict, sc: Scene, st=None, exc=None) -> dict:
-    """A coupled point's row from its steady state, or from the error that stopped it."""
+def _row(point: dict, sc: Scene, st=None, exc=None, rated=None) -> dict:
+    """A coupled point's row from its steady state and its ratings (``rated``: :func:`_ratings_of`'s), or from the
+    error that stopped it."""
     row = _base_row(point)
     if exc is not None:
         try:
@@ -101,21 +102,33 @@ def _row(point: dict, sc: Scene, st=None, exc=None) -> dict:
                models=_choices(st.models_used), status="ok", reason=str(st.models_used["thermal"][1]),
                iterations=int(st.iterations), residual_K=float(st.residual_K),
                warnings=[str(w) for w in st.warnings])
-    row.update(_ratings_columns(sc, st, row["warnings"]))
+    row.update(_ratings_columns(sc, rated, row["warnings"]))
     pre = getattr(st, "preload", None)                  # a preloaded pair: its warm preload at the point
     if pre:
         row.update(preload_cold_N=float(pre["cold_N"]), preload_warm_N=float(pre["warm_N"]))
     return row
 
 
-def _ratings_columns(sc: Scene, st, warned: list, losses=None) -> dict:
-    """The ratings of a point as `run` gives them (:func:`~thermobear.coupled.ratings.scene_ratings`; ``st`` a
-    SteadyState, or a :class:`~thermobear.coupled.run.Prescribed` temperature with its ``losses``): L10m [h], κ [-],
-    s0 [-] and the operating clearance [µm] (None where they do not apply), and ``warnings`` with the ratings' own
-    (viscosity ratio, static safety, minimum load, a clearance consumed into a radial preload) added."""
+def _ratings_of(scenes, states, losses=None) -> list:
+    """The ratings of points as `run` gives them (:func:`~thermobear.coupled.ratings.scene_ratings_many` of the
+    loaded scenes: a pair's loaded bearing under its loads; ``states``: SteadyStates, or
+    :class:`~thermobear.coupled.run.Prescribed` temperatures with their ``losses``), or None for a point that has
+    none (at rest): such a point is found alone, the others keep their batch."""
     try:
-        rt = scene_ratings(loaded_scene(sc, st), st, losses=losses)     # a pair's loaded bearing under its loads
-    except InputError:                       # (no ratings at rest: the row's answer stands without them)
+        return scene_ratings_many([loaded_scene(sc, st) for sc, st in zip(scenes, states)], states, losses)
+    except InputError:
+        if len(scenes) == 1:
+            return [None]
+    return [_ratings_of([sc], [st], None if losses is None else [losses[k]])[0]
+            for k, (sc, st) in enumerate(zip(scenes, states))]
+
+
+def _ratings_columns(sc: Scene, rt, warned: list) -> dict:
+    """A row's ratings columns from its :class:`~thermobear.coupled.ratings.Ratings` ``rt`` (:func:`_ratings_of`;
+    None: no ratings at rest, the row's answer stands without them): L10m [h], κ [-], s0 [-] and the operating
+    clearance [µm] (None where they do not apply), and ``warnings`` with the ratings' own (viscosity ratio, static
+    safety, minimum load, a clearance consumed into a radial preload) added."""
+    if rt is None:
         return {"L10m_h": None, "kappa": None, "s0": None, "clearance_operating_um": None}
     c = rt.clearance_um
     return {"L10m_h": _finite_or_none(rt.L10m_h), "kappa": _finite_or_none(rt.kappa), "s0": _finite_or_none(rt.s0),
@@ -135,8 +148,11 @@ def _solve_chunk(scene: Scene, points: list, scenes: list | None = None, prepare
     :func:`~thermobear.coupled.prepare`, for the points it serves."""
     if scenes is None:
         scenes = [scene.with_(**p) for p in points]
-    return [_row(p, sc, exc=r) if isinstance(r, Exception) else _row(p, sc, st=r)
-            for p, sc, r in zip(points, scenes, steady_states(scenes, prepared=prepared))]
+    res = steady_states(scenes, prepared=prepared)
+    ok = [k for k, r in enumerate(res) if not isinstance(r, Exception)]
+    rated = dict(zip(ok, _ratings_of([scenes[k] for k in ok], [res[k] for k in ok])))
+    return [_row(p, sc, exc=r) if isinstance(r, Exception) else _row(p, sc, st=r, rated=rated[k])
+            for k, (p, sc, r) in enumerate(zip(points, scenes, res))]
 
 
 def _prepared(scene: Scene):
@@ -181,13 +197,14 @@ def _prescribed_group(scenes, points, models, members, dry=None):
     warned = family_warnings([scenes[i] for i in members], r, np.repeat(T[:, None], 3, axis=1),
                              dry=[dry.get(i) for i in members] if film else None)
     rows = {}
+    rated = _ratings_of([scenes[i] for i in members], [Prescribed(float(t)) for t in T],
+                        [take(r, j, len(members)) if P.size == len(members) else r for j in range(len(members))])
     for j, i in enumerate(members):
         row = _base_row(points[i])
         row.update(P_W=float(P[j]), torque_Nm=float(M[j]), breakdown_W={k: float(v[j]) for k, v in bd.items()},
                    temperatures_C={"contacts (prescribed)": float(T[j])}, models=_choices(models), status="ok",
                    reason="", iterations=0, residual_K=0.0, warnings=[str(w) for w in warned[j]])
-        row.update(_ratings_columns(scenes[i], Prescribed(float(T[j])), row["warnings"],
-                                    losses=take(r, j, len(members)) if P.size == len(members) else r))
+        row.update(_ratings_columns(scenes[i], rated[j], row["warnings"]))
         rows[i] = row
     return rows
 

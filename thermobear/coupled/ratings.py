@@ -54,7 +54,8 @@ from thermobear.thermal.builders import Machine, seat_interferences
 from thermobear.validity import LIMITS, check, collect
 
 __all__ = ["PRELOAD_OUTPUTS", "RATING_OUTPUTS", "Ratings", "check_static_safety", "inner_seat", "operating_lives", "operating_temperature_C",
-           "preload_warnings", "rating_samples", "scene_clearance", "scene_ratings", "typical_fits"]
+           "preload_warnings", "rating_samples", "scene_clearance", "scene_ratings", "scene_ratings_many",
+           "typical_fits"]
 
 _LOAD_FIELDS = "operation (Fa_N, Fr_N, Fz_N)"
 
@@ -246,7 +247,7 @@ def inner_seat(scene) -> dict:
     return out if ("shaft" in out or "I_inner_m" in out) else {}
 
 
-def scene_clearance(scene, T_C: dict, roles: dict, *, static=None) -> dict:
+def scene_clearance(scene, T_C: dict, roles: dict, *, static=None, n_rpm=None) -> dict:
     """Unmounted, mounted (fits at 20 °C) and operating diametral clearance [µm] of a scene's bearing at the node
     temperatures ``T_C`` (node → °C, or → an array of one per operating point: then the operating clearance and the
     temperatures are arrays too; ``roles``: role → node), with the scene's fits (``shaft_fit``, ``housing_fit``), else —
@@ -255,7 +256,8 @@ def scene_clearance(scene, T_C: dict, roles: dict, *, static=None) -> dict:
     and housing's materials), else the typical fits for its load (:func:`typical_fits`), as
     :func:`~thermobear.contact.fits.operating_clearance` gives them: the ring
     temperatures from the nodes ``inner_ring`` / ``outer_ring`` (else the inner / outer role), the balls', the
-    shaft's and housing's (else the ring's), the inner ring's speed when it rotates.
+    shaft's and housing's (else the ring's), the inner ring's speed when it rotates (``n_rpm``: the shaft's speeds
+    [rpm], one per operating point as the temperatures; default the scene's).
 
     >>> import thermobear as tb
     >>> s = tb.load_scene(tb.example_path("oil_bath_6208.toml"))
@@ -263,28 +265,34 @@ def scene_clearance(scene, T_C: dict, roles: dict, *, static=None) -> dict:
     >>> round(c["mounted"], 2), c["shaft_fit"]
     (1.69, 'k5 (13.5 µm)')
     """
-    b = scene.bearing
     shaft, housing, seats, out = _fits(scene, static)
+    n = scene.n_rpm if n_rpm is None else np.asarray(n_rpm, float)
+    return {**out, **_clearance_at(scene.bearing, shaft, housing, seats, T_C, roles,
+                                   n if scene.rotating == "inner" else 0.0 * n)}
+
+
+def _clearance_at(b, shaft, housing, seats: dict, T_C: dict, roles: dict, n_in) -> dict:
+    """The clearance values of :func:`scene_clearance` [µm] for its fits (:func:`_fits`) at the node temperatures
+    ``T_C`` and inner-ring speeds ``n_in`` [rpm] (floats, or arrays of one per operating point)."""
     (Ti, ni), (To, no) = _node_T(T_C, roles, ("inner_ring",), "inner"), _node_T(T_C, roles, ("outer_ring",), "outer")
     Tb, nb = _node_T(T_C, roles, (), "ball")
     (Ts, ns), (Th, nh) = _node_T(T_C, roles, ("shaft",), "inner"), _node_T(T_C, roles, ("housing",), "outer")
-    n_in = scene.n_rpm if scene.rotating == "inner" else 0.0
     # mounted (20 °C, at rest) and operating in one call: a leading axis of two states
     T2 = [np.stack([np.full_like(v, T_REF_C), v]) for v in np.broadcast_arrays(*(np.asarray(v, float)
-                                                                               for v in (Ti, To, Tb, Ts, Th)))]
-    n2 = np.reshape([0.0, n_in], (2,) + (1,) * (T2[0].ndim - 1))
+                                                                               for v in (Ti, To, Tb, Ts, Th, n_in)))]
+    n2 = np.stack([np.zeros_like(T2[5][1]), T2[5][1]])
     Pd = operating_clearance(b, shaft=shaft, housing=housing, T_inner_C=T2[0], T_outer_C=T2[1], T_ball_C=T2[2],
                              T_shaft_C=T2[3], T_housing_C=T2[4], n_rpm=n2, **seats).Pd
-    mounted, op = float(np.ravel(Pd[0])[0]), Pd[1]
-    out.update(unmounted=b.Pd * 1e6, mounted=mounted * 1e6, operating=_num(op) * 1e6, used=b.Pd * 1e6,
-               temperatures_C={"inner ring": Ti, "outer ring": To, "balls": Tb, "shaft": Ts, "housing": Th},
-               nodes={"inner ring": ni, "outer ring": no, "balls": nb, "shaft": ns, "housing": nh})
-    return out
+    return dict(unmounted=b.Pd * 1e6, mounted=float(np.ravel(Pd[0])[0]) * 1e6, operating=_num(Pd[1]) * 1e6,
+                used=b.Pd * 1e6,
+                temperatures_C={"inner ring": Ti, "outer ring": To, "balls": Tb, "shaft": Ts, "housing": Th},
+                nodes={"inner ring": ni, "outer ring": no, "balls": nb, "shaft": ns, "housing": nh})
 
 
 def scene_ratings(scene, steady, losses=None) -> Ratings:
     """The ratings of a scene at its solved steady state (:class:`~thermobear.coupled.steady.SteadyState`;
-    ``losses``: its loss result, default ``steady.losses``), with the named warnings (module docstring).
+    ``losses``: its loss result, default ``steady.losses``), with the named warnings (module docstring): one point of
+    :func:`scene_ratings_many`.
 
     >>> import thermobear as tb
     >>> s = tb.load_scene(tb.example_path("oil_bath_6208.toml"))
@@ -292,9 +300,77 @@ def scene_ratings(scene, steady, losses=None) -> Ratings:
     >>> round(r.C0_N), round(r.s0, 2), r.clearance_um["shaft_fit"]
     (19886, 9.94, 'k5 (13.5 µm)')
     """
+    return scene_ratings_many([scene], [steady], None if losses is None else [losses])[0]
+
+
+def scene_ratings_many(scenes, states, losses=None) -> list:
+    """The ratings (:class:`Ratings`) of many solved operating points, e.g. the rows of a sweep: per scene at its
+    steady state (``losses``: their loss results, default each state's ``losses``).  The bearing's ratings and
+    minimum load factor are looked up once per bearing, the equivalent loads once per load case, and the operating
+    clearance once per group of points that share bearing, fits and network, for the arrays of their temperatures
+    and speeds (:func:`scene_clearance`); the rest per point.
+
+    >>> import thermobear as tb
+    >>> s = tb.load_scene(tb.example_path("oil_bath_6208.toml"))
+    >>> sc = [s.with_(n_rpm=n) for n in (2000.0, 4000.0)]
+    >>> st = [tb.steady_state(x) for x in sc]
+    >>> rt = scene_ratings_many(sc, st)
+    >>> [round(r.kappa, 2) for r in rt], rt[1].as_dict() == scene_ratings(sc[1], st[1]).as_dict()
+    ([5.81, 5.11], True)
+    """
+    scenes, states = list(scenes), list(states)
+    losses = [st.losses for st in states] if losses is None else list(losses)
+    statics: dict = {}
+    for sc in scenes:
+        if (k := (sc.bearing, sc.Fa, sc.Fr, sc.Fz)) not in statics:
+            statics[k] = _static(sc)
+    static = [statics[sc.bearing, sc.Fa, sc.Fr, sc.Fz] for sc in scenes]
+    clears = _clearances(scenes, states, static)
+    factors: dict = {}
+    for sc in scenes:
+        if sc.bearing not in factors:
+            factors[sc.bearing] = _load_factor(sc.bearing)
+    return [_ratings(sc, st, r, stc, clear, factors[sc.bearing])
+            for sc, st, r, stc, clear in zip(scenes, states, losses, static, clears)]
+
+
+def _clearances(scenes, states, static) -> list:
+    """Per point, its clearance dict (:func:`scene_clearance` at its state's temperatures; a state's own where the
+    loads were solved at it; the thrust bearing's reason none applies), evaluated once per group of points of one
+    bearing, fit and network."""
+    out: list = [None] * len(scenes)
+    groups: dict = {}
+    for i, (sc, st) in enumerate(zip(scenes, states)):
+        if sc.bearing.kind == "thrust":
+            out[i] = {"applies": False, "why": "thrust bearing: no radial clearance or radial fits (its axial play is "
+                                               "set by the mounting)"}
+        elif getattr(st, "clearance_um", None):
+            out[i] = st.clearance_um
+        else:
+            shaft, housing, seats, fit = _fits(sc, static[i])
+            key = (sc.bearing, sc.rotating == "inner", shaft, housing, tuple(sorted(seats.items())),
+                   tuple(sorted(st.roles.items())), tuple(st.T_C))
+            groups.setdefault(key, (shaft, housing, seats, []))[3].append((i, fit))
+    for (b, inner, *_), (shaft, housing, seats, members) in groups.items():
+        idx = [i for i, _ in members]
+        T = {k: np.array([float(states[i].T_C[k]) for i in idx]) for k in states[idx[0]].T_C}
+        n = np.array([float(scenes[i].n_rpm) if inner else 0.0 for i in idx])
+        c = _clearance_at(b, shaft, housing, seats, T, states[idx[0]].roles, n)
+        for k, (i, fit) in enumerate(members):
+            out[i] = {**fit, **c, "operating": float(c["operating"][k]),
+                      "temperatures_C": {w: float(v[k]) for w, v in c["temperatures_C"].items()}}
+    for i, (sc, c) in enumerate(zip(scenes, out)):
+        if sc.bearing.kind == "angular_contact":
+            out[i] = {**c, "note": "angular contact bearing: the diametral play its contact angle implies, "
+                                   "P_d = 2A(1 − cos α0); in a pair the axial adjustment sets the contacts, not this play"}
+    return out
+
+
+def _ratings(scene, steady, r, static, clear: dict, factor) -> Ratings:
+    """One point's :class:`Ratings` (:func:`scene_ratings_many`): its loss result ``r``, ``static`` = (C, C0, P, P0),
+    its clearance dict and its bearing's minimum load factor (:func:`_load_factor`)."""
     b = scene.bearing
-    C, C0, P, P0 = _static(scene)
-    r = steady.losses if losses is None else losses
+    C, C0, P, P0 = static
     c = getattr(r, "contacts", None)
     p = {}
     if c:
@@ -303,29 +379,20 @@ def scene_ratings(scene, steady, losses=None) -> Ratings:
             with np.errstate(divide="ignore", invalid="ignore"):
                 p[side] = float(np.max(np.where(Q > 0, 1.5 * Q / (np.pi * a * bb), 0.0)))
     T_op = operating_temperature_C(steady.T_C, steady.roles)
-    lv = operating_lives(scene, T_op, static=(C, C0, P, P0))
+    lv = operating_lives(scene, T_op, static=static)
     nu, nu1, kappa, e_C, a_iso = (float(lv[k]) for k in ("nu_m2_s", "nu1_m2_s", "kappa", "e_C", "a_ISO"))
     hours = 1e6 / (60.0 * float(scene.n_rpm))
     L10r = None
     if c and np.max(np.asarray(c["inner"]["Q"], float), initial=0.0) > 0:      # external loads or a preload
         ld = type("Balls", (), {"Q_i": np.ravel(c["inner"]["Q"]), "Q_o": np.ravel(c["outer"]["Q"])})
         L10r = float(reference_life(b, ld, C, rotating=scene.rotating).L10r) * hours
-    if b.kind == "thrust":
-        clear = {"applies": False, "why": "thrust bearing: no radial clearance or radial fits (its axial play is set "
-                                          "by the mounting)"}
-    else:
-        clear = getattr(steady, "clearance_um", None) or scene_clearance(scene, steady.T_C, steady.roles,
-                                                                         static=(C, C0, P, P0))
-        if b.kind == "angular_contact":
-            clear = {**clear, "note": "angular contact bearing: the diametral play its contact angle implies, "
-                                      "P_d = 2A(1 − cos α0); in a pair the axial adjustment sets the contacts, not this play"}
     s0 = C0 / P0 if P0 > 0 else np.inf
     with collect(replay=False) as got:
         if P0 > 0:
             check("s0", s0, _LOAD_FIELDS, what=f"P0 = {P0:.4g} N, C0 = {C0:.4g} N")
         check("kappa", kappa, "lubricant viscosity at the operating temperature",
               what=f"nu {nu * 1e6:.3g} cSt at {T_op:.1f} °C, nu1 {nu1 * 1e6:.3g} cSt")
-        _minimum_load_check(scene, nu, clear)
+        _minimum_load_check(scene, nu, clear, factor)
     looped = clear.get("choice") == "operating"           # the loads at the operating clearance: its own warning
     if "operating" in clear and not looped:
         advice = ("" if b.kind != "deep_groove" else
@@ -396,18 +463,27 @@ def _looser_group(brg: BallBearing, Pd: float) -> str:
             "here" + ("" if keeps else " (looser fits, or a larger group)"))
 
 
-def _minimum_load_check(scene, nu_m2_s: float, clear: dict) -> None:
+def _load_factor(brg: BallBearing):
+    """A bearing's SKF minimum load factor as on file: ``minimum_axial_load_factor``'s row (angular contact and
+    thrust bearings), else the radial k_r (:func:`~thermobear.rating.minimum_load.minimum_load_factor`); None where
+    none is."""
+    if brg.kind in AXIAL_KINDS:
+        return minimum_axial_load_factor(brg)
+    return minimum_load_factor(brg.kind, brg.series)
+
+
+def _minimum_load_check(scene, nu_m2_s: float, clear: dict, factor) -> None:
     """Warn (:data:`thermobear.validity.LIMITS` ``minimum_load``) where the larger of a deep groove bearing's radial
     and axial load lies below SKF's requisite minimum load at the operating viscosity ``nu_m2_s``
     (:func:`~thermobear.rating.minimum_load.minimum_radial_load`, d_m = (d + D)/2 as SKF's; none where the loads were
     solved with a radial preload — ``clear``'s choice ``operating`` at a negative clearance —, nor where no k_r is on
     file; an estimated negative clearance is named beside), or an angular contact or thrust bearing's axial load below its
-    minimum axial load (:func:`_minimum_axial_load_check`)."""
+    minimum axial load (:func:`_minimum_axial_load_check`); ``factor``: the bearing's (:func:`_load_factor`)."""
     b = scene.bearing
     if b.kind in AXIAL_KINDS:
-        _minimum_axial_load_check(scene)
+        _minimum_axial_load_check(scene, factor)
         return
-    k_r = minimum_load_factor(b.kind, b.series)
+    k_r = factor
     if k_r is None or not scene.n_rpm > 0 or (clear.get("choice") == "operating" and clear.get("used", 0.0) < 0.0):
         return                         # (the loads solved with a radial preload: SKF's "consider preloading")
     dm = 0.5 * (b.bore + b.outer_diameter) if b.bore is not None and b.outer_diameter is not None else b.dm
@@ -424,11 +500,11 @@ def _minimum_load_check(scene, nu_m2_s: float, clear: dict) -> None:
                f"(SKF 2018): the balls may skid — raise the load, preload the bearing, or check the load's unit{pre}")
 
 
-def _minimum_axial_load_check(scene) -> None:
+def _minimum_axial_load_check(scene, got) -> None:
     """Warn (:data:`thermobear.validity.LIMITS` ``minimum_load``) where an angular contact bearing's (taken single) or a
     thrust bearing's axial load |Fa| lies below SKF's minimum axial load F_am = A (n/1000)² kN
-    (:func:`~thermobear.rating.minimum_load.minimum_axial_load`; none where no A is on file)."""
-    got = minimum_axial_load_factor(scene.bearing)
+    (:func:`~thermobear.rating.minimum_load.minimum_axial_load`; none where no A is on file: ``got`` the bearing's
+    row, :func:`_load_factor`)."""
     if got is None or not scene.n_rpm > 0:
         return
     A, _, source = got                                   # (source names SKF's designation of the row)
