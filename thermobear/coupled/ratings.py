@@ -319,7 +319,7 @@ def scene_ratings_many(scenes, states, losses=None) -> list:
     ([5.81, 5.11], True)
     """
     scenes, states = list(scenes), list(states)
-    losses = [st.losses for st in states] if losses is None else list(losses)
+    losses = [None] * len(states) if losses is None else list(losses)
     statics: dict = {}
     for sc in scenes:
         if (k := (sc.bearing, sc.Fa, sc.Fr, sc.Fz)) not in statics:
@@ -367,11 +367,12 @@ def _clearances(scenes, states, static) -> list:
 
 
 def _ratings(scene, steady, r, static, clear: dict, factor) -> Ratings:
-    """One point's :class:`Ratings` (:func:`scene_ratings_many`): its loss result ``r``, ``static`` = (C, C0, P, P0),
-    its clearance dict and its bearing's minimum load factor (:func:`_load_factor`)."""
+    """One point's :class:`Ratings` (:func:`scene_ratings_many`): its loss result ``r`` (None: the steady state's,
+    its contacts' loads and ellipses alone), ``static`` = (C, C0, P, P0), its clearance dict and its bearing's minimum
+    load factor (:func:`_load_factor`)."""
     b = scene.bearing
     C, C0, P, P0 = static
-    c = getattr(r, "contacts", None)
+    c = steady.contact_values("Q", "a", "b") if r is None else getattr(r, "contacts", None)
     p = {}
     if c:
         for side in ("inner", "outer"):

@@ -90,6 +90,19 @@ class SteadyState:
             return self.batch_losses
         return take(self.batch_losses, self.row, np.shape(self.batch_losses.P_W)[0])
 
+    def contact_values(self, *keys) -> dict:
+        """Fields ``keys`` of :attr:`losses`' contacts at equilibrium, ``{"inner": {key: array}, "outer": ...}``,
+        sliced alone from the family's batch (the ratings need a few; the whole result is not taken); {} for a
+        result without contacts (the SKF model)."""
+        r = self.batch_losses
+        c = getattr(r, "contacts", None)
+        if not c:
+            return {}
+        if self.row is None:
+            return {side: {k: c[side][k] for k in keys} for side in ("inner", "outer")}
+        B = np.shape(r.P_W)[0]
+        return {side: {k: take(c[side][k], self.row, B) for k in keys} for side in ("inner", "outer")}
+
 
 def _models_used(fam: Family, r, template, cp: Coupling) -> dict:
     """The models a family's answers used (shared by its points; the thermal entry per point:
