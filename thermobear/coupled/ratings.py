@@ -372,7 +372,10 @@ def _ratings(scene, steady, r, static, clear: dict, factor) -> Ratings:
     load factor (:func:`_load_factor`)."""
     b = scene.bearing
     C, C0, P, P0 = static
-    c = steady.contact_values("Q", "a", "b") if r is None else getattr(r, "contacts", None)
+    if r is None and hasattr(steady, "contact_values"):     # (a SteadyState; any other state: its ``losses``)
+        c = steady.contact_values("Q", "a", "b")
+    else:
+        c = getattr(steady.losses if r is None else r, "contacts", None)
     p = {}
     if c:
         for side in ("inner", "outer"):
