@@ -145,12 +145,18 @@ class _Pair:
             P0[:, 0] = self.axial0(idx)
         return P0
 
-    def displacements(self, P, k, n):
-        """Bearing k's inner-ring displacement (nb, 3) [m, m, rad] under its loads P (nb, 3) at the speeds n."""
+    @staticmethod
+    def loaded(P, k):
+        """Bearing k's loads P (nb, 3), checked: NoEquilibrium where it would lose its axial load."""
         if np.any(P[:, 0] <= 0.0) or not np.all(np.isfinite(P)):
             raise NoEquilibrium(f"bearing {k} of the pair would lose its axial load (F_a = {P[:, 0].min():.4g} N): "
                                 "the high-speed form needs both bearings loaded axially",
                                 field="Fa, Fr, M (shaft loads)")
+        return P
+
+    def displacements(self, P, k, n):
+        """Bearing k's inner-ring displacement (nb, 3) [m, m, rad] under its loads P (nb, 3) at the speeds n."""
+        self.loaded(P, k)
         ld = load_distribution_high_speed(self.sups[k].bearing, Fa=P[:, 0], Fr=P[:, 1], M=P[:, 2], n_rpm=n, **self.kw)
         return np.stack([ld.delta_a, ld.delta_r, ld.theta], axis=1)
 
@@ -343,19 +349,19 @@ def shaft_loads_high_speed(supports, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=0.0, x_load
     idx = np.arange(P.shape[0])
     P0 = pb.unknowns(z, idx)
     P1 = pb.loads(P0, idx)
-    w = pb.residual(P0, idx)[1]
-    lds, exs, q = [], [], None
+    lds, exs = [], []
     for k, Pk in enumerate((P0, P1)):
-        s = sups[k]
+        s, Pk = sups[k], pb.loaded(Pk, k)
         ld, ex = load_distribution_high_speed_full(s.bearing, Fa=Pk[:, 0], Fr=Pk[:, 1], M=Pk[:, 2], n_rpm=n,
                                                    control=control, stiffness=stiffness, tilt_arm=tilt_arm)
         if refuse_overload:
             refuse_overload_of(s.bearing, ld, field="Fa, Fr, M (shaft loads)")
-        if k == 0:
-            q0 = np.stack([ld.delta_a - pb.c[0], ld.delta_r, ld.theta], axis=1)
-            q = q0 @ np.linalg.inv(pb.T[0]).T
         lds.append(ld)
         exs.append(ex)
+    q0, q1 = (np.stack([ld.delta_a - c, ld.delta_r, ld.theta], axis=1) for ld, c in zip(lds, pb.c))
+    q = q0 @ np.linalg.inv(pb.T[0]).T
+    # the slide of a spring-held outer ring: the compatibility's axial row at the answer (_Pair.residual's)
+    w = (q1 - q0 @ pb.T1T0inv.T)[:, 0] if pb.spring is not None else np.zeros(P.shape[0])
     reac = np.zeros((P.shape[0], 2, 5))
     reac[:, 0, :3], reac[:, 1, :3] = P0, P1
     slide = np.zeros((P.shape[0], 2))
