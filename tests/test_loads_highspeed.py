@@ -1,6 +1,8 @@
 """High-speed Jones–Harris load distribution (issue 2, item 5): the n = 0 limit, symmetry,
 ball and ring equilibrium, an independent solution of Jones's (1960) ball equations written with
 Harris's (2001, §8.2) sign convention, speed trends, batching, and named failures."""
+import dataclasses
+
 import numpy as np
 import pytest
 from scipy.optimize import fsolve
@@ -195,6 +197,25 @@ def test_batch_equals_single():
             assert np.allclose(batch.Q_i[i, j], one.Q_i, rtol=1e-8, atol=1e-9 * Fa[j])
             assert np.allclose(batch.alpha_o[i, j], one.alpha_o, rtol=1e-8)
             assert batch.delta_a[i, j] == pytest.approx(one.delta_a, rel=1e-9)
+
+
+def test_a_dry_solve_started_from_a_nearby_answer_is_the_same_answer_in_fewer_steps():
+    """start= without the film: Newton from the answer of nearby loads (an outer iteration's last step) reaches the
+    answer of the static start, to the tolerance, in fewer iterations; a start it cannot bring to the tolerance in
+    the allowed iterations leaves the batch to the static start, the same answer."""
+    b = bearing("7014C")
+    Fa, Fr, n = np.array([800.0, 2500.0]), np.array([300.0, 1000.0]), 12000.0
+    near = load_distribution_high_speed_full(b, Fa=Fa * 1.01, Fr=Fr * 0.99, n_rpm=n)
+    cold = load_distribution_high_speed_full(b, Fa=Fa, Fr=Fr, n_rpm=n)
+    warm = load_distribution_high_speed_full(b, Fa=Fa, Fr=Fr, n_rpm=n, start=near)
+    for k in ("Q_i", "Q_o", "alpha_i", "alpha_o", "delta_a", "delta_r"):
+        assert rel(getattr(warm[0], k), getattr(cold[0], k)) < 1e-8, k
+    assert rel(warm[1].omega_c, cold[1].omega_c) < 1e-10
+    assert warm[0].iterations < cold[0].iterations and warm[0].residual < 1e-10
+    # the rings 50 times as far in as the nearby answer's: Newton fails from there; the static start's answer
+    far = (dataclasses.replace(near[0], delta_a=near[0].delta_a * 50.0), near[1])
+    fell_back = load_distribution_high_speed_full(b, Fa=Fa, Fr=Fr, n_rpm=n, start=far)
+    assert np.array_equal(fell_back[0].Q_i, cold[0].Q_i) and fell_back[0].iterations == cold[0].iterations
 
 
 @pytest.mark.parametrize("kw, field", [

@@ -272,10 +272,13 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
                         dry Hertz contacts.
     tilt_arm : str      ``"groove"`` (ℜ_i, default) or ``"pitch"`` (d_m/2): :data:`thermobear.loads.rings.TILT_ARMS`
     start : (LoadDistribution, HighSpeedExtras), optional
-                        with ``film``: a solution of these same cases (this function, same options, the same
-                        batch shape; dry, or with the film at other lubricant data), from which the film solve
-                        starts instead of solving the dry contacts (its iterations are counted as those of the
-                        dry solve); ignored where a case has no load at all
+                        a solution of these same cases or of nearby ones (this function, same options, the same
+                        batch shape).  With ``film`` (the start dry, or with the film at other lubricant data): the
+                        film solve starts from it instead of solving the dry contacts (its iterations are counted
+                        as those of the dry solve).  Without: Newton starts from it instead of from the static
+                        solution (e.g. the last step's answer of an outer iteration on the loads); where it does
+                        not bring every case of the batch to ``tol``, the batch is solved from the static start
+                        as without it.  Ignored where a case has no load at all
 
     Returns
     -------
@@ -338,7 +341,7 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
     if film is None:
         f_eta = f_ap = None
     nb = loads.nb
-    z0 = _dry_start(brg, loads, start, arm_length(brg, tilt_arm)) if film is not None and start is not None else None
+    z0 = None if start is None else _dry_start(brg, loads, start, arm_length(brg, tilt_arm))
     if nb <= _CHUNK:
         ld, ex = _solve(brg, loads, n_b, f_eta, f_ap, stiffness, control, tol, maxiter, tilt_arm, z0)
     else:       # independent cases: solved a chunk at a time (numpy's temporaries stay small and in the cache)
@@ -364,16 +367,23 @@ def _dry_start(brg, loads, start, R):
     return z, np.full(nb, int(ld.iterations))
 
 
-def _solve(brg, loads, n_b, f_eta, f_ap, stiffness, control, tol, maxiter, tilt_arm, z_dry=None):
+def _solve(brg, loads, n_b, f_eta, f_ap, stiffness, control, tol, maxiter, tilt_arm, z_start=None):
     """The solution of a flat batch of cases (:class:`thermobear.loads.rings.RingLoads`, speeds ``n_b``):
-    (LoadDistribution, HighSpeedExtras) with a leading axis; ``z_dry``: (unknowns, iterations) of the dry
-    solution when the caller has it (:func:`_dry_start`)."""
+    (LoadDistribution, HighSpeedExtras) with a leading axis; ``z_start``: (unknowns, iterations) of a given start
+    (:func:`_dry_start`): with the film, the dry solution; without, a nearby one Newton starts from."""
     R = arm_length(brg, tilt_arm)
     opt = NewtonOptions(tol=tol, maxiter=maxiter, step_cap=_STEP_CAP, window=_NONMONOTONE, polish=_POLISH)
     Fa_b, Fr_b = loads.Fa, loads.Fr
-    if z_dry is not None:
+    warm = None
+    if z_start is not None and f_eta is None:      # dry from a nearby solution; all converged, or from the static start
         pb = _hs_problem(brg, loads, n_b, stiffness, control, R)
-        z, its = z_dry[0].copy(), z_dry[1].copy()
+        warm = newton(pb, z_start[0].copy(), opt)
+        warm = warm if np.all(warm.converged) else None
+    if warm is not None:
+        z, st, norm, its = warm.z, warm.state, warm.norm, warm.iterations
+    elif z_start is not None and f_eta is not None:
+        pb = _hs_problem(brg, loads, n_b, stiffness, control, R)
+        z, its = z_start[0].copy(), z_start[1].copy()
         st = pb.evaluate(z)
         norm = st.norm
     else:

@@ -52,7 +52,7 @@ import numpy as np
 from thermobear.contact.geometry import BallBearing
 from thermobear.errors import InputError
 from thermobear.loads.sets import ARRANGEMENTS, bearing_set, duplex_supports, warm_supports
-from thermobear.loads.shaftspeed import shaft_loads_high_speed
+from thermobear.loads.shaftspeed import HighSpeedShaftLoads, shaft_loads_high_speed
 from thermobear.loads.static import load_distribution_static
 
 __all__ = ["PAIR_ARRANGEMENTS", "PRELOAD_KINDS", "PairLoads", "pair_preload_offset", "pair_loads"]
@@ -75,8 +75,8 @@ class PairLoads:
     preload : float     the pair's preload at these temperatures without external load: each bearing's axial
                         load [N] (the two alike by symmetry)
     offset : float | None  the position preload δ [m] (None: a spring preload)
-    start : ndarray | None  the high-speed form's bearing 0 loads (Fa, Fr, M) of its two load cases (the external
-                        loads, none), (2, 3) [N, N, N m]: where a nearby solve starts (``pair_loads(start=…)``)
+    start : HighSpeedShaftLoads | None  the high-speed form's answer of its two load cases (the external loads,
+                        none): where a nearby solve starts (``pair_loads(start=…)``); None in the static form
     """
 
     Fa: float
@@ -85,7 +85,7 @@ class PairLoads:
     Fa_other: float
     preload: float
     offset: float | None
-    start: np.ndarray | None = field(default=None, repr=False, compare=False)
+    start: HighSpeedShaftLoads | None = field(default=None, repr=False, compare=False)
 
 
 def pair_preload_offset(brg: BallBearing, preload, *, stiffness: str = "nominal") -> float:
@@ -226,4 +226,4 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
     Fr_k = float(np.hypot(R[0, k, 1], R[0, k, 3])) if float(Fr) > 0.0 else 0.0
     return PairLoads(Fa=float(R[0, k, 0]), Fr=Fr_k, loaded=k,
                      Fa_other=float(R[0, 1 - k, 0]), preload=float(R[1, :, 0].mean()), offset=offset,
-                     start=None if n_rpm is None else np.array(R[:, 0, :3]))
+                     start=None if n_rpm is None else s)

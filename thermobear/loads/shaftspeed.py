@@ -29,8 +29,11 @@ the high-speed form cannot solve) is halved, up to 30 times.  Start: the low-spe
 needs both loaded); where a bearing's axial load falls below 10⁻³ of the scale along the steps, an external axial
 load lifts it off: NoEquilibrium.  Converged when the scaled residual (displacements / A, the tilt times L / A) is
 below ``tol``.  At n = 0 the high-speed relation is the static one, and so is this shaft
-(:func:`thermobear.loads.sets.shaft_loads`, to the tolerances).  Cost: a few batched high-speed calls per Newton
-step, ~5 steps from the static start.
+(:func:`thermobear.loads.sets.shaft_loads`, to the tolerances).  Cost: two batched high-speed calls per Newton
+step, ~5 steps from the static start; each call's ball equilibria start from the last evaluation's answer of their
+case (``start`` of :func:`~thermobear.loads.highspeed.load_distribution_high_speed_full`: nearby loads, a few
+iterations instead of the static solve and the placement), and a nearby answer given as ``start`` (a heat-up's
+last) starts the first as well.
 
 The speed-induced preload rise of a position-preloaded pair (Harris & Kotzalas 2007 [3] ch. 1–3 high-speed ball
 bearings; Li & Shin 2004 [4]; Jorgensen & Shin 1998 [5]; SKF [6] measures it with strain gauges, "a marked increase
@@ -66,7 +69,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from thermobear.errors import InputError, NoConvergence, NoEquilibrium, SolverError
-from thermobear.loads.highspeed import load_distribution_high_speed, load_distribution_high_speed_full
+from thermobear.arrays import take
+from thermobear.loads.highspeed import load_distribution_high_speed_full
 from thermobear.loads.overload import refuse_overload as refuse_overload_of
 from thermobear.loads.sets import Support, shaft_loads, shaft_transform
 from thermobear.loads.sets import _external as external_loads
@@ -87,8 +91,8 @@ class HighSpeedShaftLoads:
     Attributes
     ----------
     q : ndarray (..., 3)        shaft displacement at x = 0: (δa, δr, θ) [m, m, rad]
-    loads : tuple               each bearing's high-speed LoadDistribution in its own frame
-    extras : tuple              each bearing's :class:`~thermobear.loads.highspeed.HighSpeedExtras`
+    loads : tuple               each bearing's high-speed LoadDistribution in its own frame (the cases on one axis)
+    extras : tuple              each bearing's :class:`~thermobear.loads.highspeed.HighSpeedExtras` (the same)
     reactions : ndarray (..., 2, 5)  each bearing's loads (F_a, F_r, M, F_z = 0, M_y = 0) in its own frame [N, N m]
     slide : ndarray (..., 2)    axial slide of a spring-held outer ring [m] (0 for the others)
     supports : tuple            the Support of each bearing (warm and at speed, as given)
@@ -128,6 +132,20 @@ class _Pair:
         self.unit = scale[:, None] * np.array([1.0, 1.0, self.L])[None, :]
         self.T1invT = np.linalg.inv(self.T[1].T)
         self.T1T0inv = self.T[1] @ np.linalg.inv(self.T[0])
+        self.last = None        # (cases, each bearing's (ld, ex)): the last evaluation's base points, to start from
+
+    def starts(self, idx, reps: int) -> tuple:
+        """Each bearing's start for the cases ``idx`` (sorted), each case repeated ``reps`` times: the answers of the
+        last evaluation's base points (the loads of a nearby step), or None where it did not have every case."""
+        if self.last is None:
+            return None, None
+        cases, sols = self.last
+        where = np.full(self.P.shape[0], -1)
+        where[cases] = np.arange(cases.size)
+        pos = where[idx]
+        if np.any(pos < 0):
+            return None, None
+        return tuple(take(sol, np.repeat(pos, reps), cases.size) for sol in sols)
 
     def loads(self, P0, idx):
         """Bearing 1's loads (nb, 3) from bearing 0's ``P0`` (nb, 3) of the cases ``idx``: the shaft's equilibrium."""
@@ -154,32 +172,33 @@ class _Pair:
                                 field="Fa, Fr, M (shaft loads)")
         return P
 
-    def displacements(self, P, k, n):
-        """Bearing k's inner-ring displacement (nb, 3) [m, m, rad] under its loads P (nb, 3) at the speeds n."""
-        self.loaded(P, k)
-        ld = load_distribution_high_speed(self.sups[k].bearing, Fa=P[:, 0], Fr=P[:, 1], M=P[:, 2], n_rpm=n, **self.kw)
-        return np.stack([ld.delta_a, ld.delta_r, ld.theta], axis=1)
+    def solve(self, P, k, n, start=None):
+        """Bearing k's high-speed (LoadDistribution, HighSpeedExtras) under its loads P (nb, 3) at the speeds n
+        (checked: :meth:`loaded`), Newton started from ``start`` where given (:meth:`starts`)."""
+        return load_distribution_high_speed_full(self.sups[k].bearing, Fa=self.loaded(P, k)[:, 0], Fr=P[:, 1],
+                                                 M=P[:, 2], n_rpm=n, start=start, **self.kw)
 
-    def residual(self, P0, idx):
-        """Scaled compatibility (nb, m) of the cases ``idx`` at bearing 0's loads P0 (nb, 3), and the slide w_1."""
-        P1 = self.loads(P0, idx)
-        q0 = self.displacements(P0, 0, self.n[idx])
-        q1 = self.displacements(P1, 1, self.n[idx])
-        q0[:, 0] -= self.c[0]
-        q1[:, 0] -= self.c[1]
+    def residual(self, P0, idx, starts=(None, None)):
+        """Scaled compatibility (nb, m) of the cases ``idx`` at bearing 0's loads P0 (nb, 3), the slide w_1 and each
+        bearing's solution (``starts``: theirs to start from, :meth:`starts`)."""
+        n = self.n[idx]
+        sols = (self.solve(P0, 0, n, starts[0]), self.solve(self.loads(P0, idx), 1, n, starts[1]))
+        q0, q1 = (np.stack([ld.delta_a - c, ld.delta_r, ld.theta], axis=1) for (ld, _), c in zip(sols, self.c))
         r = q1 - q0 @ self.T1T0inv.T
         w = r[:, 0] if self.spring is not None else np.zeros(len(idx))
         r[:, 2] *= self.L
-        return r[:, self.free] / self.A, w
+        return r[:, self.free] / self.A, w, sols
 
     def evaluate(self, z, idx):
         """(residual (nb, m), Jacobian (nb, m, m)) at z (nb, m): the base point and its m forward differences in one
-        batched high-speed call per bearing."""
+        batched high-speed call per bearing, each started from the last evaluation's answer of its case."""
         nb, m = z.shape
         Z = np.repeat(z[:, None, :], m + 1, axis=1)
         Z[:, 1:, :] += _FD * np.eye(m)[None, :, :]
         idx_all = np.repeat(idx, m + 1)
-        R = self.residual(self.unknowns(Z.reshape(-1, m), idx_all), idx_all)[0].reshape(nb, m + 1, m)
+        R, _, sols = self.residual(self.unknowns(Z.reshape(-1, m), idx_all), idx_all, self.starts(idx, m + 1))
+        self.last = (idx, tuple(take(sol, np.arange(nb) * (m + 1), nb * (m + 1)) for sol in sols))
+        R = R.reshape(nb, m + 1, m)
         J = np.swapaxes(R[:, 1:, :] - R[:, :1, :], 1, 2) / _FD
         return R[:, 0, :], J
 
@@ -298,8 +317,11 @@ def shaft_loads_high_speed(supports, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=0.0, x_load
     M : array_like      moment in the x–y plane [N m]
     control, stiffness, tilt_arm : as :func:`thermobear.loads.highspeed.load_distribution_high_speed`
     tol, maxiter : Newton tolerance (scaled compatibility residual) and steps
-    start : array_like  bearing 0's loads (Fa, Fr, M) [N, N, N m] to start Newton from, one per case (e.g. a nearby
-                        answer's ``reactions[..., 0, :3]``: a heat-up's last); default the low-speed shaft's
+    start : array_like or HighSpeedShaftLoads
+                        bearing 0's loads (Fa, Fr, M) [N, N, N m] to start Newton from, one per case (e.g. a nearby
+                        answer's ``reactions[..., 0, :3]``), or a nearby answer of the same cases (a heat-up's last):
+                        its loads, and its bearings' ball equilibria to start their high-speed solves from; default
+                        the low-speed shaft's
 
     Returns
     -------
@@ -343,25 +365,23 @@ def shaft_loads_high_speed(supports, Fa=0.0, Fr=0.0, n_rpm=0.0, *, M=0.0, x_load
     if any(s.bearing.kind != "angular_contact" for s in sups):
         raise InputError("supports", supports, "two angular contact bearings (a preloaded pair)")
     shape, P, n = _external(Fa, Fr, M, x_load, n_rpm)
+    near = start if isinstance(start, HighSpeedShaftLoads) else None
+    if near is not None:
+        start = near.reactions.reshape(-1, 2, 5)[:, 0, :3]
     R0, scale = _start(sups, P, stiffness, tilt_arm) if start is None else _given_start(start, P)
     pb = _Pair(sups, P, n, control, stiffness, tilt_arm, scale)
+    if near is not None and near.reactions.size == 10 * P.shape[0]:     # (its cases: the balls' start too)
+        pb.last = (np.arange(P.shape[0]), tuple(zip(near.loads, near.extras)))
     z, norm, its = _newton(pb, R0[:, pb.free] / pb.unit[:, pb.free], tol, maxiter)
     idx = np.arange(P.shape[0])
     P0 = pb.unknowns(z, idx)
     P1 = pb.loads(P0, idx)
-    lds, exs = [], []
-    for k, Pk in enumerate((P0, P1)):
-        s, Pk = sups[k], pb.loaded(Pk, k)
-        ld, ex = load_distribution_high_speed_full(s.bearing, Fa=Pk[:, 0], Fr=Pk[:, 1], M=Pk[:, 2], n_rpm=n,
-                                                   control=control, stiffness=stiffness, tilt_arm=tilt_arm)
-        if refuse_overload:
+    _, w, sols = pb.residual(P0, idx, pb.starts(idx, 1))      # (w: a spring-held outer ring's slide)
+    lds, exs = zip(*sols)
+    if refuse_overload:
+        for s, ld in zip(sups, lds):
             refuse_overload_of(s.bearing, ld, field="Fa, Fr, M (shaft loads)")
-        lds.append(ld)
-        exs.append(ex)
-    q0, q1 = (np.stack([ld.delta_a - c, ld.delta_r, ld.theta], axis=1) for ld, c in zip(lds, pb.c))
-    q = q0 @ np.linalg.inv(pb.T[0]).T
-    # the slide of a spring-held outer ring: the compatibility's axial row at the answer (_Pair.residual's)
-    w = (q1 - q0 @ pb.T1T0inv.T)[:, 0] if pb.spring is not None else np.zeros(P.shape[0])
+    q = np.stack([lds[0].delta_a - pb.c[0], lds[0].delta_r, lds[0].theta], axis=1) @ np.linalg.inv(pb.T[0]).T
     reac = np.zeros((P.shape[0], 2, 5))
     reac[:, 0, :3], reac[:, 1, :3] = P0, P1
     slide = np.zeros((P.shape[0], 2))
