@@ -315,6 +315,29 @@ def test_a_pairs_band_carries_its_warm_preload(s004):
     assert not any(k.startswith("preload.") for k in tb.steady_state(s004, uncertainty=4, seed=1).outputs)
 
 
+def test_a_pairs_heat_up_bands_carry_its_preload_over_time(s004):
+    """The heat-up of one bearing of a preloaded pair with uncertainty: each sample's heat-up on its own (its preload's
+    pieces), equal to the heat-up of the sample's scene alone; bands over its preload at the temperatures and the loaded
+    bearing's axial load at each output time.  Early in the heat-up the preload rises (the
+    inner ring and balls warm before the housing), and the loaded bearing carries at least the preload (the pair's
+    radial load adds axial load to it)."""
+    pair = s004.with_(arrangement="back_to_back", preload_N=450.0, Fa=0.0, Fr=650.0)
+    t = np.array([20.0, 60.0])                   # (the first minute: ~40 pieces of ≤ 2 % drift, 2 s a heat-up)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = tb.transient(pair, 60.0, uncertainty=2, seed=1, t_eval=t)
+        alone = [tb.transient(sc, 60.0, t_eval=t) for sc in sample_scenes(pair, 2, seed=1).scenes]
+    assert not r.failed and r.nominal.preload is not None
+    warm, Fa = r.outputs["preload.warm_N"], r.outputs["preload.Fa_N"]
+    for k, run in enumerate(alone):
+        assert warm[k] == pytest.approx(run.preload["series"]["preload_N"], rel=1e-9)
+        assert r.outputs["T_C.balls"][k] == pytest.approx(run.T_C["balls"], rel=1e-9)
+    assert np.all(np.diff(warm, axis=1) > 0) and np.all(Fa >= warm) and np.all(warm > 450.0)
+    b = r.bands["preload.warm_N"]
+    assert np.shape(b["p5"]) == (2,) and np.all(b["p5"] <= b["p95"]) and "preload.Fa_N" in r.bands
+    assert "preload.warm_N [N]" in r.summary()
+
+
 def test_cli_run_uncertainty_json_and_table(capsys):
     assert main(["run", SEED004, "--uncertainty", "8", "--seed", "2", "--json"]) == 0
     d = json.loads(capsys.readouterr().out)

@@ -567,14 +567,13 @@ def refuse_pair(scene: Scene) -> None:
     """InputError for one bearing of a preloaded pair (``[bearing] arrangement``): its loads come from the pair's
     preload at the solved temperatures — in the coupled steady state (:mod:`thermobear.coupled.preload`: ``run``,
     ``sweep``, ``speed``'s thermally safe speed, ``--uncertainty``) and the heat-up
-    (:mod:`thermobear.coupled.transient_pair`: ``transient``) — which a model choice for given loads does not close
-    (a prescribed temperature, a spin-down, injected loads, a heat-up's uncertainty bands)."""
+    (:mod:`thermobear.coupled.transient_pair`: ``transient``, with ``--uncertainty`` too) — which a model choice for
+    given loads does not close (a prescribed temperature, a spin-down, injected loads)."""
     if scene.arrangement is not None:
         raise InputError("bearing.arrangement", scene.arrangement, "one bearing of a preloaded pair is solved by the "
                          "coupled steady state and its heat-up (its loads follow the pair's preload at the solved "
                          "temperatures: run, sweep, steady_state, transient), not for given loads (a spin-down, injected "
-                         "loads, a heat-up's uncertainty bands): give the bearing's own loads without arrangement / "
-                         "preload_N")
+                         "loads): give the bearing's own loads without arrangement / preload_N")
 
 
 def plan(scene: Scene) -> tuple:

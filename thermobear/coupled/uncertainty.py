@@ -78,7 +78,7 @@ from thermobear.coupled.transient import PointModel, heat_sources
 from thermobear.errors import InputError, OutsideValidity, SolverError
 from thermobear.lazy import lazy_module
 from thermobear.model_inputs import FRICTION_INPUTS, unread_inputs
-from thermobear.models import plan_many, refuse_pair
+from thermobear.models import plan_many
 from thermobear.scene import Scene
 from thermobear.scene.scene import SECTIONS
 from thermobear.schema import Uncertainty, check_value
@@ -540,15 +540,19 @@ def _samples(scene, n, seed, method, groups, inputs, prepared, sensitivity) -> S
 
 # --------------------------------------------------------------------------- heat-up
 def _series(run) -> dict:
-    """Output name → values over the run's times of a heat-up (a TransientRun)."""
+    """Output name → values over the run's times of a heat-up (a TransientRun): with a preloaded pair's
+    (:mod:`thermobear.coupled.transient_pair`) its preload at the temperatures and the loaded bearing's axial load
+    (:data:`~thermobear.coupled.ratings.PRELOAD_OUTPUTS`)."""
+    pre = (getattr(run, "preload", None) or {}).get("series")
     return {**{f"T_C.{n}": v for n, v in run.T_C.items()}, "P_W": run.P_W,
-            **{f"breakdown_W.{k}": v for k, v in run.breakdown_W.items()}}
+            **{f"breakdown_W.{k}": v for k, v in run.breakdown_W.items()},
+            **({"preload.warm_N": pre["preload_N"], "preload.Fa_N": pre["Fa_N"]} if pre else {})}
 
 
 def _point_heatup(scene, t_end_s, t_eval, T0_C, rtol, atol, stop, boundary) -> dict:
     """One sampled point's heat-up (:func:`thermobear.coupled.transient.transient`, whose one-point family
     applies the draws; a point across a model switch blends its alternatives there, the film load model
-    follows the film temperature): output name → (1, n_t)."""
+    follows the film temperature, a preloaded pair's loads its preload): output name → (1, n_t)."""
     run = _transient.transient(scene, t_end_s, t_eval=t_eval, T0_C=T0_C, rtol=rtol, atol=atol, stop=stop,
                                boundary=boundary)
     if not run.completed:
@@ -579,9 +583,13 @@ def _heatups(scenes, t_end_s, t_eval, T0_C, rtol, atol, stop, boundary):
     family of model choices (:func:`thermobear.thermal.solve_transient`, block-diagonal Jacobian); a
     point inside a model-switch band (its alternatives blended as stacked points of one source,
     :func:`~thermobear.coupled.transient.transient`) or on the film load model (its loads follow the film
-    temperature along the run) is integrated on its own.  A failing batch fails its points."""
-    plans, out, failed = plan_many(scenes), {}, {}
-    one = [k for k, a in enumerate(plans) if not isinstance(a, Exception) and len(a) == 1
+    temperature along the run) or one bearing of a preloaded pair (its loads follow the pair's preload:
+    :mod:`thermobear.coupled.transient_pair`) is integrated on its own.  A failing batch fails its points."""
+    single, plans = [k for k, sc in enumerate(scenes) if sc.arrangement is None], [None] * len(scenes)
+    for k, p in zip(single, plan_many([scenes[k] for k in single])):   # (a pair's bearing: no model choice for
+        plans[k] = p                                                    # given loads, its heat-up alone)
+    out, failed = {}, {}
+    one = [k for k, a in enumerate(plans) if not (a is None or isinstance(a, Exception)) and len(a) == 1
            and a[0].models["load_model"][0] != "film"]
     failed.update({k: a for k, a in enumerate(plans) if isinstance(a, Exception)})
     fams, _ = families([scenes[k] for k in one], [(plans[k][0].models, plans[k][0].dry) for k in one])
@@ -610,9 +618,12 @@ def transient_uncertainty(scene: Scene, t_end_s: float, n: int, *, t_eval=None, 
     ``t_eval`` [s] the output times (default 50 points over [0, t_end_s]); ``boundary`` a logged boundary
     (:class:`~thermobear.thermal.solve.LinearBoundary`, measured: the same for every sample); the other
     parameters as :func:`steady_uncertainty` and :func:`thermobear.coupled.transient.transient` (no
-    schedule: one operating point).  A batch whose integration fails counts all its samples as failed.
+    schedule: one operating point).  A batch whose integration fails counts all its samples as failed.  One
+    bearing of a preloaded pair: each sample's heat-up on its own (the pieces of its preload,
+    :mod:`thermobear.coupled.transient_pair`), with bands over its preload at the temperatures (``preload.warm_N``)
+    and the loaded bearing's axial load (``preload.Fa_N``); a sample whose preload runs away counts as failed,
+    named (ThermalPreloadRunaway).
     """
-    refuse_pair(scene)      # the samples' heat-ups run given loads (a pair's follow its preload: transient alone)
     t_eval = np.linspace(0.0, t_end_s, 51)[1:] if t_eval is None else np.asarray(t_eval, float)
     nominal = nominal if nominal is not None else _transient.transient(scene, t_end_s, t_eval=t_eval, T0_C=T0_C,
                                                                        rtol=rtol, atol=atol, stop=stop, boundary=boundary)

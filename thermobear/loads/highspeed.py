@@ -374,15 +374,11 @@ def _solve(brg, loads, n_b, f_eta, f_ap, stiffness, control, tol, maxiter, tilt_
     R = arm_length(brg, tilt_arm)
     opt = NewtonOptions(tol=tol, maxiter=maxiter, step_cap=_STEP_CAP, window=_NONMONOTONE, polish=_POLISH)
     Fa_b, Fr_b = loads.Fa, loads.Fr
-    warm = None
-    if z_start is not None and f_eta is None:      # dry from a nearby solution; all converged, or from the static start
-        pb = _hs_problem(brg, loads, n_b, stiffness, control, R)
-        warm = newton(pb, z_start[0].copy(), opt)
-        warm = warm if np.all(warm.converged) else None
-    if warm is not None:
+    pb = None if z_start is None else _hs_problem(brg, loads, n_b, stiffness, control, R)
+    warm = None if z_start is None or f_eta is not None else newton(pb, z_start[0].copy(), opt)   # dry, from nearby
+    if warm is not None and np.all(warm.converged):     # (else the static start, as without a start)
         z, st, norm, its = warm.z, warm.state, warm.norm, warm.iterations
     elif z_start is not None and f_eta is not None:
-        pb = _hs_problem(brg, loads, n_b, stiffness, control, R)
         z, its = z_start[0].copy(), z_start[1].copy()
         st = pb.evaluate(z)
         norm = st.norm
