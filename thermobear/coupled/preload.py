@@ -168,21 +168,24 @@ def pair_speed_rpm(scene) -> float | None:
     return float(scene.n_rpm) if scene.rotating == "inner" else None
 
 
-def scene_pair_loads(scene, T, offset: float | None = None, start: PairLoads | None = None) -> PairLoads:
+def scene_pair_loads(scene, T, offset: float | None = None, start: PairLoads | None = None, *,
+                     with_stiffness: bool = False, at_rest: bool = False) -> PairLoads:
     """The loads of a pair scene's loaded bearing and the pair's preload (:func:`~thermobear.loads.pair.pair_loads`)
     at the ring and ball temperatures ``T`` [°C] (:func:`pair_temperatures`; None: the mounting temperature
     :data:`~thermobear.contact.fits.T_REF_C`), at the scene's speed where its inner ring rotates (the high-speed form
-    of both bearings; else the static form), with its kinematics' raceway control; ``offset``: the position
-    preload [m] when the caller has it (default :func:`~thermobear.loads.pair.pair_preload_offset`); ``start``: a
-    nearby answer to start the high-speed solve from.  The one evaluation the steady loop and the heat-up share."""
+    of both bearings; else, or ``at_rest``, the static form), with its kinematics' raceway control; ``offset``: the
+    position preload [m] when the caller has it (default :func:`~thermobear.loads.pair.pair_preload_offset`);
+    ``start``: a nearby answer to start the high-speed solve from; ``with_stiffness``: the pair's axial and radial
+    stiffness too.  The one evaluation the steady loop and the heat-up share."""
     kind = scene.preload_kind or "position"
     dT = {k: 0.0 if T is None else T[k] - T_REF_C for k in ("inner ring", "outer ring", "balls")}
-    n = pair_speed_rpm(scene)
+    n = None if at_rest else pair_speed_rpm(scene)
     u = None if not n else float(seated_raceway_growth(scene.bearing, n, **inner_seat(scene)))
     return pair_loads(scene.bearing, scene.arrangement, scene.preload_force, kind, scene.Fa, scene.Fr,
                       spacer=scene.pair_spacer or 0.0, dT_inner=dT["inner ring"], dT_outer=dT["outer ring"],
                       dT_ball=dT["balls"], offset=offset, n_rpm=n,
-                      control=high_speed_control(scene) if n else "outer", start=start, u_inner=u)
+                      control=high_speed_control(scene) if n else "outer", start=start, u_inner=u,
+                      with_stiffness=with_stiffness)
 
 
 class _Pair:
@@ -300,14 +303,30 @@ class _Pair:
         except (InputError, SolverError):       # (a warm pair beyond the model even so: no lower end to give)
             return float("nan")
 
+    def stiffness(self, T: dict) -> dict:
+        """The pair's axial and radial stiffness at its centre under the external loads [N/µm]
+        (:func:`~thermobear.loads.pair.pair_loads` ``with_stiffness``): cold at rest (the catalogue's), cold at speed
+        and warm at speed (at ``T``), as ``k_{axial,radial}_{cold,at_speed_cold,warm}_N_um``; NaN where the loads have
+        no solution there."""
+        out = {}
+        for state, temps, rest in (("cold", None, True), ("at_speed_cold", None, False), ("warm", T, False)):
+            try:
+                k = scene_pair_loads(self.scene, temps, self.offset, with_stiffness=True, at_rest=rest).stiffness
+            except (InputError, SolverError):       # (a warm pair beyond the model: no stiffness to give)
+                k = (float("nan"),) * 2
+            out.update({f"k_axial_{state}_N_um": k[0] * 1e-6, f"k_radial_{state}_N_um": k[1] * 1e-6})
+        return out
+
     def answer(self, r, used: PairLoads, T: dict, warm: float, res: float):
-        """The point's state with its ``preload`` (loads used, warm preload, history) and its models_used entry."""
+        """The point's state with its ``preload`` (loads used, warm preload, stiffness, history) and its models_used
+        entry."""
         s, n = self.scene, max(len(self.hist), 1)
         pre = dict(arrangement=s.arrangement, kind=self.kind, cold_N=s.preload_force,
                    at_speed_cold_N=self.cold.preload, form="static" if self.n_rpm is None else "high_speed", warm_N=warm,
                    warm_balls_at_rings_N=self.balls_at_rings(T, warm),
                    offset_um=None if self.offset is None else self.offset * 1e6, Fa_N=used.Fa, Fr_N=used.Fr,
                    Fa_other_N=used.Fa_other, loaded=used.loaded, external_Fa_N=s.Fa, external_Fr_N=s.Fr,
+                   **self.stiffness(T),
                    iterations=n, residual_N=res, history=list(self.hist), temperatures_C=dict(T))
         how = (f"spring: a constant {s.preload_force:.4g} N (no thermal change)" if self.kind == "spring" else
                f"position ({self.offset * 1e6:.3g} µm offset): {s.preload_force:.4g} N cold → {warm:.4g} N warm with the "
@@ -388,6 +407,12 @@ def preload_lines(p: dict | None) -> list:
     bracket = ([f"  with the balls at the rings' mean instead ({0.5 * (T['inner ring'] + T['outer ring']):.1f} °C): "
                 f"{lo:.4g} N warm — the balls' temperature (the estimated ball–race conductance) makes the difference"]
                if p["kind"] == "position" and lo is not None and lo == lo else [])
+    k = {s: (p.get(f"k_axial_{s}_N_um"), p.get(f"k_radial_{s}_N_um")) for s in ("cold", "at_speed_cold", "warm")}
+    stiff = ([f"  stiffness at the pair's centre (axial, radial; the other displacements free): {k['warm'][0]:.4g}, "
+              f"{k['warm'][1]:.4g} N/µm warm" + (" at speed" if p.get("form") == "high_speed" else "") +
+              f"; cold {k['cold'][0]:.4g}, {k['cold'][1]:.4g} N/µm at rest" +
+              (f", {k['at_speed_cold'][0]:.4g}, {k['at_speed_cold'][1]:.4g} N/µm at speed"
+               if p.get("form") == "high_speed" else "")] if k["warm"][0] is not None else [])
     return [head] + bracket + [f"  loaded bearing: Fa {p['Fa_N']:.4g} N, Fr {p['Fr_N']:.4g} N (the other Fa {p['Fa_other_N']:.4g} N) "
                   f"under the pair's Fa {p['external_Fa_N']:.4g} N, Fr {p['external_Fr_N']:.4g} N; inner ring "
-                  f"{T['inner ring']:.1f} °C, outer ring {T['outer ring']:.1f} °C, balls {T['balls']:.1f} °C"]
+                  f"{T['inner ring']:.1f} °C, outer ring {T['outer ring']:.1f} °C, balls {T['balls']:.1f} °C"] + stiff

@@ -572,9 +572,10 @@ def operating_lives(scene, T_op_C, nu_m2_s=None, *, static=None) -> dict:
 RATING_OUTPUTS = {"ratings.T_operating_C": "°C", "ratings.kappa": "-", "ratings.a_ISO": "-", "ratings.L10m_h": "h",
                   "ratings.clearance_op_um": "µm"}
 
-#: a preloaded pair's answers an uncertainty band gives (:mod:`thermobear.coupled.preload`): the warm preload and the
-#: loaded bearing's axial load → unit
-PRELOAD_OUTPUTS = {"preload.warm_N": "N", "preload.Fa_N": "N"}
+#: a preloaded pair's answers an uncertainty band gives (:mod:`thermobear.coupled.preload`): the warm preload, the
+#: loaded bearing's axial load and the warm pair's axial and radial stiffness → unit
+PRELOAD_OUTPUTS = {"preload.warm_N": "N", "preload.Fa_N": "N", "preload.k_axial_warm_N_um": "N/µm",
+                   "preload.k_radial_warm_N_um": "N/µm"}
 
 
 def rating_samples(scenes, states) -> dict:

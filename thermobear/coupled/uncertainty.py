@@ -462,7 +462,7 @@ def preload_values(st: SteadyState) -> dict:
     """A preloaded pair's answers of :data:`PRELOAD_OUTPUTS` (output name → value [N]) of a solved point (none
     without a pair)."""
     p = getattr(st, "preload", None)
-    return {k: float(p[k.split(".", 1)[1]]) for k in PRELOAD_OUTPUTS} if p else {}
+    return {k: float(p.get(k.split(".", 1)[1], float("nan"))) for k in PRELOAD_OUTPUTS} if p else {}
 
 
 def steady_uncertainty(scene: Scene, n: int, *, seed=None, method: str = "lhs", groups: int | None = None,

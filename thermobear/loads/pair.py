@@ -31,6 +31,20 @@ interference per bearing at α0 = 15°); on an interference seat the fit's relie
 a speed (``n_rpm=None``) the pair is the low-speed (static) form: :func:`~thermobear.loads.sets.bearing_set`,
 rigid rings, no centrifugal terms.
 
+Stiffness (``with_stiffness``): of the pair at its centre under the external loads, the outer rings held (a rigid
+housing), each stiffness with the shaft's other displacements free — the compliance's diagonal
+
+.. math:: k_a = 1 / C_{aa}, \qquad k_r = 1 / C_{rr}, \qquad C = K^{-1}, \quad K = \partial P_{ext} / \partial q
+
+(the static form's K the shaft's own, :class:`~thermobear.loads.sets.ShaftLoads` ``stiffness``; at speed the same
+by central differences of the shaft's displacement over Fa ± h, Fr ± h, h = 10⁻³ of the larger of the preload and
+the loads).  Without external load a position-preloaded pair's axial stiffness is both bearings in parallel,
+k_a = 2 dF_a/dδ_a(F_0), a spring-preloaded pair's the held bearing's alone (its partner's ring slides), and both
+arrangements are alike by mirror symmetry; a radial load couples the axial displacement to the tilt, which a
+back-to-back pair resists less than a face-to-face one here (Harris & Kotzalas 2007 [1] ch. 8: the axial
+stiffness of duplex sets; the load–deflection of ch. 7).  At speed the balls' centrifugal force softens a spring
+pair and the preload's rise stiffens a position pair (Jones 1960 [2]).
+
 References
 ----------
 .. [1] Harris, T. A. & Kotzalas, M. N. (2007). *Essential Concepts of Bearing Technology*, 5th ed., CRC Press,
@@ -61,6 +75,9 @@ __all__ = ["PAIR_ARRANGEMENTS", "PRELOAD_KINDS", "PairLoads", "pair_preload_offs
 #: position preload of its own) and the kinds of its preload.
 PAIR_ARRANGEMENTS = tuple(a for a in ARRANGEMENTS if a != "tandem")
 PRELOAD_KINDS = ("position", "spring")
+#: The load step of the high-speed form's stiffness by central differences, of the larger of the preload and the
+#: external loads (the load–displacement is smooth: the differences' error ~ step², far below 1e-6)
+_STIFFNESS_STEP = 1e-3
 
 
 @dataclass(frozen=True)
@@ -77,6 +94,8 @@ class PairLoads:
     offset : float | None  the position preload δ [m] (None: a spring preload)
     start : HighSpeedShaftLoads | None  the high-speed form's answer of its two load cases (the external loads,
                         none): where a nearby solve starts (``pair_loads(start=…)``); None in the static form
+    stiffness : tuple | None  ``(axial, radial)`` stiffness of the pair under the external loads [N/m]
+                        (``pair_loads(with_stiffness=True)``; module docstring), else None
     """
 
     Fa: float
@@ -86,6 +105,7 @@ class PairLoads:
     preload: float
     offset: float | None
     start: HighSpeedShaftLoads | None = field(default=None, repr=False, compare=False)
+    stiffness: tuple | None = None
 
 
 def pair_preload_offset(brg: BallBearing, preload, *, stiffness: str = "nominal") -> float:
@@ -126,7 +146,7 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
                dT_inner: float = 0.0, dT_outer: float = 0.0, dT_ball: float | None = None,
                offset: float | None = None, stiffness: str = "nominal", spacer: float = 0.0,
                n_rpm: float | None = None, control: str = "outer", start: "PairLoads | None" = None,
-               u_inner: float | None = None) -> PairLoads:
+               u_inner: float | None = None, with_stiffness: bool = False) -> PairLoads:
     r"""The loads of a preloaded pair's loaded bearing, and the pair's preload, with warm rings and balls.
 
     Parameters
@@ -153,6 +173,9 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
                         :func:`~thermobear.contact.fits.seated_raceway_growth`, less)
     start : PairLoads   a nearby answer of the high-speed form (e.g. a heat-up's last) whose loads start its Newton
                         iteration (default: the low-speed pair's); the answer is the same to the solver's tolerance
+    with_stiffness : bool  also the pair's axial and radial stiffness under the external loads
+                        (``PairLoads.stiffness``: the static form's from the shaft's stiffness matrix, the high-speed
+                        form's by central differences over four more load cases in the same call)
 
     Returns
     -------
@@ -190,6 +213,11 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
     >>> fast = pair_loads(b, "back_to_back", 300.0, Fr=2020.0, n_rpm=12000.0)
     >>> round(fast.preload), round(fast.Fa), round(fast.Fr)
     (1269, 1352, 1010)
+
+    The pair's axial and radial stiffness at rest under its preload alone [N/µm]: twice a bearing's axial one.
+
+    >>> [round(k * 1e-6, 1) for k in pair_loads(b, "back_to_back", 300.0, with_stiffness=True).stiffness]
+    [94.2, 530.2]
     """
     if arrangement not in PAIR_ARRANGEMENTS:
         raise InputError("bearing.arrangement", arrangement, " or ".join(PAIR_ARRANGEMENTS))
@@ -208,6 +236,11 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
         pre = dict(preload_offset=offset)
     towards = ARRANGEMENTS[arrangement][0]          # the axial load on the first (held) bearing
     Fa2, Fr2 = [towards * float(Fa), 0.0], [float(Fr), 0.0]
+    h = _STIFFNESS_STEP * max(float(preload), float(Fa), float(Fr), 1.0)
+    if with_stiffness and n_rpm is not None:        # the central differences' cases: Fa ± h, Fr ± h
+        Fa2 += [towards * (float(Fa) + h), towards * (float(Fa) - h), towards * float(Fa), towards * float(Fa)]
+        Fr2 += [float(Fr), float(Fr), float(Fr) + h, float(Fr) - h]
+        start = None                                # (its cases are the two of the loads alone)
     if n_rpm is None:
         s = bearing_set(brg, arrangement, Fa2, Fr2, **pre, dT_inner=dT_inner, dT_outer=dT_outer, dT_ball=dT_ball,
                         stiffness=stiffness, spacer=float(spacer))
@@ -226,4 +259,16 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
     Fr_k = float(np.hypot(R[0, k, 1], R[0, k, 3])) if float(Fr) > 0.0 else 0.0
     return PairLoads(Fa=float(R[0, k, 0]), Fr=Fr_k, loaded=k,
                      Fa_other=float(R[0, 1 - k, 0]), preload=float(R[1, :, 0].mean()), offset=offset,
-                     start=None if n_rpm is None else s)
+                     start=None if n_rpm is None or with_stiffness else s,
+                     stiffness=_stiffness(s, n_rpm is None, towards * h, h) if with_stiffness else None)
+
+
+def _stiffness(s, static: bool, dFa: float, dFr: float) -> tuple:
+    """(axial, radial) stiffness [N/m] of a solved pair ``s`` under its first load case: the static form's from the
+    inverse of its stiffness matrix at the pair's centre (the other displacements free), the high-speed form's from
+    the shaft displacements of its cases 2–5 (the external loads Fa ± dFa, Fr ± dFr [N] on the shaft)."""
+    if static:
+        C = np.linalg.inv(np.asarray(s.stiffness)[0])
+        return float(1.0 / C[0, 0]), float(1.0 / C[1, 1])
+    q = np.asarray(s.q)
+    return float(2.0 * dFa / (q[2, 0] - q[3, 0])), float(2.0 * dFr / (q[4, 1] - q[5, 1]))
