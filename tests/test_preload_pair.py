@@ -307,6 +307,8 @@ def test_sweep_rows_of_a_pair_carry_its_warm_preload():
         row = run_sweep(s, {"n_rpm": [s.n_rpm]}, processes=1)[0]
     assert row["preload_cold_N"] == 300.0 and row["preload_warm_N"] == pytest.approx(st.preload["warm_N"], rel=1e-9)
     assert row["preload_warm_N"] > 2 * row["preload_cold_N"] and any("warm / cold preload" in w for w in row["warnings"])
+    assert row["k_axial_warm_N_um"] == pytest.approx(st.preload["k_axial_warm_N_um"], rel=1e-6)
+    assert row["k_radial_warm_N_um"] == pytest.approx(st.preload["k_radial_warm_N_um"], rel=1e-6)
 
 
 def test_a_lost_preload_is_named_and_at_20000_rpm_the_speed_keeps_the_pair_preloaded(spindle):

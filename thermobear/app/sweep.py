@@ -28,7 +28,8 @@ Each row holds the grid values and ``P_W`` [W], ``torque_Nm`` [N m], ``breakdown
 class), ``reason``, ``iterations``, ``residual_K`` and ``warnings`` (the OutsideValidity messages);
 and the ratings `run` gives at their temperatures, ``L10m_h`` [h], ``kappa`` [-], ``s0`` [-] and
 ``clearance_operating_um`` [µm], with the ratings' warnings (a clearance consumed into a preload, a low κ, a load
-below the minimum); a preloaded pair's coupled rows ``preload_cold_N`` and ``preload_warm_N`` [N].
+below the minimum); a preloaded pair's coupled rows ``preload_cold_N`` and ``preload_warm_N`` [N] and the warm pair's
+stiffness ``k_axial_warm_N_um``, ``k_radial_warm_N_um`` [N/µm] (:data:`PAIR_STIFFNESS_COLUMNS`).
 """
 from __future__ import annotations
 
@@ -51,9 +52,11 @@ from thermobear.coupled.run import Prescribed
 from thermobear.models import moments, plan, plan_many
 from thermobear.scene import Scene
 
-__all__ = ["run_sweep", "sweep_points", "CHUNK"]
+__all__ = ["run_sweep", "sweep_points", "CHUNK", "PAIR_STIFFNESS_COLUMNS"]
 
 _VECTOR_KEYS = ("n_rpm", "T_C")          # vectorised inside one scene_losses call
+#: a preloaded pair's stiffness columns (its answer's ``preload`` keys: warm, at the point's speed) [N/µm]
+PAIR_STIFFNESS_COLUMNS = ("k_axial_warm_N_um", "k_radial_warm_N_um")
 CHUNK = 256                              #: most coupled points solved together (rows stream out per chunk)
 
 
@@ -105,7 +108,8 @@ def _row(point: dict, sc: Scene, st=None, exc=None, rated=None) -> dict:
     row.update(_ratings_columns(sc, rated, row["warnings"]))
     pre = getattr(st, "preload", None)                  # a preloaded pair: its warm preload at the point
     if pre:
-        row.update(preload_cold_N=float(pre["cold_N"]), preload_warm_N=float(pre["warm_N"]))
+        row.update(preload_cold_N=float(pre["cold_N"]), preload_warm_N=float(pre["warm_N"]),
+                   **{k: _finite_or_none(pre.get(k)) for k in PAIR_STIFFNESS_COLUMNS})
     return row
 
 

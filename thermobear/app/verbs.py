@@ -23,7 +23,7 @@ from thermobear.app.overrides import load_scene_with, overrides  # noqa: F401  (
 from thermobear.app.scaffold import scaffold
 from thermobear.app.rig import channel_map, compare, parse_map, read_log
 from thermobear.app.spindown import spin_down_runs
-from thermobear.app.sweep import run_sweep, sweep_points
+from thermobear.app.sweep import PAIR_STIFFNESS_COLUMNS, run_sweep, sweep_points
 from thermobear.contact.geometry import bearing, bearing_names
 from thermobear.contact.materials import material_names
 from thermobear.coupled import solve, transient
@@ -481,7 +481,8 @@ def _sweep_header(scene, grid) -> list:
         nodes.append("contacts (prescribed)")
     bd = SKF_BREAKDOWN_KEYS if scene.models.get("losses") == "skf" else BREAKDOWN_KEYS
     rated = ["L10m_h", "kappa", "s0", "clearance_operating_um"] + (
-        ["preload_cold_N", "preload_warm_N"] if coupled and getattr(scene, "arrangement", None) else [])
+        ["preload_cold_N", "preload_warm_N", *PAIR_STIFFNESS_COLUMNS] if coupled and getattr(scene, "arrangement", None)
+        else [])
     return (list(grid) + ["status", "reason", "P_W", "torque_Nm", "T_ball_C"] + rated + ["iterations", "residual_K"]
             + [f"breakdown_W.{k}" for k in bd] + [f"temperatures_C.{n}" for n in nodes]
             + [f"models.{k}" for k in _MODEL_COLUMNS] + ["warnings"])
