@@ -114,3 +114,24 @@ def test_an_axial_load_that_unloads_a_bearing_at_speed_is_refused_by_name():
     with pytest.raises(NoEquilibrium) as e:
         pair_loads(B, "back_to_back", 300.0, "position", 20000.0, 0.0, n_rpm=12000.0)
     assert e.value.field == "Fa, Fr, M (shaft loads)"
+
+
+@pytest.mark.parametrize("kind", ["position", "spring"])
+def test_a_solve_started_from_a_nearby_answer_is_the_same_answer(kind):
+    """shaft_loads_high_speed(start=answer) and pair_loads(start=...): the nearby answer's loads and its bearings'
+    ball equilibria start the solve (a heat-up's next piece); the answer is the cold start's to the tolerance, in
+    fewer Newton steps."""
+    pre = dict(preload_offset=pair_preload_offset(B, 300.0)) if kind == "position" else dict(preload_force=300.0)
+    sups, _ = duplex_supports(B, "back_to_back", **pre)
+    near_sups = warm_supports(sups, 18.0, 10.0, 24.0, n_rpm=12000.0)
+    far_sups = warm_supports(sups, 20.0, 10.0, 26.0, n_rpm=12000.0)
+    Fa, Fr = [0.0, 0.0], [2020.0, 0.0]
+    near = shaft_loads_high_speed(near_sups, Fa, Fr, 12000.0)
+    cold = shaft_loads_high_speed(far_sups, Fa, Fr, 12000.0)
+    warm = shaft_loads_high_speed(far_sups, Fa, Fr, 12000.0, start=near)
+    assert warm.reactions == pytest.approx(cold.reactions, rel=1e-8, abs=1e-6)
+    assert warm.q == pytest.approx(cold.q, rel=1e-7, abs=1e-12) and warm.iterations <= cold.iterations
+    a = pair_loads(B, "back_to_back", 300.0, kind, Fr=2020.0, dT_inner=18.0, dT_outer=10.0, n_rpm=12000.0)
+    b = pair_loads(B, "back_to_back", 300.0, kind, Fr=2020.0, dT_inner=20.0, dT_outer=10.0, n_rpm=12000.0, start=a)
+    c = pair_loads(B, "back_to_back", 300.0, kind, Fr=2020.0, dT_inner=20.0, dT_outer=10.0, n_rpm=12000.0)
+    assert (b.Fa, b.Fr, b.preload) == pytest.approx((c.Fa, c.Fr, c.preload), rel=1e-8)

@@ -335,6 +335,9 @@ def test_a_pairs_heat_up_bands_carry_its_preload_over_time(s004):
     assert np.all(np.diff(warm, axis=1) > 0) and np.all(Fa >= warm) and np.all(warm > 450.0)
     b = r.bands["preload.warm_N"]
     assert np.shape(b["p5"]) == (2,) and np.all(b["p5"] <= b["p95"]) and "preload.Fa_N" in r.bands
+    nominal = r.nominal.preload["series"]
+    assert r.nominal_values["preload.warm_N"] == pytest.approx(float(np.interp(60.0, nominal["t_s"],
+                                                                               nominal["preload_N"])), rel=1e-12)
     assert "preload.warm_N [N]" in r.summary()
 
 
@@ -411,3 +414,12 @@ def test_a_negative_seed_is_refused_by_name(capsys):
     assert e.value.field == "uncertainty.seed"
     assert main(["run", SEED004, "--uncertainty", "8", "--seed", "-1"]) == 2
     assert "error: uncertainty.seed = -1" in capsys.readouterr().err
+
+
+def test_cli_run_uncertainty_plots_the_bands_beside_its_design_answers(capsys, tmp_path):
+    """`run --uncertainty N --plot DIR` draws the temperature and power bands; the design answers' bands (κ, life,
+    clearance, a pair's preload and stiffness, in their own units) stay in the text's table, not on a power axis."""
+    assert main(["run", SEED004, "--uncertainty", "8", "--seed", "2", "--plot", str(tmp_path / "p")]) == 0
+    out = capsys.readouterr().out
+    assert (tmp_path / "p" / "bands_T.png").is_file() and (tmp_path / "p" / "bands_P.png").is_file()
+    assert "kappa [-]" in out and "L10m_h [h]" in out

@@ -498,7 +498,7 @@ def plot_bands(unc, outdir, title: str = "") -> list:
     d = Path(outdir)
     d.mkdir(parents=True, exist_ok=True)
     Tk = [k for k in unc.bands if k.startswith("T_C.")]
-    Pk = [k for k in unc.bands if not k.startswith("T_C.")]
+    Pk = [k for k in unc.bands if k == "P_W" or k.startswith("breakdown_W.")]   # (design answers: the text's table)
     nom = unc.nominal
     if unc.t_s is not None:
         t = np.asarray(unc.t_s, float)

@@ -303,31 +303,36 @@ class _Pair:
         except (InputError, SolverError):       # (a warm pair beyond the model even so: no lower end to give)
             return float("nan")
 
-    def stiffness(self, T: dict) -> dict:
+    def stiffness(self, T: dict) -> tuple:
         """The pair's axial and radial stiffness at its centre under the external loads [N/µm]
         (:func:`~thermobear.loads.pair.pair_loads` ``with_stiffness``): cold at rest (the catalogue's), cold at speed
-        and warm at speed (at ``T``), as ``k_{axial,radial}_{cold,at_speed_cold,warm}_N_um``; NaN where the loads have
-        no solution there."""
-        out = {}
+        and warm at speed (at ``T``), as ``k_{axial,radial}_{cold,at_speed_cold,warm}_N_um``, and the named warnings
+        of the states whose loads have no solution with the stiffness's load steps (those states left out)."""
+        out, warned = {}, []
         for state, temps, rest in (("cold", None, True), ("at_speed_cold", None, False), ("warm", T, False)):
             try:
                 k = scene_pair_loads(self.scene, temps, self.offset, with_stiffness=True, at_rest=rest).stiffness
-            except (InputError, SolverError):       # (a warm pair beyond the model: no stiffness to give)
-                k = (float("nan"),) * 2
+            except (InputError, SolverError) as exc:      # (a warm pair at the model's edge: no stiffness to give)
+                warned.append(OutsideValidity(
+                    f"pair stiffness {state.replace('_', ' ')}: not evaluated — the pair's loads with the stiffness's "
+                    f"load steps have no solution ({type(exc).__name__}: {' '.join(str(exc).split())[:160]})",
+                    quantity="pair stiffness", value=float("nan"), limit="the pair's loads solved",
+                    source="thermobear.loads.pair.pair_loads (with_stiffness)", field="bearing.preload_N"))
+                continue
             out.update({f"k_axial_{state}_N_um": k[0] * 1e-6, f"k_radial_{state}_N_um": k[1] * 1e-6})
-        return out
+        return out, warned
 
     def answer(self, r, used: PairLoads, T: dict, warm: float, res: float):
         """The point's state with its ``preload`` (loads used, warm preload, stiffness, history) and its models_used
         entry."""
         s, n = self.scene, max(len(self.hist), 1)
+        stiff, stiff_warned = self.stiffness(T)
         pre = dict(arrangement=s.arrangement, kind=self.kind, cold_N=s.preload_force,
                    at_speed_cold_N=self.cold.preload, form="static" if self.n_rpm is None else "high_speed", warm_N=warm,
                    warm_balls_at_rings_N=self.balls_at_rings(T, warm),
                    offset_um=None if self.offset is None else self.offset * 1e6, Fa_N=used.Fa, Fr_N=used.Fr,
                    Fa_other_N=used.Fa_other, loaded=used.loaded, external_Fa_N=s.Fa, external_Fr_N=s.Fr,
-                   **self.stiffness(T),
-                   iterations=n, residual_N=res, history=list(self.hist), temperatures_C=dict(T))
+                   **stiff, iterations=n, residual_N=res, history=list(self.hist), temperatures_C=dict(T))
         how = (f"spring: a constant {s.preload_force:.4g} N (no thermal change)" if self.kind == "spring" else
                f"position ({self.offset * 1e6:.3g} µm offset): {s.preload_force:.4g} N cold → {warm:.4g} N warm with the "
                f"inner ring {T['inner ring']:.1f} °C, outer ring {T['outer ring']:.1f} °C, balls {T['balls']:.1f} °C "
@@ -341,7 +346,8 @@ class _Pair:
                   f"Fr {used.Fr:.4g} N (the pair under Fa {s.Fa:.4g} N, Fr {s.Fr:.4g} N; the other bearing Fa "
                   f"{used.Fa_other:.4g} N; {form})")
         warned = r.warnings + [w for w in thermal_preload_warnings(s, warm, T, self.cold.preload if self.n_rpm
-                                                                                        else None) if str(w) not in map(str, r.warnings)]
+                                                                                        else None) + stiff_warned
+                               if str(w) not in map(str, r.warnings)]
         return dataclasses.replace(r, preload=pre, models_used={**r.models_used, "preload": (self.kind, reason)},
                                    warnings=warned)
 
@@ -407,12 +413,12 @@ def preload_lines(p: dict | None) -> list:
     bracket = ([f"  with the balls at the rings' mean instead ({0.5 * (T['inner ring'] + T['outer ring']):.1f} °C): "
                 f"{lo:.4g} N warm — the balls' temperature (the estimated ball–race conductance) makes the difference"]
                if p["kind"] == "position" and lo is not None and lo == lo else [])
-    k = {s: (p.get(f"k_axial_{s}_N_um"), p.get(f"k_radial_{s}_N_um")) for s in ("cold", "at_speed_cold", "warm")}
-    stiff = ([f"  stiffness at the pair's centre (axial, radial; the other displacements free): {k['warm'][0]:.4g}, "
-              f"{k['warm'][1]:.4g} N/µm warm" + (" at speed" if p.get("form") == "high_speed" else "") +
-              f"; cold {k['cold'][0]:.4g}, {k['cold'][1]:.4g} N/µm at rest" +
-              (f", {k['at_speed_cold'][0]:.4g}, {k['at_speed_cold'][1]:.4g} N/µm at speed"
-               if p.get("form") == "high_speed" else "")] if k["warm"][0] is not None else [])
+    fast = p.get("form") == "high_speed"
+    said = [f"{p[f'k_axial_{s}_N_um']:.4g}, {p[f'k_radial_{s}_N_um']:.4g} N/µm {what}"
+            for s, what in (("warm", "warm at speed" if fast else "warm"), ("cold", "cold at rest"),
+                            ("at_speed_cold", "cold at speed")) if f"k_axial_{s}_N_um" in p and (fast or s != "at_speed_cold")]
+    stiff = ([f"  stiffness at the pair's centre (axial, radial; the other displacements free): " + "; ".join(said)]
+             if said else [])
     return [head] + bracket + [f"  loaded bearing: Fa {p['Fa_N']:.4g} N, Fr {p['Fr_N']:.4g} N (the other Fa {p['Fa_other_N']:.4g} N) "
                   f"under the pair's Fa {p['external_Fa_N']:.4g} N, Fr {p['external_Fr_N']:.4g} N; inner ring "
                   f"{T['inner ring']:.1f} °C, outer ring {T['outer ring']:.1f} °C, balls {T['balls']:.1f} °C"] + stiff

@@ -247,7 +247,7 @@ def inner_seat(scene) -> dict:
     return out if ("shaft" in out or "I_inner_m" in out) else {}
 
 
-def scene_clearance(scene, T_C: dict, roles: dict, *, static=None, n_rpm=None) -> dict:
+def scene_clearance(scene, T_C: dict, roles: dict, *, static=None) -> dict:
     """Unmounted, mounted (fits at 20 °C) and operating diametral clearance [µm] of a scene's bearing at the node
     temperatures ``T_C`` (node → °C, or → an array of one per operating point: then the operating clearance and the
     temperatures are arrays too; ``roles``: role → node), with the scene's fits (``shaft_fit``, ``housing_fit``), else —
@@ -256,8 +256,8 @@ def scene_clearance(scene, T_C: dict, roles: dict, *, static=None, n_rpm=None) -
     and housing's materials), else the typical fits for its load (:func:`typical_fits`), as
     :func:`~thermobear.contact.fits.operating_clearance` gives them: the ring
     temperatures from the nodes ``inner_ring`` / ``outer_ring`` (else the inner / outer role), the balls', the
-    shaft's and housing's (else the ring's), the inner ring's speed when it rotates (``n_rpm``: the shaft's speeds
-    [rpm], one per operating point as the temperatures; default the scene's).
+    shaft's and housing's (else the ring's), the inner ring's speed when it rotates (:func:`_clearance_at`, which
+    :func:`scene_ratings_many` calls for groups of points).
 
     >>> import thermobear as tb
     >>> s = tb.load_scene(tb.example_path("oil_bath_6208.toml"))
@@ -266,9 +266,8 @@ def scene_clearance(scene, T_C: dict, roles: dict, *, static=None, n_rpm=None) -
     (1.69, 'k5 (13.5 µm)')
     """
     shaft, housing, seats, out = _fits(scene, static)
-    n = scene.n_rpm if n_rpm is None else np.asarray(n_rpm, float)
     return {**out, **_clearance_at(scene.bearing, shaft, housing, seats, T_C, roles,
-                                   n if scene.rotating == "inner" else 0.0 * n)}
+                                   scene.n_rpm if scene.rotating == "inner" else 0.0)}
 
 
 def _clearance_at(b, shaft, housing, seats: dict, T_C: dict, roles: dict, n_in) -> dict:

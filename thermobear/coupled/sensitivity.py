@@ -270,8 +270,8 @@ def summary_lines(res, top: int = 8) -> list:
     lines = [f"Uncertainty: {res.n} samples ({'Latin hypercube' if res.method == 'lhs' else 'scrambled Sobol'}, "
              f"seed {res.seed}; {len(res.inputs)} estimated inputs; {grouped} in {res.groups} "
              f"famil{'y' if res.groups == 1 else 'ies'}){t}", "",
-             f"  {'':26s} {'nominal':>9s} {'p5':>9s} {'p50':>9s} {'p95':>9s}"]
-    outside = 0
+             ""]
+    rows, outside = [], 0
     for key, b in res.bands.items():
         kind, _, name = key.partition(".")
         design = RATING_OUTPUTS.get(key) or PRELOAD_OUTPUTS.get(key)
@@ -282,14 +282,20 @@ def summary_lines(res, top: int = 8) -> list:
         out = v is not None and bool(np.isfinite(lo) and np.isfinite(hi)) and not lo <= v <= hi
         outside += out
         label = key if key in PRELOAD_OUTPUTS else (name or key)
-        lines.append(f"  {label + ' [' + unit + ']':26s} {'' if v is None else f'{v:9{f}}':>9s} "
-                     f"{last(b['p5']):9{f}} {last(b['p50']):9{f}} {last(b['p95']):9{f}}" + ("  *" if out else ""))
+        rows.append((f"{label} [{unit}]", f"{'' if v is None else f'{v:9{f}}':>9s} "
+                     f"{last(b['p5']):9{f}} {last(b['p50']):9{f}} {last(b['p95']):9{f}}" + ("  *" if out else "")))
+    w = max([26] + [len(a) for a, _ in rows])
+    lines[-1] = f"  {'':{w}s} {'nominal':>9s} {'p5':>9s} {'p50':>9s} {'p95':>9s}"
+    lines += [f"  {a:{w}s} {b}" for a, b in rows]
     if outside:
         lines += ["", "  * nominal outside its 5-95 % band: the nominal inputs are not the middle of their ranges "
                   "(a one-sided range, e.g. an estimate at its range's end), or the output is not monotonic in them"]
     fc = res.failed_count
     lines += ["", f"Failed samples: {len(res.failed)} of {res.n}" + (
         " (" + ", ".join(f"{k} {v}" for k, v in sorted(fc.items())) + ")" if fc else "")]
+    if any("Runaway" in k for k in fc):      # the hottest draws are the ones missing from the bands
+        lines.append("  (samples that run away are not in the bands: their p95 understates those draws — a runaway "
+                     "is the answer's upper end)")
     shown = [k for k in ("P_W", *(f"T_C.{n}" for n in res.focus), "preload.warm_N") if k in res.sensitivity]
     caveat = next((res.sensitivity[k]["caveat"] for k in shown if res.sensitivity[k].get("caveat")), None)
     if caveat:

@@ -459,8 +459,8 @@ def steady_outputs(results, scenes=None) -> dict:
 
 
 def preload_values(st: SteadyState) -> dict:
-    """A preloaded pair's answers of :data:`PRELOAD_OUTPUTS` (output name → value [N]) of a solved point (none
-    without a pair)."""
+    """A preloaded pair's answers of :data:`PRELOAD_OUTPUTS` (output name → value in its unit: N, N/µm) of a solved
+    point (none without a pair; NaN for a stiffness not evaluated)."""
     p = getattr(st, "preload", None)
     return {k: float(p.get(k.split(".", 1)[1], float("nan"))) for k in PRELOAD_OUTPUTS} if p else {}
 
@@ -645,7 +645,9 @@ def transient_uncertainty(scene: Scene, t_end_s: float, n: int, *, t_eval=None, 
     return UncertaintyResult(nominal=nominal, inputs=sm.inputs, X=sm.X, outputs=outputs, bands=bands(outputs),
                              sensitivity=ranking(sm.inputs, sm.X, {k: v[:, -1] for k, v in outputs.items()}, sensitivity),
                              failed=failed, n=sm.X.shape[0], seed=seed, method=method, groups=sm.groups,
-                             sensitivity_method=sensitivity, t_s=t_eval, group=sm.group, focus=_focus(scene, nominal.T_C))
+                             sensitivity_method=sensitivity, t_s=t_eval, group=sm.group, focus=_focus(scene, nominal.T_C),
+                             nominal_values={k: float(np.interp(t_eval[-1], nominal.t_s, v))     # (a pair's preload)
+                                             for k, v in _series(nominal).items() if k.startswith("preload.")})
 
 
 # --------------------------------------------------------------------------- the public entry points

@@ -276,7 +276,8 @@ def load_distribution_high_speed_full(brg: BallBearing, Fa=0.0, Fr=0.0, M=None, 
                         batch shape).  With ``film`` (the start dry, or with the film at other lubricant data): the
                         film solve starts from it instead of solving the dry contacts (its iterations are counted
                         as those of the dry solve).  Without: Newton starts from it instead of from the static
-                        solution (e.g. the last step's answer of an outer iteration on the loads); where it does
+                        solution (e.g. the last step's answer of an outer iteration on the loads; the static
+                        solve's refusals are not made then: a converged case has its equilibrium); where it does
                         not bring every case of the batch to ``tol``, the batch is solved from the static start
                         as without it.  Ignored where a case has no load at all
 

@@ -171,8 +171,9 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
     u_inner : float     the inner raceways' growth at ``n_rpm`` [m] (default: a free ring's,
                         :func:`~thermobear.contact.fits.raceway_growth`; on an interference seat
                         :func:`~thermobear.contact.fits.seated_raceway_growth`, less)
-    start : PairLoads   a nearby answer of the high-speed form (e.g. a heat-up's last) whose loads start its Newton
-                        iteration (default: the low-speed pair's); the answer is the same to the solver's tolerance
+    start : PairLoads   a nearby answer of the high-speed form (e.g. a heat-up's last) whose loads, and its
+                        bearings' ball equilibria, start the solve (default: the low-speed pair's loads); the answer is
+                        the same to the solver's tolerance
     with_stiffness : bool  also the pair's axial and radial stiffness under the external loads
                         (``PairLoads.stiffness``: the static form's from the shaft's stiffness matrix, the high-speed
                         form's by central differences over four more load cases in the same call)
@@ -236,7 +237,7 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
         pre = dict(preload_offset=offset)
     towards = ARRANGEMENTS[arrangement][0]          # the axial load on the first (held) bearing
     Fa2, Fr2 = [towards * float(Fa), 0.0], [float(Fr), 0.0]
-    h = _STIFFNESS_STEP * max(float(preload), float(Fa), float(Fr), 1.0)
+    h = _STIFFNESS_STEP * max(float(preload), float(Fa), float(Fr), 1.0) if with_stiffness else 0.0
     if with_stiffness and n_rpm is not None:        # the central differences' cases: Fa ± h, Fr ± h
         Fa2 += [towards * (float(Fa) + h), towards * (float(Fa) - h), towards * float(Fa), towards * float(Fa)]
         Fr2 += [float(Fr), float(Fr), float(Fr) + h, float(Fr) - h]
