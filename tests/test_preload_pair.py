@@ -13,7 +13,8 @@ import thermobear as tb
 from thermobear.app.cli import main
 from thermobear.app.sweep import run_sweep
 from thermobear.contact.fits import T_REF_C, seated_raceway_growth
-from thermobear.coupled.preload import PRELOAD_TOL_N, pair_scene, preload_step_runs_away, thermal_preload_warnings
+from thermobear.coupled.preload import (PRELOAD_TOL_N, pair_scene, preload_step_runs_away, scene_pair_loads,
+                                        thermal_preload_warnings)
 from thermobear.coupled.ratings import inner_seat
 from thermobear.coupled.speeds import din732_safe_speed
 from thermobear.errors import InputError, ThermalPreloadRunaway
@@ -465,3 +466,22 @@ def test_a_sweep_over_the_cold_preload_of_a_pair(tmp_path, capsys):
     capsys.readouterr()
     assert main(["sweep", SEED004, "--preload-N", "300,600", "--quiet"]) == 2
     assert "error: bearing.preload_N" in capsys.readouterr().err
+
+
+def test_the_loads_verb_gives_a_pairs_cold_loads_and_stiffness(capsys):
+    """`thermobear loads` on a pair scene (was refused): the pair at the mounting temperature, at rest (its cold
+    preload) and at the scene's speed, with the loaded bearing's loads and the pair's stiffness, and the loaded
+    bearing's ball loads at speed (the scene_pair_loads of run's first step)."""
+    ex = tb.example_path("spindle_7014C_pair_oil_air.toml")
+    assert main(["loads", ex, "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    s = tb.load_scene(ex)
+    fast = scene_pair_loads(s, None, with_stiffness=True)
+    assert d["pair"]["at_rest"]["preload_N"] == pytest.approx(300.0, rel=1e-9)
+    assert d["pair"]["at_speed"]["preload_N"] == pytest.approx(fast.preload, rel=1e-12)
+    assert d["pair"]["at_speed"]["k_axial_N_um"] == pytest.approx(fast.stiffness[0] * 1e-6, rel=1e-12)
+    assert d["Fa_N"] == pytest.approx(fast.Fa, rel=1e-12) and d["Fr_N"] == pytest.approx(fast.Fr, rel=1e-12)
+    assert d["high_speed"] and d["pair"]["at_speed"]["Fa_N"] > d["pair"]["at_rest"]["Fa_N"]
+    assert main(["loads", ex]) == 0
+    text = capsys.readouterr().out
+    assert "back-to-back pair, position preload 300 N cold" in text and "at 8000 rpm: preload 605.9 N" in text

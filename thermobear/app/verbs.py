@@ -27,6 +27,7 @@ from thermobear.app.sweep import PAIR_STIFFNESS_COLUMNS, run_sweep, sweep_points
 from thermobear.contact.geometry import bearing, bearing_names
 from thermobear.contact.materials import material_names
 from thermobear.coupled import solve, transient
+from thermobear.coupled.preload import cold_pair
 from thermobear.coupled.transient_pair import preload_line
 from thermobear.coupled.uncertainty import steady_uncertainty, transient_uncertainty
 from thermobear.errors import InputError, ThermalPreloadRunaway
@@ -164,6 +165,9 @@ def cmd_loads(args):
     scene = load_scene_with(args.scene, args.set)
     out = _plot_dir(getattr(args, "plot", None))
     check_static_safety(scene)                              # before any solve
+    pair = None
+    if scene.arrangement is not None:      # one bearing of a preloaded pair: the pair cold, the loaded bearing at speed
+        pair, pair_text, scene = cold_pair(scene)
     models = plan(scene)[0]
     fitted = models["clearance"][0] in ("mounted", "operating")
     if fitted:                     # the fits' clearance at 20 °C (the operating one needs the solved temperatures)
@@ -205,9 +209,13 @@ def cmd_loads(args):
                                        + ("; `run` solves the operating one" if models["clearance"][0] == "operating"
                                           else "") + ")"]))
     d["note"] = note
+    if pair:
+        d["pair"] = pair
     if args.json:
         print_json(d)
     else:
+        if pair:
+            print("\n".join(pair_text) + "\nthe loaded bearing at speed:")
         m = "" if scene.M is None else f", M = {scene.M:g} N m"
         m += "" if not scene.Fz else f", Fz = {scene.Fz:g} N"
         m += "" if scene.My is None else f", My = {scene.My:g} N m"

@@ -59,7 +59,7 @@ from thermobear.loads.pair import PairLoads, pair_loads, pair_preload_offset
 from thermobear.models import high_speed_control
 from thermobear.validity import check, collect
 
-__all__ = ["preload_loop", "pair_scene", "loaded_scene", "pair_temperatures", "pair_speed_rpm", "scene_pair_loads",
+__all__ = ["preload_loop", "pair_scene", "cold_pair", "loaded_scene", "pair_temperatures", "pair_speed_rpm", "scene_pair_loads",
            "preload_step_runs_away",
            "preload_lines", "PRELOAD_TOL_N"]
 
@@ -82,6 +82,26 @@ def pair_scene(scene, loads):
     Fa, Fr = (loads["Fa_N"], loads["Fr_N"]) if isinstance(loads, dict) else (loads.Fa, loads.Fr)
     return dataclasses.replace(scene, Fa=Fa, Fr=Fr, arrangement=None, preload_force=None, preload_kind=None,
                                pair_spacer=None)
+
+
+def cold_pair(scene) -> tuple:
+    """A pair scene's loads at the mounting temperature, as ``thermobear loads`` gives them: ``(data, lines,
+    loaded)`` — the pair's preload, the loaded bearing's loads and the pair's stiffness at rest and at the scene's
+    speed (:func:`scene_pair_loads`, the high-speed form where the inner ring rotates) as a JSON-ready dict [N, N/µm]
+    and text lines, and the loaded bearing's scene under its loads at speed (:func:`pair_scene`)."""
+    data, lines = {}, []
+    fast = pair_speed_rpm(scene) is not None
+    for state, rest in (("at_rest", True), ("at_speed", False)) if fast else (("at_rest", True),):
+        g = scene_pair_loads(scene, None, with_stiffness=True, at_rest=rest)
+        data[state] = dict(preload_N=g.preload, Fa_N=g.Fa, Fr_N=g.Fr, Fa_other_N=g.Fa_other,
+                           k_axial_N_um=g.stiffness[0] * 1e-6, k_radial_N_um=g.stiffness[1] * 1e-6)
+        lines.append(f"  {'at rest' if rest else f'at {scene.n_rpm:g} rpm'}: preload {g.preload:.4g} N; loaded bearing "
+                     f"Fa {g.Fa:.4g} N, Fr {g.Fr:.4g} N (the other Fa {g.Fa_other:.4g} N); stiffness axial "
+                     f"{g.stiffness[0] * 1e-6:.4g}, radial {g.stiffness[1] * 1e-6:.4g} N/µm")
+    head = (f"{scene.arrangement.replace('_', '-')} pair, {scene.preload_kind or 'position'} preload "
+            f"{scene.preload_force:g} N cold, under Fa {scene.Fa:g} N, Fr {scene.Fr:g} N, at the mounting temperature "
+            f"{T_REF_C:g} °C (warm: `thermobear run`, the thermal preload)")
+    return {"pair": head, **data}, [head] + lines, pair_scene(scene, g)
 
 
 def loaded_scene(scene, steady):
