@@ -31,8 +31,8 @@ def test_a_steady_run_does_not_load_them():
 
 def test_first_use_loads_the_module():
     code = ("import thermobear as tb\n"
-            "from thermobear.coupled import uncertainty\n"
-            "uncertainty.stats.qmc.LatinHypercube(d=2, rng=1).random(4)")
+            "from thermobear.coupled import sampling\n"
+            "sampling.stats.qmc.LatinHypercube(d=2, rng=1).random(4)")
     assert _loaded_after(code)["scipy.stats"] is True
 
 

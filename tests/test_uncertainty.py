@@ -423,3 +423,24 @@ def test_cli_run_uncertainty_plots_the_bands_beside_its_design_answers(capsys, t
     out = capsys.readouterr().out
     assert (tmp_path / "p" / "bands_T.png").is_file() and (tmp_path / "p" / "bands_P.png").is_file()
     assert "kappa [-]" in out and "L10m_h [h]" in out
+
+
+def test_heat_up_bands_in_worker_processes_are_the_same_bands(s004, capsys, monkeypatch):
+    """transient(..., uncertainty=N, processes=2): the geometry groups' heat-ups in worker processes give the outputs
+    of the samples run here, to the bit; bad counts are refused by name, and --processes without --uncertainty on
+    the command line (it would run nothing in a worker)."""
+    kw = dict(uncertainty=4, seed=1, t_eval=[30.0, 120.0])
+    here = tb.transient(s004, 120.0, **kw)
+    pools = []
+    real = unc.imap_unordered
+    monkeypatch.setattr(unc, "imap_unordered", lambda fn, jobs, n: pools.append(len(jobs)) or real(fn, jobs, n))
+    there = tb.transient(s004, 120.0, processes=2, **kw)
+    assert pools and pools[0] > 1                       # (the groups' heat-ups went to the workers)
+    assert set(here.outputs) == set(there.outputs) and here.failed == there.failed
+    for k, v in here.outputs.items():
+        assert np.array_equal(v, there.outputs[k], equal_nan=True), k
+    for bad in (0, 1.5, True):
+        with pytest.raises(InputError, match="processes"):
+            transient_uncertainty(s004, 10.0, 2, processes=bad)
+    assert main(["transient", SEED004, "--t-end", "10", "--processes", "2"]) == 2
+    assert "error: --processes" in capsys.readouterr().err

@@ -125,6 +125,21 @@ def _uncertainty_args(sp):
                         "(RBD-FAST, needs the 'sensitivity' extra: SALib)")
 
 
+def _transient_parser(sub):
+    tr = sub.add_parser("transient", help="heat-up of a scene: every node and the loss breakdown vs time")
+    tr.add_argument("scene")
+    tr.add_argument("--t-end", type=float, required=True, metavar="S", help="end time [s]")
+    tr.add_argument("--schedule", metavar="FILE.toml", help="[[step]] tables: t_s and n_rpm, Fa_N, Fr_N, ...")
+    tr.add_argument("--csv", metavar="OUT", help="write the time series as CSV")
+    tr.add_argument("--points", type=int, default=201, help="number of output times (default 201)")
+    tr.add_argument("--T0-C", dest="T0_C", type=float, default=None, help="start temperature [°C] (default ambient)")
+    _common(tr)
+    tr.add_argument("--processes", type=int, default=None,
+                    help="local worker processes for --uncertainty's heat-ups (default 1)")
+    _uncertainty_args(tr)
+    tr.set_defaults(func=cmd_transient)
+
+
 def _rig_args(sp):
     sp.add_argument("scene")
     sp.add_argument("log", help="rig log CSV (t_s / n_rpm, T_<name>_C, torque_Nm, ...)")
@@ -149,16 +164,7 @@ def build_parser() -> argparse.ArgumentParser:
     _uncertainty_args(r)
     r.set_defaults(func=cmd_run)
 
-    tr = sub.add_parser("transient", help="heat-up of a scene: every node and the loss breakdown vs time")
-    tr.add_argument("scene")
-    tr.add_argument("--t-end", type=float, required=True, metavar="S", help="end time [s]")
-    tr.add_argument("--schedule", metavar="FILE.toml", help="[[step]] tables: t_s and n_rpm, Fa_N, Fr_N, ...")
-    tr.add_argument("--csv", metavar="OUT", help="write the time series as CSV")
-    tr.add_argument("--points", type=int, default=201, help="number of output times (default 201)")
-    tr.add_argument("--T0-C", dest="T0_C", type=float, default=None, help="start temperature [°C] (default ambient)")
-    _common(tr)
-    _uncertainty_args(tr)
-    tr.set_defaults(func=cmd_transient)
+    _transient_parser(sub)
 
     sw = sub.add_parser("sweep", help="grid over speed, load, temperature, lubricant and a pair's preload (rows written as "
                         "they finish)",

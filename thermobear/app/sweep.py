@@ -34,8 +34,6 @@ stiffness ``k_axial_warm_N_um``, ``k_radial_warm_N_um`` [N/µm] (:data:`PAIR_STI
 from __future__ import annotations
 
 import itertools
-import multiprocessing
-import signal
 
 import numpy as np
 
@@ -50,6 +48,7 @@ from thermobear.coupled.preload import loaded_scene
 from thermobear.coupled.ratings import scene_ratings_many
 from thermobear.coupled.run import Prescribed
 from thermobear.models import moments, plan, plan_many
+from thermobear.parallel import imap_unordered
 from thermobear.scene import Scene
 
 __all__ = ["run_sweep", "sweep_points", "CHUNK", "PAIR_STIFFNESS_COLUMNS"]
@@ -268,12 +267,6 @@ def _blend_rows(parts) -> dict:
     return row
 
 
-def _worker_signals():
-    """Worker processes leave Ctrl-C to the parent, which terminates them (SIGTERM: end quietly)."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    signal.signal(signal.SIGTERM, signal.SIG_DFL)
-
-
 def _chunk_job(args):
     scene, idx, points = args
     return idx, _solve_chunk(scene, points)
@@ -296,17 +289,10 @@ def _coupled_local(scene, points, idx, processes, emit, scenes):
             for i, row in zip(part, _solve_chunk(scene, [points[i] for i in part], [scenes[i] for i in part], pre)):
                 emit(i, row)
         return
-    pool = multiprocessing.get_context().Pool(min(processes, len(chunks)), initializer=_worker_signals)
-    try:
-        for part, rows in pool.imap_unordered(_chunk_job, [(scene, part, [points[i] for i in part]) for part in chunks]):
-            for i, row in zip(part, rows):
-                emit(i, row)
-        pool.close()
-    except BaseException:                   # Ctrl-C, SIGTERM, an error: no worker outlives the sweep
-        pool.terminate()
-        raise
-    finally:
-        pool.join()
+    for part, rows in imap_unordered(_chunk_job, [(scene, part, [points[i] for i in part]) for part in chunks],
+                                     processes):          # (no worker outlives the sweep)
+        for i, row in zip(part, rows):
+            emit(i, row)
 
 
 def _coupled_dask(scene, points, idx, scheduler, emit):

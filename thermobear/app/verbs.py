@@ -377,6 +377,9 @@ def cmd_transient(args):
     schedule = read_schedule(args.schedule, scene, args.t_end) if args.schedule else []
     if args.uncertainty is not None:
         return _transient_bands(args, scene, schedule, T0, out_csv, out_dir)
+    if args.processes is not None:
+        raise InputError("--processes", args.processes, "worker processes run the heat-ups of --uncertainty N: give it, "
+                         "or leave --processes out (one heat-up runs in this process)")
     stop = {"flag": False}
 
     def halt(signum, frame):
@@ -450,7 +453,10 @@ def _transient_bands(args, scene, schedule, T0, out_csv, out_dir):
     if schedule:
         raise InputError("--schedule", args.schedule, "a heat-up with --uncertainty runs one operating point")
     t = np.linspace(0.0, args.t_end, args.points)
-    unc = transient_uncertainty(scene, args.t_end, args.uncertainty, t_eval=t, T0_C=T0, **kw)
+    if args.processes is not None and args.processes < 1:
+        raise InputError("--processes", args.processes, "must be >= 1")
+    unc = transient_uncertainty(scene, args.t_end, args.uncertainty, t_eval=t, T0_C=T0, processes=args.processes or 1,
+                                **kw)
     if out_csv:
         keys = list(unc.bands)
         header = ["t_s"] + [f"{k}_{q}" for k in keys for q in ("p5", "p50", "p95")]
