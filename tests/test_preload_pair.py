@@ -485,3 +485,19 @@ def test_the_loads_verb_gives_a_pairs_cold_loads_and_stiffness(capsys):
     assert main(["loads", ex]) == 0
     text = capsys.readouterr().out
     assert "back-to-back pair, position preload 300 N cold" in text and "at 8000 rpm: preload 605.9 N" in text
+
+
+def test_a_pairs_static_safety_is_its_loaded_bearings(capsys):
+    """The refused static safety (s0 < 0.5) of one bearing of a pair is checked on the loaded bearing's own loads,
+    not on the pair's external ones: a 200 kN preload is refused before any thermal solve (loads, transient), a
+    60 kN radial load on the pair — 30 kN on each bearing — is not."""
+    ex = tb.example_path("spindle_7014C_pair_oil_air.toml")
+    assert main(["loads", ex, "--set", "preload_N=200000"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("error: bearing.preload_N, operation (Fa_N, Fr_N)") and "cold at rest" in err
+    assert main(["loads", ex, "--set", "Fr_N=60000", "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    assert d["pair"]["at_rest"]["Fr_N"] == pytest.approx(30000.0) and d["Fr_N"] == pytest.approx(30000.0)
+    with pytest.raises(InputError, match="the pair's loaded bearing cold at speed") as e:
+        tb.transient(tb.load_scene(ex).with_(preload_N=200000.0), 10.0)
+    assert e.value.field == "bearing.preload_N, operation (Fa_N, Fr_N)"

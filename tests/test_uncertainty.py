@@ -444,3 +444,24 @@ def test_heat_up_bands_in_worker_processes_are_the_same_bands(s004, capsys, monk
             transient_uncertainty(s004, 10.0, 2, processes=bad)
     assert main(["transient", SEED004, "--t-end", "10", "--processes", "2"]) == 2
     assert "error: --processes" in capsys.readouterr().err
+
+
+def test_stop_with_worker_processes_ends_the_band_between_groups(s004):
+    """stop() with processes > 1 acts between the geometry groups: the first group answered, every later one counted
+    as stopped samples (as a heat-up stopped in this process), the workers ended."""
+    r = transient_uncertainty(s004, 60.0, 4, seed=1, t_eval=[60.0], processes=2, stop=lambda: True)
+    stopped = [k for k, v in r.failed.items() if "stopped" in v["message"]]
+    assert 0 < len(stopped) < 4 and len(r.failed) == len(stopped)
+    assert np.isfinite(r.outputs["P_W"]).sum() == 4 - len(stopped)
+
+
+def test_worker_processes_are_counted_as_they_must_be(s004):
+    from thermobear.parallel import check_processes, imap_unordered
+    assert check_processes(np.int64(2)) == 2
+    for bad in (0, -1, 1.0, True, "2"):
+        with pytest.raises(InputError, match="processes"):
+            check_processes(bad)
+    with pytest.raises(InputError, match="processes"):
+        list(imap_unordered(abs, [1, 2], 0))
+    with pytest.raises(InputError, match="uncertainty=N"):          # one heat-up: no worker to run it
+        tb.transient(s004, 10.0, processes=2)

@@ -8,7 +8,22 @@ from __future__ import annotations
 import multiprocessing
 import signal
 
-__all__ = ["imap_unordered", "worker_signals"]
+import numpy as np
+
+from thermobear.errors import InputError
+
+__all__ = ["check_processes", "imap_unordered", "worker_signals"]
+
+
+def check_processes(processes, field: str = "processes") -> int:
+    """The number of worker processes, checked: an integer ≥ 1 (InputError naming ``field`` otherwise).
+
+    >>> check_processes(2), check_processes(np.int64(3))
+    (2, 3)
+    """
+    if isinstance(processes, (bool, np.bool_)) or not isinstance(processes, (int, np.integer)) or processes < 1:
+        raise InputError(field, processes, "a number of worker processes >= 1")
+    return int(processes)
 
 
 def worker_signals():
@@ -26,7 +41,8 @@ def imap_unordered(fn, jobs: list, processes: int):
     >>> sorted(imap_unordered(abs, [-2, 3, -1], 2))
     [1, 2, 3]
     """
-    pool = multiprocessing.get_context().Pool(max(1, min(processes, len(jobs))), initializer=worker_signals)
+    pool = multiprocessing.get_context().Pool(max(1, min(check_processes(processes), len(jobs))),
+                                              initializer=worker_signals)
     try:
         yield from pool.imap_unordered(fn, jobs)
         pool.close()

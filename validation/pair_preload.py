@@ -8,14 +8,14 @@ says why), beside the limits the pair's model is pinned to:
 * the pair at rest without external load: its axial stiffness both bearings in parallel, 2 dF_a/dδ_a(F0) of one
   bearing (thermobear.loads.static), a spring pair's one bearing's; back-to-back = face-to-face by mirror symmetry;
 * the high-speed form at n = 0 against the static form (loads and stiffness);
-* the heat-up's end against the steady answer (within the heat-up's drift bound).
+* the heat-up's end against the steady answer (within the heat-up's drift bound);
+* the answer's cold stiffness against `thermobear loads`' (the same evaluation).
 
 Writes validation/report/pair_preload.md.  Run:  python validation/pair_preload.py   (≈ 30 s)
 """
 from __future__ import annotations
 
 import sys
-import time
 import warnings
 from pathlib import Path
 
@@ -25,6 +25,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import thermobear as tb  # noqa: E402
 from _common import write_report  # noqa: E402
 from thermobear.app.sweep import run_sweep  # noqa: E402
+from thermobear.coupled.preload import cold_pair  # noqa: E402
 from thermobear.loads.pair import pair_loads  # noqa: E402
 from thermobear.loads.static import load_distribution_static  # noqa: E402
 
@@ -63,22 +64,23 @@ def limits() -> list:
 
 
 def steady(s) -> tuple:
-    t0 = time.process_time()
+    """The example's steady answer and its cold states (``thermobear loads``: :func:`cold_pair`)."""
     st = quiet(tb.steady_state, s)
-    p = st.preload
+    p, cold = st.preload, cold_pair(s)[0]
     rows = ["| state | preload [N] | loaded bearing F_a [N] | axial stiffness [N/µm] | radial stiffness [N/µm] |",
             "|---|---|---|---|---|"]
-    cold = pair_loads(s.bearing, "back_to_back", 300.0, Fr=s.Fr, with_stiffness=True)
-    rows.append(f"| cold at rest | {cold.preload:.1f} | {cold.Fa:.1f} | {p['k_axial_cold_N_um']:.2f} | "
-                f"{p['k_radial_cold_N_um']:.1f} |")
-    rows.append(f"| cold at {s.n_rpm:g} rpm | {p['at_speed_cold_N']:.1f} | – | {p['k_axial_at_speed_cold_N_um']:.2f} | "
-                f"{p['k_radial_at_speed_cold_N_um']:.1f} |")
+    for name, c in (("cold at rest", cold["at_rest"]), (f"cold at {s.n_rpm:g} rpm", cold["at_speed"])):
+        rows.append(f"| {name} | {c['preload_N']:.1f} | {c['Fa_N']:.1f} | {c['k_axial_N_um']:.2f} | "
+                    f"{c['k_radial_N_um']:.1f} |")
     rows.append(f"| warm at {s.n_rpm:g} rpm (the answer) | {p['warm_N']:.1f} | {p['Fa_N']:.1f} | "
                 f"{p['k_axial_warm_N_um']:.2f} | {p['k_radial_warm_N_um']:.1f} |")
+    same = (p["k_axial_cold_N_um"] == cold["at_rest"]["k_axial_N_um"]
+            and p["k_axial_at_speed_cold_N_um"] == cold["at_speed"]["k_axial_N_um"])
     T = p["temperatures_C"]
     text = [f"Steady answer: P = {st.P_W:.2f} W; inner ring {T['inner ring']:.2f} °C, outer ring {T['outer ring']:.2f} °C, "
             f"balls {T['balls']:.2f} °C; fixed point in {p['iterations']} steps (residual {p['residual_N']:.1e} N); "
-            f"with the balls at the rings' mean {p['warm_balls_at_rings_N']:.1f} N ({time.process_time() - t0:.1f} s)."]
+            f"with the balls at the rings' mean {p['warm_balls_at_rings_N']:.1f} N.  The answer's cold stiffness "
+            f"{'is' if same else 'is NOT'} `thermobear loads`' (the same evaluation)."]
     return st, rows, text
 
 
@@ -95,15 +97,16 @@ def over_speed(s) -> list:
 
 
 def heat_up(s, st) -> list:
-    t0 = time.process_time()
+    """The example's 3600 s heat-up, its end against the steady answer (within the pieces' drift bound)."""
     r = quiet(tb.transient, s, 3600.0)
     p, k = r.preload, int(np.argmax(r.P_W))
+    apart = abs(p["end_N"] / st.preload["warm_N"] - 1.0)
     return [f"3600 s heat-up from 20 °C: {p['start_N']:.1f} N at the start → peak {p['peak_N']:.1f} N at "
             f"{p['peak_t_s']:.0f} s → {p['end_N']:.1f} N at the end ({p['pieces']} pieces of ≤ "
             f"{100 * p['drift_bound_rel']:.0f} % drift; the power peaks at {float(r.P_W[k]):.1f} W at {r.t_s[k]:.0f} s "
-            f"over the integrator's steps, {float(r.P_W[-1]):.1f} W at the end; {time.process_time() - t0:.1f} s); "
-            f"the steady answer "
-            f"{st.preload['warm_N']:.1f} N ({abs(p['end_N'] / st.preload['warm_N'] - 1.0):.1e} apart)."]
+            f"over the integrator's steps, {float(r.P_W[-1]):.1f} W at the end); the steady answer "
+            f"{st.preload['warm_N']:.1f} N: {apart:.1e} apart, "
+            f"{'within' if apart <= p['drift_bound_rel'] else 'OUTSIDE'} the drift bound."]
 
 
 def main() -> int:

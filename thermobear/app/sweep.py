@@ -48,7 +48,7 @@ from thermobear.coupled.preload import loaded_scene
 from thermobear.coupled.ratings import scene_ratings_many
 from thermobear.coupled.run import Prescribed
 from thermobear.models import moments, plan, plan_many
-from thermobear.parallel import imap_unordered
+from thermobear.parallel import check_processes, imap_unordered
 from thermobear.scene import Scene
 
 __all__ = ["run_sweep", "sweep_points", "CHUNK", "PAIR_STIFFNESS_COLUMNS"]
@@ -347,9 +347,7 @@ def run_sweep(scene: Scene, grid: dict, *, scheduler=None, processes: int | None
     """
     if not isinstance(scene, Scene):
         raise InputError("scene", type(scene).__name__, "a thermobear.scene.Scene")
-    if processes is not None and (isinstance(processes, bool) or not isinstance(processes, (int, np.integer))
-                                  or processes < 1):
-        raise InputError("processes", processes, "an integer >= 1")
+    processes = None if processes is None else check_processes(processes)
     points = sweep_points(grid)
     scenes = [scene.with_(**p) for p in points]          # validates every override first
     total = len(points)

@@ -27,6 +27,8 @@ from thermobear.app.sweep import PAIR_STIFFNESS_COLUMNS, run_sweep, sweep_points
 from thermobear.contact.geometry import bearing, bearing_names
 from thermobear.contact.materials import material_names
 from thermobear.coupled import solve, transient
+from thermobear.coupled.limits import emit
+from thermobear.parallel import check_processes
 from thermobear.coupled.preload import cold_pair
 from thermobear.coupled.transient_pair import preload_line
 from thermobear.coupled.uncertainty import steady_uncertainty, transient_uncertainty
@@ -164,10 +166,11 @@ def cmd_loads(args):
     per-ball loads and angles; ``--plot DIR`` draws the ball loads around the bearing."""
     scene = load_scene_with(args.scene, args.set)
     out = _plot_dir(getattr(args, "plot", None))
-    check_static_safety(scene)                              # before any solve
+    check_static_safety(scene)                              # before any solve (a pair: its loaded bearing's, below)
     pair = None
     if scene.arrangement is not None:      # one bearing of a preloaded pair: the pair cold, the loaded bearing at speed
-        pair, pair_text, scene = cold_pair(scene)
+        pair, pair_text, scene, pair_warned = cold_pair(scene)
+        emit(pair_warned)
     models = plan(scene)[0]
     fitted = models["clearance"][0] in ("mounted", "operating")
     if fitted:                     # the fits' clearance at 20 °C (the operating one needs the solved temperatures)
@@ -215,7 +218,8 @@ def cmd_loads(args):
         print_json(d)
     else:
         if pair:
-            print("\n".join(pair_text) + "\nthe loaded bearing at speed:")
+            print("\n".join(pair_text) + ("\nthe loaded bearing at speed:" if "at_speed" in pair else
+                                          "\nthe loaded bearing (the static form: its outer ring rotates):"))
         m = "" if scene.M is None else f", M = {scene.M:g} N m"
         m += "" if not scene.Fz else f", Fz = {scene.Fz:g} N"
         m += "" if scene.My is None else f", My = {scene.My:g} N m"
@@ -453,10 +457,8 @@ def _transient_bands(args, scene, schedule, T0, out_csv, out_dir):
     if schedule:
         raise InputError("--schedule", args.schedule, "a heat-up with --uncertainty runs one operating point")
     t = np.linspace(0.0, args.t_end, args.points)
-    if args.processes is not None and args.processes < 1:
-        raise InputError("--processes", args.processes, "must be >= 1")
-    unc = transient_uncertainty(scene, args.t_end, args.uncertainty, t_eval=t, T0_C=T0, processes=args.processes or 1,
-                                **kw)
+    procs = 1 if args.processes is None else check_processes(args.processes, "--processes")
+    unc = transient_uncertainty(scene, args.t_end, args.uncertainty, t_eval=t, T0_C=T0, processes=procs, **kw)
     if out_csv:
         keys = list(unc.bands)
         header = ["t_s"] + [f"{k}_{q}" for k in keys for q in ("p5", "p50", "p95")]
@@ -518,8 +520,8 @@ def _grid(args) -> dict:
 def cmd_sweep(args):
     out_csv, out_jsonl = check_out_file(args.csv, "--csv"), check_out_file(args.jsonl, "--jsonl")
     out_dir = _plot_dir(args.plot)
-    if args.processes is not None and args.processes < 1:
-        raise InputError("--processes", args.processes, "must be >= 1")
+    if args.processes is not None:
+        check_processes(args.processes, "--processes")
     scene = load_scene_with(args.scene, args.set)
     grid = _grid(args)
     for k, vals in grid.items():                 # every value of every axis checked before computing (and the

@@ -52,14 +52,14 @@ from __future__ import annotations
 import dataclasses
 
 from thermobear.contact.fits import T_REF_C, seated_raceway_growth
-from thermobear.coupled.ratings import _node_T, inner_seat
+from thermobear.coupled.ratings import _node_T, check_static_safety, inner_seat
 from thermobear.errors import (ContactLimit, InputError, NoConvergence, OutsideValidity, SolverError,
                                ThermalPreloadRunaway, ThermalRunaway)
 from thermobear.loads.pair import PairLoads, pair_loads, pair_preload_offset
 from thermobear.models import high_speed_control
 from thermobear.validity import check, collect
 
-__all__ = ["preload_loop", "pair_scene", "cold_pair", "loaded_scene", "pair_temperatures", "pair_speed_rpm", "scene_pair_loads",
+__all__ = ["preload_loop", "pair_scene", "cold_pair", "pair_state", "check_pair_static_safety", "loaded_scene", "pair_temperatures", "pair_speed_rpm", "scene_pair_loads",
            "preload_step_runs_away",
            "preload_lines", "PRELOAD_TOL_N"]
 
@@ -86,22 +86,56 @@ def pair_scene(scene, loads):
 
 def cold_pair(scene) -> tuple:
     """A pair scene's loads at the mounting temperature, as ``thermobear loads`` gives them: ``(data, lines,
-    loaded)`` — the pair's preload, the loaded bearing's loads and the pair's stiffness at rest and at the scene's
-    speed (:func:`scene_pair_loads`, the high-speed form where the inner ring rotates) as a JSON-ready dict [N, N/µm]
-    and text lines, and the loaded bearing's scene under its loads at speed (:func:`pair_scene`)."""
-    data, lines = {}, []
+    loaded, warnings)`` — the pair's preload, the loaded bearing's loads and the pair's stiffness at rest and at the
+    scene's speed (:func:`pair_state`; the high-speed form where the inner ring rotates) as a JSON-ready dict [N,
+    N/µm] and text lines, the loaded bearing's scene under its last loads (:func:`pair_scene`; each state's static
+    safety checked: :func:`~thermobear.coupled.ratings.check_static_safety`), and the named warnings of a stiffness
+    not evaluated."""
+    data, lines, warned = {}, [], []
     fast = pair_speed_rpm(scene) is not None
     for state, rest in (("at_rest", True), ("at_speed", False)) if fast else (("at_rest", True),):
-        g = scene_pair_loads(scene, None, with_stiffness=True, at_rest=rest)
-        data[state] = dict(preload_N=g.preload, Fa_N=g.Fa, Fr_N=g.Fr, Fa_other_N=g.Fa_other,
-                           k_axial_N_um=g.stiffness[0] * 1e-6, k_radial_N_um=g.stiffness[1] * 1e-6)
+        g, w = pair_state(scene, None, None, rest, state.replace("_", " "))
+        check_pair_static_safety(scene, g, "cold " + state.replace("_", " "))
+        warned += w
+        k = {} if g.stiffness is None else {"k_axial_N_um": g.stiffness[0] * 1e-6, "k_radial_N_um": g.stiffness[1] * 1e-6}
+        data[state] = dict(preload_N=g.preload, Fa_N=g.Fa, Fr_N=g.Fr, Fa_other_N=g.Fa_other, **k)
         lines.append(f"  {'at rest' if rest else f'at {scene.n_rpm:g} rpm'}: preload {g.preload:.4g} N; loaded bearing "
-                     f"Fa {g.Fa:.4g} N, Fr {g.Fr:.4g} N (the other Fa {g.Fa_other:.4g} N); stiffness axial "
-                     f"{g.stiffness[0] * 1e-6:.4g}, radial {g.stiffness[1] * 1e-6:.4g} N/µm")
+                     f"Fa {g.Fa:.4g} N, Fr {g.Fr:.4g} N (the other Fa {g.Fa_other:.4g} N)" + (
+                         f"; stiffness axial {k['k_axial_N_um']:.4g}, radial {k['k_radial_N_um']:.4g} N/µm" if k else
+                         "; stiffness not evaluated (warning)"))
     head = (f"{scene.arrangement.replace('_', '-')} pair, {scene.preload_kind or 'position'} preload "
             f"{scene.preload_force:g} N cold, under Fa {scene.Fa:g} N, Fr {scene.Fr:g} N, at the mounting temperature "
             f"{T_REF_C:g} °C (warm: `thermobear run`, the thermal preload)")
-    return {"pair": head, **data}, [head] + lines, pair_scene(scene, g)
+    return {"description": head, **data}, [head] + lines, pair_scene(scene, g), warned
+
+
+def check_pair_static_safety(scene, loads: PairLoads, state: str) -> None:
+    """Refuse (InputError naming the pair's preload and loads) a pair scene whose loaded bearing under ``loads`` (in
+    ``state``, e.g. "at rest") is beyond the refused static safety
+    (:func:`~thermobear.coupled.ratings.check_static_safety` of :func:`pair_scene`)."""
+    try:
+        check_static_safety(pair_scene(scene, loads))
+    except InputError as exc:
+        raise InputError("bearing.preload_N, operation (Fa_N, Fr_N)",
+                         f"preload {scene.preload_force:g} N, Fa {scene.Fa:g} N, Fr {scene.Fr:g} N",
+                         f"the pair's loaded bearing {state} carries Fa {loads.Fa:.4g} N, Fr {loads.Fr:.4g} N: "
+                         f"{exc.expected}") from None
+
+
+def pair_state(scene, T, offset: float | None, at_rest: bool, state: str) -> tuple:
+    """``(PairLoads, warnings)``: a pair scene's loads with its stiffness (:func:`scene_pair_loads` ``with_stiffness``)
+    at the temperatures ``T`` (None: the mounting temperature), at rest or at its speed; where the stiffness's load
+    steps have no solution (a pair at the model's edge), the loads alone (``stiffness`` None) and a named
+    OutsideValidity warning for ``state``.  A failure of the loads themselves is raised."""
+    try:
+        return scene_pair_loads(scene, T, offset, with_stiffness=True, at_rest=at_rest), []
+    except (InputError, SolverError) as exc:
+        g = scene_pair_loads(scene, T, offset, at_rest=at_rest)
+        return g, [OutsideValidity(
+            f"pair stiffness {state}: not evaluated — the pair's loads with the stiffness's load steps have no "
+            f"solution ({type(exc).__name__}: {' '.join(str(exc).split())[:160]})", quantity="pair stiffness",
+            value=float("nan"), limit="the pair's loads solved", source="thermobear.loads.pair.pair_loads (with_stiffness)",
+            field="bearing.preload_N")]
 
 
 def loaded_scene(scene, steady):
@@ -331,15 +365,12 @@ class _Pair:
         out, warned = {}, []
         for state, temps, rest in (("cold", None, True), ("at_speed_cold", None, False), ("warm", T, False)):
             try:
-                k = scene_pair_loads(self.scene, temps, self.offset, with_stiffness=True, at_rest=rest).stiffness
-            except (InputError, SolverError) as exc:      # (a warm pair at the model's edge: no stiffness to give)
-                warned.append(OutsideValidity(
-                    f"pair stiffness {state.replace('_', ' ')}: not evaluated — the pair's loads with the stiffness's "
-                    f"load steps have no solution ({type(exc).__name__}: {' '.join(str(exc).split())[:160]})",
-                    quantity="pair stiffness", value=float("nan"), limit="the pair's loads solved",
-                    source="thermobear.loads.pair.pair_loads (with_stiffness)", field="bearing.preload_N"))
-                continue
-            out.update({f"k_axial_{state}_N_um": k[0] * 1e-6, f"k_radial_{state}_N_um": k[1] * 1e-6})
+                g, w = pair_state(self.scene, temps, self.offset, rest, state.replace("_", " "))
+            except (InputError, SolverError):   # (its loads solved in the loop: not reached; no stiffness to give)
+                g, w = None, []
+            warned += w
+            if g is not None and g.stiffness is not None:
+                out.update({f"k_axial_{state}_N_um": g.stiffness[0] * 1e-6, f"k_radial_{state}_N_um": g.stiffness[1] * 1e-6})
         return out, warned
 
     def answer(self, r, used: PairLoads, T: dict, warm: float, res: float):

@@ -82,10 +82,14 @@ def check_static_safety(scene, C0=None) -> None:
     ... except InputError as e:
     ...     print(str(e)[:94])
     operation (Fa_N, Fr_N, Fz_N) = 'Fa 0 N, Fr 40000 N' — static safety s0 0.4971 - must be >= 0.5
+
+    One bearing of a preloaded pair (``arrangement``) is checked under its own loads where the pair's are solved
+    (its cold loads at speed before a heat-up's or a steady loop's first thermal solve, each step and piece after,
+    ``thermobear loads``): the pair's external loads are not one bearing's.
     """
     b = scene.bearing
-    if b.kind == "thrust" and (scene.Fr or scene.Fz):
-        return                                    # no ISO P0 for it: the load solvers say what is wrong
+    if b.kind == "thrust" and (scene.Fr or scene.Fz) or getattr(scene, "arrangement", None) is not None:
+        return                                    # (thrust: no ISO P0 for it, the load solvers say what is wrong)
     C0 = stated_ratings(b)[1] if C0 is None else C0
     P0 = float(static_equivalent_load(float(np.hypot(scene.Fr, scene.Fz)), float(scene.Fa), rating_angle(b), b.kind))
     if P0 > 0:

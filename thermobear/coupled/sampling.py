@@ -9,7 +9,7 @@ levels, one family each.
 from __future__ import annotations
 import dataclasses
 import warnings
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 

@@ -58,6 +58,7 @@ from thermobear.coupled.clearance import heat_up_preload_warnings, preload_runaw
 from thermobear.coupled.ratings import check_static_safety, scene_clearance
 from thermobear.coupled.pipeline import Family, family_film_loads, family_loads, film_temperature_C, stack_loads
 from thermobear.coupled.pointmodel import PointModel, heat_sources, point_model
+from thermobear.coupled.preload import check_pair_static_safety, scene_pair_loads
 from thermobear.coupled.sources import loss_sources, prepared_for
 from thermobear.coupled.transient_pair import load_follower
 from thermobear.errors import InputError, OutsideValidity, SolverError, ThermalPreloadRunaway, ThermalRunaway
@@ -205,8 +206,11 @@ def transient(scene: Scene, t_end_s: float, *, schedule=None, T0_C=None, t_eval=
         boundary, scene = _imposed(boundary, scene, t_end_s)
     segments = _segments(scene, schedule, t_end_s)
     for t_s, sc in segments:                                    # every step's loads, before any solve
-        try:
-            check_static_safety(sc)
+        try:                                                    # (a pair: its loaded bearing, cold at speed)
+            if sc.arrangement is None:
+                check_static_safety(sc)
+            else:
+                check_pair_static_safety(sc, scene_pair_loads(sc, None), "cold at speed")
         except InputError as exc:
             if t_s == 0.0:
                 raise
@@ -342,7 +346,7 @@ def _run(pieces, scene, T0_C, t_eval, rtol, atol, load, stop, pre, boundary, fol
             settling.warning = _settled_jump(kept, alts, load, pre, fc, T_state, cp.roles, last_film,
                                              te - settling.started.get(id(sc), ts), te)
     got = []
-    if out_t:
+    if out_t and np.concatenate(out_t).size:        # (stopped before its first output time: no warnings to give)
         ro, cat = first[1], np.concatenate
         Tb = cat(out_T[ro["ball"]])
         x = [0.5 * (Tb + cat(out_T[ro["inner"]])), 0.5 * (Tb + cat(out_T[ro["outer"]])), cat(out_T[ro["oil"]])]

@@ -74,7 +74,7 @@ from thermobear.coupled import transient as _transient
 from thermobear.coupled.steady import SteadyState, steady_states
 from thermobear.coupled.transient import PointModel, heat_sources
 from thermobear.errors import InputError, OutsideValidity, SolverError
-from thermobear.parallel import imap_unordered
+from thermobear.parallel import check_processes, imap_unordered
 from thermobear.models import plan_many
 from thermobear.scene import Scene
 from thermobear.thermal import solve_transient
@@ -362,11 +362,11 @@ def transient_uncertainty(scene: Scene, t_end_s: float, n: int, *, t_eval=None, 
     :mod:`thermobear.coupled.transient_pair`), with bands over its preload at the temperatures (``preload.warm_N``)
     and the loaded bearing's axial load (``preload.Fa_N``); a sample whose preload runs away counts as failed,
     named (ThermalPreloadRunaway).  ``processes`` > 1: the geometry groups' heat-ups in that many worker processes
-    (:func:`thermobear.parallel.imap_unordered`; the same answers; ``stop`` then acts between groups only: Ctrl-C
-    ends the workers).
+    (:func:`thermobear.parallel.imap_unordered`; the same answers; a scene without family-level inputs has one group:
+    one process); ``stop`` then acts between groups (the groups not run count as stopped samples; Ctrl-C ends the
+    workers).
     """
-    if not (isinstance(processes, int) and not isinstance(processes, bool) and processes >= 1):
-        raise InputError("processes", processes, "a number of worker processes >= 1")
+    processes = check_processes(processes)
     t_eval = np.linspace(0.0, t_end_s, 51)[1:] if t_eval is None else np.asarray(t_eval, float)
     nominal = nominal if nominal is not None else _transient.transient(scene, t_end_s, t_eval=t_eval, T0_C=T0_C,
                                                                        rtol=rtol, atol=atol, stop=stop, boundary=boundary)
@@ -385,12 +385,18 @@ def transient_uncertainty(scene: Scene, t_end_s: float, n: int, *, t_eval=None, 
                 warnings.simplefilter("ignore", OutsideValidity)
                 got = _heatups(sc, t_end_s, t_eval, T0_C, rtol, atol, stop, boundary)
             yield (g, *got)
+    pending = set(members)
     for g, series, bad in (imap_unordered(_group_heatups, jobs, processes) if processes > 1 and len(jobs) > 1
                            else here()):
+        pending.discard(g)
         idx = members[g]
         failed.update({idx[j]: _fail(e) for j, e in bad.items()})
         for name, v in series.items():
             outputs.setdefault(name, np.full((len(sm.scenes), t_eval.size), np.nan))[idx] = v
+        if stop is not None and processes > 1 and pending and stop():      # (the workers end with the loop)
+            failed.update({k: {"error": "SolverError", "message": "the heat-up was stopped before its end"}
+                           for h in pending for k in members[h]})
+            break
     return UncertaintyResult(nominal=nominal, inputs=sm.inputs, X=sm.X, outputs=outputs, bands=bands(outputs),
                              sensitivity=ranking(sm.inputs, sm.X, {k: v[:, -1] for k, v in outputs.items()}, sensitivity),
                              failed=failed, n=sm.X.shape[0], seed=seed, method=method, groups=sm.groups,
@@ -436,6 +442,9 @@ def transient(scene: Scene, t_end_s: float, *, uncertainty: int | None = None, s
     :class:`UncertaintyResult` whose ``nominal`` is the heat-up and whose bands run over ``t_s``.
     """
     if uncertainty is None:
+        if check_processes(processes) != 1:
+            raise InputError("processes", processes, "worker processes run the heat-ups of an uncertainty band: give "
+                             "uncertainty=N, or processes=1 (one heat-up runs in this process)")
         return _transient.transient(scene, t_end_s, schedule=schedule, T0_C=T0_C, t_eval=t_eval, rtol=rtol, atol=atol,
                                     load=load, stop=stop, prepared=prepared, boundary=boundary)
     if schedule or load is not None:
