@@ -120,3 +120,11 @@ def test_sweep_interrupted_before_its_first_row_says_nothing_was_written(tmp_pat
     assert main(["sweep", SCENE, "--n-rpm", "2000:8000:4", "--csv", str(out), "--quiet"]) == 130
     err = capsys.readouterr().err
     assert not out.exists() and "interrupted before the first of 4 rows finished: nothing written" in err
+
+
+def test_a_heat_up_stopped_before_its_first_output_time_returns_empty():
+    """stop() at once: a machine with a seal node (its seal temperature is asked of the output times) returns its
+    run, empty and not completed, instead of failing on an empty array."""
+    s = tb.load_scene(tb.example_path("block_6208_grease.toml"))
+    r = tb.transient(s, 30.0, t_eval=[10.0, 30.0], stop=lambda: True)
+    assert not r.completed and r.t_s.size == 0
