@@ -310,6 +310,7 @@ def test_sweep_rows_of_a_pair_carry_its_warm_preload():
     assert row["preload_warm_N"] > 2 * row["preload_cold_N"] and any("warm / cold preload" in w for w in row["warnings"])
     assert row["k_axial_warm_N_um"] == pytest.approx(st.preload["k_axial_warm_N_um"], rel=1e-6)
     assert row["k_radial_warm_N_um"] == pytest.approx(st.preload["k_radial_warm_N_um"], rel=1e-6)
+    assert row["k_tilt_warm_Nm_mrad"] == pytest.approx(st.preload["k_tilt_warm_Nm_mrad"], rel=1e-6)
 
 
 def test_a_lost_preload_is_named_and_at_20000_rpm_the_speed_keeps_the_pair_preloaded(spindle):
@@ -480,6 +481,7 @@ def test_the_loads_verb_gives_a_pairs_cold_loads_and_stiffness(capsys):
     assert d["pair"]["at_rest"]["preload_N"] == pytest.approx(300.0, rel=1e-9)
     assert d["pair"]["at_speed"]["preload_N"] == pytest.approx(fast.preload, rel=1e-12)
     assert d["pair"]["at_speed"]["k_axial_N_um"] == pytest.approx(fast.stiffness[0] * 1e-6, rel=1e-12)
+    assert d["pair"]["at_speed"]["k_tilt_Nm_mrad"] == pytest.approx(fast.stiffness[2] * 1e-3, rel=1e-12)
     assert d["Fa_N"] == pytest.approx(fast.Fa, rel=1e-12) and d["Fr_N"] == pytest.approx(fast.Fr, rel=1e-12)
     assert d["high_speed"] and d["pair"]["at_speed"]["Fa_N"] > d["pair"]["at_rest"]["Fa_N"]
     assert main(["loads", ex]) == 0

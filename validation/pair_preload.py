@@ -54,6 +54,11 @@ def limits() -> list:
     row("a spring pair's axial stiffness [N/µm] vs dF_a/dδ_a(F0) of one bearing", ks[0] * 1e-6, k1 * 1e-6)
     kf = pair_loads(b, "face_to_face", F0, with_stiffness=True).stiffness
     row("radial stiffness, face to face vs back to back [N/µm]", kf[1] * 1e-6, k[1] * 1e-6)
+    for name, kk, a in (("back to back", k, 0.5 * b.width + 0.5 * b.dm * np.tan(b.alpha0)),
+                        ("face to face", kf, abs(0.5 * b.width - 0.5 * b.dm * np.tan(b.alpha0)))):
+        row(f"tilt stiffness {name} [N m/mrad] ≥ 2 k_r,1 a², the bearings' radial stiffness at its pressure centres "
+            f"(a = {a * 1e3:.2f} mm; a lower bound: the bearings' own moment stiffness adds)", kk[2] * 1e-3,
+            k[1] * a ** 2 * 1e-3)
     for Fr in (0.0, 2020.0):
         st = pair_loads(b, "back_to_back", F0, Fr=Fr, with_stiffness=True)
         n0 = pair_loads(b, "back_to_back", F0, Fr=Fr, n_rpm=0.0, with_stiffness=True)
@@ -67,13 +72,13 @@ def steady(s) -> tuple:
     """The example's steady answer and its cold states (``thermobear loads``: :func:`cold_pair`)."""
     st = quiet(tb.steady_state, s)
     p, cold = st.preload, cold_pair(s)[0]
-    rows = ["| state | preload [N] | loaded bearing F_a [N] | axial stiffness [N/µm] | radial stiffness [N/µm] |",
-            "|---|---|---|---|---|"]
+    rows = ["| state | preload [N] | loaded bearing F_a [N] | axial stiffness [N/µm] | radial stiffness [N/µm] | "
+            "tilt stiffness [N m/mrad] |", "|---|---|---|---|---|---|"]
     for name, c in (("cold at rest", cold["at_rest"]), (f"cold at {s.n_rpm:g} rpm", cold["at_speed"])):
         rows.append(f"| {name} | {c['preload_N']:.1f} | {c['Fa_N']:.1f} | {c['k_axial_N_um']:.2f} | "
-                    f"{c['k_radial_N_um']:.1f} |")
+                    f"{c['k_radial_N_um']:.1f} | {c['k_tilt_Nm_mrad']:.1f} |")
     rows.append(f"| warm at {s.n_rpm:g} rpm (the answer) | {p['warm_N']:.1f} | {p['Fa_N']:.1f} | "
-                f"{p['k_axial_warm_N_um']:.2f} | {p['k_radial_warm_N_um']:.1f} |")
+                f"{p['k_axial_warm_N_um']:.2f} | {p['k_radial_warm_N_um']:.1f} | {p['k_tilt_warm_Nm_mrad']:.1f} |")
     same = (p["k_axial_cold_N_um"] == cold["at_rest"]["k_axial_N_um"]
             and p["k_axial_at_speed_cold_N_um"] == cold["at_speed"]["k_axial_N_um"])
     T = p["temperatures_C"]
@@ -86,13 +91,13 @@ def steady(s) -> tuple:
 
 def over_speed(s) -> list:
     rows = quiet(run_sweep, s, {"n_rpm": list(SPEEDS)}, processes=1)
-    out = ["| n [rpm] | status | P [W] | warm preload [N] | axial stiffness warm [N/µm] | radial stiffness warm [N/µm] |",
-           "|---|---|---|---|---|---|"]
+    out = ["| n [rpm] | status | P [W] | warm preload [N] | axial stiffness warm [N/µm] | radial stiffness warm [N/µm] | "
+           "tilt stiffness warm [N m/mrad] |", "|---|---|---|---|---|---|---|"]
     for r in rows:
         ok = r["status"] == "ok"
         out.append(f"| {r['n_rpm']:g} | {r['status']} | " + (
-            f"{r['P_W']:.1f} | {r['preload_warm_N']:.0f} | {r['k_axial_warm_N_um']:.1f} | {r['k_radial_warm_N_um']:.0f} |"
-            if ok else "– | – | – | – |"))
+            f"{r['P_W']:.1f} | {r['preload_warm_N']:.0f} | {r['k_axial_warm_N_um']:.1f} | {r['k_radial_warm_N_um']:.0f} | "
+            f"{r['k_tilt_warm_Nm_mrad']:.0f} |" if ok else "– | – | – | – | – |"))
     return out
 
 

@@ -29,7 +29,8 @@ class), ``reason``, ``iterations``, ``residual_K`` and ``warnings`` (the Outside
 and the ratings `run` gives at their temperatures, ``L10m_h`` [h], ``kappa`` [-], ``s0`` [-] and
 ``clearance_operating_um`` [µm], with the ratings' warnings (a clearance consumed into a preload, a low κ, a load
 below the minimum); a preloaded pair's coupled rows ``preload_cold_N`` and ``preload_warm_N`` [N] and the warm pair's
-stiffness ``k_axial_warm_N_um``, ``k_radial_warm_N_um`` [N/µm] (:data:`PAIR_STIFFNESS_COLUMNS`).
+stiffness ``k_axial_warm_N_um``, ``k_radial_warm_N_um`` [N/µm], ``k_tilt_warm_Nm_mrad`` [N m/mrad]
+(:data:`PAIR_STIFFNESS_COLUMNS`).
 """
 from __future__ import annotations
 
@@ -54,8 +55,8 @@ from thermobear.scene import Scene
 __all__ = ["run_sweep", "sweep_points", "CHUNK", "PAIR_STIFFNESS_COLUMNS"]
 
 _VECTOR_KEYS = ("n_rpm", "T_C")          # vectorised inside one scene_losses call
-#: a preloaded pair's stiffness columns (its answer's ``preload`` keys: warm, at the point's speed) [N/µm]
-PAIR_STIFFNESS_COLUMNS = ("k_axial_warm_N_um", "k_radial_warm_N_um")
+#: a preloaded pair's stiffness columns (its answer's ``preload`` keys: warm, at the point's speed) [N/µm, N m/mrad]
+PAIR_STIFFNESS_COLUMNS = ("k_axial_warm_N_um", "k_radial_warm_N_um", "k_tilt_warm_Nm_mrad")
 CHUNK = 256                              #: most coupled points solved together (rows stream out per chunk)
 
 

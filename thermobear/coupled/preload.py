@@ -97,11 +97,13 @@ def cold_pair(scene) -> tuple:
         g, w = pair_state(scene, None, None, rest, state.replace("_", " "))
         check_pair_static_safety(scene, g, "cold " + state.replace("_", " "))
         warned += w
-        k = {} if g.stiffness is None else {"k_axial_N_um": g.stiffness[0] * 1e-6, "k_radial_N_um": g.stiffness[1] * 1e-6}
+        k = {} if g.stiffness is None else {"k_axial_N_um": g.stiffness[0] * 1e-6, "k_radial_N_um": g.stiffness[1] * 1e-6,
+                                            "k_tilt_Nm_mrad": g.stiffness[2] * 1e-3}
         data[state] = dict(preload_N=g.preload, Fa_N=g.Fa, Fr_N=g.Fr, Fa_other_N=g.Fa_other, **k)
         lines.append(f"  {'at rest' if rest else f'at {scene.n_rpm:g} rpm'}: preload {g.preload:.4g} N; loaded bearing "
                      f"Fa {g.Fa:.4g} N, Fr {g.Fr:.4g} N (the other Fa {g.Fa_other:.4g} N)" + (
-                         f"; stiffness axial {k['k_axial_N_um']:.4g}, radial {k['k_radial_N_um']:.4g} N/µm" if k else
+                         f"; stiffness axial {k['k_axial_N_um']:.4g}, radial {k['k_radial_N_um']:.4g} N/µm, tilt "
+                         f"{k['k_tilt_Nm_mrad']:.4g} N m/mrad" if k else
                          "; stiffness not evaluated (warning)"))
     head = (f"{scene.arrangement.replace('_', '-')} pair, {scene.preload_kind or 'position'} preload "
             f"{scene.preload_force:g} N cold, under Fa {scene.Fa:g} N, Fr {scene.Fr:g} N, at the mounting temperature "
@@ -360,7 +362,8 @@ class _Pair:
     def stiffness(self, T: dict) -> tuple:
         """The pair's axial and radial stiffness at its centre under the external loads [N/µm]
         (:func:`~thermobear.loads.pair.pair_loads` ``with_stiffness``): cold at rest (the catalogue's), cold at speed
-        and warm at speed (at ``T``), as ``k_{axial,radial}_{cold,at_speed_cold,warm}_N_um``, and the named warnings
+        and warm at speed (at ``T``), as ``k_{axial,radial}_{cold,at_speed_cold,warm}_N_um`` and
+        ``k_tilt_{...}_Nm_mrad`` [N m/mrad], and the named warnings
         of the states whose loads have no solution with the stiffness's load steps (those states left out)."""
         out, warned = {}, []
         for state, temps, rest in (("cold", None, True), ("at_speed_cold", None, False), ("warm", T, False)):
@@ -370,7 +373,8 @@ class _Pair:
                 g, w = None, []
             warned += w
             if g is not None and g.stiffness is not None:
-                out.update({f"k_axial_{state}_N_um": g.stiffness[0] * 1e-6, f"k_radial_{state}_N_um": g.stiffness[1] * 1e-6})
+                out.update({f"k_axial_{state}_N_um": g.stiffness[0] * 1e-6, f"k_radial_{state}_N_um": g.stiffness[1] * 1e-6,
+                            f"k_tilt_{state}_Nm_mrad": g.stiffness[2] * 1e-3})
         return out, warned
 
     def answer(self, r, used: PairLoads, T: dict, warm: float, res: float):
@@ -465,10 +469,10 @@ def preload_lines(p: dict | None) -> list:
                 f"{lo:.4g} N warm — the balls' temperature (the estimated ball–race conductance) makes the difference"]
                if p["kind"] == "position" and lo is not None and lo == lo else [])
     fast = p.get("form") == "high_speed"
-    said = [f"{p[f'k_axial_{s}_N_um']:.4g}, {p[f'k_radial_{s}_N_um']:.4g} N/µm {what}"
+    said = [f"{p[f'k_axial_{s}_N_um']:.4g}, {p[f'k_radial_{s}_N_um']:.4g} N/µm, {p[f'k_tilt_{s}_Nm_mrad']:.4g} N m/mrad {what}"
             for s, what in (("warm", "warm at speed" if fast else "warm"), ("cold", "cold at rest"),
                             ("at_speed_cold", "cold at speed")) if f"k_axial_{s}_N_um" in p and (fast or s != "at_speed_cold")]
-    stiff = ([f"  stiffness at the pair's centre (axial, radial; the other displacements free): " + "; ".join(said)]
+    stiff = ([f"  stiffness at the pair's centre (axial, radial, tilt; the other displacements free): " + "; ".join(said)]
              if said else [])
     return [head] + bracket + [f"  loaded bearing: Fa {p['Fa_N']:.4g} N, Fr {p['Fr_N']:.4g} N (the other Fa {p['Fa_other_N']:.4g} N) "
                   f"under the pair's Fa {p['external_Fa_N']:.4g} N, Fr {p['external_Fr_N']:.4g} N; inner ring "

@@ -576,9 +576,9 @@ RATING_OUTPUTS = {"ratings.T_operating_C": "°C", "ratings.kappa": "-", "ratings
                   "ratings.clearance_op_um": "µm"}
 
 #: a preloaded pair's answers an uncertainty band gives (:mod:`thermobear.coupled.preload`): the warm preload, the
-#: loaded bearing's axial load and the warm pair's axial and radial stiffness → unit
+#: loaded bearing's axial load and the warm pair's axial, radial and tilt stiffness → unit
 PRELOAD_OUTPUTS = {"preload.warm_N": "N", "preload.Fa_N": "N", "preload.k_axial_warm_N_um": "N/µm",
-                   "preload.k_radial_warm_N_um": "N/µm"}
+                   "preload.k_radial_warm_N_um": "N/µm", "preload.k_tilt_warm_Nm_mrad": "N m/mrad"}
 
 
 def rating_samples(scenes, states) -> dict:

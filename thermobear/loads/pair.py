@@ -34,11 +34,15 @@ rigid rings, no centrifugal terms.
 Stiffness (``with_stiffness``): of the pair at its centre under the external loads, the outer rings held (a rigid
 housing), each stiffness with the shaft's other displacements free — the compliance's diagonal
 
-.. math:: k_a = 1 / C_{aa}, \qquad k_r = 1 / C_{rr}, \qquad C = K^{-1}, \quad K = \partial P_{ext} / \partial q
+.. math:: k_a = 1 / C_{aa}, \quad k_r = 1 / C_{rr}, \quad k_θ = 1 / C_{θθ}, \qquad C = K^{-1},
+          \quad K = \partial P_{ext} / \partial q
 
 (the static form's K the shaft's own, :class:`~thermobear.loads.sets.ShaftLoads` ``stiffness``; at speed the same
-by central differences of the shaft's displacement over Fa ± h, Fr ± h, h = 10⁻³ of the larger of the preload and
-the loads).  Without external load a position-preloaded pair's axial stiffness is both bearings in parallel,
+by central differences of the shaft's displacement over Fa ± h, Fr ± h, M ± h d_m/2, h = 10⁻³ of the larger of
+the preload and the loads).  The tilt (moment) stiffness is what the arrangement sets: a back-to-back pair's
+pressure centres lie a = B/2 + (d_m/2) tan α0 either side of its centre, k_θ ≈ 2 k_r,1 a² with k_r,1 one bearing's
+radial stiffness; a face-to-face pair's at |B/2 − (d_m/2) tan α0|, for a 15° bearing nearly at its centre: the
+7014C pair at 300 N 288 against 10 N m/mrad (Harris & Kotzalas 2007 [1] ch. 8, duplex sets).  Without external load a position-preloaded pair's axial stiffness is both bearings in parallel,
 k_a = 2 dF_a/dδ_a(F_0), a spring-preloaded pair's the held bearing's alone (its partner's ring slides), and both
 arrangements are alike by mirror symmetry; a radial load couples the axial displacement to the tilt, which a
 back-to-back pair resists less than a face-to-face one here (Harris & Kotzalas 2007 [1] ch. 8: the axial
@@ -94,8 +98,8 @@ class PairLoads:
     offset : float | None  the position preload δ [m] (None: a spring preload)
     start : HighSpeedShaftLoads | None  the high-speed form's answer of its two load cases (the external loads,
                         none): where a nearby solve starts (``pair_loads(start=…)``); None in the static form
-    stiffness : tuple | None  ``(axial, radial)`` stiffness of the pair under the external loads [N/m]
-                        (``pair_loads(with_stiffness=True)``; module docstring), else None
+    stiffness : tuple | None  ``(axial [N/m], radial [N/m], tilt [N m/rad])`` stiffness of the pair under the
+                        external loads (``pair_loads(with_stiffness=True)``; module docstring), else None
     """
 
     Fa: float
@@ -174,9 +178,9 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
     start : PairLoads   a nearby answer of the high-speed form (e.g. a heat-up's last) whose loads, and its
                         bearings' ball equilibria, start the solve (default: the low-speed pair's loads); the answer is
                         the same to the solver's tolerance
-    with_stiffness : bool  also the pair's axial and radial stiffness under the external loads
+    with_stiffness : bool  also the pair's axial, radial and tilt stiffness under the external loads
                         (``PairLoads.stiffness``: the static form's from the shaft's stiffness matrix, the high-speed
-                        form's by central differences over four more load cases in the same call)
+                        form's by central differences over six more load cases in the same call)
 
     Returns
     -------
@@ -215,10 +219,13 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
     >>> round(fast.preload), round(fast.Fa), round(fast.Fr)
     (1269, 1352, 1010)
 
-    The pair's axial and radial stiffness at rest under its preload alone [N/µm]: twice a bearing's axial one.
+    The pair's axial and radial stiffness at rest under its preload alone [N/µm] (twice a bearing's axial one), and
+    its tilt stiffness [N m/mrad]: back to back, then face to face.
 
-    >>> [round(k * 1e-6, 1) for k in pair_loads(b, "back_to_back", 300.0, with_stiffness=True).stiffness]
+    >>> [round(k * 1e-6, 1) for k in pair_loads(b, "back_to_back", 300.0, with_stiffness=True).stiffness[:2]]
     [94.2, 530.2]
+    >>> [round(pair_loads(b, a, 300.0, with_stiffness=True).stiffness[2] * 1e-3) for a in PAIR_ARRANGEMENTS]
+    [288, 10]
     """
     if arrangement not in PAIR_ARRANGEMENTS:
         raise InputError("bearing.arrangement", arrangement, " or ".join(PAIR_ARRANGEMENTS))
@@ -238,9 +245,12 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
     towards = ARRANGEMENTS[arrangement][0]          # the axial load on the first (held) bearing
     Fa2, Fr2 = [towards * float(Fa), 0.0], [float(Fr), 0.0]
     h = _STIFFNESS_STEP * max(float(preload), float(Fa), float(Fr), 1.0) if with_stiffness else 0.0
-    if with_stiffness and n_rpm is not None:        # the central differences' cases: Fa ± h, Fr ± h
-        Fa2 += [towards * (float(Fa) + h), towards * (float(Fa) - h), towards * float(Fa), towards * float(Fa)]
-        Fr2 += [float(Fr), float(Fr), float(Fr) + h, float(Fr) - h]
+    hM = h * 0.5 * brg.dm                           # (the moment's step: h at the pitch radius)
+    M2 = [0.0, 0.0]
+    if with_stiffness and n_rpm is not None:        # the central differences' cases: Fa ± h, Fr ± h, M ± hM
+        Fa2 += [towards * (float(Fa) + h), towards * (float(Fa) - h)] + [towards * float(Fa)] * 4
+        Fr2 += [float(Fr), float(Fr), float(Fr) + h, float(Fr) - h, float(Fr), float(Fr)]
+        M2 += [0.0] * 4 + [hM, -hM]
         start = None                                # (its cases are the two of the loads alone)
     if n_rpm is None:
         s = bearing_set(brg, arrangement, Fa2, Fr2, **pre, dT_inner=dT_inner, dT_outer=dT_outer, dT_ball=dT_ball,
@@ -252,7 +262,7 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
         sups, _ = duplex_supports(brg, arrangement, **pre, spacer=float(spacer))
         if dT_inner or dT_outer or dT_ball or n > 0:
             sups = warm_supports(sups, dT_inner, dT_outer, dT_ball, n_rpm=n, u_inner=u_inner)
-        s = shaft_loads_high_speed(sups, Fa2, Fr2, n, control=control, stiffness=stiffness,
+        s = shaft_loads_high_speed(sups, Fa2, Fr2, n, M=M2, control=control, stiffness=stiffness,
                                    start=None if start is None or start.start is None else start.start)
     R = s.reactions                                 # (2 cases, 2 bearings, 5)
     k = int(np.argmax(R[0, :, 0]))
@@ -261,15 +271,17 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
     return PairLoads(Fa=float(R[0, k, 0]), Fr=Fr_k, loaded=k,
                      Fa_other=float(R[0, 1 - k, 0]), preload=float(R[1, :, 0].mean()), offset=offset,
                      start=None if n_rpm is None or with_stiffness else s,
-                     stiffness=_stiffness(s, n_rpm is None, towards * h, h) if with_stiffness else None)
+                     stiffness=_stiffness(s, n_rpm is None, towards * h, h, hM) if with_stiffness else None)
 
 
-def _stiffness(s, static: bool, dFa: float, dFr: float) -> tuple:
-    """(axial, radial) stiffness [N/m] of a solved pair ``s`` under its first load case: the static form's from the
-    inverse of its stiffness matrix at the pair's centre (the other displacements free), the high-speed form's from
-    the shaft displacements of its cases 2–5 (the external loads Fa ± dFa, Fr ± dFr [N] on the shaft)."""
+def _stiffness(s, static: bool, dFa: float, dFr: float, dM: float) -> tuple:
+    """(axial [N/m], radial [N/m], tilt [N m/rad]) stiffness of a solved pair ``s`` under its first load case: the
+    static form's from the inverse of its stiffness matrix at the pair's centre (the other displacements free), the
+    high-speed form's from the shaft displacements of its cases 2–7 (the external loads Fa ± dFa, Fr ± dFr [N] and
+    the moment ± dM [N m] on the shaft)."""
     if static:
         C = np.linalg.inv(np.asarray(s.stiffness)[0])
-        return float(1.0 / C[0, 0]), float(1.0 / C[1, 1])
+        return float(1.0 / C[0, 0]), float(1.0 / C[1, 1]), float(1.0 / C[2, 2])
     q = np.asarray(s.q)
-    return float(2.0 * dFa / (q[2, 0] - q[3, 0])), float(2.0 * dFr / (q[4, 1] - q[5, 1]))
+    return (float(2.0 * dFa / (q[2, 0] - q[3, 0])), float(2.0 * dFr / (q[4, 1] - q[5, 1])),
+            float(2.0 * dM / (q[6, 2] - q[7, 2])))
