@@ -243,15 +243,10 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
         offset = pair_preload_offset(brg, preload, stiffness=stiffness) if offset is None else float(offset)
         pre = dict(preload_offset=offset)
     towards = ARRANGEMENTS[arrangement][0]          # the axial load on the first (held) bearing
-    Fa2, Fr2 = [towards * float(Fa), 0.0], [float(Fr), 0.0]
     h = _STIFFNESS_STEP * max(float(preload), float(Fa), float(Fr), 1.0) if with_stiffness else 0.0
     hM = h * 0.5 * brg.dm                           # (the moment's step: h at the pitch radius)
-    M2 = [0.0, 0.0]
-    if with_stiffness and n_rpm is not None:        # the central differences' cases: Fa ± h, Fr ± h, M ± hM
-        Fa2 += [towards * (float(Fa) + h), towards * (float(Fa) - h)] + [towards * float(Fa)] * 4
-        Fr2 += [float(Fr), float(Fr), float(Fr) + h, float(Fr) - h, float(Fr), float(Fr)]
-        M2 += [0.0] * 4 + [hM, -hM]
-        start = None                                # (its cases are the two of the loads alone)
+    Fa2, Fr2, M2 = _cases(towards, float(Fa), float(Fr), 0.0 if n_rpm is None else h, hM)   # (stiffness: 6 more)
+    start = None if with_stiffness else start       # (its cases are the two of the loads alone)
     if n_rpm is None:
         s = bearing_set(brg, arrangement, Fa2, Fr2, **pre, dT_inner=dT_inner, dT_outer=dT_outer, dT_ball=dT_ball,
                         stiffness=stiffness, spacer=float(spacer))
@@ -264,14 +259,25 @@ def pair_loads(brg: BallBearing, arrangement: str, preload, kind: str = "positio
             sups = warm_supports(sups, dT_inner, dT_outer, dT_ball, n_rpm=n, u_inner=u_inner)
         s = shaft_loads_high_speed(sups, Fa2, Fr2, n, M=M2, control=control, stiffness=stiffness,
                                    start=None if start is None or start.start is None else start.start)
-    R = s.reactions                                 # (2 cases, 2 bearings, 5)
-    k = int(np.argmax(R[0, :, 0]))
+    R, k = s.reactions, int(np.argmax(s.reactions[0, :, 0]))     # (cases, 2 bearings, 5); the loaded bearing
     # without an external radial load the bearings' radial reactions are the solver's residual (≈ 1e-14 N): 0
     Fr_k = float(np.hypot(R[0, k, 1], R[0, k, 3])) if float(Fr) > 0.0 else 0.0
     return PairLoads(Fa=float(R[0, k, 0]), Fr=Fr_k, loaded=k,
                      Fa_other=float(R[0, 1 - k, 0]), preload=float(R[1, :, 0].mean()), offset=offset,
                      start=None if n_rpm is None or with_stiffness else s,
                      stiffness=_stiffness(s, n_rpm is None, towards * h, h, hM) if with_stiffness else None)
+
+
+def _cases(towards: float, Fa: float, Fr: float, h: float, hM: float) -> tuple:
+    """(Fa, Fr, M) of the shaft's load cases [N, N, N m]: the external loads and none; with a step ``h`` > 0 six more,
+    Fa ± h, Fr ± h, M ± hM (the high-speed stiffness's central differences); the axial loads ``towards`` the held
+    bearing."""
+    A, R, M = [towards * Fa, 0.0], [Fr, 0.0], [0.0, 0.0]
+    if h:
+        A += [towards * (Fa + h), towards * (Fa - h)] + [towards * Fa] * 4
+        R += [Fr, Fr, Fr + h, Fr - h, Fr, Fr]
+        M += [0.0] * 4 + [hM, -hM]
+    return A, R, M
 
 
 def _stiffness(s, static: bool, dFa: float, dFr: float, dM: float) -> tuple:
