@@ -337,12 +337,13 @@ def _heatups(scenes, t_end_s, t_eval, T0_C, rtol, atol, stop, boundary):
     return out, failed
 
 
-def _group_heatups(job) -> tuple:
-    """One geometry group's heat-ups (:func:`_heatups`) in a worker process: ``(group, series, failed entries)``."""
+def _group_heatups(job, stop=None) -> tuple:
+    """One geometry group's heat-ups (:func:`_heatups`; in a worker process, or here with ``stop``): ``(group,
+    series, failed entries)``."""
     g, scenes, t_end_s, t_eval, T0_C, rtol, atol, boundary = job
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OutsideValidity)
-        series, bad = _heatups(scenes, t_end_s, t_eval, T0_C, rtol, atol, None, boundary)
+        series, bad = _heatups(scenes, t_end_s, t_eval, T0_C, rtol, atol, stop, boundary)
     return g, series, {j: _fail(e) for j, e in bad.items()}
 
 
@@ -378,16 +379,9 @@ def transient_uncertainty(scene: Scene, t_end_s: float, n: int, *, t_eval=None, 
     members = {g: idx for g in range(sm.groups)
                if (idx := [k for k in range(len(sm.scenes)) if sm.group[k] == g and k not in failed])}
     jobs = [(g, [sm.scenes[k] for k in idx], t_end_s, t_eval, T0_C, rtol, atol, boundary) for g, idx in members.items()]
-
-    def here():                     # in this process: ``stop`` acts inside each integration
-        for g, sc, *_ in jobs:
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore", OutsideValidity)
-                got = _heatups(sc, t_end_s, t_eval, T0_C, rtol, atol, stop, boundary)
-            yield (g, *got)
     pending = set(members)
     for g, series, bad in (imap_unordered(_group_heatups, jobs, processes) if processes > 1 and len(jobs) > 1
-                           else here()):
+                           else (_group_heatups(job, stop) for job in jobs)):     # (here: stop inside each run)
         pending.discard(g)
         idx = members[g]
         failed.update({idx[j]: _fail(e) for j, e in bad.items()})
